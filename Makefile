@@ -1,0 +1,36 @@
+# Front door: `make demo` and `make test` are the whole set-up on a fresh Debian 12 machine.
+BUILD ?= build
+BUILD_ASAN ?= build-asan
+JOBS ?= $(shell nproc)
+CMAKE_FLAGS ?=
+
+.PHONY: all deps build demo test test-asan bench clean
+
+all: build
+
+deps:
+	bash scripts/install-deps.sh
+
+$(BUILD)/CMakeCache.txt:
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
+
+build: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS)
+
+demo: build
+	./$(BUILD)/sphdeck check decks/demo/dam_break_2d.k
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure
+
+# The test suite again under AddressSanitizer and UndefinedBehaviorSanitizer (CI runs it too).
+test-asan: deps
+	cmake -S . -B $(BUILD_ASAN) -DCMAKE_BUILD_TYPE=Debug -DSPHDECK_SANITIZE=ON -DSPHDECK_WERROR=ON $(CMAKE_FLAGS)
+	cmake --build $(BUILD_ASAN) -j $(JOBS) --target sphdeck sphdeck_tests
+	cd $(BUILD_ASAN) && ctest --output-on-failure
+
+bench: build
+	bash bench/run_reader_bench.sh $(BUILD)
+
+clean:
+	rm -rf $(BUILD) $(BUILD_ASAN)

@@ -1,0 +1,24 @@
+// The subcommands: one file each, registered in one table (main.cpp).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <string_view>
+
+namespace sphdeck::cli {
+
+// Exit codes shared by every subcommand.
+inline constexpr int exit_clean = 0;     // no error found
+inline constexpr int exit_findings = 1;  // errors found (or warnings with --fail-on warning)
+inline constexpr int exit_usage = 2;     // bad usage or an I/O failure
+
+struct Command {
+    std::string_view name;
+    std::string_view description;
+    // Adds the subcommand's options to `app` and returns what runs it after parsing.
+    std::function<std::function<int()>(CLI::App& app)> setup;
+};
+
+std::function<int()> setup_check(CLI::App& app);
+
+}  // namespace sphdeck::cli

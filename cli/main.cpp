@@ -1,0 +1,51 @@
+// sphdeck: checks LS-DYNA and OpenRadioss SPH decks before they reach the solver.
+#include <cstdio>
+#include <exception>
+#include <fmt/format.h>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "cli/suggest.hpp"
+
+namespace {
+
+const std::vector<sphdeck::cli::Command>& commands() {
+    static const std::vector<sphdeck::cli::Command> table = {
+        {"check", "read decks and report problems with file:line:column and rule codes", sphdeck::cli::setup_check},
+    };
+    return table;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    using namespace sphdeck::cli;
+    CLI::App app{"sphdeck: checks LS-DYNA and OpenRadioss SPH decks before they reach the solver", "sphdeck"};
+    app.set_version_flag("--version", std::string("sphdeck ") + SPHDECK_VERSION);
+    app.require_subcommand(1);
+    std::function<int()> run;
+    for (const Command& c : commands()) {
+        CLI::App* sub = app.add_subcommand(std::string(c.name), std::string(c.description));
+        auto runner = c.setup(*sub);
+        sub->callback([&run, runner] { run = runner; });
+    }
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        if (argc > 1 && e.get_name() == "RequiredError" && argv[1][0] != '-') {
+            std::vector<std::string_view> names;
+            for (const Command& c : commands()) names.push_back(c.name);
+            std::string hint = did_you_mean(argv[1], names);
+            fmt::print(stderr, "sphdeck: unknown command '{}'{}\nrun 'sphdeck --help' for the list\n", argv[1], hint);
+            return exit_usage;
+        }
+        int code = app.exit(e);
+        return code == 0 ? exit_clean : exit_usage;
+    }
+    try {
+        return run ? run() : exit_usage;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "sphdeck: error: {}\n", e.what());
+        return exit_usage;
+    }
+}

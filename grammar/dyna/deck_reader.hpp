@@ -1,0 +1,76 @@
+// Internal: the state the line grammar's actions feed while a deck and its includes are read.
+#pragma once
+
+#include <deque>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "grammar/dyna/include_resolver.hpp"
+#include "grammar/dyna/reader.hpp"
+
+namespace sphdeck::grammar::dyna {
+
+// The parts of a keyword line, filled by the grammar's actions.
+struct KeywordLineParts {
+    std::string_view name;
+    char suffix = 0;
+    std::string_view arguments;
+};
+
+class DeckReader {
+public:
+    DeckReader(RawDeck& deck, const ReaderOptions& options);
+
+    // Reads one file's text (already in the SourceMap) with the line grammar.
+    void read(FileId file, CardFormat inherited_format);
+
+    // Called by the grammar's actions, once per physical line.
+    void on_comment();
+    void on_keyword(const char* line_begin, const char* line_end, const KeywordLineParts& parts);
+    void on_data(const char* line_begin, const char* line_end);
+    void on_pgp_begin(const char* line_begin, const char* line_end);
+    void on_pgp_end(const char* line_begin, const char* line_end);
+
+    KeywordLineParts parts;  // scratch for the keyword-line actions
+
+    void set_main_directory(std::filesystem::path dir) { main_directory_ = std::move(dir); }
+
+private:
+    struct OpenFile {
+        FileId id = 0;
+        CardFormat format = CardFormat::Standard;
+        const char* base = nullptr;
+        std::uint32_t line = 0;
+        std::optional<std::size_t> block;  // index of the open block in deck_.blocks
+        bool ended = false;                // after *END
+        bool reported_after_end = false;
+        bool in_comment_block = false;     // inside *COMMENT
+        bool in_encrypted = false;
+        bool reported_stray_data = false;
+    };
+
+    OpenFile& current() { return stack_.back(); }
+    void close_block();
+    bool after_end(const char* begin, const char* end);
+    Span span_of(const char* begin, const char* end, std::size_t column_begin, std::size_t column_end) const;
+    void report(const char* code, diag::Severity severity, std::string message, Span span);
+
+    // Special keywords, handled when their block closes (block_handlers.cpp).
+    void handle_keyword_line_arguments(const Block& block);
+    void handle_include(const Block& block, bool transform);
+    void handle_include_path(const Block& block, bool relative);
+    void open_include(const std::string& name, Span where, char suffix);
+    std::vector<std::pair<std::string, Span>> file_names(const Block& block, std::size_t max_lines);
+
+    RawDeck& deck_;
+    const ReaderOptions& options_;
+    std::deque<OpenFile> stack_;  // deque: an include pushed while a caller holds current()
+    std::vector<std::filesystem::path> canonical_paths_;  // per FileId, for cycle detection
+    std::filesystem::path main_directory_;
+    std::vector<std::filesystem::path> include_paths_;
+};
+
+}  // namespace sphdeck::grammar::dyna

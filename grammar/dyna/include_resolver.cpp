@@ -1,0 +1,39 @@
+#include "grammar/dyna/include_resolver.hpp"
+
+#include <system_error>
+
+namespace sphdeck::grammar::dyna {
+namespace fs = std::filesystem;
+
+namespace {
+struct Candidate {
+    fs::path path;
+    const char* why;
+};
+
+std::vector<Candidate> candidates(const std::string& name, const IncludeSearch& search) {
+    fs::path given(name);
+    if (given.is_absolute()) return {{given, "absolute path"}};
+    std::vector<Candidate> list;
+    list.push_back({search.including_directory / given, "including file's folder"});
+    list.push_back({search.main_directory / given, "main deck's folder"});
+    for (const auto& dir : search.include_paths) list.push_back({dir / given, "include path"});
+    return list;
+}
+}  // namespace
+
+std::optional<ResolvedInclude> resolve_include(const std::string& name, const IncludeSearch& search) {
+    for (const auto& c : candidates(name, search)) {
+        std::error_code ec;
+        if (fs::is_regular_file(c.path, ec)) return ResolvedInclude{c.path, c.why};
+    }
+    return std::nullopt;
+}
+
+std::vector<fs::path> include_candidates(const std::string& name, const IncludeSearch& search) {
+    std::vector<fs::path> out;
+    for (const auto& c : candidates(name, search)) out.push_back(c.path);
+    return out;
+}
+
+}  // namespace sphdeck::grammar::dyna

@@ -1,0 +1,211 @@
+#include "grammar/dyna/parameter_cards.hpp"
+
+#include <cctype>
+#include <cmath>
+
+#include "grammar/dyna/expression.hpp"
+#include "grammar/fields.hpp"
+#include "grammar/value.hpp"
+
+namespace sphdeck::grammar::dyna {
+namespace {
+
+struct Context {
+    RawDeck& deck;
+    const Block& block;
+    bool local;
+};
+
+void report(RawDeck& deck, const char* code, diag::Severity s, std::string message, Span span) {
+    deck.diagnostics.push_back(diag::Diagnostic{code, s, std::move(message), span, {}});
+}
+
+// The name field: its first non-blank character is the type letter (R, I or C, any case),
+// the name follows, glued or after blanks ("RSHLTHK" == "R  SHLTHK").
+bool split_type_and_name(std::string_view field, ParameterType& type, std::string_view& name) {
+    std::size_t i = 0;
+    while (i < field.size() && field[i] == ' ') ++i;
+    if (i == field.size()) return false;
+    switch (std::toupper(static_cast<unsigned char>(field[i]))) {
+        case 'R': type = ParameterType::Real; break;
+        case 'I': type = ParameterType::Integer; break;
+        case 'C': type = ParameterType::Character; break;
+        default: return false;
+    }
+    name = field.substr(i + 1);
+    while (!name.empty() && (name.front() == ' ' || name.front() == '\t')) name.remove_prefix(1);
+    while (!name.empty() && (name.back() == ' ' || name.back() == '\t' || name.back() == '\r')) name.remove_suffix(1);
+    return !name.empty();
+}
+
+// Applies *PARAMETER_DUPLICATION to a new definition; false when it must not be added.
+bool accept_definition(Context& c, const Parameter& p) {
+    const Parameter* old = c.deck.parameters.find_existing(p.name, p.span.file);
+    if (!old) return true;
+    if (old->name != p.name) {
+        report(c.deck, "DK024", diag::Severity::Warning,
+               "parameter '" + p.name + "' differs from '" + old->name + "' only by case", p.span);
+    }
+    const std::string what = "parameter '" + p.name + "' is defined again";
+    switch (c.deck.parameters.duplication) {
+        case Duplication::WarnKeepFirst:
+            report(c.deck, "DK014", diag::Severity::Warning, what + "; the first definition is kept (DFLAG 1)", p.span);
+            return false;
+        case Duplication::WarnReplace:
+            report(c.deck, "DK014", diag::Severity::Warning, what + "; the new value replaces it (DFLAG 2)", p.span);
+            return true;
+        case Duplication::Error:
+            report(c.deck, "DK014", diag::Severity::Error, what + " (DFLAG 3 forbids it)", p.span);
+            return false;
+        case Duplication::SilentReplace: return true;
+        case Duplication::SilentKeepFirst: return false;
+    }
+    return false;
+}
+
+void define(Context& c, Parameter p) {
+    p.scope = c.local ? p.span.file + 1 : 0;
+    if (accept_definition(c, p)) c.deck.parameters.define(std::move(p));
+}
+
+// A value written in a *PARAMETER card; it may itself refer to an earlier parameter.
+bool value_of(Context& c, const Field& field, ParameterType type, Parameter& p) {
+    if (type == ParameterType::Character) {
+        p.text = std::string(classify_value(field.text).text);
+        return true;
+    }
+    ValueToken token = classify_value(field.text);
+    if (token.shape == ValueShape::Parameter) {
+        auto found = c.deck.parameters.find(token.name, field.span.file, c.deck.parameters.epoch());
+        if (!found.parameter || found.parameter->type == ParameterType::Character) {
+            report(c.deck, "DK012", diag::Severity::Error, "undefined parameter '" + std::string(token.name) + "'",
+                   field.span);
+            return false;
+        }
+        p.number = token.negated ? -found.parameter->number : found.parameter->number;
+    } else {
+        RealValue v = to_real(token);
+        if (v.status != NumberStatus::Ok) {
+            report(c.deck, "DK003", diag::Severity::Error,
+                   "parameter value '" + std::string(token.text) + "' is not a number", field.span);
+            return false;
+        }
+        p.number = v.value;
+    }
+    if (type == ParameterType::Integer) {
+        if (p.number != std::trunc(p.number))
+            report(c.deck, "DK004", diag::Severity::Warning,
+                   "integer parameter '" + p.name + "' given a non-integral value; truncated", field.span);
+        p.number = std::trunc(p.number);
+    }
+    return true;
+}
+
+void read_pairs(Context& c, const CardLine& line) {
+    static constexpr FixedField pair_fields[] = {{0, 10}, {10, 10}, {20, 10}, {30, 10},
+                                                 {40, 10}, {50, 10}, {60, 10}, {70, 10}};
+    std::vector<FixedField> positions;
+    widen(pair_fields, c.block.format, positions);
+    std::vector<Field> fields;
+    cut_fields(c.deck.text(line), line, positions, significant_width(positions, c.block.format), fields);
+    for (std::size_t i = 0; i + 1 < fields.size(); i += 2) {
+        ParameterType type;
+        std::string_view name;
+        if (is_blank(fields[i].text)) continue;
+        if (!split_type_and_name(fields[i].text, type, name)) {
+            report(c.deck, "DK013", diag::Severity::Error,
+                   "parameter name '" + std::string(fields[i].text) + "' must start with its type letter R, I or C",
+                   fields[i].span);
+            continue;
+        }
+        Parameter p;
+        p.name = std::string(name);
+        p.type = type;
+        p.span = fields[i].span;
+        if (value_of(c, fields[i + 1], type, p)) define(c, std::move(p));
+    }
+}
+
+// PRMR in columns 1-10, the expression in 11-80; following lines with blank columns 1-10 continue it.
+void read_expressions(Context& c) {
+    const CardLine* begin = c.deck.begin_lines(c.block);
+    const CardLine* end = c.deck.end_lines(c.block);
+    for (const CardLine* l = begin; l != end;) {
+        std::string_view text = c.deck.text(*l);
+        std::size_t name_width = c.block.format == CardFormat::Long ? 20 : 10;
+        std::string_view name_field = text.substr(0, std::min(text.size(), name_width));
+        const CardLine* first = l++;
+        if (is_blank(name_field)) continue;
+        std::string expression(text.size() > name_width ? text.substr(name_width) : std::string_view{});
+        while (l != end) {
+            std::string_view next = c.deck.text(*l);
+            if (!is_blank(next.substr(0, std::min(next.size(), name_width))) || is_blank(next)) break;
+            expression += ' ';
+            expression += next.substr(std::min(next.size(), name_width));
+            ++l;
+        }
+        Span name_span{first->file, first->line, 1, static_cast<std::uint32_t>(name_field.size() + 1)};
+        Span expression_span{first->file, first->line, static_cast<std::uint32_t>(name_width + 1),
+                             static_cast<std::uint32_t>(std::max(text.size(), name_width + 1) + 1)};
+        ParameterType type;
+        std::string_view name;
+        if (!split_type_and_name(name_field, type, name)) {
+            report(c.deck, "DK015", diag::Severity::Error,
+                   "parameter name '" + std::string(name_field) + "' must start with R, I or C", name_span);
+            continue;
+        }
+        std::string undefined;
+        auto lookup = [&](std::string_view ref) -> std::optional<double> {
+            auto found = c.deck.parameters.find(ref, first->file, c.deck.parameters.epoch());
+            if (!found.parameter || found.parameter->type == ParameterType::Character) return std::nullopt;
+            return found.parameter->number;
+        };
+        ExpressionResult r = evaluate_expression(expression, lookup);
+        if (!r.ok()) {
+            const char* code = r.error == ExpressionError::UndefinedParameter ? "DK012" : "DK015";
+            Span where = expression_span;
+            if (first == l - 1 && r.offset + name_width < text.size()) {  // single line: point at the token
+                where.column = static_cast<std::uint32_t>(name_width + r.offset + 1);
+                where.end_column = static_cast<std::uint32_t>(where.column + std::max<std::size_t>(r.length, 1));
+            }
+            report(c.deck, code, diag::Severity::Error, "in expression of '" + std::string(name) + "': " + r.message,
+                   where);
+            continue;
+        }
+        Parameter p;
+        p.name = std::string(name);
+        p.type = type;
+        p.number = type == ParameterType::Integer ? std::trunc(r.value) : r.value;  // Fortran INT() truncates
+        p.span = name_span;
+        if (type == ParameterType::Character) {
+            report(c.deck, "DK013", diag::Severity::Error, "a character parameter cannot take an expression", name_span);
+            continue;
+        }
+        define(c, std::move(p));
+    }
+}
+
+void read_duplication(Context& c) {
+    if (c.block.line_count == 0) return;
+    const CardLine& line = *c.deck.begin_lines(c.block);
+    IntegerValue flag = parse_integer(c.deck.text(line).substr(0, 10));
+    if (flag.status == NumberStatus::Blank) return;
+    Span span{line.file, line.line, 1, 11};
+    if (flag.status != NumberStatus::Ok || flag.value < 1 || flag.value > 5) {
+        report(c.deck, "DK007", diag::Severity::Error, "DFLAG must be 1 to 5", span);
+        return;
+    }
+    c.deck.parameters.duplication = static_cast<Duplication>(flag.value);
+}
+
+}  // namespace
+
+void define_parameters(RawDeck& deck, const Block& block) {
+    const std::string& k = block.keyword;
+    Context c{deck, block, k.find("_LOCAL") != std::string::npos};
+    if (k == "*PARAMETER_DUPLICATION") return read_duplication(c);
+    if (k.rfind("*PARAMETER_EXPRESSION", 0) == 0) return read_expressions(c);
+    for (const CardLine* l = deck.begin_lines(block); l != deck.end_lines(block); ++l) read_pairs(c, *l);
+}
+
+}  // namespace sphdeck::grammar::dyna

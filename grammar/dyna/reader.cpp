@@ -1,0 +1,142 @@
+#include "grammar/dyna/reader.hpp"
+
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "grammar/dyna/deck_reader.hpp"
+#include "grammar/dyna/line_grammar.hpp"
+
+namespace sphdeck::grammar::dyna {
+namespace {
+
+namespace pegtl = tao::pegtl;
+
+template <typename Rule>
+struct action : pegtl::nothing<Rule> {};
+
+template <>
+struct action<rules::keyword_name> {
+    template <typename Input>
+    static void apply(const Input& in, DeckReader& r) { r.parts.name = in.string_view(); }
+};
+template <>
+struct action<rules::suffix_char> {
+    template <typename Input>
+    static void apply(const Input& in, DeckReader& r) { r.parts.suffix = *in.begin(); }
+};
+template <>
+struct action<rules::keyword_arguments> {
+    template <typename Input>
+    static void apply(const Input& in, DeckReader& r) { r.parts.arguments = in.string_view(); }
+};
+template <>
+struct action<rules::comment_line> {
+    template <typename Input>
+    static void apply(const Input&, DeckReader& r) { r.on_comment(); }
+};
+template <>
+struct action<rules::keyword_line> {
+    template <typename Input>
+    static void apply(const Input& in, DeckReader& r) {
+        // Copy first: an *INCLUDE closed by this keyword line parses another file with `r`.
+        KeywordLineParts parts = r.parts;
+        r.parts = {};
+        r.on_keyword(in.begin(), in.end(), parts);
+    }
+};
+template <>
+struct action<rules::pgp_begin_line> {
+    template <typename Input>
+    static void apply(const Input& in, DeckReader& r) { r.on_pgp_begin(in.begin(), in.end()); }
+};
+template <>
+struct action<rules::pgp_end_line> {
+    template <typename Input>
+    static void apply(const Input& in, DeckReader& r) { r.on_pgp_end(in.begin(), in.end()); }
+};
+template <>
+struct action<rules::empty_line> {
+    template <typename Input>
+    static void apply(const Input& in, DeckReader& r) { r.on_data(in.begin(), in.begin()); }
+};
+template <>
+struct action<rules::data_line> {
+    template <typename Input>
+    static void apply(const Input& in, DeckReader& r) { r.on_data(in.begin(), in.end()); }
+};
+
+std::string read_whole_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot open '" + path + "': " + std::strerror(errno));
+    in.seekg(0, std::ios::end);
+    std::streamoff size = in.tellg();
+    if (size < 0) throw std::runtime_error("cannot read '" + path + "'");
+    std::string text(static_cast<std::size_t>(size), '\0');
+    in.seekg(0, std::ios::beg);
+    in.read(text.data(), size);
+    if (!in) throw std::runtime_error("cannot read '" + path + "'");
+    return text;
+}
+
+RawDeck read_main(SourceFile main, const std::filesystem::path& directory, const ReaderOptions& options) {
+    RawDeck deck;
+    // One CardLine per line at most: reserving once keeps the big-deck path free of regrowth.
+    std::size_t newlines = 0;
+    for (const char* p = main.text.data(); (p = static_cast<const char*>(
+             std::memchr(p, '\n', static_cast<std::size_t>(main.text.data() + main.text.size() - p))));
+         ++p)
+        ++newlines;
+    deck.lines.reserve(newlines + 1);
+    FileId id = deck.sources.add(std::move(main));
+    DeckReader reader(deck, options);
+    reader.set_main_directory(directory);
+    reader.read(id, CardFormat::Standard);
+    return deck;
+}
+
+}  // namespace
+
+void DeckReader::read(FileId file, CardFormat inherited_format) {
+    const SourceFile& source = deck_.sources.file(file);
+    deck_.parameters.add_file(file, source.parent);
+    if (canonical_paths_.size() <= file) canonical_paths_.resize(file + 1);
+    std::error_code ec;
+    canonical_paths_[file] = std::filesystem::weakly_canonical(source.path, ec);
+    ++deck_.stats.files;
+    deck_.stats.bytes += source.text.size();
+
+    OpenFile open;
+    open.id = file;
+    open.format = inherited_format;
+    open.base = source.text.data();
+    stack_.push_back(open);
+    pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf, const char*> in(
+        source.text.data(), source.text.data() + source.text.size(), source.path.c_str());
+    pegtl::parse<rules::file, action>(in, *this);
+    close_block();
+    deck_.stats.lines += current().line;
+    stack_.pop_back();
+}
+
+RawDeck read_file(const std::string& path, const ReaderOptions& options) {
+    SourceFile main;
+    main.path = path;
+    main.display_name = path;
+    main.text = read_whole_file(path);
+    return read_main(std::move(main), std::filesystem::path(path).parent_path(), options);
+}
+
+RawDeck read_buffer(std::string text, const std::string& display_name, const std::string& base_directory,
+                    const ReaderOptions& options) {
+    SourceFile main;
+    main.path = display_name;
+    main.display_name = display_name;
+    main.text = std::move(text);
+    return read_main(std::move(main), base_directory, options);
+}
+
+std::string read_include_text(const std::string& path) { return read_whole_file(path); }
+
+}  // namespace sphdeck::grammar::dyna

@@ -1,0 +1,25 @@
+// The LS-DYNA keyword reader: files (or an in-memory buffer) in, a RawDeck out.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "grammar/raw_deck.hpp"
+
+namespace sphdeck::grammar::dyna {
+
+struct ReaderOptions {
+    std::vector<std::string> include_paths;  // extra directories searched after the deck's own
+    unsigned max_include_depth = 200;        // deeper nesting is reported, not followed
+};
+
+// Reads a deck and everything it includes. Throws std::runtime_error only when the main
+// file cannot be read; every problem inside the deck becomes a diagnostic.
+RawDeck read_file(const std::string& path, const ReaderOptions& options = {});
+
+// Reads a deck held in memory (unsaved editor text, fuzzing). Relative includes are searched
+// from `base_directory`.
+RawDeck read_buffer(std::string text, const std::string& display_name, const std::string& base_directory = ".",
+                    const ReaderOptions& options = {});
+
+}  // namespace sphdeck::grammar::dyna

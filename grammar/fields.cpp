@@ -1,0 +1,128 @@
+#include "grammar/fields.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <tao/pegtl.hpp>
+
+namespace sphdeck::grammar {
+namespace {
+
+namespace pegtl = tao::pegtl;
+
+// Free format: values separated by commas; a parenthesised group may hold commas itself.
+// Groups do not nest on purpose: data fields hold no expressions, and a line of a million
+// '(' must not recurse a million deep.
+namespace free_rules {
+struct plain : pegtl::not_one<',', '(', ')', '\n'> {};
+struct group : pegtl::seq<pegtl::one<'('>, pegtl::star<pegtl::not_one<')', '\n'>>, pegtl::opt<pegtl::one<')'>>> {};
+struct token : pegtl::star<pegtl::sor<group, plain, pegtl::one<')'>>> {};
+struct line : pegtl::seq<pegtl::list<token, pegtl::one<','>>, pegtl::eof> {};
+struct has_top_level_comma : pegtl::seq<token, pegtl::one<','>> {};
+}  // namespace free_rules
+
+template <typename Rule>
+struct token_action : pegtl::nothing<Rule> {};
+template <>
+struct token_action<free_rules::token> {
+    template <typename Input>
+    static void apply(const Input& in, std::vector<std::string_view>& tokens) {
+        tokens.push_back(in.string_view());
+    }
+};
+
+using Input = pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf, const char*>;
+
+std::uint32_t widened(std::uint32_t width, CardFormat format) {
+    switch (format) {
+        case CardFormat::I10: return std::max<std::uint32_t>(width, 10);
+        case CardFormat::Long: return std::max<std::uint32_t>(width, 20);
+        case CardFormat::Standard: return width;
+    }
+    return width;
+}
+
+Span column_span(const CardLine& line, std::size_t begin, std::size_t end) {
+    return Span{line.file, line.line, static_cast<std::uint32_t>(begin + 1), static_cast<std::uint32_t>(end + 1)};
+}
+
+}  // namespace
+
+bool is_blank(std::string_view s) {
+    for (char c : s)
+        if (c != ' ' && c != '\t' && c != '\r') return false;
+    return true;
+}
+
+void widen(std::span<const FixedField> standard, CardFormat format, std::vector<FixedField>& out) {
+    out.clear();
+    std::uint32_t standard_end = 0, position = 0;
+    for (const FixedField& f : standard) {
+        if (f.start > standard_end) position += widened(f.start - standard_end, format);  // an unused gap
+        std::uint32_t w = widened(f.width, format);
+        out.push_back({format == CardFormat::Standard ? f.start : position, w});
+        position = (format == CardFormat::Standard ? f.start : position) + w;
+        standard_end = f.start + f.width;
+    }
+}
+
+std::uint32_t significant_width(std::span<const FixedField> widened_fields, CardFormat format) {
+    std::uint32_t end = widened_fields.empty() ? 0 : widened_fields.back().start + widened_fields.back().width;
+    return std::max<std::uint32_t>(end, format == CardFormat::Long ? 160 : 80);
+}
+
+bool is_free_format(std::string_view text) {
+    if (!std::memchr(text.data(), ',', text.size())) return false;
+    Input in(text.data(), text.data() + text.size(), "line");
+    return pegtl::parse<free_rules::has_top_level_comma>(in);
+}
+
+CutReport cut_fields(std::string_view text, const CardLine& line, std::span<const FixedField> positions,
+                     std::uint32_t significant, std::vector<Field>& out, bool allow_free) {
+    CutReport report;
+    out.clear();
+
+    if (allow_free && is_free_format(text)) {
+        report.free_format = true;
+        thread_local std::vector<std::string_view> tokens;
+        tokens.clear();
+        Input in(text.data(), text.data() + text.size(), "line");
+        pegtl::parse<free_rules::line, token_action>(in, tokens);
+        for (std::size_t i = 0; i < tokens.size(); ++i) {
+            std::size_t begin = static_cast<std::size_t>(tokens[i].data() - text.data());
+            Span span = column_span(line, begin, begin + std::max<std::size_t>(tokens[i].size(), 1));
+            if (i >= positions.size()) {
+                if (!is_blank(tokens[i])) {
+                    if (report.extra_values++ == 0) report.beyond = span;
+                    report.beyond.end_column = span.end_column;
+                }
+                continue;
+            }
+            // The token-length rule: a free value may not be longer than its fixed field.
+            std::string_view value = tokens[i];
+            while (!value.empty() && value.front() == ' ') value.remove_prefix(1);
+            while (!value.empty() && (value.back() == ' ' || value.back() == '\r')) value.remove_suffix(1);
+            if (value.size() > positions[i].width) report.too_long.push_back(static_cast<std::uint32_t>(i));
+            out.push_back({tokens[i], span});
+        }
+        for (std::size_t i = out.size(); i < positions.size(); ++i)
+            out.push_back({{}, column_span(line, text.size(), text.size() + 1)});
+        return report;
+    }
+
+    report.has_tab = std::memchr(text.data(), '\t', text.size()) != nullptr;
+    for (const FixedField& f : positions) {
+        std::string_view field = f.start < text.size() ? text.substr(f.start, f.width) : std::string_view{};
+        out.push_back({field, column_span(line, f.start, f.start + f.width)});
+    }
+    std::uint32_t limit = significant;
+    if (text.size() > limit && !is_blank(text.substr(limit))) {
+        std::size_t first = limit;
+        while (first < text.size() && (text[first] == ' ' || text[first] == '\t')) ++first;
+        std::size_t last = text.size();
+        while (last > first && (text[last - 1] == ' ' || text[last - 1] == '\r')) --last;
+        report.beyond = column_span(line, first, last);
+    }
+    return report;
+}
+
+}  // namespace sphdeck::grammar

@@ -1,0 +1,174 @@
+// Card schemas as data: per keyword its cards, per field its columns, type, default and range.
+// These tables drive decoding, validation, `sphdeck keyword` and (later) editor hovers, so a
+// field's width or default is written exactly once, here.
+//
+// Every member has a default member initializer so the tables can use C++20 designated
+// initializers and leave out what does not apply without -Wmissing-field-initializers noise.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "grammar/raw_deck.hpp"
+
+namespace sphdeck::keywords {
+
+enum class FieldType : std::uint8_t {
+    Integer,  // I
+    Real,     // F
+    Text,     // A
+    Label,    // I/A: an id that may also be an alphanumeric label (971 R7.1+)
+    Unused,   // columns the manual leaves unused: kept so long/I10 offsets stay right
+};
+
+std::string_view to_string(FieldType t);  // "I", "F", "A", "I/A", "-"
+
+struct EnumChoice {
+    long long value = 0;
+    std::string_view meaning = {};
+    std::string_view since = {};  // edition that introduced the value ("R11.1"); empty: always / unknown
+};
+
+struct FieldSpec {
+    std::string_view name = {};     // as in the manual
+    std::uint16_t column = 1;       // 1-based first column, standard format
+    std::uint16_t width = 10;       // standard format
+    FieldType type = FieldType::Integer;
+    std::optional<double> default_value = {};  // nullopt: no default
+    bool zero_is_default = false;   // an explicit 0 means "use the default"
+    bool required = false;          // blank is an error (DK008)
+    std::vector<EnumChoice> choices = {};       // empty: any value (subject to min/max)
+    std::optional<double> min = {}, max = {};   // inclusive range
+    std::string_view doc = {};      // one line
+    std::vector<std::string_view> aliases = {};  // other names of the field (MEMORY: "NMNEIGH")
+    std::string_view since = {};    // edition that introduced the field; empty: always / unknown
+    // For Text fields: the default text ("MECH"; default_value stays empty) and the allowed
+    // words (case-insensitive; empty: any text).
+    std::string_view default_text = {};
+    std::vector<std::string_view> text_choices = {};
+
+    bool is_named(std::string_view n) const;  // name or alias, case-insensitive
+    const EnumChoice* choice(long long v) const;  // nullptr when v is not one of the choices
+};
+
+// How often a card occurs in its block.
+enum class CardRepeat : std::uint8_t {
+    Once,      // exactly one line, mandatory
+    Optional,  // one line that may be omitted (only trailing cards)
+    Repeated,  // one line per item until the next keyword (nodes, particles, set ids)
+};
+
+std::string_view to_string(CardRepeat r);  // "once", "optional", "repeated"
+
+// A comparison of a field value of an earlier card of the same block (lsdyna-format.md §12).
+enum class Compare : std::uint8_t { Less, LessEqual, Equal, NotEqual, GreaterEqual, Greater };
+
+std::string_view to_string(Compare c);  // "<", "<=", "==", "!=", ">=", ">"
+
+// A card that is read only when the condition holds: *MAT_ELASTIC card 1.1 when E < 0.
+// A blank field compares through its default (0 when it has none).
+struct CardCondition {
+    std::string_view field = {};  // name of a field of an earlier card of the block
+    Compare compare = Compare::Equal;
+    double value = 0.0;
+
+    bool holds(double field_value) const;
+};
+
+struct CardSpec {
+    std::string_view name = {};  // "Card 1", "Card 2", "Title"...
+    std::vector<FieldSpec> fields = {};
+    CardRepeat repeat = CardRepeat::Once;
+    std::optional<CardCondition> present_if = {};  // nullopt: always present
+    std::uint16_t line_width = 80;  // significant columns in standard format
+    std::string_view since = {};    // edition that introduced the card
+    std::string_view doc = {};
+
+    const FieldSpec* field(std::string_view name) const;  // by name or alias, case-insensitive
+};
+
+// What a keyword option (a `_`-joined suffix of the keyword name, lsdyna-format.md §11) does.
+struct OptionSpec {
+    std::string_view suffix = {};                  // without '_': "TITLE", "ELLIPSE"
+    std::vector<std::string_view> aliases = {};    // old spellings: "TENSOR" for ELLIPSE
+    std::vector<CardSpec> cards_before = {};       // read before the base cards (title, id card)
+    std::vector<CardSpec> cards_after = {};        // read after the base cards
+    // Number of trailing base cards that cards_after replace: *SET_NODE_LIST_GENERATE reads
+    // ranges instead of the id list.
+    std::uint8_t replaces_last = 0;
+    std::string_view doc = {};  // what the option changes, also when it adds no card (_VOLUME)
+
+    bool is_named(std::string_view s) const;  // suffix or alias, case-insensitive
+};
+
+struct KeywordSchema {
+    std::string_view name = {};  // canonical, upper case with '*': "*CONTROL_SPH"
+    std::vector<std::string_view> aliases = {};  // "*MAT_009", "*CONTROL_TIME_STEP"
+    std::vector<CardSpec> cards = {};
+    bool unique = false;    // may appear once per deck (DK018)
+    std::string_view doc = {};
+    std::vector<OptionSpec> options = {};
+    // > 0: the last `repeat_group` base cards repeat together, in order, until the next keyword
+    // (*PART: heading card + data card per part). Cards inside the group are marked Once.
+    std::uint8_t repeat_group = 0;
+    bool free_text = false;  // data lines are free text, never split into fields (*COMMENT)
+
+    const OptionSpec* option(std::string_view suffix) const;  // suffix or alias
+};
+
+// Field widths in a given format (lsdyna-format.md §6): I10 widens fields narrower than 10
+// to 10, long widens fields narrower than 20 to 20; offsets are recomputed cumulatively and a
+// gap between two fields widens like an unused field of the same width would. In long format a
+// trailing text field of 70 or more columns that ends at column 80 (a title, file name, path or
+// expression) runs to column 160 ("A80 name, path and expression fields may be 160").
+struct FieldSlot {
+    std::uint32_t start = 0;  // 0-based offset in the line
+    std::uint32_t width = 0;
+};
+std::vector<FieldSlot> layout(const CardSpec& card, grammar::CardFormat format);
+
+// Last significant column of a card in a format: the card's line width (80) in standard format;
+// in I10 format at least the end of the widened layout (10 fields of 10 reach 100); in long
+// format at least 160, more when the widened layout ends later (10 fields of 20 reach 200).
+std::uint32_t significant_width(const CardSpec& card, grammar::CardFormat format);
+
+// ---- Lookup ---------------------------------------------------------------------------------
+
+// A keyword name as written, split into its schema and options.
+struct KeywordMatch {
+    const KeywordSchema* schema = nullptr;
+    std::vector<const OptionSpec*> options;         // in the order written
+    // Suffix tokens that are not options of the schema, as views into the name passed to
+    // find_keyword. A match with unknown options is usually a different keyword that the tables
+    // do not know (*CONTROL_SPH_INCOMPRESSIBLE): callers should treat it as unknown (DK001).
+    std::vector<std::string_view> unknown_options;
+
+    bool has(std::string_view suffix) const;  // option given (suffix or alias)
+};
+
+// Case-insensitive, with or without the leading '*', surrounding blanks and a trailing format
+// suffix ('+', '-', '%') ignored. Resolves aliases (*MAT_009, *CONTROL_TIME_STEP, *SET_NODE) and
+// tries the longest base name first, so *DEFINE_BOX_SPH is its own keyword, while
+// *SECTION_SPH_ELLIPSE_TITLE is *SECTION_SPH + ELLIPSE + TITLE. nullopt: no base name matches.
+std::optional<KeywordMatch> find_keyword(std::string_view full_name);
+
+// Every schema, in table order (grouped by family).
+std::span<const KeywordSchema> all_keywords();
+
+// Up to `max` known keyword names (canonical or alias spelling) closest to `name` by edit
+// distance (with transpositions), best first, for "did you mean". Empty when nothing is close.
+std::vector<std::string_view> similar_keywords(std::string_view name, std::size_t max = 3);
+
+// The card sequence of a matched keyword in reading order: option cards_before (title, id),
+// then the base cards (less those an option replaces), then option cards_after.
+std::vector<const CardSpec*> cards_for(const KeywordMatch& match);
+
+// How many cards at the end of cards_for(match) repeat as a group until the next keyword: the
+// schema's repeat_group plus the cards_after of its options (they join the group); 0: none.
+std::size_t repeat_group_size(const KeywordMatch& match);
+
+}  // namespace sphdeck::keywords

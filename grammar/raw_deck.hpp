@@ -1,0 +1,76 @@
+// What a reader hands to the model: blocks of card lines, still text, with their positions.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "diag/diagnostic.hpp"
+#include "grammar/parameters.hpp"
+#include "grammar/source_map.hpp"
+
+namespace sphdeck::grammar {
+
+// Field widths in effect for a card (lsdyna-format.md §6).
+enum class CardFormat : std::uint8_t { Standard, I10, Long };
+
+std::string_view to_string(CardFormat f);
+
+// One data line of a block: a view into its file's text, end-of-line characters removed.
+// 16 bytes on purpose: a deck of 10 million particles keeps 10 million of these.
+struct CardLine {
+    FileId file = 0;
+    std::uint32_t line = 0;    // 1-based line number
+    std::uint32_t offset = 0;  // byte offset of the line in the file text
+    std::uint32_t length = 0;  // bytes, without "\r\n"
+};
+
+// One keyword (or Radioss header) and the data lines that follow it up to the next keyword.
+struct Block {
+    std::string keyword;          // upper case, with the leading '*', without suffix: "*CONTROL_SPH"
+    std::string arguments;        // text after the name on the keyword line (trimmed)
+    CardFormat format = CardFormat::Standard;  // effective format of its data cards
+    char suffix = 0;              // '+', '-', '%' or 0 as written on the keyword line
+    Span span;                    // the keyword name on its line
+    std::uint32_t first_line = 0; // index into RawDeck::lines
+    std::uint32_t line_count = 0;
+    std::uint32_t scope = 0;      // parameter scope (include instance) the block was read in
+    std::uint32_t parameter_epoch = 0;  // parameters defined before this block (use-before-definition)
+};
+
+// Arguments of the *KEYWORD line (lsdyna-format.md §8). Memory values stay text ("5M" occurs).
+struct KeywordArguments {
+    bool present = false;
+    std::string memory, memory2;
+    long long ncpu = 0;
+    bool long_format = false;
+    bool i10_format = false;
+    Span span;
+};
+
+struct ReadStats {
+    std::size_t files = 0;
+    std::size_t bytes = 0;
+    std::size_t lines = 0;
+    std::size_t keywords = 0;
+    std::size_t cards = 0;
+};
+
+struct RawDeck {
+    SourceMap sources;
+    std::vector<Block> blocks;
+    std::vector<CardLine> lines;
+    ParameterTable parameters;
+    KeywordArguments keyword_arguments;
+    std::vector<diag::Diagnostic> diagnostics;
+    ReadStats stats;
+
+    std::string_view text(const CardLine& l) const {
+        return std::string_view(sources.file(l.file).text).substr(l.offset, l.length);
+    }
+    const CardLine* begin_lines(const Block& b) const { return lines.data() + b.first_line; }
+    const CardLine* end_lines(const Block& b) const { return lines.data() + b.first_line + b.line_count; }
+};
+
+}  // namespace sphdeck::grammar

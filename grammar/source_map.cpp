@@ -1,0 +1,54 @@
+#include "grammar/source_map.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+namespace sphdeck::grammar {
+
+FileId SourceMap::add(SourceFile file) {
+    files_.push_back(std::move(file));
+    return static_cast<FileId>(files_.size() - 1);
+}
+
+void SourceMap::index_lines(const SourceFile& f) const {
+    if (f.line_starts.empty()) {
+        f.line_starts.push_back(0);
+        const char* base = f.text.data();
+        const char* end = base + f.text.size();
+        for (const char* p = base; p < end;) {
+            const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
+            if (!nl) break;
+            p = static_cast<const char*>(nl) + 1;
+            f.line_starts.push_back(static_cast<std::uint32_t>(p - base));
+        }
+    }
+}
+
+std::uint32_t SourceMap::line_count(FileId id) const {
+    if (id >= files_.size()) return 0;
+    const SourceFile& f = files_[id];
+    index_lines(f);
+    auto n = static_cast<std::uint32_t>(f.line_starts.size());
+    return f.line_starts.back() == f.text.size() ? n - 1 : n;  // no phantom line after a final newline
+}
+
+std::string_view SourceMap::line_text(FileId id, std::uint32_t line) const {
+    if (id >= files_.size() || line == 0) return {};
+    const SourceFile& f = files_[id];
+    index_lines(f);
+    if (line > f.line_starts.size()) return {};
+    std::size_t begin = f.line_starts[line - 1];
+    std::size_t stop = line < f.line_starts.size() ? f.line_starts[line] : f.text.size();
+    std::string_view text(f.text.data() + begin, stop - begin);
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.remove_suffix(1);
+    return text;
+}
+
+std::vector<FileId> SourceMap::include_chain(FileId id) const {
+    std::vector<FileId> chain;
+    for (FileId f = id; f != no_file && f < files_.size(); f = files_[f].parent) chain.push_back(f);
+    std::reverse(chain.begin(), chain.end());
+    return chain;
+}
+
+}  // namespace sphdeck::grammar

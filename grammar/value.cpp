@@ -1,0 +1,118 @@
+#include "grammar/value.hpp"
+
+#include <charconv>
+#include <cmath>
+
+#include "grammar/value_grammar.hpp"
+
+namespace sphdeck::grammar {
+namespace {
+
+namespace pegtl = tao::pegtl;
+
+template <typename Rule>
+bool matches(std::string_view text) {
+    pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf, const char*> in(
+        text.data(), text.data() + text.size(), "field");
+    return pegtl::parse<Rule>(in);
+}
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+std::string_view trim(std::string_view s, std::size_t& offset) {
+    std::size_t b = 0, e = s.size();
+    while (b < e && is_blank(s[b])) ++b;
+    while (e > b && is_blank(s[e - 1])) --e;
+    offset = b;
+    return s.substr(b, e - b);
+}
+
+// Rewrites a Fortran real that matched value_rules::real into what from_chars reads:
+// no leading '+', 'd'/'D' as 'e', and an 'e' before a bare signed exponent.
+bool normalise_real(std::string_view text, char* out, std::size_t capacity, std::size_t& length) {
+    std::size_t n = 0;
+    auto put = [&](char c) {
+        if (n >= capacity) return false;
+        out[n++] = c;
+        return true;
+    };
+    std::size_t i = 0;
+    if (i < text.size() && text[i] == '+') ++i;
+    bool seen_mantissa_digit = false;
+    for (; i < text.size(); ++i) {
+        char c = text[i];
+        if (c == 'd' || c == 'D' || c == 'e' || c == 'E') {
+            c = 'e';
+        } else if ((c == '+' || c == '-') && seen_mantissa_digit && out[n - 1] != 'e') {
+            if (!put('e')) return false;  // bare exponent: 1.0+3
+        }
+        if (c >= '0' && c <= '9') seen_mantissa_digit = true;
+        if (c == '+' && n > 0 && out[n - 1] == 'e') continue;  // "e+3" -> "e3"
+        if (!put(c)) return false;
+    }
+    length = n;
+    return true;
+}
+
+}  // namespace
+
+ValueToken classify_value(std::string_view field) {
+    ValueToken token;
+    token.text = trim(field, token.offset);
+    if (token.text.empty()) return token;
+    if (matches<value_rules::integer_field>(token.text)) {
+        token.shape = ValueShape::Integer;
+    } else if (matches<value_rules::real_field>(token.text)) {
+        token.shape = ValueShape::Real;
+    } else if (matches<value_rules::parameter_field>(token.text)) {
+        token.shape = ValueShape::Parameter;
+        token.negated = token.text.front() == '-';
+        token.name = token.text.substr(token.negated ? 2 : 1);
+    } else {
+        token.shape = ValueShape::Other;
+    }
+    return token;
+}
+
+RealValue to_real(const ValueToken& token) {
+    switch (token.shape) {
+        case ValueShape::Blank: return {NumberStatus::Blank, 0.0};
+        case ValueShape::Parameter: return {NumberStatus::Parameter, 0.0};
+        case ValueShape::Other: return {NumberStatus::Invalid, 0.0};
+        case ValueShape::Integer:
+        case ValueShape::Real: break;
+    }
+    char buffer[80];
+    std::size_t length = 0;
+    if (!normalise_real(token.text, buffer, sizeof buffer, length)) return {NumberStatus::Invalid, 0.0};
+    double value = 0.0;
+    auto [end, ec] = std::from_chars(buffer, buffer + length, value);
+    if (ec == std::errc::result_out_of_range) return {NumberStatus::Overflow, 0.0};
+    if (ec != std::errc() || end != buffer + length) return {NumberStatus::Invalid, 0.0};
+    return {NumberStatus::Ok, value};
+}
+
+IntegerValue to_integer(const ValueToken& token) {
+    IntegerValue result;
+    if (token.shape == ValueShape::Integer) {
+        std::string_view digits = token.text;
+        if (digits.front() == '+') digits.remove_prefix(1);
+        auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), result.value);
+        if (ec == std::errc::result_out_of_range) return {NumberStatus::Overflow, 0, false};
+        result.status = (ec == std::errc() && end == digits.data() + digits.size()) ? NumberStatus::Ok
+                                                                                    : NumberStatus::Invalid;
+        return result;
+    }
+    if (token.shape == ValueShape::Real) {
+        RealValue real = to_real(token);
+        if (real.status != NumberStatus::Ok) return {real.status, 0, false};
+        if (std::fabs(real.value) >= 9.2e18) return {NumberStatus::Overflow, 0, true};
+        if (real.value != std::trunc(real.value)) return {NumberStatus::NotIntegral, 0, true};
+        return {NumberStatus::Ok, static_cast<long long>(real.value), true};
+    }
+    if (token.shape == ValueShape::Parameter) return {NumberStatus::Parameter, 0, false};
+    if (token.shape == ValueShape::Blank) return {NumberStatus::Blank, 0, false};
+    return {NumberStatus::Invalid, 0, false};
+}
+
+}  // namespace sphdeck::grammar

@@ -1,0 +1,108 @@
+// The rule registry: merges the family tables into one sorted table, and looks rules up.
+#include "lint/registry.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <string>
+#include <tuple>
+
+namespace sphdeck::lint {
+namespace {
+
+char to_lower(char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c; }
+
+std::string lowered(std::string_view s) {
+    std::string out(s);
+    std::transform(out.begin(), out.end(), out.begin(), to_lower);
+    return out;
+}
+
+bool iequals(std::string_view a, std::string_view b) {
+    return a.size() == b.size() &&
+           std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) { return to_lower(x) == to_lower(y); });
+}
+
+std::vector<RuleInfo> build_table() {
+    std::vector<RuleInfo> rows;
+    for (auto family : {detail::dk_rule_rows(), detail::ref_rule_rows(), detail::sph_rule_rows(),
+                        detail::rad_rule_rows()})
+        rows.insert(rows.end(), family.begin(), family.end());
+    std::sort(rows.begin(), rows.end(), [](const RuleInfo& a, const RuleInfo& b) { return a.code < b.code; });
+    return rows;
+}
+
+const std::vector<RuleInfo>& table() {
+    static const std::vector<RuleInfo> rows = build_table();
+    return rows;
+}
+
+// Optimal string alignment distance (Levenshtein plus adjacent transpositions), on lower-case text.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> prev2(b.size() + 1), prev(b.size() + 1), cur(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        cur[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + cost});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+                cur[j] = std::min(cur[j], prev2[j - 2] + 1);
+        }
+        std::swap(prev2, prev);
+        std::swap(prev, cur);
+    }
+    return prev[b.size()];
+}
+
+// How well `query` (lower case) matches `candidate`: (kind, distance), smaller is better.
+// kind 0 = prefix, 1 = substring, 2 = edit distance; kind 3 = no match.
+std::tuple<int, std::size_t> match(const std::string& query, std::string_view candidate) {
+    std::string cand = lowered(candidate);
+    std::size_t dist = edit_distance(query, cand);
+    if (query.size() >= 2 && cand.starts_with(query)) return {0, dist};
+    if (query.size() >= 3 && cand.find(query) != std::string::npos) return {1, dist};
+    std::size_t limit = std::max<std::size_t>(2, query.size() / 3);
+    if (dist <= limit) return {2, dist};
+    return {3, dist};
+}
+
+}  // namespace
+
+std::span<const RuleInfo> all_rules() { return table(); }
+
+const RuleInfo* find_rule(std::string_view code_or_name) {
+    for (const RuleInfo& rule : table())
+        if (iequals(rule.code, code_or_name) || rule.name == code_or_name) return &rule;
+    return nullptr;
+}
+
+std::vector<std::string_view> similar_rules(std::string_view query, std::size_t max) {
+    struct Hit {
+        int kind;
+        std::size_t distance;
+        std::string_view code;
+        std::string_view text;
+    };
+    const std::string q = lowered(query);
+    std::vector<Hit> hits;
+    if (q.empty() || max == 0) return {};
+    for (const RuleInfo& rule : table()) {
+        auto [code_kind, code_dist] = match(q, rule.code);
+        auto [name_kind, name_dist] = match(q, rule.name);
+        bool by_name = std::tie(name_kind, name_dist) < std::tie(code_kind, code_dist);
+        int kind = by_name ? name_kind : code_kind;
+        if (kind == 3) continue;
+        hits.push_back({kind, by_name ? name_dist : code_dist, rule.code, by_name ? rule.name : rule.code});
+    }
+    std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) {
+        return std::tie(a.kind, a.distance, a.code) < std::tie(b.kind, b.distance, b.code);
+    });
+    std::vector<std::string_view> out;
+    for (const Hit& hit : hits) {
+        if (out.size() == max) break;
+        out.push_back(hit.text);
+    }
+    return out;
+}
+
+}  // namespace sphdeck::lint

@@ -1,0 +1,54 @@
+// The rule registry: every lint rule as data, with the documentation `sphdeck rule CODE` prints.
+// One flat table sorted by code (ruff's codes.rs is the model); codes are never reused.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "diag/diagnostic.hpp"  // sphdeck::diag::Severity { Info, Warning, Error }
+
+namespace sphdeck::lint {
+
+// A rule's documentation in ruff's sections.
+struct RuleDoc {
+    std::string_view what;    // what the rule checks, one paragraph
+    std::string_view why;     // why it matters: the manual remark it comes from, in our own words,
+                              // citing the source, e.g. "(*CONTROL_SPH, Remark 2e)"
+    std::string_view fix;     // how to fix it
+    std::string_view before;  // a small deck fragment that triggers the rule (keyword line, $# ruler, card)
+    std::string_view after;   // the same fragment fixed
+};
+
+struct RuleInfo {
+    std::string_view code;    // "SPH030"
+    std::string_view name;    // "iavis-solid-in-2d" (kebab-case, as in the catalogue)
+    diag::Severity severity;  // default severity; for "error/warning" rules the stronger one, and
+                              // `what` says when a finding is reported lower
+    std::string_view since;   // "0.1.0"
+    std::string_view source;  // "CONTROL_SPH R2e", "reader", "SPHBCS", ... as in the catalogue
+    std::string_view summary;  // one line: the catalogue's condition in plain words
+    RuleDoc doc;
+};
+
+// Every rule, sorted by code.
+std::span<const RuleInfo> all_rules();
+
+// The rule with this code (case-insensitive: "sph030") or exactly this name; nullptr if none.
+const RuleInfo* find_rule(std::string_view code_or_name);
+
+// "Did you mean": up to `max` codes or names close to `query`. Rules whose code or name starts with
+// the query come first (in code order), then those containing it, then those within a small edit
+// distance. Each rule appears once, as its code or its name, whichever matched better.
+std::vector<std::string_view> similar_rules(std::string_view query, std::size_t max = 3);
+
+namespace detail {
+// The rows of each family, defined in lint/rule_docs_*.cpp; use all_rules() instead.
+std::span<const RuleInfo> dk_rule_rows();
+std::span<const RuleInfo> ref_rule_rows();
+std::span<const RuleInfo> sph_rule_rows();
+std::span<const RuleInfo> rad_rule_rows();
+}  // namespace detail
+
+}  // namespace sphdeck::lint

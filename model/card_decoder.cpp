@@ -1,0 +1,178 @@
+#include "model/card_decoder.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "grammar/value.hpp"
+
+namespace sphdeck::model {
+
+using grammar::NumberStatus;
+using keywords::FieldType;
+
+namespace {
+std::string shown(std::string_view text) {
+    constexpr std::size_t limit = 40;
+    return text.size() > limit ? std::string(text.substr(0, limit)) + "..." : std::string(text);
+}
+std::string number_text(double v) { return fmt::format("{:g}", v); }
+}  // namespace
+
+void CardDecoder::report(const char* code, diag::Severity s, std::string message, grammar::Span span) {
+    out_.push_back(diag::Diagnostic{code, s, std::move(message), span, {}});
+}
+
+void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& line, const keywords::CardSpec& card,
+                         std::vector<FieldValue>& values) {
+    positions_.clear();
+    for (const auto& slot : keywords::layout(card, block.format)) positions_.push_back({slot.start, slot.width});
+    std::string_view text = deck_.text(line);
+    std::uint32_t limit = keywords::significant_width(card, block.format);
+    // A card that starts with a long text field (title, heading) is never in free format.
+    bool text_card = !card.fields.empty() && card.fields[0].type == FieldType::Text && card.fields[0].width >= 70;
+    grammar::CutReport cut = grammar::cut_fields(text, line, positions_, limit, fields_, !text_card);
+
+    if (cut.has_tab) {
+        std::size_t tab = text.find('\t');
+        report("DK016", diag::Severity::Warning, "tab in a fixed-format card: columns become ambiguous",
+               grammar::Span{line.file, line.line, static_cast<std::uint32_t>(tab + 1),
+                             static_cast<std::uint32_t>(tab + 2)});
+    }
+    if (cut.beyond.valid() && cut.extra_values == 0) {
+        report("DK006", diag::Severity::Warning,
+               fmt::format("text past column {} is ignored by the solver", limit), cut.beyond);
+    }
+    if (cut.extra_values > 0) {
+        report("DK006", diag::Severity::Warning,
+               fmt::format("{} value(s) beyond the card's {} fields are ignored", cut.extra_values, card.fields.size()),
+               cut.beyond);
+    }
+    for (std::uint32_t i : cut.too_long) {
+        report("DK005", diag::Severity::Error,
+               fmt::format("free-format value '{}' is longer than its {}-column field {}",
+                           shown(grammar::classify_value(fields_[i].text).text), positions_[i].width,
+                           card.fields[i].name),
+               fields_[i].span);
+    }
+
+    values.resize(card.fields.size());
+    for (std::size_t i = 0; i < card.fields.size(); ++i) {
+        const keywords::FieldSpec& spec = card.fields[i];
+        FieldValue& v = values[i];
+        v = FieldValue{};
+        v.spec = &spec;
+        v.span = fields_[i].span;
+        grammar::ValueToken token = grammar::classify_value(fields_[i].text);
+        v.text = token.text;
+        v.explicit_value = token.shape != grammar::ValueShape::Blank;
+        if (v.explicit_value && token.offset > 0 && !cut.free_format) {
+            // Underline the value itself, not the blanks around it.
+            v.span.column += static_cast<std::uint32_t>(token.offset);
+            v.span.end_column = v.span.column + static_cast<std::uint32_t>(token.text.size());
+        }
+        switch (spec.type) {
+            case FieldType::Unused: break;
+            case FieldType::Text:
+                v.valid = true;
+                break;
+            case FieldType::Label:
+                // An id: a number, or since 971 R7.1 an alphanumeric label (lsdyna-format.md §10).
+                if (token.shape == grammar::ValueShape::Other) {
+                    v.valid = true;
+                    break;
+                }
+                [[fallthrough]];
+            case FieldType::Integer:
+            case FieldType::Real:
+                decode_number(block, spec, v);
+                break;
+        }
+    }
+}
+
+void CardDecoder::decode_number(const grammar::Block& block, const keywords::FieldSpec& spec, FieldValue& v) {
+    const bool integer = spec.type != FieldType::Real;
+    grammar::ValueToken token = grammar::classify_value(v.text);
+    if (token.shape == grammar::ValueShape::Blank) {
+        if (spec.default_value) {
+            v.number = *spec.default_value;
+            v.valid = true;
+        } else if (spec.required) {
+            report("DK008", diag::Severity::Error, fmt::format("{} is required and has no default", spec.name), v.span);
+        }
+        return;
+    }
+    if (token.shape == grammar::ValueShape::Parameter) {
+        auto found = deck_.parameters.find(token.name, v.span.file, block.parameter_epoch);
+        if (!found.parameter) {
+            report("DK012", diag::Severity::Error, fmt::format("undefined parameter '{}'", token.name), v.span);
+            return;
+        }
+        if (found.case_mismatch)
+            report("DK024", diag::Severity::Warning,
+                   fmt::format("'&{}' matches parameter '{}' only when case is ignored", token.name,
+                               found.parameter->name),
+                   v.span);
+        using grammar::ParameterType;
+        if (found.parameter->type == ParameterType::Character ||
+            (integer && found.parameter->type == ParameterType::Real)) {
+            report("DK013", diag::Severity::Error,
+                   fmt::format("{} parameter '{}' used in {} field {}",
+                               found.parameter->type == ParameterType::Character ? "character" : "real",
+                               found.parameter->name, integer ? "integer" : "real", spec.name),
+                   v.span);
+            return;
+        }
+        v.number = token.negated ? -found.parameter->number : found.parameter->number;
+        v.valid = true;
+    } else if (integer) {
+        grammar::IntegerValue n = grammar::to_integer(token);
+        if (n.status == NumberStatus::Ok) {
+            if (n.written_as_real)
+                report("DK004", diag::Severity::Warning,
+                       fmt::format("integer field {} written as real '{}'; read as {}", spec.name, shown(token.text),
+                                   n.value),
+                       v.span);
+            v.number = static_cast<double>(n.value);
+            v.valid = true;
+        } else {
+            report("DK002", diag::Severity::Error,
+                   fmt::format("'{}' in integer field {} is not an integer", shown(token.text), spec.name), v.span);
+            return;
+        }
+    } else {
+        grammar::RealValue r = grammar::to_real(token);
+        if (r.status != NumberStatus::Ok) {
+            report("DK003", diag::Severity::Error,
+                   fmt::format("'{}' in real field {} is not a number", shown(token.text), spec.name), v.span);
+            return;
+        }
+        v.number = r.value;
+        v.valid = true;
+    }
+    if (v.number == 0.0 && spec.zero_is_default && spec.default_value) {
+        v.number = *spec.default_value;  // the manual maps an explicit 0 to the default here
+        return;
+    }
+    check_range(spec, v);
+}
+
+void CardDecoder::check_range(const keywords::FieldSpec& spec, const FieldValue& v) {
+    if (!spec.choices.empty()) {
+        if (v.number != std::trunc(v.number) || !spec.choice(static_cast<long long>(v.number))) {
+            std::string allowed;
+            for (const auto& c : spec.choices) allowed += (allowed.empty() ? "" : ", ") + std::to_string(c.value);
+            report("DK007", diag::Severity::Error,
+                   fmt::format("{} = {} is not one of {}", spec.name, number_text(v.number), allowed), v.span);
+        }
+        return;
+    }
+    if ((spec.min && v.number < *spec.min) || (spec.max && v.number > *spec.max)) {
+        report("DK007", diag::Severity::Error,
+               fmt::format("{} = {} is outside [{}, {}]", spec.name, number_text(v.number),
+                           spec.min ? number_text(*spec.min) : "-inf", spec.max ? number_text(*spec.max) : "inf"),
+               v.span);
+    }
+}
+
+}  // namespace sphdeck::model

@@ -1,0 +1,43 @@
+// Decodes one card line through its schema: fields cut by the format rules, values typed,
+// parameters substituted, defaults applied; every problem becomes a diagnostic at the field.
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include "diag/diagnostic.hpp"
+#include "grammar/fields.hpp"
+#include "grammar/keywords/schema.hpp"
+#include "grammar/raw_deck.hpp"
+
+namespace sphdeck::model {
+
+struct FieldValue {
+    const keywords::FieldSpec* spec = nullptr;
+    grammar::Span span;
+    std::string_view text;        // trimmed text as written (the parameter reference for &name)
+    bool explicit_value = false;  // written in the deck (not blank)
+    bool valid = false;           // decoded to a value (explicit or default)
+    double number = 0.0;          // I and F fields, after defaults and zero-means-default
+};
+
+class CardDecoder {
+public:
+    CardDecoder(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out) : deck_(deck), out_(out) {}
+
+    // Fills `values` with one entry per field of `card` (Unused fields included, never checked).
+    void decode(const grammar::Block& block, const grammar::CardLine& line, const keywords::CardSpec& card,
+                std::vector<FieldValue>& values);
+
+private:
+    void decode_number(const grammar::Block& block, const keywords::FieldSpec& spec, FieldValue& v);
+    void check_range(const keywords::FieldSpec& spec, const FieldValue& v);
+    void report(const char* code, diag::Severity s, std::string message, grammar::Span span);
+
+    const grammar::RawDeck& deck_;
+    std::vector<diag::Diagnostic>& out_;
+    std::vector<grammar::FixedField> positions_;
+    std::vector<grammar::Field> fields_;
+};
+
+}  // namespace sphdeck::model

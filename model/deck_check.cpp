@@ -1,0 +1,149 @@
+#include "model/deck_check.hpp"
+
+#include <fmt/format.h>
+#include <map>
+#include <string>
+
+namespace sphdeck::model {
+namespace {
+
+using keywords::CardRepeat;
+using keywords::CardSpec;
+
+// Walks the lines of one block against its card sequence (lsdyna-format.md §12): mandatory,
+// optional trailing, conditional (present_if on an earlier field) and repeated cards, or a
+// trailing group of cards repeated together (*PART).
+class BlockWalker {
+public:
+    BlockWalker(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, const CardVisitor& visit)
+        : deck_(deck), out_(out), decoder_(deck, out), visit_(visit) {}
+
+    void walk(const grammar::Block& block, const keywords::KeywordMatch& match, DeckSummary& summary) {
+        std::vector<const CardSpec*> cards = keywords::cards_for(match);
+        std::size_t group = keywords::repeat_group_size(match);
+        std::size_t group_start = cards.size() - group;
+        earlier_.clear();
+        std::size_t next = 0;
+        for (const grammar::CardLine* l = deck_.begin_lines(block); l != deck_.end_lines(block); ++l) {
+            while (next < cards.size() && !applies(*cards[next])) ++next;
+            if (next >= cards.size()) {
+                if (group > 0) {
+                    next = group_start;
+                } else {
+                    report_extra(block, *l, cards.size());
+                    return;
+                }
+            }
+            const CardSpec& card = *cards[next];
+            decoder_.decode(block, *l, card, values_);
+            remember(values_);
+            if (visit_) visit_(block, match, card, *l, values_);
+            if (block.keyword.rfind("*ELEMENT_SPH", 0) == 0) count_particles(*l, summary);
+            if (card.repeat != CardRepeat::Repeated) ++next;
+        }
+        report_missing(block, cards, next);
+    }
+
+private:
+    bool applies(const CardSpec& card) const {
+        if (!card.present_if) return true;
+        auto it = earlier_.find(std::string(card.present_if->field));
+        return card.present_if->holds(it == earlier_.end() ? 0.0 : it->second);
+    }
+
+    void remember(const std::vector<FieldValue>& values) {
+        for (const auto& v : values)
+            if (v.valid && v.spec->type != keywords::FieldType::Text) earlier_[std::string(v.spec->name)] = v.number;
+    }
+
+    void count_particles(const grammar::CardLine& line, DeckSummary& summary) {
+        // NID, PID, MASS, NEND: NEND > NID generates the range NID..NEND.
+        std::size_t n = 1;
+        if (values_.size() >= 4 && values_[0].valid && values_[3].valid && values_[3].explicit_value &&
+            values_[3].number > values_[0].number)
+            n = static_cast<std::size_t>(values_[3].number - values_[0].number) + 1;
+        summary.particles += n;
+        // Sources disagree on NEND's width (lsdyna-format.md §3); we read 33-42 and flag 41-42.
+        std::string_view text = deck_.text(line);
+        if (values_.size() >= 4 && text.size() > 40 && !grammar::is_blank(text.substr(40, 2)) &&
+            !grammar::is_free_format(text))
+            out_.push_back({"DK023", diag::Severity::Warning,
+                            "NEND reaches columns 41-42; some readers stop NEND at column 40",
+                            values_[3].span, {}});
+    }
+
+    void report_extra(const grammar::Block& block, const grammar::CardLine& line, std::size_t expected) {
+        std::size_t extra = static_cast<std::size_t>(deck_.end_lines(block) - &line);
+        out_.push_back({"DK009", diag::Severity::Warning,
+                        fmt::format("{} takes {} card(s); {} more line(s) ignored", block.keyword, expected, extra),
+                        grammar::Span{line.file, line.line, 1, 2}, {}});
+    }
+
+    // A mandatory card the block ended before (optional and repeated cards may be absent).
+    void report_missing(const grammar::Block& block, const std::vector<const CardSpec*>& cards, std::size_t next) {
+        for (std::size_t i = next; i < cards.size(); ++i) {
+            const CardSpec& c = *cards[i];
+            if (c.repeat != CardRepeat::Once || !applies(c)) continue;
+            out_.push_back({"DK008", diag::Severity::Error,
+                            fmt::format("{} is missing its {}", block.keyword, c.name.empty() ? "card" : c.name),
+                            block.span, {}});
+            return;
+        }
+    }
+
+    const grammar::RawDeck& deck_;
+    std::vector<diag::Diagnostic>& out_;
+    CardDecoder decoder_;
+    const CardVisitor& visit_;
+    std::vector<FieldValue> values_;
+    std::map<std::string, double> earlier_;
+};
+
+bool skip_cards(const std::string& keyword) {
+    // Read by the reader itself (includes, parameters) or free text.
+    return keyword == "*COMMENT" || keyword.rfind("*INCLUDE", 0) == 0 || keyword.rfind("*PARAMETER", 0) == 0 ||
+           keyword == "*END";
+}
+
+}  // namespace
+
+DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, const CardVisitor& visit) {
+    DeckSummary summary;
+    BlockWalker walker(deck, out, visit);
+    struct Unknown {
+        grammar::Span first;
+        std::size_t count = 0;
+    };
+    std::map<std::string, Unknown> unknown;
+    std::map<const keywords::KeywordSchema*, grammar::Span> seen_unique;
+    for (const grammar::Block& block : deck.blocks) {
+        auto match = keywords::find_keyword(block.keyword);
+        if (!match || !match->unknown_options.empty()) {
+            auto& u = unknown[block.keyword];
+            if (u.count++ == 0) u.first = block.span;
+            ++summary.unknown_keywords;
+            continue;
+        }
+        if (match->schema->unique) {
+            auto [it, inserted] = seen_unique.emplace(match->schema, block.span);
+            if (!inserted) {
+                out.push_back({"DK018", diag::Severity::Error,
+                               fmt::format("{} appears more than once", match->schema->name), block.span,
+                               {{it->second, "first defined here"}}});
+            }
+        }
+        if (skip_cards(block.keyword) || match->schema->free_text) continue;
+        walker.walk(block, *match, summary);
+    }
+    for (const auto& [name, u] : unknown) {
+        std::string message = fmt::format("unknown keyword {} kept as is", name);
+        if (u.count > 1) message += fmt::format(" ({} blocks)", u.count);
+        diag::Diagnostic d{"DK001", diag::Severity::Info, message, u.first, {}};
+        auto similar = keywords::similar_keywords(name);
+        if (!similar.empty()) d.notes.push_back({grammar::Span{}, fmt::format("did you mean {}?", similar.front())});
+        out.push_back(std::move(d));
+    }
+    return summary;
+}
+
+}  // namespace sphdeck::model

@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages sphdeck builds and tests with, only those missing.
+# Runs as root (CI, fresh machines) or through sudo when available.
+set -euo pipefail
+packages=(
+  build-essential cmake
+  tao-pegtl-dev libeigen3-dev libfmt-dev libcli11-dev doctest-dev nlohmann-json3-dev
+  libtomlplusplus-dev
+  python3 python3-jsonschema
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+echo "installing: ${missing[*]}"
+sudo_cmd=""
+[ "$(id -u)" -ne 0 ] && sudo_cmd="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo_cmd apt-get update -qq
+$sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,68 @@
+// Format rules for single values (lsdyna-format.md §10, §14.2).
+#include <doctest/doctest.h>
+#include <tao/pegtl/contrib/analyze.hpp>
+
+#include "grammar/value.hpp"
+#include "grammar/value_grammar.hpp"
+
+using namespace sphdeck::grammar;
+
+TEST_CASE("values: the value grammar has no infinite loops") {
+    CHECK(tao::pegtl::analyze<value_rules::integer_field>(-1) == 0);
+    CHECK(tao::pegtl::analyze<value_rules::real_field>(-1) == 0);
+    CHECK(tao::pegtl::analyze<value_rules::parameter_field>(-1) == 0);
+}
+
+TEST_CASE("values: Fortran reals in every documented form") {
+    struct Case {
+        const char* text;
+        double value;
+    };
+    const Case cases[] = {{"1.0", 1.0},      {"1.", 1.0},          {".5", 0.5},        {"+2.5", 2.5},
+                          {"5", 5.0},        {"1e3", 1000.0},      {"1E+03", 1000.0},  {"1.0D3", 1000.0},
+                          {"2.5d-4", 2.5e-4}, {"1.0+3", 1000.0},   {"3.5-10", 3.5e-10}, {"1+4", 1e4},
+                          {"-7.66720-110", -7.6672e-110},           {"  1.0     ", 1.0}, {"-0.5", -0.5}};
+    for (const Case& c : cases) {
+        CAPTURE(c.text);
+        RealValue v = parse_real(c.text);
+        REQUIRE(v.status == NumberStatus::Ok);
+        CHECK(v.value == doctest::Approx(c.value).epsilon(1e-12));
+    }
+}
+
+TEST_CASE("values: text that is not a real") {
+    for (const char* text : {"abc", "1.0.0", "1e", "e3", "--1", "1,0", "1 2", "0x10", "1.0e+", "\x01"}) {
+        CAPTURE(text);
+        CHECK(parse_real(text).status == NumberStatus::Invalid);
+    }
+    CHECK(parse_real("").status == NumberStatus::Blank);
+    CHECK(parse_real("      ").status == NumberStatus::Blank);
+    CHECK(parse_real("1e999").status == NumberStatus::Overflow);
+}
+
+TEST_CASE("values: integers, and reals in integer fields") {
+    CHECK(parse_integer("   42").value == 42);
+    CHECK(parse_integer("-7").value == -7);
+    CHECK(parse_integer("+7").value == 7);
+    IntegerValue as_real = parse_integer("1.0");
+    CHECK(as_real.status == NumberStatus::Ok);
+    CHECK(as_real.written_as_real);
+    CHECK(as_real.value == 1);
+    CHECK(parse_integer("1e3").value == 1000);
+    CHECK(parse_integer("1.5").status == NumberStatus::NotIntegral);
+    CHECK(parse_integer("12a").status == NumberStatus::Invalid);
+    CHECK(parse_integer("99999999999999999999").status == NumberStatus::Overflow);
+}
+
+TEST_CASE("values: parameter references") {
+    ValueToken t = classify_value("     &tend");
+    CHECK(t.shape == ValueShape::Parameter);
+    CHECK(t.name == "tend");
+    CHECK_FALSE(t.negated);
+    ValueToken n = classify_value("-&Rho");
+    CHECK(n.shape == ValueShape::Parameter);
+    CHECK(n.negated);
+    CHECK(n.name == "Rho");
+    CHECK(parse_real("&x").status == NumberStatus::Parameter);
+    CHECK(classify_value("& x").shape == ValueShape::Other);
+}
