@@ -54,13 +54,49 @@ bool normalise_real(std::string_view text, char* out, std::size_t capacity, std:
     return true;
 }
 
+// The forms C and Fortran share ([-]digits[.digits][e[+-]digits], [-].digits...) are what
+// std::from_chars accepts once a leading "inf"/"nan" is excluded, which the first-character
+// test does. For them a successful whole-token from_chars is the same verdict as the grammar,
+// at a third of the cost; every other text (Fortran forms, '+', garbage) goes to the grammar.
+// tests/test_values.cpp checks the two paths agree.
+bool starts_like_c_number(std::string_view t) {
+    std::size_t i = t[0] == '-' ? 1 : 0;
+    return i < t.size() && ((t[i] >= '0' && t[i] <= '9') || t[i] == '.');
+}
+
+bool fast_classify(ValueToken& token, ValueShape expected) {
+    if (!starts_like_c_number(token.text)) return false;
+    const char* begin = token.text.data();
+    const char* end = begin + token.text.size();
+    if (expected == ValueShape::Integer) {
+        auto [stop, error] = std::from_chars(begin, end, token.integer);
+        if (error == std::errc() && stop == end) {
+            token.shape = ValueShape::Integer;
+            token.real = static_cast<double>(token.integer);
+            token.converted = true;
+            return true;
+        }
+        return false;
+    }
+    auto [stop, error] = std::from_chars(begin, end, token.real);
+    if (error == std::errc() && stop == end) {
+        token.shape = ValueShape::Real;
+        token.converted = true;
+        return true;
+    }
+    return false;
+}
+
 }  // namespace
 
-ValueToken classify_value(std::string_view field) {
+ValueToken classify_value(std::string_view field, ValueShape expected) {
     ValueToken token;
     token.text = trim(field, token.offset);
     if (token.text.empty()) return token;
-    if (matches<value_rules::integer_field>(token.text)) {
+    if (fast_classify(token, expected)) return token;
+    if (expected == ValueShape::Real && matches<value_rules::real_field>(token.text)) {
+        token.shape = ValueShape::Real;  // "5" in a real field is 5.0: no need to tell it from an integer
+    } else if (matches<value_rules::integer_field>(token.text)) {
         token.shape = ValueShape::Integer;
     } else if (matches<value_rules::real_field>(token.text)) {
         token.shape = ValueShape::Real;
@@ -82,6 +118,13 @@ RealValue to_real(const ValueToken& token) {
         case ValueShape::Integer:
         case ValueShape::Real: break;
     }
+    if (token.converted) return {NumberStatus::Ok, token.real};
+    // Most reals are already in C form ("1.0e+00", "-2.5"): convert in place when from_chars
+    // takes the whole token, and rewrite only the Fortran forms (1.0D3, 1.0+3, +2.5).
+    double direct = 0.0;
+    auto [stop, error] = std::from_chars(token.text.data(), token.text.data() + token.text.size(), direct);
+    if (error == std::errc() && stop == token.text.data() + token.text.size()) return {NumberStatus::Ok, direct};
+    if (error == std::errc::result_out_of_range) return {NumberStatus::Overflow, 0.0};
     char buffer[80];
     std::size_t length = 0;
     if (!normalise_real(token.text, buffer, sizeof buffer, length)) return {NumberStatus::Invalid, 0.0};
@@ -94,6 +137,7 @@ RealValue to_real(const ValueToken& token) {
 
 IntegerValue to_integer(const ValueToken& token) {
     IntegerValue result;
+    if (token.converted && token.shape == ValueShape::Integer) return {NumberStatus::Ok, token.integer, false};
     if (token.shape == ValueShape::Integer) {
         std::string_view digits = token.text;
         if (digits.front() == '+') digits.remove_prefix(1);

@@ -22,9 +22,15 @@ struct ValueToken {
     std::size_t offset = 0;   // of `text` within the field
     bool negated = false;     // -&name
     std::string_view name;    // parameter name for Parameter
+    // Set when classification already converted the number (the fast path), so the
+    // conversion is not done twice.
+    bool converted = false;
+    double real = 0.0;
+    long long integer = 0;
 };
 
-ValueToken classify_value(std::string_view field);
+// `expected` (Integer or Real) is tried first: the common case then costs one match.
+ValueToken classify_value(std::string_view field, ValueShape expected = ValueShape::Integer);
 
 enum class NumberStatus : std::uint8_t { Ok, Blank, Invalid, Parameter, NotIntegral, Overflow };
 

@@ -22,15 +22,32 @@ void CardDecoder::report(const char* code, diag::Severity s, std::string message
     out_.push_back(diag::Diagnostic{code, s, std::move(message), span, {}});
 }
 
+const CardDecoder::Layout& CardDecoder::layout_of(const keywords::CardSpec& card, grammar::CardFormat format) {
+    if (!layouts_.empty() && layouts_[last_layout_].card == &card && layouts_[last_layout_].format == format)
+        return layouts_[last_layout_];  // repeated cards: the same layout line after line
+    for (const Layout& l : layouts_)
+        if (l.card == &card && l.format == format) {
+            last_layout_ = static_cast<std::size_t>(&l - layouts_.data());
+            return l;
+        }
+    Layout l;
+    l.card = &card;
+    l.format = format;
+    l.positions = keywords::layout(card, format);
+    l.significant = keywords::significant_width(card, format);
+    // A card that starts with a long text field (title, heading) is never in free format.
+    l.text_card = !card.fields.empty() && card.fields[0].type == FieldType::Text && card.fields[0].width >= 70;
+    layouts_.push_back(std::move(l));
+    last_layout_ = layouts_.size() - 1;
+    return layouts_.back();
+}
+
 void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& line, const keywords::CardSpec& card,
                          std::vector<FieldValue>& values) {
-    positions_.clear();
-    for (const auto& slot : keywords::layout(card, block.format)) positions_.push_back({slot.start, slot.width});
+    const Layout& layout = layout_of(card, block.format);
+    const auto& positions_ = layout.positions;
     std::string_view text = deck_.text(line);
-    std::uint32_t limit = keywords::significant_width(card, block.format);
-    // A card that starts with a long text field (title, heading) is never in free format.
-    bool text_card = !card.fields.empty() && card.fields[0].type == FieldType::Text && card.fields[0].width >= 70;
-    grammar::CutReport cut = grammar::cut_fields(text, line, positions_, limit, fields_, !text_card);
+    grammar::CutReport cut = grammar::cut_fields(text, line, positions_, layout.significant, fields_, !layout.text_card);
 
     if (cut.has_tab) {
         std::size_t tab = text.find('\t');
@@ -40,7 +57,7 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
     }
     if (cut.beyond.valid() && cut.extra_values == 0) {
         report("DK006", diag::Severity::Warning,
-               fmt::format("text past column {} is ignored by the solver", limit), cut.beyond);
+               fmt::format("text past column {} is ignored by the solver", layout.significant), cut.beyond);
     }
     if (cut.extra_values > 0) {
         report("DK006", diag::Severity::Warning,
@@ -62,7 +79,8 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
         v = FieldValue{};
         v.spec = &spec;
         v.span = fields_[i].span;
-        grammar::ValueToken token = grammar::classify_value(fields_[i].text);
+        grammar::ValueToken token = grammar::classify_value(
+            fields_[i].text, spec.type == FieldType::Real ? grammar::ValueShape::Real : grammar::ValueShape::Integer);
         v.text = token.text;
         v.explicit_value = token.shape != grammar::ValueShape::Blank;
         if (v.explicit_value && token.offset > 0 && !cut.free_format) {
@@ -84,15 +102,15 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
                 [[fallthrough]];
             case FieldType::Integer:
             case FieldType::Real:
-                decode_number(block, spec, v);
+                decode_number(block, spec, token, v);
                 break;
         }
     }
 }
 
-void CardDecoder::decode_number(const grammar::Block& block, const keywords::FieldSpec& spec, FieldValue& v) {
+void CardDecoder::decode_number(const grammar::Block& block, const keywords::FieldSpec& spec,
+                                const grammar::ValueToken& token, FieldValue& v) {
     const bool integer = spec.type != FieldType::Real;
-    grammar::ValueToken token = grammar::classify_value(v.text);
     if (token.shape == grammar::ValueShape::Blank) {
         if (spec.default_value) {
             v.number = *spec.default_value;
@@ -154,7 +172,7 @@ void CardDecoder::decode_number(const grammar::Block& block, const keywords::Fie
         v.number = *spec.default_value;  // the manual maps an explicit 0 to the default here
         return;
     }
-    check_range(spec, v);
+    if (!spec.choices.empty() || spec.min || spec.max) check_range(spec, v);
 }
 
 void CardDecoder::check_range(const keywords::FieldSpec& spec, const FieldValue& v) {

@@ -9,6 +9,7 @@
 #include "grammar/fields.hpp"
 #include "grammar/keywords/schema.hpp"
 #include "grammar/raw_deck.hpp"
+#include "grammar/value.hpp"
 
 namespace sphdeck::model {
 
@@ -30,13 +31,25 @@ public:
                 std::vector<FieldValue>& values);
 
 private:
-    void decode_number(const grammar::Block& block, const keywords::FieldSpec& spec, FieldValue& v);
+    void decode_number(const grammar::Block& block, const keywords::FieldSpec& spec, const grammar::ValueToken& token,
+                       FieldValue& v);
     void check_range(const keywords::FieldSpec& spec, const FieldValue& v);
     void report(const char* code, diag::Severity s, std::string message, grammar::Span span);
 
+    // Widened positions of a card in a format, computed once: decoding runs per line.
+    struct Layout {
+        const keywords::CardSpec* card = nullptr;
+        grammar::CardFormat format = grammar::CardFormat::Standard;
+        std::vector<grammar::FixedField> positions;
+        std::uint32_t significant = 80;
+        bool text_card = false;
+    };
+    const Layout& layout_of(const keywords::CardSpec& card, grammar::CardFormat format);
+
     const grammar::RawDeck& deck_;
     std::vector<diag::Diagnostic>& out_;
-    std::vector<grammar::FixedField> positions_;
+    std::vector<Layout> layouts_;
+    std::size_t last_layout_ = 0;
     std::vector<grammar::Field> fields_;
 };
 

@@ -24,6 +24,7 @@ public:
         std::size_t group_start = cards.size() - group;
         earlier_.clear();
         std::size_t next = 0;
+        const bool particles = block.keyword.rfind("*ELEMENT_SPH", 0) == 0;
         for (const grammar::CardLine* l = deck_.begin_lines(block); l != deck_.end_lines(block); ++l) {
             while (next < cards.size() && !applies(*cards[next])) ++next;
             if (next >= cards.size()) {
@@ -36,9 +37,9 @@ public:
             }
             const CardSpec& card = *cards[next];
             decoder_.decode(block, *l, card, values_);
-            remember(values_);
+            if (card.repeat != CardRepeat::Repeated) remember(values_);  // conditions look at header cards
             if (visit_) visit_(block, match, card, *l, values_);
-            if (block.keyword.rfind("*ELEMENT_SPH", 0) == 0) count_particles(*l, summary);
+            if (particles) count_particles(*l, summary);
             if (card.repeat != CardRepeat::Repeated) ++next;
         }
         report_missing(block, cards, next);

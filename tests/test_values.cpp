@@ -66,3 +66,24 @@ TEST_CASE("values: parameter references") {
     CHECK(parse_real("&x").status == NumberStatus::Parameter);
     CHECK(classify_value("& x").shape == ValueShape::Other);
 }
+
+TEST_CASE("values: the from_chars fast path agrees with the grammar") {
+    // Every text is classified twice: as an integer field (fast path for integers) and as a
+    // real field (fast path for reals); both must give the grammar's verdict and value.
+    const char* texts[] = {"1",     "-1",   "+1",    "1.",   ".5",    "-.5",  "1e3",  "1E+03", "1.0D3", "1.0+3",
+                           "inf",   "-inf", "nan",   "1e",   "-",     ".",    "-.",   "1.5e", "0x10",  "1..2",
+                           "00012", "-0",   "1e-400", "12a", "9e9999", "-e5", "1.0e+00", "-1.234567890e+01"};
+    for (const char* text : texts) {
+        CAPTURE(text);
+        ValueToken as_int = classify_value(text, ValueShape::Integer);
+        ValueToken as_real = classify_value(text, ValueShape::Real);
+        bool grammar_number = as_int.shape == ValueShape::Integer || as_int.shape == ValueShape::Real;
+        CHECK(grammar_number == (as_real.shape == ValueShape::Integer || as_real.shape == ValueShape::Real));
+        if (!grammar_number) continue;
+        RealValue a = to_real(as_int), b = to_real(as_real);
+        CHECK(a.status == b.status);
+        if (a.status == NumberStatus::Ok) CHECK(a.value == b.value);
+    }
+    CHECK(classify_value("inf", ValueShape::Real).shape == ValueShape::Other);
+    CHECK(classify_value("-nan", ValueShape::Real).shape == ValueShape::Other);
+}

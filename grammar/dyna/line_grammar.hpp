@@ -3,14 +3,31 @@
 // *END, inside an encrypted block) is decided by the reader's actions.
 #pragma once
 
+#include <cstring>
 #include <tao/pegtl.hpp>
+#include <tao/pegtl/contrib/analyze_traits.hpp>
 
 namespace sphdeck::grammar::dyna::rules {
 
 namespace pegtl = tao::pegtl;
 
 struct byte_order_mark : pegtl::string<'\xEF', '\xBB', '\xBF'> {};
-struct rest_of_line : pegtl::star<pegtl::not_one<'\n'>> {};  // '\r' is stripped by the actions
+
+// Everything up to (not including) the next '\n', found with memchr: the reader's hot loop
+// runs once per line of decks with millions of lines. Equivalent to star<not_one<'\n'>>.
+struct rest_of_line {
+    using rule_t = rest_of_line;
+    using subs_t = pegtl::type_list<>;
+    template <pegtl::apply_mode, pegtl::rewind_mode, template <typename...> class, template <typename...> class,
+              typename Input, typename... States>
+    static bool match(Input& in, States&&...) {
+        const char* begin = in.current();
+        const char* end = in.end();
+        const void* newline = std::memchr(begin, '\n', static_cast<std::size_t>(end - begin));
+        in.bump_in_this_line(static_cast<std::size_t>((newline ? static_cast<const char*>(newline) : end) - begin));
+        return true;
+    }
+};
 struct inline_blank : pegtl::one<' ', '\t'> {};
 
 // '$' in column 1.
@@ -31,7 +48,7 @@ struct keyword_line
 struct pgp_begin_line : pegtl::seq<TAO_PEGTL_STRING("-----BEGIN PGP"), rest_of_line> {};
 struct pgp_end_line : pegtl::seq<TAO_PEGTL_STRING("-----END PGP"), rest_of_line> {};
 
-struct data_line : pegtl::plus<pegtl::not_one<'\n'>> {};
+struct data_line : pegtl::seq<pegtl::not_one<'\n'>, rest_of_line> {};
 struct empty_line : pegtl::one<'\n'> {};  // a blank data line: inside a keyword it is a card
 
 // Every alternative consumes at least one byte, so the file loop always advances.
@@ -40,3 +57,7 @@ struct line : pegtl::sor<empty_line, pegtl::seq<line_body, pegtl::opt<pegtl::one
 struct file : pegtl::seq<pegtl::opt<byte_order_mark>, pegtl::until<pegtl::eof, line>> {};
 
 }  // namespace sphdeck::grammar::dyna::rules
+
+// For pegtl::analyze: rest_of_line may succeed without consuming input, like an opt<>.
+template <typename Name>
+struct tao::pegtl::analyze_traits<Name, sphdeck::grammar::dyna::rules::rest_of_line> : tao::pegtl::analyze_opt_traits<> {};

@@ -18,16 +18,6 @@ bool iequals(std::string_view a, std::string_view b) {
     return true;
 }
 
-// Width of a field (or of the gap before it) after promotion to a format (lsdyna-format.md §6).
-std::uint32_t widened(std::uint32_t width, grammar::CardFormat format) {
-    switch (format) {
-        case grammar::CardFormat::I10: return std::max<std::uint32_t>(width, 10);
-        case grammar::CardFormat::Long: return std::max<std::uint32_t>(width, 20);
-        case grammar::CardFormat::Standard: break;
-    }
-    return width;
-}
-
 constexpr std::uint32_t kLongLine = 160;
 
 }  // namespace
@@ -109,20 +99,17 @@ bool KeywordMatch::has(std::string_view s) const {
 }
 
 std::vector<FieldSlot> layout(const CardSpec& card, grammar::CardFormat format) {
+    std::vector<grammar::FixedField> standard;
+    standard.reserve(card.fields.size());
+    for (const FieldSpec& f : card.fields) standard.push_back({f.column > 0 ? f.column - 1u : 0u, f.width});
     std::vector<FieldSlot> slots;
-    slots.reserve(card.fields.size());
-    std::uint32_t pos = 0;         // 0-based offset in the promoted line
-    std::uint32_t std_end = 0;     // 0-based end of the previous field in standard format
-    for (const FieldSpec& f : card.fields) {
-        const std::uint32_t std_start = f.column > 0 ? f.column - 1u : 0u;
-        if (std_start > std_end) pos += widened(std_start - std_end, format);  // a gap: unused columns
-        std::uint32_t width = widened(f.width, format);
-        const bool trailing_text = f.type == FieldType::Text && f.width >= 70 && std_start + f.width == 80;
-        if (format == grammar::CardFormat::Long && trailing_text && pos < kLongLine)
-            width = std::max(width, kLongLine - pos);
-        slots.push_back({pos, width});
-        pos += width;
-        std_end = std::max(std_end, std_start + f.width);
+    grammar::widen(standard, format, slots);
+    // In long format a trailing A80 name, path or expression field may run to column 160.
+    if (format == grammar::CardFormat::Long && !card.fields.empty()) {
+        const FieldSpec& last = card.fields.back();
+        if (last.type == FieldType::Text && last.width >= 70 && last.column - 1u + last.width == 80 &&
+            slots.back().start < kLongLine)
+            slots.back().width = std::max(slots.back().width, kLongLine - slots.back().start);
     }
     return slots;
 }

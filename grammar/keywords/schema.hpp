@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "grammar/fields.hpp"
 #include "grammar/raw_deck.hpp"
 
 namespace sphdeck::keywords {
@@ -125,10 +126,8 @@ struct KeywordSchema {
 // gap between two fields widens like an unused field of the same width would. In long format a
 // trailing text field of 70 or more columns that ends at column 80 (a title, file name, path or
 // expression) runs to column 160 ("A80 name, path and expression fields may be 160").
-struct FieldSlot {
-    std::uint32_t start = 0;  // 0-based offset in the line
-    std::uint32_t width = 0;
-};
+// The format rules live in grammar/fields.hpp; a slot is a widened FixedField.
+using FieldSlot = grammar::FixedField;
 std::vector<FieldSlot> layout(const CardSpec& card, grammar::CardFormat format);
 
 // Last significant column of a card in a format: the card's line width (80) in standard format;
