@@ -1,13 +1,19 @@
-// sphdeck check DECK...: read decks, report problems, end with one summary line.
+// sphdeck check DECK...: read decks, report problems in the chosen format, end with one summary
+// line (stdout for the full text format, stderr otherwise so stdout stays machine-readable).
 #include <chrono>
 #include <cstdio>
 #include <fmt/format.h>
 #include <map>
+#include <memory>
 #include <unistd.h>
 
 #include "cli/commands.hpp"
+#include "diag/render_github.hpp"
+#include "diag/render_json.hpp"
+#include "diag/render_sarif.hpp"
 #include "diag/render_text.hpp"
 #include "lint/pipeline.hpp"
+#include "lint/suppressions.hpp"
 
 namespace sphdeck::cli {
 namespace {
@@ -17,15 +23,14 @@ struct CheckArgs {
     std::string format = "full";
     std::vector<std::string> include_paths;
     std::size_t max_per_code = 20;
+    std::vector<std::string> select, ignore;
+    std::string solver, fail_on, config_file;
+    bool no_config = false;
+    CLI::Option* select_option = nullptr;  // to tell "--select" absent from empty
 };
 
-struct Totals {
-    std::size_t files = 0, keywords = 0, cards = 0, particles = 0;
-    diag::Counts counts;
-};
-
-// Prints a deck's diagnostics; past `max_per_code` of one code, the rest are counted, not shown.
-void print_diagnostics(const lint::CheckResult& r, const CheckArgs& args, bool colour) {
+// Prints a deck's diagnostics as text; past `max_per_code` of one code, the rest are counted, not shown.
+void print_text(const lint::CheckResult& r, const CheckArgs& args, bool colour) {
     std::map<std::string, std::size_t> shown, hidden;
     diag::RenderOptions options{colour};
     for (const diag::Diagnostic& d : r.diagnostics) {
@@ -45,41 +50,121 @@ void print_diagnostics(const lint::CheckResult& r, const CheckArgs& args, bool c
                    r.deck.sources.file(0).display_name, n, code);
 }
 
+lint::ConfigOverrides overrides_of(const CheckArgs& args) {
+    lint::ConfigOverrides o;
+    if (args.select_option && args.select_option->count() > 0) o.select = args.select;
+    o.ignore = args.ignore;
+    if (!args.solver.empty()) o.solver = args.solver;
+    lint::FailOn level{};
+    if (lint::parse_fail_on(args.fail_on, level)) o.fail_on = level;
+    o.include_paths = args.include_paths;
+    return o;
+}
+
+// Every deck's settings, resolved before any deck is read: a bad sphdeck.toml stops the run
+// (exit 2) instead of leaving a half-written report. Each config file is read once.
+std::optional<std::vector<lint::Config>> resolve_configs(const CheckArgs& args) {
+    const lint::ConfigOverrides overrides = overrides_of(args);
+    std::map<std::string, lint::Config> loaded;
+    std::vector<lint::Config> out;
+    for (const std::string& deck : args.decks) {
+        std::string path = args.config_file;
+        if (args.no_config) path.clear();
+        else if (path.empty())
+            if (auto found = lint::find_config(deck)) path = found->string();
+        lint::Config config;
+        if (!path.empty()) {
+            auto it = loaded.find(path);
+            if (it == loaded.end()) {
+                if (auto error = lint::load_config(path, config)) {
+                    fmt::print(stderr, "{}\n", error->to_string());
+                    return std::nullopt;
+                }
+                it = loaded.emplace(path, config).first;
+            }
+            config = it->second;
+        }
+        lint::apply_overrides(overrides, config);
+        out.push_back(std::move(config));
+    }
+    return out;
+}
+
+lint::CheckOptions options_for(const lint::Config& config, const CheckArgs& args) {
+    lint::CheckOptions options;
+    options.reader.include_paths = config.include_paths;
+    options.config = config;
+    if (config.solver) {
+        options.rules.solver = *config.solver == "mpp" ? lint::Solver::Mpp : lint::Solver::Smp;
+        options.rules.solver_source = args.solver.empty() ? config.path : "--solver";
+    }
+    return options;
+}
+
+void add_totals(const lint::CheckResult& r, diag::RunSummary& totals) {
+    totals.files += r.deck.stats.files;
+    totals.keywords += r.deck.stats.keywords;
+    totals.cards += r.deck.stats.cards;
+    totals.particles += r.summary.particles;
+    diag::Counts c = diag::count(r.diagnostics);
+    totals.counts.errors += c.errors;
+    totals.counts.warnings += c.warnings;
+    totals.counts.infos += c.infos;
+}
+
 int run_check(const CheckArgs& args) {
     auto start = std::chrono::steady_clock::now();
-    lint::CheckOptions options;
-    options.reader.include_paths = args.include_paths;
-    bool colour = args.format == "full" && diag::colour_wanted(STDOUT_FILENO);
-    Totals totals;
-    bool io_failure = false;
-    for (const std::string& path : args.decks) {
+    auto configs = resolve_configs(args);
+    if (!configs) return exit_usage;
+    std::unique_ptr<diag::Report> report;
+    if (args.format == "json") report = diag::make_json_report();
+    if (args.format == "sarif") report = diag::make_sarif_report();
+    const bool colour = args.format == "full" && diag::colour_wanted(STDOUT_FILENO);
+
+    diag::RunSummary totals;
+    bool failed = false;
+    for (std::size_t i = 0; i < args.decks.size(); ++i) {
+        const lint::Config& config = (*configs)[i];
         lint::CheckResult r;
         try {
-            r = lint::check_file(path, options);
+            r = lint::check_file(args.decks[i], options_for(config, args));
         } catch (const std::exception& e) {
             fmt::print(stderr, "sphdeck: error: {}\n", e.what());
-            io_failure = true;
+            totals.complete = false;
             continue;
         }
-        print_diagnostics(r, args, colour);
-        totals.files += r.deck.stats.files;
-        totals.keywords += r.deck.stats.keywords;
-        totals.cards += r.deck.stats.cards;
-        totals.particles += r.summary.particles;
-        diag::Counts c = diag::count(r.diagnostics);
-        totals.counts.errors += c.errors;
-        totals.counts.warnings += c.warnings;
-        totals.counts.infos += c.infos;
+        lint::apply_suppressions(r.deck.sources, r.diagnostics);
+        lint::apply_rule_settings(config, r.diagnostics);
+        if (report) {
+            report->add(r.deck.sources, r.diagnostics);
+        } else if (args.format == "github") {
+            for (const diag::Diagnostic& d : r.diagnostics) fmt::print("{}", diag::render_github(d, r.deck.sources));
+        } else {
+            print_text(r, args, colour);
+        }
+        failed = failed || lint::fails(config, r.diagnostics);
+        add_totals(r, totals);
     }
-    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::FILE* summary_stream = args.format == "concise" ? stderr : stdout;
-    fmt::print(summary_stream,
+    totals.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (report) fmt::print("{}", report->finish(totals));
+    std::fflush(stdout);
+    fmt::print(args.format == "full" ? stdout : stderr,
                "checked {} file(s): {} keywords, {} cards, {} particles; {} error(s), {} warning(s), {} info(s) "
                "in {:.2f} s\n",
                totals.files, totals.keywords, totals.cards, totals.particles, totals.counts.errors,
-               totals.counts.warnings, totals.counts.infos, seconds);
-    if (io_failure) return exit_usage;
-    return totals.counts.errors > 0 ? exit_findings : exit_clean;
+               totals.counts.warnings, totals.counts.infos, totals.seconds);
+    if (!totals.complete) return exit_usage;
+    return failed ? exit_findings : exit_clean;
+}
+
+// Rejects unknown codes on the command line, with the registry's suggestions.
+CLI::Validator rule_selector() {
+    return CLI::Validator(
+        [](std::string& value) {
+            auto problem = lint::check_selector(value);
+            return problem ? *problem : std::string();
+        },
+        "CODE", "rule selector");
 }
 
 }  // namespace
@@ -87,14 +172,30 @@ int run_check(const CheckArgs& args) {
 std::function<int()> setup_check(CLI::App& app) {
     auto args = std::make_shared<CheckArgs>();
     app.add_option("decks", args->decks, "LS-DYNA keyword decks (.k, .key, .dyn)")->required();
-    app.add_option("--format", args->format, "output format")
-        ->check(CLI::IsMember({"full", "concise"}))
+    app.add_option("--format", args->format, "output format (json, sarif and github carry every finding)")
+        ->check(CLI::IsMember({"full", "concise", "json", "sarif", "github"}))
         ->capture_default_str();
     app.add_option("-I,--include-path", args->include_paths,
                    "extra folder searched for *INCLUDE files, after the deck's own folders");
     app.add_option("--max-per-code", args->max_per_code,
-                   "show at most N findings of one rule per deck (0: all)")
+                   "show at most N findings of one rule per deck in text formats (0: all)")
         ->capture_default_str();
+    args->select_option = app.add_option("--select", args->select,
+                                         "check only these rules: codes, names or prefixes such as SPH "
+                                         "(replaces select of sphdeck.toml)")
+                              ->delimiter(',')
+                              ->check(rule_selector());
+    app.add_option("--ignore", args->ignore, "skip these rules (added to ignore of sphdeck.toml)")
+        ->delimiter(',')
+        ->check(rule_selector());
+    app.add_option("--solver", args->solver, "the run type, for rules that depend on it")
+        ->check(CLI::IsMember({"smp", "mpp"}));
+    app.add_option("--fail-on", args->fail_on,
+                   "exit with 1 when a finding has at least this severity [default: error]")
+        ->check(CLI::IsMember({"error", "warning", "info", "never"}));
+    auto* config = app.add_option("--config", args->config_file,
+                                  "read this configuration file instead of searching for sphdeck.toml");
+    app.add_flag("--no-config", args->no_config, "ignore every sphdeck.toml")->excludes(config);
     return [args] { return run_check(*args); };
 }
 

@@ -20,5 +20,8 @@ struct Command {
 };
 
 std::function<int()> setup_check(CLI::App& app);
+std::function<int()> setup_rule(CLI::App& app);
+std::function<int()> setup_rules(CLI::App& app);
+std::function<int()> setup_keyword(CLI::App& app);
 
 }  // namespace sphdeck::cli

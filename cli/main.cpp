@@ -12,6 +12,9 @@ namespace {
 const std::vector<sphdeck::cli::Command>& commands() {
     static const std::vector<sphdeck::cli::Command> table = {
         {"check", "read decks and report problems with file:line:column and rule codes", sphdeck::cli::setup_check},
+        {"rule", "explain one rule: what it checks, why, how to fix it, an example", sphdeck::cli::setup_rule},
+        {"rules", "list every rule (--format markdown: docs/rules.md)", sphdeck::cli::setup_rules},
+        {"keyword", "print a keyword's cards: columns, types, defaults, allowed values", sphdeck::cli::setup_keyword},
     };
     return table;
 }

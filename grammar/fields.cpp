@@ -47,6 +47,15 @@ Span column_span(const CardLine& line, std::size_t begin, std::size_t end) {
 
 }  // namespace
 
+std::string_view to_string(CardFormat f) {
+    switch (f) {
+        case CardFormat::Standard: return "standard";
+        case CardFormat::I10: return "i10";
+        case CardFormat::Long: return "long";
+    }
+    return "standard";
+}
+
 bool is_blank(std::string_view s) {
     for (char c : s)
         if (c != ' ' && c != '\t' && c != '\r') return false;

@@ -8,18 +8,24 @@
 #include "diag/diagnostic.hpp"
 #include "grammar/dyna/reader.hpp"
 #include "grammar/raw_deck.hpp"
+#include "lint/config.hpp"
+#include "lint/rule_context.hpp"
 #include "model/deck_check.hpp"
+#include "model/model.hpp"
 
 namespace sphdeck::lint {
 
 struct CheckOptions {
     grammar::dyna::ReaderOptions reader;
+    RuleOptions rules;
+    Config config;  // sphdeck.toml merged with the command line; cli/ copies the solver into `rules`
 };
 
 struct CheckResult {
     grammar::RawDeck deck;
     std::vector<diag::Diagnostic> diagnostics;  // sorted by location
     model::DeckSummary summary;
+    model::Model model;
 };
 
 // Throws std::runtime_error when the main file cannot be read.

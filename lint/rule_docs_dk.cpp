@@ -705,6 +705,64 @@ $#    ncbs     boxid        dt      idim    memory      form     start      maxv
 $#    ncbs     boxid        dt      idim    memory      form     start      maxv
          1         0     1e+20         3       150         1       0.0     1e+15
 )deck"}},
+
+    // DK027 data-before-keyword
+    {.code = "DK027",
+     .name = "data-before-keyword",
+     .severity = diag::Severity::Warning,
+     .since = "0.1.0",
+     .source = "reader",
+     .summary = "non-blank data lines before the first keyword line are ignored",
+     .doc = {.what = "Reports the first non-blank line of a file that is neither a comment (`$` in "
+                     "column 1) nor a keyword line and comes before the file's first keyword: a "
+                     "data line that belongs to no keyword. It is reported once per file.",
+             .why = "A data line holds a card of the keyword above it; with no keyword above it, "
+                    "nothing reads it and its values are lost. pydyna refuses such lines and what "
+                    "LS-DYNA does with them is not documented (LS-DYNA format notes, *KEYWORD). "
+                    "Usually it is a note that lost its `$`, or a card whose keyword line was "
+                    "deleted or cut off by an editor.",
+             .fix = "Make the line a comment by putting `$` in column 1, or restore the keyword "
+                    "line it belongs to.",
+             .before = R"deck(units: ton, mm, s
+*KEYWORD
+*CONTROL_TERMINATION
+$#  endtim    endcyc     dtmin    endeng    endmas     nosol
+     0.002
+)deck",
+             .after = R"deck($ units: ton, mm, s
+*KEYWORD
+*CONTROL_TERMINATION
+$#  endtim    endcyc     dtmin    endeng    endmas     nosol
+     0.002
+)deck"}},
+
+    // DK028 bad-suppression
+    {.code = "DK028",
+     .name = "bad-suppression",
+     .severity = diag::Severity::Warning,
+     .since = "0.1.0",
+     .source = "reader",
+     .summary = "a \"$ sphdeck:\" comment that cannot be understood: unknown action, rule or syntax",
+     .doc = {.what = "Reports a comment that starts like a suppression (`$ sphdeck:`) but cannot be "
+                     "read: an action other than `disable`, `disable-next-line` or `disable-file`, "
+                     "a missing `=` or code list, or a code or rule name that does not exist. "
+                     "Such a comment silences nothing.",
+             .why = "A misspelt suppression looks as if it worked when reading the deck, while the "
+                    "findings it was meant to silence keep appearing or, worse, someone silences "
+                    "them again elsewhere; clang-tidy reports malformed NOLINT comments for the "
+                    "same reason (sphdeck suppression comments).",
+             .fix = "Write `$ sphdeck: disable=CODE[,CODE...] -- reason` (or `disable-next-line=`, "
+                    "`disable-file=`) with codes or names that `sphdeck rules` lists.",
+             .before = R"deck($ sphdeck: disabel=SPH032 -- form 2 kept for comparison
+*CONTROL_SPH
+$#    ncbs     boxid        dt      idim    memory      form     start      maxv
+         1         0     1e+20         3       150         2       0.0     1e+15
+)deck",
+             .after = R"deck($ sphdeck: disable=SPH032 -- form 2 kept for comparison
+*CONTROL_SPH
+$#    ncbs     boxid        dt      idim    memory      form     start      maxv
+         1         0     1e+20         3       150         2       0.0     1e+15
+)deck"}},
 };
 
 }  // namespace

@@ -125,7 +125,8 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
             ++summary.unknown_keywords;
             continue;
         }
-        if (match->schema->unique) {
+        // Only *CONTROL_ keywords: every include file legitimately starts with its own *KEYWORD.
+        if (match->schema->unique && match->schema->name.rfind("*CONTROL_", 0) == 0) {
             auto [it, inserted] = seen_unique.emplace(match->schema, block.span);
             if (!inserted) {
                 out.push_back({"DK018", diag::Severity::Error,

@@ -28,15 +28,6 @@ CardFormat format_of_suffix(char suffix, CardFormat inherited) {
 }
 }  // namespace
 
-std::string_view to_string(CardFormat f) {
-    switch (f) {
-        case CardFormat::Standard: return "standard";
-        case CardFormat::I10: return "i10";
-        case CardFormat::Long: return "long";
-    }
-    return "standard";
-}
-
 DeckReader::DeckReader(RawDeck& deck, const ReaderOptions& options) : deck_(deck), options_(options) {
     for (const auto& p : options.include_paths) include_paths_.emplace_back(p);
 }

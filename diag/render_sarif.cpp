@@ -1,0 +1,133 @@
+// The SARIF 2.1.0 report (linter-conventions.md §6.4); tests validate it against the OASIS schema.
+#include "diag/render_sarif.hpp"
+
+#include <cctype>
+#include <filesystem>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "diag/render_text.hpp"
+#include "lint/registry.hpp"
+#include "lint/rule_pages.hpp"
+
+namespace sphdeck::diag {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+constexpr const char* kSrcRoot = "%SRCROOT%";
+
+const char* level(Severity s) {
+    switch (s) {
+        case Severity::Error: return "error";
+        case Severity::Warning: return "warning";
+        case Severity::Info: return "note";
+    }
+    return "warning";
+}
+
+// RFC 3986: keep unreserved characters and '/', percent-encode every other byte.
+std::string percent_encoded(std::string_view path) {
+    std::string out;
+    for (char c : path) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (std::isalnum(byte) || c == '-' || c == '.' || c == '_' || c == '~' || c == '/') out += c;
+        else out += fmt::format("%{:02X}", byte);
+    }
+    return out;
+}
+
+json rule_descriptor(const lint::RuleInfo& rule) {
+    return {{"id", rule.code},
+            {"name", rule.name},
+            {"shortDescription", {{"text", rule.summary}}},
+            {"fullDescription", {{"text", rule.doc.what}}},
+            {"help", {{"text", lint::rule_text_body(rule)}, {"markdown", lint::rule_markdown_body(rule)}}},
+            {"helpUri", lint::rule_url(rule)},
+            {"defaultConfiguration", {{"level", level(rule.severity)}}}};
+}
+
+// Deck-wide findings have no span: they point at the first line of the main deck, because code
+// scanning drops results without a location.
+json physical_location(const grammar::Span& span, const grammar::SourceMap& sources) {
+    const bool located = detail::has_location(span, sources);
+    const grammar::SourceFile& file = sources.file(located ? span.file : 0);
+    bool relative = false;
+    json artifact = {{"uri", sarif_uri(file, relative)}};
+    if (relative) artifact["uriBaseId"] = kSrcRoot;
+    json region = {{"startLine", located ? span.line : 1}};
+    if (located) {
+        region["startColumn"] = span.column;
+        region["endColumn"] = std::max(span.end_column, span.column + 1);
+    }
+    return {{"physicalLocation", {{"artifactLocation", artifact}, {"region", region}}}};
+}
+
+class SarifReport final : public Report {
+public:
+    void add(const grammar::SourceMap& sources, const std::vector<Diagnostic>& diagnostics) override {
+        const auto rules = lint::all_rules();
+        for (const Diagnostic& d : diagnostics) {
+            std::string text = d.message;
+            json related = json::array();
+            for (const Note& note : d.notes) {
+                if (!detail::has_location(note.span, sources)) {
+                    text += "\nnote: " + note.message;  // no location: part of the message
+                    continue;
+                }
+                json location = physical_location(note.span, sources);
+                location["id"] = related.size();
+                location["message"] = {{"text", note.message}};
+                related.push_back(std::move(location));
+            }
+            json result = {{"ruleId", d.code}};
+            if (const lint::RuleInfo* rule = lint::find_rule(d.code))
+                result["ruleIndex"] = static_cast<std::size_t>(rule - rules.data());
+            result["level"] = level(d.severity);
+            result["message"] = {{"text", text}};
+            if (sources.size() > 0) result["locations"] = json::array({physical_location(d.span, sources)});
+            if (!related.empty()) result["relatedLocations"] = std::move(related);
+            results_.push_back(std::move(result));
+        }
+    }
+
+    std::string finish(const RunSummary& summary) const override {
+        json rules = json::array();
+        for (const lint::RuleInfo& rule : lint::all_rules()) rules.push_back(rule_descriptor(rule));
+        json driver = {{"name", "sphdeck"},
+                       {"version", SPHDECK_VERSION},
+                       {"semanticVersion", SPHDECK_VERSION},
+                       {"informationUri", lint::project_url},
+                       {"rules", std::move(rules)}};
+        json run = {{"tool", {{"driver", std::move(driver)}}}};
+        std::error_code ec;
+        const auto cwd = std::filesystem::current_path(ec);
+        if (!ec) {
+            std::string root = "file://" + percent_encoded(cwd.generic_string());
+            if (!root.ends_with('/')) root += '/';
+            run["originalUriBaseIds"] = {{kSrcRoot, {{"uri", root}}}};
+        }
+        run["invocations"] = json::array({{{"executionSuccessful", summary.complete}}});
+        run["results"] = results_;
+        json log = {{"$schema", "https://json.schemastore.org/sarif-2.1.0.json"},
+                    {"version", "2.1.0"},
+                    {"runs", json::array({std::move(run)})}};
+        return log.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
+    }
+
+private:
+    json results_ = json::array();
+};
+
+}  // namespace
+
+std::string sarif_uri(const grammar::SourceFile& file, bool& relative) {
+    const std::string path = tool_path(file);
+    relative = !path.starts_with('/');
+    return relative ? percent_encoded(path) : "file://" + percent_encoded(path);
+}
+
+std::unique_ptr<Report> make_sarif_report() { return std::make_unique<SarifReport>(); }
+
+}  // namespace sphdeck::diag

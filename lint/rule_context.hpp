@@ -1,0 +1,48 @@
+// What a lint rule sees: the model, the raw deck (for locations), the run's options, and a
+// reporter that takes the rule's default severity from the registry.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "diag/diagnostic.hpp"
+#include "grammar/raw_deck.hpp"
+#include "model/model.hpp"
+
+namespace sphdeck::lint {
+
+enum class Solver { Unknown, Smp, Mpp };
+
+struct RuleOptions {
+    Solver solver = Solver::Unknown;
+    std::string solver_source;  // who decided: "--solver", "sphdeck.toml", ...
+};
+
+class RuleContext {
+public:
+    RuleContext(const model::Model& model, const grammar::RawDeck& deck, const RuleOptions& options,
+                std::vector<diag::Diagnostic>& out)
+        : model(model), deck(deck), options(options), out_(out) {}
+
+    const model::Model& model;
+    const grammar::RawDeck& deck;
+    const RuleOptions& options;
+
+    // Reports with the registry's default severity for `code`.
+    diag::Diagnostic& report(std::string_view code, grammar::Span span, std::string message);
+    // Reports with an explicit severity (rules whose severity depends on the case).
+    diag::Diagnostic& report(std::string_view code, diag::Severity severity, grammar::Span span, std::string message);
+
+    // Location of a particle's card line (its *ELEMENT_SPH line), whole line.
+    grammar::Span particle_span(std::size_t particle) const;
+    grammar::Span node_span(std::size_t node) const;
+
+private:
+    std::vector<diag::Diagnostic>& out_;
+};
+
+// Every lint rule family, run in order.
+void run_rules(RuleContext& context);
+
+}  // namespace sphdeck::lint

@@ -1,0 +1,196 @@
+// REF001-REF008: references between definitions (particle → node, part → section, material,
+// EOS; sets; boxes), duplicate ids and unused definitions.
+#include <fmt/format.h>
+#include <map>
+#include <set>
+#include <unordered_map>
+
+#include "lint/rules.hpp"
+#include "model/id_index.hpp"
+
+namespace sphdeck::lint {
+namespace {
+
+using model::Id;
+
+constexpr std::size_t max_listed = 5;  // ids named in one message
+
+std::string list_ids(const std::vector<long long>& ids) {
+    std::string s;
+    for (std::size_t i = 0; i < ids.size() && i < max_listed; ++i) s += (i ? ", " : "") + std::to_string(ids[i]);
+    if (ids.size() > max_listed) s += ", ...";
+    return s;
+}
+
+// REF001 and REF002 for particles: grouped per missing id, so a million bad particles make a
+// handful of findings, each at the first particle that names it.
+void check_particles(RuleContext& c, const model::IdIndex& nodes) {
+    const model::Particles& p = c.model.particles;
+    std::map<long long, std::pair<std::size_t, std::size_t>> missing_node;  // id → first particle, count
+    std::map<long long, std::pair<std::size_t, std::size_t>> missing_part;
+    std::unordered_map<long long, bool> part_known;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (!nodes.find(p.node[i])) {
+            auto [it, fresh] = missing_node.try_emplace(p.node[i], i, 0);
+            ++it->second.second;
+        }
+        auto known = part_known.find(p.part[i]);
+        if (known == part_known.end())
+            known = part_known.emplace(p.part[i], c.model.part(std::to_string(p.part[i])) != nullptr).first;
+        if (!known->second) {
+            auto [it, fresh] = missing_part.try_emplace(p.part[i], i, 0);
+            ++it->second.second;
+        }
+    }
+    for (const auto& [id, first] : missing_node)
+        c.report("REF001", c.particle_span(first.first), fmt::format("particle {} has no *NODE {}", id, id));
+    for (const auto& [id, first] : missing_part) {
+        std::string count = first.second > 1 ? fmt::format(" ({} particles)", first.second) : "";
+        c.report("REF002", c.particle_span(first.first), fmt::format("particle part {} is not defined{}", id, count));
+    }
+}
+
+template <typename T>
+void check_duplicates(RuleContext& c, const std::vector<T>& items, std::string_view what) {
+    std::map<Id, const T*> seen;
+    for (const T& item : items) {
+        if (item.id.empty()) continue;
+        auto [it, fresh] = seen.emplace(item.id, &item);
+        if (!fresh)
+            c.report("REF006", item.span, fmt::format("{} {} is defined twice", what, item.id))
+                .notes.push_back({it->second->span, "first defined here"});
+    }
+}
+
+void check_array_duplicates(RuleContext& c, const model::IdIndex& index, const std::vector<long long>& ids,
+                            bool particles) {
+    std::size_t reported = 0;
+    for (const auto& [first, again] : index.duplicates()) {
+        if (reported++ == 20) break;  // a handful says enough; the rest are usually the same mistake
+        grammar::Span where = particles ? c.particle_span(again) : c.node_span(again);
+        grammar::Span before = particles ? c.particle_span(first) : c.node_span(first);
+        c.report("REF006", where, fmt::format("{} {} is defined twice", particles ? "particle" : "node", ids[again]))
+            .notes.push_back({before, "first defined here"});
+    }
+}
+
+void check_part_references(RuleContext& c, std::set<Id>& used_sections, std::set<Id>& used_materials,
+                           std::set<Id>& used_eos) {
+    for (const model::Part& part : c.model.parts) {
+        const auto& s = part.section;
+        if (s.explicit_value && !c.model.section(s.value))
+            c.report("REF003", s.span, fmt::format("part {} names section {}, which no *SECTION_ defines", part.id, s.value));
+        used_sections.insert(s.value);
+        const auto& m = part.material;
+        if (m.explicit_value && !c.model.material(m.value))
+            c.report("REF004", m.span, fmt::format("part {} names material {}, which no *MAT_ defines", part.id, m.value));
+        used_materials.insert(m.value);
+        const auto& e = part.eos;
+        if (!e.value.empty() && !c.model.eos(e.value))
+            c.report("REF005", e.span, fmt::format("part {} names EOS {}, which no *EOS_ defines", part.id, e.value));
+        used_eos.insert(e.value);
+    }
+}
+
+// Set references: the keyword, the field holding the set id, and when it is a set.
+void check_set_references(RuleContext& c) {
+    auto node_set = [&](const Id& id) {
+        for (const auto& s : c.model.node_sets) if (s.id == id) return true;
+        return false;
+    };
+    auto part_set = [&](const Id& id) {
+        for (const auto& s : c.model.part_sets) if (s.id == id) return true;
+        return false;
+    };
+    for (const model::KeywordRecord& r : c.model.records) {
+        const std::string_view k = r.schema->name;
+        auto need = [&](std::string_view field, bool part_kind, std::string_view why) {
+            const model::FieldRecord* f = r.field(field);
+            if (!f || !f->explicit_value || !f->valid || f->number == 0) return;
+            Id id = model::normalise_id(f->text);
+            if (!(part_kind ? part_set(id) : node_set(id)))
+                c.report("REF008", f->span,
+                         fmt::format("{} {} {} is not defined{}", part_kind ? "part set" : "node set", id, "", why));
+        };
+        auto number = [&](std::string_view field, double fallback) {
+            const model::FieldRecord* f = r.field(field);
+            return f && f->valid ? f->number : fallback;
+        };
+        if (k == "*INITIAL_VELOCITY") {
+            need("NSID", false, "");
+            need("NSIDEX", false, "");
+        } else if (k == "*BOUNDARY_SPH_FLOW") {
+            double styp = number("STYP", 1);
+            if (styp == 1) need("ID", true, " (STYP 1)");
+            if (styp == 3) need("ID", false, " (STYP 3)");
+        } else if (k == "*DEFINE_SPH_TO_SPH_COUPLING") {
+            if (number("SATYP", 0) == 0) need("SIDA", true, " (SATYP 0)");
+            if (number("SBTYP", 0) == 0) need("SIDB", true, " (SBTYP 0)");
+        } else if (k == "*DEFINE_ADAPTIVE_SOLID_TO_SPH") {
+            if (number("ITYPE", 0) != 0) need("IPID", true, " (ITYPE not 0)");
+        }
+    }
+}
+
+void check_set_members(RuleContext& c, const model::IdIndex& nodes) {
+    for (const auto& s : c.model.node_sets) {
+        std::vector<long long> missing;
+        for (long long id : s.members) if (!nodes.find(id)) missing.push_back(id);
+        if (!missing.empty())
+            c.report("REF001", s.span, fmt::format("node set {} names undefined node(s) {}", s.id, list_ids(missing)));
+    }
+    for (const auto& s : c.model.part_sets) {
+        std::vector<long long> missing;
+        for (long long id : s.members) if (!c.model.part(std::to_string(id))) missing.push_back(id);
+        if (!missing.empty())
+            c.report("REF002", s.span, fmt::format("part set {} names undefined part(s) {}", s.id, list_ids(missing)));
+    }
+}
+
+// Boxes are referenced from fields named after them (BOXID, IBOXA, IBOXB) in other keywords.
+std::set<Id> referenced_boxes(const model::Model& m) {
+    std::set<Id> used;
+    for (const model::KeywordRecord& r : m.records) {
+        if (r.schema->name.rfind("*DEFINE_BOX", 0) == 0) continue;
+        for (const auto& row : r.rows)
+            for (const auto& f : row)
+                if ((f.name == "BOXID" || f.name == "IBOXA" || f.name == "IBOXB") && f.explicit_value && f.number != 0)
+                    used.insert(model::normalise_id(f.text));
+    }
+    return used;
+}
+
+template <typename T>
+void report_unused(RuleContext& c, const std::vector<T>& items, const std::set<Id>& used, std::string_view what) {
+    for (const T& item : items)
+        if (!item.id.empty() && !used.count(item.id))
+            c.report("REF007", item.span, fmt::format("{} {} is not used by any part", what, item.id));
+}
+
+}  // namespace
+
+void check_references(RuleContext& c) {
+    const model::IdIndex nodes(c.model.nodes.id);
+    const model::IdIndex particles(c.model.particles.node);
+    check_particles(c, nodes);
+    check_set_members(c, nodes);
+    check_array_duplicates(c, nodes, c.model.nodes.id, false);
+    check_array_duplicates(c, particles, c.model.particles.node, true);
+    check_duplicates(c, c.model.parts, "part");
+    check_duplicates(c, c.model.sections, "section");
+    check_duplicates(c, c.model.materials, "material");
+    check_duplicates(c, c.model.equations_of_state, "EOS");
+    check_duplicates(c, c.model.boxes, "box");
+    std::set<Id> sections, materials, eos;
+    check_part_references(c, sections, materials, eos);
+    check_set_references(c);
+    report_unused(c, c.model.sections, sections, "section");
+    report_unused(c, c.model.materials, materials, "material");
+    report_unused(c, c.model.equations_of_state, eos, "EOS");
+    std::set<Id> boxes = referenced_boxes(c.model);
+    for (const auto& b : c.model.boxes)
+        if (!b.id.empty() && !boxes.count(b.id))
+            c.report("REF007", b.span, fmt::format("box {} is not referenced", b.id));
+}
+
+}  // namespace sphdeck::lint

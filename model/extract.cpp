@@ -1,0 +1,252 @@
+#include "model/extract.hpp"
+
+#include <fmt/format.h>
+
+#include "grammar/fields.hpp"
+#include "grammar/value.hpp"
+
+namespace sphdeck::model {
+namespace {
+
+template <typename T>
+Setting<T> setting(const KeywordRecord& r, std::string_view name, T fallback) {
+    Setting<T> s{fallback, false, r.span};
+    if (const FieldRecord* f = r.field(name)) {
+        if (f->valid) s.value = static_cast<T>(f->number);
+        s.explicit_value = f->explicit_value;
+        s.span = f->span;
+    }
+    return s;
+}
+
+template <typename E>
+Setting<E> enum_setting(const KeywordRecord& r, std::string_view name, E fallback) {
+    Setting<long long> n = setting<long long>(r, name, static_cast<long long>(fallback));
+    return {static_cast<E>(n.value), n.explicit_value, n.span};
+}
+
+Setting<Id> id_setting(const KeywordRecord& r, std::string_view name) {
+    Setting<Id> s{Id{}, false, r.span};
+    if (const FieldRecord* f = r.field(name)) {
+        s.value = f->explicit_value ? normalise_id(f->text) : Id{};
+        s.explicit_value = f->explicit_value;
+        s.span = f->span;
+    }
+    return s;
+}
+
+bool starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
+
+void extract_control_sph(const KeywordRecord& r, ControlSph& c) {
+    c.present = true;
+    c.keyword = r.span;
+    c.ncbs = setting<long long>(r, "NCBS", 1);
+    c.boxid = setting<long long>(r, "BOXID", 0);
+    c.dt = setting<double>(r, "DT", 1.0e20);
+    c.idim = enum_setting(r, "IDIM", Dimension::Unset);
+    c.memory = setting<long long>(r, "MEMORY", 150);
+    c.form = enum_setting(r, "FORM", Form::Default);
+    c.start = setting<double>(r, "START", 0.0);
+    c.maxv = setting<double>(r, "MAXV", 1.0e15);
+    c.cont = setting<long long>(r, "CONT", 0);
+    c.deriv = setting<long long>(r, "DERIV", 0);
+    c.ini = enum_setting(r, "INI", IniMode::BucketSort);
+    c.ishow = setting<long long>(r, "ISHOW", 0);
+    c.ierod = enum_setting(r, "IEROD", ErosionMode::StayActive);
+    c.icont = setting<long long>(r, "ICONT", 0);
+    c.iavis = enum_setting(r, "IAVIS", ArtificialViscosity::Monaghan);
+    c.isymp = setting<long long>(r, "ISYMP", 100);
+    c.ithk = setting<long long>(r, "ITHK", 0);
+    c.istab = setting<long long>(r, "ISTAB", 0);
+    c.ql = setting<double>(r, "QL", 0.01);
+    c.sphsort = setting<long long>(r, "SPHSORT", 0);
+    c.ishift = setting<long long>(r, "ISHIFT", 0);
+}
+
+void extract_controls(const KeywordRecord& r, Controls& c) {
+    const std::string_view name = r.schema->name;
+    if (name == "*CONTROL_SPH") {
+        extract_control_sph(r, c.sph);
+    } else if (name == "*CONTROL_TERMINATION") {
+        c.endtim = setting<double>(r, "ENDTIM", 0.0);
+    } else if (name == "*CONTROL_TIMESTEP") {
+        c.tssfac = setting<double>(r, "TSSFAC", 0.9);
+        c.erode = setting<long long>(r, "ERODE", 0);
+    } else if (name == "*CONTROL_BULK_VISCOSITY") {
+        c.bulk_viscosity_present = true;
+        c.q1 = setting<double>(r, "Q1", 1.5);
+        c.q2 = setting<double>(r, "Q2", 0.06);
+    }
+}
+
+Section sph_section(const KeywordRecord& r) {
+    Section s;
+    Setting<Id> id = id_setting(r, "SECID");
+    s.id = id.value;
+    s.span = id.span;
+    s.keyword = r.keyword;
+    s.sph = true;
+    s.ellipse = r.has_option("ELLIPSE");
+    s.interaction = r.has_option("INTERACTION");
+    s.cslh = setting<double>(r, "CSLH", 1.2);
+    s.hmin = setting<double>(r, "HMIN", 0.2);
+    s.hmax = setting<double>(r, "HMAX", 2.0);
+    s.sphini = setting<double>(r, "SPHINI", 0.0);
+    s.death = setting<double>(r, "DEATH", 1.0e20);
+    s.start = setting<double>(r, "START", 0.0);
+    s.kernel = enum_setting(r, "SPHKERN", Kernel::CubicSpline);
+    return s;
+}
+
+void extract_parts(const KeywordRecord& r, std::vector<Part>& parts) {
+    // Rows alternate heading card / data card (the repeated group of *PART).
+    std::string heading;
+    for (const auto& row : r.rows) {
+        if (!row.empty() && row.front().name == "HEADING") {
+            heading = row.front().text;
+            continue;
+        }
+        KeywordRecord one{r.schema, r.keyword, r.options, r.span, {row}};
+        Part p;
+        Setting<Id> pid = id_setting(one, "PID");
+        p.id = pid.value;
+        p.span = pid.span;
+        p.heading = heading;
+        p.section = id_setting(one, "SECID");
+        p.material = id_setting(one, "MID");
+        p.eos = id_setting(one, "EOSID");
+        p.hourglass = id_setting(one, "HGID");
+        if (p.eos.value == "0") p.eos.value.clear();  // 0 = no EOS
+        if (p.hourglass.value == "0") p.hourglass.value.clear();
+        parts.push_back(std::move(p));
+    }
+}
+
+std::vector<long long> set_members(const KeywordRecord& r) {
+    std::vector<long long> members;
+    const bool generate = r.has_option("GENERATE");
+    for (std::size_t i = 1; i < r.rows.size(); ++i) {
+        const auto& row = r.rows[i];
+        if (generate) {  // B1BEG B1END ... pairs of ranges
+            for (std::size_t k = 0; k + 1 < row.size(); k += 2)
+                if (row[k].explicit_value && row[k + 1].explicit_value)
+                    for (auto id = static_cast<long long>(row[k].number); id <= static_cast<long long>(row[k + 1].number);
+                         ++id)
+                        members.push_back(id);
+        } else {
+            for (const auto& f : row)
+                if (f.explicit_value && f.valid) members.push_back(static_cast<long long>(f.number));
+        }
+    }
+    return members;
+}
+
+void extract_record(const KeywordRecord& r, std::size_t index, Model& m) {
+    const std::string_view name = r.schema->name;
+    if (starts_with(name, "*CONTROL_")) return extract_controls(r, m.controls);
+    if (name == "*SECTION_SPH") return m.sections.push_back(sph_section(r));
+    if (name == "*PART") return extract_parts(r, m.parts);
+    if (starts_with(name, "*MAT_") && name != "*MAT_ADD_EROSION") {
+        Setting<Id> id = id_setting(r, "MID");
+        m.materials.push_back({id.value, std::string(name), id.span, setting<double>(r, "RO", 0.0), index});
+        return;
+    }
+    if (starts_with(name, "*EOS_")) {
+        Setting<Id> id = id_setting(r, "EOSID");
+        m.equations_of_state.push_back({id.value, std::string(name), id.span, index});
+        return;
+    }
+    if (name == "*DEFINE_BOX" || name == "*DEFINE_BOX_SPH") {
+        Setting<Id> id = id_setting(r, "BOXID");
+        Box b{id.value, id.span, {}};
+        const char* fields[] = {"XMN", "XMX", "YMN", "YMX", "ZMN", "ZMX"};
+        for (int i = 0; i < 6; ++i) b.bounds[i] = setting<double>(r, fields[i], 0.0).value;
+        m.boxes.push_back(b);
+        return;
+    }
+    if (name == "*BOUNDARY_SPH_SYMMETRY_PLANE") {
+        for (const auto& row : r.rows) {
+            KeywordRecord one{r.schema, r.keyword, r.options, r.span, {row}};
+            SymmetryPlane p;
+            const char* tail[] = {"VTX", "VTY", "VTZ"};
+            const char* head[] = {"VHX", "VHY", "VHZ"};
+            for (int i = 0; i < 3; ++i) {
+                p.tail[i] = setting<double>(one, tail[i], 0.0).value;
+                p.head[i] = setting<double>(one, head[i], 0.0).value;
+            }
+            p.span = row.empty() ? r.span : grammar::Span{row.front().span.file, row.front().span.line, 1, 61};
+            m.symmetry_planes.push_back(p);
+        }
+        return;
+    }
+    if (name == "*SET_NODE_LIST" || name == "*SET_PART_LIST") {
+        Setting<Id> id = id_setting(r, "SID");
+        IdSet s{id.value, id.span, set_members(r)};
+        (name == "*SET_NODE_LIST" ? m.node_sets : m.part_sets).push_back(std::move(s));
+    }
+}
+
+// The first id of a block the schema does not know (*SECTION_SHELL, *MAT_RIGID, *EOS_JWL...):
+// LS-DYNA puts it in columns 1-10 of the first data card, after the title line of _TITLE.
+bool raw_first_id(const grammar::RawDeck& deck, const grammar::Block& block, Id& id, grammar::Span& span) {
+    const grammar::CardLine* line = deck.begin_lines(block);
+    if (block.keyword.find("_TITLE") != std::string::npos) ++line;
+    if (line >= deck.end_lines(block)) return false;
+    std::string_view text = deck.text(*line);
+    std::size_t width = block.format == grammar::CardFormat::Long ? 20 : 10;
+    std::string_view field = text.substr(0, std::min(text.size(), width));
+    if (grammar::is_free_format(text)) field = text.substr(0, text.find(','));
+    id = normalise_id(field);
+    span = grammar::Span{line->file, line->line, 1, static_cast<std::uint32_t>(field.size() + 1)};
+    return !id.empty();
+}
+
+void extract_unknown_definitions(const grammar::RawDeck& deck, Model& m) {
+    for (const grammar::Block& b : deck.blocks) {
+        if (starts_with(b.keyword, "*CONTROL_MPP")) m.controls.mpp_keywords.push_back(b.span);
+        const bool section = starts_with(b.keyword, "*SECTION_") && !starts_with(b.keyword, "*SECTION_SPH");
+        const bool material = starts_with(b.keyword, "*MAT_");
+        const bool eos = starts_with(b.keyword, "*EOS_");
+        if (!section && !material && !eos) continue;
+        if (keywords::find_keyword(b.keyword).has_value() &&
+            keywords::find_keyword(b.keyword)->unknown_options.empty())
+            continue;  // known: already extracted from its record
+        Id id;
+        grammar::Span span;
+        if (!raw_first_id(deck, b, id, span)) continue;
+        if (section) {
+            Section s;
+            s.id = id;
+            s.keyword = b.keyword;
+            s.span = span;
+            m.sections.push_back(std::move(s));
+        } else if (material) {
+            Material mat{id, b.keyword, span, {}, std::nullopt};
+            // Most materials put RO in columns 11-20; enough for mass and sound-speed checks.
+            const grammar::CardLine* line = deck.begin_lines(b) + (b.keyword.find("_TITLE") != std::string::npos);
+            if (line < deck.end_lines(b)) {
+                std::string_view text = deck.text(*line);
+                grammar::RealValue ro = grammar::parse_real(text.size() > 10 ? text.substr(10, 10) : "");
+                if (ro.status == grammar::NumberStatus::Ok) mat.density = {ro.value, true, span};
+            }
+            m.materials.push_back(std::move(mat));
+        } else {
+            m.equations_of_state.push_back({id, b.keyword, span, std::nullopt});
+        }
+    }
+}
+
+}  // namespace
+
+void extract_typed(const grammar::RawDeck& deck, Model& model, std::vector<diag::Diagnostic>& out) {
+    for (std::size_t i = 0; i < model.records.size(); ++i) extract_record(model.records[i], i, model);
+    extract_unknown_definitions(deck, model);
+    const ControlSph& sph = model.controls.sph;
+    if (sph.present && sph.idim.value == Dimension::Unset) {
+        // No default is documented for IDIM (lsdyna-sph-cards.md §1): say so, do not guess.
+        out.push_back({"DK008", diag::Severity::Warning,
+                       "IDIM is blank or 0 and has no documented default; write 3, 2 or -2", sph.idim.span, {}});
+    }
+}
+
+}  // namespace sphdeck::model

@@ -1,0 +1,45 @@
+#include "model/id_index.hpp"
+
+#include <algorithm>
+
+namespace sphdeck::model {
+
+IdIndex::IdIndex(const std::vector<long long>& ids) {
+    if (ids.empty()) return;
+    auto [lo, hi] = std::minmax_element(ids.begin(), ids.end());
+    min_ = *lo;
+    const unsigned long long span = static_cast<unsigned long long>(*hi) - static_cast<unsigned long long>(*lo);
+    if (span < 4ull * ids.size() + 1024) {
+        dense_.assign(span + 1, -1);
+        for (std::size_t i = 0; i < ids.size(); ++i) {
+            std::int64_t& slot = dense_[static_cast<std::size_t>(ids[i] - min_)];
+            if (slot >= 0) duplicates_.emplace_back(static_cast<std::size_t>(slot), i);
+            else slot = static_cast<std::int64_t>(i);
+        }
+        return;
+    }
+    sorted_.reserve(ids.size());
+    for (std::size_t i = 0; i < ids.size(); ++i) sorted_.emplace_back(ids[i], i);
+    std::sort(sorted_.begin(), sorted_.end());
+    for (std::size_t i = 1; i < sorted_.size(); ++i) {
+        if (sorted_[i].first != sorted_[i - 1].first) continue;
+        std::size_t first = i - 1;
+        while (first > 0 && sorted_[first - 1].first == sorted_[i].first) --first;
+        duplicates_.emplace_back(sorted_[first].second, sorted_[i].second);
+    }
+    std::sort(duplicates_.begin(), duplicates_.end(), [](auto& a, auto& b) { return a.second < b.second; });
+}
+
+std::optional<std::size_t> IdIndex::find(long long id) const {
+    if (!dense_.empty()) {
+        if (id < min_ || static_cast<unsigned long long>(id - min_) >= dense_.size()) return std::nullopt;
+        std::int64_t slot = dense_[static_cast<std::size_t>(id - min_)];
+        if (slot < 0) return std::nullopt;
+        return static_cast<std::size_t>(slot);
+    }
+    auto it = std::lower_bound(sorted_.begin(), sorted_.end(), std::make_pair(id, std::size_t{0}));
+    if (it == sorted_.end() || it->first != id) return std::nullopt;
+    return it->second;
+}
+
+}  // namespace sphdeck::model

@@ -1,0 +1,29 @@
+// Lookup of integer ids (nodes, particles) in arrays of millions: a dense table when the ids
+// are compact (the usual case), a sorted copy otherwise. Duplicates are found on the way.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace sphdeck::model {
+
+class IdIndex {
+public:
+    explicit IdIndex(const std::vector<long long>& ids);
+
+    // Position of `id` in the indexed array (the first one when duplicated).
+    std::optional<std::size_t> find(long long id) const;
+
+    // (first position, repeated position) of every duplicated id, in array order.
+    const std::vector<std::pair<std::size_t, std::size_t>>& duplicates() const { return duplicates_; }
+
+private:
+    long long min_ = 0;
+    std::vector<std::int64_t> dense_;                     // id - min_ → position, -1 when absent
+    std::vector<std::pair<long long, std::size_t>> sorted_;  // (id, position) when ids are sparse
+    std::vector<std::pair<std::size_t, std::size_t>> duplicates_;
+};
+
+}  // namespace sphdeck::model

@@ -1,0 +1,99 @@
+// `sphdeck keyword`: runs the built binary and checks what it prints and returns.
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cstdio>
+#include <string>
+#include <sys/wait.h>
+
+namespace {
+
+struct Run {
+    std::string output;  // stdout and stderr together
+    int exit_code = -1;
+};
+
+// Runs `sphdeck ARGS` through the shell (arguments are single-quoted by the caller).
+Run sphdeck(const std::string& args) {
+    Run r;
+    const std::string command = std::string("'") + SPHDECK_BINARY + "' " + args + " 2>&1";
+    std::FILE* pipe = popen(command.c_str(), "r");
+    REQUIRE(pipe != nullptr);
+    std::array<char, 4096> buffer{};
+    std::size_t n = 0;
+    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.output.append(buffer.data(), n);
+    const int status = pclose(pipe);
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+}  // namespace
+
+TEST_CASE("keyword command: *CONTROL_SPH prints its cards, columns, defaults and FORM values") {
+    const Run r = sphdeck("keyword '*CONTROL_SPH'");
+    INFO(r.output);
+    CHECK(r.exit_code == 0);
+    CHECK(contains(r.output, "*CONTROL_SPH"));
+    CHECK(contains(r.output, "Card 1"));
+    CHECK(contains(r.output, "Card 2 (optional"));
+    CHECK(contains(r.output, "NCBS"));
+    CHECK(contains(r.output, "1-10"));
+    CHECK(contains(r.output, "71-80"));
+    CHECK(contains(r.output, "MEMORY (NMNEIGH)"));
+    CHECK(contains(r.output, "150 (0 = default)"));
+    CHECK(contains(r.output, "12 = moving-least-squares"));
+    CHECK(contains(r.output, "-2 = 2D axisymmetric"));
+}
+
+TEST_CASE("keyword command: names are found without '*', in lower case and with options") {
+    const Run lower = sphdeck("keyword control_sph");
+    CHECK(lower.exit_code == 0);
+    CHECK(contains(lower.output, "*CONTROL_SPH"));
+
+    const Run section = sphdeck("keyword '*SECTION_SPH_ELLIPSE_TITLE'");
+    INFO(section.output);
+    CHECK(section.exit_code == 0);
+    CHECK(contains(section.output, "*SECTION_SPH_ELLIPSE_TITLE"));
+    CHECK(contains(section.output, "TITLE"));
+    CHECK(contains(section.output, "HXCSLH"));  // the _ELLIPSE card
+}
+
+TEST_CASE("keyword command: an alias resolves to the canonical keyword") {
+    const Run r = sphdeck("keyword mat_009");
+    INFO(r.output);
+    CHECK(r.exit_code == 0);
+    CHECK(contains(r.output, "*MAT_NULL"));
+    CHECK(contains(r.output, "aliases: *MAT_009"));
+    CHECK(contains(r.output, "RO"));
+}
+
+TEST_CASE("keyword command: --format long shows widened columns") {
+    const Run r = sphdeck("keyword '*CONTROL_SPH' --format long");
+    INFO(r.output);
+    CHECK(r.exit_code == 0);
+    CHECK(contains(r.output, "1-20 "));
+    CHECK(contains(r.output, "141-160"));
+}
+
+TEST_CASE("keyword command: an unknown keyword exits 2 with a suggestion") {
+    const Run typo = sphdeck("keyword '*CONTRL_SPH'");
+    INFO(typo.output);
+    CHECK(typo.exit_code == 2);
+    CHECK(contains(typo.output, "unknown keyword '*CONTRL_SPH'"));
+    CHECK(contains(typo.output, "did you mean *CONTROL_SPH?"));
+
+    const Run option = sphdeck("keyword '*CONTROL_SPH_BOGUS'");
+    INFO(option.output);
+    CHECK(option.exit_code == 2);
+    CHECK(contains(option.output, "no option _BOGUS"));
+}
+
+TEST_CASE("keyword command: --list names every keyword with its aliases") {
+    const Run r = sphdeck("keyword --list");
+    CHECK(r.exit_code == 0);
+    CHECK(contains(r.output, "*CONTROL_SPH "));
+    CHECK(contains(r.output, "*MAT_NULL (*MAT_009)"));
+    CHECK(contains(r.output, "*ELEMENT_SPH"));
+}
