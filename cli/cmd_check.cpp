@@ -68,10 +68,12 @@ std::optional<std::vector<lint::Config>> resolve_configs(const CheckArgs& args) 
     std::map<std::string, lint::Config> loaded;
     std::vector<lint::Config> out;
     for (const std::string& deck : args.decks) {
-        std::string path = args.config_file;
-        if (args.no_config) path.clear();
-        else if (path.empty())
+        std::string path;
+        if (!args.no_config && !args.config_file.empty()) {
+            path = args.config_file;
+        } else if (!args.no_config) {
             if (auto found = lint::find_config(deck)) path = found->string();
+        }
         lint::Config config;
         if (!path.empty()) {
             auto it = loaded.find(path);
@@ -176,7 +178,8 @@ std::function<int()> setup_check(CLI::App& app) {
         ->check(CLI::IsMember({"full", "concise", "json", "sarif", "github"}))
         ->capture_default_str();
     app.add_option("-I,--include-path", args->include_paths,
-                   "extra folder searched for *INCLUDE files, after the deck's own folders");
+                   "extra folder searched for *INCLUDE files, after the deck's own folders")
+        ->allow_extra_args(false);  // `-I dir deck.k`: the deck stays a deck
     app.add_option("--max-per-code", args->max_per_code,
                    "show at most N findings of one rule per deck in text formats (0: all)")
         ->capture_default_str();
@@ -184,9 +187,11 @@ std::function<int()> setup_check(CLI::App& app) {
                                          "check only these rules: codes, names or prefixes such as SPH "
                                          "(replaces select of sphdeck.toml)")
                               ->delimiter(',')
+                              ->allow_extra_args(false)  // one list per --select: decks are never codes
                               ->check(rule_selector());
     app.add_option("--ignore", args->ignore, "skip these rules (added to ignore of sphdeck.toml)")
         ->delimiter(',')
+        ->allow_extra_args(false)
         ->check(rule_selector());
     app.add_option("--solver", args->solver, "the run type, for rules that depend on it")
         ->check(CLI::IsMember({"smp", "mpp"}));

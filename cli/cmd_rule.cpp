@@ -15,10 +15,8 @@ std::function<int()> setup_rule(CLI::App& app) {
             fmt::print("{}", lint::render_rule_page(*rule));
             return exit_clean;
         }
-        std::string hint;
-        for (std::string_view s : lint::similar_rules(*query)) hint += (hint.empty() ? "'" : ", '") + std::string(s) + "'";
         fmt::print(stderr, "sphdeck: unknown rule '{}'{}\nrun 'sphdeck rules' for the list\n", *query,
-                   hint.empty() ? "" : "; did you mean " + hint + "?");
+                   lint::did_you_mean_rule(*query));
         return exit_usage;
     };
 }

@@ -23,5 +23,6 @@ std::function<int()> setup_check(CLI::App& app);
 std::function<int()> setup_rule(CLI::App& app);
 std::function<int()> setup_rules(CLI::App& app);
 std::function<int()> setup_keyword(CLI::App& app);
+std::function<int()> setup_dump(CLI::App& app);
 
 }  // namespace sphdeck::cli

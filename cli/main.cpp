@@ -15,6 +15,7 @@ const std::vector<sphdeck::cli::Command>& commands() {
         {"rule", "explain one rule: what it checks, why, how to fix it, an example", sphdeck::cli::setup_rule},
         {"rules", "list every rule (--format markdown: docs/rules.md)", sphdeck::cli::setup_rules},
         {"keyword", "print a keyword's cards: columns, types, defaults, allowed values", sphdeck::cli::setup_keyword},
+        {"dump", "print the decoded deck model (--format json)", sphdeck::cli::setup_dump},
     };
     return table;
 }
@@ -35,7 +36,7 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        if (argc > 1 && e.get_name() == "RequiredError" && argv[1][0] != '-') {
+        if (argc > 1 && e.get_name() == "RequiredError" && argv[1][0] != '-' && !app.got_subcommand(argv[1])) {
             std::vector<std::string_view> names;
             for (const Command& c : commands()) names.push_back(c.name);
             std::string hint = did_you_mean(argv[1], names);

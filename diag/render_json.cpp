@@ -21,7 +21,7 @@ void put_location(json& out, const grammar::Span& span, const grammar::SourceMap
     out["end_column"] = located ? std::max(span.end_column, span.column + 1) : 0;
 }
 
-// The files that include the finding's file, main deck first, each with its *INCLUDE line.
+// The files that include the finding's file, main deck first, each with the line naming the next file.
 json include_chain(const grammar::Span& span, const grammar::SourceMap& sources) {
     json chain = json::array();
     if (!detail::has_location(span, sources)) return chain;

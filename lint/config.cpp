@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "lint/registry.hpp"
+#include "lint/rule_pages.hpp"
 
 namespace sphdeck::lint {
 namespace fs = std::filesystem;
@@ -87,8 +88,8 @@ std::optional<ConfigError> read_word(const std::string& file, std::string_view k
 }  // namespace
 
 std::string ConfigError::to_string() const {
-    if (line == 0) return file + ": " + message;
-    return file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + message;
+    if (line == 0) return file + ": error: " + message;
+    return file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": error: " + message;
 }
 
 std::optional<fs::path> find_config(const fs::path& deck) {
@@ -174,10 +175,7 @@ bool selector_matches(std::string_view selector, std::string_view code) {
 std::optional<std::string> check_selector(std::string_view selector) {
     for (const RuleInfo& rule : all_rules())
         if (selector_matches(selector, rule.code)) return std::nullopt;
-    std::string message = "unknown rule '" + std::string(selector) + "'";
-    auto similar = similar_rules(selector);
-    if (!similar.empty()) message += "; did you mean '" + join(similar) + "'?";
-    return message;
+    return "unknown rule '" + std::string(selector) + "'" + did_you_mean_rule(selector);
 }
 
 bool parse_fail_on(std::string_view word, FailOn& out) {

@@ -36,7 +36,7 @@ struct ConfigError {
     std::uint32_t line = 0, column = 0;
     std::string message;
 
-    std::string to_string() const;  // "file:line:column: message"
+    std::string to_string() const;  // "file:line:column: error: message", as compilers write it
 };
 
 // File names searched in each folder, in order of precedence.

@@ -78,6 +78,12 @@ std::string fenced(std::string_view deck) {
 
 }  // namespace
 
+std::string did_you_mean_rule(std::string_view query) {
+    std::string list;
+    for (std::string_view s : similar_rules(query)) list += (list.empty() ? "'" : ", '") + std::string(s) + "'";
+    return list.empty() ? list : "; did you mean " + list + "?";
+}
+
 std::string rule_url(const RuleInfo& rule) { return std::string(rules_doc_url) + "#" + lower(rule.code); }
 
 std::string rule_text_body(const RuleInfo& rule) {

@@ -13,6 +13,9 @@ namespace sphdeck::lint {
 inline constexpr std::string_view project_url = "https://github.com/sphdeck/sphdeck";
 inline constexpr std::string_view rules_doc_url = "https://github.com/sphdeck/sphdeck/blob/main/docs/rules.md";
 
+// "; did you mean 'SPH030', 'SPH031'?" from similar_rules(), or "" when nothing is close.
+std::string did_you_mean_rule(std::string_view query);
+
 // rules_doc_url + "#sph030"
 std::string rule_url(const RuleInfo& rule);
 

@@ -2,11 +2,13 @@
 // diagnostics they silence, report the unused (DK026) and malformed (DK028) ones.
 #include "lint/suppressions.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <map>
 #include <tuple>
 
 #include "lint/registry.hpp"
+#include "lint/rule_pages.hpp"
 
 namespace sphdeck::lint {
 namespace {
@@ -24,12 +26,6 @@ diag::Diagnostic bad(grammar::FileId file, std::uint32_t line, std::uint32_t beg
                      std::string message) {
     return diag::Diagnostic{"DK028", diag::Severity::Warning, std::move(message),
                             grammar::Span{file, line, begin + 1, std::max(end, begin + 1) + 1}, {}};
-}
-
-std::string quoted_list(const std::vector<std::string_view>& items) {
-    std::string out;
-    for (std::string_view item : items) out += (out.empty() ? "'" : ", '") + std::string(item) + "'";
-    return out;
 }
 
 // A directive and the lines of its file it covers (first == 0: none, e.g. at the end of the file).
@@ -168,10 +164,8 @@ bool parse_suppression(std::string_view comment, grammar::FileId file, std::uint
         } else if (const RuleInfo* rule = find_rule(word)) {
             out.items.push_back({std::string(rule->code), col + 1, end_col + 1});
         } else {
-            std::string message = "unknown rule '" + std::string(word) + "' in suppression";
-            auto similar = similar_rules(word);
-            if (!similar.empty()) message += "; did you mean " + quoted_list(similar) + "?";
-            problems.push_back(bad(file, line, col, end_col, message));
+            problems.push_back(bad(file, line, col, end_col,
+                                   "unknown rule '" + std::string(word) + "' in suppression" + did_you_mean_rule(word)));
         }
         item_begin = item_end + 1;
     } while (item_begin <= list.size());

@@ -1,5 +1,7 @@
 #include "model/card_decoder.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -91,7 +93,7 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
         switch (spec.type) {
             case FieldType::Unused: break;
             case FieldType::Text:
-                v.valid = true;
+                check_text(spec, v);
                 break;
             case FieldType::Label:
                 // An id: a number, or since 971 R7.1 an alphanumeric label (lsdyna-format.md §10).
@@ -173,6 +175,26 @@ void CardDecoder::decode_number(const grammar::Block& block, const keywords::Fie
         return;
     }
     if (!spec.choices.empty() || spec.min || spec.max) check_range(spec, v);
+}
+
+void CardDecoder::check_text(const keywords::FieldSpec& spec, FieldValue& v) {
+    v.valid = true;
+    if (!v.explicit_value) {
+        if (spec.required)
+            report("DK008", diag::Severity::Error, fmt::format("{} is required and has no default", spec.name), v.span);
+        return;
+    }
+    if (spec.text_choices.empty()) return;
+    for (std::string_view choice : spec.text_choices)
+        if (choice.size() == v.text.size() &&
+            std::equal(choice.begin(), choice.end(), v.text.begin(),
+                       [](char a, char b) { return std::toupper(static_cast<unsigned char>(a)) ==
+                                                   std::toupper(static_cast<unsigned char>(b)); }))
+            return;
+    std::string allowed;
+    for (std::string_view c : spec.text_choices) allowed += (allowed.empty() ? "" : ", ") + std::string(c);
+    report("DK007", diag::Severity::Error, fmt::format("{} = '{}' is not one of {}", spec.name, shown(v.text), allowed),
+           v.span);
 }
 
 void CardDecoder::check_range(const keywords::FieldSpec& spec, const FieldValue& v) {

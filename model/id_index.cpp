@@ -9,12 +9,12 @@ IdIndex::IdIndex(const std::vector<long long>& ids) {
     auto [lo, hi] = std::minmax_element(ids.begin(), ids.end());
     min_ = *lo;
     const unsigned long long span = static_cast<unsigned long long>(*hi) - static_cast<unsigned long long>(*lo);
-    if (span < 4ull * ids.size() + 1024) {
-        dense_.assign(span + 1, -1);
+    if (span < 4ull * ids.size() + 1024 && ids.size() < absent) {
+        dense_.assign(span + 1, absent);
         for (std::size_t i = 0; i < ids.size(); ++i) {
-            std::int64_t& slot = dense_[static_cast<std::size_t>(ids[i] - min_)];
-            if (slot >= 0) duplicates_.emplace_back(static_cast<std::size_t>(slot), i);
-            else slot = static_cast<std::int64_t>(i);
+            std::uint32_t& slot = dense_[static_cast<std::size_t>(ids[i] - min_)];
+            if (slot != absent) duplicates_.emplace_back(slot, i);
+            else slot = static_cast<std::uint32_t>(i);
         }
         return;
     }
@@ -33,9 +33,9 @@ IdIndex::IdIndex(const std::vector<long long>& ids) {
 std::optional<std::size_t> IdIndex::find(long long id) const {
     if (!dense_.empty()) {
         if (id < min_ || static_cast<unsigned long long>(id - min_) >= dense_.size()) return std::nullopt;
-        std::int64_t slot = dense_[static_cast<std::size_t>(id - min_)];
-        if (slot < 0) return std::nullopt;
-        return static_cast<std::size_t>(slot);
+        std::uint32_t slot = dense_[static_cast<std::size_t>(id - min_)];
+        if (slot == absent) return std::nullopt;
+        return slot;
     }
     auto it = std::lower_bound(sorted_.begin(), sorted_.end(), std::make_pair(id, std::size_t{0}));
     if (it == sorted_.end() || it->first != id) return std::nullopt;

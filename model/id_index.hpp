@@ -21,7 +21,8 @@ public:
 
 private:
     long long min_ = 0;
-    std::vector<std::int64_t> dense_;                     // id - min_ → position, -1 when absent
+    static constexpr std::uint32_t absent = 0xFFFFFFFFu;
+    std::vector<std::uint32_t> dense_;  // id - min_ → position, `absent` when none (4 bytes: decks of 1e7)
     std::vector<std::pair<long long, std::size_t>> sorted_;  // (id, position) when ids are sparse
     std::vector<std::pair<std::size_t, std::size_t>> duplicates_;
 };

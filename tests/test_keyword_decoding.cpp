@@ -186,7 +186,6 @@ TEST_CASE("keyword decoding: a blank card decodes to the documented defaults") {
                     CHECK(v.valid);
                     CHECK(v.number == *f.default_value);
                 }
-                if (!numeric(f)) continue;  // required text fields: see the test case below
                 const bool missing = f.required && !f.default_value;
                 const auto at_field = std::count_if(d.diagnostics.begin(), d.diagnostics.end(), [&](const auto& x) {
                     return x.code == "DK008" && inside_field(x, *card, i, CardFormat::Standard);
@@ -194,15 +193,14 @@ TEST_CASE("keyword decoding: a blank card decodes to the documented defaults") {
                 CHECK(at_field == (missing ? 1 : 0));
                 expected_dk008 += missing;
             }
-            // Nothing but DK008, and only for the required numeric fields.
+            // Nothing but DK008, and only for the required fields.
             CHECK(d.diagnostics.size() == expected_dk008);
         }
     }
 }
 
-// The decoder reports DK008 only for numeric fields so far; *INCLUDE's FILENAME is a required
-// text field. may_fail until the decoder checks required text fields too (reported).
-TEST_CASE("keyword decoding: a blank required text field is reported" * doctest::may_fail()) {
+// *INCLUDE's FILENAME is a required text field: blank is DK008 like a numeric one.
+TEST_CASE("keyword decoding: a blank required text field is reported") {
     for (const KeywordSchema& k : keywords::all_keywords()) {
         for (const CardSpec* card : every_card(k)) {
             for (std::size_t i = 0; i < card->fields.size(); ++i) {
@@ -268,9 +266,8 @@ TEST_CASE("keyword decoding: every enum and range rejects a value outside it") {
     CHECK(checked > 30);  // the tables have many enums: an empty loop would prove nothing
 }
 
-// The decoder does not check text_choices yet (*SET_NODE_LIST SOLVER: MECH, CESE, ICFD).
-// may_fail until it does (reported).
-TEST_CASE("keyword decoding: a text enum rejects a word outside it" * doctest::may_fail()) {
+// Text enums (*SET_NODE_LIST SOLVER: MECH, CESE, ICFD) reject other words.
+TEST_CASE("keyword decoding: a text enum rejects a word outside it") {
     for (const KeywordSchema& k : keywords::all_keywords()) {
         for (const CardSpec* card : every_card(k)) {
             for (std::size_t i = 0; i < card->fields.size(); ++i) {

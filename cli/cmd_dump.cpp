@@ -1,0 +1,38 @@
+// sphdeck dump DECK --format json: the decoded model, for scripts and for checking the reader.
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "lint/pipeline.hpp"
+#include "model/model_json.hpp"
+
+namespace sphdeck::cli {
+namespace {
+
+struct DumpArgs {
+    std::string deck;
+    std::string format = "json";
+    bool particles = false;
+    std::vector<std::string> include_paths;
+};
+
+int run_dump(const DumpArgs& args) {
+    lint::CheckOptions options;
+    options.reader.include_paths = args.include_paths;
+    lint::CheckResult r = lint::check_file(args.deck, options);
+    nlohmann::ordered_json out = model::to_json(r.model, r.deck, {args.particles});
+    fmt::print("{}\n", out.dump(2));
+    return exit_clean;
+}
+
+}  // namespace
+
+std::function<int()> setup_dump(CLI::App& app) {
+    auto args = std::make_shared<DumpArgs>();
+    app.add_option("deck", args->deck, "LS-DYNA keyword deck")->required();
+    app.add_option("--format", args->format, "output format")->check(CLI::IsMember({"json"}))->capture_default_str();
+    app.add_flag("--particles", args->particles, "list every particle (id, part, mass), not only counts");
+    app.add_option("-I,--include-path", args->include_paths, "extra folder searched for *INCLUDE files");
+    return [args] { return run_dump(*args); };
+}
+
+}  // namespace sphdeck::cli
