@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        if (argc > 1 && e.get_name() == "RequiredError" && argv[1][0] != '-' && !app.got_subcommand(argv[1])) {
+        if (argc > 1 && e.get_name() == "RequiredError" && argv[1][0] != '-' && app.get_subcommands().empty()) {
             std::vector<std::string_view> names;
             for (const Command& c : commands()) names.push_back(c.name);
             std::string hint = did_you_mean(argv[1], names);

@@ -39,7 +39,7 @@ public:
             decoder_.decode(block, *l, card, values_);
             if (card.repeat != CardRepeat::Repeated) remember(values_);  // conditions look at header cards
             if (visit_) visit_(block, match, card, *l, values_);
-            if (particles) count_particles(*l, summary);
+            if (particles) count_particles(*l, block.format, summary);
             if (card.repeat != CardRepeat::Repeated) ++next;
         }
         report_missing(block, cards, next);
@@ -57,7 +57,7 @@ private:
             if (v.valid && v.spec->type != keywords::FieldType::Text) earlier_[std::string(v.spec->name)] = v.number;
     }
 
-    void count_particles(const grammar::CardLine& line, DeckSummary& summary) {
+    void count_particles(const grammar::CardLine& line, grammar::CardFormat format, DeckSummary& summary) {
         // NID, PID, MASS, NEND: NEND > NID generates the range NID..NEND.
         std::size_t n = 1;
         if (values_.size() >= 4 && values_[0].valid && values_[3].valid && values_[3].explicit_value &&
@@ -66,8 +66,8 @@ private:
         summary.particles += n;
         // Sources disagree on NEND's width (lsdyna-format.md §3); we read 33-42 and flag 41-42.
         std::string_view text = deck_.text(line);
-        if (values_.size() >= 4 && text.size() > 40 && !grammar::is_blank(text.substr(40, 2)) &&
-            !grammar::is_free_format(text))
+        if (format == grammar::CardFormat::Standard && values_.size() >= 4 && text.size() > 40 &&
+            !grammar::is_blank(text.substr(40, 2)) && !grammar::is_free_format(text))
             out_.push_back({"DK023", diag::Severity::Warning,
                             "NEND reaches columns 41-42; some readers stop NEND at column 40",
                             values_[3].span, {}});
@@ -118,6 +118,7 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
     std::map<std::string, Unknown> unknown;
     std::map<const keywords::KeywordSchema*, grammar::Span> seen_unique;
     for (const grammar::Block& block : deck.blocks) {
+        if (block.keyword == "*") continue;  // a bare '*' line: the reader reported it
         auto match = keywords::find_keyword(block.keyword);
         if (!match || !match->unknown_options.empty()) {
             auto& u = unknown[block.keyword];

@@ -125,8 +125,9 @@ void extract_parts(const KeywordRecord& r, std::vector<Part>& parts) {
 std::vector<long long> set_members(const KeywordRecord& r) {
     std::vector<long long> members;
     const bool generate = r.has_option("GENERATE");
-    for (std::size_t i = 1; i < r.rows.size(); ++i) {
-        const auto& row = r.rows[i];
+    for (const auto& row : r.rows) {
+        // Member rows only: not the title (_TITLE) nor the SID header card.
+        if (row.empty() || row.front().name == "TITLE" || row.front().name == "SID") continue;
         if (generate) {  // B1BEG B1END ... pairs of ranges
             for (std::size_t k = 0; k + 1 < row.size(); k += 2)
                 if (row[k].explicit_value && row[k + 1].explicit_value)

@@ -115,3 +115,11 @@ TEST_CASE("parameters: *PARAMETER_LOCAL is seen by its file and its includes onl
     const auto* d = test::find_code(r.diagnostics, "DK012");
     CHECK(r.deck.sources.file(d->span.file).display_name.find("main.k") != std::string::npos);
 }
+
+TEST_CASE("parameters: case-only matches and tabs inside *PARAMETER cards are reported") {
+    auto deck = read_buffer("*PARAMETER\nR tend    0.002\nR t2      &TEND\n*PARAMETER_EXPRESSION\nR t3      &TEND*2.0\n",
+                            "d.k");
+    CHECK(count_code(deck.diagnostics, "DK024") == 2);
+    auto tabs = read_buffer("*PARAMETER\nR tend\t   0.002\n", "d.k");
+    CHECK(count_code(tabs.diagnostics, "DK016") == 1);
+}

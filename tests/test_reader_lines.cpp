@@ -138,3 +138,16 @@ TEST_CASE("reader: bad input never crashes") {
         CHECK(deck.blocks.empty());
     }
 }
+
+TEST_CASE("reader: an indented '*' line inside *COMMENT or an expression continuation is data") {
+    auto comment = read_buffer("*COMMENT\nLoad cases:\n  * bird 1.8 kg\n*NODE\n", "d.k");
+    REQUIRE(comment.blocks.size() == 2);
+    CHECK(count_code(comment.diagnostics, "DK020") == 0);
+    auto expression = read_buffer("*PARAMETER_EXPRESSION\nR h0      8.0\n          **(1.0/3.0)\n", "d.k");
+    REQUIRE(expression.blocks.size() == 1);
+    const auto* h0 = expression.parameters.find("h0", 0, expression.parameters.epoch()).parameter;
+    REQUIRE(h0);
+    CHECK(h0->number == doctest::Approx(2.0));
+    auto bare = read_buffer("*\n", "d.k");
+    CHECK(count_code(bare.diagnostics, "DK001") == 1);
+}

@@ -92,14 +92,26 @@ void DeckReader::on_data(const char* begin, const char* end) {
     ++deck_.stats.cards;
 }
 
+// An indented '*' line is a keyword only where a keyword can stand: not inside *COMMENT text
+// (which ends at a '*' in column 1) or a *PARAMETER_EXPRESSION continuation ("  **(1/3)"),
+// and only when a name follows.
+bool DeckReader::indented_data(std::size_t star, const KeywordLineParts& parts) {
+    if (star == 0) return false;
+    if (parts.name.empty() || !std::isalpha(static_cast<unsigned char>(parts.name.front()))) return true;
+    const OpenFile& f = stack_.back();
+    if (f.in_comment_block) return true;
+    return f.block && deck_.blocks[*f.block].keyword.rfind("*PARAMETER_EXPRESSION", 0) == 0;
+}
+
 void DeckReader::on_keyword(const char* begin, const char* end, const KeywordLineParts& parts) {
+    std::size_t star = static_cast<std::size_t>(parts.name.data() - begin) - 1;
+    if (indented_data(star, parts)) return on_data(begin, end);
     OpenFile& f = current();
     ++f.line;
     if (f.in_encrypted) return;
     if (after_end(begin, end)) return;
     close_block();
 
-    std::size_t star = static_cast<std::size_t>(parts.name.data() - begin) - 1;
     Block block;
     block.keyword.reserve(parts.name.size() + 1);
     block.keyword += '*';

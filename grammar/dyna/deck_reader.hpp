@@ -53,6 +53,7 @@ private:
     };
 
     OpenFile& current() { return stack_.back(); }
+    bool indented_data(std::size_t star, const KeywordLineParts& parts);
     void close_block();
     bool after_end(const char* begin, const char* end);
     Span span_of(const char* begin, const char* end, std::size_t column_begin, std::size_t column_end) const;

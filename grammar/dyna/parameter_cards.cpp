@@ -20,6 +20,11 @@ void report(RawDeck& deck, const char* code, diag::Severity s, std::string messa
     deck.diagnostics.push_back(diag::Diagnostic{code, s, std::move(message), span, {}});
 }
 
+void report_case_mismatch(RawDeck& deck, std::string_view written, const Parameter& p, Span span) {
+    report(deck, "DK024", diag::Severity::Warning,
+           "'&" + std::string(written) + "' matches parameter '" + p.name + "' only when case is ignored", span);
+}
+
 // The name field: its first non-blank character is the type letter (R, I or C, any case),
 // the name follows, glued or after blanks ("RSHLTHK" == "R  SHLTHK").
 bool split_type_and_name(std::string_view field, ParameterType& type, std::string_view& name) {
@@ -82,6 +87,7 @@ bool value_of(Context& c, const Field& field, ParameterType type, Parameter& p) 
                    field.span);
             return false;
         }
+        if (found.case_mismatch) report_case_mismatch(c.deck, token.name, *found.parameter, field.span);
         p.number = token.negated ? -found.parameter->number : found.parameter->number;
     } else {
         RealValue v = to_real(token);
@@ -107,7 +113,13 @@ void read_pairs(Context& c, const CardLine& line) {
     std::vector<FixedField> positions;
     widen(pair_fields, c.block.format, positions);
     std::vector<Field> fields;
-    cut_fields(c.deck.text(line), line, positions, significant_width(positions, c.block.format), fields);
+    std::string_view text = c.deck.text(line);
+    CutReport cut = cut_fields(text, line, positions, significant_width(positions, c.block.format), fields);
+    if (cut.has_tab) {
+        auto tab = static_cast<std::uint32_t>(text.find('\t'));
+        report(c.deck, "DK016", diag::Severity::Warning, "tab in a fixed-format card: columns become ambiguous",
+               Span{line.file, line.line, tab + 1, tab + 2});
+    }
     for (std::size_t i = 0; i + 1 < fields.size(); i += 2) {
         ParameterType type;
         std::string_view name;
@@ -158,8 +170,13 @@ void read_expressions(Context& c) {
         auto lookup = [&](std::string_view ref) -> std::optional<double> {
             auto found = c.deck.parameters.find(ref, first->file, c.deck.parameters.epoch());
             if (!found.parameter || found.parameter->type == ParameterType::Character) return std::nullopt;
+            if (found.case_mismatch) report_case_mismatch(c.deck, ref, *found.parameter, expression_span);
             return found.parameter->number;
         };
+        if (std::string_view tab_at = text; tab_at.find('\t') != std::string_view::npos)
+            report(c.deck, "DK016", diag::Severity::Warning, "tab in a fixed-format card: columns become ambiguous",
+                   Span{first->file, first->line, static_cast<std::uint32_t>(tab_at.find('\t') + 1),
+                        static_cast<std::uint32_t>(tab_at.find('\t') + 2)});
         ExpressionResult r = evaluate_expression(expression, lookup);
         if (!r.ok()) {
             const char* code = r.error == ExpressionError::UndefinedParameter ? "DK012" : "DK015";

@@ -62,7 +62,12 @@ KeywordSchema control_sph() {
                              .type = I,
                              .zero_is_default = false,
                              .required = false,
-                             .choices = {{3, "3D"}, {2, "2D plane strain"}, {-2, "2D axisymmetric"}},
+                             // 0 (what old LS-PrePost wrote) is accepted here and warned about
+                             // as DK008: the manual documents no default (lsdyna-sph-cards.md §1).
+                             .choices = {{3, "3D"},
+                                         {2, "2D plane strain"},
+                                         {-2, "2D axisymmetric"},
+                                         {0, "unset: no documented default (warned)"}},
                              .doc = "space dimension"},
                             // Called MEMORY in the manual pages, the CFG files up to R11.1 and Workbench
                             // output; pydyna calls it NMNEIGH (lsdyna-sph-cards.md §1 notes).

@@ -1,0 +1,39 @@
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+#include "model/model.hpp"
+namespace sphdeck::preproc {
+struct Stats { double min = 0, median = 0, max = 0; };
+struct PreviewOptions {
+    std::optional<model::IniMode> ini;            // --ini: forces the mode for every part
+    std::function<void(double fraction)> progress; // optional, called now and then with 0..1
+};
+struct PartPreview {
+    long long part = 0;
+    std::size_t particles = 0;
+    double mass_total = 0;
+    double spacing = 0;          // median nearest-neighbour distance
+    double h0 = 0, h_min = 0, h_max = 0;   // h0 and HMIN*h0, HMAX*h0
+    Stats nn_distance, neighbours;
+    double sound_speed = 0;      // 0 when the material/EOS gives none
+    double dt_estimate = 0;      // CFL: TSSFAC * h0 / c (0 when c unknown)
+    double dt_radioss = 0;       // OpenRadioss particle time step at rest
+    model::IniMode ini = model::IniMode::BucketSort;
+    bool sphini_given = false;
+    long long memory = 150;      // MEMORY of *CONTROL_SPH
+    std::string notes;           // why a value is missing, in words
+};
+struct ParticlePreview {        // one entry per particle, in model order
+    std::vector<double> x, y, z, mass, nn_distance, h;
+    std::vector<std::uint32_t> neighbours;
+};
+struct Preview {
+    int dimension = 3;           // 2 or 3 (IDIM 2/-2 → 2)
+    std::vector<PartPreview> parts;
+    ParticlePreview particles;
+};
+Preview compute_preview(const model::Model& model, const PreviewOptions& options = {});
+}
