@@ -24,5 +24,6 @@ std::function<int()> setup_rule(CLI::App& app);
 std::function<int()> setup_rules(CLI::App& app);
 std::function<int()> setup_keyword(CLI::App& app);
 std::function<int()> setup_dump(CLI::App& app);
+std::function<int()> setup_smooth(CLI::App& app);
 
 }  // namespace sphdeck::cli

@@ -16,6 +16,7 @@ const std::vector<sphdeck::cli::Command>& commands() {
         {"rules", "list every rule (--format markdown: docs/rules.md)", sphdeck::cli::setup_rules},
         {"keyword", "print a keyword's cards: columns, types, defaults, allowed values", sphdeck::cli::setup_keyword},
         {"dump", "print the decoded deck model (--format json)", sphdeck::cli::setup_dump},
+        {"smooth", "preview smoothing lengths, neighbours and time step per part (table, json, csv, vtk, svg)", sphdeck::cli::setup_smooth},
     };
     return table;
 }

@@ -2,6 +2,9 @@
 
 #include "lint/registry.hpp"
 
+#include "grammar/fields.hpp"
+#include "grammar/value.hpp"
+
 namespace sphdeck::lint {
 
 diag::Diagnostic& RuleContext::report(std::string_view code, grammar::Span span, std::string message) {
@@ -27,6 +30,22 @@ grammar::Span RuleContext::particle_span(std::size_t particle) const {
     return whole_line(deck, model.particles.line.at(particle));
 }
 
-grammar::Span RuleContext::node_span(std::size_t node) const { return whole_line(deck, model.nodes.line.at(node)); }
+std::map<long long, std::vector<grammar::Span>> RuleContext::node_lines(const std::set<long long>& ids) const {
+    std::map<long long, std::vector<grammar::Span>> found;
+    if (ids.empty()) return found;
+    for (const grammar::Block& b : deck.blocks) {
+        if (b.keyword != "*NODE") continue;
+        const std::uint32_t width = b.format == grammar::CardFormat::Long ? 20 : b.format == grammar::CardFormat::I10 ? 10 : 8;
+        for (const grammar::CardLine* l = deck.begin_lines(b); l != deck.end_lines(b); ++l) {
+            std::string_view text = deck.text(*l);
+            std::string_view first = grammar::is_free_format(text) ? text.substr(0, text.find(','))
+                                                                   : text.substr(0, std::min<std::size_t>(text.size(), width));
+            grammar::IntegerValue id = grammar::parse_integer(first);
+            if (id.status == grammar::NumberStatus::Ok && ids.count(id.value))
+                found[id.value].push_back(grammar::Span{l->file, l->line, 1, l->length + 1});
+        }
+    }
+    return found;
+}
 
 }  // namespace sphdeck::lint

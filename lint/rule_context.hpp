@@ -2,7 +2,9 @@
 // reporter that takes the rule's default severity from the registry.
 #pragma once
 
+#include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -36,7 +38,8 @@ public:
 
     // Location of a particle's card line (its *ELEMENT_SPH line), whole line.
     grammar::Span particle_span(std::size_t particle) const;
-    grammar::Span node_span(std::size_t node) const;
+    // The *NODE lines defining each of `ids` (a scan of the *NODE blocks: for rare reports only).
+    std::map<long long, std::vector<grammar::Span>> node_lines(const std::set<long long>& ids) const;
 
 private:
     std::vector<diag::Diagnostic>& out_;

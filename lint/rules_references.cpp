@@ -62,15 +62,30 @@ void check_duplicates(RuleContext& c, const std::vector<T>& items, std::string_v
     }
 }
 
-void check_array_duplicates(RuleContext& c, const model::IdIndex& index, const std::vector<long long>& ids,
-                            bool particles) {
-    std::size_t reported = 0;
+// Duplicated node and particle ids: a handful of findings say enough (the rest are usually the
+// same mistake, e.g. an include read twice).
+constexpr std::size_t max_duplicate_reports = 20;
+
+void check_node_duplicates(RuleContext& c, const model::IdIndex& index) {
+    std::set<long long> ids;
     for (const auto& [first, again] : index.duplicates()) {
-        if (reported++ == 20) break;  // a handful says enough; the rest are usually the same mistake
-        grammar::Span where = particles ? c.particle_span(again) : c.node_span(again);
-        grammar::Span before = particles ? c.particle_span(first) : c.node_span(first);
-        c.report("REF006", where, fmt::format("{} {} is defined twice", particles ? "particle" : "node", ids[again]))
-            .notes.push_back({before, "first defined here"});
+        if (ids.size() == max_duplicate_reports) break;
+        ids.insert(c.model.nodes.id[again]);
+    }
+    for (const auto& [id, spans] : c.node_lines(ids)) {
+        for (std::size_t k = 1; k < spans.size(); ++k)
+            c.report("REF006", spans[k], fmt::format("node {} is defined twice", id))
+                .notes.push_back({spans.front(), "first defined here"});
+    }
+}
+
+void check_particle_duplicates(RuleContext& c) {
+    const auto& ids = c.model.particles.node;
+    std::size_t reported = 0;
+    for (const auto& [first, again] : model::find_duplicate_ids(ids)) {
+        if (reported++ == max_duplicate_reports) break;
+        c.report("REF006", c.particle_span(again), fmt::format("particle {} is defined twice", ids[again]))
+            .notes.push_back({c.particle_span(first), "first defined here"});
     }
 }
 
@@ -171,11 +186,10 @@ void report_unused(RuleContext& c, const std::vector<T>& items, const std::set<I
 
 void check_references(RuleContext& c) {
     const model::IdIndex nodes(c.model.nodes.id);
-    const model::IdIndex particles(c.model.particles.node);
     check_particles(c, nodes);
     check_set_members(c, nodes);
-    check_array_duplicates(c, nodes, c.model.nodes.id, false);
-    check_array_duplicates(c, particles, c.model.particles.node, true);
+    check_node_duplicates(c, nodes);
+    check_particle_duplicates(c);
     check_duplicates(c, c.model.parts, "part");
     check_duplicates(c, c.model.sections, "section");
     check_duplicates(c, c.model.materials, "material");

@@ -42,4 +42,24 @@ std::optional<std::size_t> IdIndex::find(long long id) const {
     return it->second;
 }
 
+std::vector<std::pair<std::size_t, std::size_t>> find_duplicate_ids(const std::vector<long long>& ids) {
+    std::vector<std::pair<std::size_t, std::size_t>> out;
+    if (ids.empty()) return out;
+    auto [lo, hi] = std::minmax_element(ids.begin(), ids.end());
+    const unsigned long long span = static_cast<unsigned long long>(*hi) - static_cast<unsigned long long>(*lo);
+    if (span >= 64ull * ids.size() + 4096) return IdIndex(ids).duplicates();
+    std::vector<bool> seen(span + 1, false);
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+        auto slot = static_cast<std::size_t>(ids[i] - *lo);
+        if (!seen[slot]) {
+            seen[slot] = true;
+            continue;
+        }
+        std::size_t first = static_cast<std::size_t>(std::find(ids.begin(), ids.end(), ids[i]) - ids.begin());
+        out.emplace_back(first, i);
+        if (out.size() > 1000) break;  // enough to report; the scan for `first` is linear
+    }
+    return out;
+}
+
 }  // namespace sphdeck::model

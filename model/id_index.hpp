@@ -27,4 +27,8 @@ private:
     std::vector<std::pair<std::size_t, std::size_t>> duplicates_;
 };
 
+// (first position, repeated position) of duplicated ids without building an index: one bit per
+// id for compact ranges, a sorted copy otherwise. For particle ids, checked only for duplicates.
+std::vector<std::pair<std::size_t, std::size_t>> find_duplicate_ids(const std::vector<long long>& ids);
+
 }  // namespace sphdeck::model

@@ -130,10 +130,11 @@ struct IdSet {
 };
 
 // Particles and nodes as structure-of-arrays: decks of 1e7 particles are normal.
+// No per-node line index: nodes are 10^7 in big decks and their lines are needed only for the
+// rare duplicate report, which finds them by scanning (RuleContext::node_lines).
 struct Nodes {
     std::vector<long long> id;
     std::vector<double> x, y, z;
-    std::vector<std::uint32_t> line;  // index into RawDeck::lines, for locations
 };
 
 struct Particles {

@@ -8,7 +8,7 @@ namespace {
 // One block's lines are known before its cards are decoded: grow the arrays once, not by doubling.
 void reserve_more(Nodes& n, std::size_t more) {
     const std::size_t size = n.id.size() + more;
-    n.id.reserve(size), n.x.reserve(size), n.y.reserve(size), n.z.reserve(size), n.line.reserve(size);
+    n.id.reserve(size), n.x.reserve(size), n.y.reserve(size), n.z.reserve(size);
 }
 void reserve_more(Particles& p, std::size_t more) {
     const std::size_t size = p.node.size() + more;
@@ -20,14 +20,13 @@ ModelBuilder::ModelBuilder(const grammar::RawDeck& deck) : deck_(deck) {
     model_.memory2_given = !deck.keyword_arguments.memory2.empty();
 }
 
-void ModelBuilder::add_node(const std::vector<FieldValue>& v, const grammar::CardLine& line) {
+void ModelBuilder::add_node(const std::vector<FieldValue>& v) {
     if (v.size() < 4 || !v[0].valid) return;  // a node without a usable id is already reported
     Nodes& n = model_.nodes;
     n.id.push_back(static_cast<long long>(v[0].number));
     n.x.push_back(v[1].number);
     n.y.push_back(v[2].number);
     n.z.push_back(v[3].number);
-    n.line.push_back(static_cast<std::uint32_t>(&line - deck_.lines.data()));
 }
 
 void ModelBuilder::add_particles(const grammar::Block& block, const std::vector<FieldValue>& v,
@@ -59,7 +58,7 @@ void ModelBuilder::on_card(const grammar::Block& block, const keywords::KeywordM
     current_block_ = &block;
     if (name == "*NODE") {
         if (new_block) reserve_more(model_.nodes, block.line_count);
-        return add_node(values, line);
+        return add_node(values);
     }
     if (name == "*ELEMENT_SPH") {
         if (new_block) reserve_more(model_.particles, block.line_count);

@@ -23,7 +23,7 @@ public:
     Model finish(std::vector<diag::Diagnostic>& out);
 
 private:
-    void add_node(const std::vector<FieldValue>& values, const grammar::CardLine& line);
+    void add_node(const std::vector<FieldValue>& values);
     void add_particles(const grammar::Block& block, const std::vector<FieldValue>& values,
                        const grammar::CardLine& line);
 

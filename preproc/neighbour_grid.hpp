@@ -10,6 +10,7 @@
 // until it does not; queries stay correct, only slower (a hashed grid would be the next step).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <span>

@@ -3,6 +3,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 #include "model/model.hpp"
 namespace sphdeck::preproc {
@@ -25,15 +26,30 @@ struct PartPreview {
     bool sphini_given = false;
     long long memory = 150;      // MEMORY of *CONTROL_SPH
     std::string notes;           // why a value is missing, in words
+    // Added beyond the shared interface:
+    double support = 0;          // kernel support radius: support factor (2 cubic, 3 quintic) * h0
+    double density = 0;          // rho0 of the part's material (0 when unknown)
+    double mass_median = 0;      // median particle mass
+    std::string sound_source;    // where the sound speed comes from ("*EOS_MURNAGHAN", ...)
 };
 struct ParticlePreview {        // one entry per particle, in model order
     std::vector<double> x, y, z, mass, nn_distance, h;
     std::vector<std::uint32_t> neighbours;
+    // Added beyond the shared interface:
+    std::vector<std::uint32_t> part;     // index into Preview::parts
+    std::vector<std::uint8_t> located;   // 0 when the particle's node is missing (then x = y = z = 0)
 };
 struct Preview {
     int dimension = 3;           // 2 or 3 (IDIM 2/-2 → 2)
     std::vector<PartPreview> parts;
     ParticlePreview particles;
+    // Added beyond the shared interface:
+    // Pairs of particles (model indices, first < second) at the same position: closer than 1e-9
+    // times their part's spacing, or at distance 0; any parts.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> coincident;
+    // 1 when every particle's neighbours were counted; k when only every k-th was (too much work,
+    // usually a smoothing length inflated by a stray particle) and the others copy a nearby count.
+    std::size_t neighbour_sample_stride = 1;
 };
 Preview compute_preview(const model::Model& model, const PreviewOptions& options = {});
 }

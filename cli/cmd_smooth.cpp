@@ -1,0 +1,282 @@
+// sphdeck smooth DECK: what the solver will start from, per part: particles, mass, spacing, the
+// initial smoothing length and its bounds, neighbour counts, a time step estimate and the INI
+// mode used; as a table or JSON, with per-particle CSV, VTK (.vtp) and SVG histograms on request.
+#include <cmath>
+#include <cstdio>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "cli/commands.hpp"
+#include "cli/progress_bar.hpp"
+#include "diag/render_text.hpp"
+#include "io/csv_writer.hpp"
+#include "io/svg_histogram.hpp"
+#include "io/vtp_writer.hpp"
+#include "lint/pipeline.hpp"
+#include "preproc/preview.hpp"
+
+namespace sphdeck::cli {
+namespace {
+
+struct SmoothArgs {
+    std::string deck;
+    std::string format = "table";
+    std::optional<int> ini;
+    std::string csv, vtk, plot;
+    bool vtk_binary = false;
+    std::vector<std::string> include_paths;
+};
+
+std::string_view ini_name(model::IniMode mode) {
+    switch (mode) {
+        case model::IniMode::BucketSort: return "bucket sort";
+        case model::IniMode::Global: return "global search";
+        case model::IniMode::FromMass: return "from the mass";
+    }
+    return "?";
+}
+
+std::string g4(double v) { return fmt::format("{:.4g}", v); }
+
+// The particles that have a position, with the columns the CSV and VTK files share.
+struct ParticleTable {
+    std::vector<long long> id, part;
+    std::vector<double> x, y, z, mass, nn_distance, h;
+    std::vector<std::uint32_t> neighbours;
+    std::size_t left_out = 0;  // particles without a *NODE
+
+    std::vector<io::Column> columns() const {
+        return {{"id", std::span<const long long>(id)},
+                {"part", std::span<const long long>(part)},
+                {"mass", std::span<const double>(mass)},
+                {"nn_distance", std::span<const double>(nn_distance)},
+                {"h", std::span<const double>(h)},
+                {"neighbours", std::span<const std::uint32_t>(neighbours)}};
+    }
+};
+
+ParticleTable particle_table(const model::Model& m, const preproc::Preview& p) {
+    ParticleTable t;
+    const preproc::ParticlePreview& pp = p.particles;
+    for (std::size_t i = 0; i < pp.x.size(); ++i) {
+        if (!pp.located[i]) {
+            ++t.left_out;
+            continue;
+        }
+        t.id.push_back(m.particles.node[i]);
+        t.part.push_back(p.parts[pp.part[i]].part);
+        t.x.push_back(pp.x[i]), t.y.push_back(pp.y[i]), t.z.push_back(pp.z[i]);
+        t.mass.push_back(pp.mass[i]);
+        t.nn_distance.push_back(pp.nn_distance[i]);
+        t.h.push_back(pp.h[i]);
+        t.neighbours.push_back(pp.neighbours[i]);
+    }
+    return t;
+}
+
+void write_csv(const std::string& path, const ParticleTable& t) {
+    std::vector<io::Column> columns = t.columns();
+    columns.insert(columns.begin() + 2, {{"x", std::span<const double>(t.x)},
+                                         {"y", std::span<const double>(t.y)},
+                                         {"z", std::span<const double>(t.z)}});
+    io::write_csv_file(path, columns);
+}
+
+void write_vtk(const std::string& path, const ParticleTable& t, bool binary) {
+    io::VtpPoints points{t.x, t.y, t.z, t.columns()};
+    io::write_vtp_file(path, points, binary ? io::VtpEncoding::Base64 : io::VtpEncoding::Ascii);
+}
+
+// Two panels per part: h over the particle's nearest-neighbour distance, and neighbour counts.
+void write_plot(const std::string& path, const std::string& deck, const preproc::Preview& p) {
+    std::vector<io::HistogramPanel> panels;
+    for (std::size_t q = 0; q < p.parts.size(); ++q) {
+        const long long id = p.parts[q].part;
+        io::HistogramPanel ratio{fmt::format("part {}: h / nearest-neighbour distance", id),
+                                 "h / nn distance", {}, false};
+        io::HistogramPanel count{fmt::format("part {}: neighbours", id),
+                                 fmt::format("particles within {} of each particle", g4(p.parts[q].support)), {},
+                                 true};
+        const preproc::ParticlePreview& pp = p.particles;
+        for (std::size_t i = 0; i < pp.x.size(); ++i) {
+            if (pp.part[i] != q || !pp.located[i]) continue;
+            if (pp.nn_distance[i] > 0) ratio.values.push_back(pp.h[i] / pp.nn_distance[i]);
+            count.values.push_back(pp.neighbours[i]);
+        }
+        panels.push_back(std::move(ratio));
+        panels.push_back(std::move(count));
+    }
+    io::SvgOptions options;
+    options.title = fmt::format("sphdeck smooth {}", deck);
+    io::write_svg_file(path, panels, options);
+}
+
+std::vector<std::string> split_notes(const std::string& notes) {
+    std::vector<std::string> out;
+    std::size_t start = 0;
+    while (start < notes.size()) {
+        std::size_t end = notes.find("; ", start);
+        if (end == std::string::npos) end = notes.size();
+        out.push_back(notes.substr(start, end - start));
+        start = end + 2;
+    }
+    return out;
+}
+
+nlohmann::ordered_json stats_json(const preproc::Stats& s) {
+    return {{"min", s.min}, {"median", s.median}, {"max", s.max}};
+}
+
+nlohmann::ordered_json to_json(const SmoothArgs& args, const lint::CheckResult& r, const preproc::Preview& p) {
+    nlohmann::ordered_json parts = nlohmann::ordered_json::array();
+    for (const preproc::PartPreview& pv : p.parts) {
+        parts.push_back({{"part", pv.part},
+                         {"particles", pv.particles},
+                         {"mass_total", pv.mass_total},
+                         {"mass_median", pv.mass_median},
+                         {"density", pv.density},
+                         {"spacing", pv.spacing},
+                         {"h0", pv.h0},
+                         {"h_min", pv.h_min},
+                         {"h_max", pv.h_max},
+                         {"support", pv.support},
+                         {"nn_distance", stats_json(pv.nn_distance)},
+                         {"neighbours", stats_json(pv.neighbours)},
+                         {"sound_speed", pv.sound_speed},
+                         {"sound_source", pv.sound_source},
+                         {"dt_estimate", pv.dt_estimate},
+                         {"dt_radioss", pv.dt_radioss},
+                         {"ini", static_cast<int>(pv.ini)},
+                         {"sphini_given", pv.sphini_given},
+                         {"notes", split_notes(pv.notes)}});
+    }
+    return {{"version", SPHDECK_VERSION},
+            {"deck", args.deck},
+            {"dimension", p.dimension},
+            {"particles", r.model.particles.size()},
+            {"ini_forced", args.ini.has_value()},
+            {"coincident_pairs", p.coincident.size()},
+            {"neighbour_sample_stride", p.neighbour_sample_stride},
+            {"parts", std::move(parts)}};
+}
+
+// Pads cells to aligned columns: numbers right-aligned, the last column (words) left-aligned.
+void print_table(const std::vector<std::vector<std::string>>& rows) {
+    std::vector<std::size_t> width;
+    for (const auto& row : rows)
+        for (std::size_t c = 0; c < row.size(); ++c) {
+            if (width.size() <= c) width.push_back(0);
+            width[c] = std::max(width[c], row[c].size());
+        }
+    for (const auto& row : rows) {
+        std::string line;
+        for (std::size_t c = 0; c < row.size(); ++c) {
+            if (c > 0) line += "  ";
+            line += c + 1 == row.size() ? fmt::format("{:<{}}", row[c], width[c]) : fmt::format("{:>{}}", row[c], width[c]);
+        }
+        while (!line.empty() && line.back() == ' ') line.pop_back();
+        fmt::print("{}\n", line);
+    }
+}
+
+void print_text(const SmoothArgs& args, const lint::CheckResult& r, const preproc::Preview& p) {
+    const model::IniMode mode = p.parts.empty() ? model::IniMode::BucketSort : p.parts.front().ini;
+    fmt::print("{}: {} particles in {} part(s), {}D, INI {} ({}{})\n\n", args.deck, r.model.particles.size(),
+               p.parts.size(), p.dimension, static_cast<int>(mode), ini_name(mode),
+               args.ini ? ", forced by --ini" : ", from *CONTROL_SPH");
+    std::vector<std::vector<std::string>> rows = {
+        {"part", "particles", "mass", "spacing", "h0", "h_min", "h_max", "neighbours", "dt", "ini"}};
+    for (const preproc::PartPreview& pv : p.parts) {
+        rows.push_back({std::to_string(pv.part), std::to_string(pv.particles), g4(pv.mass_total), g4(pv.spacing),
+                        g4(pv.h0), g4(pv.h_min), g4(pv.h_max),
+                        fmt::format("{}/{}/{}", g4(pv.neighbours.min), g4(pv.neighbours.median), g4(pv.neighbours.max)),
+                        pv.dt_estimate > 0 ? g4(pv.dt_estimate) : "-",
+                        fmt::format("{}{}", static_cast<int>(pv.ini), pv.sphini_given ? " (SPHINI)" : "")});
+    }
+    print_table(rows);
+    fmt::print("\nmass: total per part; spacing: median nearest-neighbour distance; h_min, h_max: HMIN*h0, "
+               "HMAX*h0;\nneighbours: min/median/max particles within the kernel support; dt: TSSFAC*h0/c, "
+               "'-' when the sound speed c is unknown\n");
+    for (const preproc::PartPreview& pv : p.parts)
+        for (const std::string& note : split_notes(pv.notes)) fmt::print("part {}: {}\n", pv.part, note);
+    if (!p.coincident.empty())
+        fmt::print("warning: {} pair(s) of particles at the same position\n", p.coincident.size());
+}
+
+int run_smooth(const SmoothArgs& args) {
+    lint::CheckOptions options;
+    options.reader.include_paths = args.include_paths;
+    const lint::CheckResult r = lint::check_file(args.deck, options);
+    const diag::Counts counts = diag::count(r.diagnostics);
+    if (r.model.particles.size() == 0) {
+        for (const diag::Diagnostic& d : r.diagnostics)
+            if (d.severity == diag::Severity::Error) fmt::print(stderr, "{}", diag::render_concise(d, r.deck.sources));
+        fmt::print(stderr, "sphdeck: error: {}: no SPH particles (*ELEMENT_SPH): nothing to preview\n", args.deck);
+        return exit_usage;
+    }
+    if (counts.errors > 0)
+        fmt::print(stderr, "sphdeck: note: {} has {} error(s); 'sphdeck check {}' lists them\n", args.deck,
+                   counts.errors, args.deck);
+
+    preproc::PreviewOptions preview_options;
+    if (args.ini) preview_options.ini = static_cast<model::IniMode>(*args.ini);
+    ProgressBar bar("smooth");
+    if (bar.enabled()) preview_options.progress = [&bar](double f) { bar.update(f); };
+    const preproc::Preview preview = preproc::compute_preview(r.model, preview_options);
+    bar.finish();
+
+    const bool json = args.format == "json";
+    if (json) {
+        fmt::print("{}\n", to_json(args, r, preview).dump(2));
+    } else {
+        print_text(args, r, preview);
+    }
+    std::fflush(stdout);
+    std::FILE* notes = json ? stderr : stdout;
+    if (!args.csv.empty() || !args.vtk.empty()) {
+        const ParticleTable table = particle_table(r.model, preview);
+        if (table.left_out > 0)
+            fmt::print(stderr, "sphdeck: warning: {} particle(s) without a *NODE left out of the files\n",
+                       table.left_out);
+        if (!args.csv.empty()) {
+            write_csv(args.csv, table);
+            fmt::print(notes, "wrote {} ({} particles)\n", args.csv, table.id.size());
+        }
+        if (!args.vtk.empty()) {
+            write_vtk(args.vtk, table, args.vtk_binary);
+            fmt::print(notes, "wrote {} ({} points)\n", args.vtk, table.id.size());
+        }
+    }
+    if (!args.plot.empty()) {
+        write_plot(args.plot, args.deck, preview);
+        fmt::print(notes, "wrote {} ({} histograms)\n", args.plot, 2 * preview.parts.size());
+    }
+    return exit_clean;
+}
+
+}  // namespace
+
+std::function<int()> setup_smooth(CLI::App& app) {
+    auto args = std::make_shared<SmoothArgs>();
+    app.add_option("deck", args->deck, "LS-DYNA keyword deck")->required();
+    app.add_option("--format", args->format, "output format")
+        ->check(CLI::IsMember({"table", "json"}))
+        ->capture_default_str();
+    app.add_option("--ini", args->ini, "initial smoothing length mode, instead of the deck's *CONTROL_SPH INI: "
+                                       "0 bucket sort, 1 global search, 2 from the mass")
+        ->check(CLI::Range(0, 2));
+    app.add_option("--csv", args->csv, "write one row per particle: id, part, x, y, z, mass, nn_distance, h, "
+                                       "neighbours");
+    app.add_option("--vtk", args->vtk, "write the particles and the same point data as VTK XML PolyData (.vtp) "
+                                       "for ParaView");
+    app.add_flag("--vtk-binary", args->vtk_binary, "store the .vtp arrays base64-encoded: smaller and faster "
+                                                   "to load than ASCII");
+    app.add_option("--plot", args->plot, "write histograms of h / nearest-neighbour distance and neighbour "
+                                         "counts per part (.svg)");
+    app.add_option("-I,--include-path", args->include_paths, "extra folder searched for *INCLUDE files")
+        ->allow_extra_args(false);
+    return [args] { return run_smooth(*args); };
+}
+
+}  // namespace sphdeck::cli

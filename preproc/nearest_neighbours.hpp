@@ -1,0 +1,68 @@
+// Nearest-neighbour distances and neighbour counts (sph-algorithms.md §2.1, §12.1).
+//
+// Two nearest-neighbour searches over one set of points (the preview calls them per part, so the
+// nearest neighbour is always one of the same part, as in LS-DYNA's rule for h0):
+// - nearest_neighbours_grid: a cell list with ring expansion. The 3x3x3 block of cells around a
+//   point is searched first; the search widens shell by shell until no point outside the block
+//   searched can be closer. The result is therefore exact, not limited to the 27-cell stencil.
+// - nearest_neighbours_all_pairs: every pair, O(n^2): the reference (INI = 1, "global
+//   computation on all the particles").
+// Both compute the squared distance with the same expression on the same doubles, so their
+// distances agree bit for bit; only the index can differ, between equidistant neighbours.
+//
+// Where LS-DYNA's two INI modes may still differ (docs/preview.md): LS-DYNA's bucket sort (INI 0)
+// is assumed to search adjacent buckets only, so for an isolated particle whose nearest neighbour
+// lies beyond them it may find a different (or no) distance; sphdeck reports the exact one in both
+// modes and flags such particles (SPH115). And "all the particles of the model" (INI 1) may count
+// particles of other parts, which would shorten d_i where parts touch; sphdeck keeps the same-part
+// rule of *SECTION_SPH Remark 1 for both.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace sphdeck::preproc {
+
+struct NearestNeighbours {
+    static constexpr std::uint32_t none = 0xFFFFFFFFu;
+    std::vector<double> distance;       // per point; 0 when the set has no other point
+    std::vector<std::uint32_t> index;   // the nearest other point, `none` when there is none
+};
+
+// A typical spacing of the points: (bounding-box measure / count)^(1/d) over the axes the points
+// span (d = 0..3). 0 when the points span no axis.
+double estimated_spacing(std::span<const double> x, std::span<const double> y, std::span<const double> z);
+
+NearestNeighbours nearest_neighbours_grid(std::span<const double> x, std::span<const double> y,
+                                          std::span<const double> z);
+
+// `progress`, when set, is called now and then with the fraction done (0..1).
+NearestNeighbours nearest_neighbours_all_pairs(std::span<const double> x, std::span<const double> y,
+                                               std::span<const double> z,
+                                               const std::function<void(double)>& progress = {});
+
+struct NeighbourCounts {
+    // Per point: the other points j with r_ij < (support_i + support_j) / 2.
+    std::vector<std::uint32_t> count;
+    // Pairs (i < j) closer than max(tolerance_i, tolerance_j), or at distance 0.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> coincident;
+    // 1 when every point was counted; k when only every k-th point (in cell order) was and the
+    // others copy the count of the last counted point before them: the work was over budget
+    // (supports of many spacings, usually an h0 inflated by a stray particle).
+    std::size_t sample_stride = 1;
+};
+
+// Neighbour counts within the kernel support (a radius per point: kernel factor * h), on a grid
+// with cells as large as the largest support. `pair_budget` bounds the distance evaluations.
+NeighbourCounts count_neighbours(std::span<const double> x, std::span<const double> y, std::span<const double> z,
+                                 std::span<const double> support, std::span<const double> tolerance,
+                                 double pair_budget = 2.0e9);
+
+// The same by brute force over all pairs, for tests.
+std::vector<std::uint32_t> count_neighbours_all_pairs(std::span<const double> x, std::span<const double> y,
+                                                      std::span<const double> z, std::span<const double> support);
+
+}  // namespace sphdeck::preproc
