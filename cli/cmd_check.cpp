@@ -13,7 +13,6 @@
 #include "diag/render_sarif.hpp"
 #include "diag/render_text.hpp"
 #include "lint/pipeline.hpp"
-#include "lint/suppressions.hpp"
 
 namespace sphdeck::cli {
 namespace {
@@ -135,8 +134,6 @@ int run_check(const CheckArgs& args) {
             totals.complete = false;
             continue;
         }
-        lint::apply_suppressions(r.deck.sources, r.diagnostics);
-        lint::apply_rule_settings(config, r.diagnostics);
         if (report) {
             report->add(r.deck.sources, r.diagnostics);
         } else if (args.format == "github") {

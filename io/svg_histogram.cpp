@@ -84,10 +84,10 @@ void draw_panel(std::string& svg, const HistogramPanel& panel, const Box& box, s
     const std::size_t nb = bins.counts.size();
     const double hi = bins.lo + static_cast<double>(nb) * bins.width;
     const std::size_t max_count = *std::max_element(bins.counts.begin(), bins.counts.end());
-    std::vector<double> yticks = nice_ticks(0.0, static_cast<double>(std::max<std::size_t>(max_count, 1)), 5);
-    yticks.erase(std::remove_if(yticks.begin(), yticks.end(), [](double t) { return t != std::floor(t); }),
-                 yticks.end());
-    const double ymax = std::max(static_cast<double>(max_count), yticks.empty() ? 1.0 : yticks.back());
+    // Count ticks up to the first round value at or above the highest bar.
+    const double ystep = nice_step(static_cast<double>(std::max<std::size_t>(max_count, 1)) / 5, true);
+    const double ymax = std::max(std::ceil(static_cast<double>(max_count) / ystep) * ystep, ystep);
+    const std::vector<double> yticks = nice_ticks(0.0, ymax, 5, true);
     auto ypos = [&](double c) { return ybase - ph * c / ymax; };
     auto xpos = [&](double v) { return x0 + pw * (v - bins.lo) / (hi - bins.lo); };
 
@@ -110,7 +110,8 @@ void draw_panel(std::string& svg, const HistogramPanel& panel, const Box& box, s
             fmt::format_to(out, "<text x=\"{:.1f}\" y=\"{:.1f}\" class=\"count\">{}</text>\n", xpos(a) + bar / 2,
                            top - 3, label);
     }
-    for (double t : nice_ticks(bins.lo, hi, 6)) {
+    const bool integer_ticks = panel.integer_bins && bins.width >= 1 && bins.lo + 0.5 == std::floor(bins.lo + 0.5);
+    for (double t : nice_ticks(bins.lo, hi, 6, integer_ticks)) {
         fmt::format_to(out, "<path d=\"M{0:.1f} {1:.1f}v5\" class=\"axis\"/>\n", xpos(t), ybase);
         fmt::format_to(out, "<text x=\"{:.1f}\" y=\"{:.1f}\" class=\"xtick\">{}</text>\n", xpos(t), ybase + 18,
                        number(t));
@@ -121,10 +122,10 @@ void draw_panel(std::string& svg, const HistogramPanel& panel, const Box& box, s
 
 }  // namespace
 
-std::vector<double> nice_ticks(double lo, double hi, int target) {
+std::vector<double> nice_ticks(double lo, double hi, int target, bool integer) {
     if (!std::isfinite(lo) || !std::isfinite(hi)) return {};
     if (!(hi > lo)) return {lo};
-    const double step = nice_step((hi - lo) / std::max(target, 1), false);
+    const double step = nice_step((hi - lo) / std::max(target, 1), integer);
     std::vector<double> ticks;
     for (double k = std::ceil(lo / step - 1e-9); k * step <= hi + step * 1e-9; k += 1.0) {
         double t = k * step;

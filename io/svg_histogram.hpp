@@ -33,8 +33,8 @@ struct Bins {
 // Bins with round edges (1, 2, 2.5, 5 times a power of ten) covering every finite value; a
 // sample of one distinct value gets a few bins around it, an empty one none.
 Bins make_bins(std::span<const double> values, bool integer_bins, std::size_t max_bins);
-// About `target` round tick values within [lo, hi].
-std::vector<double> nice_ticks(double lo, double hi, int target);
+// About `target` round tick values within [lo, hi]; whole numbers only when `integer`.
+std::vector<double> nice_ticks(double lo, double hi, int target, bool integer = false);
 
 std::string svg_histograms(std::span<const HistogramPanel> panels, const SvgOptions& options = {});
 // Writes `path`; throws std::runtime_error naming the file when it cannot be written.

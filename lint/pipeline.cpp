@@ -1,6 +1,9 @@
 #include "lint/pipeline.hpp"
 
+#include "lint/suppressions.hpp"
+#include "grammar/read_deck.hpp"
 #include "model/model_builder.hpp"
+#include "model/radioss_decoder.hpp"
 
 namespace sphdeck::lint {
 namespace {
@@ -8,20 +11,27 @@ CheckResult finish(grammar::RawDeck deck, const CheckOptions& options) {
     CheckResult result;
     result.deck = std::move(deck);
     result.diagnostics = result.deck.diagnostics;
-    result.model = model::build_model(result.deck, result.diagnostics, &result.summary);
+    result.model = grammar::format_of(result.deck) == grammar::DeckFormat::Radioss
+                       ? model::build_radioss_model(result.deck, result.diagnostics, &result.summary)
+                       : model::build_model(result.deck, result.diagnostics, &result.summary);
     RuleContext context(result.model, result.deck, options.rules, result.diagnostics);
     run_rules(context);
     diag::sort_by_location(result.diagnostics);
+    // What the deck's own comments and the configuration say about the findings: every consumer
+    // (the CLI, the deck tests, an editor) sees the same list.
+    apply_suppressions(result.deck.sources, result.diagnostics);
+    apply_rule_settings(options.config, result.diagnostics);
     return result;
 }
 }  // namespace
 
 CheckResult check_file(const std::string& path, const CheckOptions& options) {
-    return finish(grammar::dyna::read_file(path, options.reader), options);
+    return finish(grammar::read_deck(path, options.reader), options);
 }
 
-CheckResult check_buffer(std::string text, const std::string& name, const CheckOptions& options) {
-    return finish(grammar::dyna::read_buffer(std::move(text), name, ".", options.reader), options);
+CheckResult check_buffer(std::string text, const std::string& name, const CheckOptions& options,
+                         std::optional<grammar::DeckFormat> format) {
+    return finish(grammar::read_deck_buffer(std::move(text), name, ".", options.reader, format), options);
 }
 
 }  // namespace sphdeck::lint

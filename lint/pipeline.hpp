@@ -8,6 +8,7 @@
 #include "diag/diagnostic.hpp"
 #include "grammar/dyna/reader.hpp"
 #include "grammar/raw_deck.hpp"
+#include "grammar/read_deck.hpp"
 #include "lint/config.hpp"
 #include "lint/rule_context.hpp"
 #include "model/deck_check.hpp"
@@ -30,6 +31,8 @@ struct CheckResult {
 
 // Throws std::runtime_error when the main file cannot be read.
 CheckResult check_file(const std::string& path, const CheckOptions& options = {});
-CheckResult check_buffer(std::string text, const std::string& name, const CheckOptions& options = {});
+// `format`: the reader to use (LS-DYNA unless told; nullopt detects it from the text and name).
+CheckResult check_buffer(std::string text, const std::string& name, const CheckOptions& options = {},
+                         std::optional<grammar::DeckFormat> format = grammar::DeckFormat::LsDyna);
 
 }  // namespace sphdeck::lint

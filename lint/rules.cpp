@@ -4,6 +4,12 @@ namespace sphdeck::lint {
 
 void run_rules(RuleContext& context) {
     check_references(context);
+    check_control_sph(context);
+    check_section_sph(context);
+    if (!context.model.radioss) check_sph_particles(context);  // *ELEMENT_SPH masses; Radioss cells: RAD026
+    check_sph_materials(context);
+    check_preview(context);
+    check_radioss(context);
 }
 
 }  // namespace sphdeck::lint

@@ -42,9 +42,22 @@ void check_particles(RuleContext& c, const model::IdIndex& nodes) {
             ++it->second.second;
         }
     }
-    for (const auto& [id, first] : missing_node)
+    // Every particle has its own node: a forgotten node include would make a finding per particle.
+    std::size_t shown = 0, more = 0;
+    for (const auto& [id, first] : missing_node) {
+        if (shown == max_listed) {
+            ++more;
+            continue;
+        }
+        ++shown;
         c.report("REF001", c.particle_span(first.first), fmt::format("particle {} has no *NODE {}", id, id));
+    }
+    if (more > 0)
+        c.report("REF001", c.particle_span(std::next(missing_node.begin(), max_listed)->second.first),
+                 fmt::format("{} more particles have no *NODE (first: {})", more,
+                             std::next(missing_node.begin(), max_listed)->first));
     for (const auto& [id, first] : missing_part) {
+        if (id < 0) continue;  // the PID could not be read: DK002 says so
         std::string count = first.second > 1 ? fmt::format(" ({} particles)", first.second) : "";
         c.report("REF002", c.particle_span(first.first), fmt::format("particle part {} is not defined{}", id, count));
     }
@@ -125,7 +138,7 @@ void check_set_references(RuleContext& c) {
             Id id = model::normalise_id(f->text);
             if (!(part_kind ? part_set(id) : node_set(id)))
                 c.report("REF008", f->span,
-                         fmt::format("{} {} {} is not defined{}", part_kind ? "part set" : "node set", id, "", why));
+                         fmt::format("{} {} is not defined{}", part_kind ? "part set" : "node set", id, why));
         };
         auto number = [&](std::string_view field, double fallback) {
             const model::FieldRecord* f = r.field(field);
@@ -197,6 +210,10 @@ void check_references(RuleContext& c) {
     check_duplicates(c, c.model.boxes, "box");
     std::set<Id> sections, materials, eos;
     check_part_references(c, sections, materials, eos);
+    // *DEFINE_ADAPTIVE_SOLID_TO_SPH gives its new particles a section of their own (ISSPH).
+    for (const model::KeywordRecord& r : c.model.records)
+        if (const model::FieldRecord* f = r.schema->name == "*DEFINE_ADAPTIVE_SOLID_TO_SPH" ? r.field("ISSPH") : nullptr)
+            if (f->explicit_value) sections.insert(model::normalise_id(f->text));
     check_set_references(c);
     report_unused(c, c.model.sections, sections, "section");
     report_unused(c, c.model.materials, materials, "material");

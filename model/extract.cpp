@@ -25,10 +25,20 @@ Setting<E> enum_setting(const KeywordRecord& r, std::string_view name, E fallbac
     return {static_cast<E>(n.value), n.explicit_value, n.span};
 }
 
+// An id as the solver reads it: a number ("0001", or "1.0" which DK004 already flags) becomes
+// its integer; a label stays text.
+Id id_of(const FieldRecord& f) {
+    if (!f.explicit_value) return {};
+    grammar::ValueToken t = grammar::classify_value(f.text);
+    if (f.valid && (t.shape == grammar::ValueShape::Integer || t.shape == grammar::ValueShape::Real))
+        return std::to_string(static_cast<long long>(f.number));
+    return normalise_id(f.text);
+}
+
 Setting<Id> id_setting(const KeywordRecord& r, std::string_view name) {
     Setting<Id> s{Id{}, false, r.span};
     if (const FieldRecord* f = r.field(name)) {
-        s.value = f->explicit_value ? normalise_id(f->text) : Id{};
+        s.value = id_of(*f);
         s.explicit_value = f->explicit_value;
         s.span = f->span;
     }
@@ -36,6 +46,12 @@ Setting<Id> id_setting(const KeywordRecord& r, std::string_view name) {
 }
 
 bool starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
+
+// *MAT_ADD_EROSION, *MAT_ADD_THERMAL_EXPANSION, *MAT_THERMAL_... add properties to a material
+// defined elsewhere: they name a MID, they do not define one.
+bool is_material_keyword(std::string_view name) {
+    return starts_with(name, "*MAT_") && !starts_with(name, "*MAT_ADD_") && !starts_with(name, "*MAT_THERMAL_");
+}
 
 void extract_control_sph(const KeywordRecord& r, ControlSph& c) {
     c.present = true;
@@ -122,7 +138,9 @@ void extract_parts(const KeywordRecord& r, std::vector<Part>& parts) {
     }
 }
 
-std::vector<long long> set_members(const KeywordRecord& r) {
+// `limit` bounds what a _GENERATE range expands to: ids past the model's own are missing anyway
+// (REF001 says so), and "1 200000000" must not take gigabytes.
+std::vector<long long> set_members(const KeywordRecord& r, std::size_t limit, bool& truncated) {
     std::vector<long long> members;
     const bool generate = r.has_option("GENERATE");
     for (const auto& row : r.rows) {
@@ -132,8 +150,13 @@ std::vector<long long> set_members(const KeywordRecord& r) {
             for (std::size_t k = 0; k + 1 < row.size(); k += 2)
                 if (row[k].explicit_value && row[k + 1].explicit_value)
                     for (auto id = static_cast<long long>(row[k].number); id <= static_cast<long long>(row[k + 1].number);
-                         ++id)
+                         ++id) {
+                        if (members.size() >= limit) {
+                            truncated = true;
+                            return members;
+                        }
                         members.push_back(id);
+                    }
         } else {
             for (const auto& f : row)
                 if (f.explicit_value && f.valid) members.push_back(static_cast<long long>(f.number));
@@ -147,7 +170,7 @@ void extract_record(const KeywordRecord& r, std::size_t index, Model& m) {
     if (starts_with(name, "*CONTROL_")) return extract_controls(r, m.controls);
     if (name == "*SECTION_SPH") return m.sections.push_back(sph_section(r));
     if (name == "*PART") return extract_parts(r, m.parts);
-    if (starts_with(name, "*MAT_") && name != "*MAT_ADD_EROSION") {
+    if (is_material_keyword(name)) {
         Setting<Id> id = id_setting(r, "MID");
         m.materials.push_back({id.value, std::string(name), id.span, setting<double>(r, "RO", 0.0), index});
         return;
@@ -182,7 +205,9 @@ void extract_record(const KeywordRecord& r, std::size_t index, Model& m) {
     }
     if (name == "*SET_NODE_LIST" || name == "*SET_PART_LIST") {
         Setting<Id> id = id_setting(r, "SID");
-        IdSet s{id.value, id.span, set_members(r)};
+        const std::size_t model_size = name == "*SET_NODE_LIST" ? m.nodes.id.size() : m.parts.size();
+        IdSet s{id.value, id.span, {}, false};
+        s.members = set_members(r, model_size + 1000, s.truncated);
         (name == "*SET_NODE_LIST" ? m.node_sets : m.part_sets).push_back(std::move(s));
     }
 }
@@ -202,16 +227,53 @@ bool raw_first_id(const grammar::RawDeck& deck, const grammar::Block& block, Id&
     return !id.empty();
 }
 
+// *PART_CONTACT, *PART_INERTIA and other variants the schema lacks: their first two cards are
+// *PART's heading and data card (PID SECID MID EOSID HGID), then cards of their own follow. We read
+// the first part of the block; variants with several parts per block are rare.
+void extract_part_variant(const grammar::RawDeck& deck, const grammar::Block& b, Model& m) {
+    const grammar::CardLine* first = deck.begin_lines(b);
+    if (deck.end_lines(b) - first < 2) return;
+    const grammar::CardLine& data = first[1];
+    std::string_view text = deck.text(data);
+    const std::size_t width = b.format == grammar::CardFormat::Long ? 20 : 10;
+    auto field = [&](std::size_t k, Setting<Id>& out) {
+        std::string_view f = text.size() > k * width ? text.substr(k * width, width) : std::string_view{};
+        out.value = normalise_id(f);
+        out.explicit_value = !out.value.empty();
+        out.span = grammar::Span{data.file, data.line, static_cast<std::uint32_t>(k * width + 1),
+                                 static_cast<std::uint32_t>((k + 1) * width + 1)};
+    };
+    Part p;
+    Setting<Id> pid;
+    field(0, pid);
+    if (pid.value.empty() || grammar::is_free_format(text)) return;
+    p.id = pid.value;
+    p.span = pid.span;
+    p.heading = std::string(deck.text(first[0]));
+    field(1, p.section);
+    field(2, p.material);
+    field(3, p.eos);
+    field(4, p.hourglass);
+    if (p.eos.value == "0") p.eos.value.clear();
+    if (p.hourglass.value == "0") p.hourglass.value.clear();
+    m.parts.push_back(std::move(p));
+}
+
 void extract_unknown_definitions(const grammar::RawDeck& deck, Model& m) {
     for (const grammar::Block& b : deck.blocks) {
         if (starts_with(b.keyword, "*CONTROL_MPP")) m.controls.mpp_keywords.push_back(b.span);
         const bool section = starts_with(b.keyword, "*SECTION_") && !starts_with(b.keyword, "*SECTION_SPH");
-        const bool material = starts_with(b.keyword, "*MAT_");
+        const bool material = is_material_keyword(b.keyword);
+        const bool part_variant = starts_with(b.keyword, "*PART_");
         const bool eos = starts_with(b.keyword, "*EOS_");
-        if (!section && !material && !eos) continue;
+        if (!section && !material && !eos && !part_variant) continue;
         if (keywords::find_keyword(b.keyword).has_value() &&
             keywords::find_keyword(b.keyword)->unknown_options.empty())
             continue;  // known: already extracted from its record
+        if (part_variant) {
+            extract_part_variant(deck, b, m);
+            continue;
+        }
         Id id;
         grammar::Span span;
         if (!raw_first_id(deck, b, id, span)) continue;

@@ -11,6 +11,7 @@
 
 #include "grammar/keywords/schema.hpp"
 #include "grammar/source_map.hpp"
+#include "model/radioss_facts.hpp"
 #include "model/settings.hpp"
 
 namespace sphdeck::model {
@@ -127,6 +128,7 @@ struct IdSet {
     Id id;
     grammar::Span span;
     std::vector<long long> members;
+    bool truncated = false;  // a _GENERATE range far larger than the model was not expanded fully
 };
 
 // Particles and nodes as structure-of-arrays: decks of 1e7 particles are normal.
@@ -139,7 +141,7 @@ struct Nodes {
 
 struct Particles {
     std::vector<long long> node;        // node id (= element id)
-    std::vector<long long> part;        // PID as an integer (labels map to -1 and part_label)
+    std::vector<long long> part;        // PID as an integer (-1 when it could not be read: DK002)
     std::vector<double> mass;           // > 0 mass; < 0 |mass| is a volume
     std::vector<std::uint8_t> volume;   // 1 when *ELEMENT_SPH_VOLUME: mass holds a volume
     std::vector<std::uint32_t> line;    // index into RawDeck::lines
@@ -159,6 +161,7 @@ struct Model {
     Nodes nodes;
     Particles particles;
     bool memory2_given = false;  // memory2= on *KEYWORD: MPP evidence
+    std::optional<RadiossFacts> radioss;  // set for Radioss decks only (model/radioss_facts.hpp)
 
     const Part* part(const Id& id) const;
     const Section* section(const Id& id) const;

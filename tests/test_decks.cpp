@@ -1,14 +1,18 @@
 // The deck-driven runner (design.md, "Tests"): every deck under decks/tests/ states the
 // diagnostics it expects with `$ expect: CODE[, CODE...]` on the comment line(s) right before
-// the line that must trigger them; `$ expect-deck: CODE` expects one without a location. The
+// the line that must trigger them; `$ expect-above: CODE` expects one on the line just above (a
+// suppression comment); `$ expect-deck: CODE` expects one without a location. The
 // set of (file, line, code) found must equal the set expected: an undeclared finding fails.
 // Included files (*.inc, or anything under a folder named `include`) are not run on their own.
+// Radioss decks (*.rad) may write the same lines with '#' instead of '$'; their engine decks
+// (<run>_0001.rad) are checked with the starter deck <run>_0000.rad that reads them.
 #include <doctest/doctest.h>
 
 #include <filesystem>
 #include <set>
 #include <tuple>
 
+#include "grammar/radioss/reader.hpp"
 #include "lint/pipeline.hpp"
 
 namespace fs = std::filesystem;
@@ -35,12 +39,21 @@ std::multiset<Expectation> expectations(const grammar::SourceMap& sources) {
     std::multiset<Expectation> out;
     for (grammar::FileId f = 0; f < sources.size(); ++f) {
         const auto& file = sources.file(f);
-        std::vector<std::string_view> pending;
+        // Radioss decks (main file *.rad) also write `# expect: CODE`; '#' lines are comments there.
+        const std::string& root = sources.file(sources.include_chain(f).front()).display_name;
+        const bool radioss = root.size() > 4 && root.substr(root.size() - 4) == ".rad";
+        std::vector<std::string> pending;  // copies: a '#' line is rewritten into a temporary
+        std::string hash_comment;
         for (std::uint32_t n = 1, last = sources.line_count(f); n <= last; ++n) {
             std::string_view text = sources.line_text(f, n);
-            static constexpr std::string_view expect = "$ expect:", expect_deck = "$ expect-deck:";
-            if (text.rfind(expect, 0) == 0) {
-                pending.push_back(text.substr(expect.size()));
+            if (radioss && text.rfind('#', 0) == 0 && text.rfind("#include", 0) != 0 && text.rfind("#enddata", 0) != 0)
+                text = hash_comment = "$" + std::string(text.substr(1));
+            static constexpr std::string_view expect = "$ expect:", expect_deck = "$ expect-deck:",
+                                              expect_above = "$ expect-above:";
+            if (text.rfind(expect_above, 0) == 0) {
+                add_codes(text.substr(expect_above.size()), file.display_name, n - 1, out);  // e.g. on a comment
+            } else if (text.rfind(expect, 0) == 0) {
+                pending.emplace_back(text.substr(expect.size()));
             } else if (text.rfind(expect_deck, 0) == 0) {
                 add_codes(text.substr(expect_deck.size()), "", 0, out);
             } else if (!text.empty() && text[0] == '$') {
@@ -70,7 +83,9 @@ std::string describe(const std::multiset<Expectation>& set) {
 }
 
 bool is_main_deck(const fs::path& p) {
-    if (p.extension() != ".k") return false;
+    // Radioss engine decks (<run>_0001.rad) are read with their starter deck.
+    const bool engine = grammar::radioss::is_engine_file_name(p.filename().string());
+    if (p.extension() != ".k" && (p.extension() != ".rad" || engine)) return false;
     for (const auto& part : p) if (part == "include") return false;
     return true;
 }

@@ -16,9 +16,8 @@ namespace {
 // Two *CONTROL_TERMINATION blocks would add DK018; *DEFINE_CURVE takes any number of cards
 // whose first field is real, so "abc" gives one DK003 per line.
 std::vector<diag::Diagnostic> check(const std::string& text) {
-    lint::CheckResult r = lint::check_buffer(text, "main.k");
-    lint::apply_suppressions(r.deck.sources, r.diagnostics);
-    return r.diagnostics;
+    // The pipeline applies the deck's suppressions itself.
+    return lint::check_buffer(text, "main.k").diagnostics;
 }
 
 std::vector<std::uint32_t> lines_of(const std::vector<diag::Diagnostic>& ds, const std::string& code) {
@@ -143,7 +142,6 @@ TEST_CASE("suppress: a directive applies to its own file, not to the files it in
                                        "*KEYWORD\n$ sphdeck: disable-file=DK003\n*CONTROL_TERMINATION\nabc\n"
                                        "*INCLUDE\npart.k\n*END\n");
     lint::CheckResult r = lint::check_file(main);
-    lint::apply_suppressions(r.deck.sources, r.diagnostics);
     REQUIRE(count_code(r.diagnostics, "DK003") == 1);
     CHECK(r.deck.sources.file(find_code(r.diagnostics, "DK003")->span.file).display_name.ends_with("part.k"));
 }

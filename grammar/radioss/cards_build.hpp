@@ -1,0 +1,32 @@
+// Internal: short builders for the card tables (cards_*.cpp).
+#pragma once
+
+#include <initializer_list>
+
+#include "grammar/radioss/cards.hpp"
+
+namespace sphdeck::grammar::radioss::build {
+
+inline FieldSpec I(std::string_view name) { return {name, Cell::Int}; }
+inline FieldSpec R(std::string_view name) { return {name, Cell::Real}; }
+inline FieldSpec T(std::string_view name) { return {name, Cell::Text}; }
+inline FieldSpec T20(std::string_view name) { return {name, Cell::Text20}; }
+inline FieldSpec L(std::string_view name) { return {name, Cell::Line}; }
+inline FieldSpec S() { return {"", Cell::Skip}; }
+inline FieldSpec S20() { return {"", Cell::Skip20}; }
+
+inline CardSpec once(std::initializer_list<FieldSpec> fields) { return {fields, Repeat::Once}; }
+inline CardSpec repeated(std::initializer_list<FieldSpec> fields) { return {fields, Repeat::Repeated}; }
+
+// A card of `count` integer fields named `name` (node lists of groups).
+inline CardSpec repeated_ints(std::string_view name, int count) {
+    CardSpec c;
+    c.repeat = Repeat::Repeated;
+    for (int i = 0; i < count; ++i) c.fields.push_back(I(name));
+    return c;
+}
+
+// Lines kept as text, not decoded.
+inline CardSpec opaque() { return repeated({L("text")}); }
+
+}  // namespace sphdeck::grammar::radioss::build

@@ -1,0 +1,93 @@
+// Deck structure, nodes, parts, solid elements, node groups, skews and frames.
+#include "grammar/radioss/cards_build.hpp"
+
+namespace sphdeck::grammar::radioss::detail {
+
+using namespace build;
+
+void add_mesh_keywords(std::vector<KeywordSpec>& out) {
+    // /BEGIN (radioss-format.md §3). Its own version is read from card 2 before decoding.
+    out.push_back({.name = "/BEGIN",
+                   .title = false,
+                   .summary = "run name, input version Invers and unit systems",
+                   .formats = {{2021,
+                                {once({L("Runname")}), once({I("Invers")}),
+                                 once({T20("Input_mass"), T20("Input_length"), T20("Input_time")}),
+                                 once({T20("Work_mass"), T20("Work_length"), T20("Work_time")})}},
+                               {100, {once({L("Runname")}), once({I("Invers"), I("Irun")})}},
+                               {0, {once({L("Runname")}), once({I("Invers")})}}}});
+    out.push_back({.name = "/END", .title = false, .decoded = false, .summary = "end of the deck", .formats = {{0, {}}}});
+    out.push_back({.name = "/NODE",
+                   .title = false,
+                   .summary = "nodes: id and coordinates",
+                   .formats = {{0, {repeated({I("node_ID"), R("X"), R("Y"), R("Z")})}}}});
+    out.push_back({.name = "/PART",
+                   .summary = "part: property, material and subset",
+                   .formats = {{0, {once({I("prop_ID"), I("mat_ID"), I("subset_ID")})}}}});
+    out.push_back({.name = "/ANALY",
+                   .title = false,
+                   .summary = "analysis type: N2D3D 0 = 3D, 1 = axisymmetric, 2 = plane strain",
+                   .formats = {{0, {once({I("N2D3D")})}}}});
+    out.push_back({.name = "/DEF_SOLID",
+                   .title = false,
+                   .summary = "default solid formulation (Isolid, Iframe)",
+                   .formats = {{0, {once({I("Isolid"), I("Ismstr"), S(), S(), S(), S(), S(), I("Iframe")})}}}});
+
+    // Solid elements: /BRICK/part_ID etc., one element per line (/TETRA10: two lines).
+    out.push_back({.name = "/BRICK",
+                   .title = false,
+                   .summary = "8-node bricks of a part",
+                   .formats = {{0,
+                                {repeated({I("brick_ID"), I("node_ID1"), I("node_ID2"), I("node_ID3"), I("node_ID4"),
+                                           I("node_ID5"), I("node_ID6"), I("node_ID7"), I("node_ID8")})}}}});
+    out.push_back({.name = "/TETRA4",
+                   .title = false,
+                   .summary = "4-node tetras of a part",
+                   .formats = {{0,
+                                {repeated({I("tetra_ID"), I("node_ID1"), I("node_ID2"), I("node_ID3"),
+                                           I("node_ID4")})}}}});
+    out.push_back({.name = "/TETRA10",
+                   .title = false,
+                   .summary = "10-node tetras of a part (id line, then the ten nodes)",
+                   .formats = {{0,
+                                {repeated({I("tetra_ID")}),
+                                 repeated({I("node_ID1"), I("node_ID2"), I("node_ID3"), I("node_ID4"), I("node_ID5"),
+                                           I("node_ID6"), I("node_ID7"), I("node_ID8"), I("node_ID9"),
+                                           I("node_ID10")})}}}});
+    out.push_back({.name = "/PENTA6",
+                   .title = false,
+                   .summary = "6-node pentas of a part",
+                   .formats = {{0,
+                                {repeated({I("penta_ID"), I("node_ID1"), I("node_ID2"), I("node_ID3"), I("node_ID4"),
+                                           I("node_ID5"), I("node_ID6")})}}}});
+
+    // Node groups: members of /GRNOD/NODE and /GRNOD/PART are read; other kinds keep their id.
+    out.push_back({.name = "/GRNOD/NODE",
+                   .summary = "node group given by node ids",
+                   .formats = {{0, {repeated_ints("node_ID", 10)}}}});
+    out.push_back({.name = "/GRNOD/PART",
+                   .summary = "node group: the nodes of parts",
+                   .formats = {{0, {repeated_ints("part_ID", 10)}}}});
+    out.push_back({.name = "/GRNOD", .summary = "node group", .formats = {{0, {opaque()}}}});
+
+    // Skews and frames: fixed ones by origin and two axes; moving ones by three nodes.
+    const FormatSpec fixed{0,
+                           {once({R("Ox"), R("Oy"), R("Oz")}), once({R("X1"), R("Y1"), R("Z1")}),
+                            once({R("X2"), R("Y2"), R("Z2")})}};
+    const FormatSpec moving{0, {once({I("node_ID1"), I("node_ID2"), I("node_ID3"), T("Dir")})}};
+    out.push_back({.name = "/FRAME/FIX", .summary = "fixed frame: origin, X' and Y' axes", .formats = {fixed}});
+    out.push_back({.name = "/SKEW/FIX", .summary = "fixed skew: origin, X' and Y' axes", .formats = {fixed}});
+    out.push_back({.name = "/FRAME/MOV", .summary = "moving frame given by three nodes", .formats = {moving}});
+    out.push_back({.name = "/SKEW/MOV", .summary = "moving skew given by three nodes", .formats = {moving}});
+    out.push_back({.name = "/FRAME", .summary = "frame (moving)", .formats = {{0, {opaque()}}}});
+    out.push_back({.name = "/SKEW", .summary = "skew (moving)", .formats = {{0, {opaque()}}}});
+
+    // Structural or global keywords kept as they are.
+    for (std::string_view name : {"/TITLE", "/UNIT", "/IOFLAG", "/SPMD", "/RANDOM", "/DEF_SHELL", "/PARAMETER",
+                                  "/SUBSET", "/SURF", "/LINE", "/GRSHEL", "/GRBRIC", "/GRPART", "/BCS", "/IMPVEL",
+                                  "/INIVEL", "/GRAV", "/FUNCT", "/INTER", "/RWALL", "/TH", "/SENSOR", "/KEY"})
+        out.push_back({.name = name, .title = false, .decoded = false, .summary = "kept as is",
+                       .formats = {{0, {opaque()}}}});
+}
+
+}  // namespace sphdeck::grammar::radioss::detail

@@ -1,0 +1,199 @@
+// What each kind of line does to the deck (radioss-format.md §2): headers open blocks, data lines
+// join the open block, #include reads a file in place, #enddata ends a file, /END the deck.
+#include "grammar/radioss/deck_reader.hpp"
+
+#include "grammar/dyna/include_resolver.hpp"
+#include "grammar/parameters.hpp"
+
+namespace sphdeck::grammar::dyna {
+std::string read_include_text(const std::string& path);  // grammar/dyna/reader.cpp
+}
+
+namespace sphdeck::grammar::radioss {
+namespace {
+
+std::string_view strip_cr(const char* begin, const char* end) {
+    std::string_view s(begin, static_cast<std::size_t>(end - begin));
+    if (!s.empty() && s.back() == '\r') s.remove_suffix(1);
+    return s;
+}
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+    return s;
+}
+
+bool blank(std::string_view s) { return trim(s).empty(); }
+
+}  // namespace
+
+DeckReader::DeckReader(RawDeck& deck, const ReaderOptions& options, std::filesystem::path main_directory)
+    : deck_(deck), options_(options), main_directory_(std::move(main_directory)) {}
+
+void DeckReader::report(const char* code, diag::Severity severity, std::string message, Span span) {
+    deck_.diagnostics.push_back(diag::Diagnostic{code, severity, std::move(message), span, {}});
+}
+
+Span DeckReader::line_span(const char* begin, const char* end) const {
+    const OpenFile& f = stack_.back();
+    const auto length = static_cast<std::uint32_t>(std::max<std::size_t>(strip_cr(begin, end).size(), 1));
+    return Span{f.id, f.line, 1, length + 1};
+}
+
+// Lines after /END (anywhere) or after #enddata (in this file) are ignored; the first non-blank
+// one is reported once per file (DK017).
+bool DeckReader::skipped(const char* begin, const char* end) {
+    OpenFile& f = current();
+    if (!ended_ && !f.done) return false;
+    if (!f.reported_after && !blank(strip_cr(begin, end))) {
+        f.reported_after = true;
+        report("DK017", diag::Severity::Info,
+               std::string("content after ") + (f.done ? "#enddata" : "/END") + " is ignored", line_span(begin, end));
+    }
+    return true;
+}
+
+void DeckReader::on_empty(const char* begin) {
+    ++current().line;
+    if (ended_ || current().done || !block_) return;
+    // A blank line inside a block is a card (blank cards take every default); trailing blank
+    // lines of a block are dropped when it closes.
+    OpenFile& f = current();
+    deck_.lines.push_back(CardLine{f.id, f.line, static_cast<std::uint32_t>(begin - f.base), 0});
+    ++deck_.blocks[*block_].line_count;
+    ++deck_.stats.cards;
+}
+
+void DeckReader::on_comment(const char*, const char*) { ++current().line; }
+
+void DeckReader::on_enddata(const char* begin, const char* end) {
+    ++current().line;
+    if (skipped(begin, end)) return;
+    current().done = true;
+}
+
+void DeckReader::on_header(const char* begin, const char* end) {
+    OpenFile& f = current();
+    ++f.line;
+    if (skipped(begin, end)) return;
+    close_block();
+    const auto indent = static_cast<std::size_t>(header_path - begin);
+    std::string_view path = trim(strip_cr(header_path, end));
+
+    Block block;
+    block.keyword = to_upper(path);
+    block.arguments = std::string(path);
+    block.span = Span{f.id, f.line, static_cast<std::uint32_t>(indent + 1),
+                      static_cast<std::uint32_t>(indent + 1 + path.size())};
+    block.first_line = static_cast<std::uint32_t>(deck_.lines.size());
+    block.scope = f.id;
+    block.parameter_epoch = deck_.parameters.epoch();
+    ++deck_.stats.keywords;
+    if (indent > 0)
+        report("DK020", diag::Severity::Warning,
+               "header line does not start in column 1; OpenRadioss reads it as data unless headers may be indented",
+               block.span);
+    deck_.blocks.push_back(std::move(block));
+    if (deck_.blocks.back().keyword == "/END") {
+        ended_ = true;
+        return;
+    }
+    block_ = deck_.blocks.size() - 1;
+}
+
+void DeckReader::on_data(const char* begin, const char* end) {
+    OpenFile& f = current();
+    ++f.line;
+    if (skipped(begin, end)) return;
+    std::string_view text = strip_cr(begin, end);
+    if (!block_) {
+        if (!f.reported_stray && !blank(text)) {
+            f.reported_stray = true;
+            report("DK027", diag::Severity::Warning, "data line outside any header block is ignored",
+                   line_span(begin, end));
+        }
+        return;
+    }
+    deck_.lines.push_back(CardLine{f.id, f.line, static_cast<std::uint32_t>(begin - f.base),
+                                   static_cast<std::uint32_t>(text.size())});
+    ++deck_.blocks[*block_].line_count;
+    ++deck_.stats.cards;
+}
+
+// Trailing blank card lines of a block are not cards ("blank lines at the end of a block are
+// ignored", radioss-format.md §2).
+void DeckReader::close_block() {
+    if (!block_) return;
+    Block& b = deck_.blocks[*block_];
+    while (b.line_count > 0) {
+        const CardLine& last = deck_.lines[b.first_line + b.line_count - 1];
+        if (!blank(deck_.text(last))) break;
+        // Only the block's own trailing lines can be removed: they are the last lines read.
+        if (b.first_line + b.line_count != deck_.lines.size()) break;
+        deck_.lines.pop_back();
+        --b.line_count;
+        --deck_.stats.cards;
+    }
+    block_.reset();
+}
+
+void DeckReader::on_include(const char* begin, const char* end, std::string_view written) {
+    OpenFile& f = current();
+    ++f.line;
+    if (skipped(begin, end)) return;
+    std::string_view name = trim(written);
+    if (name.size() >= 2 && (name.front() == '"' || name.front() == '\'') && name.back() == name.front())
+        name = name.substr(1, name.size() - 2);
+    const auto column = static_cast<std::uint32_t>(std::string_view(begin, static_cast<std::size_t>(end - begin))
+                                                       .find(name) + 1);
+    const Span where{f.id, f.line, column, column + static_cast<std::uint32_t>(std::max<std::size_t>(name.size(), 1))};
+    const std::string file_name(name);
+    if (file_name.empty()) {
+        report("DK010", diag::Severity::Error, "#include without a file name", line_span(begin, end));
+        return;
+    }
+    if (stack_.size() > options_.max_include_depth) {
+        report("DK011", diag::Severity::Error,
+               "include nesting deeper than " + std::to_string(options_.max_include_depth) + " files; '" + file_name +
+                   "' is not read",
+               where);
+        return;
+    }
+    const SourceFile& parent = deck_.sources.file(f.id);
+    std::vector<std::filesystem::path> paths(options_.include_paths.begin(), options_.include_paths.end());
+    dyna::IncludeSearch search{std::filesystem::path(parent.path).parent_path(), main_directory_, paths};
+    auto resolved = dyna::resolve_include(file_name, search);
+    if (!resolved) {
+        diag::Diagnostic d{"DK010", diag::Severity::Error, "include file '" + file_name + "' not found", where, {}};
+        for (const auto& c : dyna::include_candidates(file_name, search)) d.notes.push_back({Span{}, "tried " + c.string()});
+        deck_.diagnostics.push_back(std::move(d));
+        return;
+    }
+    std::error_code ec;
+    auto canonical = std::filesystem::weakly_canonical(resolved->path, ec);
+    for (const OpenFile& open : stack_) {
+        if (canonical_[open.id] == canonical) {
+            report("DK011", diag::Severity::Error,
+                   "include cycle: '" + file_name + "' is already being read (" +
+                       deck_.sources.file(open.id).display_name + ")",
+                   where);
+            return;
+        }
+    }
+    SourceFile child;
+    child.path = resolved->path.string();
+    child.display_name = resolved->path.lexically_normal().string();
+    child.parent = f.id;
+    child.include_line = f.line;
+    child.depth = parent.depth + 1;
+    try {
+        child.text = dyna::read_include_text(child.path);
+    } catch (const std::exception& e) {
+        report("DK010", diag::Severity::Error, "include file '" + file_name + "' cannot be read: " + e.what(), where);
+        return;
+    }
+    read(deck_.sources.add(std::move(child)));
+}
+
+}  // namespace sphdeck::grammar::radioss

@@ -1,0 +1,57 @@
+// Internal: the state the Radioss line grammar's actions feed while a deck and its includes
+// are read. One DeckReader per main file (the starter, then the engine deck).
+#pragma once
+
+#include <deque>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "grammar/radioss/reader.hpp"
+
+namespace sphdeck::grammar::radioss {
+
+class DeckReader {
+public:
+    DeckReader(RawDeck& deck, const ReaderOptions& options, std::filesystem::path main_directory);
+
+    // Reads one file's text (already in the SourceMap) with the line grammar.
+    void read(FileId file);
+
+    // Called by the grammar's actions, once per physical line.
+    void on_empty(const char* begin);
+    void on_comment(const char* begin, const char* end);
+    void on_header(const char* begin, const char* end);
+    void on_data(const char* begin, const char* end);
+    void on_include(const char* begin, const char* end, std::string_view name);
+    void on_enddata(const char* begin, const char* end);
+
+    const char* header_path = nullptr;  // scratch: where the '/' of a header line is
+
+private:
+    struct OpenFile {
+        FileId id = 0;
+        const char* base = nullptr;
+        std::uint32_t line = 0;
+        bool done = false;  // after #enddata
+        bool reported_after = false;
+        bool reported_stray = false;
+    };
+
+    OpenFile& current() { return stack_.back(); }
+    bool skipped(const char* begin, const char* end);
+    void close_block();
+    void report(const char* code, diag::Severity severity, std::string message, Span span);
+    Span line_span(const char* begin, const char* end) const;
+
+    RawDeck& deck_;
+    const ReaderOptions& options_;
+    std::filesystem::path main_directory_;
+    std::deque<OpenFile> stack_;
+    std::vector<std::filesystem::path> canonical_;  // per FileId, for cycle detection
+    std::optional<std::size_t> block_;  // the open block: includes are textual, a block may span files
+    bool ended_ = false;                // after /END: the rest of the deck is ignored
+};
+
+}  // namespace sphdeck::grammar::radioss

@@ -1,0 +1,63 @@
+#include "grammar/read_deck.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+
+#include "grammar/radioss/reader.hpp"
+
+namespace sphdeck::grammar {
+namespace {
+// The first bytes of a file: enough for detect_format, without reading a big deck twice.
+std::string read_prefix(const std::string& path, std::size_t bytes) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot open '" + path + "': " + std::strerror(errno));
+    std::string text(bytes, '\0');
+    in.read(text.data(), static_cast<std::streamsize>(bytes));
+    text.resize(static_cast<std::size_t>(in.gcount()));
+    return text;
+}
+}  // namespace
+
+std::string_view to_string(DeckFormat f) { return f == DeckFormat::Radioss ? "radioss" : "ls-dyna"; }
+
+DeckFormat detect_format(std::string_view text, std::string_view file_name) {
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+    // Decks of millions of lines decide in their first lines: look at the first 200 at most.
+    for (int n = 0; n < 200 && !text.empty(); ++n) {
+        std::size_t nl = text.find('\n');
+        std::string_view line = text.substr(0, nl);
+        text.remove_prefix(nl == std::string_view::npos ? text.size() : nl + 1);
+        if (line.rfind("#RADIOSS", 0) == 0) return DeckFormat::Radioss;
+        std::size_t first = line.find_first_not_of(" \t\r");
+        if (first == std::string_view::npos || line[0] == '$' || line[0] == '#') continue;
+        if (line[first] == '*') return DeckFormat::LsDyna;
+        if (line[first] == '/') return DeckFormat::Radioss;
+        break;
+    }
+    const bool rad = file_name.size() >= 4 && file_name.substr(file_name.size() - 4) == ".rad";
+    return rad ? DeckFormat::Radioss : DeckFormat::LsDyna;
+}
+
+DeckFormat format_of(const RawDeck& deck) {
+    for (const Block& b : deck.blocks) return b.keyword.rfind('/', 0) == 0 ? DeckFormat::Radioss : DeckFormat::LsDyna;
+    if (deck.sources.size() == 0) return DeckFormat::LsDyna;
+    return detect_format(deck.sources.file(0).text, deck.sources.file(0).display_name);
+}
+
+RawDeck read_deck(const std::string& path, const dyna::ReaderOptions& options, std::optional<DeckFormat> format) {
+    if (!format) {
+        format = detect_format(read_prefix(path, 64 * 1024), path);
+    }
+    return *format == DeckFormat::Radioss ? radioss::read_file(path, options) : dyna::read_file(path, options);
+}
+
+RawDeck read_deck_buffer(std::string text, const std::string& display_name, const std::string& base_directory,
+                         const dyna::ReaderOptions& options, std::optional<DeckFormat> format) {
+    const DeckFormat f = format.value_or(detect_format(text, display_name));
+    return f == DeckFormat::Radioss ? radioss::read_buffer(std::move(text), display_name, base_directory, options)
+                                    : dyna::read_buffer(std::move(text), display_name, base_directory, options);
+}
+
+}  // namespace sphdeck::grammar

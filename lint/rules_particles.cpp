@@ -1,0 +1,171 @@
+// SPH110-SPH112: particle positions in 2D models and particle masses (lsdyna-sph-cards.md §3,
+// §4; *CONTROL_SPH IDIM). Decks hold millions of particles: each rule makes one finding per
+// kind of problem (per part for masses), with a count and the first ids.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "grammar/keywords/schema.hpp"
+#include "lint/rules.hpp"
+#include "model/id_index.hpp"
+
+namespace sphdeck::lint {
+namespace {
+
+constexpr std::size_t max_listed = 5;  // ids named in one message
+
+// Particles that share one problem: how many, the first few, and the first one's index.
+struct Group {
+    std::size_t count = 0;
+    std::vector<std::size_t> first;  // particle indices, at most max_listed
+
+    void add(std::size_t i) {
+        if (count++ < max_listed) first.push_back(i);
+    }
+    std::string ids(const model::Particles& p) const {
+        std::string s;
+        for (std::size_t k = 0; k < first.size(); ++k) s += (k ? ", " : "") + std::to_string(p.node[first[k]]);
+        return count > first.size() ? s + ", ..." : s;
+    }
+};
+
+// The columns of `field` on card line `line_index` of a one-card keyword (*NODE, *ELEMENT_SPH),
+// cut by the schema in the block's format; the whole line when that fails.
+grammar::Span field_span(const grammar::RawDeck& deck, std::uint32_t line_index, std::string_view keyword,
+                         std::string_view field, grammar::Span whole) {
+    auto block = std::upper_bound(deck.blocks.begin(), deck.blocks.end(), line_index,
+                                  [](std::uint32_t i, const grammar::Block& b) { return i < b.first_line; });
+    auto match = keywords::find_keyword(keyword);
+    if (block == deck.blocks.begin() || !match || match->schema->cards.empty()) return whole;
+    --block;
+    if (line_index >= block->first_line + block->line_count) return whole;
+    const keywords::CardSpec& card = match->schema->cards.front();
+    const keywords::FieldSpec* spec = card.field(field);
+    if (!spec || line_index >= deck.lines.size()) return whole;
+    const auto slots = keywords::layout(card, block->format);
+    std::vector<grammar::Field> fields;
+    const grammar::CardLine& line = deck.lines[line_index];
+    grammar::cut_fields(deck.text(line), line, slots, keywords::significant_width(card, block->format), fields);
+    const auto index = static_cast<std::size_t>(spec - card.fields.data());
+    return index < fields.size() ? fields[index].span : whole;
+}
+
+// The card-line index of a whole-line span inside a block of `keyword`, for field_span.
+std::optional<std::uint32_t> line_index(const grammar::RawDeck& deck, std::string_view keyword, grammar::Span at) {
+    for (const grammar::Block& b : deck.blocks) {
+        if (b.keyword != keyword) continue;
+        auto first = deck.begin_lines(b), last = deck.end_lines(b);
+        if (first == last || first->file != at.file) continue;
+        auto l = std::lower_bound(first, last, at.line,
+                                  [](const grammar::CardLine& c, std::uint32_t n) { return c.line < n; });
+        if (l != last && l->line == at.line) return static_cast<std::uint32_t>(l - deck.lines.data());
+    }
+    return std::nullopt;
+}
+
+// The scale of the particle cloud: the largest of its bounding-box extent and its distance from
+// the origin, so a lone particle far from z = 0 is still measured against something.
+double model_size(const model::Nodes& n, const std::vector<std::size_t>& node_of) {
+    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}, far = 0;
+    for (std::size_t k : node_of) {
+        if (k == SIZE_MAX) continue;
+        const double x[3] = {n.x[k], n.y[k], n.z[k]};
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::min(lo[a], x[a]), hi[a] = std::max(hi[a], x[a]);
+            far = std::max(far, std::abs(x[a]));
+        }
+    }
+    double extent = 0;
+    for (int a = 0; a < 3; ++a) extent = std::max(extent, hi[a] - lo[a]);
+    return std::max(extent, far);
+}
+
+// SPH110 and SPH111: 2D models lie in the x-y plane; axisymmetric ones have x = radius >= 0.
+// Coordinates within 1e-9 of the model size count as on the plane or the axis (round-off).
+void check_planar(RuleContext& c) {
+    const model::ControlSph& sph = c.model.controls.sph;
+    if (!sph.present || !model::is_two_dimensional(sph.idim.value)) return;
+    const model::Particles& p = c.model.particles;
+    const model::Nodes& n = c.model.nodes;
+    const model::IdIndex index(n.id);
+    std::vector<std::size_t> node_of(p.size(), SIZE_MAX);
+    for (std::size_t i = 0; i < p.size(); ++i)
+        if (auto k = index.find(p.node[i])) node_of[i] = *k;
+    const double tol = 1e-9 * model_size(n, node_of);
+    const bool axisymmetric = sph.idim.value == model::Dimension::Axisymmetric;
+    Group off_plane, negative_x;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const std::size_t k = node_of[i];
+        if (k == SIZE_MAX) continue;  // REF001
+        if (std::abs(n.z[k]) > tol) off_plane.add(i);
+        if (axisymmetric && n.x[k] < -tol) negative_x.add(i);
+    }
+    const int idim = static_cast<int>(sph.idim.value);
+    // The node's coordinate field, found by scanning the *NODE lines (once per finding).
+    auto node_note = [&](std::size_t i, std::string_view field, double value) {
+        const long long id = n.id[node_of[i]];
+        grammar::Span at;
+        auto lines = c.node_lines({id});
+        if (!lines[id].empty()) at = lines[id].front();
+        if (auto index = line_index(c.deck, "*NODE", at)) at = field_span(c.deck, *index, "*NODE", field, at);
+        return diag::Note{at, fmt::format("node {} has {} = {:g}", id, field == "Z" ? "z" : "x", value)};
+    };
+    if (off_plane.count) {
+        const std::size_t i = off_plane.first.front();
+        auto& d = c.report("SPH110", c.particle_span(i),
+                           fmt::format("{} particle{} off the z = 0 plane with IDIM {}: {}; expected z = 0",
+                                       off_plane.count, off_plane.count == 1 ? "" : "s", idim, off_plane.ids(p)));
+        d.notes.push_back(node_note(i, "Z", n.z[node_of[i]]));
+        d.notes.push_back({sph.idim.span, fmt::format("IDIM {} here", idim)});
+    }
+    if (negative_x.count) {
+        const std::size_t i = negative_x.first.front();
+        auto& d = c.report("SPH111", c.particle_span(i),
+                           fmt::format("{} particle{} at x < 0 with IDIM -2 (x is the radius): {}; expected x >= 0",
+                                       negative_x.count, negative_x.count == 1 ? "" : "s", negative_x.ids(p)));
+        d.notes.push_back(node_note(i, "X", n.x[node_of[i]]));
+        d.notes.push_back({sph.idim.span, "IDIM -2 here"});
+    }
+}
+
+// SPH112: MASS 0 (or blank) is a massless particle: an error, grouped per part. A negative MASS
+// (or *ELEMENT_SPH_VOLUME) is a volume, the mass following from the density: said once per part
+// as information, since a volume where a mass was meant is a common unit slip.
+void check_mass(RuleContext& c) {
+    const model::Particles& p = c.model.particles;
+    std::map<long long, Group> zero, volume;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (p.mass[i] == 0.0) zero[p.part[i]].add(i);
+        else if (p.mass[i] < 0.0 && !p.volume[i]) volume[p.part[i]].add(i);
+    }
+    auto mass_span = [&](std::size_t i) {
+        return field_span(c.deck, p.line[i], "*ELEMENT_SPH", "MASS", c.particle_span(i));
+    };
+    for (const auto& [part, g] : zero) {
+        const std::size_t i = g.first.front();
+        std::string who = g.count == 1 ? fmt::format("particle {} of part {}", p.node[i], part)
+                                       : fmt::format("{} particles of part {} ({})", g.count, part, g.ids(p));
+        c.report("SPH112", diag::Severity::Error, mass_span(i),
+                 fmt::format("MASS 0 or blank on {}; expected a mass > 0, or a volume < 0", who));
+    }
+    for (const auto& [part, g] : volume) {
+        const std::size_t i = g.first.front();
+        std::string who = g.count == 1 ? fmt::format("particle {} of part {}", p.node[i], part)
+                                       : fmt::format("{} particles of part {} ({})", g.count, part, g.ids(p));
+        c.report("SPH112", diag::Severity::Info, mass_span(i),
+                 fmt::format("negative MASS {:g} on {} is read as a volume: the mass follows from the "
+                             "material density",
+                             p.mass[i], who));
+    }
+}
+
+}  // namespace
+
+void check_sph_particles(RuleContext& c) {
+    check_planar(c);
+    check_mass(c);
+}
+
+}  // namespace sphdeck::lint

@@ -1,0 +1,138 @@
+// SPH090, SPH113-SPH115, SPH118: rules on the preview's geometry (spacing, h0, neighbour counts).
+// The preview is computed once per check, here; rules never measure geometry themselves.
+#include <cmath>
+#include <fmt/format.h>
+
+#include "lint/rules.hpp"
+#include "preproc/preview.hpp"
+
+namespace sphdeck::lint {
+namespace {
+
+using preproc::PartPreview;
+using preproc::Preview;
+
+constexpr std::size_t max_listed = 20;  // findings per rule and part: the rest are the same mistake
+
+// The first particle of part q (model order), or the size when none.
+std::size_t first_particle(const Preview& p, std::size_t q) {
+    for (std::size_t i = 0; i < p.particles.part.size(); ++i)
+        if (p.particles.part[i] == q && p.particles.located[i]) return i;
+    return p.particles.part.size();
+}
+
+// SPH090: MEMORY against the largest estimated neighbour count.
+void check_memory(RuleContext& c, const Preview& p) {
+    const auto& memory = c.model.controls.sph.memory;
+    const PartPreview* worst = nullptr;
+    for (const PartPreview& part : p.parts)
+        if (!worst || part.neighbours.max > worst->neighbours.max) worst = &part;
+    if (!worst || memory.value == 0) return;
+    const auto largest = static_cast<long long>(worst->neighbours.max);
+    const long long cap = std::llabs(memory.value);
+    if (largest <= cap) return;
+    if (memory.value < 0)
+        c.report("SPH090", memory.span,
+                 fmt::format("MEMORY {} fixes the neighbour arrays at {} per particle, but particles of part {} have "
+                             "up to {} neighbours within {:.4g}",
+                             memory.value, cap, worst->part, largest, worst->support));
+    else
+        c.report("SPH090", diag::Severity::Info, memory.span,
+                 fmt::format("MEMORY {} is below the {} neighbours estimated for part {} (within {:.4g}); the "
+                             "arrays will grow during the run",
+                             memory.value, largest, worst->part, worst->support));
+}
+
+// SPH113: particle mass against rho * spacing^d.
+void check_mass_spacing(RuleContext& c, const Preview& p) {
+    if (c.model.controls.sph.idim.value == model::Dimension::Axisymmetric) return;  // mass per radian: not checked
+    for (std::size_t q = 0; q < p.parts.size(); ++q) {
+        const PartPreview& part = p.parts[q];
+        if (part.density <= 0 || part.spacing <= 0 || part.mass_median <= 0) continue;
+        const double expected = part.density * std::pow(part.spacing, p.dimension);
+        const double ratio = part.mass_median / expected;
+        if (ratio <= 2.0 && ratio >= 0.5) continue;
+        // At the first particle whose mass is the median one.
+        std::size_t at = p.particles.part.size();
+        double closest = 0;
+        for (std::size_t i = 0; i < p.particles.part.size(); ++i) {
+            if (p.particles.part[i] != q) continue;
+            const double off = std::abs(p.particles.mass[i] - part.mass_median);
+            if (at == p.particles.part.size() || off < closest) at = i, closest = off;
+        }
+        c.report("SPH113", c.particle_span(at),
+                 fmt::format("particle mass {:.4g} is {:.3g} times rho * spacing^{} = {:.4g} (part {}: RO {:.4g}, "
+                             "spacing {:.4g}); expected within a factor 2, a unit mistake?",
+                             part.mass_median, ratio, p.dimension, expected, part.part, part.density, part.spacing));
+    }
+}
+
+// SPH114: particles at the same position.
+void check_coincident(RuleContext& c, const Preview& p) {
+    const auto& ids = c.model.particles.node;
+    for (std::size_t k = 0; k < p.coincident.size() && k < max_listed; ++k) {
+        const auto [a, b] = p.coincident[k];
+        std::string total = k == 0 && p.coincident.size() > 1 ? fmt::format(" ({} pairs in all)", p.coincident.size()) : "";
+        c.report("SPH114", c.particle_span(b),
+                 fmt::format("particle {} is at the same position as particle {} ({:.6g}, {:.6g}, {:.6g}){}", ids[b],
+                             ids[a], p.particles.x[b], p.particles.y[b], p.particles.z[b], total))
+            .notes.push_back({c.particle_span(a), fmt::format("particle {} is here", ids[a])});
+    }
+}
+
+// SPH115: a particle far from the rest of its part.
+void check_stray(RuleContext& c, const Preview& p) {
+    const auto& pp = p.particles;
+    for (std::size_t q = 0; q < p.parts.size(); ++q) {
+        const PartPreview& part = p.parts[q];
+        if (part.spacing <= 0) continue;
+        const bool sets_h0 = !part.sphini_given && part.ini != model::IniMode::FromMass;
+        std::size_t listed = 0;
+        for (std::size_t i = 0; i < pp.part.size() && listed < max_listed; ++i) {
+            if (pp.part[i] != q || !pp.located[i] || !(pp.nn_distance[i] > 3.0 * part.spacing)) continue;
+            ++listed;
+            std::string effect = sets_h0 && pp.nn_distance[i] == part.nn_distance.max
+                                     ? fmt::format("; it sets h0 = {:.4g} for the whole part", part.h0)
+                                     : "";
+            c.report("SPH115", c.particle_span(i),
+                     fmt::format("particle {} is {:.4g} from its nearest particle of part {}, {:.3g} times the part's "
+                                 "median spacing {:.4g}{}",
+                                 c.model.particles.node[i], pp.nn_distance[i], part.part,
+                                 pp.nn_distance[i] / part.spacing, part.spacing, effect));
+        }
+    }
+}
+
+// SPH118: too few neighbours per particle (the part's median: corners and free surfaces aside).
+void check_few_neighbours(RuleContext& c, const Preview& p) {
+    const double needed = p.dimension == 2 ? 8 : 20;
+    for (std::size_t q = 0; q < p.parts.size(); ++q) {
+        const PartPreview& part = p.parts[q];
+        if (part.h0 <= 0 || part.particles < 2 || part.neighbours.median >= needed) continue;
+        grammar::Span where;
+        const model::Part* def = c.model.part(std::to_string(part.part));
+        const model::Section* section = def ? c.model.section(def->section.value) : nullptr;
+        if (section && section->sph) where = part.sphini_given ? section->sphini.span : section->cslh.span;
+        else if (def) where = def->span;
+        else if (std::size_t i = first_particle(p, q); i < p.particles.part.size()) where = c.particle_span(i);
+        c.report("SPH118", where,
+                 fmt::format("part {}: about {:.3g} neighbours per particle (median) within the kernel support "
+                             "{:.4g} (h0 {:.4g}, spacing {:.4g}); at least {} are needed in {}D",
+                             part.part, part.neighbours.median, part.support, part.h0, part.spacing, needed,
+                             p.dimension));
+    }
+}
+
+}  // namespace
+
+void check_preview(RuleContext& c) {
+    if (c.model.particles.size() == 0) return;
+    const Preview p = preproc::compute_preview(c.model);
+    check_memory(c, p);
+    check_mass_spacing(c, p);
+    check_coincident(c, p);
+    check_stray(c, p);
+    check_few_neighbours(c, p);
+}
+
+}  // namespace sphdeck::lint

@@ -1,0 +1,258 @@
+// RadiossBuilder: dispatch, shared helpers, and the mesh side of a Radioss deck (/BEGIN, /NODE,
+// /PART, solid elements, node groups, skews and frames, /ANALY, /DEF_SOLID).
+#include <fmt/format.h>
+
+#include "grammar/value.hpp"
+#include "model/radioss_builder.hpp"
+
+namespace sphdeck::model {
+
+RadiossBuilder::RadiossBuilder(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, int version)
+    : deck_(deck), out_(out) {
+    facts_.version = version;
+    model_.controls.sph.memory = Setting<long long>{0};
+    model_.controls.sph.idim = Setting<Dimension>{Dimension::ThreeD};
+}
+
+void RadiossBuilder::report(const char* code, diag::Severity s, std::string message, grammar::Span span) {
+    out_.push_back(diag::Diagnostic{code, s, std::move(message), span, {}});
+}
+
+const RadiossValue* RadiossBuilder::value(std::string_view name) const {
+    for (const auto& card : cards_)
+        for (const RadiossValue& v : card)
+            if (v.spec && v.spec->name == name) return &v;
+    return nullptr;
+}
+
+template <typename T>
+StarterValue<T> RadiossBuilder::starter(std::string_view name, const RadiossBlock& b) const {
+    StarterValue<T> s;
+    s.span = b.block->span;
+    if (const RadiossValue* v = value(name)) {
+        s.span = v->span;
+        s.explicit_value = v->explicit_value;
+        if (v->valid) s.written = static_cast<T>(v->number);
+    }
+    s.value = s.written;
+    return s;
+}
+template StarterValue<double> RadiossBuilder::starter<double>(std::string_view, const RadiossBlock&) const;
+template StarterValue<long long> RadiossBuilder::starter<long long>(std::string_view, const RadiossBlock&) const;
+
+StarterValue<std::string> RadiossBuilder::text(std::string_view name, const RadiossBlock& b) const {
+    StarterValue<std::string> s;
+    s.span = b.block->span;
+    if (const RadiossValue* v = value(name)) {
+        s.span = v->span;
+        s.explicit_value = v->explicit_value;
+        s.written = std::string(v->text);
+    }
+    s.value = s.written;
+    return s;
+}
+
+// The id in path segment `arg` (the part of /SPHCEL/part_ID, ...); reported when missing or bad.
+std::optional<long long> RadiossBuilder::header_id(const RadiossBlock& b, std::size_t arg, std::string_view what) {
+    if (arg >= b.args.size()) {
+        report("DK008", diag::Severity::Error, fmt::format("{} needs {} in its header", b.spec->name, what),
+               b.block->span);
+        return std::nullopt;
+    }
+    grammar::IntegerValue v = grammar::parse_integer(b.args[arg]);
+    if (v.status != grammar::NumberStatus::Ok) {
+        report("DK002", diag::Severity::Error,
+               fmt::format("'{}' in the header of {} is not an integer {}", b.written[arg], b.spec->name, what),
+               b.arg_spans[arg]);
+        return std::nullopt;
+    }
+    return v.value;
+}
+
+void RadiossBuilder::begin(const RadiossBlock& b) {
+    cards_.assign(b.spec->format_for(b.version).cards.size(), {});
+    rows_.clear();
+    pending_members_.clear();
+    pending_tetra10_.clear();
+    block_id_.reset();
+    const std::string_view name = b.spec->name;
+    // Ids of keywords with repeated lines are needed while the lines are read.
+    if (name == "/SPHCEL") block_id_ = header_id(b, 0, "a part id");
+    else if (name == "/BRICK" || name == "/TETRA4" || name == "/TETRA10" || name == "/PENTA6")
+        block_id_ = header_id(b, 0, "a part id");
+    else if (name == "/NODE" && model_.nodes.id.capacity() < model_.nodes.id.size() + b.block->line_count) {
+        const std::size_t n = model_.nodes.id.size() + b.block->line_count;
+        model_.nodes.id.reserve(n), model_.nodes.x.reserve(n), model_.nodes.y.reserve(n), model_.nodes.z.reserve(n);
+    }
+}
+
+void RadiossBuilder::card(const RadiossBlock& b, std::size_t index, std::uint32_t line,
+                          const std::vector<RadiossValue>& values) {
+    const std::string_view name = b.spec->name;
+    if (name == "/NODE") return add_node(values);
+    if (name == "/SPHCEL") return add_particle(b, line, values);
+    if (name == "/BRICK" || name == "/TETRA4" || name == "/TETRA10" || name == "/PENTA6")
+        return add_element(b, index, line, values);
+    if (name == "/GRNOD/NODE" || name == "/GRNOD/PART") return add_group_members(values);
+    const auto& cards = b.spec->format_for(b.version).cards;
+    if (cards[index].repeat == grammar::radioss::Repeat::Repeated) rows_.push_back(values);
+    else cards_[index] = values;
+}
+
+void RadiossBuilder::end(const RadiossBlock& b) {
+    const std::string_view n = b.spec->name;
+    if (n == "/BEGIN") end_begin(b);
+    else if (n == "/PART") end_part(b);
+    else if (n == "/FRAME/FIX" || n == "/SKEW/FIX" || n == "/FRAME/MOV" || n == "/SKEW/MOV" || n == "/FRAME" ||
+             n == "/SKEW")
+        end_frame(b);
+    else if (n.rfind("/GRNOD", 0) == 0) end_group(b);
+    else if (n == "/PROP/SPH") end_sph_property(b);
+    else if (n == "/PROP/TYPE14") end_solid_property(b, 14);
+    else if (n == "/PROP/TYPE6") end_solid_property(b, 6);
+    else if (n == "/PROP") end_other_property(b);
+    else if (n == "/MAT") end_material(b);
+    else if (n == "/EOS/POLYNOMIAL") end_eos(b);
+    else if (n == "/SPHGLO") end_sphglo(b);
+    else if (n == "/SPHBCS") end_sphbcs(b);
+    else if (n == "/SPH/INOUT") end_inout(b);
+    else if (n == "/SPH/RESERVE") end_reserve(b);
+    else if (n.rfind("/DT", 0) == 0) end_dt(b);
+    else if (n == "/ANALY") {
+        StarterValue<long long> v = starter<long long>("N2D3D", b);
+        facts_.analysis = v.value;
+        facts_.analysis_span = v.span;
+    } else if (n == "/DEF_SOLID") {
+        facts_.def_isolid = starter<long long>("Isolid", b).value;
+        facts_.def_iframe = starter<long long>("Iframe", b).value;
+    }
+}
+
+void RadiossBuilder::end_begin(const RadiossBlock&) {
+    facts_.begin_present = true;
+    if (const RadiossValue* v = value("Runname")) facts_.run_name = std::string(v->text);
+    if (const RadiossValue* v = value("Invers")) facts_.version_span = v->span;
+    const char* input[] = {"Input_mass", "Input_length", "Input_time"};
+    const char* work[] = {"Work_mass", "Work_length", "Work_time"};
+    for (int k = 0; k < 3; ++k) {
+        if (const RadiossValue* v = value(input[k]); v && v->explicit_value) facts_.input_units[k] = v->text;
+        if (const RadiossValue* v = value(work[k]); v && v->explicit_value) facts_.work_units[k] = v->text;
+    }
+}
+
+void RadiossBuilder::add_node(const std::vector<RadiossValue>& v) {
+    if (v.size() < 4 || !v[0].valid) return;
+    Nodes& n = model_.nodes;
+    n.id.push_back(static_cast<long long>(v[0].number));
+    n.x.push_back(v[1].number);
+    n.y.push_back(v[2].number);
+    n.z.push_back(v[3].number);
+}
+
+void RadiossBuilder::end_part(const RadiossBlock& b) {
+    auto id = header_id(b, 0, "a part id");
+    if (!id) return;
+    Part p;
+    p.id = std::to_string(*id);
+    p.heading = b.title;
+    p.span = b.arg_spans[0];
+    auto ref = [&](std::string_view field) {
+        StarterValue<long long> v = starter<long long>(field, b);
+        const bool given = v.explicit_value && v.written != 0;
+        return Setting<Id>{given ? std::to_string(v.written) : Id{}, given, v.span};
+    };
+    p.section = ref("prop_ID");
+    p.material = ref("mat_ID");
+    p.eos = Setting<Id>{Id{}, false, b.block->span};
+    model_.parts.push_back(std::move(p));
+}
+
+void RadiossBuilder::add_element(const RadiossBlock& b, std::size_t card, std::uint32_t line,
+                                 const std::vector<RadiossValue>& v) {
+    if (!block_id_) return;
+    const std::string_view name = b.spec->name;
+    RadiossSolids& s = name == "/BRICK" ? facts_.bricks : name == "/TETRA4" ? facts_.tetra4
+                       : name == "/TETRA10"                                  ? facts_.tetra10
+                                                                             : facts_.penta6;
+    if (name == "/TETRA10") {
+        if (card == 0) {  // the id line; its nodes follow on the next line
+            pending_tetra10_.assign(1, v.empty() || !v[0].valid ? 0 : static_cast<long long>(v[0].number));
+            pending_tetra10_line_ = line;
+            return;
+        }
+        if (pending_tetra10_.empty()) return;
+        s.id.push_back(pending_tetra10_.front());
+        s.line.push_back(pending_tetra10_line_);
+        pending_tetra10_.clear();
+        for (std::size_t k = 0; k < 10; ++k)
+            s.nodes.push_back(k < v.size() && v[k].valid ? static_cast<long long>(v[k].number) : 0);
+        s.part.push_back(*block_id_);
+        return;
+    }
+    if (v.empty() || !v[0].valid) return;
+    s.id.push_back(static_cast<long long>(v[0].number));
+    s.part.push_back(*block_id_);
+    s.line.push_back(line);
+    for (int k = 1; k <= s.nodes_per_element; ++k)
+        s.nodes.push_back(static_cast<std::size_t>(k) < v.size() && v[k].valid ? static_cast<long long>(v[k].number)
+                                                                                 : 0);
+}
+
+void RadiossBuilder::add_group_members(const std::vector<RadiossValue>& v) {
+    for (const RadiossValue& x : v)
+        if (x.valid && x.number != 0) pending_members_.push_back(static_cast<long long>(x.number));
+}
+
+void RadiossBuilder::end_group(const RadiossBlock& b) {
+    // The id is the last segment: /GRNOD/NODE/5, /GRNOD/BOX/7.
+    if (b.args.empty()) return;
+    auto id = header_id(b, b.args.size() - 1, "a group id");
+    if (!id) return;
+    RadiossNodeGroup g;
+    g.id = *id;
+    g.keyword = b.block->keyword;
+    g.span = b.block->span;
+    if (b.spec->name == "/GRNOD/NODE") {
+        g.resolved = true;
+        model_.node_sets.push_back(IdSet{std::to_string(*id), b.block->span, pending_members_});
+    } else if (b.spec->name == "/GRNOD/PART") {
+        g.resolved = true;
+        part_groups_.emplace_back(*id, pending_members_);
+    }
+    facts_.node_groups.push_back(std::move(g));
+}
+
+void RadiossBuilder::end_frame(const RadiossBlock& b) {
+    if (b.args.empty()) return;
+    auto id = header_id(b, b.args.size() - 1, "an id");
+    if (!id) return;
+    RadiossFrame f;
+    f.id = *id;
+    f.skew = b.block->keyword.rfind("/SKEW", 0) == 0;
+    f.keyword = b.block->keyword;
+    f.span = b.block->span;
+    const std::string_view name = b.spec->name;
+    f.moving = name != "/FRAME/FIX" && name != "/SKEW/FIX";
+    if (!f.moving) {
+        auto get = [&](std::string_view field, double fallback) {
+            const RadiossValue* v = value(field);
+            return v && v->valid ? v->number : fallback;
+        };
+        f.origin = {get("Ox", 0), get("Oy", 0), get("Oz", 0)};
+        std::array<double, 3> x{get("X1", 0), get("Y1", 0), get("Z1", 0)}, y{get("X2", 0), get("Y2", 0), get("Z2", 0)};
+        if (x == std::array<double, 3>{0, 0, 0}) x = {1, 0, 0};
+        if (y == std::array<double, 3>{0, 0, 0}) y = {0, 1, 0};
+        f.axes[0] = x, f.axes[1] = y;  // orthonormalised in resolve_frames
+        f.geometry = true;
+    } else if (name == "/FRAME/MOV" || name == "/SKEW/MOV") {
+        for (int k = 0; k < 3; ++k) {
+            const RadiossValue* v = value(fmt::format("node_ID{}", k + 1));
+            f.nodes[k] = v && v->valid ? static_cast<long long>(v->number) : 0;
+        }
+        const RadiossValue* dir = value("Dir");
+        if (dir && dir->explicit_value && dir->text != "X" && dir->text != "x") f.nodes = {0, 0, 0};  // not resolved
+    }
+    facts_.frames.push_back(std::move(f));
+}
+
+}  // namespace sphdeck::model

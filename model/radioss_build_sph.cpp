@@ -1,0 +1,281 @@
+// RadiossBuilder: properties, materials, EOS and the SPH cards, with the defaults the starter
+// applies (radioss-format.md §5: hm_read_prop34.F, hm_read_sphglo.F, hm_read_spcnd.F, ...).
+#include <cctype>
+#include <fmt/format.h>
+#include <map>
+
+#include "grammar/value.hpp"
+#include "model/radioss_builder.hpp"
+
+namespace sphdeck::model {
+
+namespace {
+
+template <typename T>
+void zero_means(StarterValue<T>& v, T fallback) {
+    if (v.value == T{}) v.value = fallback;
+}
+
+Setting<double> setting_of(const StarterValue<double>& v) { return {v.value, v.explicit_value, v.span}; }
+
+}  // namespace
+
+int radioss_law(std::string_view name) {
+    if (name.rfind("LAW", 0) == 0) {
+        int law = 0;
+        for (char c : name.substr(3)) {
+            if (c < '0' || c > '9') return -1;
+            law = law * 10 + (c - '0');
+        }
+        return name.size() > 3 ? law : -1;
+    }
+    static const std::map<std::string_view, int> names = {
+        {"VOID", 0},       {"ELAST", 1},      {"PLAS_JOHNS", 2}, {"PLAS_ZERIL", 2}, {"HYDPLA", 3},
+        {"HYD_JCOOK", 4},  {"JWL", 5},        {"HYD_VISC", 6},   {"HYDRO", 6},      {"K-EPS", 6},
+        {"DPRAG1", 10},    {"BOUND", 11},     {"3D_COMP", 12},   {"RIGID", 13},     {"COMPSO", 14},
+        {"DPRAG", 21},     {"DAMA", 22},      {"PLAS_DAM", 23},  {"CONC", 24},      {"COMPSH", 25},
+        {"PLAS_BRIT", 27}, {"HONEYCOMB", 28}, {"HILL", 32},      {"VISC_FOAM", 33}, {"BOLTZMAN", 34},
+        {"FOAM_PLAS", 35}, {"PLAS_TAB", 36},  {"VISC_TAB", 38},  {"KELVINMAX", 40}, {"OGDEN", 42},
+        {"COWPER", 44},    {"STEINB", 49},    {"FOAM_TAB", 70}};
+    auto it = names.find(name);
+    return it == names.end() ? -1 : it->second;
+}
+
+void RadiossBuilder::add_particle(const RadiossBlock&, std::uint32_t line, const std::vector<RadiossValue>& v) {
+    if (!block_id_ || v.size() < 3 || !v[0].valid) return;
+    Particles& p = model_.particles;
+    p.node.push_back(static_cast<long long>(v[0].number));
+    p.part.push_back(*block_id_);
+    p.mass.push_back(v[2].valid ? v[2].number : 0.0);  // resolved in finish: the property mp may apply
+    p.volume.push_back(0);
+    p.line.push_back(line);
+    facts_.cells.type.push_back(static_cast<std::uint8_t>(v[1].valid && v[1].number >= 0 && v[1].number < 256
+                                                              ? v[1].number
+                                                              : 255));
+    facts_.cells.mass.push_back(v[2].valid ? v[2].number : 0.0);
+    facts_.cells.from_property.push_back(0);
+}
+
+void RadiossBuilder::end_sph_property(const RadiossBlock& b) {
+    auto id = header_id(b, 0, "a property id");
+    if (!id) return;
+    RadiossSphProperty p;
+    p.id = *id;
+    p.keyword = b.block->keyword.substr(0, b.block->keyword.rfind('/'));
+    p.title = b.title;
+    p.span = b.block->span;
+    p.format = b.format;
+    p.mp = starter<double>("mp", b);
+    if (p.mp.value <= 0) p.mp.value = 1.0;  // warning 138: mp set to 1
+    p.qa = starter<double>("qa", b);
+    zero_means(p.qa, 2.0);
+    p.qb = starter<double>("qb", b);
+    zero_means(p.qb, 1.0);
+    p.alpha_cs = starter<double>("alpha_cs", b);
+    p.skew_id = starter<long long>("skew_ID", b);
+    p.h_1d = starter<long long>("h_1D", b);
+    p.order = starter<long long>("Order", b);  // blank reads as 0 (CFG DEFAULT ORDER=0)
+    p.h = starter<double>("h", b);
+    p.xi_stab = starter<double>("Xi_Stab", b);
+    p.hmin = starter<double>("hmin", b);
+    zero_means(p.hmin, 0.2);
+    p.hmax = starter<double>("hmax", b);
+    zero_means(p.hmax, 2.0);
+    p.hcst = starter<double>("hcst", b);
+    zero_means(p.hcst, 1.2);
+    p.hmin_hmax_hcst_read = b.format >= 2026;
+
+    Section s;
+    s.id = std::to_string(*id);
+    s.keyword = p.keyword;
+    s.sph = true;
+    s.span = b.arg_spans.empty() ? b.block->span : b.arg_spans[0];
+    if (p.h.value > 0) s.sphini = setting_of(p.h);  // an explicit smoothing length, as SPHINI
+    model_.sections.push_back(std::move(s));
+    facts_.sph_properties.push_back(std::move(p));
+}
+
+void RadiossBuilder::end_solid_property(const RadiossBlock& b, int type) {
+    auto id = header_id(b, 0, "a property id");
+    if (!id) return;
+    RadiossSolidProperty p;
+    p.id = *id;
+    p.type = type;
+    p.keyword = b.block->keyword.substr(0, b.block->keyword.rfind('/'));
+    p.span = b.block->span;
+    p.isolid = starter<long long>("Isolid", b);
+    p.iframe = starter<long long>("Iframe", b);
+    p.ndir = starter<long long>("Ndir", b);
+    p.sph_part = starter<long long>("sphpartID", b);
+    const std::size_t sol2sph_card = type == 14 ? 3 : 5;
+    p.sol2sph_card = cards_.size() > sol2sph_card && !cards_[sol2sph_card].empty();
+    facts_.solid_properties.push_back(std::move(p));
+
+    Section s;
+    s.id = std::to_string(*id);
+    s.keyword = facts_.solid_properties.back().keyword;
+    s.span = b.arg_spans[0];
+    model_.sections.push_back(std::move(s));
+}
+
+// Any other /PROP/<type>/<id>: known by id, so parts that name it resolve.
+void RadiossBuilder::end_other_property(const RadiossBlock& b) {
+    if (b.args.size() < 2) return;
+    auto id = header_id(b, 1, "a property id");
+    if (!id) return;
+    Section s;
+    s.id = std::to_string(*id);
+    s.keyword = b.block->keyword.substr(0, b.block->keyword.rfind('/'));
+    s.span = b.arg_spans[1];
+    model_.sections.push_back(std::move(s));
+}
+
+void RadiossBuilder::end_material(const RadiossBlock& b) {
+    if (b.args.size() < 2) {
+        report("DK008", diag::Severity::Error, "/MAT needs a law and a material id: /MAT/<law>/<mat_ID>",
+               b.block->span);
+        return;
+    }
+    auto id = header_id(b, 1, "a material id");
+    if (!id) return;
+    RadiossMaterial m;
+    m.id = *id;
+    m.law = radioss_law(b.args[0]);
+    m.keyword = "/MAT/" + b.args[0];
+    m.span = b.block->span;
+    m.law_span = b.arg_spans[0];
+    StarterValue<double> rho = starter<double>("RHO_I", b);
+    m.density = rho.value;
+    auto row = [&](std::size_t r, std::size_t k) {
+        return r < rows_.size() && k < rows_[r].size() && rows_[r][k].valid ? rows_[r][k].number : 0.0;
+    };
+    switch (m.law) {
+        case 1: case 2: case 3: case 4: case 21: case 22: case 23: case 24: case 27: case 32: case 36: case 44:
+        case 49:
+            m.young = row(0, 0), m.poisson = row(0, 1);
+            if (m.law == 3 && rows_.size() >= 5) m.bulk = row(2, 1);  // the long LAW3 form carries C0-C5
+            break;
+        case 6:
+            if (rows_.size() >= 4) m.bulk = row(1, 1);  // Nu Pmin; C0 C1 C2 C3; ...
+            break;
+        default: break;
+    }
+    Material mat;
+    mat.id = std::to_string(*id);
+    mat.keyword = m.keyword;
+    mat.span = b.arg_spans[1];
+    mat.density = setting_of(rho);
+    model_.materials.push_back(std::move(mat));
+    facts_.materials.push_back(std::move(m));
+}
+
+void RadiossBuilder::end_eos(const RadiossBlock& b) {
+    auto id = header_id(b, 0, "a material id");
+    if (!id) return;
+    RadiossEos e;
+    e.material = *id;
+    e.keyword = "/EOS/POLYNOMIAL";
+    e.span = b.block->span;
+    const char* names[] = {"C0", "C1", "C2", "C3", "C4", "C5"};
+    for (int k = 0; k < 6; ++k) e.c[k] = starter<double>(names[k], b).value;
+    e.e0 = starter<double>("E0", b).value;
+    e.psh = starter<double>("Psh", b).value;
+    e.rho0 = starter<double>("RHO_0", b).value;
+    Eos eos;
+    eos.id = std::to_string(*id);
+    eos.keyword = e.keyword;
+    eos.span = b.arg_spans[0];
+    model_.equations_of_state.push_back(std::move(eos));
+    facts_.eos.push_back(std::move(e));
+}
+
+// §5.4: only the first /SPHGLO counts; Alpha_sort 0 → 0.25; Nneigh at least 120; Lneigh 0 →
+// Nneigh; Nneigh at least Lneigh. Without one: Lneigh 120, Nneigh 120 (Invers < 130) or 240.
+void RadiossBuilder::end_sphglo(const RadiossBlock& b) {
+    RadiossSphGlobal& g = facts_.sph_global;
+    if (g.present) {
+        g.ignored.push_back(b.block->span);
+        return;
+    }
+    g.present = true;
+    g.span = b.block->span;
+    g.alpha_sort = starter<double>("Alpha_sort", b);
+    zero_means(g.alpha_sort, 0.25);
+    g.maxsph = starter<long long>("Maxsph", b);
+    g.lneigh = starter<long long>("Lneigh", b);
+    g.nneigh = starter<long long>("Nneigh", b);
+    g.isol2sph = starter<long long>("Isol2sph", b);
+    g.nneigh.value = std::max<long long>(g.nneigh.value, 120);
+    if (g.lneigh.value == 0) g.lneigh.value = g.nneigh.value;
+    g.nneigh.value = std::max(g.nneigh.value, g.lneigh.value);
+}
+
+void RadiossBuilder::end_sphbcs(const RadiossBlock& b) {
+    if (b.args.empty()) {
+        report("DK008", diag::Severity::Error, "/SPHBCS needs a type and an id: /SPHBCS/SLIDE|TIED/<id>", b.block->span);
+        return;
+    }
+    RadiossSymmetry s;
+    s.span = b.block->span;
+    s.type_text = b.written[0];
+    s.type_span = b.arg_spans[0];
+    if (b.args.size() >= 2) {
+        auto id = header_id(b, 1, "an id");
+        if (!id) return;
+        s.id = *id;
+    }
+    // The starter compares the first five letters with SLIDE and the first four with TIED.
+    const std::string& t = b.args[0];
+    s.kind = t.rfind("SLIDE", 0) == 0 ? SymmetryKind::Slide : t.rfind("TIED", 0) == 0 ? SymmetryKind::Tied
+                                                                                       : SymmetryKind::Invalid;
+    s.dir = text("Dir", b);
+    if (!s.dir.explicit_value) s.dir.value = "X";
+    const char axis = s.dir.value.empty() ? 'X' : static_cast<char>(std::toupper(static_cast<unsigned char>(s.dir.value[0])));
+    s.axis = s.dir.value.size() == 1 && axis >= 'X' && axis <= 'Z' ? axis - 'X' : -1;
+    s.frame_id = starter<long long>("frame_ID", b);
+    s.grnod_id = starter<long long>("grnod_ID", b);
+    s.ilev = starter<long long>("Ilev", b);
+    facts_.symmetries.push_back(std::move(s));
+}
+
+void RadiossBuilder::end_inout(const RadiossBlock& b) {
+    auto id = header_id(b, 0, "an id");
+    if (!id) return;
+    RadiossInout io;
+    io.id = *id;
+    io.span = b.block->span;
+    io.itype = starter<long long>("Itype", b);
+    io.part = starter<long long>("part_ID", b);
+    io.surface = starter<long long>("surf_ID", b);
+    facts_.inouts.push_back(std::move(io));
+}
+
+void RadiossBuilder::end_reserve(const RadiossBlock& b) {
+    auto id = header_id(b, 0, "a part id");
+    if (!id) return;
+    facts_.reserves.push_back(RadiossReserve{*id, b.block->span, starter<long long>("Np", b)});
+}
+
+// Engine /DT cards (§5.7): /DT/SPHCEL/<Keyword3>, /DT/NODA/<Keyword3>[/Iflag], /DT/BRICK/..., /DT.
+void RadiossBuilder::end_dt(const RadiossBlock& b) {
+    facts_.engine_deck = true;
+    RadiossDt d;
+    const std::string& k = b.block->keyword;
+    d.kind = b.spec->name == "/DT/SPHCEL" ? DtKind::SphCell
+             : b.spec->name == "/DT/NODA"  ? DtKind::Nodal
+             : b.spec->name == "/DT/BRICK" ? DtKind::Brick
+             : b.args.empty()              ? DtKind::Global
+                                           : DtKind::Other;
+    d.keyword = k;
+    d.span = b.block->span;
+    if (!b.args.empty() && d.kind != DtKind::Global && d.kind != DtKind::Other) d.keyword3 = b.args[0];
+    if (b.args.size() >= 2) {
+        grammar::IntegerValue flag = grammar::parse_integer(b.args[1]);
+        if (flag.status == grammar::NumberStatus::Ok) d.iflag = flag.value;
+    }
+    d.dtsca = starter<double>("DTsca", b);
+    d.dtmin = starter<double>("DTmin", b);
+    facts_.time_steps.push_back(std::move(d));
+}
+
+}  // namespace sphdeck::model

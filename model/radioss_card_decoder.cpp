@@ -1,0 +1,210 @@
+#include "model/radioss_card_decoder.hpp"
+
+#include <cstring>
+#include <fmt/format.h>
+
+#include "grammar/fields.hpp"
+#include "grammar/value.hpp"
+
+namespace sphdeck::model {
+
+using grammar::NumberStatus;
+using grammar::radioss::Cell;
+
+namespace {
+
+std::string shown(std::string_view text) {
+    constexpr std::size_t limit = 40;
+    return text.size() > limit ? std::string(text.substr(0, limit)) + "..." : std::string(text);
+}
+
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+std::string_view trim(std::string_view s, std::size_t* offset = nullptr) {
+    std::size_t b = 0, e = s.size();
+    while (b < e && is_space(s[b])) ++b;
+    while (e > b && is_space(s[e - 1])) --e;
+    if (offset) *offset = b;
+    return s.substr(b, e - b);
+}
+
+bool numeric(Cell c) { return c == Cell::Int || c == Cell::Real; }
+
+// A chunk past the card's last field the starter accepts silently: blank or a zero
+// (meci_data_reader.cpp walks the rest of the line in 10-character chunks).
+bool harmless_chunk(std::string_view chunk) {
+    std::string_view t = trim(chunk);
+    if (t.empty()) return true;
+    grammar::RealValue v = grammar::parse_real(t);
+    return v.status == NumberStatus::Ok && v.value == 0.0;
+}
+
+grammar::Span columns(const grammar::CardLine& line, std::size_t begin, std::size_t end) {
+    return grammar::Span{line.file, line.line, static_cast<std::uint32_t>(begin + 1),
+                         static_cast<std::uint32_t>(std::max(end, begin + 1) + 1)};
+}
+
+}  // namespace
+
+void RadiossCardDecoder::report(const char* code, diag::Severity s, std::string message, grammar::Span span) {
+    out_.push_back(diag::Diagnostic{code, s, std::move(message), span, {}});
+}
+
+void RadiossCardDecoder::decode(const grammar::CardLine& line, const grammar::radioss::CardSpec& card, int version,
+                                bool list_directed, std::vector<RadiossValue>& values, std::string_view newer) {
+    if (list_directed) decode_tokens(line, card, values);
+    else decode_fixed(line, card, version, values, newer);
+}
+
+void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const grammar::radioss::CardSpec& card,
+                                      int version, std::vector<RadiossValue>& values, std::string_view newer) {
+    const std::vector<grammar::FixedField> positions = grammar::radioss::layout(card, version);
+    const std::uint32_t end = positions.empty() ? 0 : positions.back().start + std::min(positions.back().width, 1u << 20);
+    const bool text_card = !card.fields.empty() && card.fields.front().cell == Cell::Line;
+    const std::string_view text = deck_.text(line);
+    const grammar::CutReport cut = grammar::cut_fields(text, line, positions, end, fields_, !text_card);
+
+    if (cut.has_tab && !text_card) {
+        const std::size_t tab = text.find('\t');
+        report("DK016", diag::Severity::Warning, "tab in a fixed-format card: columns become ambiguous",
+               columns(line, tab, tab + 1));
+    }
+    if (cut.free_format && cut.extra_values > 0) {
+        report("DK006", diag::Severity::Warning,
+               fmt::format("{} value(s) beyond the card's {} fields are ignored", cut.extra_values, card.fields.size()),
+               cut.beyond);
+    } else if (!cut.free_format && text.size() > end) {
+        // The starter warns for each 10-character chunk past the last field that is not blank
+        // or zero (reader messages 100213/100214); the first and last such chunks bound the span.
+        std::size_t first = std::string_view::npos, last = 0;
+        for (std::size_t at = end; at < text.size(); at += 10) {
+            std::string_view chunk = text.substr(at, 10);
+            if (harmless_chunk(chunk)) continue;
+            std::size_t lead = 0;
+            std::string_view t = trim(chunk, &lead);
+            if (first == std::string_view::npos) first = at + lead;
+            last = at + lead + t.size();
+        }
+        if (first != std::string_view::npos) {
+            std::string message = fmt::format("text after column {} is past the card's last field and is ignored", end);
+            if (!newer.empty()) message += fmt::format(" ({}; the deck's Invers is {})", newer, version);
+            report("DK006", diag::Severity::Warning, std::move(message), columns(line, first, last));
+        }
+    }
+
+    values.resize(card.fields.size());
+    for (std::size_t i = 0; i < card.fields.size(); ++i) {
+        RadiossValue& v = values[i];
+        v = RadiossValue{};
+        v.spec = &card.fields[i];
+        v.span = fields_[i].span;
+        if (v.spec->cell == Cell::Skip || v.spec->cell == Cell::Skip20) continue;
+        read_value(v, fields_[i].text, !cut.free_format);
+    }
+}
+
+// Engine data lines are read by Fortran list-directed input: tokens separated by blanks or commas.
+void RadiossCardDecoder::decode_tokens(const grammar::CardLine& line, const grammar::radioss::CardSpec& card,
+                                       std::vector<RadiossValue>& values) {
+    const std::string_view text = deck_.text(line);
+    values.assign(card.fields.size(), RadiossValue{});
+    std::size_t i = 0, at = 0;
+    for (std::size_t k = 0; k < card.fields.size(); ++k) {
+        values[k].spec = &card.fields[k];
+        values[k].span = columns(line, text.size(), text.size() + 1);
+    }
+    while (at < text.size() && i < card.fields.size()) {
+        while (at < text.size() && (is_space(text[at]) || text[at] == ',')) {
+            if (text[at] == ',' && at + 1 < text.size() && text[at + 1] == ',') ++i;  // ",," skips a value
+            ++at;
+        }
+        if (at >= text.size() || i >= card.fields.size()) break;
+        std::size_t stop = at;
+        while (stop < text.size() && !is_space(text[stop]) && text[stop] != ',') ++stop;
+        values[i].span = columns(line, at, stop);
+        read_value(values[i], text.substr(at, stop - at), false);
+        ++i;
+        at = stop;
+    }
+}
+
+void RadiossCardDecoder::read_value(RadiossValue& v, std::string_view field, bool fixed) {
+    std::size_t offset = 0;
+    std::string_view token = trim(field, &offset);
+    v.text = token;
+    v.explicit_value = !token.empty();
+    const std::uint32_t cell_columns = v.span.end_column - v.span.column;
+    if (v.explicit_value && fixed) {
+        v.span.column += static_cast<std::uint32_t>(offset);
+        v.span.end_column = v.span.column + static_cast<std::uint32_t>(token.size());
+    }
+    const Cell cell = v.spec->cell;
+    if (!numeric(cell)) {
+        v.valid = v.explicit_value;
+        return;
+    }
+    if (!v.explicit_value) return;
+    const bool integer = cell == Cell::Int;
+    // Two numbers in one fixed cell: the starter keeps the first and drops the rest (RAD025).
+    const std::size_t gap = token.find_first_of(" \t");
+    if (fixed && gap != std::string_view::npos) {
+        std::string_view head = token.substr(0, gap), rest = trim(token.substr(gap));
+        std::string_view second = rest.substr(0, rest.find_first_of(" \t"));
+        grammar::RealValue a = grammar::parse_real(head), b = grammar::parse_real(second);
+        if (a.status == NumberStatus::Ok && b.status == NumberStatus::Ok) {
+            report("RAD025", diag::Severity::Error,
+                   fmt::format("two numbers in the {}-column field {}: '{}'; the starter keeps {} and drops {}",
+                               cell_columns, v.spec->name, shown(token), head, second),
+                   v.span);
+            token = head;
+            v.text = head;
+        }
+    }
+    grammar::ValueToken t = grammar::classify_value(token, integer ? grammar::ValueShape::Integer : grammar::ValueShape::Real);
+    if (t.shape == grammar::ValueShape::Parameter) return;  // /PARAMETER values are not read: unknown, no finding
+    if (integer) {
+        grammar::IntegerValue n = grammar::to_integer(t);
+        if (n.status != NumberStatus::Ok) {
+            report("DK002", diag::Severity::Error,
+                   fmt::format("'{}' in integer field {} is not an integer", shown(token), v.spec->name), v.span);
+            return;
+        }
+        if (n.written_as_real)
+            report("DK004", diag::Severity::Warning,
+                   fmt::format("integer field {} written as real '{}'; read as {}", v.spec->name, shown(token), n.value),
+                   v.span);
+        v.number = static_cast<double>(n.value);
+    } else {
+        grammar::RealValue r = grammar::to_real(t);
+        if (r.status != NumberStatus::Ok) {
+            report("DK003", diag::Severity::Error,
+                   fmt::format("'{}' in real field {} is not a number", shown(token), v.spec->name), v.span);
+            return;
+        }
+        v.number = r.value;
+    }
+    v.valid = true;
+}
+
+grammar::Span radioss_field_span(const grammar::RawDeck& deck, std::uint32_t index,
+                                 const grammar::radioss::CardSpec& card, int version, std::size_t field) {
+    if (index >= deck.lines.size()) return {};
+    const grammar::CardLine& line = deck.lines[index];
+    const grammar::Span whole{line.file, line.line, 1, line.length + 1};
+    if (field >= card.fields.size()) return whole;
+    std::vector<grammar::Field> fields;
+    const auto positions = grammar::radioss::layout(card, version);
+    const std::string_view text = deck.text(line);
+    grammar::CutReport cut = grammar::cut_fields(text, line, positions, 1u << 30, fields);
+    if (field >= fields.size()) return whole;
+    grammar::Span s = fields[field].span;
+    std::size_t offset = 0;
+    std::string_view t = trim(fields[field].text, &offset);
+    if (!t.empty() && !cut.free_format) {
+        s.column += static_cast<std::uint32_t>(offset);
+        s.end_column = s.column + static_cast<std::uint32_t>(t.size());
+    }
+    return s;
+}
+
+}  // namespace sphdeck::model

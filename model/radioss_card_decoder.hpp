@@ -1,0 +1,52 @@
+// Decodes one Radioss card line (radioss-format.md §2): fixed cells of the deck's version, or
+// comma-separated free format; engine lines list-directed (blanks or commas). Values typed with
+// the shared value grammar; problems become diagnostics at the field (DK002-DK006, DK016,
+// RAD025 for two numbers glued in one fixed cell).
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include "diag/diagnostic.hpp"
+#include "grammar/radioss/cards.hpp"
+#include "grammar/raw_deck.hpp"
+
+namespace sphdeck::model {
+
+struct RadiossValue {
+    const grammar::radioss::FieldSpec* spec = nullptr;
+    grammar::Span span;           // the cell (the value itself when written)
+    std::string_view text;        // trimmed text as written
+    bool explicit_value = false;  // not blank
+    bool valid = false;           // a number was read (Int, Real), or text (Text, Line)
+    double number = 0.0;          // 0 when blank or invalid
+};
+
+class RadiossCardDecoder {
+public:
+    RadiossCardDecoder(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out) : deck_(deck), out_(out) {}
+
+    // Decodes `line` against `card`. `version` sets the cell widths; `list_directed` reads engine
+    // lines (tokens separated by blanks or commas); `newer` names a newer format that reads more
+    // fields, for the message when text follows the last field.
+    void decode(const grammar::CardLine& line, const grammar::radioss::CardSpec& card, int version,
+                bool list_directed, std::vector<RadiossValue>& values, std::string_view newer = {});
+
+private:
+    void decode_fixed(const grammar::CardLine& line, const grammar::radioss::CardSpec& card, int version,
+                      std::vector<RadiossValue>& values, std::string_view newer);
+    void decode_tokens(const grammar::CardLine& line, const grammar::radioss::CardSpec& card,
+                       std::vector<RadiossValue>& values);
+    void read_value(RadiossValue& v, std::string_view field, bool fixed);
+    void report(const char* code, diag::Severity s, std::string message, grammar::Span span);
+
+    const grammar::RawDeck& deck_;
+    std::vector<diag::Diagnostic>& out_;
+    std::vector<grammar::Field> fields_;
+};
+
+// The columns of field `field` on card line `line` as the decoder cut it (fixed or free).
+grammar::Span radioss_field_span(const grammar::RawDeck& deck, std::uint32_t line,
+                                 const grammar::radioss::CardSpec& card, int version, std::size_t field);
+
+}  // namespace sphdeck::model

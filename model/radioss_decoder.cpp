@@ -1,0 +1,238 @@
+// The Radioss block walker: finds each header's keyword, picks the card format of the deck's
+// version, takes the title line, cuts the cards and hands them to the builder.
+#include "model/radioss_decoder.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <map>
+
+#include "grammar/fields.hpp"
+#include "grammar/radioss/cards.hpp"
+#include "grammar/radioss/reader.hpp"
+#include "grammar/value.hpp"
+#include "model/radioss_builder.hpp"
+
+namespace sphdeck::model {
+
+namespace rad = grammar::radioss;
+
+namespace {
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+    return s;
+}
+
+bool is_number(std::string_view s) {
+    return !s.empty() && grammar::parse_integer(s).status == grammar::NumberStatus::Ok;
+}
+
+// "/INTER/TYPE7/5" → "/INTER/TYPE7": the name without its ids, for grouping unknown keywords.
+std::string keyword_name(std::string_view header) {
+    std::string name;
+    for (std::string_view s : rad::path_segments(header)) {
+        if (is_number(s)) break;
+        name += '/';
+        name += s;
+    }
+    return name.empty() ? std::string(header) : name;
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        cur[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j)
+            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+        std::swap(prev, cur);
+    }
+    return prev[b.size()];
+}
+
+std::optional<std::string_view> similar_keyword(std::string_view name) {
+    std::optional<std::string_view> best;
+    std::size_t best_distance = 3;
+    for (const rad::KeywordSpec& k : rad::all_keywords()) {
+        std::vector<std::string_view> names{k.name};
+        names.insert(names.end(), k.aliases.begin(), k.aliases.end());
+        for (std::string_view n : names) {
+            std::size_t d = edit_distance(name, n);
+            if (d < best_distance) best_distance = d, best = n;
+        }
+    }
+    return best;
+}
+
+// The header path's segments after the keyword prefix, with their columns.
+void split_arguments(const grammar::Block& block, std::size_t prefix_segments, RadiossBlock& b) {
+    const std::string_view upper = block.keyword, written = block.arguments;
+    std::size_t i = 0, segment = 0;
+    while (i < upper.size()) {
+        if (upper[i] == '/') {
+            ++i;
+            continue;
+        }
+        std::size_t end = upper.find('/', i);
+        if (end == std::string_view::npos) end = upper.size();
+        if (segment++ >= prefix_segments) {
+            b.args.emplace_back(upper.substr(i, end - i));
+            b.written.emplace_back(written.substr(i, end - i));
+            b.arg_spans.push_back(grammar::Span{block.span.file, block.span.line,
+                                                block.span.column + static_cast<std::uint32_t>(i),
+                                                block.span.column + static_cast<std::uint32_t>(end)});
+        }
+        i = end;
+    }
+}
+
+class Walker {
+public:
+    Walker(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, int version)
+        : deck_(deck), out_(out), version_(version), builder_(deck, out, version), decoder_(deck, out) {
+        for (grammar::FileId f = 0; f < deck.sources.size(); ++f) {
+            grammar::FileId root = deck.sources.include_chain(f).front();
+            engine_.push_back(rad::is_engine_file_name(deck.sources.file(root).display_name));
+        }
+    }
+
+    void walk_all() {
+        for (const grammar::Block& block : deck_.blocks) walk(block);
+        for (const auto& [name, u] : unknown_) {
+            std::string message = fmt::format("unknown keyword {} kept as is", name);
+            if (u.second > 1) message += fmt::format(" ({} blocks)", u.second);
+            diag::Diagnostic d{"DK001", diag::Severity::Info, message, u.first, {}};
+            if (auto similar = similar_keyword(name))
+                d.notes.push_back({grammar::Span{}, fmt::format("did you mean {}?", *similar)});
+            out_.push_back(std::move(d));
+        }
+    }
+
+    Model finish() { return builder_.finish(); }
+
+private:
+    void walk(const grammar::Block& block) {
+        if (block.keyword == "/END") return;
+        const bool engine = block.span.file < engine_.size() && engine_[block.span.file];
+        std::size_t prefix = 0;
+        const rad::KeywordSpec* spec = rad::find_keyword(block.keyword, &prefix);
+        if (!spec) {
+            auto& u = unknown_[keyword_name(block.keyword)];
+            if (u.second++ == 0) u.first = block.span;
+            return;
+        }
+        if (spec->engine != engine) {
+            out_.push_back({"DK001", diag::Severity::Info,
+                            spec->engine ? fmt::format("{} is an engine keyword: the starter ignores it; it belongs "
+                                                       "in the engine deck <run>_0001.rad",
+                                                       keyword_name(block.keyword))
+                                         : fmt::format("{} is a starter keyword: the engine deck ignores it",
+                                                       keyword_name(block.keyword)),
+                            block.span, {}});
+            return;
+        }
+        if (!spec->decoded) return;
+
+        RadiossBlock b;
+        b.block = &block;
+        b.spec = spec;
+        b.engine = engine;
+        b.version = version_;
+        split_arguments(block, prefix, b);
+        const rad::FormatSpec& format = spec->format_for(engine ? rad::latest_version : version_);
+        b.format = format.since;
+        const grammar::CardLine* line = deck_.begin_lines(block);
+        const grammar::CardLine* end = deck_.end_lines(block);
+        if (spec->title && !engine) {
+            if (rad::is_v4(version_)) {
+                // V4: the title is the rest of the header path (/PROP/TYPE34/7/title).
+                for (std::size_t k = 1; k < b.written.size(); ++k) b.title += (k > 1 ? "/" : "") + b.written[k];
+            } else if (line != end) {
+                b.title = std::string(trim(deck_.text(*line)));
+                ++line;
+            }
+        }
+        builder_.begin(b);
+        walk_cards(b, format, line, end);
+        builder_.end(b);
+    }
+
+    void walk_cards(const RadiossBlock& b, const rad::FormatSpec& format, const grammar::CardLine* line,
+                    const grammar::CardLine* end) {
+        const auto& cards = format.cards;
+        std::size_t first_repeated = cards.size();
+        for (std::size_t k = 0; k < cards.size(); ++k)
+            if (cards[k].repeat == rad::Repeat::Repeated) {
+                first_repeated = k;
+                break;
+            }
+        const std::size_t group = cards.size() - first_repeated;
+        const std::string newer = newer_format(*b.spec, format);
+        std::size_t next = 0, in_group = 0;
+        for (; line != end; ++line) {
+            std::size_t index;
+            if (next < first_repeated) {
+                index = next++;
+            } else if (group > 0) {
+                if (grammar::is_blank(deck_.text(*line))) continue;  // blank lines between repeated cards
+                index = first_repeated + in_group;
+                in_group = (in_group + 1) % group;
+            } else {
+                report_extra(b, format, *line, static_cast<std::size_t>(end - line), newer);
+                return;
+            }
+            decoder_.decode(*line, cards[index], b.version, b.engine, values_, newer);
+            builder_.card(b, index, static_cast<std::uint32_t>(line - deck_.lines.data()), values_);
+        }
+    }
+
+    // "format 2026 reads more fields" when the deck's version reads an older, shorter format.
+    static std::string newer_format(const rad::KeywordSpec& spec, const rad::FormatSpec& format) {
+        const rad::FormatSpec& newest = spec.formats.front();
+        if (&newest == &format) return {};
+        return fmt::format("{} reads more fields from format {}", spec.name, newest.since);
+    }
+
+    void report_extra(const RadiossBlock& b, const rad::FormatSpec& format, const grammar::CardLine& line,
+                      std::size_t extra, const std::string& newer) {
+        std::string message = fmt::format("{} takes {} card(s) in format {}; {} more line(s) ignored", b.spec->name,
+                                          format.cards.size(), format.since, extra);
+        if (!newer.empty()) message += fmt::format(" ({}; the deck's Invers is {})", newer, b.version);
+        out_.push_back({"DK009", diag::Severity::Warning, std::move(message),
+                        grammar::Span{line.file, line.line, 1, std::max<std::uint32_t>(line.length, 1) + 1}, {}});
+    }
+
+    const grammar::RawDeck& deck_;
+    std::vector<diag::Diagnostic>& out_;
+    int version_;
+    RadiossBuilder builder_;
+    RadiossCardDecoder decoder_;
+    std::vector<RadiossValue> values_;
+    std::vector<bool> engine_;  // per file: part of the engine deck
+    std::map<std::string, std::pair<grammar::Span, std::size_t>> unknown_;
+};
+
+}  // namespace
+
+int radioss_version(const grammar::RawDeck& deck) {
+    for (const grammar::Block& b : deck.blocks) {
+        if (b.keyword != "/BEGIN") continue;
+        if (b.line_count < 2) return rad::latest_version;
+        std::string_view text = trim(deck.text(deck.lines[b.first_line + 1]));
+        text = text.substr(0, text.find_first_of(" \t,"));
+        grammar::IntegerValue v = grammar::parse_integer(text);
+        return v.status == grammar::NumberStatus::Ok && v.value > 0 ? static_cast<int>(v.value) : rad::latest_version;
+    }
+    return rad::latest_version;
+}
+
+Model build_radioss_model(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, DeckSummary* summary) {
+    Walker walker(deck, out, radioss_version(deck));
+    walker.walk_all();
+    Model model = walker.finish();
+    if (summary) summary->particles = model.particles.size();
+    return model;
+}
+
+}  // namespace sphdeck::model

@@ -1,0 +1,63 @@
+// Regressions of the REF rules found by the deck sweep.
+#include <doctest/doctest.h>
+
+#include <chrono>
+
+#include "lint/pipeline.hpp"
+#include "test_support.hpp"
+
+using namespace sphdeck;
+using test::count_code;
+
+namespace {
+const std::string kPart =
+    "*KEYWORD\n*SECTION_SPH\n         1\n*MAT_NULL\n         1    1000.0\n*EOS_MURNAGHAN\n         1       7.0    1.0e+5"
+    "       1.0\n*PART\nwater\n         1         1         1         1\n";
+}  // namespace
+
+TEST_CASE("references: a missing node include makes a handful of findings, not one per particle") {
+    auto r = lint::check_buffer(kPart + "*ELEMENT_SPH\n       1       1           0.001    1000\n", "d.k");
+    CHECK(count_code(r.diagnostics, "REF001") == 6);  // five named, one summary of the 995 others
+}
+
+TEST_CASE("references: a huge _GENERATE range is bounded, reported, and fast") {
+    auto start = std::chrono::steady_clock::now();
+    auto r = lint::check_buffer(kPart + "*NODE\n       1\n*SET_NODE_LIST_GENERATE\n         1\n         1 200000000\n",
+                                "d.k");
+    CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(5));
+    REQUIRE(r.model.node_sets.size() == 1);
+    CHECK(r.model.node_sets[0].truncated);
+    CHECK(count_code(r.diagnostics, "REF001") == 1);
+}
+
+TEST_CASE("references: integral reals in id fields are the ids DK004 says they are") {
+    auto r = lint::check_buffer(
+        "*KEYWORD\n*SECTION_SPH\n         1\n*MAT_NULL\n         1    1000.0\n*PART\np\n         1       1.0         1"
+        "       0.0\n",
+        "d.k");
+    CHECK(count_code(r.diagnostics, "DK004") == 2);
+    CHECK(count_code(r.diagnostics, "REF003") == 0);
+    CHECK(count_code(r.diagnostics, "REF005") == 0);
+}
+
+TEST_CASE("references: *MAT_ADD_* and *MAT_THERMAL_* do not define materials") {
+    auto r = lint::check_buffer(kPart + "*MAT_ADD_THERMAL_EXPANSION\n         1         0    1.0e-5\n", "d.k");
+    CHECK(count_code(r.diagnostics, "REF006") == 0);
+    CHECK(r.model.materials.size() == 1);
+}
+
+TEST_CASE("references: sections of *DEFINE_ADAPTIVE_SOLID_TO_SPH and parts of *PART_CONTACT count") {
+    auto r = lint::check_buffer(kPart +
+                                    "*SECTION_SPH\n         2\n*DEFINE_ADAPTIVE_SOLID_TO_SPH\n         1         0         1"
+                                    "         3         2         0         0\n*PART_CONTACT\nsteel\n         7         1"
+                                    "         1\n       0.1       0.1\n",
+                                "d.k");
+    CHECK(count_code(r.diagnostics, "REF007") == 0);
+    CHECK(r.model.part("7") != nullptr);
+}
+
+TEST_CASE("references: an unreadable PID is DK002 only") {
+    auto r = lint::check_buffer(kPart + "*NODE\n       1\n*ELEMENT_SPH\n       1     abc           0.001\n", "d.k");
+    CHECK(count_code(r.diagnostics, "DK002") == 1);
+    CHECK(count_code(r.diagnostics, "REF002") == 0);
+}
