@@ -125,6 +125,13 @@ std::vector<Gravity> gravities(const model::Model& m) {
     return out;
 }
 
+// `x` rounded up to three significant digits, so a suggested minimum is never below the need.
+double round_up(double x) {
+    if (x <= 0) return x;
+    const double unit = std::pow(10.0, std::floor(std::log10(x)) - 2);
+    return std::ceil(x / unit * (1 - 1e-12)) * unit;
+}
+
 // SPH116: *MAT_NULL has no pressure of its own; an SPH part with it needs an EOS (§17.1).
 void check_null_without_eos(RuleContext& c, const std::map<Id, PartStats>& particle_parts) {
     for (const model::Part& part : c.model.parts) {
@@ -197,7 +204,7 @@ void check_murnaghan(RuleContext& c, const std::map<Id, PartStats>& parts) {
             fmt::format("c0 = sqrt(GAMMA {:g} x K0 {:g} / RO {:g}) = {:.4g} for part {} is below 10 x {:.4g}, {}; "
                         "expected K0 >= {:.3g}",
                         gamma, k0, worst.rho, worst.c0, worst.part->id, worst.v, worst.why,
-                        worst.rho * (10 * worst.v) * (10 * worst.v) / gamma));
+                        round_up(worst.rho * (10 * worst.v) * (10 * worst.v) / gamma)));
         d.notes.push_back({worst.mat->density.span, fmt::format("RO {:g} of material {}", worst.rho, worst.mat->id)});
         if (worst.source.valid()) d.notes.push_back({worst.source, worst.note});
     }

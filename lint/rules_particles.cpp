@@ -109,7 +109,7 @@ void check_planar(RuleContext& c) {
         grammar::Span at;
         auto lines = c.node_lines({id});
         if (!lines[id].empty()) at = lines[id].front();
-        if (auto index = line_index(c.deck, "*NODE", at)) at = field_span(c.deck, *index, "*NODE", field, at);
+        if (auto where = line_index(c.deck, "*NODE", at)) at = field_span(c.deck, *where, "*NODE", field, at);
         return diag::Note{at, fmt::format("node {} has {} = {:g}", id, field == "Z" ? "z" : "x", value)};
     };
     if (off_plane.count) {

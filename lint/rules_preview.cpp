@@ -34,11 +34,11 @@ void check_memory(RuleContext& c, const Preview& p) {
     if (memory.value < 0)
         c.report("SPH090", memory.span,
                  fmt::format("MEMORY {} fixes the neighbour arrays at {} per particle, but particles of part {} have "
-                             "up to {} neighbours within {:.4g}",
+                             "up to {} neighbours within the kernel support {:.4g}",
                              memory.value, cap, worst->part, largest, worst->support));
     else
         c.report("SPH090", diag::Severity::Info, memory.span,
-                 fmt::format("MEMORY {} is below the {} neighbours estimated for part {} (within {:.4g}); the "
+                 fmt::format("MEMORY {} is below the {} neighbours estimated for part {} (within the kernel support {:.4g}); the "
                              "arrays will grow during the run",
                              memory.value, largest, worst->part, worst->support));
 }
@@ -103,12 +103,19 @@ void check_stray(RuleContext& c, const Preview& p) {
     }
 }
 
-// SPH118: too few neighbours per particle (the part's median: corners and free surfaces aside).
+// SPH118: too few neighbours per particle. Two estimates must agree: the part's median count
+// (free-surface corners aside) and the count of an interior particle of a uniform fill at the
+// part's spacing, pi r^2 in 2D and 4/3 pi r^3 in 3D with r = support / spacing. The second keeps
+// small parts quiet, where every particle is near a surface and sees fewer than an interior one.
 void check_few_neighbours(RuleContext& c, const Preview& p) {
     const double needed = p.dimension == 2 ? 8 : 20;
+    constexpr double pi = 3.14159265358979323846;
     for (std::size_t q = 0; q < p.parts.size(); ++q) {
         const PartPreview& part = p.parts[q];
-        if (part.h0 <= 0 || part.particles < 2 || part.neighbours.median >= needed) continue;
+        if (part.h0 <= 0 || part.spacing <= 0 || part.particles < 2 || part.neighbours.median >= needed) continue;
+        const double r = part.support / part.spacing;
+        const double interior = p.dimension == 2 ? pi * r * r : 4.0 / 3.0 * pi * r * r * r;
+        if (interior >= needed) continue;
         grammar::Span where;
         const model::Part* def = c.model.part(std::to_string(part.part));
         const model::Section* section = def ? c.model.section(def->section.value) : nullptr;

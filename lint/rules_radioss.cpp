@@ -143,6 +143,13 @@ void check_cards(RuleContext& c, const RadiossSymmetry& s) {
                 .notes.push_back({frame->span, "the frame is defined here"});
         }
     }
+    if (s.grnod_id.value != 0) {
+        bool known = false;
+        for (const auto& g : f.node_groups) known |= g.id == s.grnod_id.value;
+        if (!known)
+            c.report("REF008", s.grnod_id.span,
+                     fmt::format("node group {} is not defined (/SPHBCS {} grnod_ID)", s.grnod_id.value, s.id));
+    }
     if (s.axis < 0)
         c.report("RAD005", s.dir.span,
                  fmt::format("Dir '{}' is not X, Y or Z: the starter accepts it and leaves the plane's normal "
@@ -207,13 +214,7 @@ void check_geometry(RuleContext& c, const Positions& at, const std::vector<doubl
         if (s.grnod_id.value != 0) {
             for (const auto& g : c.model.node_sets)
                 if (g.id == std::to_string(s.grnod_id.value)) group = &g;
-            bool known = false;
-            for (const auto& g : f.node_groups) known |= g.id == s.grnod_id.value;
-            if (!known) {
-                c.report("REF008", s.grnod_id.span, fmt::format("node group {} is not defined", s.grnod_id.value));
-                continue;
-            }
-            if (!group) continue;  // a group kind sphdeck does not expand: members unknown
+            if (!group) continue;  // undefined (REF008), or a group kind sphdeck does not expand
         }
         std::unordered_set<long long> members;
         if (group) members.insert(group->members.begin(), group->members.end());

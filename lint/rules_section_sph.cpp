@@ -109,8 +109,9 @@ void check_particle_sections(RuleContext& c) {
         const Section* section = c.model.section(part->section.value);
         if (!section || section->sph) continue;  // REF003, or fine
         c.report("SPH104", part->section.span,
-                 fmt::format("part {} holds {} SPH particle{} but its section {} is {}; expected a *SECTION_SPH",
-                             part->id, n, n == 1 ? "" : "s", section->id, section->keyword))
+                 fmt::format("part {} holds {} SPH particle{} but its section {} is {}; expected a {}", part->id, n,
+                             n == 1 ? "" : "s", section->id, section->keyword,
+                             c.model.radioss ? "/PROP/SPH" : "*SECTION_SPH"))
             .notes.push_back({section->span, fmt::format("section {} is defined here", section->id)});
     }
 }

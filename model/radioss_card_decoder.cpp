@@ -56,9 +56,23 @@ void RadiossCardDecoder::decode(const grammar::CardLine& line, const grammar::ra
     else decode_fixed(line, card, version, values, newer);
 }
 
+const std::vector<grammar::FixedField>& RadiossCardDecoder::layout_of(const grammar::radioss::CardSpec& card,
+                                                                      int version) {
+    if (!layouts_.empty() && layouts_[last_layout_].card == &card && layouts_[last_layout_].version == version)
+        return layouts_[last_layout_].positions;  // repeated cards: the same layout line after line
+    for (std::size_t k = 0; k < layouts_.size(); ++k)
+        if (layouts_[k].card == &card && layouts_[k].version == version) {
+            last_layout_ = k;
+            return layouts_[k].positions;
+        }
+    layouts_.push_back({&card, version, grammar::radioss::layout(card, version)});
+    last_layout_ = layouts_.size() - 1;
+    return layouts_.back().positions;
+}
+
 void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const grammar::radioss::CardSpec& card,
                                       int version, std::vector<RadiossValue>& values, std::string_view newer) {
-    const std::vector<grammar::FixedField> positions = grammar::radioss::layout(card, version);
+    const std::vector<grammar::FixedField>& positions = layout_of(card, version);
     const std::uint32_t end = positions.empty() ? 0 : positions.back().start + std::min(positions.back().width, 1u << 20);
     const bool text_card = !card.fields.empty() && card.fields.front().cell == Cell::Line;
     const std::string_view text = deck_.text(line);

@@ -40,9 +40,19 @@ private:
     void read_value(RadiossValue& v, std::string_view field, bool fixed);
     void report(const char* code, diag::Severity s, std::string message, grammar::Span span);
 
+    // Column positions of a card in a version, computed once: decoding runs per line.
+    const std::vector<grammar::FixedField>& layout_of(const grammar::radioss::CardSpec& card, int version);
+
     const grammar::RawDeck& deck_;
     std::vector<diag::Diagnostic>& out_;
     std::vector<grammar::Field> fields_;
+    struct Layout {
+        const grammar::radioss::CardSpec* card = nullptr;
+        int version = 0;
+        std::vector<grammar::FixedField> positions;
+    };
+    std::vector<Layout> layouts_;
+    std::size_t last_layout_ = 0;
 };
 
 // The columns of field `field` on card line `line` as the decoder cut it (fixed or free).

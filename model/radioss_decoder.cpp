@@ -175,8 +175,12 @@ private:
             if (next < first_repeated) {
                 index = next++;
             } else if (group > 0) {
-                if (grammar::is_blank(deck_.text(*line))) continue;  // blank lines between repeated cards
                 index = first_repeated + in_group;
+                // Blank lines between records (nodes, particles, elements, ids) are no records; a
+                // blank row of reals (a /MAT card) is a card of defaults and keeps its place.
+                const auto& fields = cards[index].fields;
+                if (!fields.empty() && fields.front().cell == rad::Cell::Int && grammar::is_blank(deck_.text(*line)))
+                    continue;
                 in_group = (in_group + 1) % group;
             } else {
                 report_extra(b, format, *line, static_cast<std::size_t>(end - line), newer);

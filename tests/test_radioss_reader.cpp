@@ -4,6 +4,7 @@
 #include <tao/pegtl/contrib/analyze.hpp>
 
 #include <cmath>
+#include <set>
 
 #include "grammar/radioss/cards.hpp"
 #include "grammar/radioss/line_grammar.hpp"
@@ -394,4 +395,23 @@ TEST_CASE("radioss: bad input never crashes the reader or the decoder") {
         CHECK_NOTHROW(check(text, "fuzz_0000.rad"));
         CHECK_NOTHROW(lint::check_buffer(text, "fuzz.rad", {}, std::nullopt));
     }
+}
+
+TEST_CASE("radioss: card tables: unique names, formats newest first") {
+    std::set<std::string_view> names;
+    for (const auto& k : grammar::radioss::all_keywords()) {
+        CAPTURE(k.name);
+        CHECK(names.insert(k.name).second);
+        for (auto alias : k.aliases) CHECK(names.insert(alias).second);
+        REQUIRE(!k.formats.empty());
+        for (std::size_t f = 1; f < k.formats.size(); ++f) CHECK(k.formats[f - 1].since > k.formats[f].since);
+    }
+    std::size_t segments = 0;
+    const auto* sph = grammar::radioss::find_keyword("/PROP/TYPE34/7", &segments);
+    REQUIRE(sph);
+    CHECK(sph->name == "/PROP/SPH");
+    CHECK(segments == 2);
+    CHECK(sph->format_for(2024).since == 2019);
+    CHECK(sph->format_for(44).since == 0);
+    CHECK(grammar::radioss::find_keyword("/DT/SPCEL/STOP")->name == "/DT/SPHCEL");
 }

@@ -28,7 +28,7 @@ struct comment_line : pegtl::seq<pegtl::one<'#', '$'>, rest_of_line> {};
 // A header: '/' in column 1, then the path /KEY1/KEY2/.../id up to the end of the line. Blanks
 // before the '/' are tolerated and reported.
 struct header_indent : pegtl::star<inline_blank> {};
-struct header_path : rest_of_line {};
+struct header_path : pegtl::seq<pegtl::one<'/'>, rest_of_line> {};
 struct header_line
     : pegtl::seq<header_indent, pegtl::at<pegtl::one<'/'>, pegtl::sor<pegtl::alpha, pegtl::one<'/'>>>, header_path> {};
 
