@@ -114,15 +114,21 @@ void preview_part(const model::Model& m, const PartGroups& groups, std::size_t q
         if (!pp.located[i]) continue;
         located.push_back(i);
         masses.push_back(pp.mass[i]);
-        volumes.push_back(particle_volume(particles.mass[i], volume_flag, pv.density));
+        if (mode == model::IniMode::FromMass) volumes.push_back(particle_volume(particles.mass[i], volume_flag, pv.density));
     }
     if (located.size() < pv.particles)
         add_note(pv.notes, fmt::format("{} particles without a *NODE left out", pv.particles - located.size()));
-    pv.mass_median = stats_of(masses).median;
+    pv.mass_median = stats_of(std::move(masses)).median;
 
-    std::vector<double> x(located.size()), y(located.size()), z(located.size());
-    for (std::size_t k = 0; k < located.size(); ++k)
-        x[k] = pp.x[located[k]], y[k] = pp.y[located[k]], z[k] = pp.z[located[k]];
+    // Positions: the preview's arrays themselves when the part is every particle, in order.
+    std::vector<double> xs, ys, zs;
+    std::span<const double> x = pp.x, y = pp.y, z = pp.z;
+    if (located.size() != pp.x.size()) {
+        xs.resize(located.size()), ys.resize(located.size()), zs.resize(located.size());
+        for (std::size_t k = 0; k < located.size(); ++k)
+            xs[k] = pp.x[located[k]], ys[k] = pp.y[located[k]], zs[k] = pp.z[located[k]];
+        x = xs, y = ys, z = zs;
+    }
     const NearestNeighbours nn = mode == model::IniMode::Global ? nearest_neighbours_all_pairs(x, y, z, progress)
                                                                 : nearest_neighbours_grid(x, y, z);
     pv.nn_distance = stats_of(nn.distance);
