@@ -25,6 +25,7 @@ struct CheckArgs {
     std::vector<std::string> select, ignore;
     std::string solver, fail_on, config_file;
     bool no_config = false;
+    bool no_geometry = false;
     CLI::Option* select_option = nullptr;  // to tell "--select" absent from empty
 };
 
@@ -95,6 +96,7 @@ lint::CheckOptions options_for(const lint::Config& config, const CheckArgs& args
     lint::CheckOptions options;
     options.reader.include_paths = config.include_paths;
     options.config = config;
+    options.rules.geometry = !args.no_geometry;
     if (config.solver) {
         options.rules.solver = *config.solver == "mpp" ? lint::Solver::Mpp : lint::Solver::Smp;
         options.rules.solver_source = args.solver.empty() ? config.path : "--solver";
@@ -198,6 +200,9 @@ std::function<int()> setup_check(CLI::App& app) {
     auto* config = app.add_option("--config", args->config_file,
                                   "read this configuration file instead of searching for sphdeck.toml");
     app.add_flag("--no-config", args->no_config, "ignore every sphdeck.toml")->excludes(config);
+    app.add_flag("--no-geometry", args->no_geometry,
+                 "skip the rules that need particle neighbours (SPH090, SPH113-SPH118): a quick syntax and "
+                 "settings check of very large decks");
     return [args] { return run_check(*args); };
 }
 

@@ -34,7 +34,7 @@ struct SourceFile {
     std::uint32_t include_line = 0;  // line of that *INCLUDE keyword in the parent
     unsigned depth = 0;        // 0 for a main file
 
-    mutable std::vector<std::uint32_t> line_starts;  // built lazily, for excerpts only
+    mutable std::vector<std::uint32_t> line_starts;  // built lazily and partly, for excerpts only
 };
 
 class SourceMap {
@@ -52,7 +52,7 @@ public:
     std::vector<FileId> include_chain(FileId id) const;
 
 private:
-    void index_lines(const SourceFile& f) const;
+    void index_lines(const SourceFile& f, std::uint32_t up_to_line) const;
     std::deque<SourceFile> files_;  // deque: references stay valid while includes are added
 };
 

@@ -19,6 +19,9 @@ enum class Solver { Unknown, Smp, Mpp };
 struct RuleOptions {
     Solver solver = Solver::Unknown;
     std::string solver_source;  // who decided: "--solver", "sphdeck.toml", ...
+    // The rules that need the particle geometry (neighbour grid, nearest neighbours: SPH090,
+    // SPH113-SPH118) cost about as much as reading the deck; `check --no-geometry` skips them.
+    bool geometry = true;
 };
 
 class RuleContext {

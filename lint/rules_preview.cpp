@@ -43,27 +43,36 @@ void check_memory(RuleContext& c, const Preview& p) {
                              memory.value, largest, worst->part, worst->support));
 }
 
-// SPH113: particle mass against rho * spacing^d.
+// SPH113: particle mass against rho * spacing^d, reported at the part's first particle whose mass
+// is (closest to) the median one.
 void check_mass_spacing(RuleContext& c, const Preview& p) {
     if (c.model.controls.sph.idim.value == model::Dimension::Axisymmetric) return;  // mass per radian: not checked
+    const std::size_t n = p.particles.part.size();
+    std::vector<double> ratio(p.parts.size(), 1.0);
+    std::vector<std::size_t> at(p.parts.size(), n);
+    bool any = false;
     for (std::size_t q = 0; q < p.parts.size(); ++q) {
         const PartPreview& part = p.parts[q];
         if (part.density <= 0 || part.spacing <= 0 || part.mass_median <= 0) continue;
-        const double expected = part.density * std::pow(part.spacing, p.dimension);
-        const double ratio = part.mass_median / expected;
-        if (ratio <= 2.0 && ratio >= 0.5) continue;
-        // At the first particle whose mass is the median one.
-        std::size_t at = p.particles.part.size();
-        double closest = 0;
-        for (std::size_t i = 0; i < p.particles.part.size(); ++i) {
-            if (p.particles.part[i] != q) continue;
-            const double off = std::abs(p.particles.mass[i] - part.mass_median);
-            if (at == p.particles.part.size() || off < closest) at = i, closest = off;
-        }
-        c.report("SPH113", c.particle_span(at),
+        ratio[q] = part.mass_median / (part.density * std::pow(part.spacing, p.dimension));
+        any = any || ratio[q] > 2.0 || ratio[q] < 0.5;
+    }
+    if (!any) return;
+    std::vector<double> closest(p.parts.size(), 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t q = p.particles.part[i];
+        if (ratio[q] <= 2.0 && ratio[q] >= 0.5) continue;
+        const double off = std::abs(p.particles.mass[i] - p.parts[q].mass_median);
+        if (at[q] == n || off < closest[q]) at[q] = i, closest[q] = off;
+    }
+    for (std::size_t q = 0; q < p.parts.size(); ++q) {
+        if (at[q] == n) continue;
+        const PartPreview& part = p.parts[q];
+        c.report("SPH113", c.particle_span(at[q]),
                  fmt::format("particle mass {:.4g} is {:.3g} times rho * spacing^{} = {:.4g} (part {}: RO {:.4g}, "
                              "spacing {:.4g}); expected within a factor 2, a unit mistake?",
-                             part.mass_median, ratio, p.dimension, expected, part.part, part.density, part.spacing));
+                             part.mass_median, ratio[q], p.dimension, part.mass_median / ratio[q], part.part,
+                             part.density, part.spacing));
     }
 }
 
@@ -80,26 +89,25 @@ void check_coincident(RuleContext& c, const Preview& p) {
     }
 }
 
-// SPH115: a particle far from the rest of its part.
+// SPH115: a particle far from the rest of its part (one pass over the particles).
 void check_stray(RuleContext& c, const Preview& p) {
     const auto& pp = p.particles;
-    for (std::size_t q = 0; q < p.parts.size(); ++q) {
+    std::vector<std::size_t> listed(p.parts.size(), 0);
+    for (std::size_t i = 0; i < pp.part.size(); ++i) {
+        const std::uint32_t q = pp.part[i];
         const PartPreview& part = p.parts[q];
-        if (part.spacing <= 0) continue;
-        const bool sets_h0 = !part.sphini_given && part.ini != model::IniMode::FromMass;
-        std::size_t listed = 0;
-        for (std::size_t i = 0; i < pp.part.size() && listed < max_listed; ++i) {
-            if (pp.part[i] != q || !pp.located[i] || !(pp.nn_distance[i] > 3.0 * part.spacing)) continue;
-            ++listed;
-            std::string effect = sets_h0 && pp.nn_distance[i] == part.nn_distance.max
-                                     ? fmt::format("; it sets h0 = {:.4g} for the whole part", part.h0)
-                                     : "";
-            c.report("SPH115", c.particle_span(i),
-                     fmt::format("particle {} is {:.4g} from its nearest particle of part {}, {:.3g} times the part's "
-                                 "median spacing {:.4g}{}",
-                                 c.model.particles.node[i], pp.nn_distance[i], part.part,
-                                 pp.nn_distance[i] / part.spacing, part.spacing, effect));
-        }
+        if (part.spacing <= 0 || !pp.located[i] || !(pp.nn_distance[i] > 3.0 * part.spacing) ||
+            listed[q] == max_listed)
+            continue;
+        ++listed[q];
+        const bool sets_h0 = !part.sphini_given && part.ini != model::IniMode::FromMass &&
+                             pp.nn_distance[i] == part.nn_distance.max;
+        const std::string effect = sets_h0 ? fmt::format("; it sets h0 = {:.4g} for the whole part", part.h0) : "";
+        c.report("SPH115", c.particle_span(i),
+                 fmt::format("particle {} is {:.4g} from its nearest particle of part {}, {:.3g} times the part's "
+                             "median spacing {:.4g}{}",
+                             c.model.particles.node[i], pp.nn_distance[i], part.part, pp.nn_distance[i] / part.spacing,
+                             part.spacing, effect));
     }
 }
 

@@ -8,11 +8,13 @@
 
 namespace sphdeck::preproc {
 
-double estimated_spacing(std::span<const double> x, std::span<const double> y, std::span<const double> z) {
-    const std::size_t n = x.size();
-    if (n == 0) return 0;
+namespace {
+
+// Axes the points span, and their bounding-box measure over those axes.
+std::pair<int, double> spanned(std::span<const double> x, std::span<const double> y, std::span<const double> z) {
+    if (x.empty()) return {0, 0.0};
     std::array<double, 3> lo{x[0], y[0], z[0]}, hi = lo;
-    for (std::size_t i = 1; i < n; ++i) {
+    for (std::size_t i = 1; i < x.size(); ++i) {
         lo[0] = std::min(lo[0], x[i]), hi[0] = std::max(hi[0], x[i]);
         lo[1] = std::min(lo[1], y[i]), hi[1] = std::max(hi[1], y[i]);
         lo[2] = std::min(lo[2], z[i]), hi[2] = std::max(hi[2], z[i]);
@@ -21,41 +23,40 @@ double estimated_spacing(std::span<const double> x, std::span<const double> y, s
     double measure = 1;
     int axes = 0;
     for (int a = 0; a < 3; ++a)
-        if (hi[a] - lo[a] > 1e-12 * largest && hi[a] > lo[a]) measure *= hi[a] - lo[a], ++axes;
+        if (hi[a] - lo[a] > 1e-12 * largest && hi[a] > lo[a] && std::isfinite(hi[a] - lo[a]))
+            measure *= hi[a] - lo[a], ++axes;
+    return {axes, measure};
+}
+
+}  // namespace
+
+double estimated_spacing(std::span<const double> x, std::span<const double> y, std::span<const double> z) {
+    const auto [axes, measure] = spanned(x, y, z);
     if (axes == 0) return 0;
-    return std::pow(measure / static_cast<double>(n), 1.0 / axes);
+    return std::pow(measure / static_cast<double>(x.size()), 1.0 / axes);
 }
 
 namespace {
 
-// The nearest point to sorted point k among sorted [b, e) but k itself, updating (best2, best).
-// Branch-free: the running minimum changes unpredictably, and a mispredicted branch costs more
-// than the whole distance.
+// The nearest point to sorted point k among sorted [b, e), updating (best2, best). Branch-free:
+// the running minimum changes unpredictably, and a mispredicted branch costs more than a distance.
 inline void scan_range(const NeighbourGrid& g, std::uint32_t k, std::uint32_t b, std::uint32_t e, double& best2,
                        std::uint32_t& best) {
     const double px = g.x()[k], py = g.y()[k], pz = g.z()[k];
     const double *gx = g.x().data(), *gy = g.y().data(), *gz = g.z().data();
-    // Two independent minima halve the chain of dependent comparisons.
-    double m[2] = {best2, best2};
-    std::uint32_t at[2] = {best, best};
-    std::uint32_t j = b;
-    for (; j + 1 < e; j += 2)
-        for (std::uint32_t l = 0; l < 2; ++l) {
-            const double dx = px - gx[j + l], dy = py - gy[j + l], dz = pz - gz[j + l];
-            const double r2 = dx * dx + dy * dy + dz * dz;
-            const bool closer = r2 < m[l];
-            m[l] = closer ? r2 : m[l];
-            at[l] = closer ? j + l : at[l];
-        }
-    if (j < e) {
+    double m = best2;
+    std::uint32_t at = best;
+    for (std::uint32_t j = b; j < e; ++j) {
         const double dx = px - gx[j], dy = py - gy[j], dz = pz - gz[j];
         const double r2 = dx * dx + dy * dy + dz * dz;
-        if (r2 < m[0]) m[0] = r2, at[0] = j;
+        const bool closer = r2 < m;
+        m = closer ? r2 : m;
+        at = closer ? j : at;
     }
-    const int w = m[1] < m[0];
-    best2 = m[w], best = at[w];
+    best2 = m, best = at;
 }
 
+// The same, leaving k itself out.
 inline void scan(const NeighbourGrid& g, std::uint32_t k, std::uint32_t b, std::uint32_t e, double& best2,
                  std::uint32_t& best) {
     if (k >= b && k < e) {
@@ -68,30 +69,72 @@ inline void scan(const NeighbourGrid& g, std::uint32_t k, std::uint32_t b, std::
 
 // Calls f(begin, end) for the cells at Chebyshev distance exactly `reach` from cell c.
 template <typename F>
-void for_each_shell_range(const NeighbourGrid& g, std::array<std::uint32_t, 3> c, std::uint32_t reach, F&& f) {
+void for_each_shell_range(const NeighbourGrid& g, NeighbourGrid::Cell c, std::uint32_t reach, F&& f) {
     const auto n = g.cells();
     const long long r = reach;
+    const long long x0 = c[0] - r, x1 = c[0] + r;
     for (long long dz = -r; dz <= r; ++dz) {
         const long long iz = c[2] + dz;
         if (iz < 0 || iz >= n[2]) continue;
         for (long long dy = -r; dy <= r; ++dy) {
             const long long iy = c[1] + dy;
             if (iy < 0 || iy >= n[1]) continue;
-            const auto cell = [&](long long ix) {
-                return g.cell_index(static_cast<std::uint32_t>(ix), static_cast<std::uint32_t>(iy),
-                                    static_cast<std::uint32_t>(iz));
+            const auto row = [&](long long a, long long b) {
+                const auto [begin, end] = g.row_range(static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b),
+                                                      static_cast<std::uint32_t>(iy), static_cast<std::uint32_t>(iz));
+                if (begin != end) f(begin, end);
             };
-            const long long x0 = c[0] - r, x1 = c[0] + r;
             if (dz == -r || dz == r || dy == -r || dy == r) {  // a whole row of the shell
                 const long long a = std::max(0LL, x0), b = std::min<long long>(n[0] - 1, x1);
-                if (a <= b) f(g.cell_begin(cell(a)), g.cell_end(cell(b)));
+                if (a <= b) row(a, b);
             } else {  // the two ends of the row
-                if (x0 >= 0) f(g.cell_begin(cell(x0)), g.cell_end(cell(x0)));
-                if (x1 < n[0]) f(g.cell_begin(cell(x1)), g.cell_end(cell(x1)));
+                if (x0 >= 0) row(x0, x0);
+                if (x1 < n[0]) row(x1, x1);
             }
         }
     }
 }
+
+// A spacing from the interquartile box: (product of the quartile ranges / (n / 2^d))^(1/d) over
+// the axes with a range. Blind to a few far points, which the bounding box is not.
+double quartile_spacing(std::span<const double> x, std::span<const double> y, std::span<const double> z) {
+    double measure = 1;
+    int axes = 0;
+    for (auto axis : {x, y, z}) {
+        std::vector<double> v(axis.begin(), axis.end());
+        const std::size_t q1 = v.size() / 4, q3 = 3 * v.size() / 4;
+        std::nth_element(v.begin(), v.begin() + q1, v.end());
+        const double a = v[q1];
+        std::nth_element(v.begin() + q1, v.begin() + q3, v.end());
+        if (v[q3] - a > 0 && std::isfinite(v[q3] - a)) measure *= v[q3] - a, ++axes;
+    }
+    if (axes == 0) return 0;
+    return std::pow(measure * std::pow(2.0, axes) / static_cast<double>(x.size()), 1.0 / axes);
+}
+
+// A grid with about one point per occupied cell: the bounding-box spacing first; when the points
+// crowd into part of the box (a stray point, far-apart clusters), the quartile spacing, then
+// refinements by the crowding measured.
+NeighbourGrid nearest_neighbour_grid(std::span<const double> x, std::span<const double> y, std::span<const double> z) {
+    const int axes = spanned(x, y, z).first;
+    NeighbourGrid g(x, y, z, estimated_spacing(x, y, z));
+    for (int refine = 0; refine < 4 && axes > 0; ++refine) {
+        const double crowding = g.crowding();
+        if (crowding <= 3.0) break;
+        double cell = g.cell_size() * std::pow(1.5 / crowding, 1.0 / axes);
+        if (refine == 0) {
+            const double quartile = quartile_spacing(x, y, z);
+            if (quartile > 0) cell = std::min(cell, quartile);
+        }
+        g = NeighbourGrid(x, y, z, cell);
+    }
+    return g;
+}
+
+// The nine rows of the 3x3x3 block around a cell.
+constexpr NeighbourGrid::RowOffset block_rows[] = {{-1, 1, -1, -1}, {-1, 1, 0, -1}, {-1, 1, 1, -1},
+                                                   {-1, 1, -1, 0},  {-1, 1, 0, 0},  {-1, 1, 1, 0},
+                                                   {-1, 1, -1, 1},  {-1, 1, 0, 1},  {-1, 1, 1, 1}};
 
 }  // namespace
 
@@ -100,32 +143,30 @@ NearestNeighbours nearest_neighbours_grid(std::span<const double> x, std::span<c
     const std::size_t n = x.size();
     NearestNeighbours out{std::vector<double>(n, 0.0), std::vector<std::uint32_t>(n, NearestNeighbours::none)};
     if (n < 2) return out;
-    // About one point per cell (the fastest on lattices and random clouds alike); the 27-cell
-    // block then nearly always holds the nearest one.
-    const NeighbourGrid g(x, y, z, estimated_spacing(x, y, z));
-    const auto cells = g.cells();
-    for (std::uint32_t iz = 0; iz < cells[2]; ++iz)
-        for (std::uint32_t iy = 0; iy < cells[1]; ++iy)
-            for (std::uint32_t ix = 0; ix < cells[0]; ++ix) {
-                const std::size_t c = g.cell_index(ix, iy, iz);
-                for (std::uint32_t k = g.cell_begin(c); k < g.cell_end(c); ++k) {
-                    double best2 = std::numeric_limits<double>::infinity();
-                    std::uint32_t best = NearestNeighbours::none;
-                    const std::array<std::uint32_t, 3> at{ix, iy, iz};
-                    g.for_each_block_range(at, 1, [&](std::uint32_t b, std::uint32_t e) { scan(g, k, b, e, best2, best); });
-                    // Widen until nothing outside the searched block can be closer.
-                    for (std::uint32_t reach = 1; !g.block_covers_grid(at, reach);) {
-                        const double clear = g.block_clearance(g.x()[k], g.y()[k], g.z()[k], reach);
-                        if (clear > 0 && best2 <= clear * clear) break;
-                        ++reach;
-                        for_each_shell_range(g, at, reach,
-                                             [&](std::uint32_t b, std::uint32_t e) { scan(g, k, b, e, best2, best); });
-                    }
-                    const std::uint32_t i = g.order()[k];
-                    out.distance[i] = std::sqrt(best2);
-                    out.index[i] = g.order()[best];
+    const NeighbourGrid g = nearest_neighbour_grid(x, y, z);
+    g.for_each_cell_rows(block_rows, [&](std::size_t o, NeighbourGrid::Cell at, const auto& block) {
+        const auto [first, last] = g.occupied_range(o);
+        for (std::uint32_t k = first; k < last; ++k) {
+            double best2 = std::numeric_limits<double>::infinity();
+            std::uint32_t best = NearestNeighbours::none;
+            for (auto [b, e] : block) scan(g, k, b, e, best2, best);
+            // Widen shell by shell until nothing outside the searched block can be closer; when the
+            // next block would hold more cells than there are points, scan all points instead.
+            for (std::uint32_t reach = 1; !g.block_covers_grid(at, reach); ++reach) {
+                const double clear = g.block_clearance(g.x()[k], g.y()[k], g.z()[k], at, reach);
+                if (clear > 0 && best2 <= clear * clear) break;
+                if (g.block_cells(at, reach + 1) > static_cast<double>(n)) {
+                    scan(g, k, 0, static_cast<std::uint32_t>(n), best2, best);
+                    break;
                 }
+                for_each_shell_range(g, at, reach + 1,
+                                     [&](std::uint32_t b, std::uint32_t e) { scan(g, k, b, e, best2, best); });
             }
+            const std::uint32_t i = g.order()[k];
+            out.distance[i] = std::sqrt(best2);
+            out.index[i] = best == NearestNeighbours::none ? best : g.order()[best];
+        }
+    });
     return out;
 }
 
@@ -163,20 +204,20 @@ namespace {
 // vectorised loop: measured at 1e6 particles, reach 1 was the fastest (0.35 s against 0.46 s).
 constexpr std::uint32_t count_reach = 1;
 
-// Symmetric counting: pairs (k, j) with j in sorted [b, e), all after k, each seen once; both
-// counts grow. `close` counts pairs within the largest tolerance (checked exactly afterwards).
 // The counting loop vectorises with AVX2 (a double comparison into 64-bit lanes) but not with
 // the SSE2 baseline; x86-64 builds carry both and pick one when loaded.
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__AVX2__) && !defined(SPHDECK_SANITIZE_BUILD)
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__AVX2__) && !defined(__SANITIZE_ADDRESS__)
 #define SPHDECK_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define SPHDECK_CLONES
 #endif
 
+// Symmetric counting: pairs (k, j) with j in sorted [b, e), all after k, each seen once; both
+// counts grow. `close` counts pairs within the largest tolerance (checked exactly afterwards).
 template <bool Uniform>
-[[gnu::always_inline]] inline void count_pairs(const NeighbourGrid& g, const double* support, std::uint32_t k, std::uint32_t b,
-                        std::uint32_t e, double tol2, std::uint64_t* count, std::uint64_t& within,
-                        std::uint64_t& close) {
+[[gnu::always_inline]] inline void count_pairs(const NeighbourGrid& g, const double* support, std::uint32_t k,
+                                               std::uint32_t b, std::uint32_t e, double tol2, std::uint64_t* count,
+                                               std::uint64_t& within, std::uint64_t& close) {
     const double px = g.x()[k], py = g.y()[k], pz = g.z()[k], sk = support[k];
     const double *gx = g.x().data(), *gy = g.y().data(), *gz = g.z().data();
     const double uniform_r2 = sk * sk;
@@ -197,71 +238,54 @@ template <bool Uniform>
     within += w, close += c;
 }
 
-// Every pair once: for each cell, the pairs inside it and with the cells after it in a
-// half-block (the rest of its row, then the rows above), all contiguous ranges.
+// The pairs of one occupied cell's points [first, last): with each other, and with the points of
+// `ranges` (cells after it in cell order). Compiled for AVX2 and the baseline.
 template <bool Uniform>
-[[gnu::always_inline]] inline void count_symmetric(const NeighbourGrid& g, const std::vector<double>& support, double tol2,
+SPHDECK_CLONES void count_cell(const NeighbourGrid& g, const double* support, std::uint32_t first, std::uint32_t last,
+                               std::span<const NeighbourGrid::Range> ranges, double tol2, std::uint64_t* count,
+                               std::vector<std::uint32_t>& close_points) {
+    for (std::uint32_t k = first; k < last; ++k) {
+        std::uint64_t within = 0, close = 0;
+        count_pairs<Uniform>(g, support, k, k + 1, last, tol2, count, within, close);
+        for (auto [b, e] : ranges)
+            if (b != e) count_pairs<Uniform>(g, support, k, b, e, tol2, count, within, close);
+        count[k] += within;
+        if (close) close_points.push_back(k);
+    }
+}
+
+// Every pair once: for each occupied cell, the pairs inside it and with the cells after it in a
+// half-block: the rest of its row, then the rows above it (y + 1 in its plane, the whole next
+// plane), all contiguous ranges.
+template <bool Uniform>
+void count_symmetric(const NeighbourGrid& g, const std::vector<double>& support, double tol2,
                      std::vector<std::uint64_t>& count, std::vector<std::uint32_t>& close_points) {
-    const auto n = g.cells();
-    const long long r = count_reach;
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> ranges;
-    for (std::uint32_t iz = 0; iz < n[2]; ++iz)
-        for (std::uint32_t iy = 0; iy < n[1]; ++iy)
-            for (std::uint32_t ix = 0; ix < n[0]; ++ix) {
-                const std::size_t c = g.cell_index(ix, iy, iz);
-                if (g.cell_begin(c) == g.cell_end(c)) continue;
-                ranges.clear();
-                if (ix + 1 < n[0]) {
-                    const std::uint32_t last = std::min<std::uint32_t>(ix + count_reach, n[0] - 1);
-                    ranges.emplace_back(g.cell_begin(c + 1), g.cell_end(g.cell_index(last, iy, iz)));
-                }
-                const auto x0 = static_cast<std::uint32_t>(std::max<long long>(0, ix - r));
-                const auto x1 = static_cast<std::uint32_t>(std::min<long long>(n[0] - 1, ix + r));
-                for (long long dz = 0; dz <= r; ++dz)
-                    for (long long dy = dz == 0 ? 1 : -r; dy <= r; ++dy) {
-                        const long long y = iy + dy, z = iz + dz;
-                        if (y < 0 || y >= n[1] || z >= n[2]) continue;
-                        const auto yy = static_cast<std::uint32_t>(y), zz = static_cast<std::uint32_t>(z);
-                        const std::uint32_t b = g.cell_begin(g.cell_index(x0, yy, zz));
-                        const std::uint32_t e = g.cell_end(g.cell_index(x1, yy, zz));
-                        if (b != e) ranges.emplace_back(b, e);
-                    }
-                for (std::uint32_t k = g.cell_begin(c); k < g.cell_end(c); ++k) {
-                    std::uint64_t within = 0, close = 0;
-                    count_pairs<Uniform>(g, support.data(), k, k + 1, g.cell_end(c), tol2, count.data(), within, close);
-                    for (auto [b, e] : ranges)
-                        count_pairs<Uniform>(g, support.data(), k, b, e, tol2, count.data(), within, close);
-                    count[k] += within;
-                    if (close) close_points.push_back(k);
-                }
-            }
-}
-
-SPHDECK_CLONES void count_symmetric_uniform(const NeighbourGrid& g, const std::vector<double>& support, double tol2,
-                                            std::vector<std::uint64_t>& count, std::vector<std::uint32_t>& close_points) {
-    count_symmetric<true>(g, support, tol2, count, close_points);
-}
-
-SPHDECK_CLONES void count_symmetric_varied(const NeighbourGrid& g, const std::vector<double>& support, double tol2,
-                                           std::vector<std::uint64_t>& count, std::vector<std::uint32_t>& close_points) {
-    count_symmetric<false>(g, support, tol2, count, close_points);
+    static constexpr NeighbourGrid::RowOffset half[] = {
+        {1, 1, 0, 0}, {-1, 1, 1, 0}, {-1, 1, -1, 1}, {-1, 1, 0, 1}, {-1, 1, 1, 1}};
+    static_assert(count_reach == 1, "the half-block rows assume cells as large as the support");
+    g.for_each_cell_rows(half, [&](std::size_t o, NeighbourGrid::Cell, const std::vector<NeighbourGrid::Range>& ranges) {
+        const auto [first, last] = g.occupied_range(o);
+        count_cell<Uniform>(g, support.data(), first, last, ranges, tol2, count.data(), close_points);
+    });
 }
 
 // Gather counting of every `stride`-th point (in cell order) over its whole block; the others
 // copy the last counted point before them.
-void count_sampled(const NeighbourGrid& g, const std::vector<double>& support, std::size_t stride,
-                   std::vector<std::uint64_t>& count) {
+SPHDECK_CLONES void count_sampled(const NeighbourGrid& g, const std::vector<double>& support, std::size_t stride,
+                                  std::vector<std::uint64_t>& count) {
     const std::size_t n = g.size();
+    const double *gx = g.x().data(), *gy = g.y().data(), *gz = g.z().data(), *s = support.data();
     for (std::size_t k = 0; k < n; k += stride) {
-        const double px = g.x()[k], py = g.y()[k], pz = g.z()[k], sk = support[k];
+        const double px = gx[k], py = gy[k], pz = gz[k], sk = s[k];
         std::uint64_t w = 0;
         g.for_each_block_range(g.cell_of(px, py, pz), count_reach, [&](std::uint32_t b, std::uint32_t e) {
             for (std::uint32_t j = b; j < e; ++j) {
-                const double dx = px - g.x()[j], dy = py - g.y()[j], dz = pz - g.z()[j];
-                const double rr = 0.5 * (sk + support[j]);
-                w += (dx * dx + dy * dy + dz * dz < rr * rr) && j != k;
+                const double dx = px - gx[j], dy = py - gy[j], dz = pz - gz[j];
+                const double rr = 0.5 * (sk + s[j]);
+                w += dx * dx + dy * dy + dz * dz < rr * rr;
             }
         });
+        if (sk > 0) --w;  // itself
         for (std::size_t i = k; i < std::min(n, k + stride); ++i) count[i] = w;
     }
 }
@@ -290,26 +314,23 @@ NeighbourCounts count_neighbours(std::span<const double> x, std::span<const doub
     }
     // The distance evaluations a count takes: points per cell times points in its half-block.
     double work = 0;
-    const auto cells = g.cells();
-    for (std::uint32_t iz = 0; iz < cells[2]; ++iz)
-        for (std::uint32_t iy = 0; iy < cells[1]; ++iy)
-            for (std::uint32_t ix = 0; ix < cells[0]; ++ix) {
-                const std::size_t c = g.cell_index(ix, iy, iz);
-                const double here = g.cell_end(c) - g.cell_begin(c);
-                if (here == 0) continue;
-                double block = 0;
-                g.for_each_block_range({ix, iy, iz}, count_reach, [&](std::uint32_t b, std::uint32_t e) { block += e - b; });
-                work += 0.5 * here * block;
-            }
+    g.for_each_cell_rows(block_rows, [&](std::size_t o, NeighbourGrid::Cell, const auto& ranges) {
+        const auto [first, last] = g.occupied_range(o);
+        double block = 0;
+        for (auto [b, e] : ranges) block += e - b;
+        work += 0.5 * double(last - first) * block;
+    });
     std::vector<std::uint64_t> count(n, 0);
     std::vector<std::uint32_t> close_points;
+    if (pair_budget <= 0) pair_budget = std::max(5.0e8, 400.0 * static_cast<double>(n));
     if (work > pair_budget) {
-        out.sample_stride = static_cast<std::size_t>(std::ceil(2 * work / pair_budget));
+        // A sampled point costs its whole block (twice its half-block): a quarter of the budget.
+        out.sample_stride = static_cast<std::size_t>(std::ceil(8 * work / pair_budget));
         count_sampled(g, s, out.sample_stride, count);
     } else if (uniform) {
-        count_symmetric_uniform(g, s, largest_tolerance * largest_tolerance, count, close_points);
+        count_symmetric<true>(g, s, largest_tolerance * largest_tolerance, count, close_points);
     } else {
-        count_symmetric_varied(g, s, largest_tolerance * largest_tolerance, count, close_points);
+        count_symmetric<false>(g, s, largest_tolerance * largest_tolerance, count, close_points);
     }
     for (std::size_t k = 0; k < n; ++k) out.count[order[k]] = static_cast<std::uint32_t>(count[k]);
     // Coincident pairs: the few points with a pair inside the largest tolerance, checked exactly.

@@ -56,10 +56,11 @@ struct NeighbourCounts {
 };
 
 // Neighbour counts within the kernel support (a radius per point: kernel factor * h), on a grid
-// with cells as large as the largest support. `pair_budget` bounds the distance evaluations.
+// with cells as large as the largest support; each pair is evaluated once. `pair_budget` bounds
+// the distance evaluations (0: max(5e8, 400 per point), about a second).
 NeighbourCounts count_neighbours(std::span<const double> x, std::span<const double> y, std::span<const double> z,
                                  std::span<const double> support, std::span<const double> tolerance,
-                                 double pair_budget = 2.0e9);
+                                 double pair_budget = 0);
 
 // The same by brute force over all pairs, for tests.
 std::vector<std::uint32_t> count_neighbours_all_pairs(std::span<const double> x, std::span<const double> y,

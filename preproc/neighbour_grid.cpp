@@ -5,44 +5,109 @@
 
 namespace sphdeck::preproc {
 
+namespace {
+constexpr std::uint32_t axis_bits = 21;  // hashed keys: 21 bits per axis
+constexpr double max_axis_cells = double(1u << axis_bits) - 2;
+}  // namespace
+
 NeighbourGrid::NeighbourGrid(std::span<const double> x, std::span<const double> y, std::span<const double> z,
                              double cell_size) {
     const std::size_t n = x.size();
+    const std::span<const double> axes[3] = {x, y, z};
     std::array<double, 3> lo{0, 0, 0}, hi{0, 0, 0};
-    if (n > 0) {
-        lo = hi = {x[0], y[0], z[0]};
-        for (std::size_t i = 1; i < n; ++i) {
-            lo[0] = std::min(lo[0], x[i]), hi[0] = std::max(hi[0], x[i]);
-            lo[1] = std::min(lo[1], y[i]), hi[1] = std::max(hi[1], y[i]);
-            lo[2] = std::min(lo[2], z[i]), hi[2] = std::max(hi[2], z[i]);
-        }
+    for (int a = 0; a < 3; ++a) {  // the bounding box of the finite coordinates
+        double l = std::numeric_limits<double>::infinity(), h = -l;
+        for (double v : axes[a])
+            if (std::isfinite(v)) l = std::min(l, v), h = std::max(h, v);
+        if (l <= h) lo[a] = l, hi[a] = h;
     }
     origin_ = lo;
     double extent = 0;
     for (int a = 0; a < 3; ++a) extent = std::max(extent, hi[a] - lo[a]);
     cell_ = cell_size > 0 && std::isfinite(cell_size) ? cell_size : std::max(extent, 1.0);
-    cell_ = std::max(cell_, extent * 1e-9);  // no more than 1e9 cells along an axis
-    // A dense grid: at most about two cells per point (plus a little for tiny sets).
-    const double cell_limit = 2.0 * static_cast<double>(n) + 64.0;
-    for (;;) {
-        double total = 1;
-        for (int a = 0; a < 3; ++a) total *= std::floor((hi[a] - lo[a]) / cell_) + 1;
-        if (total <= cell_limit) break;
-        cell_ *= 1.25;
-    }
     inv_cell_ = 1.0 / cell_;
-    for (int a = 0; a < 3; ++a) n_[a] = static_cast<std::uint32_t>(std::floor((hi[a] - lo[a]) * inv_cell_)) + 1;
+    double dense_cells = 1;
+    for (int a = 0; a < 3; ++a) {
+        const double cells = std::floor((hi[a] - lo[a]) * inv_cell_) + 1;
+        if (!(cells <= max_axis_cells)) {
+            // More cells than a key holds (points 1e7 cells apart): the grid covers the
+            // max_axis_cells around the median and clamps the few points beyond into its border
+            // cells. Queries stay exact: a clamped point lies further out than its cell.
+            std::vector<double> v;
+            for (double c : axes[a])
+                if (std::isfinite(c)) v.push_back(c);
+            std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+            origin_[a] = std::max(lo[a], v[v.size() / 2] - 0.5 * max_axis_cells * cell_);
+            n_[a] = static_cast<std::uint32_t>(max_axis_cells);
+        } else {
+            n_[a] = static_cast<std::uint32_t>(cells);
+        }
+        dense_cells *= n_[a];
+    }
+    hashed_ = dense_cells > 2.0 * static_cast<double>(n) + 64.0;
+    if (hashed_) bin_hashed(x, y, z);
+    else bin_dense(x, y, z);
+}
 
-    // Counting sort by cell.
-    const std::size_t cells = static_cast<std::size_t>(n_[0]) * n_[1] * n_[2];
+NeighbourGrid::Cell NeighbourGrid::cell_of(double px, double py, double pz) const {
+    Cell c{};
+    const double p[3] = {px, py, pz};
+    for (int a = 0; a < 3; ++a) {
+        const double f = std::floor((p[a] - origin_[a]) * inv_cell_);
+        c[a] = !(f > 0) ? 0 : f >= n_[a] - 1 ? n_[a] - 1 : static_cast<std::uint32_t>(f);  // NaN → 0
+    }
+    return c;
+}
+
+void NeighbourGrid::bin_dense(std::span<const double> x, std::span<const double> y, std::span<const double> z) {
+    const std::size_t n = x.size(), cells = static_cast<std::size_t>(n_[0]) * n_[1] * n_[2];
     start_.assign(cells + 1, 0);
     std::vector<std::uint32_t> cell_id(n);
     for (std::size_t i = 0; i < n; ++i) {
-        auto c = cell_of(x[i], y[i], z[i]);
-        cell_id[i] = static_cast<std::uint32_t>(cell_index(c[0], c[1], c[2]));
+        const Cell c = cell_of(x[i], y[i], z[i]);
+        cell_id[i] = static_cast<std::uint32_t>(index(c[0], c[1], c[2]));
         ++start_[cell_id[i] + 1];
     }
-    for (std::size_t c = 0; c < cells; ++c) start_[c + 1] += start_[c];
+    for (std::size_t c = 0; c < cells; ++c) {
+        if (start_[c + 1]) occupied_.push_back(c);
+        start_[c + 1] += start_[c];
+    }
+    gather(x, y, z, cell_id);
+}
+
+void NeighbourGrid::bin_hashed(std::span<const double> x, std::span<const double> y, std::span<const double> z) {
+    const std::size_t n = x.size();
+    std::vector<std::uint64_t> keys(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Cell c = cell_of(x[i], y[i], z[i]);
+        keys[i] = key(c[0], c[1], c[2]);
+    }
+    occupied_ = keys;
+    std::sort(occupied_.begin(), occupied_.end());
+    occupied_.erase(std::unique(occupied_.begin(), occupied_.end()), occupied_.end());
+    std::size_t capacity = 16;
+    while (capacity < 2 * occupied_.size()) capacity *= 2;
+    table_keys_.assign(capacity, 0);
+    table_ids_.assign(capacity, none);
+    for (std::size_t o = 0; o < occupied_.size(); ++o) {
+        std::size_t slot = (occupied_[o] * 0x9E3779B97F4A7C15ull) >> 20 & (capacity - 1);
+        while (table_keys_[slot]) slot = (slot + 1) & (capacity - 1);
+        table_keys_[slot] = occupied_[o] + 1;
+        table_ids_[slot] = static_cast<std::uint32_t>(o);
+    }
+    start_.assign(occupied_.size() + 1, 0);
+    std::vector<std::uint32_t> cell_id(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        cell_id[i] = find(keys[i]);
+        ++start_[cell_id[i] + 1];
+    }
+    for (std::size_t o = 0; o < occupied_.size(); ++o) start_[o + 1] += start_[o];
+    gather(x, y, z, cell_id);
+}
+
+void NeighbourGrid::gather(std::span<const double> x, std::span<const double> y, std::span<const double> z,
+                           const std::vector<std::uint32_t>& cell_id) {
+    const std::size_t n = x.size();
     std::vector<std::uint32_t> next(start_.begin(), start_.end() - 1);
     order_.resize(n);
     x_.resize(n), y_.resize(n), z_.resize(n);
@@ -53,25 +118,48 @@ NeighbourGrid::NeighbourGrid(std::span<const double> x, std::span<const double> 
     }
 }
 
-std::array<std::uint32_t, 3> NeighbourGrid::cell_of(double px, double py, double pz) const {
-    std::array<std::uint32_t, 3> c{};
-    const double p[3] = {px, py, pz};
-    for (int a = 0; a < 3; ++a) {
-        const double f = std::floor((p[a] - origin_[a]) * inv_cell_);
-        c[a] = f <= 0 ? 0 : f >= n_[a] - 1 ? n_[a] - 1 : static_cast<std::uint32_t>(f);
+NeighbourGrid::Cell NeighbourGrid::decode(std::uint64_t k) const {
+    if (hashed_) {
+        constexpr std::uint64_t mask = (1u << axis_bits) - 1;
+        return {static_cast<std::uint32_t>(k & mask), static_cast<std::uint32_t>(k >> axis_bits & mask),
+                static_cast<std::uint32_t>(k >> (2 * axis_bits))};
     }
-    return c;
+    return {static_cast<std::uint32_t>(k % n_[0]), static_cast<std::uint32_t>(k / n_[0] % n_[1]),
+            static_cast<std::uint32_t>(k / n_[0] / n_[1])};
 }
 
-bool NeighbourGrid::block_covers_grid(std::array<std::uint32_t, 3> c, std::uint32_t reach) const {
+std::uint32_t NeighbourGrid::find(std::uint64_t k) const {
+    const std::size_t capacity = table_keys_.size();
+    for (std::size_t slot = (k * 0x9E3779B97F4A7C15ull) >> 20 & (capacity - 1);; slot = (slot + 1) & (capacity - 1)) {
+        if (table_keys_[slot] == k + 1) return table_ids_[slot];
+        if (table_keys_[slot] == 0) return none;
+    }
+}
+
+NeighbourGrid::Range NeighbourGrid::hashed_row_range(std::uint32_t x0, std::uint32_t x1, std::uint32_t iy,
+                                                     std::uint32_t iz) const {
+    std::uint32_t first = none, last = none, at = x0;
+    for (; at <= x1 && first == none; ++at) first = find(key(at, iy, iz));
+    if (first == none) return {0, 0};
+    for (std::uint32_t back = x1; back + 1 >= at && last == none; --back) last = find(key(back, iy, iz));
+    return {start_[first], start_[last + 1]};
+}
+
+bool NeighbourGrid::block_covers_grid(Cell c, std::uint32_t reach) const {
     for (int a = 0; a < 3; ++a)
         if (c[a] > reach || c[a] + reach < n_[a] - 1) return false;
     return true;
 }
 
-double NeighbourGrid::block_clearance(double px, double py, double pz, std::uint32_t reach) const {
+double NeighbourGrid::block_cells(Cell c, std::uint32_t reach) const {
+    double cells = 1;
+    for (int a = 0; a < 3; ++a)
+        cells *= std::min<double>(double(c[a]) + reach, n_[a] - 1) - std::max<double>(double(c[a]) - reach, 0) + 1;
+    return cells;
+}
+
+double NeighbourGrid::block_clearance(double px, double py, double pz, Cell c, std::uint32_t reach) const {
     const double p[3] = {px, py, pz};
-    const auto c = cell_of(px, py, pz);
     double clearance = std::numeric_limits<double>::infinity();
     for (int a = 0; a < 3; ++a) {
         if (c[a] > reach)  // cells exist below the block
@@ -81,6 +169,15 @@ double NeighbourGrid::block_clearance(double px, double py, double pz, std::uint
     }
     // A margin for the rounding of cell boundaries: never claim more than is certain.
     return clearance - 1e-9 * cell_;
+}
+
+double NeighbourGrid::crowding() const {
+    double sum = 0;
+    for (std::size_t o = 0; o < occupied(); ++o) {
+        const auto [b, e] = occupied_range(o);
+        sum += double(e - b) * double(e - b);
+    }
+    return size() ? sum / static_cast<double>(size()) : 0.0;
 }
 
 }  // namespace sphdeck::preproc

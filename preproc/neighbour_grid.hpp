@@ -1,34 +1,41 @@
 // A uniform cell-list neighbour grid (sph-algorithms.md §12.1): cubic cells of one edge length,
 // particles binned by a counting sort and copied in cell order (row-major cells, x fastest), so
-// that the particles of one cell, and of three cells side by side along x, are contiguous.
-// Built once per query set; rebuilding is cheap (about 15 ms per million particles), so a solver
-// can rebuild every step. The cell edge should be at least the largest search radius: then a
-// radius query only visits the 3x3x3 block of cells around a particle.
+// that the particles of one cell, and of a run of cells along x, are contiguous. Built once per
+// query set; rebuilding is cheap (a few tens of ms per million particles), so a solver can
+// rebuild every step. With the cell edge at least the largest search radius, a radius query
+// visits the 3x3x3 block of cells around a particle: nine contiguous row ranges.
 //
-// The grid is dense over the bounding box. When that box would need more than a few cells per
-// particle (a sparse domain, e.g. a projectile far from its target), the cell edge is enlarged
-// until it does not; queries stay correct, only slower (a hashed grid would be the next step).
+// Dense or hashed: the grid is dense over the bounding box when that takes at most about two
+// cells per point (the usual case: one counting sort, rows found by indexing). A sparse domain
+// (a projectile far from its target, a stray particle far from its part) would need far more
+// empty cells; the occupied cells are then sorted by key and found through a hash table, with
+// the same cell size and the same queries (sph-algorithms.md §12.1, item 3).
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace sphdeck::preproc {
 
 class NeighbourGrid {
 public:
+    using Cell = std::array<std::uint32_t, 3>;
+    using Range = std::pair<std::uint32_t, std::uint32_t>;  // sorted positions [first, second)
+
     NeighbourGrid() = default;
-    // Bins the points (x[i], y[i], z[i]); `cell_size` > 0 is the smallest edge wanted.
+    // Bins the points (x[i], y[i], z[i]); `cell_size` > 0 is the cell edge wanted. Non-finite
+    // coordinates are binned into the border cells.
     NeighbourGrid(std::span<const double> x, std::span<const double> y, std::span<const double> z,
                   double cell_size);
 
     std::size_t size() const { return order_.size(); }
     double cell_size() const { return cell_; }
-    std::array<std::uint32_t, 3> cells() const { return {n_[0], n_[1], n_[2]}; }
-    std::size_t cell_count() const { return start_.empty() ? 0 : start_.size() - 1; }
+    bool hashed() const { return hashed_; }
+    Cell cells() const { return n_; }  // cells along each axis (of the bounding box)
 
     // Sorted (cell-order) position k holds the input point order()[k].
     const std::vector<std::uint32_t>& order() const { return order_; }
@@ -37,27 +44,74 @@ public:
     const std::vector<double>& y() const { return y_; }
     const std::vector<double>& z() const { return z_; }
 
-    // Cell coordinates of a point, clamped into the grid.
-    std::array<std::uint32_t, 3> cell_of(double px, double py, double pz) const;
-    std::size_t cell_index(std::uint32_t ix, std::uint32_t iy, std::uint32_t iz) const {
-        return (static_cast<std::size_t>(iz) * n_[1] + iy) * n_[0] + ix;
+    // The occupied cells, in cell order: their coordinates and sorted ranges.
+    std::size_t occupied() const { return occupied_.size(); }
+    Cell occupied_cell(std::size_t o) const { return decode(occupied_[o]); }
+    Range occupied_range(std::size_t o) const {
+        return hashed_ ? Range{start_[o], start_[o + 1]}
+                       : Range{start_[occupied_[o]], start_[occupied_[o] + 1]};
     }
-    // Sorted positions [begin, end) of the points of cell `c`.
-    std::uint32_t cell_begin(std::size_t c) const { return start_[c]; }
-    std::uint32_t cell_end(std::size_t c) const { return start_[c + 1]; }
+
+    // Cell coordinates of a point, clamped into the grid.
+    Cell cell_of(double px, double py, double pz) const;
+
+    // The points of cells x0..x1 (x0 <= x1 < cells()[0]) of row (iy, iz): one sorted range.
+    Range row_range(std::uint32_t x0, std::uint32_t x1, std::uint32_t iy, std::uint32_t iz) const {
+        if (!hashed_) return {start_[index(x0, iy, iz)], start_[index(x1, iy, iz) + 1]};
+        return hashed_row_range(x0, x1, iy, iz);
+    }
 
     // Calls f(begin, end) for the sorted ranges covering the (2*reach+1)^3 block of cells around
-    // cell (ix, iy, iz), clipped to the grid: one range per (y, z) row of the block.
+    // cell c, clipped to the grid: one range per (y, z) row of the block.
     template <typename F>
-    void for_each_block_range(std::array<std::uint32_t, 3> c, std::uint32_t reach, F&& f) const {
+    void for_each_block_range(Cell c, std::uint32_t reach, F&& f) const {
         const std::uint32_t x0 = c[0] > reach ? c[0] - reach : 0, x1 = std::min(c[0] + reach, n_[0] - 1);
         const std::uint32_t y0 = c[1] > reach ? c[1] - reach : 0, y1 = std::min(c[1] + reach, n_[1] - 1);
         const std::uint32_t z0 = c[2] > reach ? c[2] - reach : 0, z1 = std::min(c[2] + reach, n_[2] - 1);
         for (std::uint32_t iz = z0; iz <= z1; ++iz)
             for (std::uint32_t iy = y0; iy <= y1; ++iy) {
-                const std::uint32_t b = start_[cell_index(x0, iy, iz)], e = start_[cell_index(x1, iy, iz) + 1];
+                const auto [b, e] = row_range(x0, x1, iy, iz);
                 if (b != e) f(b, e);
             }
+    }
+
+    // A row of cells relative to a cell (ix, iy, iz): x from ix + dx0 to ix + dx1, at iy + dy, iz + dz.
+    struct RowOffset {
+        int dx0, dx1, dy, dz;
+    };
+
+    // Walks the occupied cells in order: f(o, cell, ranges) with one sorted range per row offset
+    // (empty when the row is outside the grid or holds no point). Cheaper than row_range() per
+    // cell on a hashed grid: one cursor per row offset moves forward through the occupied cells.
+    template <typename F>
+    void for_each_cell_rows(std::span<const RowOffset> rows, F&& f) const {
+        std::vector<Range> ranges(rows.size());
+        std::vector<std::size_t> cursor(rows.size(), 0);
+        const std::size_t count = occupied();
+        for (std::size_t o = 0; o < count; ++o) {
+            const Cell c = occupied_cell(o);
+            for (std::size_t r = 0; r < rows.size(); ++r) {
+                const RowOffset& row = rows[r];
+                const long long y = static_cast<long long>(c[1]) + row.dy, z = static_cast<long long>(c[2]) + row.dz;
+                const long long x0 = std::max<long long>(0, static_cast<long long>(c[0]) + row.dx0);
+                const long long x1 = std::min<long long>(n_[0] - 1, static_cast<long long>(c[0]) + row.dx1);
+                ranges[r] = {0, 0};
+                if (y < 0 || y >= n_[1] || z < 0 || z >= n_[2] || x0 > x1) continue;
+                const auto yy = static_cast<std::uint32_t>(y), zz = static_cast<std::uint32_t>(z);
+                if (!hashed_) {
+                    ranges[r] = row_range(static_cast<std::uint32_t>(x0), static_cast<std::uint32_t>(x1), yy, zz);
+                    continue;
+                }
+                const std::uint64_t first = key(static_cast<std::uint32_t>(x0), yy, zz);
+                const std::uint64_t last = key(static_cast<std::uint32_t>(x1), yy, zz);
+                std::size_t& at = cursor[r];
+                while (at < count && occupied_[at] < first) ++at;
+                std::size_t end = at;
+                while (end < count && occupied_[end] <= last) ++end;
+                ranges[r] = {start_[at], start_[end]};
+            }
+            f(o, c, ranges);
+        }
     }
 
     // Calls f(j, r2) for every sorted point j != k within `radius` (r2 < radius^2) of sorted point
@@ -74,17 +128,42 @@ public:
         });
     }
 
-    // Distance from (px, py, pz) to the outside of the block of `reach` cells around its cell:
-    // every point outside the block is at least this far. Infinite when the block covers the grid.
-    double block_clearance(double px, double py, double pz, std::uint32_t reach) const;
-    // Whether the block of `reach` cells around cell c covers the whole grid.
-    bool block_covers_grid(std::array<std::uint32_t, 3> c, std::uint32_t reach) const;
+    // Distance from (px, py, pz), a point of cell c, to the outside of the block of `reach` cells
+    // around c: every point binned outside the block is at least this far (a point clamped into a
+    // border cell lies even further out). Infinite when the block covers the grid.
+    double block_clearance(double px, double py, double pz, Cell c, std::uint32_t reach) const;
+    bool block_covers_grid(Cell c, std::uint32_t reach) const;
+    // Cells in the block of `reach` around c, clipped to the grid.
+    double block_cells(Cell c, std::uint32_t reach) const;
+
+    // Points per occupied cell, averaged over points (sum of n_c^2 / n): about 1-2 for a cell
+    // matched to the spacing, far more when the cell is too large for the dense parts.
+    double crowding() const;
 
 private:
+    static constexpr std::uint32_t none = 0xFFFFFFFFu;
+    std::size_t index(std::uint32_t ix, std::uint32_t iy, std::uint32_t iz) const {
+        return (static_cast<std::size_t>(iz) * n_[1] + iy) * n_[0] + ix;
+    }
+    std::uint64_t key(std::uint32_t ix, std::uint32_t iy, std::uint32_t iz) const {
+        return hashed_ ? (std::uint64_t{iz} << 42) | (std::uint64_t{iy} << 21) | ix : index(ix, iy, iz);
+    }
+    Cell decode(std::uint64_t k) const;
+    std::uint32_t find(std::uint64_t k) const;  // occupied id of a hashed cell, or `none`
+    Range hashed_row_range(std::uint32_t x0, std::uint32_t x1, std::uint32_t iy, std::uint32_t iz) const;
+    void bin_dense(std::span<const double> x, std::span<const double> y, std::span<const double> z);
+    void bin_hashed(std::span<const double> x, std::span<const double> y, std::span<const double> z);
+    void gather(std::span<const double> x, std::span<const double> y, std::span<const double> z,
+                const std::vector<std::uint32_t>& cell_id);
+
     double cell_ = 1.0, inv_cell_ = 1.0;
     std::array<double, 3> origin_{};
-    std::array<std::uint32_t, 3> n_{1, 1, 1};
-    std::vector<std::uint32_t> start_;  // cell_count() + 1 offsets into the sorted arrays
+    Cell n_{1, 1, 1};
+    bool hashed_ = false;
+    std::vector<std::uint32_t> start_;     // dense: per cell + 1; hashed: per occupied cell + 1
+    std::vector<std::uint64_t> occupied_;  // dense: cell index; hashed: key; in cell order
+    std::vector<std::uint64_t> table_keys_;  // hashed: open addressing, key + 1 (0 = empty)
+    std::vector<std::uint32_t> table_ids_;
     std::vector<std::uint32_t> order_;
     std::vector<double> x_, y_, z_;
 };

@@ -1,3 +1,14 @@
+// The preview of an SPH model (design.md, preproc/): per part the particle spacing, the initial
+// smoothing length h0 by INI mode, neighbour counts within the kernel support, the sound speed
+// and stable time-step estimates; per particle the same values in model order. A pure function
+// of the Model: no printing, no files. Formulas: docs/preview.md and
+// /work/shared/reference/sph-algorithms.md §1, §2, §7, §10, §12.
+//
+// - Parts are listed by id; a part is any PID that particles name (defined or not).
+// - Nearest neighbours are searched within the same part (the h0 rule of *SECTION_SPH); with
+//   INI 1 over all pairs, otherwise on the grid; both give the same distances (nearest_neighbours.hpp).
+// - Neighbour counts take every particle of every part, within (support_i + support_j) / 2.
+// - ParticlePreview::mass is the mass a particle carries: RO * |volume| for a volume.
 #pragma once
 #include <cstdint>
 #include <functional>

@@ -72,33 +72,63 @@ model::Model model_of(const std::string& deck) {
 
 }  // namespace
 
-TEST_CASE("preview: the grid sorts every point into its cell, in cell order") {
-    const Cloud c = jittered(12, 3, 0.4, 1);
-    const preproc::NeighbourGrid g(c.x, c.y, c.z, 1.7);
-    REQUIRE(g.size() == c.size());
-    std::vector<std::uint32_t> seen(g.order());
-    std::sort(seen.begin(), seen.end());
-    for (std::size_t i = 0; i < seen.size(); ++i) CHECK(seen[i] == i);
-    std::size_t previous = 0;
-    for (std::size_t k = 0; k < g.size(); ++k) {
-        const std::uint32_t i = g.order()[k];
-        CHECK(g.x()[k] == c.x[i]);
-        const auto cell = g.cell_of(g.x()[k], g.y()[k], g.z()[k]);
-        const std::size_t index = g.cell_index(cell[0], cell[1], cell[2]);
-        CHECK(index >= previous);
-        CHECK(k >= g.cell_begin(index));
-        CHECK(k < g.cell_end(index));
-        previous = index;
-    }
-    // Radius queries equal brute force.
-    for (std::uint32_t k = 0; k < g.size(); k += 37) {
-        std::size_t found = 0, expected = 0;
-        g.for_each_neighbour(k, 1.7, [&](std::uint32_t, double) { ++found; });
-        for (std::uint32_t j = 0; j < g.size(); ++j) {
-            const double dx = g.x()[k] - g.x()[j], dy = g.y()[k] - g.y()[j], dz = g.z()[k] - g.z()[j];
-            expected += j != k && dx * dx + dy * dy + dz * dz < 1.7 * 1.7;
+TEST_CASE("preview: the grid sorts every point into its cell, in cell order, dense or hashed") {
+    for (bool sparse : {false, true}) {
+        CAPTURE(sparse);
+        Cloud c = jittered(12, 3, 0.4, 1);
+        if (sparse) c.add(5.0e4, 2.0, 2.0);  // far away: a dense grid would need 1e8 cells
+        const preproc::NeighbourGrid g(c.x, c.y, c.z, 1.7);
+        CHECK(g.hashed() == sparse);
+        REQUIRE(g.size() == c.size());
+        std::vector<std::uint32_t> seen(g.order());
+        std::sort(seen.begin(), seen.end());
+        for (std::size_t i = 0; i < seen.size(); ++i) CHECK(seen[i] == i);
+        // The occupied cells tile the sorted points in order, each point inside its own cell.
+        std::uint32_t next = 0;
+        std::array<std::uint32_t, 3> previous{0, 0, 0};
+        for (std::size_t o = 0; o < g.occupied(); ++o) {
+            const auto cell = g.occupied_cell(o);
+            const auto [b, e] = g.occupied_range(o);
+            CHECK(b == next);
+            CHECK(e > b);
+            next = e;
+            if (o) CHECK(std::array{cell[2], cell[1], cell[0]} > std::array{previous[2], previous[1], previous[0]});
+            previous = cell;
+            for (std::uint32_t k = b; k < e; ++k) {
+                CHECK(g.x()[k] == c.x[g.order()[k]]);
+                CHECK(g.cell_of(g.x()[k], g.y()[k], g.z()[k]) == cell);
+            }
+            CHECK(g.row_range(cell[0], cell[0], cell[1], cell[2]) == g.occupied_range(o));
         }
-        CHECK(found == expected);
+        CHECK(next == g.size());
+        // The walker's rows equal row_range.
+        static constexpr preproc::NeighbourGrid::RowOffset rows[] = {{-1, 1, -1, 0}, {-1, 1, 1, 1}, {1, 1, 0, 0}};
+        g.for_each_cell_rows(rows, [&](std::size_t, preproc::NeighbourGrid::Cell cell, const auto& ranges) {
+            for (std::size_t r = 0; r < 3; ++r) {
+                const long long y = static_cast<long long>(cell[1]) + rows[r].dy;
+                const long long z = static_cast<long long>(cell[2]) + rows[r].dz;
+                const long long x0 = std::max<long long>(0, static_cast<long long>(cell[0]) + rows[r].dx0);
+                const long long x1 = std::min<long long>(g.cells()[0] - 1, static_cast<long long>(cell[0]) + rows[r].dx1);
+                if (y < 0 || z < 0 || y >= g.cells()[1] || z >= g.cells()[2] || x0 > x1) {
+                    CHECK(ranges[r].first == ranges[r].second);
+                    continue;
+                }
+                const auto expected = g.row_range(static_cast<std::uint32_t>(x0), static_cast<std::uint32_t>(x1),
+                                                  static_cast<std::uint32_t>(y), static_cast<std::uint32_t>(z));
+                CHECK(ranges[r].second - ranges[r].first == expected.second - expected.first);
+                if (expected.first != expected.second) CHECK(ranges[r] == expected);
+            }
+        });
+        // Radius queries equal brute force.
+        for (std::uint32_t k = 0; k < g.size(); k += 37) {
+            std::size_t found = 0, expected = 0;
+            g.for_each_neighbour(k, 1.7, [&](std::uint32_t, double) { ++found; });
+            for (std::uint32_t j = 0; j < g.size(); ++j) {
+                const double dx = g.x()[k] - g.x()[j], dy = g.y()[k] - g.y()[j], dz = g.z()[k] - g.z()[j];
+                expected += j != k && dx * dx + dy * dy + dz * dz < 1.7 * 1.7;
+            }
+            CHECK(found == expected);
+        }
     }
 }
 
@@ -128,6 +158,12 @@ TEST_CASE("preview: grid nearest neighbours equal all pairs on jittered and rand
     Cloud same;
     for (int i = 0; i < 5; ++i) same.add(1, 1, 1);
     for (double d : preproc::nearest_neighbours_grid(same.x, same.y, same.z).distance) CHECK(d == 0.0);
+    // Far-apart clusters and a stray far beyond what a grid key holds: hashed, clamped grids.
+    Cloud far = jittered(10, 3, 0.3, 9);
+    for (int i = 0; i < 200; ++i) far.add(far.x[i] + 1.0e5, far.y[i], far.z[i] + 0.5);
+    far.add(-3.0e9, 1.0, 1.0);
+    const auto far_grid = preproc::nearest_neighbours_grid(far.x, far.y, far.z);
+    CHECK(far_grid.distance == preproc::nearest_neighbours_all_pairs(far.x, far.y, far.z).distance);
     Cloud line;
     for (int i = 0; i < 50; ++i) line.add(i * 0.25 + (i % 3) * 0.01, 0, 0);
     const auto a = preproc::nearest_neighbours_grid(line.x, line.y, line.z);
