@@ -71,7 +71,7 @@ print(' '.join(sorted(a.get('Name') for a in piece.findall('./PointData/DataArra
 // Reads the file with VTK's XML reader: no error event, the points, verts and arrays expected.
 constexpr const char* vtp_vtk_py = R"PY(
 import sys, vtk
-path, n, names = sys.argv[1], int(sys.argv[2]), sys.argv[3].split(',')
+path, n, names = sys.argv[1], int(sys.argv[2]), [a for a in sys.argv[3].split(',') if a]
 reader = vtk.vtkXMLPolyDataReader()
 reader.SetFileName(path)
 errors = []
