@@ -1,5 +1,7 @@
 #include "io/svg_histogram.hpp"
 
+#include "io/xml_escape.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -22,19 +24,6 @@ double nice_step(double raw, bool integer) {
     return 10.0 * p;
 }
 
-std::string escape(std::string_view s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += static_cast<unsigned char>(c) < 0x20 ? '?' : c;  // control bytes are not XML
-        }
-    }
-    return out;
-}
 
 std::string number(double v) {
     if (std::abs(v) < 1e-300) v = 0.0;  // no "-0"
@@ -53,7 +42,7 @@ void draw_panel(std::string& svg, const HistogramPanel& panel, const Box& box, s
         if (std::isfinite(v)) finite.push_back(v);
 
     fmt::format_to(out, "<g>\n<text x=\"{:.1f}\" y=\"{:.1f}\" class=\"title\">{}</text>\n", box.x + box.w / 2,
-                   box.y + 20, escape(panel.title));
+                   box.y + 20, xml_escape(panel.title));
     std::string subtitle = fmt::format("n = {}", finite.size());
     if (!finite.empty()) {
         auto mid = finite.begin() + static_cast<std::ptrdiff_t>(finite.size() / 2);
@@ -63,12 +52,12 @@ void draw_panel(std::string& svg, const HistogramPanel& panel, const Box& box, s
     }
     if (bins.skipped > 0) subtitle += fmt::format(", {} non-finite left out", bins.skipped);
     fmt::format_to(out, "<text x=\"{:.1f}\" y=\"{:.1f}\" class=\"subtitle\">{}</text>\n", box.x + box.w / 2,
-                   box.y + 37, escape(subtitle));
+                   box.y + 37, xml_escape(subtitle));
 
     const double x0 = box.x + 64, y0 = box.y + 56, pw = box.w - 64 - 24, ph = box.h - 56 - 52;
     const double ybase = y0 + ph;
     fmt::format_to(out, "<text x=\"{:.1f}\" y=\"{:.1f}\" class=\"label\">{}</text>\n", x0 + pw / 2, box.y + box.h - 10,
-                   escape(panel.x_label));
+                   xml_escape(panel.x_label));
     fmt::format_to(out,
                    "<text x=\"{0:.1f}\" y=\"{1:.1f}\" class=\"label\" transform=\"rotate(-90 {0:.1f} {1:.1f})\">"
                    "particles</text>\n",
@@ -212,7 +201,7 @@ std::string svg_histograms(std::span<const HistogramPanel> panels, const SvgOpti
     fmt::format_to(out, "<rect x=\"0\" y=\"0\" width=\"{}\" height=\"{}\" fill=\"white\"/>\n", width, height);
     if (!options.title.empty())
         fmt::format_to(out, "<text x=\"{:.1f}\" y=\"24\" class=\"heading\">{}</text>\n", width / 2,
-                       escape(options.title));
+                       xml_escape(options.title));
     for (std::size_t i = 0; i < panels.size(); ++i) {
         const Box box{static_cast<double>(static_cast<int>(i) % columns) * options.panel_width,
                       head + static_cast<double>(static_cast<int>(i) / columns) * options.panel_height,

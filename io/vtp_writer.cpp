@@ -1,5 +1,7 @@
 #include "io/vtp_writer.hpp"
 
+#include "io/xml_escape.hpp"
+
 #include <bit>
 #include <cstring>
 #include <fmt/format.h>
@@ -97,19 +99,6 @@ struct Block {
     }
 };
 
-std::string escape_attribute(std::string_view s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
-        }
-    }
-    return out;
-}
 
 Block column_block(const Column& c) {
     Block b;
@@ -175,7 +164,7 @@ void write_vtp(std::ostream& out, const VtpPoints& points, VtpEncoding encoding)
     Sink sink(out, encoding);
     auto header = [&](std::size_t i, std::string_view indent) {
         const Block& b = blocks[i];
-        sink.raw(fmt::format("{}<DataArray type=\"{}\" Name=\"{}\"", indent, b.type, escape_attribute(b.name)));
+        sink.raw(fmt::format("{}<DataArray type=\"{}\" Name=\"{}\"", indent, b.type, xml_escape(b.name)));
         if (b.components != 1) sink.raw(fmt::format(" NumberOfComponents=\"{}\"", b.components));
         if (ascii) {
             sink.raw(" format=\"ascii\">\n");
