@@ -25,5 +25,8 @@ std::function<int()> setup_rules(CLI::App& app);
 std::function<int()> setup_keyword(CLI::App& app);
 std::function<int()> setup_dump(CLI::App& app);
 std::function<int()> setup_smooth(CLI::App& app);
+std::function<int()> setup_sol2sph(CLI::App& app);
+std::function<int()> setup_run(CLI::App& app);
+std::function<int()> setup_verify(CLI::App& app);
 
 }  // namespace sphdeck::cli
