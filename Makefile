@@ -4,7 +4,7 @@ BUILD_ASAN ?= build-asan
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build demo test test-asan bench clean
+.PHONY: all deps build demo test test-asan bench verify clean
 
 all: build
 
@@ -31,6 +31,11 @@ test-asan: deps
 
 bench: build
 	bash bench/run_reader_bench.sh $(BUILD)
+	$(BUILD)/bench_refsolver
+
+# The full verification suite (docs/verification.md): reports in verification-out/.
+verify: build
+	./$(BUILD)/sphdeck verify all --out verification-out
 
 clean:
 	rm -rf $(BUILD) $(BUILD_ASAN)

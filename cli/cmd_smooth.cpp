@@ -44,16 +44,20 @@ struct ParticleTable {
     std::vector<long long> id, part;
     std::vector<double> x, y, z, mass, nn_distance, h;
     std::vector<std::uint32_t> neighbours;
+    std::vector<std::uint32_t> planes;  // Radioss: symmetry planes each particle lies on (else empty)
     std::size_t left_out = 0;  // particles without a *NODE
 
     std::vector<io::Column> columns() const {
-        return {{"id", std::span<const long long>(id)},
-                {"part", std::span<const long long>(part)},
-                {"mass", std::span<const double>(mass)},
-                {"nn_distance", std::span<const double>(nn_distance)},
-                {"h", std::span<const double>(h)},
-                {"neighbours", std::span<const std::uint32_t>(neighbours)}};
+        std::vector<io::Column> out = {{"id", std::span<const long long>(id)},
+                                       {"part", std::span<const long long>(part)},
+                                       {"mass", std::span<const double>(mass)},
+                                       {"nn_distance", std::span<const double>(nn_distance)},
+                                       {"h", std::span<const double>(h)},
+                                       {"neighbours", std::span<const std::uint32_t>(neighbours)}};
+        if (planes_column) out.push_back({"planes", std::span<const std::uint32_t>(planes)});
+        return out;
     }
+    bool planes_column = false;
 };
 
 ParticleTable particle_table(const model::Model& m, const preproc::Preview& p) {
@@ -71,7 +75,9 @@ ParticleTable particle_table(const model::Model& m, const preproc::Preview& p) {
         t.nn_distance.push_back(pp.nn_distance[i]);
         t.h.push_back(pp.h[i]);
         t.neighbours.push_back(pp.neighbours[i]);
+        if (!pp.planes.empty()) t.planes.push_back(pp.planes[i]);
     }
+    t.planes_column = !pp.planes.empty();
     return t;
 }
 
@@ -128,6 +134,44 @@ nlohmann::ordered_json stats_json(const preproc::Stats& s) {
     return {{"min", s.min}, {"median", s.median}, {"max", s.max}};
 }
 
+// The Radioss additions (docs/json.md, docs/radioss.md): one object per part, one per deck.
+nlohmann::ordered_json radioss_part_json(const preproc::RadiossPartPreview& r) {
+    return {{"property", r.property},
+            {"mp", r.mp},
+            {"property_h", r.property_h},
+            {"h_1d", r.h_1d},
+            {"hcst", r.hcst},
+            {"h_rule", r.h_rule},
+            {"h_evolution", r.h_evolution},
+            {"h", {{"min", r.h_smallest}, {"median", r.h_median}, {"max", r.h_largest}}},
+            {"cells", {{"from_property", r.cells_from_property}, {"with_mass", r.cells_with_mass},
+                       {"with_volume", r.cells_with_volume}}},
+            {"mass_before_symmetry", r.mass_before},
+            {"mass_after_symmetry", r.mass_after},
+            {"on_planes", r.on_planes},
+            {"ghosts", r.ghosts},
+            {"ghosts_coded", r.ghosts_coded},
+            {"qa", r.qa},
+            {"qb", r.qb},
+            {"dt_particle", r.dt_particle},
+            {"dt_nodal", r.dt_nodal}};
+}
+
+nlohmann::ordered_json radioss_json(const preproc::RadiossPreview& r) {
+    nlohmann::ordered_json planes = nlohmann::ordered_json::array();
+    for (const preproc::RadiossPlanePreview& p : r.planes)
+        planes.push_back({{"id", p.id}, {"type", p.type}, {"origin", p.origin}, {"normal", p.normal},
+                          {"on_plane", p.on_plane}, {"ghosts", p.ghosts}, {"ghosts_coded", p.ghosts_coded}});
+    return {{"alpha_sort", r.alpha_sort},
+            {"h_max", r.h_max},
+            {"dt_scale_particle", r.dt_scale_particle},
+            {"dt_scale_nodal", r.dt_scale_nodal},
+            {"nodal", r.nodal},
+            {"engine_deck", r.engine_deck},
+            {"planes", std::move(planes)},
+            {"unknown_planes", r.unknown_planes}};
+}
+
 nlohmann::ordered_json to_json(const SmoothArgs& args, const lint::CheckResult& r, const preproc::Preview& p) {
     nlohmann::ordered_json parts = nlohmann::ordered_json::array();
     for (const preproc::PartPreview& pv : p.parts) {
@@ -150,8 +194,9 @@ nlohmann::ordered_json to_json(const SmoothArgs& args, const lint::CheckResult& 
                          {"ini", static_cast<int>(pv.ini)},
                          {"sphini_given", pv.sphini_given},
                          {"notes", split_notes(pv.notes)}});
+        if (pv.radioss) parts.back()["radioss"] = radioss_part_json(*pv.radioss);
     }
-    return {{"version", SPHDECK_VERSION},
+    nlohmann::ordered_json out = {{"version", SPHDECK_VERSION},
             {"deck", args.deck},
             {"dimension", p.dimension},
             {"particles", r.model.particles.size()},
@@ -159,6 +204,8 @@ nlohmann::ordered_json to_json(const SmoothArgs& args, const lint::CheckResult& 
             {"coincident_pairs", p.coincident.size()},
             {"neighbour_sample_stride", p.neighbour_sample_stride},
             {"parts", std::move(parts)}};
+    if (p.radioss) out["radioss"] = radioss_json(*p.radioss);
+    return out;
 }
 
 // Pads cells to aligned columns: numbers right-aligned, the last column (words) left-aligned.
@@ -180,11 +227,43 @@ void print_table(const std::vector<std::vector<std::string>>& rows) {
     }
 }
 
+// The Radioss values (docs/radioss.md): h rule, symmetry mass split, ghosts, time steps.
+void print_radioss(const preproc::Preview& p) {
+    const preproc::RadiossPreview& g = *p.radioss;
+    fmt::print("OpenRadioss parts: h0 is the median of the particles' h; h_min, h_max: hmin*h0, hmax*h0 with "
+               "h_1D 3, h0 with h_1D 2 (constant), 0 when h is unbounded (h_1D 0, 1)\n");
+    fmt::print("\nOpenRadioss (docs/radioss.md): alpha_sort {}, particle step scale {}{}{}\n", g4(g.alpha_sort),
+               g4(g.dt_scale_particle), g.nodal ? fmt::format(", /DT/NODA scale {}", g4(g.dt_scale_nodal)) : "",
+               g.engine_deck ? "" : " (no engine deck read: default scale)");
+    for (const preproc::PartPreview& pv : p.parts) {
+        if (!pv.radioss) continue;
+        const preproc::RadiossPartPreview& r = *pv.radioss;
+        fmt::print("part {}: h0 {} ({}), h {}..{}; {}\n", pv.part, g4(pv.h0), r.h_rule, g4(r.h_smallest),
+                   g4(r.h_largest), r.h_evolution);
+        fmt::print("part {}: mass {} before the symmetry split, {} after; particles on 1/2/3+ planes: {}/{}/{}\n",
+                   pv.part, g4(r.mass_before), g4(r.mass_after), r.on_planes[1], r.on_planes[2], r.on_planes[3]);
+        fmt::print("part {}: particle time step {} (qa {}, qb {}){}\n", pv.part,
+                   r.dt_particle > 0 ? g4(r.dt_particle) : "-", g4(r.qa), g4(r.qb),
+                   g.nodal ? fmt::format(", nodal time step {}", r.dt_nodal > 0 ? g4(r.dt_nodal) : "-") : "");
+        for (std::size_t k = 0; k < g.planes.size(); ++k)
+            fmt::print("part {}: /SPHBCS {}: {} particle(s) would create a ghost ({} by the coded bound)\n", pv.part,
+                       g.planes[k].id, r.ghosts[k], r.ghosts_coded[k]);
+    }
+    for (const preproc::RadiossPlanePreview& plane : g.planes)
+        fmt::print("/SPHBCS/{}/{}: {} particle(s) on the plane at t = 0, {} ghost(s) ({} by the coded bound)\n",
+                   plane.type, plane.id, plane.on_plane, plane.ghosts, plane.ghosts_coded);
+    for (long long id : g.unknown_planes) fmt::print("/SPHBCS {}: plane unknown (frame or Dir): left out\n", id);
+}
+
 void print_text(const SmoothArgs& args, const lint::CheckResult& r, const preproc::Preview& p) {
     const model::IniMode mode = p.parts.empty() ? model::IniMode::BucketSort : p.parts.front().ini;
-    fmt::print("{}: {} particles in {} part(s), {}D, INI {} ({}{})\n\n", args.deck, r.model.particles.size(),
-               p.parts.size(), p.dimension, static_cast<int>(mode), ini_name(mode),
-               args.ini ? ", forced by --ini" : ", from *CONTROL_SPH");
+    if (p.radioss)  // no INI: h as the OpenRadioss starter computes it
+        fmt::print("{}: {} particles in {} part(s), {}D, OpenRadioss deck (h0: the starter's rule, spinih.F)\n\n",
+                   args.deck, r.model.particles.size(), p.parts.size(), p.dimension);
+    else
+        fmt::print("{}: {} particles in {} part(s), {}D, INI {} ({}{})\n\n", args.deck, r.model.particles.size(),
+                   p.parts.size(), p.dimension, static_cast<int>(mode), ini_name(mode),
+                   args.ini ? ", forced by --ini" : ", from *CONTROL_SPH");
     std::vector<std::vector<std::string>> rows = {
         {"part", "particles", "mass", "spacing", "h0", "h_min", "h_max", "neighbours", "dt", "ini"}};
     for (const preproc::PartPreview& pv : p.parts) {
@@ -202,6 +281,7 @@ void print_text(const SmoothArgs& args, const lint::CheckResult& r, const prepro
         for (const std::string& note : split_notes(pv.notes)) fmt::print("part {}: {}\n", pv.part, note);
     if (!p.coincident.empty())
         fmt::print("warning: {} pair(s) of particles at the same position\n", p.coincident.size());
+    if (p.radioss) print_radioss(p);
 }
 
 int run_smooth(const SmoothArgs& args) {
@@ -259,7 +339,7 @@ int run_smooth(const SmoothArgs& args) {
 
 std::function<int()> setup_smooth(CLI::App& app) {
     auto args = std::make_shared<SmoothArgs>();
-    app.add_option("deck", args->deck, "LS-DYNA keyword deck")->required();
+    app.add_option("deck", args->deck, "LS-DYNA keyword deck or OpenRadioss starter deck")->required();
     app.add_option("--format", args->format, "output format")
         ->check(CLI::IsMember({"table", "json"}))
         ->capture_default_str();

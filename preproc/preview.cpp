@@ -9,6 +9,7 @@
 
 #include "model/id_index.hpp"
 #include "preproc/nearest_neighbours.hpp"
+#include "preproc/radioss_preview.hpp"
 #include "preproc/smoothing_length.hpp"
 #include "preproc/sound_speed.hpp"
 #include "preproc/time_step.hpp"
@@ -134,6 +135,22 @@ void preview_part(const model::Model& m, const PartGroups& groups, std::size_t q
     pv.nn_distance = stats_of(nn.distance);
     pv.spacing = pv.nn_distance.median;
 
+    const double tolerance = 1e-9 * pv.spacing;
+    for (std::size_t k = 0; k < located.size(); ++k) {
+        const std::uint32_t i = located[k];
+        pp.nn_distance[i] = nn.distance[k];
+        if (nn.index[k] != NearestNeighbours::none && nn.distance[k] <= tolerance) {
+            const std::uint32_t j = located[nn.index[k]];
+            out.coincident.emplace_back(std::min(i, j), std::max(i, j));
+        }
+    }
+    if (m.radioss) {  // h, masses and time steps as the OpenRadioss starter computes them
+        const std::span<const std::uint32_t> members(groups.members.data() + groups.begin[q],
+                                                     groups.begin[q + 1] - groups.begin[q]);
+        radioss_preview_part(m, members, q, out);
+        return;
+    }
+
     const SmoothingLength h = initial_smoothing_length({pm.section, mode, nn.distance, volumes, out.dimension});
     pv.h0 = h.h0;
     pv.sphini_given = h.from_sphini;
@@ -149,16 +166,7 @@ void preview_part(const model::Model& m, const PartGroups& groups, std::size_t q
     if (section.kernel.value == model::Kernel::Quadratic || section.kernel.value == model::Kernel::QuarticBSpline)
         add_note(pv.notes, "kernel support assumed 2h (SPHKERN 2 and 3 are not documented)");
 
-    const double tolerance = 1e-9 * pv.spacing;
-    for (std::size_t k = 0; k < located.size(); ++k) {
-        const std::uint32_t i = located[k];
-        pp.nn_distance[i] = nn.distance[k];
-        pp.h[i] = pv.h0;
-        if (nn.index[k] != NearestNeighbours::none && nn.distance[k] <= tolerance) {
-            const std::uint32_t j = located[nn.index[k]];
-            out.coincident.emplace_back(std::min(i, j), std::max(i, j));
-        }
-    }
+    for (const std::uint32_t i : located) pp.h[i] = pv.h0;
 
     const SoundSpeed c = sound_speed(m, pm.material, pm.eos);
     pv.sound_speed = c.c;
@@ -187,7 +195,7 @@ void count_all_neighbours(const model::Model& m, Preview& out) {
     }
     for (std::size_t k = 0; k < located.size(); ++k) {
         const PartPreview& pv = out.parts[pp.part[located[k]]];
-        support[k] = pv.support;
+        support[k] = out.radioss ? 2.0 * pp.h[located[k]] : pv.support;  // Radioss: h per particle
         tolerance[k] = 1e-9 * pv.spacing;
     }
     NeighbourCounts counts = count_neighbours(x, y, z, support, tolerance);
@@ -235,6 +243,7 @@ Preview compute_preview(const model::Model& m, const PreviewOptions& options) {
     out.parts.resize(groups.ids.size());
     progress(0.05);
 
+    if (m.radioss) out.radioss = radioss_preview_setup(m);
     const model::IniMode mode = options.ini.value_or(m.controls.sph.ini.value);
     // Nearest neighbours take about half the work (all of it with INI 1): 0.05 .. 0.6 (0.9).
     const double nn_share = mode == model::IniMode::Global ? 0.85 : 0.55;
@@ -247,6 +256,7 @@ Preview compute_preview(const model::Model& m, const PreviewOptions& options) {
         done += size;
         progress(start + share);
     }
+    if (out.radioss) radioss_count_ghosts(out);
     count_all_neighbours(m, out);
     std::sort(out.coincident.begin(), out.coincident.end());
     out.coincident.erase(std::unique(out.coincident.begin(), out.coincident.end()), out.coincident.end());

@@ -9,6 +9,8 @@
 //   INI 1 over all pairs, otherwise on the grid; both give the same distances (nearest_neighbours.hpp).
 // - Neighbour counts take every particle of every part, within (support_i + support_j) / 2.
 // - ParticlePreview::mass is the mass a particle carries: RO * |volume| for a volume.
+// - Radioss decks (Model::radioss): h per particle as the starter computes it, h0 the part's
+//   median h, masses after the symmetry split, and the `radioss` members (docs/radioss.md).
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -17,6 +19,7 @@
 #include <utility>
 #include <vector>
 #include "model/model.hpp"
+#include "preproc/radioss_preview_types.hpp"
 namespace sphdeck::preproc {
 struct Stats { double min = 0, median = 0, max = 0; };
 struct PreviewOptions {
@@ -42,6 +45,7 @@ struct PartPreview {
     double density = 0;          // rho0 of the part's material (0 when unknown)
     double mass_median = 0;      // median particle mass
     std::string sound_source;    // where the sound speed comes from ("*EOS_MURNAGHAN", ...)
+    std::optional<RadiossPartPreview> radioss;  // Radioss decks only (docs/radioss.md)
 };
 struct ParticlePreview {        // one entry per particle, in model order
     std::vector<double> x, y, z, mass, nn_distance, h;
@@ -49,6 +53,7 @@ struct ParticlePreview {        // one entry per particle, in model order
     // Added beyond the shared interface:
     std::vector<std::uint32_t> part;     // index into Preview::parts
     std::vector<std::uint8_t> located;   // 0 when the particle's node is missing (then x = y = z = 0)
+    std::vector<std::uint8_t> planes;    // Radioss: /SPHBCS planes the particle lies on at t = 0 (else empty)
 };
 struct Preview {
     int dimension = 3;           // 2 or 3 (IDIM 2/-2 → 2)
@@ -61,6 +66,7 @@ struct Preview {
     // 1 when every particle's neighbours were counted; k when only every k-th was (too much work,
     // usually a smoothing length inflated by a stray particle) and the others copy a nearby count.
     std::size_t neighbour_sample_stride = 1;
+    std::optional<RadiossPreview> radioss;  // Radioss decks only: planes, ghosts, time-step scales
 };
 Preview compute_preview(const model::Model& model, const PreviewOptions& options = {});
 }

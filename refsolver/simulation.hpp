@@ -32,6 +32,8 @@ struct Unsupported {
     std::string what;  // a short lower-case sentence naming the value and what is supported
     grammar::Span span;
     bool fatal = true;
+    // Added: the run is impossible even with RunOptions::ignore_unsupported (no EOS, no h0...).
+    bool blocking = false;
 };
 
 struct RunOptions {
@@ -61,6 +63,9 @@ struct Totals {
     std::array<double, 3> momentum{};
     std::size_t active = 0;
     std::size_t steps = 0;
+    // Added: work done on the active particles by the body loads since the start, so that
+    // total - external_work is what stays constant (up to the time integration error).
+    double external_work = 0;
 };
 
 // Where the wall-clock time of the steps went (seconds, summed since the start).
@@ -97,6 +102,10 @@ public:
     Totals totals() const;
     Timings timings() const;
     const std::vector<long long>& part_ids() const;
+    // Added: why the run stopped early (a non-finite state or a collapsed time step); empty
+    // while all is well. finished() is true once this is set.
+    const std::string& failure() const;
+    std::size_t neighbour_rebuilds() const;  // Added: how many times the lists were rebuilt
 
 private:
     struct Impl;

@@ -1,0 +1,61 @@
+// From the Model to what the solver runs (design.md: "setup from the Model"): the particles'
+// initial state in model order (positions, h0 and masses as the preview computes them, density
+// RO (or RO / V0), internal energy E0 / RO, *INITIAL_VELOCITY), the parts' EOS and SPH time
+// windows, the controls, symmetry planes and body loads, and the list of everything in the deck
+// that the solver does not honour (unsupported.cpp).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "model/model.hpp"
+#include "refsolver/body_load.hpp"
+#include "refsolver/eos.hpp"
+#include "refsolver/simulation.hpp"
+#include "refsolver/smoothing_length.hpp"
+#include "refsolver/symmetry_ghosts.hpp"
+
+namespace sphdeck::refsolver {
+
+struct PartSetup {
+    long long id = 0;
+    EquationOfState eos;
+    double start = 0, death = 1e20;  // *SECTION_SPH START, DEATH
+};
+
+struct SolverInput {
+    int dimension = 3;
+    bool renormalise = false;  // FORM 1
+    SmoothingLengthRule h_rule = SmoothingLengthRule::Divergence;
+    double q1 = 1.5, q2 = 0.06, tssfac = 0.9;
+    double end_time = 0;
+    long long end_cycle = 0;  // *CONTROL_TERMINATION ENDCYC, 0: none
+    long long ncbs = 1;
+    double sph_start = 0, sph_death = 1e20;  // *CONTROL_SPH START, DT
+    double maxv = 1e15;                      // <= 0: no velocity check
+    std::optional<std::array<double, 6>> box;  // *CONTROL_SPH BOXID
+    std::vector<SymmetryPlane> planes;
+    std::vector<BodyLoad> loads;
+    std::vector<PartSetup> parts;
+    // Per particle, model order.
+    std::vector<double> x, y, z, vx, vy, vz, rho, e, h, m, h_low, h_high;
+    std::vector<std::uint32_t> part;
+};
+
+struct SetupResult {
+    std::optional<SolverInput> input;  // empty when something fatal was found (and not ignored)
+    std::vector<Unsupported> unsupported;
+};
+
+SetupResult build_setup(const model::Model& model, const RunOptions& options);
+
+// The keywords and settings of the deck the solver does not honour (unsupported.cpp).
+std::vector<Unsupported> unsupported_features(const model::Model& model);
+
+// Reading fields of a keyword record (setup helpers).
+double record_number(const model::KeywordRecord* r, std::string_view name, double fallback = 0.0);
+const model::FieldRecord* record_field(const model::KeywordRecord* r, std::string_view name);
+const model::KeywordRecord* model_record(const model::Model& m, std::optional<std::size_t> index);
+
+}  // namespace sphdeck::refsolver

@@ -1,0 +1,298 @@
+// The time integration and the front door (simulation.hpp). Kick-drift-kick leapfrog with one
+// right-hand side per step (velocity Verlet; density, energy and h are kicked like the velocity):
+//   1. half kick:  v' = v + dt/2 a,  rho' = rho + dt/2 drho,  e' = e + dt/2 de,  h' = h + dt/2 dh
+//   2. drift:      x += dt v'
+//   3. predict v, rho, e, h at the new time with the old rates, evaluate the EOS, rebuild the
+//      neighbour lists if the Verlet skin requires it, and compute the new rates (rates.hpp)
+//   4. half kick:  v = v' + dt/2 a_new  (and rho, e, h alike; h clamped to [HMIN h0, HMAX h0])
+// Second order, time-reversible for the conservative terms; the pair forces are antisymmetric, so
+// every kick conserves momentum exactly where no load or boundary acts.
+#include "refsolver/simulation.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <omp.h>
+
+#include "refsolver/body_load.hpp"
+#include "refsolver/deactivation.hpp"
+#include "refsolver/neighbour_list.hpp"
+#include "refsolver/rates.hpp"
+#include "refsolver/renormalisation.hpp"
+#include "refsolver/setup.hpp"
+#include "refsolver/symmetry_ghosts.hpp"
+#include "refsolver/time_step.hpp"
+
+namespace sphdeck::refsolver {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// The Verlet skin, as a share of the largest h: lists hold pairs within 2 h_max + skin.
+constexpr double skin_share = 0.3;
+}  // namespace
+
+struct Simulation::Impl {
+    SolverInput in;
+    Particles s;
+    NeighbourList list;
+    RateParameters rates;
+    Deactivation deactivation;
+    std::vector<long long> part_ids;
+    double time = 0, dt = 0, dt_next = 0, external_work = 0;
+    std::size_t steps = 0, since_rebuild = 0, rebuilds = 0;
+    double h_max_built = 0, skin = 0;
+    Timings timings;
+    std::string failure;
+    mutable ParticleState state;
+    mutable bool state_valid = false;
+
+    void initialise();
+    void step();
+    void evaluate();  // EOS, lists, corrections, rates at the current (predicted) state
+    void update_eos();
+    void update_interacting();
+    void rebuild();
+    bool needs_rebuild() const;
+    void check_finite();
+};
+
+void Simulation::Impl::update_eos() {
+    const std::size_t n = s.real;
+#pragma omp parallel for schedule(static) num_threads(rates.threads)
+    for (std::size_t i = 0; i < n; ++i) in.parts[s.part[i]].eos.evaluate(s.rho[i], s.e[i], s.p[i], s.c[i]);
+}
+
+void Simulation::Impl::update_interacting() {
+    const bool global = time >= in.sph_start && time < in.sph_death;
+    for (std::size_t i = 0; i < s.real; ++i) {
+        const PartSetup& part = in.parts[s.part[i]];
+        s.interacting[i] = s.active[i] && global && time >= part.start && time < part.death;
+    }
+}
+
+void Simulation::Impl::rebuild() {
+    const auto t0 = Clock::now();
+    double h_max = 0;
+    for (std::size_t i = 0; i < s.real; ++i)
+        if (s.active[i]) h_max = std::max(h_max, s.h[i]);
+    if (!(h_max > 0)) h_max = 1;
+    skin = skin_share * h_max;
+    const double radius = CubicSpline::support_factor * h_max + skin;
+    build_ghosts(s, in.planes, radius, rates.threads);
+    list.build(s, radius, rates.threads);  // also sorts the real particles into cell order
+    s.x_built.assign(s.x.begin(), s.x.begin() + static_cast<std::ptrdiff_t>(s.real));
+    s.y_built.assign(s.y.begin(), s.y.begin() + static_cast<std::ptrdiff_t>(s.real));
+    s.z_built.assign(s.z.begin(), s.z.begin() + static_cast<std::ptrdiff_t>(s.real));
+    h_max_built = h_max;
+    since_rebuild = 0;
+    ++rebuilds;
+    state_valid = false;
+    timings.neighbours += seconds_since(t0);
+}
+
+// A pair missing from the lists was at least 2 h_max_built + skin apart at the build; it can be
+// within the support 2 h_max now only if 2 h_max + 2 max displacement >= 2 h_max_built + skin.
+bool Simulation::Impl::needs_rebuild() const {
+    if (since_rebuild + 1 < static_cast<std::size_t>(in.ncbs)) return false;  // NCBS: not more often than this
+    double d2 = 0, h_max = 0;
+    const std::size_t n = s.real;
+#pragma omp parallel for schedule(static) reduction(max : d2, h_max) num_threads(rates.threads)
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!s.active[i]) continue;
+        const double dx = s.x[i] - s.x_built[i], dy = s.y[i] - s.y_built[i], dz = s.z[i] - s.z_built[i];
+        d2 = std::max(d2, dx * dx + dy * dy + dz * dz);
+        h_max = std::max(h_max, s.h[i]);
+    }
+    return CubicSpline::support_factor * (h_max - h_max_built) + 2 * std::sqrt(d2) >= skin;
+}
+
+void Simulation::Impl::evaluate() {
+    update_interacting();
+    update_eos();
+    if (needs_rebuild()) rebuild();
+    else update_ghosts(s, in.planes, rates.threads);
+    if (rates.renormalise) {
+        compute_corrections(s, list, rates.kernel, rates.threads);
+        update_ghosts(s, in.planes, rates.threads);
+    }
+    rates.body = body_acceleration(in.loads, time);
+    compute_rates(s, list, rates);
+}
+
+void Simulation::Impl::initialise() {
+    const std::size_t n = in.x.size();
+    s.resize_real(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        s.x[i] = in.x[i], s.y[i] = in.y[i], s.z[i] = in.z[i];
+        s.vx[i] = in.vx[i], s.vy[i] = in.vy[i], s.vz[i] = in.vz[i];
+        s.rho[i] = in.rho[i], s.e[i] = in.e[i], s.h[i] = in.h[i], s.m[i] = in.m[i];
+        s.h_low[i] = in.h_low[i], s.h_high[i] = in.h_high[i];
+        s.part[i] = in.part[i], s.model_index[i] = static_cast<std::uint32_t>(i);
+    }
+    rates.kernel.dimension = in.dimension;
+    rates.viscosity = {in.q1, in.q2};
+    rates.renormalise = in.renormalise;
+    rates.h_rule = in.h_rule;
+    deactivation.maxv = in.maxv, deactivation.box = in.box, deactivation.dimension = in.dimension;
+    const auto t0 = Clock::now();
+    deactivation.apply(s);
+    update_interacting();
+    since_rebuild = static_cast<std::size_t>(in.ncbs);  // the first evaluation builds the lists
+    s.x_built.assign(n, std::numeric_limits<double>::infinity());
+    s.y_built = s.x_built, s.z_built = s.x_built;
+    evaluate();
+    dt_next = std::min(stable_time_step(s, in.tssfac, rates.threads), in.end_time - time);
+    dt = dt_next;
+    timings.total += seconds_since(t0);
+    check_finite();
+}
+
+void Simulation::Impl::check_finite() {
+    bool finite = true;
+    for (std::size_t i = 0; i < s.real && finite; ++i)
+        finite = std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && std::isfinite(s.z[i]) && std::isfinite(s.vx[i]) &&
+                 std::isfinite(s.vy[i]) && std::isfinite(s.vz[i]) && std::isfinite(s.rho[i]) && std::isfinite(s.e[i]);
+    if (!finite && failure.empty())
+        failure = "the state became non-finite (NaN or infinity) at step " + std::to_string(steps) +
+                  ": the time step is too large for this deck, or the material state left its EOS's range";
+}
+
+void Simulation::Impl::step() {
+    const auto t0 = Clock::now();
+    dt = std::min(dt_next, in.end_time - time);
+    if (!(dt > 0) || !std::isfinite(dt)) {
+        failure = "the time step collapsed to " + std::to_string(dt) + " at time " + std::to_string(time);
+        return;
+    }
+    const double half = 0.5 * dt;
+    const std::array<double, 3> body_mid = body_acceleration(in.loads, time + half);
+    double work = 0;
+    const std::size_t n = s.real;
+    const bool plane_strain = in.dimension == 2;
+#pragma omp parallel for schedule(static) reduction(+ : work) num_threads(rates.threads)
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!s.active[i]) continue;
+        s.vx_half[i] = s.vx[i] + half * s.ax[i], s.vy_half[i] = s.vy[i] + half * s.ay[i];
+        s.vz_half[i] = plane_strain ? 0.0 : s.vz[i] + half * s.az[i];
+        s.rho_half[i] = s.rho[i] + half * s.drho[i], s.e_half[i] = s.e[i] + half * s.de[i];
+        s.h_half[i] = clamp_smoothing_length(s.h[i] + half * s.dh[i], s.h_low[i], s.h_high[i]);
+        s.x[i] += dt * s.vx_half[i], s.y[i] += dt * s.vy_half[i], s.z[i] += dt * s.vz_half[i];
+        work += s.m[i] * dt * (body_mid[0] * s.vx_half[i] + body_mid[1] * s.vy_half[i] +
+                               (plane_strain ? 0.0 : body_mid[2] * s.vz_half[i]));
+        // Predicted state at the new time, from the old rates.
+        s.vx[i] = s.vx_half[i] + half * s.ax[i], s.vy[i] = s.vy_half[i] + half * s.ay[i];
+        s.vz[i] = s.vz_half[i] + half * s.az[i];
+        s.rho[i] = s.rho_half[i] + half * s.drho[i], s.e[i] = s.e_half[i] + half * s.de[i];
+        s.h[i] = clamp_smoothing_length(s.h_half[i] + half * s.dh[i], s.h_low[i], s.h_high[i]);
+    }
+    external_work += work;
+    reflect_crossed(s, in.planes);
+    time += dt;
+    deactivation.apply(s);
+    evaluate();
+#pragma omp parallel for schedule(static) num_threads(rates.threads)
+    for (std::size_t i = 0; i < s.real; ++i) {
+        if (!s.active[i]) continue;
+        s.vx[i] = s.vx_half[i] + half * s.ax[i], s.vy[i] = s.vy_half[i] + half * s.ay[i];
+        s.vz[i] = s.vz_half[i] + half * s.az[i];
+        s.rho[i] = s.rho_half[i] + half * s.drho[i], s.e[i] = s.e_half[i] + half * s.de[i];
+        s.h[i] = clamp_smoothing_length(s.h_half[i] + half * s.dh[i], s.h_low[i], s.h_high[i]);
+    }
+    ++steps, ++since_rebuild;
+    state_valid = false;
+    dt_next = stable_time_step(s, in.tssfac, rates.threads);
+    timings.total += seconds_since(t0);
+    check_finite();
+}
+
+Simulation::Setup Simulation::create(const model::Model& model, const RunOptions& options) {
+    SetupResult r = build_setup(model, options);
+    Setup setup;
+    setup.unsupported = std::move(r.unsupported);
+    if (!r.input) return setup;
+    auto impl = std::make_unique<Impl>();
+    impl->in = std::move(*r.input);
+    // Small runs on one thread unless told: a handful of particles per thread costs more in
+    // barriers than it gains (and far more on a loaded machine).
+    constexpr std::size_t small_run = 4096;
+    impl->rates.threads = options.threads > 0 ? options.threads
+                          : impl->in.x.size() < small_run ? 1 : omp_get_max_threads();
+    for (const PartSetup& p : impl->in.parts) impl->part_ids.push_back(p.id);
+    impl->initialise();
+    setup.simulation.reset(new Simulation(std::move(impl)));
+    return setup;
+}
+
+Simulation::Simulation(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Simulation::~Simulation() = default;
+
+void Simulation::step() {
+    if (!finished()) impl_->step();
+}
+
+bool Simulation::finished() const {
+    const Impl& m = *impl_;
+    if (!m.failure.empty()) return true;
+    if (m.in.end_cycle > 0 && m.steps >= static_cast<std::size_t>(m.in.end_cycle)) return true;
+    return m.time >= m.in.end_time * (1 - 1e-12);
+}
+
+void Simulation::run(const std::function<void(const Simulation&)>& observer) {
+    while (!finished()) {
+        step();
+        if (observer) observer(*this);
+    }
+}
+
+double Simulation::time() const { return impl_->time; }
+double Simulation::end_time() const { return impl_->in.end_time; }
+double Simulation::dt() const { return impl_->steps == 0 ? impl_->dt_next : impl_->dt; }
+std::size_t Simulation::steps() const { return impl_->steps; }
+int Simulation::dimension() const { return impl_->in.dimension; }
+Timings Simulation::timings() const { return impl_->timings; }
+const std::vector<long long>& Simulation::part_ids() const { return impl_->part_ids; }
+const std::string& Simulation::failure() const { return impl_->failure; }
+std::size_t Simulation::neighbour_rebuilds() const { return impl_->rebuilds; }
+
+const ParticleState& Simulation::state() const {
+    const Impl& m = *impl_;
+    if (m.state_valid) return m.state;
+    const Particles& s = m.s;
+    ParticleState& out = m.state;
+    const std::size_t n = s.real;
+    for (auto* v : {&out.x, &out.y, &out.z, &out.vx, &out.vy, &out.vz, &out.rho, &out.e, &out.p, &out.h, &out.mass})
+        v->resize(n);
+    out.part.resize(n), out.active.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t i = s.model_index[k];
+        out.x[i] = s.x[k], out.y[i] = s.y[k], out.z[i] = s.z[k];
+        out.vx[i] = s.vx[k], out.vy[i] = s.vy[k], out.vz[i] = s.vz[k];
+        out.rho[i] = s.rho[k], out.e[i] = s.e[k], out.h[i] = s.h[k], out.mass[i] = s.m[k];
+        out.p[i] = m.in.parts[s.part[k]].eos.pressure(s.rho[k], s.e[k]);  // at the final rho, e
+        out.part[i] = s.part[k], out.active[i] = s.active[k];
+    }
+    m.state_valid = true;
+    return out;
+}
+
+Totals Simulation::totals() const {
+    const Impl& m = *impl_;
+    const Particles& s = m.s;
+    Totals t;
+    t.time = m.time, t.dt = dt(), t.steps = m.steps, t.external_work = m.external_work;
+    for (std::size_t i = 0; i < s.real; ++i) {
+        if (!s.active[i]) continue;
+        const double mass = s.m[i];
+        t.mass += mass;
+        t.kinetic += 0.5 * mass * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
+        t.internal += mass * s.e[i];
+        t.momentum[0] += mass * s.vx[i], t.momentum[1] += mass * s.vy[i], t.momentum[2] += mass * s.vz[i];
+        ++t.active;
+    }
+    t.total = t.kinetic + t.internal;
+    return t;
+}
+
+}  // namespace sphdeck::refsolver

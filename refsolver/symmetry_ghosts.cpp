@@ -1,0 +1,98 @@
+#include "refsolver/symmetry_ghosts.hpp"
+
+#include <bit>
+
+namespace sphdeck::refsolver {
+
+namespace {
+
+void mirror_point(const SymmetryPlane& q, double& x, double& y, double& z) {
+    const double dd = x * q.normal[0] + y * q.normal[1] + z * q.normal[2] - q.offset;
+    x -= 2 * dd * q.normal[0], y -= 2 * dd * q.normal[1], z -= 2 * dd * q.normal[2];
+}
+
+void mirror_vector(const SymmetryPlane& q, double& x, double& y, double& z) {
+    const double vn = x * q.normal[0] + y * q.normal[1] + z * q.normal[2];
+    x -= 2 * vn * q.normal[0], y -= 2 * vn * q.normal[1], z -= 2 * vn * q.normal[2];
+}
+
+// R B R with R = I - 2 n n^T, B symmetric stored as xx yy zz xy xz yz.
+std::array<double, 6> mirror_tensor(const SymmetryPlane& q, const std::array<double, 6>& b) {
+    const double B[3][3] = {{b[0], b[3], b[4]}, {b[3], b[1], b[5]}, {b[4], b[5], b[2]}};
+    double R[3][3];
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) R[r][c] = (r == c ? 1.0 : 0.0) - 2 * q.normal[r] * q.normal[c];
+    double RB[3][3] = {}, out[3][3] = {};
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            for (int k = 0; k < 3; ++k) RB[r][c] += R[r][k] * B[k][c];
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            for (int k = 0; k < 3; ++k) out[r][c] += RB[r][k] * R[k][c];
+    return {out[0][0], out[1][1], out[2][2], out[0][1], out[0][2], out[1][2]};
+}
+
+constexpr unsigned max_planes_per_image = 3;
+
+}  // namespace
+
+void build_ghosts(Particles& s, const std::vector<SymmetryPlane>& planes, double radius, int threads) {
+    s.ghost_source.clear(), s.ghost_planes.clear();
+    const std::size_t count = std::min<std::size_t>(planes.size(), 8);
+    for (std::size_t i = 0; i < s.real; ++i) {
+        if (!s.active[i]) continue;
+        unsigned near = 0;
+        for (std::size_t k = 0; k < count; ++k) {
+            const SymmetryPlane& q = planes[k];
+            const double dd = s.x[i] * q.normal[0] + s.y[i] * q.normal[1] + s.z[i] * q.normal[2] - q.offset;
+            if (dd <= radius) near |= 1u << k;
+        }
+        // Every non-empty subset of the near planes, up to three planes per image.
+        for (unsigned subset = near; subset; subset = (subset - 1) & near) {
+            if (static_cast<unsigned>(std::popcount(subset)) > max_planes_per_image) continue;
+            s.ghost_source.push_back(static_cast<std::uint32_t>(i));
+            s.ghost_planes.push_back(static_cast<std::uint8_t>(subset));
+        }
+    }
+    s.resize_pair_arrays();
+    update_ghosts(s, planes, threads);
+}
+
+void update_ghosts(Particles& s, const std::vector<SymmetryPlane>& planes, int threads) {
+    const std::size_t n = s.ghosts();
+#pragma omp parallel for schedule(static) num_threads(threads > 0 ? threads : 1)
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t g = s.real + k, i = s.ghost_source[k];
+        double x = s.x[i], y = s.y[i], z = s.z[i], vx = s.vx[i], vy = s.vy[i], vz = s.vz[i];
+        std::array<double, 6> b = s.correction[i];
+        for (std::size_t q = 0; q < planes.size() && q < 8; ++q) {
+            if (!(s.ghost_planes[k] >> q & 1u)) continue;
+            mirror_point(planes[q], x, y, z);
+            mirror_vector(planes[q], vx, vy, vz);
+            if (b[3] != 0 || b[4] != 0 || b[5] != 0 || b[0] != b[1] || b[1] != b[2]) b = mirror_tensor(planes[q], b);
+        }
+        s.x[g] = x, s.y[g] = y, s.z[g] = z, s.vx[g] = vx, s.vy[g] = vy, s.vz[g] = vz;
+        s.rho[g] = s.rho[i], s.p[g] = s.p[i], s.c[g] = s.c[i], s.h[g] = s.h[i], s.m[g] = s.m[i];
+        s.interacting[g] = s.interacting[i];
+        s.correction[g] = b;
+    }
+}
+
+std::size_t reflect_crossed(Particles& s, const std::vector<SymmetryPlane>& planes) {
+    std::size_t put_back = 0;
+    for (const SymmetryPlane& q : planes) {
+        for (std::size_t i = 0; i < s.real; ++i) {
+            const double dd = s.x[i] * q.normal[0] + s.y[i] * q.normal[1] + s.z[i] * q.normal[2] - q.offset;
+            if (!(dd < 0)) continue;
+            mirror_point(q, s.x[i], s.y[i], s.z[i]);
+            const double vn = s.vx[i] * q.normal[0] + s.vy[i] * q.normal[1] + s.vz[i] * q.normal[2];
+            if (vn < 0) mirror_vector(q, s.vx[i], s.vy[i], s.vz[i]);
+            const double vhn = s.vx_half[i] * q.normal[0] + s.vy_half[i] * q.normal[1] + s.vz_half[i] * q.normal[2];
+            if (vhn < 0) mirror_vector(q, s.vx_half[i], s.vy_half[i], s.vz_half[i]);
+            ++put_back;
+        }
+    }
+    return put_back;
+}
+
+}  // namespace sphdeck::refsolver

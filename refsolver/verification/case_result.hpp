@@ -1,0 +1,68 @@
+// What a verification case reports (verification.md §9): one row per gated quantity (value, reference,
+// error, tolerance, PASS/FAIL), the runs behind it (§9.4: resolution, steps, wall time), a figure and
+// notes for the Markdown summary.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sphdeck::refsolver::verification {
+
+struct Check {
+    enum class Bound { AtMost, AtLeast };  // pass when error <= tolerance, or error >= tolerance
+
+    std::string quantity;              // "L1(rho) relative, 400 particles"
+    double value = NAN;                // what the run gave
+    std::optional<double> reference;   // the exact or experimental value; none when the value is itself an error
+    double error = NAN;                // what is compared with the tolerance
+    double tolerance = NAN;
+    Bound bound = Bound::AtMost;
+
+    bool passed() const {
+        if (!std::isfinite(error)) return false;  // a blown-up or undetected result never passes
+        return bound == Bound::AtMost ? error <= tolerance : error >= tolerance;
+    }
+};
+
+// One solver run of one deck (§9.4: what to record with each result).
+struct RunRecord {
+    std::string deck;          // file name within the deck folder
+    std::size_t particles = 0;
+    std::size_t steps = 0;
+    double end_time = 0;       // simulated time reached
+    double wall_seconds = 0;
+    int threads = 0;
+};
+
+struct CaseResult {
+    std::string name;   // "sod", "hydrostatic", "dambreak"
+    std::string title;  // one line
+    std::vector<RunRecord> runs;
+    std::vector<Check> checks;
+    std::vector<std::string> method;  // how the figures were obtained (Markdown bullet points)
+    std::string svg;                  // the figure: solution against reference
+    std::string failure;              // non-empty when the case could not run (unreadable deck, refused)
+
+    bool ran() const { return failure.empty(); }
+    bool passed() const {
+        if (!ran() || checks.empty()) return false;
+        for (const Check& c : checks)
+            if (!c.passed()) return false;
+        return true;
+    }
+};
+
+struct CaseOptions {
+    std::filesystem::path decks;  // the folder with the verification decks
+    bool quick = false;           // the coarse and short variants (`make test`)
+    int threads = 0;              // OpenMP threads, 0: the default
+    std::function<void(std::string_view)> progress;  // a line of progress ("running sod_2d_400.k"), may be empty
+};
+
+}  // namespace sphdeck::refsolver::verification

@@ -1,0 +1,14 @@
+#include "refsolver/verification/cases.hpp"
+
+namespace sphdeck::refsolver::verification {
+
+const std::vector<VerificationCase>& verification_cases() {
+    static const std::vector<VerificationCase> cases = {
+        {"sod", "Sod shock tube against the exact Riemann solution", run_sod},
+        {"hydrostatic", "hydrostatic water column against rho0 g (H - y)", run_hydrostatic},
+        {"dambreak", "dam-break surge front against Martin & Moyce (1952)", run_dam_break},
+    };
+    return cases;
+}
+
+}  // namespace sphdeck::refsolver::verification

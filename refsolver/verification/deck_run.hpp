@@ -1,0 +1,33 @@
+// Runs one verification deck through the reference solver in-process: read and check it as `sphdeck
+// check` does, refuse it on read errors or on anything the solver cannot honour, step to the end time.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "refsolver/simulation.hpp"
+#include "refsolver/verification/case_result.hpp"
+
+namespace sphdeck::refsolver::verification {
+
+struct DeckRun {
+    RunRecord record;
+    ParticleState initial;  // state before the first step
+    std::unique_ptr<Simulation> simulation;  // at the end time; null when `failure` is set
+    std::string failure;    // why the deck did not run: a read error, deck errors, an unsupported feature
+    std::string stopped;    // why a run that started was stopped before its end time (a collapsing time step)
+};
+
+// A run is stopped when it needs more than this many times the steps its first time step implies: the
+// step has collapsed (the solution is blowing up), and waiting for the end would take hours.
+inline constexpr double step_budget_factor = 10.0;
+
+// `observer` is called after every step (it may be empty).
+DeckRun run_deck(const std::filesystem::path& deck, const CaseOptions& options,
+                 const std::function<void(const Simulation&)>& observer = {});
+
+// The check a stopped run fails: the time reached against the end time (tolerance 0).
+Check reached_end_time(const DeckRun& run);
+
+}  // namespace sphdeck::refsolver::verification

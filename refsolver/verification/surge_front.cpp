@@ -1,0 +1,34 @@
+#include "refsolver/verification/surge_front.hpp"
+
+#include <algorithm>
+#include <vector>
+
+namespace sphdeck::refsolver::verification {
+
+std::optional<double> surge_front(std::span<const double> x, std::span<const double> y,
+                                  std::span<const std::uint8_t> active, double spacing, double floor_band) {
+    std::vector<std::size_t> near_floor;
+    for (std::size_t i = 0; i < x.size(); ++i)
+        if (active[i] && y[i] < floor_band) near_floor.push_back(i);
+    std::sort(near_floor.begin(), near_floor.end(), [&](std::size_t a, std::size_t b) { return x[a] > x[b]; });
+    const double reach2 = 4.0 * spacing * spacing;  // (2 spacings)^2
+    for (std::size_t i : near_floor) {  // furthest first; usually the first one has a neighbour
+        for (std::size_t j = 0; j < x.size(); ++j) {
+            if (j == i || !active[j]) continue;
+            const double dx = x[j] - x[i], dy = y[j] - y[i];
+            if (dx * dx + dy * dy <= reach2) return x[i];
+        }
+    }
+    return std::nullopt;
+}
+
+std::optional<double> interpolate(std::span<const double> t, std::span<const double> f, double at) {
+    if (t.empty() || at < t.front() || at > t.back()) return std::nullopt;
+    const auto it = std::lower_bound(t.begin(), t.end(), at);
+    const std::size_t k = static_cast<std::size_t>(it - t.begin());
+    if (k == 0 || t[k] == at) return f[k];
+    const double w = (at - t[k - 1]) / (t[k] - t[k - 1]);
+    return f[k - 1] + w * (f[k] - f[k - 1]);
+}
+
+}  // namespace sphdeck::refsolver::verification

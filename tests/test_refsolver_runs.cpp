@@ -1,0 +1,205 @@
+// Reference solver runs against exact facts: a lattice at rest in a box of symmetry planes stays
+// at rest; two particles conserve momentum and energy; a free particle falls as g t^2 / 2; a
+// particle bounces off a symmetry plane; MAXV and BOXID deactivate; FORM 2 is refused.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "test_refsolver_decks.hpp"
+
+using namespace sphdeck;
+using namespace sphdeck::test;
+
+namespace {
+
+#ifdef SPHDECK_SANITIZED
+constexpr int lattice_side = 6;
+#else
+constexpr int lattice_side = 12;
+#endif
+
+// A square (2D) or cubic (3D) lattice of spacing dx at cell centres in [0, side dx]^d, walled by
+// symmetry planes on every side: mirror images complete the lattice exactly.
+TestDeck walled_lattice(int dimension, int side, double dx) {
+    TestDeck deck;
+    deck.idim = dimension;
+    deck.rho0 = 1.0;
+    // Ideal gas at p0 = 0.4 * E0 = 1 (e0 = 2.5): pressure everywhere, no gradient.
+    deck.eos = "*EOS_LINEAR_POLYNOMIAL\n1,0,0,0,0,0.4,0.4,0\n2.5,1\n";
+    const double mass = dimension == 2 ? dx * dx : dx * dx * dx;
+    const int nz = dimension == 2 ? 1 : side;
+    for (int k = 0; k < nz; ++k)
+        for (int j = 0; j < side; ++j)
+            for (int i = 0; i < side; ++i)
+                deck.particles.push_back({(i + 0.5) * dx, (j + 0.5) * dx, dimension == 2 ? 0.0 : (k + 0.5) * dx, mass});
+    const double L = side * dx;
+    std::vector<std::string> planes = {fmt::format("0,0,0,1,0,0"), fmt::format("{},0,0,{},0,0", L, L - 1),
+                                       fmt::format("0,0,0,0,1,0"), fmt::format("0,{},0,0,{},0", L, L - 1)};
+    if (dimension == 3) planes.push_back("0,0,0,0,0,1"), planes.push_back(fmt::format("0,0,{},0,0,{}", L, L - 1));
+    for (const std::string& p : planes) deck.extra += "*BOUNDARY_SPH_SYMMETRY_PLANE\n" + p + "\n";
+    deck.endtim = 0.05;
+    return deck;
+}
+
+}  // namespace
+
+TEST_CASE("refsolver: a uniform lattice at rest in a box of symmetry planes stays at rest, density rho0") {
+    for (int dimension : {2, 3})
+        for (int form : {0, 1}) {
+            CAPTURE(dimension);
+            CAPTURE(form);
+            TestDeck deck = walled_lattice(dimension, dimension == 2 ? 2 * lattice_side : lattice_side, 0.1);
+            deck.form = form;
+            auto setup = solver_for(deck);
+            REQUIRE_MESSAGE(setup.simulation, unsupported_text(setup));
+            refsolver::Simulation& sim = *setup.simulation;
+            for (int s = 0; s < 20; ++s) sim.step();
+            const auto& st = sim.state();
+            double vmax = 0, drho = 0;
+            for (std::size_t i = 0; i < st.size(); ++i) {
+                vmax = std::max(vmax, std::abs(st.vx[i]) + std::abs(st.vy[i]) + std::abs(st.vz[i]));
+                drho = std::max(drho, std::abs(st.rho[i] - 1.0));
+            }
+            // Sound speed sqrt(1.4 p / rho) = 1.18: round-off only.
+            CHECK(vmax < 1e-12);
+            CHECK(drho < 1e-12);
+            CHECK(sim.totals().mass == doctest::Approx(deck.particles.size() * deck.particles[0].mass).epsilon(1e-12));
+        }
+}
+
+TEST_CASE("refsolver: two particles approaching conserve momentum and energy; mass is exact") {
+    TestDeck deck;
+    deck.sphini = 1.0;
+    deck.hmin = deck.hmax = 1.0;
+    deck.eos = "*EOS_LINEAR_POLYNOMIAL\n1,0,0,0,0,0.4,0.4,0\n1.0,1\n";  // ideal gas, e0 = 1
+    deck.particles = {{0, 0, 0, 1.0, 0.3, 0.05, 0}, {1.5, 0.2, 0, 2.0, -0.4, 0, 0.1}};
+    deck.endtim = 6.0;
+    deck.tssfac = 0.1;
+    auto setup = solver_for(deck);
+    REQUIRE_MESSAGE(setup.simulation, unsupported_text(setup));
+    refsolver::Simulation& sim = *setup.simulation;
+    const refsolver::Totals start = sim.totals();
+    // Momentum by hand: 1 (0.3, 0.05, 0) + 2 (-0.4, 0, 0.1) = (-0.5, 0.05, 0.2).
+    CHECK(start.momentum[0] == doctest::Approx(-0.5));
+    CHECK(start.internal == doctest::Approx(3.0));  // sum m e0 = 1 + 2
+    double closest = 1e9;
+    sim.run([&](const refsolver::Simulation& s) {
+        const auto& st = s.state();
+        closest = std::min(closest, std::hypot(st.x[0] - st.x[1], st.y[0] - st.y[1], st.z[0] - st.z[1]));
+    });
+    const refsolver::Totals end = sim.totals();
+    CHECK(closest < 1.4);  // they did interact (support 2h = 2)
+    for (int a = 0; a < 3; ++a) CHECK(std::abs(end.momentum[a] - start.momentum[a]) < 1e-14);
+    CHECK(end.mass == start.mass);
+    CHECK(end.total == doctest::Approx(start.total).epsilon(1e-4));
+    CHECK(end.internal != doctest::Approx(start.internal).epsilon(1e-4));  // energy did change form
+}
+
+TEST_CASE("refsolver: an isolated particle falls under *LOAD_BODY_Y as y0 - g t^2 / 2") {
+    TestDeck deck;
+    deck.sphini = 0.1;
+    deck.eos = "*EOS_MURNAGHAN\n1,7,100,1\n";
+    deck.particles = {{0, 10, 0, 1.0}};
+    deck.extra = "*LOAD_BODY_Y\n1,9.81\n*DEFINE_CURVE\n1\n0,1\n100,1\n";
+    deck.endtim = 0.5;
+    auto setup = solver_for(deck);
+    REQUIRE_MESSAGE(setup.simulation, unsupported_text(setup));
+    setup.simulation->run();
+    const auto& st = setup.simulation->state();
+    CHECK(setup.simulation->time() == doctest::Approx(0.5));
+    CHECK(st.y[0] == doctest::Approx(10 - 0.5 * 9.81 * 0.25).epsilon(1e-12));
+    CHECK(st.vy[0] == doctest::Approx(-9.81 * 0.5).epsilon(1e-12));
+    CHECK(st.x[0] == 0.0);
+    // Energy balance: the kinetic energy equals the work of gravity.
+    const auto t = setup.simulation->totals();
+    CHECK(t.kinetic == doctest::Approx(t.external_work).epsilon(1e-9));
+}
+
+TEST_CASE("refsolver: a particle thrown at a symmetry plane bounces back and never crosses it") {
+    TestDeck deck;
+    deck.sphini = 0.5;
+    deck.hmin = deck.hmax = 1.0;
+    deck.eos = "*EOS_LINEAR_POLYNOMIAL\n1,0,0,0,0,0.4,0.4,0\n1.0,1\n";  // ideal gas, c = 0.75
+    deck.particles = {{0, 0.8, 0, 1.0, 0, -0.5, 0}};
+    deck.extra = "*BOUNDARY_SPH_SYMMETRY_PLANE\n0,0,0,0,1,0\n";
+    deck.endtim = 6.0;
+    auto setup = solver_for(deck);
+    REQUIRE_MESSAGE(setup.simulation, unsupported_text(setup));
+    double lowest = 1e9;
+    setup.simulation->run([&](const refsolver::Simulation& s) { lowest = std::min(lowest, s.state().y[0]); });
+    const auto& st = setup.simulation->state();
+    CHECK(lowest > 0.0);
+    CHECK(lowest < 0.8);
+    CHECK(st.vy[0] > 0.0);  // on its way back
+}
+
+TEST_CASE("refsolver: MAXV deactivates a particle once it is too fast; it then stays where it was") {
+    TestDeck deck;
+    deck.sphini = 0.1;
+    deck.eos = "*EOS_MURNAGHAN\n1,7,100,1\n";
+    deck.maxv = 5.0;
+    deck.particles = {{0, 10, 0, 1.0}};
+    deck.extra = "*LOAD_BODY_Y\n1,9.81\n*DEFINE_CURVE\n1\n0,1\n100,1\n";
+    deck.endtim = 1.0;
+    auto setup = solver_for(deck);
+    REQUIRE_MESSAGE(setup.simulation, unsupported_text(setup));
+    refsolver::Simulation& sim = *setup.simulation;
+    double off_at = -1;
+    sim.run([&](const refsolver::Simulation& s) {
+        if (off_at < 0 && !s.state().active[0]) off_at = s.time();
+    });
+    const auto& st = sim.state();
+    CHECK(st.active[0] == 0);
+    // |v| = g t passes 5 at t = 0.5097: deactivated within a step of that, and frozen there.
+    CHECK(off_at == doctest::Approx(5.0 / 9.81).epsilon(0.02));
+    CHECK(std::abs(st.vy[0]) == doctest::Approx(5.0).epsilon(0.02));
+    CHECK(st.y[0] == doctest::Approx(10 - 0.5 * 9.81 * off_at * off_at).epsilon(1e-3));
+    CHECK(sim.totals().active == 0);
+    CHECK(sim.totals().mass == 0.0);
+}
+
+TEST_CASE("refsolver: BOXID deactivates a particle that leaves the box") {
+    TestDeck deck;
+    deck.sphini = 0.1;
+    deck.eos = "*EOS_MURNAGHAN\n1,7,100,1\n";
+    deck.boxid = 7;
+    deck.particles = {{0, 0, 0, 1.0, 2.0, 0, 0}, {-5, 0, 0, 1.0}};
+    deck.extra = "*DEFINE_BOX\n7,-10,1,-1,1,-1,1\n";
+    deck.endtim = 1.0;
+    auto setup = solver_for(deck);
+    REQUIRE_MESSAGE(setup.simulation, unsupported_text(setup));
+    setup.simulation->run();
+    const auto& st = setup.simulation->state();
+    CHECK(st.active[0] == 0);               // left through x = 1 at t = 0.5
+    CHECK(st.x[0] == doctest::Approx(1.0).epsilon(0.05));
+    CHECK(st.active[1] == 1);
+    CHECK(setup.simulation->totals().active == 1);
+}
+
+TEST_CASE("refsolver: FORM 2 is refused with a message naming FORM and what is supported") {
+    TestDeck deck;
+    deck.form = 2;
+    deck.sphini = 0.1;
+    deck.particles = {{0, 0, 0, 1.0}};
+    auto setup = solver_for(deck);
+    CHECK_FALSE(setup.simulation);
+    const std::string text = unsupported_text(setup);
+    CHECK(text.find("FORM 2") != std::string::npos);
+    CHECK(text.find("FORM 0") != std::string::npos);
+    CHECK(text.find("FORM 1") != std::string::npos);
+    refsolver::RunOptions ignore;
+    ignore.ignore_unsupported = true;
+    CHECK(solver_for(deck, ignore).simulation);  // runs as FORM 0 when told to
+}
+
+TEST_CASE("refsolver: a material without an EOS cannot run, even with --ignore-unsupported") {
+    TestDeck deck;
+    deck.eos = "";
+    deck.sphini = 0.1;
+    deck.particles = {{0, 0, 0, 1.0}};
+    refsolver::RunOptions ignore;
+    ignore.ignore_unsupported = true;
+    auto setup = solver_for(deck, ignore);
+    CHECK_FALSE(setup.simulation);
+    CHECK(unsupported_text(setup).find("equation of state") != std::string::npos);
+}

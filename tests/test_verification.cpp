@@ -1,0 +1,239 @@
+// refsolver/verification/: the exact Riemann solver against verification.md §1's table, the error norms
+// and convergence order on synthetic data with known answers (§9), wave detection on synthetic
+// profiles, the surge-front rule, the Martin & Moyce table, and the verification decks passing `check`.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "lint/pipeline.hpp"
+#include "refsolver/verification/martin_moyce.hpp"
+#include "refsolver/verification/norms.hpp"
+#include "refsolver/verification/riemann.hpp"
+#include "refsolver/verification/sod_waves.hpp"
+#include "refsolver/verification/surge_front.hpp"
+#include "refsolver/verification/wave_detection.hpp"
+
+using namespace sphdeck::refsolver::verification;
+using doctest::Approx;
+
+namespace {
+
+RiemannSolution sod() {
+    const auto s = solve_riemann({1.0, 0.0, 1.0}, {0.125, 0.0, 0.1}, 1.4);
+    REQUIRE(s.has_value());
+    return *s;
+}
+
+}  // namespace
+
+TEST_CASE("verification riemann: Sod star state and wave speeds match the reference table (§1)") {
+    const RiemannSolution s = sod();
+    CHECK(s.p_star == Approx(0.30313).epsilon(2e-5));
+    CHECK(s.u_star == Approx(0.92745).epsilon(2e-5));
+    CHECK(s.rho_star_left == Approx(0.42632).epsilon(2e-5));
+    CHECK(s.rho_star_right == Approx(0.26557).epsilon(2e-5));
+    CHECK(s.internal_energy({s.rho_star_left, s.u_star, s.p_star}) == Approx(1.77760).epsilon(2e-5));
+    CHECK(s.internal_energy({s.rho_star_right, s.u_star, s.p_star}) == Approx(2.85354).epsilon(2e-5));
+    CHECK_FALSE(s.left_shock);  // rarefaction to the left, shock to the right
+    CHECK(s.right_shock);
+    CHECK(s.right_head == Approx(1.75216).epsilon(2e-5));
+    CHECK(s.left_head == Approx(-1.18322).epsilon(2e-5));
+    CHECK(s.left_tail == Approx(-0.07027).epsilon(1e-4));
+}
+
+TEST_CASE("verification riemann: the fan point xi = -0.6 and the wave positions at t = 0.2 (§1)") {
+    const RiemannSolution s = sod();
+    const GasState fan = s.sample(-0.6);
+    CHECK(fan.u == Approx(0.48601).epsilon(2e-5));
+    CHECK(fan.rho == Approx(0.65141).epsilon(2e-5));
+    CHECK(fan.p == Approx(0.54878).epsilon(2e-5));
+    const SodWaves w = exact_sod_waves(s, 0.5, 0.2);
+    CHECK(*w.rarefaction_head == Approx(0.26336).epsilon(2e-5));
+    CHECK(*w.rarefaction_tail == Approx(0.48595).epsilon(2e-5));
+    CHECK(*w.contact == Approx(0.68549).epsilon(2e-5));
+    CHECK(*w.shock == Approx(0.85043).epsilon(2e-5));
+    // Plateaus on either side of each wave.
+    CHECK(s.sample(-2.0).rho == 1.0);
+    CHECK(s.sample(0.5).rho == Approx(s.rho_star_left));
+    CHECK(s.sample(1.5).rho == Approx(s.rho_star_right));
+    CHECK(s.sample(2.0).rho == 0.125);
+}
+
+TEST_CASE("verification riemann: independent physics — Rankine-Hugoniot, continuity of the fan, symmetry") {
+    const RiemannSolution s = sod();
+    // Mass and momentum fluxes through the right shock, in its frame (Rankine-Hugoniot).
+    const double S = s.right_head;
+    const double m_ahead = 0.125 * (0.0 - S), m_behind = s.rho_star_right * (s.u_star - S);
+    CHECK(m_behind == Approx(m_ahead).epsilon(1e-10));
+    CHECK(0.1 + 0.125 * S * S == Approx(s.p_star + s.rho_star_right * (s.u_star - S) * (s.u_star - S)).epsilon(1e-10));
+    // The fan joins the plateaus continuously at its head and tail.
+    const double eps = 1e-9;
+    CHECK(s.sample(s.left_head + eps).rho == Approx(1.0).epsilon(1e-6));
+    CHECK(s.sample(s.left_tail - eps).rho == Approx(s.rho_star_left).epsilon(1e-6));
+    CHECK(s.sample(s.left_tail - eps).u == Approx(s.u_star).epsilon(1e-6));
+    // Isentropic fan: p / rho^gamma is the left state's.
+    const GasState f = s.sample(-0.6);
+    CHECK(f.p / std::pow(f.rho, 1.4) == Approx(1.0).epsilon(1e-12));
+    // Mirrored data give the mirrored solution: two equal shocks colliding, u* = 0.
+    const auto collide = solve_riemann({1.0, 1.0, 1.0}, {1.0, -1.0, 1.0}, 1.4);
+    REQUIRE(collide);
+    CHECK(collide->u_star == Approx(0.0).scale(1.0));
+    CHECK(collide->left_shock);
+    CHECK(collide->right_shock);
+    CHECK(collide->left_head == Approx(-collide->right_head));
+}
+
+TEST_CASE("verification riemann: unphysical data and vacuum are refused") {
+    CHECK_FALSE(solve_riemann({0.0, 0.0, 1.0}, {1.0, 0.0, 1.0}, 1.4));
+    CHECK_FALSE(solve_riemann({1.0, 0.0, 1.0}, {1.0, 0.0, -1.0}, 1.4));
+    CHECK_FALSE(solve_riemann({1.0, 0.0, 1.0}, {1.0, 0.0, 1.0}, 1.0));
+    // 2 (c_L + c_R) / (gamma - 1) = 11.8 < u_R - u_L = 20: the gas separates, leaving a vacuum.
+    CHECK_FALSE(solve_riemann({1.0, -10.0, 1.0}, {1.0, 10.0, 1.0}, 1.4));
+}
+
+TEST_CASE("verification norms: known answers on synthetic data (§9.1)") {
+    // A uniform offset of 0.1 on a field of 2: every relative norm is 0.05.
+    const std::vector<double> exact(5, 2.0), offset(5, 2.1), unit(5, 1.0);
+    const ErrorNorms n = error_norms(offset, exact, unit);
+    CHECK(n.l1 == Approx(0.05));
+    CHECK(n.l2 == Approx(0.05));
+    CHECK(n.linf == Approx(0.05));
+    CHECK(n.count == 5);
+    // Volumes weigh the particles: exact (1, 2), values (1.5, 2), volumes (2, 1).
+    const std::vector<double> f = {1.5, 2.0}, fe = {1.0, 2.0}, v = {2.0, 1.0};
+    const ErrorNorms w = error_norms(f, fe, v);
+    CHECK(w.l1 == Approx(2 * 0.5 / (2 * 1.0 + 1 * 2.0)));              // 0.25
+    CHECK(w.l2 == Approx(std::sqrt(2 * 0.25 / (2 * 1.0 + 1 * 4.0))));  // 0.2887
+    CHECK(w.linf == Approx(0.5 / 2.0));
+    // A field crossing zero: scaled by max |exact|.
+    const std::vector<double> u = {0.1, 1.0}, ue = {0.0, 1.0}, uv = {1.0, 1.0};
+    CHECK(error_norms(u, ue, uv, NormScale::MaxAbs).l1 == Approx(0.1 / 2.0));
+    // A blown-up run never gives finite norms; mismatched lengths are a bug.
+    const std::vector<double> bad = {NAN, 1.0};
+    CHECK(std::isnan(error_norms(bad, ue, uv).l1));
+    CHECK(std::isnan(error_norms(std::vector<double>{}, std::vector<double>{}, std::vector<double>{}).l1));
+    CHECK_THROWS_AS(error_norms(u, std::vector<double>{1.0}, uv), std::invalid_argument);
+}
+
+TEST_CASE("verification norms: observed order and relative error (§9.2)") {
+    CHECK(observed_order(0.04, 0.01, 2.0) == Approx(2.0));
+    CHECK(observed_order(0.02, 0.01, 2.0) == Approx(1.0));
+    CHECK(observed_order(0.02, 0.01, std::sqrt(2.0)) == Approx(2.0));
+    CHECK(observed_order(0.01, 0.02, 2.0) == Approx(-1.0));  // error growing: negative order
+    CHECK(std::isnan(observed_order(0.0, 0.01, 2.0)));
+    CHECK(std::isnan(observed_order(0.02, NAN, 2.0)));
+    CHECK(relative_error(1.1, 1.0) == Approx(0.1));
+    CHECK(relative_error(-0.9, -1.0) == Approx(0.1));
+    CHECK(std::isnan(relative_error(1.0, 0.0)));
+}
+
+TEST_CASE("verification waves: level crossings and line fits on synthetic profiles") {
+    // Particles at (k + 1/2)/100 in three rows; a step from 1 to 0 at x = 0.3.
+    std::vector<double> x, f;
+    for (int row = 0; row < 3; ++row)
+        for (int k = 0; k < 100; ++k) {
+            x.push_back((k + 0.5) / 100.0);
+            f.push_back(x.back() < 0.3 ? 1.0 : 0.0);
+        }
+    const Profile p = binned_profile(x, f, 0.0, 1.0, 0.01);
+    REQUIRE(p.x.size() == 100);
+    CHECK(p.x[3] == Approx(0.035));
+    CHECK(*level_crossing(p, 0.5, 1.0, 0.0) == Approx(0.3));  // midway between bin centres 0.295 and 0.305
+    CHECK(*level_crossing(p, 0.5, 0.0, 1.0) == Approx(0.3));
+    CHECK_FALSE(level_crossing(p, 0.5, 0.5, 1.0));  // no crossing in that range
+    CHECK_FALSE(level_crossing(p, 2.0, 0.0, 1.0));
+    // A ramp f = 3 - 2x: the fit recovers it, and x_at inverts it.
+    Profile ramp;
+    for (int k = 0; k <= 10; ++k) ramp.x.push_back(0.1 * k), ramp.f.push_back(3.0 - 0.2 * k);
+    const auto fit = fit_line(ramp, 0.0, 1.0, 0.0, 10.0);
+    REQUIRE(fit);
+    CHECK(fit->slope == Approx(-2.0));
+    CHECK(fit->intercept == Approx(3.0));
+    CHECK(fit->x_at(2.0) == Approx(0.5));
+    CHECK(fit_line(ramp, 0.0, 1.0, 2.5, 2.9)->points == 2);  // only the values between 2.5 and 2.9
+    CHECK_FALSE(fit_line(ramp, 0.0, 1.0, 5.0, 6.0));
+}
+
+TEST_CASE("verification waves: the Sod waves are found on particles sampled from the exact solution") {
+    const RiemannSolution s = sod();
+    const double t = 0.2, x0 = 0.5, dx = 1.0 / 800;
+    std::vector<double> x, rho, u;
+    for (int row = 0; row < 4; ++row)
+        for (int k = 0; k < 800; ++k) {
+            x.push_back((k + 0.5) * dx);
+            const GasState g = s.sample((x.back() - x0) / t);
+            rho.push_back(g.rho);
+            u.push_back(g.u);
+        }
+    const SodWaves found = detect_sod_waves(x, rho, u, s, 0.0, 1.0, dx);
+    const SodWaves exact = exact_sod_waves(s, x0, t);
+    REQUIRE(found.shock);
+    REQUIRE(found.contact);
+    REQUIRE(found.rarefaction_head);
+    REQUIRE(found.rarefaction_tail);
+    CHECK(std::abs(*found.shock - *exact.shock) <= dx);  // a jump is found within one bin
+    CHECK(std::abs(*found.contact - *exact.contact) <= dx);
+    CHECK(*found.rarefaction_head == Approx(*exact.rarefaction_head).epsilon(1e-9));  // u is linear in the fan
+    CHECK(*found.rarefaction_tail == Approx(*exact.rarefaction_tail).epsilon(1e-9));
+    // An undisturbed tube has no shock to find.
+    const std::vector<double> zero(x.size(), 0.0);
+    CHECK_FALSE(detect_sod_waves(x, rho, zero, s, 0.0, 1.0, dx).shock);
+}
+
+TEST_CASE("verification dam break: the front ignores a lone droplet; interpolation") {
+    // A 10 x 5 block of spacing 0.1 from x = 0.05 to 0.95, and one droplet far ahead on the floor.
+    std::vector<double> x, y;
+    for (int j = 0; j < 5; ++j)
+        for (int i = 0; i < 10; ++i) x.push_back(0.05 + 0.1 * i), y.push_back(0.05 + 0.1 * j);
+    x.push_back(2.0), y.push_back(0.05);
+    std::vector<std::uint8_t> active(x.size(), 1);
+    CHECK(*surge_front(x, y, active, 0.1, 0.25) == Approx(0.95));
+    active[9] = 0;  // the bottom row's front particle deactivated: the row above (y = 0.15) still reaches 0.95
+    CHECK(*surge_front(x, y, active, 0.1, 0.25) == Approx(0.95));
+    // Only the droplet near the floor: no front.
+    const std::vector<double> lx = {2.0}, ly = {0.05};
+    const std::vector<std::uint8_t> la = {1};
+    CHECK_FALSE(surge_front(lx, ly, la, 0.1, 0.25));
+
+    const std::vector<double> t = {0.0, 1.0, 2.0}, f = {1.0, 3.0, 4.0};
+    CHECK(*interpolate(t, f, 0.5) == Approx(2.0));
+    CHECK(*interpolate(t, f, 2.0) == Approx(4.0));
+    CHECK(*interpolate(t, f, 0.0) == Approx(1.0));
+    CHECK_FALSE(interpolate(t, f, 2.5));
+}
+
+TEST_CASE("verification dam break: Martin & Moyce table as in verification.md §3") {
+    const auto& series = martin_moyce();
+    REQUIRE(series.size() == 2);
+    CHECK(series[0].points.size() == 10);
+    CHECK(series[1].points.size() == 15);
+    CHECK(series[0].points.front().T == 0.849);
+    CHECK(series[0].points.back().z_over_a == 6.717);
+    CHECK(series[1].points[4].T == 3.345);
+    CHECK(series[1].points.back().z_over_a == 13.970);
+    for (const FrontSeries& s : series)
+        for (std::size_t k = 1; k < s.points.size(); ++k) {
+            CHECK(s.points[k].T > s.points[k - 1].T);  // time and front both increase
+            CHECK(s.points[k].z_over_a > s.points[k - 1].z_over_a);
+        }
+}
+
+TEST_CASE("verification decks: every deck in decks/verification passes sphdeck check without errors") {
+    const std::filesystem::path folder = std::filesystem::path(SPHDECK_SOURCE_DIR) / "decks" / "verification";
+    std::size_t decks = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+        if (entry.path().extension() != ".k") continue;
+        ++decks;
+        const sphdeck::lint::CheckResult r = sphdeck::lint::check_file(entry.path().string());
+        std::size_t errors = 0;
+        for (const auto& d : r.diagnostics) errors += d.severity == sphdeck::diag::Severity::Error;
+        INFO(entry.path().filename().string());
+        CHECK(errors == 0);
+        CHECK(r.model.particles.size() > 0);
+        CHECK(r.model.symmetry_planes.size() >= 3);
+    }
+    CHECK(decks == 7);  // sod x 3, hydrostatic x 2, dam break x 2
+}
