@@ -135,3 +135,17 @@ CutReport cut_fields(std::string_view text, const CardLine& line, std::span<cons
 }
 
 }  // namespace sphdeck::grammar
+
+namespace sphdeck::grammar {
+
+std::string_view RawDeck::text(const CardLine& l) const {
+    const std::string& file = sources.file(l.file).text;
+    const char* begin = file.data() + l.offset;
+    const std::size_t rest = file.size() - l.offset;
+    const void* newline = std::memchr(begin, '\n', rest);
+    std::size_t length = newline ? static_cast<std::size_t>(static_cast<const char*>(newline) - begin) : rest;
+    if (length > 0 && begin[length - 1] == '\r') --length;
+    return std::string_view(begin, length);
+}
+
+}  // namespace sphdeck::grammar

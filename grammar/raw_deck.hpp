@@ -17,13 +17,13 @@ enum class CardFormat : std::uint8_t { Standard, I10, Long };
 
 std::string_view to_string(CardFormat f);
 
-// One data line of a block: a view into its file's text, end-of-line characters removed.
-// 16 bytes on purpose: a deck of 10 million particles keeps 10 million of these.
+// One data line of a block: where it starts in its file's text. 12 bytes on purpose: a deck of
+// 10 million particles keeps 20 million of these. The length is not stored: the line ends at the
+// next '\n' (the readers split lines there), found again with memchr when the text is asked for.
 struct CardLine {
     FileId file = 0;
     std::uint32_t line = 0;    // 1-based line number
     std::uint32_t offset = 0;  // byte offset of the line in the file text
-    std::uint32_t length = 0;  // bytes, without "\r\n"
 };
 
 // One keyword (or Radioss header) and the data lines that follow it up to the next keyword.
@@ -66,9 +66,10 @@ struct RawDeck {
     std::vector<diag::Diagnostic> diagnostics;
     ReadStats stats;
 
-    std::string_view text(const CardLine& l) const {
-        return std::string_view(sources.file(l.file).text).substr(l.offset, l.length);
-    }
+    // The line's text without "\r\n".
+    std::string_view text(const CardLine& l) const;
+    // Its length in bytes, without "\r\n" (for spans covering the whole line).
+    std::uint32_t length(const CardLine& l) const { return static_cast<std::uint32_t>(text(l).size()); }
     const CardLine* begin_lines(const Block& b) const { return lines.data() + b.first_line; }
     const CardLine* end_lines(const Block& b) const { return lines.data() + b.first_line + b.line_count; }
 };

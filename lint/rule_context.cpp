@@ -18,11 +18,31 @@ diag::Diagnostic& RuleContext::report(std::string_view code, diag::Severity seve
     return out_.back();
 }
 
+const model::IdIndex& RuleContext::node_index() const {
+    if (!node_index_) node_index_ = std::make_unique<model::IdIndex>(model.nodes.id);
+    return *node_index_;
+}
+
+const model::IdIndex& RuleContext::particle_index() const {
+    if (!particle_index_) particle_index_ = std::make_unique<model::IdIndex>(model.particles.node);
+    return *particle_index_;
+}
+
+const std::vector<std::uint32_t>& RuleContext::particle_nodes() const {
+    if (particle_nodes_) return *particle_nodes_;
+    const model::IdIndex& nodes = node_index();
+    particle_nodes_ = std::make_unique<std::vector<std::uint32_t>>(model.particles.size(), no_node);
+    auto& out = *particle_nodes_;
+    for (std::size_t i = 0; i < out.size(); ++i)
+        if (auto k = nodes.find(model.particles.node[i])) out[i] = static_cast<std::uint32_t>(*k);
+    return out;
+}
+
 namespace {
 grammar::Span whole_line(const grammar::RawDeck& deck, std::uint32_t index) {
     if (index >= deck.lines.size()) return {};
     const grammar::CardLine& l = deck.lines[index];
-    return grammar::Span{l.file, l.line, 1, l.length + 1};
+    return grammar::Span{l.file, l.line, 1, deck.length(l) + 1};
 }
 }  // namespace
 
@@ -42,7 +62,7 @@ std::map<long long, std::vector<grammar::Span>> RuleContext::node_lines(const st
                                                                    : text.substr(0, std::min<std::size_t>(text.size(), width));
             grammar::IntegerValue id = grammar::parse_integer(first);
             if (id.status == grammar::NumberStatus::Ok && ids.count(id.value))
-                found[id.value].push_back(grammar::Span{l->file, l->line, 1, l->length + 1});
+                found[id.value].push_back(grammar::Span{l->file, l->line, 1, static_cast<std::uint32_t>(text.size()) + 1});
         }
     }
     return found;

@@ -2,7 +2,9 @@
 // reporter that takes the rule's default severity from the registry.
 #pragma once
 
+#include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -10,6 +12,7 @@
 
 #include "diag/diagnostic.hpp"
 #include "grammar/raw_deck.hpp"
+#include "model/id_index.hpp"
 #include "model/model.hpp"
 
 namespace sphdeck::lint {
@@ -44,8 +47,18 @@ public:
     // The *NODE lines defining each of `ids` (a scan of the *NODE blocks: for rare reports only).
     std::map<long long, std::vector<grammar::Span>> node_lines(const std::set<long long>& ids) const;
 
+    // Lookups shared by the rules, built on first use: on decks of millions of particles each
+    // costs a pass over the arrays, and several rule families need them.
+    const model::IdIndex& node_index() const;
+    const model::IdIndex& particle_index() const;
+    // Position in model.nodes of each particle's node; no_node where the node is missing (REF001).
+    static constexpr std::uint32_t no_node = 0xFFFFFFFFu;
+    const std::vector<std::uint32_t>& particle_nodes() const;
+
 private:
     std::vector<diag::Diagnostic>& out_;
+    mutable std::unique_ptr<model::IdIndex> node_index_, particle_index_;
+    mutable std::unique_ptr<std::vector<std::uint32_t>> particle_nodes_;
 };
 
 // Every lint rule family, run in order.

@@ -34,7 +34,7 @@ void check_box(RuleContext& c) {
                              sph.boxid.value));
         return;
     }
-    const model::IdIndex index(c.model.nodes.id);
+    const std::vector<std::uint32_t>& node_of = c.particle_nodes();
     const model::Nodes& n = c.model.nodes;
     const auto& b = box->bounds;
     // In 2D (IDIM 2, -2) particles live in the x-y plane: z does not decide.
@@ -42,9 +42,9 @@ void check_box(RuleContext& c) {
     std::size_t outside = 0;
     std::vector<long long> first;
     for (std::size_t i = 0; i < c.model.particles.size(); ++i) {
-        auto k = index.find(c.model.particles.node[i]);
-        if (!k) continue;  // REF001
-        const double x = n.x[*k], y = n.y[*k], z = n.z[*k];
+        const std::uint32_t k = node_of[i];
+        if (k == RuleContext::no_node) continue;  // REF001
+        const double x = n.x[k], y = n.y[k], z = n.z[k];
         if (x >= b[0] && x <= b[1] && y >= b[2] && y <= b[3] && (planar || (z >= b[4] && z <= b[5]))) continue;
         if (++outside <= max_listed) first.push_back(c.model.particles.node[i]);
     }
@@ -67,7 +67,7 @@ Speed largest_initial_speed(const RuleContext& c) {
     Speed best;
     const model::Model& m = c.model;
     if (m.particles.size() == 0) return best;
-    const model::IdIndex particles(m.particles.node);
+    const model::IdIndex& particles = c.particle_index();
     auto consider = [&](double vx, double vy, double vz, grammar::Span span) {
         const double v = std::sqrt(vx * vx + vy * vy + vz * vz);
         if (v > best.value) best = {v, span};

@@ -137,7 +137,7 @@ bool holds_particles(const RuleContext& c, const std::vector<const model::Part*>
         case 3: return sph_part(ssid);
         case 4:  // node set
             if (const auto* m = members(c.model.node_sets)) {
-                const model::IdIndex particles(c.model.particles.node);
+                const model::IdIndex& particles = c.particle_index();
                 for (long long node : *m) if (particles.find(node)) return true;
             }
             return false;

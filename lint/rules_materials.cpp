@@ -40,10 +40,10 @@ void for_each_particle(const model::Particles& p, std::map<Id, PartStats>& parts
     }
 }
 
-std::map<Id, PartStats> particle_parts(const model::Model& m, const std::vector<std::size_t>& node_of) {
+std::map<Id, PartStats> particle_parts(const model::Model& m, const std::vector<std::uint32_t>& node_of) {
     std::map<Id, PartStats> parts;
     for_each_particle(m.particles, parts, [&](std::size_t i, PartStats& s) {
-        if (node_of[i] == SIZE_MAX) return;
+        if (node_of[i] == RuleContext::no_node) return;
         const double x[3] = {m.nodes.x[node_of[i]], m.nodes.y[node_of[i]], m.nodes.z[node_of[i]]};
         for (int a = 0; a < 3; ++a) s.lo[a] = std::min(s.lo[a], x[a]), s.hi[a] = std::max(s.hi[a], x[a]);
     });
@@ -60,7 +60,7 @@ const model::IdSet* node_set(const model::Model& m, const model::FieldRecord* f)
 
 // *INITIAL_VELOCITY: VX, VY, VZ on the nodes of NSID (0 = all) inside BOXID, VXE... on those of
 // NSIDEX. Rotational velocities are left out (they need the rigid-body centre).
-void add_initial_velocities(const model::Model& m, const std::vector<std::size_t>& node_of,
+void add_initial_velocities(const model::Model& m, const std::vector<std::uint32_t>& node_of,
                             std::map<Id, PartStats>& parts) {
     for (const model::KeywordRecord& r : m.records) {
         if (r.schema->name != "*INITIAL_VELOCITY") continue;
@@ -78,8 +78,8 @@ void add_initial_velocities(const model::Model& m, const std::vector<std::size_t
             const long long node = m.particles.node[i];
             if (set && !members.count(node)) return;
             if (box) {
-                const std::size_t k = node_of[i];
-                if (k == SIZE_MAX) return;
+                const std::uint32_t k = node_of[i];
+                if (k == RuleContext::no_node) return;
                 const auto& b = box->bounds;
                 if (m.nodes.x[k] < b[0] || m.nodes.x[k] > b[1] || m.nodes.y[k] < b[2] || m.nodes.y[k] > b[3] ||
                     m.nodes.z[k] < b[4] || m.nodes.z[k] > b[5])
@@ -213,10 +213,7 @@ void check_murnaghan(RuleContext& c, const std::map<Id, PartStats>& parts) {
 }  // namespace
 
 void check_sph_materials(RuleContext& c) {
-    const model::IdIndex index(c.model.nodes.id);
-    std::vector<std::size_t> node_of(c.model.particles.size(), SIZE_MAX);
-    for (std::size_t i = 0; i < node_of.size(); ++i)
-        if (auto k = index.find(c.model.particles.node[i])) node_of[i] = *k;
+    const std::vector<std::uint32_t>& node_of = c.particle_nodes();
     std::map<Id, PartStats> parts = particle_parts(c.model, node_of);
     check_null_without_eos(c, parts);
     add_initial_velocities(c.model, node_of, parts);

@@ -67,10 +67,10 @@ std::optional<std::uint32_t> line_index(const grammar::RawDeck& deck, std::strin
 
 // The scale of the particle cloud: the largest of its bounding-box extent and its distance from
 // the origin, so a lone particle far from z = 0 is still measured against something.
-double model_size(const model::Nodes& n, const std::vector<std::size_t>& node_of) {
+double model_size(const model::Nodes& n, const std::vector<std::uint32_t>& node_of) {
     double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}, far = 0;
-    for (std::size_t k : node_of) {
-        if (k == SIZE_MAX) continue;
+    for (std::uint32_t k : node_of) {
+        if (k == RuleContext::no_node) continue;
         const double x[3] = {n.x[k], n.y[k], n.z[k]};
         for (int a = 0; a < 3; ++a) {
             lo[a] = std::min(lo[a], x[a]), hi[a] = std::max(hi[a], x[a]);
@@ -89,16 +89,13 @@ void check_planar(RuleContext& c) {
     if (!sph.present || !model::is_two_dimensional(sph.idim.value)) return;
     const model::Particles& p = c.model.particles;
     const model::Nodes& n = c.model.nodes;
-    const model::IdIndex index(n.id);
-    std::vector<std::size_t> node_of(p.size(), SIZE_MAX);
-    for (std::size_t i = 0; i < p.size(); ++i)
-        if (auto k = index.find(p.node[i])) node_of[i] = *k;
+    const std::vector<std::uint32_t>& node_of = c.particle_nodes();
     const double tol = 1e-9 * model_size(n, node_of);
     const bool axisymmetric = sph.idim.value == model::Dimension::Axisymmetric;
     Group off_plane, negative_x;
     for (std::size_t i = 0; i < p.size(); ++i) {
-        const std::size_t k = node_of[i];
-        if (k == SIZE_MAX) continue;  // REF001
+        const std::uint32_t k = node_of[i];
+        if (k == RuleContext::no_node) continue;  // REF001
         if (std::abs(n.z[k]) > tol) off_plane.add(i);
         if (axisymmetric && n.x[k] < -tol) negative_x.add(i);
     }

@@ -70,7 +70,7 @@ void check_elements(RuleContext& c, const RadiossSolidProperty& p, const std::ve
                 if (solids->part[e] == id && count++ == 0) first = e;
             if (!count) continue;
             const grammar::CardLine& line = c.deck.lines[solids->line[first]];
-            c.report("RAD012", grammar::Span{line.file, line.line, 1, line.length + 1},
+            c.report("RAD012", grammar::Span{line.file, line.line, 1, c.deck.length(line) + 1},
                      fmt::format("part {} has {} {} element{} with SOL2SPH property {}: SOL2SPH supports 8-node "
                                  "bricks and 4-node tetras only",
                                  id, count, kind, count == 1 ? "" : "s", p.id))
@@ -243,7 +243,7 @@ void check_brick_deletion(RuleContext& c, const std::vector<const RadiossSolidPr
     for (const auto& d : f.time_steps)
         if (d.kind == model::DtKind::Brick && d.keyword3 == "DEL" && !d.in_starter) del = &d;
     if (!del || props.empty()) return;
-    const model::IdIndex nodes(c.model.nodes.id);
+    const model::IdIndex& nodes = c.node_index();
     double step = 0;
     for (const RadiossSolidProperty* p : props)
         for (const model::Part* part : parts_using(c.model, p->id)) {

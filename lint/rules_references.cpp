@@ -198,7 +198,7 @@ void report_unused(RuleContext& c, const std::vector<T>& items, const std::set<I
 }  // namespace
 
 void check_references(RuleContext& c) {
-    const model::IdIndex nodes(c.model.nodes.id);
+    const model::IdIndex& nodes = c.node_index();
     check_particles(c, nodes);
     check_set_members(c, nodes);
     check_node_duplicates(c, nodes);

@@ -2,7 +2,12 @@
 
 #include <fmt/format.h>
 #include <map>
+#include <numeric>
 #include <string>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 namespace sphdeck::model {
 namespace {
@@ -10,16 +15,48 @@ namespace {
 using keywords::CardRepeat;
 using keywords::CardSpec;
 
+// Below this many lines a block is decoded on the calling thread: starting threads costs more.
+constexpr std::size_t bulk_min_lines = 8192;
+
+int available_threads() {
+#ifdef _OPENMP
+    return omp_get_max_threads();
+#else
+    return 1;
+#endif
+}
+
+// Particles one *ELEMENT_SPH card stands for, and the NEND width warning (DK023).
+std::size_t count_particles(const grammar::RawDeck& deck, const grammar::CardLine& line, grammar::CardFormat format,
+                            const std::vector<FieldValue>& values, std::vector<diag::Diagnostic>& out) {
+    // NID, PID, MASS, NEND: NEND > NID generates the range NID..NEND.
+    std::size_t n = 1;
+    if (values.size() >= 4 && values[0].valid && values[3].valid && values[3].explicit_value &&
+        values[3].number > values[0].number)
+        n = static_cast<std::size_t>(values[3].number - values[0].number) + 1;
+    // Sources disagree on NEND's width (lsdyna-format.md §3); we read 33-42 and flag 41-42.
+    std::string_view text = deck.text(line);
+    if (format == grammar::CardFormat::Standard && values.size() >= 4 && text.size() > 40 &&
+        !grammar::is_blank(text.substr(40, 2)) && !grammar::is_free_format(text))
+        out.push_back({"DK023", diag::Severity::Warning,
+                       "NEND reaches columns 41-42; some readers stop NEND at column 40", values[3].span, {}});
+    return n;
+}
+
 // Walks the lines of one block against its card sequence (lsdyna-format.md §12): mandatory,
 // optional trailing, conditional (present_if on an earlier field) and repeated cards, or a
 // trailing group of cards repeated together (*PART).
 class BlockWalker {
 public:
-    BlockWalker(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, const CardVisitor& visit)
-        : deck_(deck), out_(out), decoder_(deck, out), visit_(visit) {}
+    BlockWalker(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, const CardVisitor& visit,
+                BulkVisitor* bulk)
+        : deck_(deck), out_(out), decoder_(deck, out), visit_(visit), bulk_(bulk) {}
 
     void walk(const grammar::Block& block, const keywords::KeywordMatch& match, DeckSummary& summary) {
         std::vector<const CardSpec*> cards = keywords::cards_for(match);
+        if (bulk_ && bulk_->wants(match) && cards.size() == 1 && cards[0]->repeat == CardRepeat::Repeated &&
+            !cards[0]->present_if && block.line_count >= bulk_min_lines)
+            return walk_in_parallel(block, *cards[0], summary);
         std::size_t group = keywords::repeat_group_size(match);
         std::size_t group_start = cards.size() - group;
         earlier_.clear();
@@ -39,7 +76,7 @@ public:
             decoder_.decode(block, *l, card, values_);
             if (card.repeat != CardRepeat::Repeated) remember(values_);  // conditions look at header cards
             if (visit_) visit_(block, match, card, *l, values_);
-            if (particles) count_particles(*l, block.format, summary);
+            if (particles) summary.particles += count_particles(deck_, *l, block.format, values_, out_);
             if (card.repeat != CardRepeat::Repeated) ++next;
         }
         report_missing(block, cards, next);
@@ -57,20 +94,41 @@ private:
             if (v.valid && v.spec->type != keywords::FieldType::Text) earlier_[std::string(v.spec->name)] = v.number;
     }
 
-    void count_particles(const grammar::CardLine& line, grammar::CardFormat format, DeckSummary& summary) {
-        // NID, PID, MASS, NEND: NEND > NID generates the range NID..NEND.
-        std::size_t n = 1;
-        if (values_.size() >= 4 && values_[0].valid && values_[3].valid && values_[3].explicit_value &&
-            values_[3].number > values_[0].number)
-            n = static_cast<std::size_t>(values_[3].number - values_[0].number) + 1;
-        summary.particles += n;
-        // Sources disagree on NEND's width (lsdyna-format.md §3); we read 33-42 and flag 41-42.
-        std::string_view text = deck_.text(line);
-        if (format == grammar::CardFormat::Standard && values_.size() >= 4 && text.size() > 40 &&
-            !grammar::is_blank(text.substr(40, 2)) && !grammar::is_free_format(text))
-            out_.push_back({"DK023", diag::Severity::Warning,
-                            "NEND reaches columns 41-42; some readers stop NEND at column 40",
-                            values_[3].span, {}});
+    // Every line of `block` is one `card`: contiguous ranges of lines go to the threads, and their
+    // findings are appended range after range, so the order is the same as on one thread.
+    void walk_in_parallel(const grammar::Block& block, const CardSpec& card, DeckSummary& summary) {
+        const std::size_t n = block.line_count;
+        const int threads = available_threads();
+        const bool particles = block.keyword.rfind("*ELEMENT_SPH", 0) == 0;
+        std::vector<std::vector<diag::Diagnostic>> found(static_cast<std::size_t>(threads));
+        std::vector<std::size_t> counted(static_cast<std::size_t>(threads), 0);
+        const grammar::CardLine* lines = deck_.begin_lines(block);
+        bulk_->begin(block, n, threads);
+#pragma omp parallel num_threads(threads)
+        {
+#ifdef _OPENMP
+            const int t = omp_get_thread_num();
+            const int team = omp_get_num_threads();
+#else
+            const int t = 0, team = 1;
+#endif
+            const std::size_t first = n * static_cast<std::size_t>(t) / static_cast<std::size_t>(team);
+            const std::size_t last = n * static_cast<std::size_t>(t + 1) / static_cast<std::size_t>(team);
+            auto& out = found[static_cast<std::size_t>(t)];
+            CardDecoder decoder(deck_, out);
+            std::vector<FieldValue> values;
+            std::size_t count = 0;
+            for (std::size_t i = first; i < last; ++i) {
+                decoder.decode(block, lines[i], card, values);
+                bulk_->line(block, i, t, lines[i], values);
+                if (particles) count += count_particles(deck_, lines[i], block.format, values, out);
+            }
+            counted[static_cast<std::size_t>(t)] = count;
+        }
+        bulk_->end(block);
+        summary.particles += std::accumulate(counted.begin(), counted.end(), std::size_t{0});
+        for (auto& part : found) out_.insert(out_.end(), std::make_move_iterator(part.begin()),
+                                             std::make_move_iterator(part.end()));
     }
 
     void report_extra(const grammar::Block& block, const grammar::CardLine& line, std::size_t expected) {
@@ -96,6 +154,7 @@ private:
     std::vector<diag::Diagnostic>& out_;
     CardDecoder decoder_;
     const CardVisitor& visit_;
+    BulkVisitor* bulk_;
     std::vector<FieldValue> values_;
     std::map<std::string, double> earlier_;
 };
@@ -108,9 +167,10 @@ bool skip_cards(const std::string& keyword) {
 
 }  // namespace
 
-DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, const CardVisitor& visit) {
+DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, const CardVisitor& visit,
+                       BulkVisitor* bulk) {
     DeckSummary summary;
-    BlockWalker walker(deck, out, visit);
+    BlockWalker walker(deck, out, visit, bulk);
     struct Unknown {
         grammar::Span first;
         std::size_t count = 0;

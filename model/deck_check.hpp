@@ -23,9 +23,23 @@ using CardVisitor = std::function<void(const grammar::Block&, const keywords::Ke
                                        const keywords::CardSpec&, const grammar::CardLine&,
                                        const std::vector<FieldValue>&)>;
 
-// Decodes every card of every known block, reporting into `out`; `visit` (optional) sees each
-// decoded card in deck order, which is how the model is built without decoding twice.
+// Receives the cards of big blocks made of one repeated card (*NODE, *ELEMENT_SPH: millions of
+// lines), which check_deck decodes on several threads. begin() and end() run on the calling
+// thread; line() runs concurrently, once per line index, so it may only write that line's slot.
+class BulkVisitor {
+public:
+    virtual ~BulkVisitor() = default;
+    virtual bool wants(const keywords::KeywordMatch& match) const = 0;
+    virtual void begin(const grammar::Block& block, std::size_t lines, int threads) = 0;
+    virtual void line(const grammar::Block& block, std::size_t index, int thread, const grammar::CardLine& line,
+                      const std::vector<FieldValue>& values) = 0;
+    virtual void end(const grammar::Block& block) = 0;
+};
+
+// Decodes every card of every known block, reporting into `out` in deck order; `visit` (optional)
+// sees each decoded card in deck order, which is how the model is built without decoding twice.
+// Blocks that `bulk` wants skip `visit` and go to `bulk` instead, decoded in parallel.
 DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out,
-                       const CardVisitor& visit = {});
+                       const CardVisitor& visit = {}, BulkVisitor* bulk = nullptr);
 
 }  // namespace sphdeck::model

@@ -83,6 +83,97 @@ void ModelBuilder::on_card(const grammar::Block& block, const keywords::KeywordM
     model_.records.back().rows.push_back(std::move(row));
 }
 
+bool ModelBuilder::Bulk::wants(const keywords::KeywordMatch& match) const {
+    return match.schema->name == "*NODE" || match.schema->name == "*ELEMENT_SPH";
+}
+
+void ModelBuilder::Bulk::begin(const grammar::Block& block, std::size_t lines, int threads) {
+    particles_ = block.keyword.rfind("*ELEMENT_SPH", 0) == 0;
+    volume_ = block.keyword.find("_VOLUME") != std::string::npos;
+    irregular_.assign(static_cast<std::size_t>(threads), {});
+    if (particles_) {
+        Particles& p = owner_.model_.particles;
+        base_ = p.size();
+        const std::size_t size = base_ + lines;
+        p.node.resize(size), p.part.resize(size), p.mass.resize(size), p.volume.resize(size), p.line.resize(size);
+    } else {
+        Nodes& n = owner_.model_.nodes;
+        base_ = n.id.size();
+        const std::size_t size = base_ + lines;
+        n.id.resize(size), n.x.resize(size), n.y.resize(size), n.z.resize(size);
+    }
+}
+
+void ModelBuilder::Bulk::line(const grammar::Block&, std::size_t index, int thread, const grammar::CardLine& line,
+                              const std::vector<FieldValue>& v) {
+    const std::size_t slot = base_ + index;
+    auto& irregular = irregular_[static_cast<std::size_t>(thread)];
+    if (!particles_) {
+        if (v.size() < 4 || !v[0].valid) return irregular.push_back({index, 0, true});  // as add_node
+        Nodes& n = owner_.model_.nodes;
+        n.id[slot] = static_cast<long long>(v[0].number);
+        n.x[slot] = v[1].number, n.y[slot] = v[2].number, n.z[slot] = v[3].number;
+        return;
+    }
+    if (v.size() < 3 || !v[0].valid) return irregular.push_back({index, 0, true});  // as add_particles
+    Particles& p = owner_.model_.particles;
+    p.node[slot] = static_cast<long long>(v[0].number);
+    p.part[slot] = v[1].valid ? static_cast<long long>(v[1].number) : -1;
+    p.mass[slot] = v[2].valid ? v[2].number : 0.0;
+    p.volume[slot] = volume_;
+    p.line[slot] = static_cast<std::uint32_t>(&line - owner_.deck_.lines.data());
+    if (v.size() >= 4 && v[3].valid && v[3].explicit_value && v[3].number > v[0].number)
+        irregular.push_back({index, static_cast<long long>(v[3].number), false});
+}
+
+void ModelBuilder::Bulk::end(const grammar::Block&) {
+    bool regular = true;
+    for (const auto& list : irregular_) regular = regular && list.empty();
+    if (!regular && particles_) end_particles();
+    if (!regular && !particles_) end_nodes();
+    irregular_.clear();
+}
+
+// Threads own contiguous ranges of lines in thread order, so the concatenated lists are sorted.
+void ModelBuilder::Bulk::end_nodes() {
+    Nodes& n = owner_.model_.nodes;
+    std::size_t write = base_, read = base_;
+    for (const auto& list : irregular_)
+        for (const Irregular& skip : list) {
+            for (; read < base_ + skip.index; ++read, ++write)
+                n.id[write] = n.id[read], n.x[write] = n.x[read], n.y[write] = n.y[read], n.z[write] = n.z[read];
+            ++read;  // the skipped line's slot
+        }
+    for (; read < n.id.size(); ++read, ++write)
+        n.id[write] = n.id[read], n.x[write] = n.x[read], n.y[write] = n.y[read], n.z[write] = n.z[read];
+    n.id.resize(write), n.x.resize(write), n.y.resize(write), n.z.resize(write);
+}
+
+// Skipped lines drop out and NEND ranges expand (NID..NEND, same part and mass): rebuilt in order.
+void ModelBuilder::Bulk::end_particles() {
+    Particles& p = owner_.model_.particles;
+    Particles rebuilt;
+    auto copy = [&](std::size_t from, long long id) {
+        rebuilt.node.push_back(id), rebuilt.part.push_back(p.part[from]), rebuilt.mass.push_back(p.mass[from]);
+        rebuilt.volume.push_back(p.volume[from]), rebuilt.line.push_back(p.line[from]);
+    };
+    std::size_t read = base_;
+    for (const auto& list : irregular_)
+        for (const Irregular& entry : list) {
+            for (; read < base_ + entry.index; ++read) copy(read, p.node[read]);
+            if (!entry.skipped)
+                for (long long id = p.node[read]; id <= entry.last; ++id) copy(read, id);
+            ++read;
+        }
+    for (; read < p.size(); ++read) copy(read, p.node[read]);
+    p.node.resize(base_), p.part.resize(base_), p.mass.resize(base_), p.volume.resize(base_), p.line.resize(base_);
+    p.node.insert(p.node.end(), rebuilt.node.begin(), rebuilt.node.end());
+    p.part.insert(p.part.end(), rebuilt.part.begin(), rebuilt.part.end());
+    p.mass.insert(p.mass.end(), rebuilt.mass.begin(), rebuilt.mass.end());
+    p.volume.insert(p.volume.end(), rebuilt.volume.begin(), rebuilt.volume.end());
+    p.line.insert(p.line.end(), rebuilt.line.begin(), rebuilt.line.end());
+}
+
 Model ModelBuilder::finish(std::vector<diag::Diagnostic>& out) {
     extract_typed(deck_, model_, out);
     return std::move(model_);
@@ -92,7 +183,8 @@ Model build_model(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& o
     ModelBuilder builder(deck);
     DeckSummary s = check_deck(deck, out, [&](const grammar::Block& b, const keywords::KeywordMatch& m,
                                               const keywords::CardSpec& c, const grammar::CardLine& l,
-                                              const std::vector<FieldValue>& v) { builder.on_card(b, m, c, l, v); });
+                                              const std::vector<FieldValue>& v) { builder.on_card(b, m, c, l, v); },
+                               &builder.bulk_visitor());
     if (summary) *summary = s;
     return builder.finish(out);
 }

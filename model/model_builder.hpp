@@ -22,7 +22,37 @@ public:
     // Typed extraction; reports model-level findings (IDIM without a value) into `out`.
     Model finish(std::vector<diag::Diagnostic>& out);
 
+    // Big *NODE and *ELEMENT_SPH blocks, decoded in parallel by check_deck.
+    BulkVisitor& bulk_visitor() { return bulk_; }
+
 private:
+    // Writes each line's node or particle into a slot sized in advance; lines that are not exactly
+    // one entry (an unreadable id, an NEND range) are rare and are fixed up in end(), in order.
+    class Bulk : public BulkVisitor {
+    public:
+        explicit Bulk(ModelBuilder& owner) : owner_(owner) {}
+        bool wants(const keywords::KeywordMatch& match) const override;
+        void begin(const grammar::Block& block, std::size_t lines, int threads) override;
+        void line(const grammar::Block& block, std::size_t index, int thread, const grammar::CardLine& line,
+                  const std::vector<FieldValue>& values) override;
+        void end(const grammar::Block& block) override;
+
+    private:
+        struct Irregular {
+            std::size_t index;   // line in the block
+            long long last = 0;  // last id of an NEND range; unused for a skipped line
+            bool skipped = false;
+        };
+        void end_nodes();
+        void end_particles();
+
+        ModelBuilder& owner_;
+        bool particles_ = false;
+        bool volume_ = false;
+        std::size_t base_ = 0;  // first slot of the block in the arrays
+        std::vector<std::vector<Irregular>> irregular_;  // per thread
+    };
+
     void add_node(const std::vector<FieldValue>& values);
     void add_particles(const grammar::Block& block, const std::vector<FieldValue>& values,
                        const grammar::CardLine& line);
@@ -30,6 +60,7 @@ private:
     const grammar::RawDeck& deck_;
     Model model_;
     const grammar::Block* current_block_ = nullptr;
+    Bulk bulk_{*this};
 };
 
 // Reads the whole deck into a Model in one pass: decode + build. Diagnostics go to `out`.

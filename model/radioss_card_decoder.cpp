@@ -204,7 +204,7 @@ grammar::Span radioss_field_span(const grammar::RawDeck& deck, std::uint32_t ind
                                  const grammar::radioss::CardSpec& card, int version, std::size_t field) {
     if (index >= deck.lines.size()) return {};
     const grammar::CardLine& line = deck.lines[index];
-    const grammar::Span whole{line.file, line.line, 1, line.length + 1};
+    const grammar::Span whole{line.file, line.line, 1, deck.length(line) + 1};
     if (field >= card.fields.size()) return whole;
     std::vector<grammar::Field> fields;
     const auto positions = grammar::radioss::layout(card, version);

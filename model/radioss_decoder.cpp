@@ -204,7 +204,7 @@ private:
                                           format.cards.size(), format.since, extra);
         if (!newer.empty()) message += fmt::format(" ({}; the deck's Invers is {})", newer, b.version);
         out_.push_back({"DK009", diag::Severity::Warning, std::move(message),
-                        grammar::Span{line.file, line.line, 1, std::max<std::uint32_t>(line.length, 1) + 1}, {}});
+                        grammar::Span{line.file, line.line, 1, std::max<std::uint32_t>(deck_.length(line), 1) + 1}, {}});
     }
 
     const grammar::RawDeck& deck_;

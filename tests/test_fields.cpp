@@ -8,7 +8,7 @@ using namespace sphdeck::grammar;
 
 namespace {
 const FixedField node_fields[] = {{0, 8}, {8, 16}, {24, 16}, {40, 16}, {56, 8}, {64, 8}};
-CardLine line_of(std::string_view) { return CardLine{0, 7, 0, 0}; }
+CardLine line_of(std::string_view) { return CardLine{0, 7, 0}; }
 
 std::vector<Field> cut(std::string_view text, std::span<const FixedField> standard, CardFormat format,
                        CutReport* report = nullptr) {

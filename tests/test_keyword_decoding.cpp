@@ -37,7 +37,7 @@ struct Decoded {
         grammar::Block block;
         block.keyword = "*TEST";
         block.format = format;
-        const grammar::CardLine line{0, kLine, 0, static_cast<std::uint32_t>(text.size())};
+        const grammar::CardLine line{0, kLine, 0};
         model::CardDecoder(deck, diagnostics).decode(block, line, card, values);
     }
     Decoded(const Decoded&) = delete;

@@ -86,8 +86,7 @@ void DeckReader::on_data(const char* begin, const char* end) {
         }
         return;
     }
-    deck_.lines.push_back(CardLine{f.id, f.line, static_cast<std::uint32_t>(begin - f.base),
-                                   static_cast<std::uint32_t>(text.size())});
+    deck_.lines.push_back(CardLine{f.id, f.line, static_cast<std::uint32_t>(begin - f.base)});
     ++deck_.blocks[*f.block].line_count;
     ++deck_.stats.cards;
 }

@@ -60,7 +60,7 @@ void DeckReader::on_empty(const char* begin) {
     // A blank line inside a block is a card (blank cards take every default); trailing blank
     // lines of a block are dropped when it closes.
     OpenFile& f = current();
-    deck_.lines.push_back(CardLine{f.id, f.line, static_cast<std::uint32_t>(begin - f.base), 0});
+    deck_.lines.push_back(CardLine{f.id, f.line, static_cast<std::uint32_t>(begin - f.base)});
     ++deck_.blocks[*block_].line_count;
     ++deck_.stats.cards;
 }
@@ -115,8 +115,7 @@ void DeckReader::on_data(const char* begin, const char* end) {
         }
         return;
     }
-    deck_.lines.push_back(CardLine{f.id, f.line, static_cast<std::uint32_t>(begin - f.base),
-                                   static_cast<std::uint32_t>(text.size())});
+    deck_.lines.push_back(CardLine{f.id, f.line, static_cast<std::uint32_t>(begin - f.base)});
     ++deck_.blocks[*block_].line_count;
     ++deck_.stats.cards;
 }

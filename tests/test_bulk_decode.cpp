@@ -1,0 +1,94 @@
+// Big *NODE and *ELEMENT_SPH blocks are decoded on several threads (model/deck_check.cpp): the
+// model and the findings must be exactly those of the one-thread walk, in the same order.
+#include <doctest/doctest.h>
+#include <fmt/format.h>
+
+#include <string>
+
+#include "grammar/read_deck.hpp"
+#include "model/model_builder.hpp"
+
+using namespace sphdeck;
+
+namespace {
+
+// A deck big enough for the parallel path, with the irregular lines it must fix up: an id that
+// does not read, an NEND range, a bad coordinate, a node card without coordinates.
+std::string big_deck(int n) {
+    std::string text = "*KEYWORD\n*NODE\n";
+    for (int i = 1; i <= n; ++i) {
+        if (i == 100) text += "     abc     1.0     2.0     3.0\n";             // DK003, line skipped
+        else if (i == 5000) text += fmt::format("{:8d}     1.x     2.0     3.0\n", i);  // DK003 on X
+        else text += fmt::format("{:8d}{:16.6f}{:16.6f}{:16.6f}\n", i, 0.001 * i, 0.002 * i, 0.5);
+    }
+    text += "*ELEMENT_SPH\n";
+    for (int i = 1; i <= n; ++i) {
+        if (i == 7) text += fmt::format("{:8d}{:8d}{:16.6f}{:8d}\n", i, 1, 0.25, i + 3);  // NEND range: 7..10
+        else if (i >= 8 && i <= 10) continue;
+        else if (i == 9000) text += "  zz9000       1       1.0\n";                     // DK003, skipped
+        else text += fmt::format("{:8d}{:8d}{:16.6f}\n", i, 1 + i % 3, 1.0 + i);
+    }
+    text += "*END\n";
+    return text;
+}
+
+struct Built {
+    model::Model model;
+    std::vector<diag::Diagnostic> diagnostics;
+    model::DeckSummary summary;
+};
+
+Built build(const grammar::RawDeck& deck, bool parallel) {
+    Built b;
+    model::ModelBuilder builder(deck);
+    b.summary = model::check_deck(
+        deck, b.diagnostics,
+        [&](const grammar::Block& bl, const keywords::KeywordMatch& m, const keywords::CardSpec& c,
+            const grammar::CardLine& l, const std::vector<model::FieldValue>& v) { builder.on_card(bl, m, c, l, v); },
+        parallel ? &builder.bulk_visitor() : nullptr);
+    b.model = builder.finish(b.diagnostics);
+    return b;
+}
+
+}  // namespace
+
+TEST_CASE("bulk decode: the parallel walk gives the model and findings of the serial one") {
+    const int n = 20000;
+    grammar::RawDeck deck = grammar::read_deck_buffer(big_deck(n), "big.k");
+    Built serial = build(deck, false);
+    Built parallel = build(deck, true);
+
+    // The serial result is the reference: check it is what the deck says before comparing.
+    CHECK(serial.model.nodes.id.size() == static_cast<std::size_t>(n - 1));  // the "abc" line dropped
+    CHECK(serial.model.particles.size() == static_cast<std::size_t>(n - 1));  // 7..10 from one line, zz dropped
+    CHECK(serial.summary.particles == static_cast<std::size_t>(n - 1 + 1));   // the skipped line still counts
+
+    const auto& a = serial.model;
+    const auto& b = parallel.model;
+    CHECK(a.nodes.id == b.nodes.id);
+    CHECK(a.nodes.x == b.nodes.x);
+    CHECK(a.nodes.y == b.nodes.y);
+    CHECK(a.nodes.z == b.nodes.z);
+    CHECK(a.particles.node == b.particles.node);
+    CHECK(a.particles.part == b.particles.part);
+    CHECK(a.particles.mass == b.particles.mass);
+    CHECK(a.particles.volume == b.particles.volume);
+    CHECK(a.particles.line == b.particles.line);
+    CHECK(serial.summary.particles == parallel.summary.particles);
+
+    REQUIRE(serial.diagnostics.size() == parallel.diagnostics.size());
+    for (std::size_t i = 0; i < serial.diagnostics.size(); ++i) {
+        CHECK(serial.diagnostics[i].code == parallel.diagnostics[i].code);
+        CHECK(serial.diagnostics[i].message == parallel.diagnostics[i].message);
+        CHECK(serial.diagnostics[i].span.line == parallel.diagnostics[i].span.line);
+        CHECK(serial.diagnostics[i].span.column == parallel.diagnostics[i].span.column);
+    }
+    CHECK(serial.diagnostics.size() >= 3);  // the two DK003 on nodes and the one on particles at least
+
+    // The NEND range expands in place, with the mass and line of its card.
+    for (std::size_t i = 6; i < 10; ++i) {
+        CHECK(b.particles.node[i] == static_cast<long long>(i + 1));
+        CHECK(b.particles.mass[i] == doctest::Approx(0.25));
+        CHECK(b.particles.line[i] == b.particles.line[6]);
+    }
+}
