@@ -50,6 +50,18 @@ std::string where(const lint::CheckResult& r, std::uint32_t line) {
     return fmt::format("{}:{}", r.deck.sources.file(l.file).display_name, l.line);
 }
 
+// "file:line:column" of a span, for findings about a part.
+std::string where(const lint::CheckResult& r, const grammar::Span& span) {
+    if (!span.valid()) return r.model.radioss ? r.model.radioss->run_name : "";
+    return fmt::format("{}:{}:{}", r.deck.sources.file(span.file).display_name, span.line, span.column);
+}
+
+// The check column: no particles is not a mass check that passed.
+std::string check_word(const preproc::Sol2sphPart& p) {
+    if (!p.no_particles.empty()) return "none";
+    return part_passes(p) ? "ok" : "FAILED";
+}
+
 std::string guidance(const preproc::Sol2sphPart& p) {
     std::string s = fmt::format("pitch {}: h {} to {} (1.25 to 1.5 x pitch, sph-algorithms.md §9.4); h_1D 3 "
                                 "with hcst 1.2 gives {}",
@@ -81,7 +93,11 @@ nlohmann::ordered_json to_json(const Sol2sphArgs& args, const lint::CheckResult&
                          {"relative_difference", p.relative_difference()},
                          {"starter_mass", p.starter_mass},
                          {"starter_relative_difference", p.starter_relative_difference()},
-                         {"mass_check", part_passes(p)},
+                         {"mass_check", p.no_particles.empty() ? nlohmann::ordered_json(part_passes(p))
+                                                               : nlohmann::ordered_json(nullptr)},
+                         {"location", where(r, p.span)},
+                         {"warnings", p.no_particles.empty() ? std::vector<std::string>{}
+                                                             : std::vector<std::string>{p.no_particles}},
                          {"notes", p.notes}});
     for (const preproc::Sol2sphIssue& i : s.issues)
         issues.push_back({{"element", i.element}, {"location", where(r, i.line)}, {"message", i.message}});
@@ -97,7 +113,7 @@ void print_text(const Sol2sphArgs& args, const lint::CheckResult& r, const prepr
         rows.push_back({std::to_string(p.solid_part), std::to_string(p.ndir), std::to_string(p.sph_part),
                         std::to_string(p.bricks), std::to_string(p.tetras), std::to_string(p.particles), g4(p.pitch),
                         fmt::format("{:.6g}", p.element_mass), fmt::format("{:.6g}", p.particle_mass),
-                        fmt::format("{:.1e}", p.relative_difference()), part_passes(p) ? "ok" : "FAILED"});
+                        fmt::format("{:.1e}", p.relative_difference()), check_word(p)});
     std::vector<std::size_t> width(rows[0].size(), 0);
     for (const auto& row : rows)
         for (std::size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], row[c].size());
@@ -115,6 +131,8 @@ void print_text(const Sol2sphArgs& args, const lint::CheckResult& r, const prepr
                        "takes det J at each sub-cell centre (soltosph.F), exact only for parallelepipeds\n",
                        p.solid_part, p.starter_mass, p.starter_relative_difference());
         for (const std::string& note : p.notes) fmt::print("part {}: {}\n", p.solid_part, note);
+        if (!p.no_particles.empty())
+            fmt::print("{}: warning: part {}: {}\n", where(r, p.span), p.solid_part, p.no_particles);
     }
     for (const preproc::Sol2sphIssue& i : s.issues) fmt::print("{}: error: {}\n", where(r, i.line), i.message);
 }

@@ -19,7 +19,7 @@ CheckResult finish(grammar::RawDeck deck, const CheckOptions& options) {
     diag::sort_by_location(result.diagnostics);
     // What the deck's own comments and the configuration say about the findings: every consumer
     // (the CLI, the deck tests, an editor) sees the same list.
-    apply_suppressions(result.deck.sources, result.diagnostics);
+    apply_suppressions(result.deck.sources, result.diagnostics, grammar::format_of(result.deck));
     apply_rule_settings(options.config, result.diagnostics);
     return result;
 }

@@ -58,6 +58,8 @@ void check_mass_spacing(RuleContext& c, const Preview& p) {
         any = any || ratio[q] > 2.0 || ratio[q] < 0.5;
     }
     if (!any) return;
+    // The density field as the deck names it: RO of *MAT_, RHO_I of /MAT.
+    const char* density_name = c.model.radioss ? "RHO_I" : "RO";
     std::vector<double> closest(p.parts.size(), 0.0);
     for (std::size_t i = 0; i < n; ++i) {
         const std::uint32_t q = p.particles.part[i];
@@ -69,10 +71,10 @@ void check_mass_spacing(RuleContext& c, const Preview& p) {
         if (at[q] == n) continue;
         const PartPreview& part = p.parts[q];
         c.report("SPH113", c.particle_span(at[q]),
-                 fmt::format("particle mass {:.4g} is {:.3g} times rho * spacing^{} = {:.4g} (part {}: RO {:.4g}, "
+                 fmt::format("particle mass {:.4g} is {:.3g} times rho * spacing^{} = {:.4g} (part {}: {} {:.4g}, "
                              "spacing {:.4g}); expected within a factor 2, a unit mistake?",
                              part.mass_median, ratio[q], p.dimension, part.mass_median / ratio[q], part.part,
-                             part.density, part.spacing));
+                             density_name, part.density, part.spacing));
     }
 }
 
@@ -111,6 +113,17 @@ void check_stray(RuleContext& c, const Preview& p) {
     }
 }
 
+// Where a part's smoothing length is set. LS-DYNA: SPHINI when it applies, else CSLH. Radioss has
+// no CSLH: the /PROP/SPH h field (the model's section keeps no span when h is 0), or the
+// property's header when h is left blank.
+grammar::Span smoothing_span(const RuleContext& c, const model::Section& section, bool sphini_given) {
+    if (c.model.radioss) {
+        for (const model::RadiossSphProperty& p : c.model.radioss->sph_properties)
+            if (std::to_string(p.id) == section.id) return p.h.explicit_value ? p.h.span : p.span;
+    }
+    return sphini_given ? section.sphini.span : section.cslh.span;
+}
+
 // SPH118: too few neighbours per particle. Two estimates must agree: the part's median count
 // (free-surface corners aside) and the count of an interior particle of a uniform fill at the
 // part's spacing, pi r^2 in 2D and 4/3 pi r^3 in 3D with r = support / spacing. The second keeps
@@ -127,7 +140,7 @@ void check_few_neighbours(RuleContext& c, const Preview& p) {
         grammar::Span where;
         const model::Part* def = c.model.part(std::to_string(part.part));
         const model::Section* section = def ? c.model.section(def->section.value) : nullptr;
-        if (section && section->sph) where = part.sphini_given ? section->sphini.span : section->cslh.span;
+        if (section && section->sph) where = smoothing_span(c, *section, part.sphini_given);
         else if (def) where = def->span;
         else if (std::size_t i = first_particle(p, q); i < p.particles.part.size()) where = c.particle_span(i);
         c.report("SPH118", where,

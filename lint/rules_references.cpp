@@ -7,6 +7,7 @@
 
 #include "lint/rules.hpp"
 #include "model/id_index.hpp"
+#include "model/radioss_decoder.hpp"
 
 namespace sphdeck::lint {
 namespace {
@@ -85,7 +86,9 @@ void check_node_duplicates(RuleContext& c, const model::IdIndex& index) {
         if (ids.size() == max_duplicate_reports) break;
         ids.insert(c.model.nodes.id[again]);
     }
-    for (const auto& [id, spans] : c.node_lines(ids)) {
+    // The lines come from the deck's own node blocks: *NODE, or /NODE in a Radioss deck.
+    const auto lines = c.model.radioss ? model::radioss_node_lines(c.deck, ids) : c.node_lines(ids);
+    for (const auto& [id, spans] : lines) {
         for (std::size_t k = 1; k < spans.size(); ++k)
             c.report("REF006", spans[k], fmt::format("node {} is defined twice", id))
                 .notes.push_back({spans.front(), "first defined here"});

@@ -1,8 +1,10 @@
-// Inline suppressions: parse "$ sphdeck:" comments, find the lines each one covers, drop the
-// diagnostics they silence, report the unused (DK026) and malformed (DK028) ones.
+// Inline suppressions: parse "$ sphdeck:" comments ("# sphdeck:" too in Radioss decks), find the
+// lines each one covers, drop the diagnostics they silence, report the unused (DK026) and
+// malformed (DK028) ones.
 #include "lint/suppressions.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <map>
 #include <tuple>
@@ -36,16 +38,36 @@ struct Placed {
     std::vector<bool> used;  // per item
 };
 
-bool is_keyword_line(std::string_view line) {
-    std::size_t i = 0;
-    while (i < line.size() && is_blank(line[i])) ++i;
-    return i < line.size() && line[i] == '*';
-}
+// What a line is to the directives: LS-DYNA comments start with '$' and blocks with '*'; Radioss
+// comments with '#' or '$' in column 1 (but `#include` and `#enddata` are structural lines) and
+// blocks with a '/' header (indented ones too: the reader takes them, with DK020).
+struct LineKinds {
+    bool radioss = false;
+
+    bool comment(std::string_view line) const {
+        if (line.empty()) return false;
+        if (line[0] == '$') return true;
+        return radioss && line[0] == '#' && !starts_with_word(line, "#include") && !starts_with_word(line, "#enddata");
+    }
+    bool block_start(std::string_view line) const {
+        std::size_t i = 0;
+        while (i < line.size() && is_blank(line[i])) ++i;
+        return i < line.size() && line[i] == (radioss ? '/' : '*');
+    }
+
+private:
+    static bool starts_with_word(std::string_view line, std::string_view word) {
+        if (line.size() < word.size()) return false;
+        for (std::size_t i = 0; i < word.size(); ++i)
+            if (std::tolower(static_cast<unsigned char>(line[i])) != word[i]) return false;
+        return true;
+    }
+};
 
 // One pass over a file's lines: each directive waits for the next non-comment line; a block
 // directive then stays open until the next keyword line.
-void place_directives(const grammar::SourceFile& source, grammar::FileId file, std::vector<Placed>& out,
-                      std::vector<diag::Diagnostic>& problems) {
+void place_directives(const grammar::SourceFile& source, grammar::FileId file, LineKinds kinds,
+                      std::vector<Placed>& out, std::vector<diag::Diagnostic>& problems) {
     std::string_view text = source.text;
     std::vector<std::size_t> pending, open;
     std::uint32_t line = 0;
@@ -56,7 +78,7 @@ void place_directives(const grammar::SourceFile& source, grammar::FileId file, s
         if (!content.empty() && content.back() == '\r') content.remove_suffix(1);
         pos = end + 1;
         ++line;
-        if (!content.empty() && content[0] == '$') {
+        if (kinds.comment(content)) {
             Placed placed{file, {}, 0, 0, {}};
             if (parse_suppression(content, file, line, placed.directive, problems)) {
                 placed.used.assign(placed.directive.items.size(), false);
@@ -65,7 +87,7 @@ void place_directives(const grammar::SourceFile& source, grammar::FileId file, s
             }
             continue;
         }
-        const bool keyword = is_keyword_line(content);
+        const bool keyword = kinds.block_start(content);
         if (keyword) {
             for (std::size_t i : open) out[i].last = line - 1;
             open.clear();
@@ -113,7 +135,7 @@ std::string unused_message(const Placed& p, const SuppressionItem& item) {
 
 bool parse_suppression(std::string_view comment, grammar::FileId file, std::uint32_t line, Suppression& out,
                        std::vector<diag::Diagnostic>& problems) {
-    if (comment.empty() || comment[0] != '$') return false;
+    if (comment.empty() || (comment[0] != '$' && comment[0] != '#')) return false;
     std::uint32_t i = skip_blanks(comment, 1);
     if (comment.substr(i, kMarker.size()) != kMarker) return false;
     i = skip_blanks(comment, static_cast<std::uint32_t>(i + kMarker.size()));
@@ -172,13 +194,15 @@ bool parse_suppression(std::string_view comment, grammar::FileId file, std::uint
     return true;
 }
 
-void apply_suppressions(const grammar::SourceMap& sources, std::vector<diag::Diagnostic>& diagnostics) {
+void apply_suppressions(const grammar::SourceMap& sources, std::vector<diag::Diagnostic>& diagnostics,
+                        grammar::DeckFormat format) {
+    const LineKinds kinds{format == grammar::DeckFormat::Radioss};
     std::vector<Placed> placed;
     std::vector<diag::Diagnostic> problems;
     for (grammar::FileId f = 0; f < sources.size(); ++f) {
         const grammar::SourceFile& source = sources.file(f);
         if (source.text.find(kMarker) == std::string::npos) continue;  // the common case: no directive
-        place_directives(source, f, placed, problems);
+        place_directives(source, f, kinds, placed, problems);
     }
     if (placed.empty() && problems.empty()) return;
 

@@ -8,6 +8,10 @@
 //
 // Codes or rule names, comma-separated; `all` names every rule. A directive applies to its own file
 // only, never to files it includes. The text after `--` is for people.
+//
+// Radioss decks (radioss-format.md §2) also take the directives after `#`, their other comment
+// character, and their blocks start at `/` header lines. In LS-DYNA decks `#` is no comment, so
+// a `# sphdeck:` line there is data and no directive.
 #pragma once
 
 #include <cstdint>
@@ -16,6 +20,7 @@
 #include <vector>
 
 #include "diag/diagnostic.hpp"
+#include "grammar/read_deck.hpp"  // DeckFormat
 #include "grammar/source_map.hpp"
 
 namespace sphdeck::lint {
@@ -32,13 +37,15 @@ struct Suppression {
 };
 
 // Parses one comment line. Returns false when the line is no directive (does not start with
-// "$ sphdeck:"); otherwise fills `out` with the valid items and `problems` with DK028 findings for
+// "$ sphdeck:" or "# sphdeck:"; the caller decides which lines are comments); otherwise fills `out` with the valid items and `problems` with DK028 findings for
 // the rest (their spans carry `file` and `line`).
 bool parse_suppression(std::string_view comment, grammar::FileId file, std::uint32_t line, Suppression& out,
                        std::vector<diag::Diagnostic>& problems);
 
 // Drops the diagnostics that directives silence, then adds DK026 for every directive item that
 // silenced nothing and DK028 for malformed directives. Keeps the diagnostics sorted by location.
-void apply_suppressions(const grammar::SourceMap& sources, std::vector<diag::Diagnostic>& diagnostics);
+// `format` says which lines are comments and which start blocks.
+void apply_suppressions(const grammar::SourceMap& sources, std::vector<diag::Diagnostic>& diagnostics,
+                        grammar::DeckFormat format = grammar::DeckFormat::LsDyna);
 
 }  // namespace sphdeck::lint

@@ -1,10 +1,12 @@
 #include "model/radioss_card_decoder.hpp"
 
+#include <cmath>
 #include <cstring>
 #include <fmt/format.h>
 
 #include "grammar/fields.hpp"
 #include "grammar/value.hpp"
+#include "model/radioss_parameters.hpp"
 
 namespace sphdeck::model {
 
@@ -174,8 +176,16 @@ void RadiossCardDecoder::read_value(RadiossValue& v, std::string_view field, boo
             v.text = head;
         }
     }
+    if (auto ref = radioss_parameter_reference(token)) {
+        if (!parameters_) return;  // no table: the value stays unknown, no finding
+        if (auto value = parameters_->value_of(*ref, block_, integer, v.spec->name, v.span, out_)) {
+            v.number = integer ? std::trunc(*value) : *value;
+            v.valid = true;
+        }
+        return;
+    }
     grammar::ValueToken t = grammar::classify_value(token, integer ? grammar::ValueShape::Integer : grammar::ValueShape::Real);
-    if (t.shape == grammar::ValueShape::Parameter) return;  // /PARAMETER values are not read: unknown, no finding
+    if (t.shape == grammar::ValueShape::Parameter) return;  // not reached: references are read above
     if (integer) {
         grammar::IntegerValue n = grammar::to_integer(t);
         if (n.status != NumberStatus::Ok) {

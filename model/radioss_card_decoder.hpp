@@ -13,6 +13,8 @@
 
 namespace sphdeck::model {
 
+class RadiossParameters;  // model/radioss_parameters.hpp
+
 struct RadiossValue {
     const grammar::radioss::FieldSpec* spec = nullptr;
     grammar::Span span;           // the cell (the value itself when written)
@@ -25,6 +27,12 @@ struct RadiossValue {
 class RadiossCardDecoder {
 public:
     RadiossCardDecoder(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out) : deck_(deck), out_(out) {}
+
+    // The deck's /PARAMETER table, for references in numeric cells (`[name]`, `&name`); without
+    // it references stay unknown and unreported. `block` (index into RawDeck::blocks) is where
+    // the lines being decoded stand: only parameters defined before it have a value there.
+    void set_parameters(const RadiossParameters* parameters) { parameters_ = parameters; }
+    void set_block(std::size_t block) { block_ = block; }
 
     // Decodes `line` against `card`. `version` sets the cell widths; `list_directed` reads engine
     // lines (tokens separated by blanks or commas); `newer` names a newer format that reads more
@@ -45,6 +53,8 @@ private:
 
     const grammar::RawDeck& deck_;
     std::vector<diag::Diagnostic>& out_;
+    const RadiossParameters* parameters_ = nullptr;
+    std::size_t block_ = 0;
     std::vector<grammar::Field> fields_;
     struct Layout {
         const grammar::radioss::CardSpec* card = nullptr;

@@ -11,6 +11,7 @@
 #include "grammar/radioss/reader.hpp"
 #include "grammar/value.hpp"
 #include "model/radioss_builder.hpp"
+#include "model/radioss_parameters.hpp"
 
 namespace sphdeck::model {
 
@@ -98,7 +99,13 @@ public:
     }
 
     void walk_all() {
-        for (const grammar::Block& block : deck_.blocks) walk(block);
+        // /PARAMETER first: a reference to a later definition is reported, not just unknown.
+        decoder_.set_parameters(&parameters_);
+        parameters_.collect(deck_, version_, decoder_, out_);
+        for (const grammar::Block& block : deck_.blocks) {
+            decoder_.set_block(static_cast<std::size_t>(&block - deck_.blocks.data()));
+            walk(block);
+        }
         for (const auto& [name, u] : unknown_) {
             std::string message = fmt::format("unknown keyword {} kept as is", name);
             if (u.second > 1) message += fmt::format(" ({} blocks)", u.second);
@@ -212,6 +219,7 @@ private:
     int version_;
     RadiossBuilder builder_;
     RadiossCardDecoder decoder_;
+    RadiossParameters parameters_;
     std::vector<RadiossValue> values_;
     std::vector<bool> engine_;  // per file: part of the engine deck
     std::map<std::string, std::pair<grammar::Span, std::size_t>> unknown_;

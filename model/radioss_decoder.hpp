@@ -2,6 +2,8 @@
 // Radioss-only facts in Model::radioss (model/radioss_facts.hpp says what lands where).
 #pragma once
 
+#include <map>
+#include <set>
 #include <vector>
 
 #include "diag/diagnostic.hpp"
@@ -19,5 +21,10 @@ Model build_radioss_model(const grammar::RawDeck& deck, std::vector<diag::Diagno
 
 // The deck version a Radioss RawDeck is read in: Invers on its /BEGIN, or the latest.
 int radioss_version(const grammar::RawDeck& deck);
+
+// The id cells of the starter's /NODE lines defining each of `ids`, in reading order (a scan of
+// the /NODE blocks, for rare reports such as duplicated ids).
+std::map<long long, std::vector<grammar::Span>> radioss_node_lines(const grammar::RawDeck& deck,
+                                                                   const std::set<long long>& ids);
 
 }  // namespace sphdeck::model

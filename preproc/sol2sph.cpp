@@ -79,15 +79,18 @@ public:
                 elements(part, f_.bricks, true);
                 elements(part, f_.tetra4, false);
             }
+            std::size_t unsupported = 0;
             for (const model::RadiossSolids* other : {&f_.tetra10, &f_.penta6}) {
                 std::size_t n = 0;
                 for (std::size_t e = 0; e < other->size(); ++e) n += other->part[e] == part.summary.solid_part;
                 if (n == 0) continue;
                 part.summary.skipped += n;
+                unsupported += n;
                 part.summary.notes.push_back(fmt::format("{} {} element(s) get no particles: SOL2SPH covers 8-node "
                                                          "bricks and 4-node tetras only",
                                                          n, other == &f_.tetra10 ? "/TETRA10" : "/PENTA6"));
             }
+            explain_no_particles(part.summary, unsupported);
             std::vector<double>& v = part.pitches;
             if (!v.empty()) {
                 std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
@@ -99,6 +102,19 @@ public:
     }
 
 private:
+    // The starter silently creates nothing for such a part; the user asked for particles.
+    static void explain_no_particles(Sol2sphPart& s, std::size_t unsupported) {
+        if (s.ndir < 1 || s.ndir > 9 || s.particles > 0) return;  // a bad Ndir has its own note (RAD011)
+        if (s.skipped == 0)
+            s.no_particles = "no particles are generated: the part has no elements";
+        else if (unsupported == s.skipped)
+            s.no_particles = fmt::format("no particles are generated: its {} element(s) are all of kinds SOL2SPH does "
+                                         "not convert (it takes 8-node bricks and 4-node tetras)",
+                                         unsupported);
+        else
+            s.no_particles = "no particles are generated: every element of the part was rejected";
+    }
+
     std::vector<PartSetup> setup_parts() {
         std::vector<PartSetup> parts;
         for (const model::Part& part : m_.parts) {
@@ -110,6 +126,7 @@ private:
             s.property = prop;
             Sol2sphPart& sum = s.summary;
             sum.solid_part = std::stoll(part.id);
+            sum.span = part.span;
             sum.property = prop->id;
             sum.ndir = static_cast<int>(std::clamp<long long>(prop->ndir.value, -1, 1000));
             sum.sph_part = prop->sph_part.value;

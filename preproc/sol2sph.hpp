@@ -47,9 +47,13 @@ struct Sol2sphPart {
     double pitch = 0;                     // median over elements of (V / particles per element)^(1/3)
     double sph_h = 0;                     // the SPH part's /PROP/SPH h (0: not given)
     long long sph_h_1d = 0;
+    grammar::Span span;                   // the part's /PART header id, for messages about the part
     double relative_difference() const;   // (particle_mass - element_mass) / element_mass
     double starter_relative_difference() const;
     std::vector<std::string> notes;
+    // Set when Ndir is valid but the part gets no particle at all (only /TETRA10 or /PENTA6
+    // elements, no elements, or every element rejected): why, for a warning at `span`.
+    std::string no_particles;
 };
 
 struct Sol2sphParticles {

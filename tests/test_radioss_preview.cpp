@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -227,4 +228,46 @@ TEST_CASE("radioss preview: sphdeck smooth JSON has the LS-DYNA keys plus 'radio
     std::string header;
     std::getline(csv, header);
     CHECK(header.find(",planes") != std::string::npos);
+}
+
+namespace {
+
+// A 3 x 3 x 3 lattice of pitch 1 whose cells take the property's mass; `card2` is the /PROP/SPH
+// Order, h, Xi_Stab line (empty: no such line). Few neighbours either way: SPH118.
+lint::CheckResult sparse_lattice(const std::string& mp, const std::string& card2) {
+    std::string s = "#RADIOSS STARTER\n/BEGIN\nsparse\n      2026\n"  // lines 1-4
+                    "/PART/2\nwater\n         2         3         0\n"   // lines 5-7
+                    "/PROP/SPH/2\nwater particles\n" +                    // lines 8-9
+                    fmt::format("{:>20}                 0.0                 0.0                 0.0         0         0\n",
+                                mp) +                                    // line 10
+                    card2 +                                              // line 11 when given
+                    "/MAT/LAW6/3\nwater\n              1.0E-6\n/NODE\n";
+    long long id = 1;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            for (int k = 0; k < 3; ++k) s += fmt::format("{:>10}{:>20.1f}{:>20.1f}{:>20.1f}\n", id++, i * 1.0, j * 1.0, k * 1.0);
+    s += "/SPHCEL/2\n";
+    for (long long n = 1; n < id; ++n) s += fmt::format("{:>10}         0\n", n);
+    return lint::check_buffer(s + "/END\n", "sparse_0000.rad", {}, grammar::DeckFormat::Radioss);
+}
+
+}  // namespace
+
+TEST_CASE("radioss preview: SPH118 points at the /PROP/SPH h field, or its header when h is blank") {
+    // h = 0.4 given: the h cell of card 2 (columns 11-30, the value right-aligned).
+    auto given = sparse_lattice("1.0E-6", "         0                 0.4                 0.0\n");
+    const diag::Diagnostic* d = test::find_code(given.diagnostics, "SPH118");
+    REQUIRE(d != nullptr);
+    CHECK(given.deck.sources.file(d->span.file).display_name == "sparse_0000.rad");
+    CHECK(d->span.line == 11);
+    CHECK(d->span.column == 28);
+    CHECK(d->span.end_column == 31);
+
+    // h left blank (no card 2): h = (sqrt2 mp / rho)^(1/3) = 0.11 from mp 1e-9, rho 1e-6; the header.
+    auto blank = sparse_lattice("1.0E-9", "");
+    d = test::find_code(blank.diagnostics, "SPH118");
+    REQUIRE(d != nullptr);
+    CHECK(d->span.valid());
+    CHECK(d->span.line == 8);
+    CHECK(d->span.column == 1);
 }

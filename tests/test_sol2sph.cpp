@@ -304,3 +304,38 @@ TEST_CASE("sol2sph: the command writes .vtp and CSV and checks the mass") {
         dir, "sol2sph '" + std::string(SPHDECK_SOURCE_DIR) + "/decks/tests/preview/SPH113_silent.k'");
     CHECK(dyna.exit_code == 2);
 }
+
+TEST_CASE("sol2sph: a part that gets no particles is reported at the part, not as 'ok'") {
+    // Only a 10-node tetra (corners and edge midpoints): SOL2SPH converts none.
+    const std::vector<Vec> nodes = {{0, 0, 0},     {1, 0, 0},     {0, 1, 0},   {0, 0, 1},     {0.5, 0, 0},
+                                    {0.5, 0.5, 0}, {0, 0.5, 0},   {0, 0, 0.5}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
+    const std::string tetra10 = "/TETRA10/1\n         1\n" + fmt::format("{:>10}{:>10}{:>10}{:>10}{:>10}{:>10}{:>10}{:>10}{:>10}{:>10}\n",
+                                                                         1, 2, 3, 4, 5, 6, 7, 8, 9, 10);
+    const std::string text = deck(nodes, tetra10, 2);
+    const auto s = generate(text);
+    REQUIRE(s.parts.size() == 1);
+    const preproc::Sol2sphPart& p = s.parts[0];
+    CHECK(p.particles == 0);
+    CHECK(p.skipped == 1);
+    CHECK(p.no_particles.find("no particles are generated: its 1 element(s) are all of kinds SOL2SPH does not "
+                              "convert") == 0);
+    CHECK(p.span.line == 5);    // /PART/1
+    CHECK(p.span.column == 7);  // its id
+
+    // A part without elements says so; Ndir outside 1-9 keeps its own note instead.
+    CHECK(generate(deck(nodes, "", 2)).parts.at(0).no_particles == "no particles are generated: the part has no elements");
+    CHECK(generate(deck(nodes, "", 12)).parts.at(0).no_particles.empty());
+
+    test::TempDir dir;
+    dir.write("t10_0000.rad", text);
+    const auto r = test::run_sphdeck(dir, "sol2sph t10_0000.rad");
+    CHECK(r.exit_code == 0);  // a warning
+    CHECK(r.out.find("t10_0000.rad:5:7: warning: part 1: no particles are generated") != std::string::npos);
+    CHECK(r.out.find(" ok\n") == std::string::npos);
+    CHECK(r.out.find(" none\n") != std::string::npos);
+    const auto j = test::run_sphdeck(dir, "sol2sph t10_0000.rad --format json");
+    const auto doc = nlohmann::json::parse(j.out);
+    CHECK(doc["parts"][0]["mass_check"].is_null());
+    CHECK(doc["parts"][0]["warnings"].size() == 1);
+    CHECK(doc["parts"][0]["location"].get<std::string>() == "t10_0000.rad:5:7");
+}

@@ -1,6 +1,7 @@
 // Inline "$ sphdeck:" suppressions: next line, block, file, unused (DK026) and malformed (DK028).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "lint/pipeline.hpp"
@@ -160,4 +161,84 @@ TEST_CASE("suppress: parse_suppression reads scope, codes and their columns") {
     CHECK(s.items[1].code == "SPH034");
     CHECK_FALSE(lint::parse_suppression("$ sphdeck rocks", 0, 1, s, problems));
     CHECK_FALSE(lint::parse_suppression("* sphdeck: disable=DK003", 0, 1, s, problems));
+}
+
+namespace {
+
+// A Radioss starter deck: lines 1-5 are the header, /BEGIN and /NODE; `body` starts on line 6.
+// "abc" in a coordinate gives one DK003 per line.
+std::vector<diag::Diagnostic> check_radioss(const std::string& body) {
+    return lint::check_buffer("#RADIOSS STARTER\n/BEGIN\nrun\n      2026\n/NODE\n" + body + "/END\n", "main_0000.rad",
+                              {}, grammar::DeckFormat::Radioss)
+        .diagnostics;
+}
+
+const std::string kBadNode1 = "         1                 abc                 0.0                 0.0\n";
+const std::string kBadNode2 = "         2                 abc                 0.0                 0.0\n";
+
+}  // namespace
+
+TEST_CASE("suppress: Radioss decks take the directives after '#'") {
+    // Without a directive both lines are reported.
+    CHECK(lines_of(check_radioss(kBadNode1 + kBadNode2), "DK003") == std::vector<std::uint32_t>{6, 7});
+
+    // Before a data line: that line only.
+    auto ds = check_radioss("# sphdeck: disable=DK003 -- known\n" + kBadNode1 + kBadNode2);
+    CHECK(lines_of(ds, "DK003") == std::vector<std::uint32_t>{8});
+    CHECK(count_code(ds, "DK026") == 0);
+
+    // disable-next-line, compact spelling.
+    ds = check_radioss("#sphdeck:disable-next-line=bad-real\n" + kBadNode1 + kBadNode2);
+    CHECK(lines_of(ds, "DK003") == std::vector<std::uint32_t>{8});
+
+    // disable-file, wherever it stands; '$' works in Radioss decks as well.
+    ds = check_radioss(kBadNode1 + kBadNode2 + "# sphdeck: disable-file=DK003 -- legacy mesh\n");
+    CHECK(count_code(ds, "DK003") == 0);
+    ds = check_radioss(kBadNode1 + "$ sphdeck: disable-next-line=DK003\n" + kBadNode2);
+    CHECK(lines_of(ds, "DK003") == std::vector<std::uint32_t>{6});
+}
+
+TEST_CASE("suppress: in a Radioss deck a directive before a '/' header covers its block") {
+    const std::string text = "#RADIOSS STARTER\n/BEGIN\nrun\n      2026\n"
+                             "# sphdeck: disable=DK003\n"
+                             "/NODE\n" +   // line 6
+                             kBadNode1 +   // line 7: silenced
+                             "# a comment inside the block\n" + kBadNode2 +  // line 9: silenced
+                             "/NODE\n" +   // line 10: a new block
+                             "         3                 abc                 0.0                 0.0\n"  // line 11
+                             "/END\n";
+    auto ds = lint::check_buffer(text, "main_0000.rad", {}, grammar::DeckFormat::Radioss).diagnostics;
+    CHECK(lines_of(ds, "DK003") == std::vector<std::uint32_t>{11});
+    CHECK(count_code(ds, "DK026") == 0);
+
+    // Unused and malformed '#' directives are reported like '$' ones.
+    ds = check_radioss("# sphdeck: disable=DK002\n" + kBadNode1 + "# sphdeck: disabel=DK003\n");
+    REQUIRE(count_code(ds, "DK026") == 1);
+    CHECK(find_code(ds, "DK026")->span.line == 6);
+    CHECK(find_code(ds, "DK026")->span.column == 20);
+    REQUIRE(count_code(ds, "DK028") == 1);
+    CHECK(find_code(ds, "DK028")->span.line == 8);
+}
+
+TEST_CASE("suppress: '#include' and '#enddata' are no comments, and '#' is no comment in LS-DYNA decks") {
+    // A directive before #include covers the #include line, not the line after it.
+    test::TempDir dir;
+    dir.write("empty.inc", "");
+    const std::string main = dir.write("main_0000.rad", "#RADIOSS STARTER\n/BEGIN\nrun\n      2026\n/NODE\n"
+                                                        "# sphdeck: disable=DK003\n#include empty.inc\n" +
+                                                            kBadNode1 + "/END\n");
+    auto r = lint::check_file(main);
+    CHECK(lines_of(r.diagnostics, "DK003") == std::vector<std::uint32_t>{8});
+    CHECK(count_code(r.diagnostics, "DK026") == 1);
+
+    // In an LS-DYNA deck the '#' line is a card like any other: no directive, nothing silenced.
+    auto ds = check("*KEYWORD\n*CONTROL_TERMINATION\nabc\n# sphdeck: disable-file=DK003\n*END\n");
+    const auto dk003 = lines_of(ds, "DK003");
+    CHECK(std::find(dk003.begin(), dk003.end(), 3u) != dk003.end());
+    CHECK(count_code(ds, "DK026") + count_code(ds, "DK028") == 0);
+
+    lint::Suppression s;
+    std::vector<diag::Diagnostic> problems;
+    CHECK(lint::parse_suppression("# sphdeck: disable=DK003", 0, 1, s, problems));
+    CHECK(s.items.size() == 1);
 }

@@ -82,6 +82,22 @@ void add_mesh_keywords(std::vector<KeywordSpec>& out) {
     out.push_back({.name = "/FRAME", .summary = "frame (moving)", .formats = {{0, {opaque()}}}});
     out.push_back({.name = "/SKEW", .summary = "skew (moving)", .formats = {{0, {opaque()}}}});
 
+    // /PARAMETER/<scope>/INTEGER|REAL/id: a title line, then `%-10s%10d` or `%-10s%20lg`, name and
+    // value (OpenRadioss CFG radioss2017/PARAMETER/parameter_int.cfg, parameter_float.cfg).
+    // model/radioss_parameters.cpp reads them before the other blocks, so the walker skips them;
+    // other kinds (REAL_EXPR, INT_EXPR, TEXT) stay opaque under /PARAMETER below.
+    for (std::string_view scope : {"GLOBAL", "LOCAL"}) {
+        const bool global = scope == "GLOBAL";
+        out.push_back({.name = global ? "/PARAMETER/GLOBAL/INTEGER" : "/PARAMETER/LOCAL/INTEGER",
+                       .decoded = false,
+                       .summary = "integer parameter: name, value",
+                       .formats = {{2017, {once({T("name"), I("value")})}}}});
+        out.push_back({.name = global ? "/PARAMETER/GLOBAL/REAL" : "/PARAMETER/LOCAL/REAL",
+                       .decoded = false,
+                       .summary = "real parameter: name, value",
+                       .formats = {{2017, {once({T("name"), R("value")})}}}});
+    }
+
     // Structural or global keywords kept as they are.
     for (std::string_view name : {"/TITLE", "/UNIT", "/IOFLAG", "/SPMD", "/RANDOM", "/DEF_SHELL", "/PARAMETER",
                                   "/SUBSET", "/SURF", "/LINE", "/GRSHEL", "/GRBRIC", "/GRPART", "/BCS", "/IMPVEL",
