@@ -127,7 +127,7 @@ void RadiossParameters::collect(const grammar::RawDeck& deck, int version, Radio
         if (line + 1 != end)
             report(out, "DK009", diag::Severity::Warning,
                    fmt::format("/PARAMETER takes one name and value card; {} more line(s) ignored", end - line - 1),
-                   grammar::Span{line[1].file, line[1].line, 1, std::max<std::uint32_t>(line[1].length, 1) + 1});
+                   grammar::Span{line[1].file, line[1].line, 1, std::max<std::uint32_t>(deck.length(line[1]), 1) + 1});
         if (p.name.empty()) {
             report(out, "DK008", diag::Severity::Error, "the parameter name (columns 1-10) is blank", p.span);
             continue;
