@@ -12,6 +12,18 @@
 namespace sphdeck::lint {
 namespace {
 
+// The keywords that define what a reference names, in the deck's own language.
+struct DefiningWords {
+    const char* node;
+    const char* section;
+    const char* material;
+    const char* eos;
+};
+DefiningWords words(const RuleContext& c) {
+    if (c.model.radioss) return {"/NODE", "/PROP", "/MAT", "/EOS"};
+    return {"*NODE", "*SECTION_", "*MAT_", "*EOS_"};
+}
+
 using model::Id;
 
 constexpr std::size_t max_listed = 5;  // ids named in one message
@@ -51,11 +63,11 @@ void check_particles(RuleContext& c, const model::IdIndex& nodes) {
             continue;
         }
         ++shown;
-        c.report("REF001", c.particle_span(first.first), fmt::format("particle {} has no *NODE {}", id, id));
+        c.report("REF001", c.particle_span(first.first), fmt::format("particle {} has no {} {}", id, words(c).node, id));
     }
     if (more > 0)
         c.report("REF001", c.particle_span(std::next(missing_node.begin(), max_listed)->second.first),
-                 fmt::format("{} more particles have no *NODE (first: {})", more,
+                 fmt::format("{} more particles have no {} (first: {})", more, words(c).node,
                              std::next(missing_node.begin(), max_listed)->first));
     for (const auto& [id, first] : missing_part) {
         if (id < 0) continue;  // the PID could not be read: DK002 says so
@@ -110,15 +122,15 @@ void check_part_references(RuleContext& c, std::set<Id>& used_sections, std::set
     for (const model::Part& part : c.model.parts) {
         const auto& s = part.section;
         if (s.explicit_value && !c.model.section(s.value))
-            c.report("REF003", s.span, fmt::format("part {} names section {}, which no *SECTION_ defines", part.id, s.value));
+            c.report("REF003", s.span, fmt::format("part {} names section {}, which no {} defines", part.id, s.value, words(c).section));
         used_sections.insert(s.value);
         const auto& m = part.material;
         if (m.explicit_value && !c.model.material(m.value))
-            c.report("REF004", m.span, fmt::format("part {} names material {}, which no *MAT_ defines", part.id, m.value));
+            c.report("REF004", m.span, fmt::format("part {} names material {}, which no {} defines", part.id, m.value, words(c).material));
         used_materials.insert(m.value);
         const auto& e = part.eos;
         if (!e.value.empty() && !c.model.eos(e.value))
-            c.report("REF005", e.span, fmt::format("part {} names EOS {}, which no *EOS_ defines", part.id, e.value));
+            c.report("REF005", e.span, fmt::format("part {} names EOS {}, which no {} defines", part.id, e.value, words(c).eos));
         used_eos.insert(e.value);
     }
 }

@@ -61,3 +61,24 @@ TEST_CASE("references: an unreadable PID is DK002 only") {
     CHECK(count_code(r.diagnostics, "DK002") == 1);
     CHECK(count_code(r.diagnostics, "REF002") == 0);
 }
+
+TEST_CASE("references: findings on an OpenRadioss deck name its own keywords") {
+    const std::string deck =
+        "#RADIOSS STARTER\n/BEGIN\nREF\n      2026\n"
+        "                  kg                  mm                  ms\n"
+        "                  kg                  mm                  ms\n"
+        "/PART/2\nwater\n         7         9         0\n"
+        "/NODE\n      1001                 1.0                 1.0                 1.0\n"
+        "/SPHCEL/2\n      1001         0\n      1002         0\n/END\n";
+    auto r = lint::check_buffer(deck, "ref_0000.rad", {}, std::nullopt);
+    const diag::Diagnostic* node = test::find_code(r.diagnostics, "REF001");
+    const diag::Diagnostic* section = test::find_code(r.diagnostics, "REF003");
+    const diag::Diagnostic* material = test::find_code(r.diagnostics, "REF004");
+    REQUIRE(node);
+    REQUIRE(section);
+    REQUIRE(material);
+    CHECK(node->message.find("/NODE") != std::string::npos);
+    CHECK(section->message.find("/PROP") != std::string::npos);
+    CHECK(material->message.find("/MAT") != std::string::npos);
+    CHECK(node->message.find('*') == std::string::npos);
+}
