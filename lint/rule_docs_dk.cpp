@@ -305,7 +305,8 @@ particles.k
      .summary = "&name used with no *PARAMETER definition in scope",
      .doc = {.what = "Reports a reference `&name` (or `-&name`) for which no *PARAMETER is "
                      "visible: neither a global definition read earlier nor a *PARAMETER_LOCAL of "
-                     "this file or the files that include it.",
+                     "this file or the files that include it. In OpenRadioss decks: a cell `[name]` "
+                     "or `&name` with no /PARAMETER/GLOBAL/INTEGER or REAL definition before it.",
              .why = "The solver cannot substitute the value and stops at input; a parameter must "
                     "be defined before it is referenced (*PARAMETER). sphdeck cannot check the "
                     "field either.",
@@ -333,7 +334,8 @@ $#  endtim    endcyc     dtmin    endeng    endmas     nosol
      .source = "reader",
      .summary = "an R, I or C parameter used in a field of another type",
      .doc = {.what = "Reports a parameter used in a field of another type: a real (R) parameter "
-                     "in an integer field, an integer in a character field, and so on.",
+                     "in an integer field, an integer in a character field, and so on. In "
+                     "OpenRadioss decks: a /PARAMETER/GLOBAL/REAL value in an integer cell.",
              .why = "The first letter of a *PARAMETER name (R, I or C) fixes its type, and a "
                     "reference must sit in a field of that type (*PARAMETER, PRMR). A real "
                     "substituted into an integer field is rejected or truncated.",
@@ -364,7 +366,8 @@ $#    ncbs     boxid        dt      idim    memory      form     start      maxv
                 "warning, 3 error, ...)",
      .doc = {.what = "Reports a second definition of a parameter name. The severity follows DFLAG "
                      "of *PARAMETER_DUPLICATION: 1 (the default) and 2 give a warning, 3 an "
-                     "error, 4 and 5 nothing, since the deck asked for silence.",
+                     "error, 4 and 5 nothing, since the deck asked for silence. In OpenRadioss "
+                     "decks: a /PARAMETER name defined twice (the first definition is kept).",
              .why = "By default LS-DYNA keeps the first definition and ignores the new one with a "
                     "warning; DFLAG 2 takes the new value, 3 stops, 4 and 5 accept or ignore it "
                     "silently (*PARAMETER_DUPLICATION). An include meant to override a value "
