@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "cli/commands.hpp"
+#include "cli/text_table.hpp"
 #include "cli/progress_bar.hpp"
 #include "diag/render_text.hpp"
 #include "io/csv_writer.hpp"
@@ -208,25 +209,6 @@ nlohmann::ordered_json to_json(const SmoothArgs& args, const lint::CheckResult& 
     return out;
 }
 
-// Pads cells to aligned columns: numbers right-aligned, the last column (words) left-aligned.
-void print_table(const std::vector<std::vector<std::string>>& rows) {
-    std::vector<std::size_t> width;
-    for (const auto& row : rows)
-        for (std::size_t c = 0; c < row.size(); ++c) {
-            if (width.size() <= c) width.push_back(0);
-            width[c] = std::max(width[c], row[c].size());
-        }
-    for (const auto& row : rows) {
-        std::string line;
-        for (std::size_t c = 0; c < row.size(); ++c) {
-            if (c > 0) line += "  ";
-            line += c + 1 == row.size() ? fmt::format("{:<{}}", row[c], width[c]) : fmt::format("{:>{}}", row[c], width[c]);
-        }
-        while (!line.empty() && line.back() == ' ') line.pop_back();
-        fmt::print("{}\n", line);
-    }
-}
-
 // The Radioss values (docs/radioss.md): h rule, symmetry mass split, ghosts, time steps.
 void print_radioss(const preproc::Preview& p) {
     const preproc::RadiossPreview& g = *p.radioss;
@@ -273,7 +255,7 @@ void print_text(const SmoothArgs& args, const lint::CheckResult& r, const prepro
                         pv.dt_estimate > 0 ? g4(pv.dt_estimate) : "-",
                         fmt::format("{}{}", static_cast<int>(pv.ini), pv.sphini_given ? " (SPHINI)" : "")});
     }
-    print_table(rows);
+    print_table(rows, WordColumn::Last);
     fmt::print("\nmass: total per part; spacing: median nearest-neighbour distance; h_min, h_max: HMIN*h0, "
                "HMAX*h0;\nneighbours: min/median/max particles within the kernel support; dt: TSSFAC*h0/c, "
                "'-' when the sound speed c is unknown\n");

@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "cli/commands.hpp"
+#include "cli/text_table.hpp"
 #include "refsolver/verification/cases.hpp"
 #include "refsolver/verification/report.hpp"
 
@@ -48,23 +49,6 @@ void write_text(const fs::path& path, const std::string& text) {
     if (!out) throw std::runtime_error(fmt::format("cannot write '{}'", path.string()));
 }
 
-void print_table(const std::vector<std::vector<std::string>>& rows) {
-    std::vector<std::size_t> width;
-    for (const auto& row : rows)
-        for (std::size_t c = 0; c < row.size(); ++c) {
-            if (width.size() <= c) width.push_back(0);
-            width[c] = std::max(width[c], row[c].size());
-        }
-    for (const auto& row : rows) {
-        std::string line;
-        for (std::size_t c = 0; c < row.size(); ++c) {
-            if (c > 0) line += "  ";
-            line += c == 0 ? fmt::format("{:<{}}", row[c], width[c]) : fmt::format("{:>{}}", row[c], width[c]);
-        }
-        fmt::print("  {}\n", line);
-    }
-}
-
 int run_verify(const VerifyArgs& args) {
     const std::optional<fs::path> decks = find_decks(args.decks);
     if (!decks) {
@@ -98,7 +82,7 @@ int run_verify(const VerifyArgs& args) {
         if (!r.ran()) {
             fmt::print("  not run: {}\n\n", r.failure);
         } else {
-            print_table(verification::check_table(r));
+            print_table(verification::check_table(r), WordColumn::First, "  ");
             fmt::print("  {}: {}\n\n", c.name, r.passed() ? "PASS" : "FAIL");
         }
         const fs::path svg = fs::path(args.out) / (r.name + ".svg");

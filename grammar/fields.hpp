@@ -50,5 +50,7 @@ CutReport cut_fields(std::string_view text, const CardLine& line, std::span<cons
 bool is_free_format(std::string_view text);
 
 bool is_blank(std::string_view s);
+// `s` without leading blanks and tabs, nor trailing blanks, tabs and '\r'.
+std::string_view trim_blanks(std::string_view s);
 
 }  // namespace sphdeck::grammar

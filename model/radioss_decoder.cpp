@@ -6,12 +6,12 @@
 #include <fmt/format.h>
 #include <map>
 
-#include "grammar/fields.hpp"
 #include "grammar/radioss/cards.hpp"
 #include "grammar/radioss/reader.hpp"
 #include "grammar/value.hpp"
 #include "model/radioss_builder.hpp"
 #include "model/radioss_parameters.hpp"
+#include "grammar/fields.hpp"
 
 namespace sphdeck::model {
 
@@ -19,11 +19,7 @@ namespace rad = grammar::radioss;
 
 namespace {
 
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-    return s;
-}
+std::string_view trim(std::string_view s) { return grammar::trim_blanks(s); }
 
 bool is_number(std::string_view s) {
     return !s.empty() && grammar::parse_integer(s).status == grammar::NumberStatus::Ok;

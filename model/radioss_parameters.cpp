@@ -7,6 +7,7 @@
 #include "grammar/parameters.hpp"  // to_upper
 #include "grammar/radioss/cards.hpp"
 #include "grammar/radioss/reader.hpp"
+#include "grammar/fields.hpp"
 
 namespace sphdeck::model {
 
@@ -14,11 +15,7 @@ namespace rad = grammar::radioss;
 
 namespace {
 
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-    return s;
-}
+std::string_view trim(std::string_view s) { return grammar::trim_blanks(s); }
 
 void report(std::vector<diag::Diagnostic>& out, const char* code, diag::Severity s, std::string message,
             grammar::Span span) {

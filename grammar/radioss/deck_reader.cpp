@@ -4,6 +4,7 @@
 
 #include "grammar/dyna/include_resolver.hpp"
 #include "grammar/parameters.hpp"
+#include "grammar/fields.hpp"
 
 namespace sphdeck::grammar::dyna {
 std::string read_include_text(const std::string& path);  // grammar/dyna/reader.cpp
@@ -18,11 +19,7 @@ std::string_view strip_cr(const char* begin, const char* end) {
     return s;
 }
 
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-    return s;
-}
+std::string_view trim(std::string_view s) { return grammar::trim_blanks(s); }
 
 bool blank(std::string_view s) { return trim(s).empty(); }
 
