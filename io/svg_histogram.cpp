@@ -1,5 +1,6 @@
 #include "io/svg_histogram.hpp"
 
+#include "io/svg_document.hpp"
 #include "io/xml_escape.hpp"
 
 #include <algorithm>
@@ -30,9 +31,7 @@ std::string number(double v) {
     return fmt::format("{:.4g}", v);
 }
 
-struct Box {
-    double x, y, w, h;
-};
+using Box = SvgBox;
 
 void draw_panel(std::string& svg, const HistogramPanel& panel, const Box& box, std::size_t max_bins) {
     auto out = std::back_inserter(svg);
@@ -174,51 +173,21 @@ Bins make_bins(std::span<const double> values, bool integer_bins, std::size_t ma
 }
 
 std::string svg_histograms(std::span<const HistogramPanel> panels, const SvgOptions& options) {
-    const int columns = std::max(1, std::min<int>(options.columns, std::max<int>(1, static_cast<int>(panels.size()))));
-    const int rows = static_cast<int>((panels.size() + static_cast<std::size_t>(columns) - 1) / columns);
-    const double head = options.title.empty() ? 0.0 : 36.0;
-    const double width = columns * options.panel_width, height = head + std::max(rows, 1) * options.panel_height;
-    std::string svg;
-    auto out = std::back_inserter(svg);
-    fmt::format_to(out,
-                   "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-                   "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\">\n",
-                   width, height);
-    svg += "<style>\n"
-           "text { font-family: sans-serif; fill: #222; }\n"
-           ".heading { font-size: 18px; font-weight: bold; text-anchor: middle; }\n"
-           ".title { font-size: 14px; font-weight: bold; text-anchor: middle; }\n"
-           ".subtitle { font-size: 11px; fill: #555; text-anchor: middle; }\n"
-           ".label { font-size: 12px; text-anchor: middle; }\n"
-           ".xtick { font-size: 10px; text-anchor: middle; }\n"
-           ".ytick { font-size: 10px; text-anchor: end; }\n"
-           ".count { font-size: 9px; fill: #444; text-anchor: middle; }\n"
-           ".bar { fill: #4c78a8; }\n"
-           ".bar:hover { fill: #f58518; }\n"
-           ".axis { stroke: #222; stroke-width: 1; fill: none; }\n"
-           ".grid { stroke: #ddd; stroke-width: 1; }\n"
-           "</style>\n";
-    fmt::format_to(out, "<rect x=\"0\" y=\"0\" width=\"{}\" height=\"{}\" fill=\"white\"/>\n", width, height);
-    if (!options.title.empty())
-        fmt::format_to(out, "<text x=\"{:.1f}\" y=\"24\" class=\"heading\">{}</text>\n", width / 2,
-                       xml_escape(options.title));
-    for (std::size_t i = 0; i < panels.size(); ++i) {
-        const Box box{static_cast<double>(static_cast<int>(i) % columns) * options.panel_width,
-                      head + static_cast<double>(static_cast<int>(i) / columns) * options.panel_height,
-                      static_cast<double>(options.panel_width), static_cast<double>(options.panel_height)};
-        draw_panel(svg, panels[i], box, options.max_bins);
-    }
-    svg += "</svg>\n";
-    return svg;
+    SvgGrid grid;
+    grid.panels = panels.size();
+    grid.columns = options.columns;
+    grid.panel_width = options.panel_width;
+    grid.panel_height = options.panel_height;
+    grid.title = options.title;
+    grid.styles = ".subtitle { font-size: 11px; fill: #555; text-anchor: middle; }\n"
+                  ".count { font-size: 9px; fill: #444; text-anchor: middle; }\n"
+                  ".bar { fill: #4c78a8; }\n"
+                  ".bar:hover { fill: #f58518; }\n";
+    return svg_panel_grid(grid, [&](std::string& svg, std::size_t i, const SvgBox& box) { draw_panel(svg, panels[i], box, options.max_bins); });
 }
 
 void write_svg_file(const std::string& path, std::span<const HistogramPanel> panels, const SvgOptions& options) {
-    const std::string svg = svg_histograms(panels, options);
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw std::runtime_error(fmt::format("cannot open '{}' for writing", path));
-    out.write(svg.data(), static_cast<std::streamsize>(svg.size()));
-    out.close();
-    if (!out) throw std::runtime_error(fmt::format("cannot write '{}'", path));
+    write_text_file(path, svg_histograms(panels, options));
 }
 
 }  // namespace sphdeck::io
