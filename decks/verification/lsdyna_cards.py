@@ -95,10 +95,13 @@ class Deck:
                  ruler("q1", "q2", "type"),
                  card(q1, q2, 1))
 
-    def section_sph(self, secid=1, cslh=1.2):
-        self.add("*SECTION_SPH",
+    def section_sph(self, secid=1, cslh=1.2, sphini=None, why=None):
+        """CSLH times the largest nearest-neighbour distance gives h0, unless SPHINI sets h0 itself
+        (CSLH is then left blank: LS-DYNA ignores it)."""
+        comment = [f"$ {why}"] if why else []
+        self.add("*SECTION_SPH", *comment,
                  ruler("secid", "cslh", "hmin", "hmax", "sphini", "death", "start"),
-                 card(secid, cslh, 0.2, 2.0, 0.0, 1.0e20, 0.0))
+                 card(secid, "" if sphini else cslh, 0.2, 2.0, sphini or 0.0, 1.0e20, 0.0))
 
     def part(self, pid, title, secid, mid, eosid):
         self.add("*PART", ruler("title", widths=[70]), title,

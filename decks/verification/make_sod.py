@@ -15,6 +15,18 @@ the contact travel, is resolved as finely as the left; and the solver integrates
 so the initial jump is carried by each part's RO with no smearing from a density sum. The price is the
 known pressure blip at the contact where masses differ, which the L1 norms include.
 
+Smoothing length h0 = SPHINI = 3 dx (not CSLH 1.2 x dx). The flow is one-dimensional but the particles
+sit on a 2D lattice: the gas expanding through the rarefaction stretches the lattice along x only (by
+rho_L / rho*_L = 2.35 at the tail), while DERIV 0 in 2D grows h only as rho^(-1/2) (sph-algorithms.md
+section 3.1), so h / dx_x falls as sqrt(rho / rho_L). The kernel sums over a lattice (the density sum, the
+gradient matrix B of section 5) are exact only for h large enough against the spacing, and their error
+depends on h / dx alone, not on the resolution (verification.md section 9.2: "SPH with fixed h/dx reaches a
+plateau set by kernel consistency"). With CSLH 1.2, h / dx_x falls to 0.78 in the expanded gas: L1(rho)
+stalled at 0.031 / 0.029 (N = 200 / 400, observed order 0.1) and the fan's slope was wrong at every
+resolution; with h0 = 2 dx (minimum 1.31) the fan's slope was still 12 % low at N = 200, 400 and 800 alike;
+with h0 = 3 dx (minimum 3 x sqrt(0.426) = 1.96) the fan converges and L1(rho) falls at order 0.6-0.7
+(docs/verification.md). SPHINI rather than CSLH 3, whose range check (1.05-1.3) is meant for ordinary decks.
+
 Gas: two parts, each *MAT_NULL (RO = initial density) + *EOS_LINEAR_POLYNOMIAL with C4 = C5 = gamma - 1
 = 0.4 and E0 = p / (gamma - 1) per reference volume: 2.5 on the left, 0.25 on the right, so the specific
 energies are 2.5 and 2.0 (sph-algorithms.md section 10.1). Monaghan viscosity with the classic
@@ -34,6 +46,7 @@ LEFT = (1.0, 0.0, 1.0)      # rho, u, p
 RIGHT = (0.125, 0.0, 0.1)
 X0, LENGTH, END_TIME = 0.5, 1.0, 0.2
 ROWS = 6
+H_OVER_DX = 3.0  # h0 / dx (SPHINI); see the docstring
 RESOLUTIONS = (200, 400, 800)
 
 
@@ -45,7 +58,8 @@ def sod_deck(nx):
     d.timestep(0.3, "TSSFAC 0.3: dt = 0.3 h / (c + |v|), room for the viscous term at shocks.")
     d.control_sph()
     d.bulk_viscosity(2.0, 1.0, "Classic Monaghan values for gas dynamics: alpha = 1, beta = 2.")
-    d.section_sph()
+    d.section_sph(sphini=round(H_OVER_DX * dx, 12),
+                  why=f"SPHINI = {H_OVER_DX:g} dx: h keeps ~2 spacings along x as the gas expands (make_sod.py).")
     for pid, name, state in ((1, "left gas (high pressure)", LEFT), (2, "right gas (low pressure)", RIGHT)):
         rho, _, p = state
         d.part(pid, name, 1, pid, pid)

@@ -1,6 +1,7 @@
 #include "refsolver/verification/surge_front.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace sphdeck::refsolver::verification {
@@ -29,6 +30,26 @@ std::optional<double> interpolate(std::span<const double> t, std::span<const dou
     if (k == 0 || t[k] == at) return f[k];
     const double w = (at - t[k - 1]) / (t[k] - t[k - 1]);
     return f[k - 1] + w * (f[k] - f[k - 1]);
+}
+
+std::optional<FrontDelay> best_front_delay(std::span<const double> T, std::span<const double> z,
+                                           std::span<const double> reference_T, std::span<const double> reference_z,
+                                           double max_delay, double step) {
+    std::optional<FrontDelay> best;
+    if (!(step > 0) || reference_T.size() != reference_z.size()) return best;
+    const int steps = static_cast<int>(std::floor(max_delay / step + 1e-9));
+    for (int k = 0; k <= steps; ++k) {
+        const double delay = k * step;
+        double worst = 0;
+        bool all = !reference_T.empty();
+        for (std::size_t i = 0; i < reference_T.size() && all; ++i) {
+            const std::optional<double> simulated = interpolate(T, z, reference_T[i] - delay);
+            all = simulated.has_value() && std::isfinite(*simulated);
+            if (all) worst = std::max(worst, std::abs(*simulated - reference_z[i]) / std::abs(reference_z[i]));
+        }
+        if (all && (!best || worst < best->worst_error)) best = FrontDelay{delay, worst};
+    }
+    return best;
 }
 
 }  // namespace sphdeck::refsolver::verification
