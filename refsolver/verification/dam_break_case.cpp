@@ -46,17 +46,7 @@ CaseResult run_dam_break(const CaseOptions& options) {
         fronts.push_back(front ? (*front + 0.5 * dx) / a : NAN);  // the fluid's edge is dx/2 past the particle
     };
     DeckRun run = run_deck(options.decks / deck, options, sample);
-    if (!run.failure.empty()) {
-        result.failure = run.failure;
-        return result;
-    }
-    if (!run.stopped.empty()) {
-        result.runs.push_back(run.record);
-        result.checks.push_back(reached_end_time(run));
-        result.method.push_back(run.stopped);
-        return result;
-    }
-    result.runs.push_back(run.record);
+    if (!add_run(result, run)) return result;
     const double end_T = Ts.empty() ? 0.0 : Ts.back();
 
     std::vector<io::PlotSeries> experiment;

@@ -71,4 +71,16 @@ Check reached_end_time(const DeckRun& run) {
             std::abs(t - end) / end, 0.0};
 }
 
+bool add_run(CaseResult& result, const DeckRun& run) {
+    if (!run.failure.empty()) {
+        result.failure = run.failure;
+        return false;
+    }
+    result.runs.push_back(run.record);
+    if (run.stopped.empty()) return true;
+    result.checks.push_back(reached_end_time(run));
+    result.method.push_back(run.stopped);
+    return false;
+}
+
 }  // namespace sphdeck::refsolver::verification

@@ -30,4 +30,8 @@ DeckRun run_deck(const std::filesystem::path& deck, const CaseOptions& options,
 // The check a stopped run fails: the time reached against the end time (tolerance 0).
 Check reached_end_time(const DeckRun& run);
 
+// Adds `run` to `result`. False when the case cannot go on: the deck did not run (result.failure is
+// set) or the run was stopped (its record, the failed end-time check and the reason are added).
+bool add_run(CaseResult& result, const DeckRun& run);
+
 }  // namespace sphdeck::refsolver::verification

@@ -48,17 +48,7 @@ CaseResult run_hydrostatic(const CaseOptions& options) {
             if (s.active[i] && s.y[i] < bottom_row) sum += s.p[i], ++n;
         history.push_back({sim.time(), n > 0 ? sum / static_cast<double>(n) : NAN, sim.totals().kinetic});
     });
-    if (!run.failure.empty()) {
-        result.failure = run.failure;
-        return result;
-    }
-    if (!run.stopped.empty()) {
-        result.runs.push_back(run.record);
-        result.checks.push_back(reached_end_time(run));
-        result.method.push_back(run.stopped);
-        return result;
-    }
-    result.runs.push_back(run.record);
+    if (!add_run(result, run)) return result;
 
     // Geometry from the initial lattice: first row at dx/2, the surface dx/2 above the top row.
     const ParticleState& s0 = run.initial;

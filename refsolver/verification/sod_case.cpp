@@ -106,17 +106,7 @@ CaseResult run_sod(const CaseOptions& options) {
     std::vector<SodRun> runs;
     for (int n : resolutions) {
         DeckRun run = run_deck(options.decks / fmt::format("sod_2d_{}.k", n), options);
-        if (!run.failure.empty()) {
-            result.failure = run.failure;
-            return result;
-        }
-        if (!run.stopped.empty()) {
-            result.runs.push_back(run.record);
-            result.checks.push_back(reached_end_time(run));
-            result.method.push_back(run.stopped);
-            return result;
-        }
-        result.runs.push_back(run.record);
+        if (!add_run(result, run)) return result;
         runs.push_back(evaluate(std::move(run), n, exact));
     }
 
