@@ -35,6 +35,14 @@ struct Particles {
     std::vector<std::uint32_t> ghost_source;
     std::vector<std::uint8_t> ghost_planes;
 
+    // Spare arrays for permute(), swapped with the live ones so that a rebuild allocates nothing.
+    struct Spares {
+        std::vector<std::vector<double>> doubles;
+        std::vector<std::uint8_t> interacting, active;
+        std::vector<std::array<double, 6>> correction;
+        std::vector<std::uint32_t> part, model_index, renumber;
+    } spares;
+
     std::size_t ghosts() const { return ghost_source.size(); }
     std::size_t total() const { return real + ghosts(); }
 
@@ -43,8 +51,9 @@ struct Particles {
     // Sizes the pair-loop arrays for the current ghosts (after ghost_source is filled).
     void resize_pair_arrays();
     // Reorders the real particles: new position k holds old particle order[k]. Ghosts stay
-    // (same entries), their sources renumbered.
-    void permute(const std::vector<std::uint32_t>& order);
+    // (same entries), their sources renumbered. The rates (ax .. dh) and the positions at the
+    // last build are not carried over: a rebuild recomputes both right after.
+    void permute(const std::vector<std::uint32_t>& order, int threads = 1);
 };
 
 }  // namespace sphdeck::refsolver

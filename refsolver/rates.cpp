@@ -1,7 +1,7 @@
 #include "refsolver/rates.hpp"
 
 #include <cmath>
-#include <vector>
+#include <omp.h>
 
 #include "refsolver/continuity.hpp"
 #include "refsolver/energy.hpp"
@@ -11,87 +11,161 @@ namespace sphdeck::refsolver {
 
 namespace {
 
-// What the pair loop reads of a neighbour, packed together: one or two cache lines per neighbour
-// instead of one per array. Non-interacting particles get m = 0 and contribute nothing.
-struct Neighbour {
-    double x, y, z, vx, vy, vz, h, m, rho, c, p_over_rho2, pad;
+using Correction = std::array<double, 6>;
+
+// The geometry and the momentum factors of one pair (i, j), seen from i: g = g_ij, a_ij for i's
+// sums, a_ji for j's (momentum.hpp's A with the arguments swapped; equal in exact arithmetic).
+struct PairTerms {
+    double gx, gy, gz, v_dot_g, a_ij, a_ji;
 };
 
-// The pair loop, specialised on the dimension (the kernel's powers of h) and on FORM 1. Per pair:
-// one square root and two divisions (1 / h_ij and the outer-shell 1 / r); p_j / rho_j^2 is
-// computed once per particle.
+// One pair within the support (r2 < 4 h_ij^2). One square root and two divisions for the kernel
+// (1 / h_ij and the outer-shell 1 / r); p / rho^2 comes precomputed per particle.
 template <int Dimension, bool Renormalise>
-void gather(Particles& s, const NeighbourList& list, const RateParameters& rp, const std::vector<Neighbour>& packed) {
+[[gnu::always_inline]] inline PairTerms pair_terms(const PackedParticle& a, const PackedParticle& b, const Correction& ba, const Correction& bb,
+                     double dx, double dy, double dz, double r2, double norm, const MonaghanViscosity& viscosity) {
+    // grad_i W_ij = F x_ij (kernel.hpp), F = C_d / h^(d+2) theta'(q) / q.
+    const double hij = 0.5 * (a.h + b.h);
+    const double inv_h = 1.0 / hij, r = std::sqrt(r2), q = r * inv_h;
+    const double inv_h2 = inv_h * inv_h;
+    const double scale = norm * (Dimension == 2 ? inv_h2 * inv_h2 : inv_h2 * inv_h2 * inv_h);
+    const double inner = scale * (-3.0 + 2.25 * q), outer = -scale * 0.75 * (2 - q) * (2 - q) * (hij / r);
+    const double f = q <= 1 ? inner : outer;
+    double gx = f * dx, gy = f * dy, gz = f * dz;
+    if constexpr (Renormalise) {  // the mean of the two corrections (renormalisation.hpp)
+        const double xx = 0.5 * (ba[0] + bb[0]), yy = 0.5 * (ba[1] + bb[1]), zz = 0.5 * (ba[2] + bb[2]);
+        const double xy = 0.5 * (ba[3] + bb[3]), xz = 0.5 * (ba[4] + bb[4]), yz = 0.5 * (ba[5] + bb[5]);
+        const double tx = xx * gx + xy * gy + xz * gz, ty = xy * gx + yy * gy + yz * gz;
+        gz = xz * gx + yz * gy + zz * gz, gx = tx, gy = ty;
+    }
+    const double dvx = a.vx - b.vx, dvy = a.vy - b.vy, dvz = a.vz - b.vz;
+    const double v_dot_g = dvx * gx + dvy * gy + dvz * gz;
+    const double v_dot_x = dvx * dx + dvy * dy + dvz * dz;
+    const double pi_ij = viscosity.pi(v_dot_x, r2, hij, 0.5 * (a.c + b.c), 0.5 * (a.rho + b.rho));
+    return {gx, gy, gz, v_dot_g, momentum_factor(a.p_over_rho2, b.p_over_rho2, pi_ij),
+            momentum_factor(b.p_over_rho2, a.p_over_rho2, pi_ij)};
+}
+
+// Sums of one particle: ax ay az drho de.
+using Sums = std::array<double, 5>;
+
+// Adds j's share of pair (i, j) to i's sums: m_j A_ij g_ij and the continuity and energy terms.
+inline void add_to(Sums& sums, const PairTerms& t, const PackedParticle& j) {
+    sums[0] -= j.m * t.a_ij * t.gx, sums[1] -= j.m * t.a_ij * t.gy, sums[2] -= j.m * t.a_ij * t.gz;
+    sums[3] += continuity_term(j.volume, t.v_dot_g);
+    sums[4] += energy_term(j.m, t.a_ij, t.v_dot_g);
+}
+
+// Adds i's share of pair (i, j) to j's sums: g_ji = -g_ij and v_ji . g_ji = v_ij . g_ij.
+inline void add_reverse(Sums& sums, const PairTerms& t, const PackedParticle& i) {
+    sums[0] += i.m * t.a_ji * t.gx, sums[1] += i.m * t.a_ji * t.gy, sums[2] += i.m * t.a_ji * t.gz;
+    sums[3] += continuity_term(i.volume, t.v_dot_g);
+    sums[4] += energy_term(i.m, t.a_ji, t.v_dot_g);
+}
+
+// The neighbours of `me` in list[first, last) that lie within the support, into `inside`.
+// Branch-free: the Verlet lists hold about a third more than the support, and a branch on
+// in/out would be mispredicted often.
+[[gnu::always_inline]] inline std::size_t within_support(const PackedParticle& me, const PackedParticle* nb, const std::uint32_t* list,
+                           std::uint32_t first, std::uint32_t last, std::vector<std::uint32_t>& inside) {
+    if (inside.size() < last - first) inside.resize(2 * (last - first));
+    std::size_t n = 0;
+    for (std::uint32_t k = first; k < last; ++k) {
+        const std::uint32_t j = list[k];
+        const PackedParticle& o = nb[j];
+        const double dx = me.x - o.x, dy = me.y - o.y, dz = me.z - o.z, hij = 0.5 * (me.h + o.h);
+        inside[n] = j;
+        n += static_cast<std::size_t>(!(dx * dx + dy * dy + dz * dz >= 4 * hij * hij));
+    }
+    return n;
+}
+
+template <int Dimension, bool Renormalise>
+void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp, RateScratch& scratch) {
     const std::size_t real = s.real;
+    const int team = rp.threads > 0 ? rp.threads : 1;
     const double norm = CubicSpline{Dimension}.normalisation();
     const MonaghanViscosity viscosity = rp.viscosity;
-    const double* h = s.h.data();
-    const double* rho = s.rho.data();
-    const Neighbour* nb = packed.data();
+    const PackedParticle* nb = scratch.packed.data();
     const std::uint8_t* interacting = s.interacting.data();
-    const std::array<double, 6>* correction = s.correction.data();
-    const std::uint32_t* offsets = list.offsets.data();
-    const std::uint32_t* neighbours = list.neighbours.data();
+    const Correction* correction = s.correction.data();
+    // Zero once; afterwards the final pass zeroes each entry as it reads it.
+    if (scratch.received.size() != real * static_cast<std::size_t>(team))
+        scratch.received.assign(real * static_cast<std::size_t>(team), Sums{0, 0, 0, 0, 0});
+    scratch.inside.resize(static_cast<std::size_t>(team));
 
-#pragma omp parallel for schedule(dynamic, 256) num_threads(rp.threads)
-    for (std::size_t i = 0; i < real; ++i) {
-        double ax = rp.body[0], ay = rp.body[1], az = rp.body[2], drho = 0, de = 0;
-        if (interacting[i]) {
-            const Neighbour& me = nb[i];
-            const double xi = me.x, yi = me.y, zi = me.z, vxi = me.vx, vyi = me.vy, vzi = me.vz;
-            const double rhoi = me.rho, ci = me.c, hi = me.h, pressure_i = me.p_over_rho2;
-            const std::array<double, 6> bi = correction[i];
-            for (std::uint32_t k = offsets[i]; k < offsets[i + 1]; ++k) {
-                const std::uint32_t j = neighbours[k];
-                const Neighbour& o = nb[j];
-                const double dx = xi - o.x, dy = yi - o.y, dz = zi - o.z;
-                const double r2 = dx * dx + dy * dy + dz * dz, hij = 0.5 * (hi + o.h);
-                if (r2 >= 4 * hij * hij) continue;
-                // grad_i W_ij = F x_ij (kernel.hpp), F = C_d / h^(d+2) theta'(q) / q.
-                const double inv_h = 1.0 / hij, r = std::sqrt(r2), q = r * inv_h;
-                const double inv_h2 = inv_h * inv_h;
-                const double scale = norm * (Dimension == 2 ? inv_h2 * inv_h2 : inv_h2 * inv_h2 * inv_h);
-                const double f = q <= 1 ? scale * (-3.0 + 2.25 * q) : -scale * 0.75 * (2 - q) * (2 - q) * (hij / r);
-                double gx = f * dx, gy = f * dy, gz = f * dz;
-                if constexpr (Renormalise) {
-                    const std::array<double, 6>& bj = correction[j];
-                    const double xx = 0.5 * (bi[0] + bj[0]), yy = 0.5 * (bi[1] + bj[1]), zz = 0.5 * (bi[2] + bj[2]);
-                    const double xy = 0.5 * (bi[3] + bj[3]), xz = 0.5 * (bi[4] + bj[4]), yz = 0.5 * (bi[5] + bj[5]);
-                    const double tx = xx * gx + xy * gy + xz * gz, ty = xy * gx + yy * gy + yz * gz;
-                    gz = xz * gx + yz * gy + zz * gz, gx = tx, gy = ty;
-                }
-                const double dvx = vxi - o.vx, dvy = vyi - o.vy, dvz = vzi - o.vz;
-                const double v_dot_g = dvx * gx + dvy * gy + dvz * gz;
-                const double v_dot_x = dvx * dx + dvy * dy + dvz * dz;
-                const double pi_ij =
-                    v_dot_x < 0 ? viscosity.pi(v_dot_x, r2, hij, 0.5 * (ci + o.c), 0.5 * (rhoi + o.rho)) : 0.0;
-                const double a_ij = momentum_factor(pressure_i, o.p_over_rho2, pi_ij);
-                const double mj = o.m;
-                drho += continuity_term(mj / o.rho, v_dot_g);
-                ax -= mj * a_ij * gx, ay -= mj * a_ij * gy, az -= mj * a_ij * gz;
-                de += energy_term(mj, a_ij, v_dot_g);
+#pragma omp parallel num_threads(team)
+    {
+        const auto t = static_cast<std::size_t>(omp_get_thread_num());
+        Sums* received = scratch.received.data() + t * real;
+        std::vector<std::uint32_t>& inside = scratch.inside[t];
+        // schedule(static, chunk): a fixed assignment of particles to threads, so the sums are
+        // added in the same order at every run with this thread count.
+#pragma omp for schedule(static, 256)
+        for (std::size_t i = 0; i < real; ++i) {
+            if (!interacting[i]) continue;
+            const PackedParticle& me = nb[i];
+            const Correction& bi = correction[i];
+            Sums own{rp.body[0], rp.body[1], rp.body[2], 0, 0};
+            const std::size_t pairs =
+                within_support(me, nb, list.forward.data(), list.forward_offsets[i], list.forward_offsets[i + 1], inside);
+            for (std::size_t k = 0; k < pairs; ++k) {
+                const std::uint32_t j = inside[k];
+                const PackedParticle& o = nb[j];
+                const double dx = me.x - o.x, dy = me.y - o.y, dz = me.z - o.z;
+                const PairTerms terms = pair_terms<Dimension, Renormalise>(
+                    me, o, bi, correction[j], dx, dy, dz, dx * dx + dy * dy + dz * dz, norm, viscosity);
+                add_to(own, terms, o);
+                add_reverse(received[j], terms, me);
             }
+            // Ghosts act on real particles only: one-sided.
+            const std::size_t images =
+                within_support(me, nb, list.ghost.data(), list.ghost_offsets[i], list.ghost_offsets[i + 1], inside);
+            for (std::size_t k = 0; k < images; ++k) {
+                const std::uint32_t j = inside[k];
+                const PackedParticle& o = nb[j];
+                const double dx = me.x - o.x, dy = me.y - o.y, dz = me.z - o.z;
+                add_to(own, pair_terms<Dimension, Renormalise>(me, o, bi, correction[j], dx, dy, dz,
+                                                                dx * dx + dy * dy + dz * dz, norm, viscosity), o);
+            }
+            s.ax[i] = own[0], s.ay[i] = own[1], s.az[i] = own[2], s.drho[i] = own[3], s.de[i] = own[4];
         }
-        s.ax[i] = ax, s.ay[i] = ay, s.az[i] = Dimension == 2 ? 0.0 : az;
-        drho *= rho[i];  // continuity.hpp: rho_i sum_j V_j v_ij . g_ij
-        s.drho[i] = drho, s.de[i] = de;
-        s.dh[i] = interacting[i] ? smoothing_length_rate(rp.h_rule, Dimension, h[i], rho[i], drho) : 0.0;
+        // Implicit barrier: every pair is done. Add what each particle received, in thread order.
+#pragma omp for schedule(static)
+        for (std::size_t i = 0; i < real; ++i) {
+            for (int u = 0; u < team; ++u) {
+                Sums& r = scratch.received[static_cast<std::size_t>(u) * real + i];
+                s.ax[i] += r[0], s.ay[i] += r[1], s.az[i] += r[2], s.drho[i] += r[3], s.de[i] += r[4];
+                r = Sums{0, 0, 0, 0, 0};
+            }
+            if (!interacting[i]) {
+                s.ax[i] = rp.body[0], s.ay[i] = rp.body[1], s.az[i] = Dimension == 2 ? 0.0 : rp.body[2];
+                s.drho[i] = 0, s.de[i] = 0, s.dh[i] = 0;
+                continue;
+            }
+            if (Dimension == 2) s.az[i] = 0.0;
+            s.drho[i] *= s.rho[i];  // continuity.hpp: rho_i sum_j V_j v_ij . g_ij
+            s.dh[i] = smoothing_length_rate(rp.h_rule, Dimension, s.h[i], s.rho[i], s.drho[i]);
+        }
     }
 }
 
 }  // namespace
 
-void compute_rates(Particles& s, const NeighbourList& list, const RateParameters& parameters) {
-    // Pack what neighbours are read for, ghosts included; p / rho^2 once per particle (momentum.hpp).
+void compute_rates(Particles& s, const NeighbourList& list, const RateParameters& parameters, RateScratch& scratch) {
+    // Pack what neighbours are read for, ghosts included; p / rho^2 and m / rho once per particle.
     const std::size_t n = s.total();
-    std::vector<Neighbour> packed(n);
+    scratch.packed.resize(n);
+    PackedParticle* packed = scratch.packed.data();
 #pragma omp parallel for schedule(static) num_threads(parameters.threads)
-    for (std::size_t i = 0; i < n; ++i)
-        packed[i] = {s.x[i], s.y[i], s.z[i], s.vx[i], s.vy[i], s.vz[i], s.h[i], s.interacting[i] ? s.m[i] : 0.0,
-                     s.rho[i], s.c[i], s.p[i] / (s.rho[i] * s.rho[i]), 0.0};
+    for (std::size_t i = 0; i < n; ++i) {
+        const double m = s.interacting[i] ? s.m[i] : 0.0;
+        packed[i] = {s.x[i], s.y[i], s.z[i], s.vx[i], s.vy[i], s.vz[i], s.h[i], m,
+                     s.rho[i], s.c[i], s.p[i] / (s.rho[i] * s.rho[i]), m / s.rho[i]};
+    }
     const bool two = parameters.kernel.dimension == 2;
-    if (parameters.renormalise) two ? gather<2, true>(s, list, parameters, packed) : gather<3, true>(s, list, parameters, packed);
-    else two ? gather<2, false>(s, list, parameters, packed) : gather<3, false>(s, list, parameters, packed);
+    if (parameters.renormalise) two ? pair_loop<2, true>(s, list, parameters, scratch) : pair_loop<3, true>(s, list, parameters, scratch);
+    else two ? pair_loop<2, false>(s, list, parameters, scratch) : pair_loop<3, false>(s, list, parameters, scratch);
 }
 
 }  // namespace sphdeck::refsolver

@@ -1,12 +1,16 @@
-// The right-hand side of one step: every physical term of one pair, gathered over each real
-// particle's neighbours in a single pass (parallel over particles, no atomics; the pair terms
-// live in continuity.hpp, momentum.hpp, viscosity.hpp, energy.hpp, smoothing_length.hpp).
+// The right-hand side of one step: every physical term of one pair (continuity.hpp, momentum.hpp,
+// viscosity.hpp, energy.hpp; smoothing_length.hpp per particle), in a single pass over the pairs.
 // Per pair: x_ij, r, h_ij = (h_i + h_j)/2, g_ij = F(r, h_ij) x_ij (kernel.hpp), corrected under
 // FORM 1 (renormalisation.hpp). Only pairs where both particles interact count (active and inside
 // the SPH time window); ghosts act on real particles only.
+// Symmetric evaluation (sph-algorithms.md §12.1 item 5): each real pair is listed once
+// (neighbour_list.hpp) and its terms go to both particles. With g_ji = -g_ij exactly (h_ij and the
+// mean FORM 1 correction are symmetric), the term particle j receives is bit for bit the one a
+// loop over j's own neighbours would compute; only the order of the sums differs.
 #pragma once
 
 #include <array>
+#include <vector>
 
 #include "refsolver/kernel.hpp"
 #include "refsolver/neighbour_list.hpp"
@@ -25,7 +29,23 @@ struct RateParameters {
     int threads = 1;
 };
 
-// Fills ax, ay, az, drho, de, dh of the real particles.
-void compute_rates(Particles& s, const NeighbourList& list, const RateParameters& parameters);
+// What the pair loop reads of a particle, packed together: one or two cache lines per neighbour
+// instead of one per array. Non-interacting particles get m = 0 and contribute nothing.
+struct PackedParticle {
+    double x, y, z, vx, vy, vz, h, m, rho, c, p_over_rho2, volume;  // volume = m / rho
+};
+
+// Work arrays of compute_rates, kept between steps so that no step allocates.
+struct RateScratch {
+    std::vector<PackedParticle> packed;  // real + ghost particles
+    // Per thread, per real particle: ax ay az drho de received from pairs listed under another
+    // particle (no two threads write the same entry; the sums are added in thread order).
+    std::vector<std::array<double, 5>> received;
+    std::vector<std::vector<std::uint32_t>> inside;  // per thread: one particle's pairs within the support
+};
+
+// Fills ax, ay, az, drho, de, dh of the real particles. Deterministic for a given thread count
+// (static schedule); another thread count changes the order of the sums (last-digit round-off).
+void compute_rates(Particles& s, const NeighbourList& list, const RateParameters& parameters, RateScratch& scratch);
 
 }  // namespace sphdeck::refsolver
