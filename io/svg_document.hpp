@@ -23,6 +23,12 @@ struct SvgGrid {
     std::string_view styles;    // CSS rules of the figure, after the common ones
 };
 
+// The grid of `panels` panels laid out by a figure's options (columns, panel_width, panel_height, title).
+template <typename Options>
+SvgGrid grid_for(std::size_t panels, const Options& options, std::string_view styles) {
+    return SvgGrid{panels, options.columns, options.panel_width, options.panel_height, options.title, styles};
+}
+
 // The whole document: `draw(svg, i, box)` appends panel i.
 std::string svg_panel_grid(const SvgGrid& grid, const std::function<void(std::string&, std::size_t, const SvgBox&)>& draw);
 

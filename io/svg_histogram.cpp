@@ -173,17 +173,15 @@ Bins make_bins(std::span<const double> values, bool integer_bins, std::size_t ma
 }
 
 std::string svg_histograms(std::span<const HistogramPanel> panels, const SvgOptions& options) {
-    SvgGrid grid;
-    grid.panels = panels.size();
-    grid.columns = options.columns;
-    grid.panel_width = options.panel_width;
-    grid.panel_height = options.panel_height;
-    grid.title = options.title;
-    grid.styles = ".subtitle { font-size: 11px; fill: #555; text-anchor: middle; }\n"
-                  ".count { font-size: 9px; fill: #444; text-anchor: middle; }\n"
-                  ".bar { fill: #4c78a8; }\n"
-                  ".bar:hover { fill: #f58518; }\n";
-    return svg_panel_grid(grid, [&](std::string& svg, std::size_t i, const SvgBox& box) { draw_panel(svg, panels[i], box, options.max_bins); });
+    const std::string_view styles =
+        ".subtitle { font-size: 11px; fill: #555; text-anchor: middle; }\n"
+        ".count { font-size: 9px; fill: #444; text-anchor: middle; }\n"
+        ".bar { fill: #4c78a8; }\n"
+        ".bar:hover { fill: #f58518; }\n";
+    return svg_panel_grid(grid_for(panels.size(), options, styles),
+                          [&](std::string& svg, std::size_t i, const SvgBox& box) {
+                              draw_panel(svg, panels[i], box, options.max_bins);
+                          });
 }
 
 void write_svg_file(const std::string& path, std::span<const HistogramPanel> panels, const SvgOptions& options) {

@@ -129,17 +129,15 @@ void draw_panel(std::string& svg, const PlotPanel& panel, const Box& box, std::s
 }  // namespace
 
 std::string svg_plot(std::span<const PlotPanel> panels, const PlotOptions& options) {
-    SvgGrid grid;
-    grid.panels = panels.size();
-    grid.columns = options.columns;
-    grid.panel_width = options.panel_width;
-    grid.panel_height = options.panel_height;
-    grid.title = options.title;
-    grid.styles = ".legend { font-size: 11px; }\n"
-                  ".line { fill: none; stroke-width: 1.6; }\n"
-                  ".dots { fill: none; stroke-width: 3; stroke-linecap: round; }\n"
-                  ".marker { fill: white; stroke-width: 1.6; }\n";
-    return svg_panel_grid(grid, [&](std::string& svg, std::size_t i, const SvgBox& box) { draw_panel(svg, panels[i], box, 0); });
+    const std::string_view styles =
+        ".legend { font-size: 11px; }\n"
+        ".line { fill: none; stroke-width: 1.6; }\n"
+        ".dots { fill: none; stroke-width: 3; stroke-linecap: round; }\n"
+        ".marker { fill: white; stroke-width: 1.6; }\n";
+    return svg_panel_grid(grid_for(panels.size(), options, styles),
+                          [&](std::string& svg, std::size_t i, const SvgBox& box) {
+                              draw_panel(svg, panels[i], box, 0);
+                          });
 }
 
 void write_svg_plot_file(const std::string& path, std::span<const PlotPanel> panels, const PlotOptions& options) {
