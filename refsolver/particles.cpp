@@ -42,6 +42,7 @@ void Particles::resize_real(std::size_t n) {
     ghost_source.clear(), ghost_planes.clear();
     for_each_real_array(*this, [n](std::vector<double>& v) { v.assign(n, 0.0); });
     part.assign(n, 0), model_index.assign(n, 0), active.assign(n, 1);
+    if (solid) dstress.assign(n, SymmetricTensor{}), stress_half.assign(n, SymmetricTensor{});
     resize_pair_arrays();
 }
 
@@ -50,6 +51,7 @@ void Particles::resize_pair_arrays() {
     for_each_pair_array(*this, [n](std::vector<double>& v) { v.resize(n, 0.0); });
     interacting.resize(n, 0);
     correction.resize(n, {1, 1, 1, 0, 0, 0});
+    if (solid) stress.resize(n, SymmetricTensor{});
 }
 
 void Particles::permute(const std::vector<std::uint32_t>& order, int threads) {
@@ -62,18 +64,21 @@ void Particles::permute(const std::vector<std::uint32_t>& order, int threads) {
     for (std::size_t a = 0; a < arrays.size(); ++a) spares.doubles[a].resize(arrays[a]->size());
     spares.interacting.resize(interacting.size()), spares.active.resize(active.size());
     spares.correction.resize(correction.size());
+    spares.stress.resize(stress.size()), spares.stress_half.resize(stress_half.size());  // empty for fluids
     spares.part.resize(part.size()), spares.model_index.resize(model_index.size()), spares.renumber.resize(order.size());
 #pragma omp parallel num_threads(threads)
     {
         for (std::size_t a = 0; a < arrays.size(); ++a) gather_into(spares.doubles[a], *arrays[a], order);
         gather_into(spares.interacting, interacting, order), gather_into(spares.active, active, order);
         gather_into(spares.correction, correction, order);
+        gather_into(spares.stress, stress, order), gather_into(spares.stress_half, stress_half, order);
         gather_into(spares.part, part, order), gather_into(spares.model_index, model_index, order);
 #pragma omp for schedule(static) nowait
         for (std::size_t k = 0; k < order.size(); ++k) spares.renumber[order[k]] = static_cast<std::uint32_t>(k);
     }
     for (std::size_t a = 0; a < arrays.size(); ++a) arrays[a]->swap(spares.doubles[a]);
     interacting.swap(spares.interacting), active.swap(spares.active), correction.swap(spares.correction);
+    stress.swap(spares.stress), stress_half.swap(spares.stress_half);
     part.swap(spares.part), model_index.swap(spares.model_index);
     for (std::uint32_t& source : ghost_source) source = spares.renumber[source];
 }

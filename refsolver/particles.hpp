@@ -9,15 +9,19 @@
 #include <cstdint>
 #include <vector>
 
+#include "refsolver/stress.hpp"
+
 namespace sphdeck::refsolver {
 
 struct Particles {
     std::size_t real = 0;  // real particles; the arrays of the pair loop also hold the ghosts
+    bool solid = false;    // *MAT_ELASTIC parts present: the stress arrays below are sized, else empty
 
     // Read by the pair loop: real + ghost entries.
     std::vector<double> x, y, z, vx, vy, vz, rho, p, c, h, m;
     std::vector<std::uint8_t> interacting;  // 1: active and inside its SPH time window
     std::vector<std::array<double, 6>> correction;  // FORM 1: B^-1 as xx yy zz xy xz yz
+    std::vector<SymmetricTensor> stress;            // solid: deviatoric stress S (stress.hpp), 0 for fluids
 
     // Real particles only.
     std::vector<double> e;                      // specific internal energy
@@ -28,6 +32,7 @@ struct Particles {
     // Rates of the last evaluation, and the half-step state of the leapfrog.
     std::vector<double> ax, ay, az, drho, de, dh;
     std::vector<double> vx_half, vy_half, vz_half, rho_half, e_half, h_half;
+    std::vector<SymmetricTensor> dstress, stress_half;  // solid only
     // Positions at the last neighbour rebuild (the Verlet skin test).
     std::vector<double> x_built, y_built, z_built;
 
@@ -39,14 +44,15 @@ struct Particles {
     struct Spares {
         std::vector<std::vector<double>> doubles;
         std::vector<std::uint8_t> interacting, active;
-        std::vector<std::array<double, 6>> correction;
+        std::vector<std::array<double, 6>> correction, stress, stress_half;
         std::vector<std::uint32_t> part, model_index, renumber;
     } spares;
 
     std::size_t ghosts() const { return ghost_source.size(); }
     std::size_t total() const { return real + ghosts(); }
 
-    // Sizes the real-only arrays and the pair-loop arrays for `n` real particles, no ghosts.
+    // Sizes the real-only arrays and the pair-loop arrays for `n` real particles, no ghosts (set
+    // `solid` first).
     void resize_real(std::size_t n);
     // Sizes the pair-loop arrays for the current ghosts (after ghost_source is filled).
     void resize_pair_arrays();

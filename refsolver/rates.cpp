@@ -6,6 +6,7 @@
 #include "refsolver/continuity.hpp"
 #include "refsolver/energy.hpp"
 #include "refsolver/momentum.hpp"
+#include "refsolver/stress.hpp"
 
 namespace sphdeck::refsolver {
 
@@ -63,6 +64,42 @@ inline void add_reverse(Sums& sums, const PairTerms& t, const PackedParticle& i)
     sums[4] += energy_term(i.m, t.a_ji, t.v_dot_g);
 }
 
+// The stress terms of pair (i, j) of a deck with *MAT_ELASTIC parts (stress.hpp; sph-algorithms.md
+// §5 FORM 0 with sigma = -p I + S, the -p I part being momentum.hpp's): with
+// D = S_i / rho_i^2 + S_j / rho_j^2 (symmetric in i and j), i receives m_j D g_ij in its
+// acceleration and -1/2 m_j v_ij . D g_ij in its energy (energy.hpp's form: the pair terms of
+// kinetic plus internal energy cancel), j receives -m_i D g_ij and -1/2 m_i v_ij . D g_ij. Both
+// add v_ij (x) g_ij and x_ij (x) g_ij to their P and Q, weighted by the other's volume.
+struct StressTerms {
+    double dgx, dgy, dgz, v_dot_dg;
+    std::array<double, 18> outer;  // v_ij (x) g_ij, then x_ij (x) g_ij, row-major
+};
+using GradientSums = std::array<double, 18>;  // P, then Q (stress.hpp)
+
+[[gnu::always_inline]] inline StressTerms stress_terms(const SymmetricTensor& si, const SymmetricTensor& sj,
+                                                       const PackedParticle& a, const PackedParticle& b,
+                                                       const PairTerms& t, double dx, double dy, double dz) {
+    const double dxx = si[0] + sj[0], dyy = si[1] + sj[1], dzz = si[2] + sj[2];
+    const double dxy = si[3] + sj[3], dxz = si[4] + sj[4], dyz = si[5] + sj[5];
+    StressTerms st;
+    st.dgx = dxx * t.gx + dxy * t.gy + dxz * t.gz;
+    st.dgy = dxy * t.gx + dyy * t.gy + dyz * t.gz;
+    st.dgz = dxz * t.gx + dyz * t.gy + dzz * t.gz;
+    const double v[3] = {a.vx - b.vx, a.vy - b.vy, a.vz - b.vz}, x[3] = {dx, dy, dz}, g[3] = {t.gx, t.gy, t.gz};
+    st.v_dot_dg = v[0] * st.dgx + v[1] * st.dgy + v[2] * st.dgz;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) st.outer[3 * r + c] = v[r] * g[c], st.outer[9 + 3 * r + c] = x[r] * g[c];
+    return st;
+}
+
+// `sign` +1 for i (m, volume: j's), -1 for j (i's).
+inline void add_stress(Sums& sums, GradientSums& gradient, const StressTerms& st, double m, double volume,
+                       double sign) {
+    sums[0] += sign * m * st.dgx, sums[1] += sign * m * st.dgy, sums[2] += sign * m * st.dgz;
+    sums[4] -= 0.5 * m * st.v_dot_dg;
+    for (int k = 0; k < 18; ++k) gradient[k] += volume * st.outer[k];
+}
+
 // The neighbours of `me` in list[first, last) that lie within the support, into `inside`.
 // Branch-free: the Verlet lists hold about a third more than the support, and a branch on
 // in/out would be mispredicted often.
@@ -80,7 +117,7 @@ inline void add_reverse(Sums& sums, const PairTerms& t, const PackedParticle& i)
     return n;
 }
 
-template <int Dimension, bool Renormalise>
+template <int Dimension, bool Renormalise, bool Solid>
 void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp, RateScratch& scratch) {
     const std::size_t real = s.real;
     const int team = rp.threads > 0 ? rp.threads : 1;
@@ -93,11 +130,18 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
     if (scratch.received.size() != real * static_cast<std::size_t>(team))
         scratch.received.assign(real * static_cast<std::size_t>(team), Sums{0, 0, 0, 0, 0});
     scratch.inside.resize(static_cast<std::size_t>(team));
+    const SymmetricTensor* stress = scratch.stress_over_rho2.data();
+    if constexpr (Solid) {
+        scratch.gradient.resize(real);
+        if (scratch.received_gradient.size() != real * static_cast<std::size_t>(team))
+            scratch.received_gradient.assign(real * static_cast<std::size_t>(team), GradientSums{});
+    }
 
 #pragma omp parallel num_threads(team)
     {
         const auto t = static_cast<std::size_t>(omp_get_thread_num());
         Sums* received = scratch.received.data() + t * real;
+        GradientSums* received_gradient = Solid ? scratch.received_gradient.data() + t * real : nullptr;
         std::vector<std::uint32_t>& inside = scratch.inside[t];
         // schedule(static, chunk): a fixed assignment of particles to threads, so the sums are
         // added in the same order at every run with this thread count.
@@ -107,6 +151,7 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
             const PackedParticle& me = nb[i];
             const Correction& bi = correction[i];
             Sums own{rp.body[0], rp.body[1], rp.body[2], 0, 0};
+            GradientSums own_gradient{};
             const std::size_t pairs =
                 within_support(me, nb, list.forward.data(), list.forward_offsets[i], list.forward_offsets[i + 1], inside);
             for (std::size_t k = 0; k < pairs; ++k) {
@@ -117,6 +162,11 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
                     me, o, bi, correction[j], dx, dy, dz, dx * dx + dy * dy + dz * dz, norm, viscosity);
                 add_to(own, terms, o);
                 add_reverse(received[j], terms, me);
+                if constexpr (Solid) {
+                    const StressTerms st = stress_terms(stress[i], stress[j], me, o, terms, dx, dy, dz);
+                    add_stress(own, own_gradient, st, o.m, o.volume, 1.0);
+                    add_stress(received[j], received_gradient[j], st, me.m, me.volume, -1.0);
+                }
             }
             // Ghosts act on real particles only: one-sided.
             const std::size_t images =
@@ -125,10 +175,15 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
                 const std::uint32_t j = inside[k];
                 const PackedParticle& o = nb[j];
                 const double dx = me.x - o.x, dy = me.y - o.y, dz = me.z - o.z;
-                add_to(own, pair_terms<Dimension, Renormalise>(me, o, bi, correction[j], dx, dy, dz,
-                                                                dx * dx + dy * dy + dz * dz, norm, viscosity), o);
+                const PairTerms terms = pair_terms<Dimension, Renormalise>(me, o, bi, correction[j], dx, dy, dz,
+                                                                           dx * dx + dy * dy + dz * dz, norm, viscosity);
+                add_to(own, terms, o);
+                if constexpr (Solid)
+                    add_stress(own, own_gradient, stress_terms(stress[i], stress[j], me, o, terms, dx, dy, dz), o.m,
+                               o.volume, 1.0);
             }
             s.ax[i] = own[0], s.ay[i] = own[1], s.az[i] = own[2], s.drho[i] = own[3], s.de[i] = own[4];
+            if constexpr (Solid) scratch.gradient[i] = own_gradient;
         }
         // Implicit barrier: every pair is done. Add what each particle received, in thread order.
 #pragma omp for schedule(static)
@@ -137,6 +192,23 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
                 Sums& r = scratch.received[static_cast<std::size_t>(u) * real + i];
                 s.ax[i] += r[0], s.ay[i] += r[1], s.az[i] += r[2], s.drho[i] += r[3], s.de[i] += r[4];
                 r = Sums{0, 0, 0, 0, 0};
+            }
+            if constexpr (Solid) {
+                GradientSums& sum = scratch.gradient[i];
+                if (!interacting[i]) sum = GradientSums{};
+                for (int u = 0; u < team; ++u) {
+                    GradientSums& r = scratch.received_gradient[static_cast<std::size_t>(u) * real + i];
+                    for (int k = 0; k < 18; ++k) sum[k] += r[k];
+                    r = GradientSums{};
+                }
+                const double shear = interacting[i] ? rp.shear[s.part[i]] : 0.0;
+                if (shear > 0) {
+                    Tensor P, Q;
+                    std::copy(sum.begin(), sum.begin() + 9, P.begin()), std::copy(sum.begin() + 9, sum.end(), Q.begin());
+                    s.dstress[i] = jaumann_stress_rate(velocity_gradient(P, Q, Dimension), s.stress[i], shear);
+                } else {
+                    s.dstress[i] = SymmetricTensor{};
+                }
             }
             if (!interacting[i]) {
                 s.ax[i] = rp.body[0], s.ay[i] = rp.body[1], s.az[i] = Dimension == 2 ? 0.0 : rp.body[2];
@@ -164,8 +236,20 @@ void compute_rates(Particles& s, const NeighbourList& list, const RateParameters
                      s.rho[i], s.c[i], s.p[i] / (s.rho[i] * s.rho[i]), m / s.rho[i]};
     }
     const bool two = parameters.kernel.dimension == 2;
-    if (parameters.renormalise) two ? pair_loop<2, true>(s, list, parameters, scratch) : pair_loop<3, true>(s, list, parameters, scratch);
-    else two ? pair_loop<2, false>(s, list, parameters, scratch) : pair_loop<3, false>(s, list, parameters, scratch);
+    if (parameters.solid) {  // *MAT_ELASTIC parts: S / rho^2 too, and the loops with the stress terms
+        scratch.stress_over_rho2.resize(n);
+        SymmetricTensor* sr2 = scratch.stress_over_rho2.data();
+#pragma omp parallel for schedule(static) num_threads(parameters.threads)
+        for (std::size_t i = 0; i < n; ++i) {
+            const double inv = 1.0 / (s.rho[i] * s.rho[i]);
+            for (int k = 0; k < 6; ++k) sr2[i][k] = s.stress[i][k] * inv;
+        }
+        if (parameters.renormalise) two ? pair_loop<2, true, true>(s, list, parameters, scratch) : pair_loop<3, true, true>(s, list, parameters, scratch);
+        else two ? pair_loop<2, false, true>(s, list, parameters, scratch) : pair_loop<3, false, true>(s, list, parameters, scratch);
+        return;
+    }
+    if (parameters.renormalise) two ? pair_loop<2, true, false>(s, list, parameters, scratch) : pair_loop<3, true, false>(s, list, parameters, scratch);
+    else two ? pair_loop<2, false, false>(s, list, parameters, scratch) : pair_loop<3, false, false>(s, list, parameters, scratch);
 }
 
 }  // namespace sphdeck::refsolver

@@ -16,6 +16,7 @@
 #include "refsolver/neighbour_list.hpp"
 #include "refsolver/particles.hpp"
 #include "refsolver/smoothing_length.hpp"
+#include "refsolver/stress.hpp"
 #include "refsolver/viscosity.hpp"
 
 namespace sphdeck::refsolver {
@@ -27,6 +28,10 @@ struct RateParameters {
     SmoothingLengthRule h_rule = SmoothingLengthRule::Divergence;
     std::array<double, 3> body{0, 0, 0};  // body acceleration (body_load.hpp)
     int threads = 1;
+    // *MAT_ELASTIC parts present: the pair loop adds the stress terms and the velocity gradient
+    // (stress.hpp) and fills dstress; fluid-only decks run the loop without them.
+    bool solid = false;
+    std::vector<double> shear;  // per part: G, 0 for a fluid
 };
 
 // What the pair loop reads of a particle, packed together: one or two cache lines per neighbour
@@ -42,9 +47,13 @@ struct RateScratch {
     // particle (no two threads write the same entry; the sums are added in thread order).
     std::vector<std::array<double, 5>> received;
     std::vector<std::vector<std::uint32_t>> inside;  // per thread: one particle's pairs within the support
+    // Solid decks only: S / rho^2 (real + ghost), and per real particle the P and Q sums of
+    // stress.hpp, own and (per thread) received.
+    std::vector<SymmetricTensor> stress_over_rho2;
+    std::vector<std::array<double, 18>> gradient, received_gradient;
 };
 
-// Fills ax, ay, az, drho, de, dh of the real particles. Deterministic for a given thread count
+// Fills ax, ay, az, drho, de, dh (and dstress when parameters.solid) of the real particles. Deterministic for a given thread count
 // (static schedule); another thread count changes the order of the sums (last-digit round-off).
 void compute_rates(Particles& s, const NeighbourList& list, const RateParameters& parameters, RateScratch& scratch);
 

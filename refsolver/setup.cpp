@@ -1,5 +1,5 @@
-// build_setup: parts (section, *MAT_NULL, EOS), particles (preview h0 and masses, density,
-// energy), then the controls, planes, loads and velocities (setup_controls.cpp).
+// build_setup: parts (section, *MAT_NULL and EOS, or *MAT_ELASTIC), particles (preview h0 and
+// masses, density, energy), then the controls, planes, loads and velocities (setup_controls.cpp).
 #include "refsolver/setup.hpp"
 
 #include <cmath>
@@ -92,6 +92,46 @@ bool read_eos(const model::Model& m, const model::Part& part, const model::Mater
     return true;
 }
 
+// A *MAT_ELASTIC part (stress.hpp): p = K (rho / rho0 - 1) as *EOS_LINEAR_POLYNOMIAL C1 = K with no
+// cut-off, G for the deviatoric stress, the dilatational wave speed for the time step.
+bool read_elastic(const model::Model& m, const model::Part& part, const model::Material& mat, PartSetup& ps,
+                  PartProblem& problem) {
+    const model::KeywordRecord* mr = model_record(m, mat.record);
+    const double young = record_number(mr, "E"), poisson = record_number(mr, "PR");
+    if (!(young > 0)) {
+        const model::FieldRecord* f = record_field(mr, "E");
+        problem.fatal(fmt::format("part {}: *MAT_ELASTIC {} E {} is not supported: the solver needs a positive "
+                                  "Young's modulus (E < 0, the EFUNC card, is not modelled)",
+                                  part.id, mat.id, young),
+                      f ? f->span : mat.span);
+        return false;
+    }
+    if (!(poisson > -1 && poisson < 0.5)) {
+        const model::FieldRecord* f = record_field(mr, "PR");
+        problem.fatal(fmt::format("part {}: *MAT_ELASTIC {} PR {} is outside (-1, 0.5): no positive bulk and shear "
+                                  "moduli",
+                                  part.id, mat.id, poisson),
+                      f ? f->span : mat.span);
+        return false;
+    }
+    for (const char* name : {"DA", "DB"})
+        if (record_number(mr, name) != 0)
+            problem.fatal(fmt::format("part {}: *MAT_ELASTIC {} {} {} (beam damping) has no effect on particles",
+                                      part.id, mat.id, name, record_number(mr, name)),
+                          record_field(mr, name)->span, false);
+    if (!part.eos.value.empty() && part.eos.value != "0")
+        problem.fatal(fmt::format("part {}: EOSID {} is ignored: *MAT_ELASTIC takes its pressure from E and PR",
+                                  part.id, part.eos.value),
+                      part.eos.span.valid() ? part.eos.span : part.span, false);
+    ps.elastic = ElasticModuli::from_young(young, poisson);
+    EquationOfState& eos = ps.eos;
+    eos.kind = EquationOfState::Kind::LinearPolynomial;
+    eos.rho0 = mat.density.value;
+    eos.c[1] = ps.elastic.bulk;
+    ps.wave_speed = ps.elastic.wave_speed(eos.rho0);
+    return true;
+}
+
 // Section, material and EOS of one part.
 bool read_part(const model::Model& m, long long id, PartSetup& ps, std::vector<Unsupported>& out) {
     PartProblem problem{out};
@@ -129,9 +169,10 @@ bool read_part(const model::Model& m, long long id, PartSetup& ps, std::vector<U
                       mat->density.span.valid() ? mat->density.span : mat->span);
         return false;
     }
+    if (mat->keyword == "*MAT_ELASTIC") return read_elastic(m, *part, *mat, ps, problem) && problem.fine;
     if (mat->keyword != "*MAT_NULL") {
         problem.fatal(fmt::format("part {}: material {} is not supported: the solver runs *MAT_NULL with an equation "
-                                  "of state (a fluid, no deviatoric stress)",
+                                  "of state (a fluid) and *MAT_ELASTIC",
                                   id, mat->keyword),
                       mat->span);
         return false;
@@ -183,7 +224,7 @@ SetupResult build_setup(const model::Model& m, const RunOptions& options) {
         const preproc::PartPreview& pv = preview.parts[pp.part[i]];
         const model::Part* part = m.part(std::to_string(pv.part));
         double v0 = 1, e0 = 0;
-        initial_eos_state(m, part, v0, e0);
+        if (!in.parts[pp.part[i]].solid()) initial_eos_state(m, part, v0, e0);
         in.rho[i] = pv.density / v0;
         in.e[i] = pv.density > 0 ? e0 / pv.density : 0.0;  // E0 per reference volume: e = E0 / rho0
         in.h_low[i] = pv.h_min > 0 ? pv.h_min : pv.h0;

@@ -1,7 +1,7 @@
 // From the Model to what the solver runs (design.md: "setup from the Model"): the particles'
 // initial state in model order (positions, h0 and masses as the preview computes them, density
-// RO (or RO / V0), internal energy E0 / RO, *INITIAL_VELOCITY), the parts' EOS and SPH time
-// windows, the controls, symmetry planes and body loads, and the list of everything in the deck
+// RO (or RO / V0), internal energy E0 / RO, *INITIAL_VELOCITY), the parts' EOS (or *MAT_ELASTIC
+// moduli) and SPH time windows, the controls, symmetry planes and body loads, and the list of everything in the deck
 // that the solver does not honour (unsupported.cpp).
 #pragma once
 
@@ -14,13 +14,17 @@
 #include "refsolver/eos.hpp"
 #include "refsolver/simulation.hpp"
 #include "refsolver/smoothing_length.hpp"
+#include "refsolver/stress.hpp"
 #include "refsolver/symmetry_ghosts.hpp"
 
 namespace sphdeck::refsolver {
 
 struct PartSetup {
     long long id = 0;
-    EquationOfState eos;
+    EquationOfState eos;  // *MAT_ELASTIC: C1 = K (p = K mu)
+    ElasticModuli elastic;  // *MAT_ELASTIC; shear 0 for a fluid
+    double wave_speed = 0;  // *MAT_ELASTIC: sqrt((K + 4 G / 3) / rho0), the particles' c
+    bool solid() const { return elastic.shear > 0; }
     double start = 0, death = 1e20;  // *SECTION_SPH START, DEATH
 };
 

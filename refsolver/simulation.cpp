@@ -6,7 +6,8 @@
 //      neighbour lists if the Verlet skin requires it, and compute the new rates (rates.hpp)
 //   4. half kick:  v = v' + dt/2 a_new  (and rho, e, h alike; h clamped to [HMIN h0, HMAX h0])
 // Second order, time-reversible for the conservative terms; the pair forces are antisymmetric, so
-// every kick conserves momentum exactly where no load or boundary acts.
+// every kick conserves momentum exactly where no load or boundary acts. The deviatoric stress of
+// *MAT_ELASTIC parts (stress.hpp) is kicked like the density (kick_stress; fluid decks skip it).
 #include "refsolver/simulation.hpp"
 
 #include <algorithm>
@@ -35,6 +36,20 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 // rebuild costs most of a step: 0.8 h halves the rebuilds of 0.5 h for about 3 % more per step
 // (bench_refsolver).
 constexpr double skin_share = 0.8;
+
+// The leapfrog of the deviatoric stress (*MAT_ELASTIC), kicked like the density: `predict` gives
+// the half-step S and S at the new time from the old rate; otherwise S = S_half + dt/2 dS_new.
+void kick_stress(Particles& s, double half, bool predict, int threads) {
+    const std::size_t n = s.real;
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!s.active[i]) continue;
+        for (int k = 0; k < 6; ++k) {
+            if (predict) s.stress_half[i][k] = s.stress[i][k] + half * s.dstress[i][k];
+            s.stress[i][k] = s.stress_half[i][k] + half * s.dstress[i][k];
+        }
+    }
+}
 }  // namespace
 
 struct Simulation::Impl {
@@ -66,7 +81,11 @@ struct Simulation::Impl {
 void Simulation::Impl::update_eos() {
     const std::size_t n = s.real;
 #pragma omp parallel for schedule(static) num_threads(rates.threads)
-    for (std::size_t i = 0; i < n; ++i) in.parts[s.part[i]].eos.evaluate(s.rho[i], s.e[i], s.p[i], s.c[i]);
+    for (std::size_t i = 0; i < n; ++i) {
+        const PartSetup& part = in.parts[s.part[i]];
+        part.eos.evaluate(s.rho[i], s.e[i], s.p[i], s.c[i]);
+        if (part.solid()) s.c[i] = part.wave_speed;  // stress.hpp: the dilatational wave speed
+    }
 }
 
 void Simulation::Impl::update_interacting() {
@@ -162,6 +181,11 @@ void Simulation::Impl::evaluate() {
 
 void Simulation::Impl::initialise() {
     const std::size_t n = in.x.size();
+    for (const PartSetup& p : in.parts) {
+        rates.shear.push_back(p.elastic.shear);
+        rates.solid = rates.solid || p.solid();
+    }
+    s.solid = rates.solid;
     s.resize_real(n);
     for (std::size_t i = 0; i < n; ++i) {
         s.x[i] = in.x[i], s.y[i] = in.y[i], s.z[i] = in.z[i];
@@ -227,6 +251,7 @@ void Simulation::Impl::step() {
         s.h[i] = clamp_smoothing_length(s.h_half[i] + half * s.dh[i], s.h_low[i], s.h_high[i]);
     }
     external_work += work;
+    if (s.solid) kick_stress(s, half, true, rates.threads);
     reflect_crossed(s, in.planes);
     time += dt;
     deactivation.apply(s);
@@ -239,6 +264,7 @@ void Simulation::Impl::step() {
         s.rho[i] = s.rho_half[i] + half * s.drho[i], s.e[i] = s.e_half[i] + half * s.de[i];
         s.h[i] = clamp_smoothing_length(s.h_half[i] + half * s.dh[i], s.h_low[i], s.h_high[i]);
     }
+    if (s.solid) kick_stress(s, half, false, rates.threads);
     ++steps, ++since_rebuild;
     state_valid = false;
     dt_next = stable_time_step(s, in.tssfac, rates.threads);
@@ -304,6 +330,7 @@ const ParticleState& Simulation::state() const {
     for (auto* v : {&out.x, &out.y, &out.z, &out.vx, &out.vy, &out.vz, &out.rho, &out.e, &out.p, &out.h, &out.mass})
         v->resize(n);
     out.part.resize(n), out.active.resize(n);
+    out.stress.resize(s.solid ? n : 0);
     for (std::size_t k = 0; k < n; ++k) {
         const std::size_t i = s.model_index[k];
         out.x[i] = s.x[k], out.y[i] = s.y[k], out.z[i] = s.z[k];
@@ -311,6 +338,7 @@ const ParticleState& Simulation::state() const {
         out.rho[i] = s.rho[k], out.e[i] = s.e[k], out.h[i] = s.h[k], out.mass[i] = s.m[k];
         out.p[i] = m.in.parts[s.part[k]].eos.pressure(s.rho[k], s.e[k]);  // at the final rho, e
         out.part[i] = s.part[k], out.active[i] = s.active[k];
+        if (s.solid) out.stress[i] = s.stress[k];
     }
     m.state_valid = true;
     return out;

@@ -53,6 +53,9 @@ struct ParticleState {
     std::vector<double> mass;        // constant during the run
     std::vector<std::uint32_t> part; // index into Simulation::part_ids()
     std::vector<std::uint8_t> active;  // 0 once deactivated (BOXID, MAXV, DEATH)
+    // Added: deviatoric stress S (xx yy zz xy xz yz) when the deck has *MAT_ELASTIC parts (0 for
+    // its fluid particles); empty for fluid-only decks.
+    std::vector<std::array<double, 6>> stress;
     std::size_t size() const { return x.size(); }
 };
 

@@ -75,6 +75,12 @@ void update_ghosts(Particles& s, const std::vector<SymmetryPlane>& planes, int t
         s.rho[g] = s.rho[i], s.p[g] = s.p[i], s.c[g] = s.c[i], s.h[g] = s.h[i], s.m[g] = s.m[i];
         s.interacting[g] = s.interacting[i];
         s.correction[g] = b;
+        if (s.solid) {  // deviatoric stress R S R: Slide flips the n-t shear stresses (§8.6)
+            SymmetricTensor st = s.stress[i];
+            for (std::size_t q = 0; q < planes.size() && q < 8; ++q)
+                if (s.ghost_planes[k] >> q & 1u) st = mirror_tensor(planes[q], st);
+            s.stress[g] = st;
+        }
     }
 }
 

@@ -9,7 +9,8 @@
 //   images across each pair (and triple) of them (corner images, beyond Radioss, which builds
 //   single images only: §8.1), so a box corner is fully symmetric for axis-aligned planes.
 // - Ghost state (Slide, §8.2): position x - 2 dd n, velocity v - 2 (v.n) n, same mass, density,
-//   pressure, sound speed, h; FORM 1 correction R B R with R = I - 2 n n. Ghosts only act on
+//   pressure, sound speed, h; FORM 1 correction R B R with R = I - 2 n n, and the deviatoric stress
+//   of *MAT_ELASTIC parts R S R (Slide flips the n-t shear stresses, §8.6). Ghosts only act on
 //   real particles.
 // - A real particle found behind a plane (dd < 0) is put back and its normal velocity reversed,
 //   as OpenRadioss Ilev = 1 does (§8.6): SPH repulsion is finite, so crossing is possible.
