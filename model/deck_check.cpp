@@ -34,10 +34,11 @@ std::size_t count_particles(const grammar::RawDeck& deck, const grammar::CardLin
     if (values.size() >= 4 && values[0].valid && values[3].valid && values[3].explicit_value &&
         values[3].number > values[0].number)
         n = static_cast<std::size_t>(values[3].number - values[0].number) + 1;
-    // Sources disagree on NEND's width (lsdyna-format.md §3); we read 33-42 and flag 41-42.
+    // Sources disagree on NEND's width (lsdyna-format.md §3); we read 33-42 and flag 41-42. Text in
+    // 41-42 makes NEND written, so the line is looked at again only then (this runs once per particle).
+    if (format != grammar::CardFormat::Standard || values.size() < 4 || !values[3].explicit_value) return n;
     std::string_view text = deck.text(line);
-    if (format == grammar::CardFormat::Standard && values.size() >= 4 && text.size() > 40 &&
-        !grammar::is_blank(text.substr(40, 2)) && !grammar::is_free_format(text))
+    if (text.size() > 40 && !grammar::is_blank(text.substr(40, 2)) && !grammar::is_free_format(text))
         out.push_back({"DK023", diag::Severity::Warning,
                        "NEND reaches columns 41-42; some readers stop NEND at column 40", values[3].span, {}});
     return n;
