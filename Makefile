@@ -4,7 +4,7 @@ BUILD_ASAN ?= build-asan
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build demo test test-asan bench verify clean
+.PHONY: all deps build demo test test-asan corpus bench verify clean
 
 all: build
 
@@ -22,6 +22,11 @@ demo: build
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure
+
+# The corpus check: sphdeck on the real public decks of ../shared/corpus (or $$SPHDECK_CORPUS), every
+# error and warning compared with the argued baseline tests/corpus/baseline.tsv.
+corpus: build
+	python3 tests/corpus/run_corpus.py --sphdeck $(BUILD)/sphdeck
 
 # The test suite again under AddressSanitizer and UndefinedBehaviorSanitizer (CI runs it too).
 test-asan: deps
