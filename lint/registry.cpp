@@ -1,10 +1,12 @@
-// The rule registry: merges the family tables into one sorted table, and looks rules up.
+// The rule registry: the rows joined with their documentation pages, sorted by code, and look-ups.
 #include "lint/registry.hpp"
 
 #include <algorithm>
 #include <cstddef>
 #include <string>
 #include <tuple>
+
+#include "lint/rule_docs.hpp"
 
 namespace sphdeck::lint {
 namespace {
@@ -22,11 +24,11 @@ bool iequals(std::string_view a, std::string_view b) {
            std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) { return to_lower(x) == to_lower(y); });
 }
 
+// The rows with their documentation pages; a row without a page keeps an empty doc (a test fails).
 std::vector<RuleInfo> build_table() {
-    std::vector<RuleInfo> rows;
-    for (auto family : {detail::dk_rule_rows(), detail::ref_rule_rows(), detail::sph_rule_rows(),
-                        detail::rad_rule_rows()})
-        rows.insert(rows.end(), family.begin(), family.end());
+    std::vector<RuleInfo> rows(detail::rule_rows().begin(), detail::rule_rows().end());
+    for (RuleInfo& row : rows)
+        if (const RuleDocPage* page = find_rule_doc_page(row.code)) row.doc = page->doc();
     std::sort(rows.begin(), rows.end(), [](const RuleInfo& a, const RuleInfo& b) { return a.code < b.code; });
     return rows;
 }

@@ -1,5 +1,6 @@
 // The rule registry: every lint rule as data, with the documentation `sphdeck rule CODE` prints.
-// One flat table sorted by code (ruff's codes.rs is the model); codes are never reused.
+// One flat table sorted by code (ruff's codes.rs is the model); codes are never reused. The rows are
+// in lint/registry_rows.cpp; each rule's documentation is docs/rules/CODE.md, embedded at build time.
 #pragma once
 
 #include <cstddef>
@@ -11,7 +12,8 @@
 
 namespace sphdeck::lint {
 
-// A rule's documentation in ruff's sections.
+// A rule's documentation in ruff's sections, as plain text (Markdown escapes removed): the sections of
+// docs/rules/CODE.md (lint/rule_docs.hpp reads them).
 struct RuleDoc {
     std::string_view what;    // what the rule checks, one paragraph
     std::string_view why;     // why it matters: the manual remark it comes from, in our own words,
@@ -29,7 +31,7 @@ struct RuleInfo {
     std::string_view since;   // "0.1.0"
     std::string_view source;  // "CONTROL_SPH R2e", "reader", "SPHBCS", ... as in the catalogue
     std::string_view summary;  // one line: the catalogue's condition in plain words
-    RuleDoc doc;
+    RuleDoc doc{};            // empty in the rows; the registry fills it from docs/rules/CODE.md
 };
 
 // Every rule, sorted by code.
@@ -44,11 +46,8 @@ const RuleInfo* find_rule(std::string_view code_or_name);
 std::vector<std::string_view> similar_rules(std::string_view query, std::size_t max = 3);
 
 namespace detail {
-// The rows of each family, defined in lint/rule_docs_*.cpp; use all_rules() instead.
-std::span<const RuleInfo> dk_rule_rows();
-std::span<const RuleInfo> ref_rule_rows();
-std::span<const RuleInfo> sph_rule_rows();
-std::span<const RuleInfo> rad_rule_rows();
+// The rows without their documentation, defined in lint/registry_rows.cpp; use all_rules() instead.
+std::span<const RuleInfo> rule_rows();
 }  // namespace detail
 
 }  // namespace sphdeck::lint

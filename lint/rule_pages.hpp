@@ -1,5 +1,6 @@
-// The registry's documentation as text: `sphdeck rule CODE`, the `sphdeck rules` table, and
-// docs/rules.md (generated from here; a test keeps the checked-in copy identical).
+// The registry's documentation as text: `sphdeck rule CODE`, the `sphdeck rules` table, SARIF rule
+// help, and docs/rules.md (generated from here; a test keeps the checked-in copy identical). The
+// sections come from docs/rules/CODE.md (lint/rule_docs.hpp), the header and summary from the registry.
 #pragma once
 
 #include <string>
