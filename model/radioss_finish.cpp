@@ -27,14 +27,23 @@ bool normalise(Vec& a) {
     return true;
 }
 
-// X' along the first vector, Z' = X' × Y', Y' = Z' × X' (skews and frames).
-bool orthonormal(RadiossFrame& f) {
-    Vec x = f.axes[0], y = f.axes[1];
+// Moving systems (Dir X): X' along N1N2, Z' = X' x N1N3, Y' = Z' x X' (hm_read_frm.F, IDIR 1).
+bool from_x_and_plane(RadiossFrame& f) {
+    Vec x = f.axes[0], in_plane = f.axes[1];
     if (!normalise(x)) return false;
-    Vec z = cross(x, y);
+    Vec z = cross(x, in_plane);
     if (!normalise(z)) return false;
-    y = cross(z, x);
-    f.axes = {x, y, z};
+    f.axes = {x, cross(z, x), z};
+    return true;
+}
+
+// Fixed systems: the deck gives Y' and Z'; X' = Y' x Z', then Y' = Z' x X' (hm_read_frm.F and
+// hm_read_skw.F, "calculation of x'" and "of y'"), each normalised; Z' keeps its direction.
+bool from_y_and_z(RadiossFrame& f) {
+    Vec z = f.axes[2];
+    Vec x = cross(f.axes[1], z);
+    if (!normalise(x) || !normalise(z)) return false;
+    f.axes = {x, cross(z, x), z};
     return true;
 }
 
@@ -76,7 +85,7 @@ void RadiossBuilder::resolve_frames() {
     const IdIndex nodes(model_.nodes.id);
     for (RadiossFrame& f : facts_.frames) {
         if (!f.moving) {
-            f.geometry = orthonormal(f);
+            f.geometry = from_y_and_z(f);
             continue;
         }
         if (f.nodes[0] == 0) continue;
@@ -94,7 +103,7 @@ void RadiossBuilder::resolve_frames() {
         f.origin = at[0];
         f.axes[0] = {at[1][0] - at[0][0], at[1][1] - at[0][1], at[1][2] - at[0][2]};
         f.axes[1] = {at[2][0] - at[0][0], at[2][1] - at[0][1], at[2][2] - at[0][2]};
-        f.geometry = orthonormal(f);
+        f.geometry = from_x_and_plane(f);
     }
 }
 
