@@ -1,5 +1,6 @@
 // RadiossBuilder: dispatch, shared helpers, and the mesh side of a Radioss deck (/BEGIN, /NODE,
 // /PART, solid elements, node groups, skews and frames, /ANALY, /DEF_SOLID).
+#include <cctype>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -255,8 +256,12 @@ void RadiossBuilder::end_frame(const RadiossBlock& b) {
             const RadiossValue* v = value(fmt::format("node_ID{}", k + 1));
             f.nodes[k] = v && v->valid ? static_cast<long long>(v->number) : 0;
         }
-        const RadiossValue* dir = value("Dir");
-        if (dir && dir->explicit_value && dir->text != "X" && dir->text != "x") f.nodes = {0, 0, 0};  // not resolved
+        // hm_read_frm.F / hm_read_skw.F: the last X, Y or Z letter of the Dir cell; X by default.
+        if (const RadiossValue* dir = value("Dir"))
+            for (char c : dir->text) {
+                const char u = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+                if (u >= 'X' && u <= 'Z') f.dir = u - 'X';
+            }
     }
     facts_.frames.push_back(std::move(f));
 }

@@ -27,13 +27,17 @@ bool normalise(Vec& a) {
     return true;
 }
 
-// Moving systems (Dir X): X' along N1N2, Z' = X' x N1N3, Y' = Z' x X' (hm_read_frm.F, IDIR 1).
-bool from_x_and_plane(RadiossFrame& f) {
-    Vec x = f.axes[0], in_plane = f.axes[1];
-    if (!normalise(x)) return false;
-    Vec z = cross(x, in_plane);
-    if (!normalise(z)) return false;
-    f.axes = {x, cross(z, x), z};
+// Moving systems: the Dir axis e_k along N1N2, e_k+2 = e_k x N1N3, e_k+1 = e_k+2 x e_k (indices
+// mod 3; hm_read_frm.F and hm_read_skw.F, "calculation of z'" and "of y'" per IDIR).
+bool from_nodes(RadiossFrame& f, const Vec& n1n2, const Vec& n1n3) {
+    const int k = f.dir, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+    Vec along = n1n2;
+    if (!normalise(along)) return false;
+    Vec third = cross(along, n1n3);
+    if (!normalise(third)) return false;
+    f.axes[k] = along;
+    f.axes[k2] = third;
+    f.axes[k1] = cross(third, along);
     return true;
 }
 
@@ -101,9 +105,9 @@ void RadiossBuilder::resolve_frames() {
         }
         if (!found) continue;
         f.origin = at[0];
-        f.axes[0] = {at[1][0] - at[0][0], at[1][1] - at[0][1], at[1][2] - at[0][2]};
-        f.axes[1] = {at[2][0] - at[0][0], at[2][1] - at[0][1], at[2][2] - at[0][2]};
-        f.geometry = from_x_and_plane(f);
+        const Vec n1n2{at[1][0] - at[0][0], at[1][1] - at[0][1], at[1][2] - at[0][2]};
+        const Vec n1n3{at[2][0] - at[0][0], at[2][1] - at[0][1], at[2][2] - at[0][2]};
+        f.geometry = from_nodes(f, n1n2, n1n3);
     }
 }
 

@@ -137,3 +137,23 @@ TEST_CASE("radioss layouts: a one-file deck (engine input, /END/ENGINE, starter 
     CHECK(count_code(r.diagnostics, "DK001") == 0);  // /RUN and /TFILE are read as engine keywords
     CHECK(count_code(check("# RADIOSS\n/BEGIN\nrun\n      2022\n/END\n").diagnostics, "RAD001") == 1);
 }
+
+TEST_CASE("radioss layouts: /FRAME/MOV puts its Dir axis along N1N2 (hm_read_frm.F)") {
+    const std::string nodes = "/NODE\n" + i10("1") + r20("0") + r20("0") + r20("0") + "\n" + i10("2") + r20("0") +
+                              r20("0") + r20("2") + "\n" + i10("3") + r20("1") + r20("0") + r20("0") + "\n";
+    const std::string frames = "/FRAME/MOV/1\nx\n" + i10("1") + i10("2") + i10("3") + i10("") + "\n/FRAME/MOV/2\ny\n" +
+                               i10("1") + i10("2") + i10("3") + i10("Y") + "\n";
+    auto r = check(deck(nodes + frames, 2026));
+    const auto& f = facts(r);
+    REQUIRE(f.frames.size() == 2);
+    REQUIRE(f.frames[0].geometry);
+    REQUIRE(f.frames[1].geometry);
+    // Dir X: X' = N1N2 = +z, Z' = X' x N1N3 = +y, Y' = Z' x X' = +x.
+    CHECK(f.frames[0].axes[0][2] == doctest::Approx(1.0));
+    CHECK(f.frames[0].axes[2][1] == doctest::Approx(1.0));
+    CHECK(f.frames[0].axes[1][0] == doctest::Approx(1.0));
+    // Dir Y: Y' = +z, X' = Y' x N1N3 = +y, Z' = X' x Y' = +x.
+    CHECK(f.frames[1].axes[1][2] == doctest::Approx(1.0));
+    CHECK(f.frames[1].axes[0][1] == doctest::Approx(1.0));
+    CHECK(f.frames[1].axes[2][0] == doctest::Approx(1.0));
+}
