@@ -1,5 +1,7 @@
 // RadiossBuilder: dispatch, shared helpers, and the mesh side of a Radioss deck (/BEGIN, /NODE,
 // /PART, solid elements, node groups, skews and frames, /ANALY, /DEF_SOLID).
+#include <cctype>
+#include <cmath>
 #include <fmt/format.h>
 
 #include "grammar/value.hpp"
@@ -71,7 +73,6 @@ std::optional<long long> RadiossBuilder::header_id(const RadiossBlock& b, std::s
 
 void RadiossBuilder::begin(const RadiossBlock& b) {
     cards_.assign(b.spec->format_for(b.version).cards.size(), {});
-    rows_.clear();
     pending_members_.clear();
     pending_tetra10_.clear();
     block_id_.reset();
@@ -95,12 +96,12 @@ void RadiossBuilder::card(const RadiossBlock& b, std::size_t index, std::uint32_
         return add_element(b, index, line, values);
     if (name == "/GRNOD/NODE" || name == "/GRNOD/PART") return add_group_members(values);
     const auto& cards = b.spec->format_for(b.version).cards;
-    if (cards[index].repeat == grammar::radioss::Repeat::Repeated) rows_.push_back(values);
-    else cards_[index] = values;
+    if (cards[index].repeat == grammar::radioss::Repeat::Once) cards_[index] = values;
 }
 
 void RadiossBuilder::end(const RadiossBlock& b) {
-    const std::string_view n = b.spec->name;
+    // Law-specific tables (/MAT/LAW2...) are handled as their family (/MAT).
+    const std::string_view n = b.spec->family.empty() ? b.spec->name : b.spec->family;
     if (n == "/BEGIN") end_begin(b);
     else if (n == "/PART") end_part(b);
     else if (n == "/FRAME/FIX" || n == "/SKEW/FIX" || n == "/FRAME/MOV" || n == "/SKEW/MOV" || n == "/FRAME" ||
@@ -224,7 +225,9 @@ void RadiossBuilder::end_group(const RadiossBlock& b) {
 
 void RadiossBuilder::end_frame(const RadiossBlock& b) {
     if (b.args.empty()) return;
-    auto id = header_id(b, b.args.size() - 1, "an id");
+    // /FRAME/FIX/id (V4: /FRAME/FIX/id/title); the generic /FRAME/<kind>/id: the last segment.
+    const bool generic = b.spec->name == "/FRAME" || b.spec->name == "/SKEW";
+    auto id = header_id(b, generic ? b.args.size() - 1 : 0, "an id");
     if (!id) return;
     RadiossFrame f;
     f.id = *id;
@@ -234,23 +237,31 @@ void RadiossBuilder::end_frame(const RadiossBlock& b) {
     const std::string_view name = b.spec->name;
     f.moving = name != "/FRAME/FIX" && name != "/SKEW/FIX";
     if (!f.moving) {
-        auto get = [&](std::string_view field, double fallback) {
+        auto get = [&](std::string_view field) {
             const RadiossValue* v = value(field);
-            return v && v->valid ? v->number : fallback;
+            return v && v->valid ? v->number : 0.0;
         };
-        f.origin = {get("Ox", 0), get("Oy", 0), get("Oz", 0)};
-        std::array<double, 3> x{get("X1", 0), get("Y1", 0), get("Z1", 0)}, y{get("X2", 0), get("Y2", 0), get("Z2", 0)};
-        if (x == std::array<double, 3>{0, 0, 0}) x = {1, 0, 0};
-        if (y == std::array<double, 3>{0, 0, 0}) y = {0, 1, 0};
-        f.axes[0] = x, f.axes[1] = y;  // orthonormalised in resolve_frames
+        f.origin = {get("Ox"), get("Oy"), get("Oz")};
+        std::array<double, 3> y{get("Yx"), get("Yy"), get("Yz")}, z{get("Zx"), get("Zy"), get("Zz")};
+        if (f.skew) {
+            // hm_read_skw.F: an axis without x and z (y, resp. x and y) components is the global
+            // one, so a blank /SKEW/FIX is the global system. hm_read_frm.F has no such default.
+            if (y[0] == 0 && y[2] == 0) y[1] = std::signbit(y[1]) ? -1 : 1;
+            if (z[0] == 0 && z[1] == 0) z[2] = std::signbit(z[2]) ? -1 : 1;
+        }
+        f.axes[1] = y, f.axes[2] = z;  // X' = Y' x Z' in resolve_frames
         f.geometry = true;
     } else if (name == "/FRAME/MOV" || name == "/SKEW/MOV") {
         for (int k = 0; k < 3; ++k) {
             const RadiossValue* v = value(fmt::format("node_ID{}", k + 1));
             f.nodes[k] = v && v->valid ? static_cast<long long>(v->number) : 0;
         }
-        const RadiossValue* dir = value("Dir");
-        if (dir && dir->explicit_value && dir->text != "X" && dir->text != "x") f.nodes = {0, 0, 0};  // not resolved
+        // hm_read_frm.F / hm_read_skw.F: the last X, Y or Z letter of the Dir cell; X by default.
+        if (const RadiossValue* dir = value("Dir"))
+            for (char c : dir->text) {
+                const char u = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+                if (u >= 'X' && u <= 'Z') f.dir = u - 'X';
+            }
     }
     facts_.frames.push_back(std::move(f));
 }

@@ -131,12 +131,16 @@ void RadiossBuilder::end_other_property(const RadiossBlock& b) {
 }
 
 void RadiossBuilder::end_material(const RadiossBlock& b) {
-    if (b.args.size() < 2) {
-        report("DK008", diag::Severity::Error, "/MAT needs a law and a material id: /MAT/<law>/<mat_ID>",
+    // /MAT/<law>/<id>; a gas names its kind first: /MAT/GAS/<MASS|MOLE|PREDEF>/<id> (mat_gas.cfg).
+    const std::size_t id_arg = b.spec->name == "/MAT/GAS" ? 2 : 1;
+    if (b.args.size() < id_arg + 1) {
+        report("DK008", diag::Severity::Error,
+               id_arg == 2 ? "/MAT/GAS needs a kind and a material id: /MAT/GAS/<MASS|MOLE|PREDEF>/<mat_ID>"
+                           : "/MAT needs a law and a material id: /MAT/<law>/<mat_ID>",
                b.block->span);
         return;
     }
-    auto id = header_id(b, 1, "a material id");
+    auto id = header_id(b, id_arg, "a material id");
     if (!id) return;
     RadiossMaterial m;
     m.id = *id;
@@ -146,24 +150,14 @@ void RadiossBuilder::end_material(const RadiossBlock& b) {
     m.law_span = b.arg_spans[0];
     StarterValue<double> rho = starter<double>("RHO_I", b);
     m.density = rho.value;
-    auto row = [&](std::size_t r, std::size_t k) {
-        return r < rows_.size() && k < rows_[r].size() && rows_[r][k].valid ? rows_[r][k].number : 0.0;
-    };
-    switch (m.law) {
-        case 1: case 2: case 3: case 4: case 21: case 22: case 23: case 24: case 27: case 32: case 36: case 44:
-        case 49:
-            m.young = row(0, 0), m.poisson = row(0, 1);
-            if (m.law == 3 && rows_.size() >= 5) m.bulk = row(2, 1);  // the long LAW3 form carries C0-C5
-            break;
-        case 6:
-            if (rows_.size() >= 4) m.bulk = row(1, 1);  // Nu Pmin; C0 C1 C2 C3; ...
-            break;
-        default: break;
-    }
+    // Only the laws whose cards sphdeck knows (grammar/radioss/cards_materials.cpp) name these.
+    m.young = starter<double>("E", b).value;
+    m.poisson = starter<double>("nu", b).value;
+    if (const RadiossValue* c1 = value("C1"); c1 && c1->valid) m.bulk = c1->number;  // LAW3, LAW6 before 2018
     Material mat;
     mat.id = std::to_string(*id);
     mat.keyword = m.keyword;
-    mat.span = b.arg_spans[1];
+    mat.span = b.arg_spans[id_arg];
     mat.density = setting_of(rho);
     model_.materials.push_back(std::move(mat));
     facts_.materials.push_back(std::move(m));

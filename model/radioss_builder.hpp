@@ -37,10 +37,8 @@ public:
     Model finish();
 
 private:
-    // Once cards of the open block, by card index (empty when the block had no such line);
-    // rows of its repeated card for /MAT.
+    // Once cards of the open block, by card index (empty when the block had no such line).
     std::vector<std::vector<RadiossValue>> cards_;
-    std::vector<std::vector<RadiossValue>> rows_;
 
     const RadiossValue* value(std::string_view name) const;
     template <typename T>

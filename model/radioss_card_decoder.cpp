@@ -53,9 +53,10 @@ void RadiossCardDecoder::report(const char* code, diag::Severity s, std::string 
 }
 
 void RadiossCardDecoder::decode(const grammar::CardLine& line, const grammar::radioss::CardSpec& card, int version,
-                                bool list_directed, std::vector<RadiossValue>& values, std::string_view newer) {
+                                bool list_directed, std::vector<RadiossValue>& values, std::string_view newer,
+                                bool trailing_checked) {
     if (list_directed) decode_tokens(line, card, values);
-    else decode_fixed(line, card, version, values, newer);
+    else decode_fixed(line, card, version, values, newer, trailing_checked);
 }
 
 const std::vector<grammar::FixedField>& RadiossCardDecoder::layout_of(const grammar::radioss::CardSpec& card,
@@ -73,7 +74,8 @@ const std::vector<grammar::FixedField>& RadiossCardDecoder::layout_of(const gram
 }
 
 void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const grammar::radioss::CardSpec& card,
-                                      int version, std::vector<RadiossValue>& values, std::string_view newer) {
+                                      int version, std::vector<RadiossValue>& values, std::string_view newer,
+                                      bool trailing_checked) {
     const std::vector<grammar::FixedField>& positions = layout_of(card, version);
     const std::uint32_t end = positions.empty() ? 0 : positions.back().start + std::min(positions.back().width, 1u << 20);
     const bool text_card = !card.fields.empty() && card.fields.front().cell == Cell::Line;
@@ -85,7 +87,9 @@ void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const gramm
         report("DK016", diag::Severity::Warning, "tab in a fixed-format card: columns become ambiguous",
                columns(line, tab, tab + 1));
     }
-    if (cut.free_format && cut.extra_values > 0) {
+    if (!trailing_checked) {
+        // the starter reads past the last field silently for this keyword
+    } else if (cut.free_format && cut.extra_values > 0) {
         report("DK006", diag::Severity::Warning,
                fmt::format("{} value(s) beyond the card's {} fields are ignored", cut.extra_values, card.fields.size()),
                cut.beyond);

@@ -36,13 +36,15 @@ public:
 
     // Decodes `line` against `card`. `version` sets the cell widths; `list_directed` reads engine
     // lines (tokens separated by blanks or commas); `newer` names a newer format that reads more
-    // fields, for the message when text follows the last field.
+    // fields, for the message when text follows the last field; `trailing_checked` false reads
+    // such text silently (KeywordSpec::trailing_checked).
     void decode(const grammar::CardLine& line, const grammar::radioss::CardSpec& card, int version,
-                bool list_directed, std::vector<RadiossValue>& values, std::string_view newer = {});
+                bool list_directed, std::vector<RadiossValue>& values, std::string_view newer = {},
+                bool trailing_checked = true);
 
 private:
     void decode_fixed(const grammar::CardLine& line, const grammar::radioss::CardSpec& card, int version,
-                      std::vector<RadiossValue>& values, std::string_view newer);
+                      std::vector<RadiossValue>& values, std::string_view newer, bool trailing_checked);
     void decode_tokens(const grammar::CardLine& line, const grammar::radioss::CardSpec& card,
                        std::vector<RadiossValue>& values);
     void read_value(RadiossValue& v, std::string_view field, bool fixed);

@@ -98,6 +98,7 @@ public:
         // /PARAMETER first: a reference to a later definition is reported, not just unknown.
         decoder_.set_parameters(&parameters_);
         parameters_.collect(deck_, version_, decoder_, out_);
+        mark_engine_sections();
         for (const grammar::Block& block : deck_.blocks) {
             decoder_.set_block(static_cast<std::size_t>(&block - deck_.blocks.data()));
             walk(block);
@@ -115,9 +116,22 @@ public:
     Model finish() { return builder_.finish(); }
 
 private:
+    // One-file decks: the blocks of a main file before its /END/ENGINE are the engine input.
+    void mark_engine_sections() {
+        engine_block_.assign(deck_.blocks.size(), false);
+        for (std::size_t e = 0; e < deck_.blocks.size(); ++e) {
+            if (deck_.blocks[e].keyword != "/END/ENGINE") continue;
+            const grammar::FileId root = deck_.sources.include_chain(deck_.blocks[e].span.file).front();
+            for (std::size_t b = 0; b < e; ++b)
+                if (deck_.sources.include_chain(deck_.blocks[b].span.file).front() == root) engine_block_[b] = true;
+        }
+    }
+
     void walk(const grammar::Block& block) {
-        if (block.keyword == "/END") return;
-        const bool engine = block.span.file < engine_.size() && engine_[block.span.file];
+        if (block.keyword == "/END" || block.keyword == "/END/ENGINE") return;
+        const std::size_t index = static_cast<std::size_t>(&block - deck_.blocks.data());
+        const bool engine =
+            (block.span.file < engine_.size() && engine_[block.span.file]) || engine_block_[index];
         std::size_t prefix = 0;
         const rad::KeywordSpec* spec = rad::find_keyword(block.keyword, &prefix);
         if (!spec) {
@@ -136,6 +150,9 @@ private:
             return;
         }
         if (!spec->decoded) return;
+        // A law-specific table ("/MAT/LAW2") reads its arguments after the family ("/MAT"), so
+        // the builder sees the law name as it does for any other law.
+        if (!spec->family.empty()) prefix = rad::path_segments(spec->family).size();
 
         RadiossBlock b;
         b.block = &block;
@@ -189,7 +206,7 @@ private:
                 report_extra(b, format, *line, static_cast<std::size_t>(end - line), newer);
                 return;
             }
-            decoder_.decode(*line, cards[index], b.version, b.engine, values_, newer);
+            decoder_.decode(*line, cards[index], b.version, b.engine, values_, newer, b.spec->trailing_checked);
             builder_.card(b, index, static_cast<std::uint32_t>(line - deck_.lines.data()), values_);
         }
     }
@@ -218,6 +235,7 @@ private:
     RadiossParameters parameters_;
     std::vector<RadiossValue> values_;
     std::vector<bool> engine_;  // per file: part of the engine deck
+    std::vector<bool> engine_block_;  // per block: before /END/ENGINE in a one-file deck
     std::map<std::string, std::pair<grammar::Span, std::size_t>> unknown_;
 };
 

@@ -104,6 +104,7 @@ struct RadiossFrame {
     std::array<double, 3> origin{};
     std::array<std::array<double, 3>, 3> axes{};  // unit X', Y', Z'
     std::array<long long, 3> nodes{};             // moving: node_ID1-3
+    int dir = 0;                                  // moving: the axis along N1N2 (Dir X 0, Y 1, Z 2)
 };
 
 // A /GRNOD of any kind; members are in Model::node_sets when `resolved`.

@@ -27,14 +27,27 @@ bool normalise(Vec& a) {
     return true;
 }
 
-// X' along the first vector, Z' = X' × Y', Y' = Z' × X' (skews and frames).
-bool orthonormal(RadiossFrame& f) {
-    Vec x = f.axes[0], y = f.axes[1];
-    if (!normalise(x)) return false;
-    Vec z = cross(x, y);
-    if (!normalise(z)) return false;
-    y = cross(z, x);
-    f.axes = {x, y, z};
+// Moving systems: the Dir axis e_k along N1N2, e_k+2 = e_k x N1N3, e_k+1 = e_k+2 x e_k (indices
+// mod 3; hm_read_frm.F and hm_read_skw.F, "calculation of z'" and "of y'" per IDIR).
+bool from_nodes(RadiossFrame& f, const Vec& n1n2, const Vec& n1n3) {
+    const int k = f.dir, k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+    Vec along = n1n2;
+    if (!normalise(along)) return false;
+    Vec third = cross(along, n1n3);
+    if (!normalise(third)) return false;
+    f.axes[k] = along;
+    f.axes[k2] = third;
+    f.axes[k1] = cross(third, along);
+    return true;
+}
+
+// Fixed systems: the deck gives Y' and Z'; X' = Y' x Z', then Y' = Z' x X' (hm_read_frm.F and
+// hm_read_skw.F, "calculation of x'" and "of y'"), each normalised; Z' keeps its direction.
+bool from_y_and_z(RadiossFrame& f) {
+    Vec z = f.axes[2];
+    Vec x = cross(f.axes[1], z);
+    if (!normalise(x) || !normalise(z)) return false;
+    f.axes = {x, cross(z, x), z};
     return true;
 }
 
@@ -76,7 +89,7 @@ void RadiossBuilder::resolve_frames() {
     const IdIndex nodes(model_.nodes.id);
     for (RadiossFrame& f : facts_.frames) {
         if (!f.moving) {
-            f.geometry = orthonormal(f);
+            f.geometry = from_y_and_z(f);
             continue;
         }
         if (f.nodes[0] == 0) continue;
@@ -92,9 +105,9 @@ void RadiossBuilder::resolve_frames() {
         }
         if (!found) continue;
         f.origin = at[0];
-        f.axes[0] = {at[1][0] - at[0][0], at[1][1] - at[0][1], at[1][2] - at[0][2]};
-        f.axes[1] = {at[2][0] - at[0][0], at[2][1] - at[0][1], at[2][2] - at[0][2]};
-        f.geometry = orthonormal(f);
+        const Vec n1n2{at[1][0] - at[0][0], at[1][1] - at[0][1], at[1][2] - at[0][2]};
+        const Vec n1n3{at[2][0] - at[0][0], at[2][1] - at[0][1], at[2][2] - at[0][2]};
+        f.geometry = from_nodes(f, n1n2, n1n3);
     }
 }
 

@@ -271,3 +271,26 @@ TEST_CASE("radioss preview: SPH118 points at the /PROP/SPH h field, or its heade
     CHECK(d->span.line == 8);
     CHECK(d->span.column == 1);
 }
+
+TEST_CASE("radioss preview: symmetry planes of a translated and rotated /FRAME/FIX (Y' and Z' given)") {
+    // frame_rotated.rad: a 2 x 3 x 4 lattice at O + i X' + j Y' + k Z', O = (10, 20, 30),
+    // X' = (0.6, 0.8, 0), Y' = (-0.8, 0.6, 0), Z' = (0, 0, 1); the frame card gives Y' as (-4, 3, 0)
+    // and Z' as (0, 0, 5), and X' = Y' x Z'. Planes: Dir X (i = 0: 12 particles) and Dir Z (k = 0:
+    // 6), 3 on both. By hand: 9 + 12 / 2 + 3 / 3 = 16 with mp 1; read as X' and Y' it would be 15.33.
+    const Loaded l = load(kDecks + "frame_rotated.rad");
+    const auto& frame = *l.result.model.radioss->frame(5);
+    REQUIRE(frame.geometry);
+    CHECK(frame.axes[0][0] == doctest::Approx(0.6));
+    CHECK(frame.axes[0][1] == doctest::Approx(0.8));
+    CHECK(frame.axes[1][0] == doctest::Approx(-0.8));
+    CHECK(frame.axes[1][1] == doctest::Approx(0.6));
+    CHECK(frame.axes[2][2] == doctest::Approx(1.0));
+    const auto& r = *part(l, 1).radioss;
+    CHECK(r.on_planes[0] == 9);
+    CHECK(r.on_planes[1] == 12);
+    CHECK(r.on_planes[2] == 3);
+    CHECK(r.mass_before == doctest::Approx(24.0));
+    CHECK(r.mass_after == doctest::Approx(16.0));
+    CHECK(part(l, 1).mass_total == doctest::Approx(16.0));
+    CHECK(test::count_code(l.result.diagnostics, "RAD008") == 0);
+}

@@ -101,20 +101,35 @@ TEST_CASE("radioss: /END ends the deck, #enddata ends an included file") {
     CHECK(count_code(r.diagnostics, "DK017") == 1);
 }
 
-TEST_CASE("radioss: #include is read in place, with its file in every span") {
+TEST_CASE("radioss: an included file's blocks start at its first header, with its file in every span") {
+    // The starter reads a keyword's cards from its own file (an #include line there is skipped)
+    // and finds an included file's blocks by their headers: the lines of sub/lead.inc before its
+    // first header (a licence text, the QA decks' qadiags.inc) belong to no block, silently.
     test::TempDir dir;
-    dir.write("sub/nodes.inc", "# nodes\n         7                 1.0                 2.0                 3.0\n");
-    const std::string main = dir.write("m_0000.rad", deck("/NODE\n#include sub/nodes.inc\n" + i10("8") + "\n"));
+    dir.write("sub/lead.inc", "Copyright> text\n         7                 1.0                 2.0                 3.0\n");
+    dir.write("sub/nodes.inc", "Copyright> text\n/NODE\n         9                 1.0                 2.0                 3.0\n");
+    const std::string main = dir.write(
+        "m_0000.rad", deck("/NODE\n" + i10("1") + "\n#include sub/lead.inc\n" + i10("8") + "\n#include sub/nodes.inc\n"));
     auto r = lint::check_file(main);
-    REQUIRE(r.model.nodes.id.size() == 2);
-    CHECK(r.model.nodes.id[0] == 7);
-    CHECK(r.model.nodes.z[0] == 3.0);
-    CHECK(r.model.nodes.id[1] == 8);  // the block goes on after the include (textual inclusion)
-    REQUIRE(r.deck.sources.size() == 2);
-    CHECK(r.deck.sources.file(1).parent == 0);
-    const grammar::CardLine& first = r.deck.lines[r.deck.blocks[1].first_line];  // blocks: /BEGIN, /NODE
-    CHECK(first.file == 1);
-    CHECK(first.line == 2);
+    REQUIRE(r.model.nodes.id.size() == 3);
+    CHECK(r.model.nodes.id[0] == 1);
+    CHECK(r.model.nodes.id[1] == 8);  // the block goes on after an include without headers
+    CHECK(r.model.nodes.id[2] == 9);
+    CHECK(r.model.nodes.z[2] == 3.0);
+    CHECK(count_code(r.diagnostics, "DK002") == 0);
+    CHECK(count_code(r.diagnostics, "DK027") == 0);
+    REQUIRE(r.deck.sources.size() == 3);
+    CHECK(r.deck.sources.file(2).parent == 0);
+    const grammar::CardLine& first = r.deck.lines[r.deck.blocks[2].first_line];  // blocks: /BEGIN, /NODE, /NODE
+    CHECK(first.file == 2);
+    CHECK(first.line == 3);
+
+    // After an included file with blocks of its own, the includer's lines before its next
+    // header belong to no block sphdeck can follow: reported, not read into the child's block.
+    const std::string after = dir.write("n_0000.rad", deck("/NODE\n#include sub/nodes.inc\n" + i10("8") + "\n"));
+    auto a = lint::check_file(after);
+    CHECK(a.model.nodes.id.size() == 1);
+    CHECK(count_code(a.diagnostics, "DK027") == 1);
 
     auto missing = grammar::radioss::read_file(dir.write("x_0000.rad", "#RADIOSS STARTER\n#include nothing.inc\n"));
     REQUIRE(count_code(missing.diagnostics, "DK010") == 1);
@@ -297,22 +312,28 @@ TEST_CASE("radioss: /SPHBCS, frames and planes") {
     const std::string frame = "/FRAME/FIX/7\nf\n" + r20("1.0") + r20("0.0") + r20("0.0") + "\n" + r20("0.0") +
                               r20("1.0") + r20("0.0") + "\n" + r20("-1.0") + r20("0.0") + r20("0.0") + "\n";
     const std::string sym = "/SPHBCS/TIED/1\nt\n" + i10("Y") + i10("7") + i10("0") + i10("") + i10("1") + "\n" +
-                            "/SPHBCS/SLIDEX/2\ns\n" + i10("") + "\n";
+                            "/SPHBCS/SLIDEX/2\ns\n" + i10("") + "\n" + "/SPHBCS/SLIDE/3\nx\n" + i10("X") + i10("7") + "\n";
     auto r = check(deck(frame + sym));
     const auto& f = facts(r);
-    REQUIRE(f.symmetries.size() == 2);
+    REQUIRE(f.symmetries.size() == 3);
     CHECK(f.symmetries[0].kind == model::SymmetryKind::Tied);
     CHECK(f.symmetries[0].axis == 1);
     CHECK(f.symmetries[0].ilev.value == 1);
     CHECK(f.symmetries[1].kind == model::SymmetryKind::Slide);  // the first five letters count
     CHECK(f.symmetries[1].dir.value == "X");                     // blank Dir: X
-    REQUIRE(r.model.symmetry_planes.size() == 2);
-    // Frame 7: X' along +y, Y' along -x, so its Y' axis is -x through (1, 0, 0).
+    REQUIRE(r.model.symmetry_planes.size() == 3);
+    // Frame 7 through (1, 0, 0): its lines after the origin are Y' (+y) and Z' (-x), and
+    // X' = Y' x Z' = +z (hm_read_frm.F). Plane 1 (Dir Y) has the normal +y, plane 3 (Dir X) +z.
     const auto& plane = r.model.symmetry_planes[0];
     CHECK(plane.tail[0] == 1.0);
-    CHECK(plane.head[0] == doctest::Approx(0.0));
-    CHECK(plane.head[1] == doctest::Approx(0.0));
+    CHECK(plane.head[0] == doctest::Approx(1.0));
+    CHECK(plane.head[1] == doctest::Approx(1.0));
+    CHECK(plane.head[2] == doctest::Approx(0.0));
     CHECK(r.model.symmetry_planes[1].head[0] == 1.0);
+    const auto& x_plane = r.model.symmetry_planes[2];
+    CHECK(x_plane.head[0] == doctest::Approx(1.0));
+    CHECK(x_plane.head[1] == doctest::Approx(0.0));
+    CHECK(x_plane.head[2] == doctest::Approx(1.0));
 }
 
 TEST_CASE("radioss: /SPHGLO defaults and the first one only") {
@@ -374,7 +395,8 @@ TEST_CASE("radioss: unknown keywords are counted, with a suggestion") {
     }
     CHECK(suggested);
     CHECK(counted);
-    CHECK(grammar::radioss::find_keyword("/MAT/LAW6/3") == grammar::radioss::find_keyword("/MAT"));
+    CHECK(grammar::radioss::find_keyword("/MAT/LAW99/3") == grammar::radioss::find_keyword("/MAT"));
+    CHECK(grammar::radioss::find_keyword("/MAT/LAW6/3")->family == "/MAT");  // a law table of the /MAT family
     CHECK(grammar::radioss::find_keyword("/MATX/1") == nullptr);
 }
 

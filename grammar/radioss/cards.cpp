@@ -67,7 +67,7 @@ std::vector<FixedField> layout(const CardSpec& card, int version) {
     std::uint32_t start = 0;
     for (const FieldSpec& f : card.fields) {
         // A Line cell takes the rest of the line, whatever its length (titles may run past 100).
-        const std::uint32_t width = f.cell == Cell::Line ? 1u << 30 : cell_width(f.cell, version);
+        const std::uint32_t width = f.cell == Cell::Line ? 1u << 30 : f.width ? f.width : cell_width(f.cell, version);
         out.push_back({start, width});
         start += width;
     }

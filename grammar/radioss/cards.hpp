@@ -28,6 +28,9 @@ enum class Cell : std::uint8_t {
 struct FieldSpec {
     std::string_view name = {};
     Cell cell = Cell::Int;
+    // A literal width the CFG format spells out (`%8d          %8d`: ten blanks even in V4);
+    // 0: the cell's width in the deck's version.
+    std::uint32_t width = 0;
 };
 
 enum class Repeat : std::uint8_t {
@@ -54,6 +57,12 @@ struct KeywordSpec {
     bool title = true;                       // a title line follows the header (format 51 and later)
     bool engine = false;                     // an engine keyword: list-directed (free) data lines
     bool decoded = true;                     // false: known, kept as is (structural or not needed)
+    // Text past the last field is reported (DK006) as the starter's reader does (100213/100214);
+    // false where the starter's listing shows it reads such text silently.
+    bool trailing_checked = true;
+    // The keyword family a law-specific table belongs to ("/MAT" for "/MAT/LAW2"): the builder
+    // handles it as the family, and the header's segments after the family are its arguments.
+    std::string_view family = {};
     std::string_view summary = {};
     std::vector<FormatSpec> formats = {};    // newest first
 
@@ -87,7 +96,8 @@ std::vector<std::string_view> path_segments(std::string_view header);
 namespace detail {
 // The tables, one file per family (cards_*.cpp).
 void add_mesh_keywords(std::vector<KeywordSpec>& out);      // /BEGIN, /NODE, /PART, elements, groups, frames
-void add_property_keywords(std::vector<KeywordSpec>& out);  // /PROP/SPH, /PROP/TYPE14, /PROP/TYPE6, /MAT, /EOS
+void add_property_keywords(std::vector<KeywordSpec>& out);  // /PROP/SPH, /PROP/TYPE14, /PROP/TYPE6, /EOS
+void add_material_keywords(std::vector<KeywordSpec>& out);  // /MAT and the laws sphdeck reads
 void add_sph_keywords(std::vector<KeywordSpec>& out);       // /SPHCEL, /SPHGLO, /SPHBCS, /SPH/..., engine /DT
 }  // namespace detail
 

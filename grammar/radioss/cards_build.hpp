@@ -14,6 +14,8 @@ inline FieldSpec T20(std::string_view name) { return {name, Cell::Text20}; }
 inline FieldSpec L(std::string_view name) { return {name, Cell::Line}; }
 inline FieldSpec S() { return {"", Cell::Skip}; }
 inline FieldSpec S20() { return {"", Cell::Skip20}; }
+// An unused run of `width` columns in every version (CFG formats that spell the blanks out).
+inline FieldSpec gap(std::uint32_t width) { return {"", Cell::Skip, width}; }
 
 inline CardSpec once(std::initializer_list<FieldSpec> fields) { return {fields, Repeat::Once}; }
 inline CardSpec repeated(std::initializer_list<FieldSpec> fields) { return {fields, Repeat::Repeated}; }

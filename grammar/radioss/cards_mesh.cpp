@@ -6,32 +6,54 @@ namespace sphdeck::grammar::radioss::detail {
 using namespace build;
 
 void add_mesh_keywords(std::vector<KeywordSpec>& out) {
-    // /BEGIN (radioss-format.md §3). Its own version is read from card 2 before decoding.
+    // /BEGIN (radioss-format.md §3; CFG radioss2021/CARDS/begin.cfg, radioss100/CARDS/begin.cfg):
+    // the two unit lines (input and work units) are read from format 100 on; Irun until 2021.
+    // Its own version is read from card 2 before decoding. The starter reads text after Irun
+    // silently (SUBMODEL/update_v_100 FAIL deck: "100 0 ... 1", no reader warning in its listing).
+    const CardSpec units_input = once({T20("Input_mass"), T20("Input_length"), T20("Input_time")});
+    const CardSpec units_work = once({T20("Work_mass"), T20("Work_length"), T20("Work_time")});
     out.push_back({.name = "/BEGIN",
                    .title = false,
+                   .trailing_checked = false,
                    .summary = "run name, input version Invers and unit systems",
-                   .formats = {{2021,
-                                {once({L("Runname")}), once({I("Invers")}),
-                                 once({T20("Input_mass"), T20("Input_length"), T20("Input_time")}),
-                                 once({T20("Work_mass"), T20("Work_length"), T20("Work_time")})}},
-                               {100, {once({L("Runname")}), once({I("Invers"), I("Irun")})}},
-                               {0, {once({L("Runname")}), once({I("Invers")})}}}});
+                   .formats = {{2021, {once({L("Runname")}), once({I("Invers")}), units_input, units_work}},
+                               {100, {once({L("Runname")}), once({I("Invers"), I("Irun")}), units_input, units_work}},
+                               {0, {once({L("Runname")}), once({I("Invers"), I("Irun")})}}}});
     out.push_back({.name = "/END", .title = false, .decoded = false, .summary = "end of the deck", .formats = {{0, {}}}});
     out.push_back({.name = "/NODE",
                    .title = false,
                    .summary = "nodes: id and coordinates",
                    .formats = {{0, {repeated({I("node_ID"), R("X"), R("Y"), R("Z")})}}}});
+    // CFG radioss2612/PART/part.cfg (formats 51 and 41).
     out.push_back({.name = "/PART",
                    .summary = "part: property, material and subset",
-                   .formats = {{0, {once({I("prop_ID"), I("mat_ID"), I("subset_ID")})}}}});
+                   .formats = {{0, {once({I("prop_ID"), I("mat_ID"), I("subset_ID"), R("Thick")})}}}});
+    // CFG radioss2026/CARDS/analy.cfg: `%10d          %10d%10d` (51-2022), `%8d          %8d%8d` (41).
     out.push_back({.name = "/ANALY",
                    .title = false,
                    .summary = "analysis type: N2D3D 0 = 3D, 1 = axisymmetric, 2 = plane strain",
-                   .formats = {{0, {once({I("N2D3D")})}}}});
+                   .formats = {{2026, {once({I("N2D3D"), I("Itemp"), I("Iparith")})}},
+                               {2023, {once({I("N2D3D"), gap(10), I("Iparith")})}},
+                               {51, {once({I("N2D3D"), gap(10), I("Iparith"), I("Isubcyc")})}},
+                               {0, {once({I("N2D3D"), gap(10), I("Iparith"), I("Isubcyc")})}}}});
+    // CFG radioss2025/CARDS/def_solid.cfg: Iframe in cell 8 from format 51; V4 has none.
     out.push_back({.name = "/DEF_SOLID",
                    .title = false,
                    .summary = "default solid formulation (Isolid, Iframe)",
-                   .formats = {{0, {once({I("Isolid"), I("Ismstr"), S(), S(), S(), S(), S(), I("Iframe")})}}}});
+                   .formats = {{2025,
+                                {once({I("Isolid"), I("Ismstr"), I("Icpre"), S(), I("Itetra4"), I("Itetra10"),
+                                       I("Imas"), I("Iframe"), I("Icontrol")})}},
+                               {2021,
+                                {once({I("Isolid"), I("Ismstr"), I("Icpre"), S(), I("Itetra4"), I("Itetra10"),
+                                       I("Imas"), I("Iframe")})}},
+                               {2019,
+                                {once({I("Isolid"), I("Ismstr"), S(), I("Istrain"), I("Itetra4"), I("Itetra10"),
+                                       I("Imas"), I("Iframe")})}},
+                               {120, {once({I("Isolid"), I("Ismstr"), S(), I("Istrain"), S(), S(), I("Imas"), I("Iframe")})}},
+                               {100, {once({I("Isolid"), I("Ismstr"), S(), I("Istrain"), S(), S(), S(), I("Iframe")})}},
+                               {51, {once({I("Isolid"), I("Ismstr"), S(), S(), S(), S(), S(), I("Iframe")})}},
+                               {44, {once({I("Isolid"), I("Ismstr"), I("Iplas")})}},
+                               {0, {once({I("Isolid"), I("Ismstr")})}}}});
 
     // Solid elements: /BRICK/part_ID etc., one element per line (/TETRA10: two lines).
     out.push_back({.name = "/BRICK",
@@ -70,13 +92,20 @@ void add_mesh_keywords(std::vector<KeywordSpec>& out) {
                    .formats = {{0, {repeated_ints("part_ID", 10)}}}});
     out.push_back({.name = "/GRNOD", .summary = "node group", .formats = {{0, {opaque()}}}});
 
-    // Skews and frames: fixed ones by origin and two axes; moving ones by three nodes.
-    const FormatSpec fixed{0,
-                           {once({R("Ox"), R("Oy"), R("Oz")}), once({R("X1"), R("Y1"), R("Z1")}),
-                            once({R("X2"), R("Y2"), R("Z2")})}};
+    // Skews and frames. Fixed ones: origin, then the local Y' and Z' axes (CFG
+    // radioss110/SYSTEM/frame_fix.cfg and radioss120/SYSTEM/skew_fix.cfg read globalyaxis* and
+    // globalzaxis*; starter hm_read_frm.F / hm_read_skw.F build X' = Y' x Z'). A /SKEW/FIX has
+    // no origin line before format 120. Moving ones: three nodes and the direction of N1N2.
+    const CardSpec origin = once({R("Ox"), R("Oy"), R("Oz")});
+    const CardSpec y_axis = once({R("Yx"), R("Yy"), R("Yz")});
+    const CardSpec z_axis = once({R("Zx"), R("Zy"), R("Zz")});
     const FormatSpec moving{0, {once({I("node_ID1"), I("node_ID2"), I("node_ID3"), T("Dir")})}};
-    out.push_back({.name = "/FRAME/FIX", .summary = "fixed frame: origin, X' and Y' axes", .formats = {fixed}});
-    out.push_back({.name = "/SKEW/FIX", .summary = "fixed skew: origin, X' and Y' axes", .formats = {fixed}});
+    out.push_back({.name = "/FRAME/FIX",
+                   .summary = "fixed frame: origin, Y' and Z' axes (X' = Y' x Z')",
+                   .formats = {{0, {origin, y_axis, z_axis}}}});
+    out.push_back({.name = "/SKEW/FIX",
+                   .summary = "fixed skew: origin (from format 120), Y' and Z' axes (X' = Y' x Z')",
+                   .formats = {{120, {origin, y_axis, z_axis}}, {0, {y_axis, z_axis}}}});
     out.push_back({.name = "/FRAME/MOV", .summary = "moving frame given by three nodes", .formats = {moving}});
     out.push_back({.name = "/SKEW/MOV", .summary = "moving skew given by three nodes", .formats = {moving}});
     out.push_back({.name = "/FRAME", .summary = "frame (moving)", .formats = {{0, {opaque()}}}});

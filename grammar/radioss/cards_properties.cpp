@@ -24,35 +24,66 @@ KeywordSpec prop_sph() {
                         {0, {once({R("mp"), R("qa"), R("qb"), R("alpha_cs")}), once({I("Order"), R("h")})}}}};
 }
 
-// /PROP/TYPE14 (SOLID), §5.8: Isolid in cells 1, Iframe in cell 8 in every format from 51; the
-// SOL2SPH card (Ndir, sphpartID) is the fourth card from format 140 (optional before 2025).
+// /PROP/TYPE14 (SOLID), CFG radioss2025/PROP/prop_p14_solid.cfg. Isolid in cell 1 and Iframe in
+// cell 8 from format 51; the third card changes (dt_min alone, with Istrain and Imod, or the five
+// deletion limits from 2023); the SOL2SPH card (Ndir, sphpartID) is the fourth from format 140.
 KeywordSpec prop_solid() {
-    const auto card1 = once({I("Isolid"), I("Ismstr"), I("Iale"), I("Icpre"), I("Itetra10"), I("Inpts"),
-                             I("Itetra4"), I("Iframe"), R("Dn")});
+    const auto card1_2022 = once({I("Isolid"), I("Ismstr"), I("Iale"), I("Icpre"), I("Itetra10"), I("Inpts"),
+                                  I("Itetra4"), I("Iframe"), R("Dn")});
+    const auto card1_2019 = once({I("Isolid"), I("Ismstr"), S(), I("Icpre"), I("Itetra10"), I("Inpts"),
+                                  I("Itetra4"), I("Iframe"), R("Dn")});
+    const auto card1_100 = once({I("Isolid"), I("Ismstr"), S(), I("Icpre"), S(), I("Inpts"), I("Itetra4"),
+                                 I("Iframe"), R("Dn")});
+    const auto card1_51 = once({I("Isolid"), I("Ismstr"), S(), I("Icpre"), S(), I("Inpts"), S(), I("Iframe"),
+                                R("Dn")});
     const auto card2 = once({R("qa"), R("qb"), R("h"), R("Lambda"), R("Mu")});
-    const auto card3 = once({R("deltaT_min"), R("vdef_min"), R("vdef_max"), R("ASP_max"), R("COL_min")});
+    const auto card2_short = once({R("qa"), R("qb"), R("h")});
+    const auto card3_2023 = once({R("deltaT_min"), R("vdef_min"), R("vdef_max"), R("ASP_max"), R("COL_min")});
+    const auto card3_120 = once({R("deltaT_min"), I("Istrain"), I("Imod")});
+    const auto sol2sph = once({I("Ndir"), I("sphpartID")});
     return {.name = "/PROP/TYPE14",
             .aliases = {"/PROP/SOLID"},
             .summary = "solid property; Ndir and sphpartID turn its elements into SPH particles (SOL2SPH)",
-            .formats = {{2025, {card1, card2, card3, once({I("Ndir"), I("sphpartID"), I("Icontrol")})}},
-                        {140, {card1, card2, card3, once({I("Ndir"), I("sphpartID")})}},
-                        {0, {card1, card2, card3}}}};
+            .formats = {{2025, {card1_2022, card2, card3_2023, once({I("Ndir"), I("sphpartID"), I("Icontrol")})}},
+                        {2023, {card1_2022, card2, card3_2023, sol2sph}},
+                        {2022, {card1_2022, card2, card3_120, sol2sph}},
+                        {2019, {card1_2019, card2, card3_120, sol2sph}},
+                        {140, {card1_100, card2, card3_120, sol2sph}},
+                        {120, {card1_100, card2, card3_120}},
+                        {100, {card1_100, card2_short, once({R("deltaT_min"), I("Istrain")})}},
+                        {51, {card1_51, card2_short, once({R("deltaT_min")})}},
+                        {44, {once({I("Isolid"), I("Ismstr"), I("Iplas"), I("Icpre"), I("Icstr"), R("Dn")}), card2_short}},
+                        {0, {once({I("Isolid"), I("Ismstr")}), card2_short}}}};
 }
 
-// /PROP/TYPE6 (SOL_ORTH), §5.8: as TYPE14 with orthotropy cards; the SOL2SPH card is the sixth.
+// /PROP/TYPE6 (SOL_ORTH), CFG radioss2025/PROP/prop_p6_sol_orth.cfg: as TYPE14 with the
+// orthotropy cards; the SOL2SPH card is the sixth from format 2017.
 KeywordSpec prop_sol_orth() {
-    const auto card1 = once({I("Isolid"), I("Ismstr"), S(), I("Icpre"), I("Itetra10"), I("Inpts"), I("Itetra4"),
-                             I("Iframe"), R("Dn")});
+    const auto card1_2020 = once({I("Isolid"), I("Ismstr"), S(), I("Icpre"), I("Itetra10"), I("Inpts"),
+                                  I("Itetra4"), I("Iframe"), R("Dn")});
+    const auto card1_51 = once({I("Isolid"), I("Ismstr"), S(), I("Icpre"), S(), I("Inpts"), S(), I("Iframe"),
+                                R("Dn")});
     const auto card2 = once({R("qa"), R("qb"), R("h")});
     const auto card3 = once({R("Vx"), R("Vy"), R("Vz"), I("skew_ID"), I("Ip"), I("Iorth")});
     const auto card4 = once({R("Phi"), R("Px"), R("Py"), R("Pz")});
-    const auto card5 = once({R("deltaT_min"), R("vdef_min"), R("vdef_max"), R("ASP_max"), R("COL_min")});
+    const auto card4_phi = once({R("Phi")});
+    const auto card5_2023 = once({R("deltaT_min"), R("vdef_min"), R("vdef_max"), R("ASP_max"), R("COL_min")});
+    const auto card5_140 = once({R("deltaT_min"), I("Istrain"), I("IHKT")});
+    const auto sol2sph = once({I("Ndir"), I("sphpartID")});
+    const auto v4_card3 = once({I("Ip"), I("skew_ID"), R("Phi")});
     return {.name = "/PROP/TYPE6",
             .aliases = {"/PROP/SOL_ORTH"},
             .summary = "orthotropic solid property; Ndir and sphpartID give SOL2SPH particles",
-            .formats = {{2025, {card1, card2, card3, card4, card5, once({I("Ndir"), I("sphpartID"), I("Icontrol")})}},
-                        {140, {card1, card2, card3, card4, card5, once({I("Ndir"), I("sphpartID")})}},
-                        {0, {card1, card2, card3, card4, card5}}}};
+            .formats = {{2025, {card1_2020, card2, card3, card4, card5_2023, once({I("Ndir"), I("sphpartID"), I("Icontrol")})}},
+                        {2023, {card1_2020, card2, card3, card4, card5_2023, sol2sph}},
+                        {2021, {card1_2020, card2, card3, card4, card5_140, sol2sph}},
+                        {2020, {card1_2020, card2, card3, card4_phi, card5_140, sol2sph}},
+                        {2017, {card1_51, card2, card3, card4_phi, card5_140, sol2sph}},
+                        {140, {card1_51, card2, card3, card4_phi, card5_140}},
+                        {120, {card1_51, card2, card3, card4_phi, once({R("deltaT_min"), I("Istrain")})}},
+                        {51, {card1_51, card2, card3, card4_phi, once({R("deltaT_min")})}},
+                        {44, {once({I("Isolid"), I("Ismstr"), I("Iplas"), I("Dn")}), card2, v4_card3}},
+                        {0, {once({I("Isolid"), I("Ismstr")}), card2, v4_card3}}}};
 }
 
 }  // namespace
@@ -63,18 +94,15 @@ void add_property_keywords(std::vector<KeywordSpec>& out) {
     out.push_back(prop_sol_orth());
     out.push_back({.name = "/PROP", .summary = "other property", .formats = {{0, {opaque()}}}});
 
-    // /MAT/<law or name>/mat_ID: the density is the first field of every law; the laws' other
-    // cards are read as rows of reals and picked per law by the decoder (E and nu, or C0-C5).
-    out.push_back({.name = "/MAT",
-                   .summary = "material: law, density and the moduli the sound speed needs",
-                   .formats = {{0, {once({R("RHO_I"), R("RHO_0")}),
-                                    repeated({R("v1"), R("v2"), R("v3"), R("v4"), R("v5")})}}}});
-    // /EOS/POLYNOMIAL/mat_ID (starter hm_read_eos_polynomial.F).
+    add_material_keywords(out);
+    // /EOS/POLYNOMIAL/mat_ID, CFG radioss2026/MAT/mat_EOS.cfg: RHO_0 ends the second card up to
+    // format 2022 (starter hm_read_eos_polynomial.F reads it as Refer_Rho when present), C6 from 2026.
+    const auto c0_c3 = once({R("C0"), R("C1"), R("C2"), R("C3")});
     out.push_back({.name = "/EOS/POLYNOMIAL",
                    .summary = "polynomial equation of state of a material",
-                   .formats = {{0,
-                                {once({R("C0"), R("C1"), R("C2"), R("C3")}), once({R("C4"), R("C5"), R("E0"), R("Psh")}),
-                                 once({R("RHO_0")})}}}});
+                   .formats = {{2026, {c0_c3, once({R("C4"), R("C5"), R("E0"), R("Psh"), R("C6")})}},
+                               {2023, {c0_c3, once({R("C4"), R("C5"), R("E0"), R("Psh")})}},
+                               {0, {c0_c3, once({R("C4"), R("C5"), R("E0"), R("Psh"), R("RHO_0")})}}}});
     out.push_back({.name = "/EOS", .decoded = false, .summary = "equation of state", .formats = {{0, {opaque()}}}});
     out.push_back({.name = "/FAIL", .decoded = false, .summary = "failure model", .formats = {{0, {opaque()}}}});
 }

@@ -19,12 +19,10 @@ void add_sph_keywords(std::vector<KeywordSpec>& out) {
     out.push_back({.name = "/SPHBCS",
                    .summary = "SPH symmetry plane: /SPHBCS/SLIDE|TIED/id, normal axis of a frame",
                    .formats = {{0, {once({T("Dir"), I("frame_ID"), I("grnod_ID"), S(), I("Ilev")})}}}});
+    // CFG radioss140/LOADS/sph_inout.cfg: `%10d%10d%10d%20lg`, then cards per Itype (not checked).
     out.push_back({.name = "/SPH/INOUT",
                    .summary = "SPH inlet, outlet or non-reflecting frontier",
-                   .formats = {{0,
-                                {once({I("Itype"), I("part_ID"), I("surf_ID"), R("Dist"), I("node_ID1"), I("node_ID2"),
-                                       I("node_ID3"), R("Fcut")}),
-                                 opaque()}}}});
+                   .formats = {{0, {once({I("Itype"), I("part_ID"), I("surf_ID"), R("Dist")}), opaque()}}}});
     out.push_back({.name = "/SPH/RESERVE",
                    .title = false,
                    .summary = "reserve particles of a part (for inlets)",

@@ -53,7 +53,7 @@ bool DeckReader::skipped(const char* begin, const char* end) {
 
 void DeckReader::on_empty(const char* begin) {
     ++current().line;
-    if (ended_ || current().done || !block_) return;
+    if (ended_ || current().done || !block_ || in_preamble()) return;
     // A blank line inside a block is a card (blank cards take every default); trailing blank
     // lines of a block are dropped when it closes.
     OpenFile& f = current();
@@ -75,6 +75,7 @@ void DeckReader::on_header(const char* begin, const char* end) {
     ++f.line;
     if (skipped(begin, end)) return;
     close_block();
+    f.headed = true;
     const auto indent = static_cast<std::size_t>(header_path - begin);
     std::string_view path = trim(strip_cr(header_path, end));
 
@@ -104,6 +105,9 @@ void DeckReader::on_data(const char* begin, const char* end) {
     ++f.line;
     if (skipped(begin, end)) return;
     std::string_view text = strip_cr(begin, end);
+    // The preamble of an included file (a licence header, say) is read by no keyword, and the
+    // starter says nothing about it.
+    if (in_preamble()) return;
     if (!block_) {
         if (!f.reported_stray && !blank(text)) {
             f.reported_stray = true;
@@ -189,7 +193,12 @@ void DeckReader::on_include(const char* begin, const char* end, std::string_view
         report("DK010", diag::Severity::Error, "include file '" + file_name + "' cannot be read: " + e.what(), where);
         return;
     }
+    // The open block goes on after the #include unless the child opened blocks of its own: its
+    // last block ends with the child, and this file's lines after the #include, before the next
+    // header, are then reported as outside any block (DK027; sphdeck keeps a block's lines together).
+    const std::size_t blocks = deck_.blocks.size();
     read(deck_.sources.add(std::move(child)));
+    if (deck_.blocks.size() != blocks) close_block();
 }
 
 }  // namespace sphdeck::grammar::radioss

@@ -37,9 +37,12 @@ private:
         bool done = false;  // after #enddata
         bool reported_after = false;
         bool reported_stray = false;
+        bool headed = false;  // a header line was read in this file
     };
 
     OpenFile& current() { return stack_.back(); }
+    // Lines of an included file before its first header: no keyword reads them.
+    bool in_preamble() const { return stack_.size() > 1 && !stack_.back().headed; }
     bool skipped(const char* begin, const char* end);
     void close_block();
     void report(const char* code, diag::Severity severity, std::string message, Span span);
@@ -50,7 +53,12 @@ private:
     std::filesystem::path main_directory_;
     std::deque<OpenFile> stack_;
     std::vector<std::filesystem::path> canonical_;  // per FileId, for cycle detection
-    std::optional<std::size_t> block_;  // the open block: includes are textual, a block may span files
+    // The open block. A block's cards come from its own file: the starter skips an #include
+    // line while it reads one keyword, and finds the included file's blocks by their headers
+    // (reader/source/cfgio/MODEL_IO/meci_read_model_base.cpp: includes are not followed in
+    // READ_STATUS_SINGLE_KEYWORD), so an included file's lines before its first header belong
+    // to no block (QA LOI13: its /GRNOD/NODE keeps 45 nodes though qadiags.inc follows it).
+    std::optional<std::size_t> block_;
     bool ended_ = false;                // after /END: the rest of the deck is ignored
 };
 

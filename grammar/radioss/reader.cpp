@@ -82,10 +82,16 @@ void check_first_line(RawDeck& deck, FileId main) {
 
 void read_one(RawDeck& deck, SourceFile file, const fs::path& directory, const ReaderOptions& options) {
     const bool engine = is_engine_file_name(file.display_name);
+    const std::size_t first_block = deck.blocks.size();
     FileId id = deck.sources.add(std::move(file));
     DeckReader reader(deck, options, directory);
     reader.read(id);
-    if (!engine) check_first_line(deck, id);
+    // A one-file deck puts the engine input first, ends it with /END/ENGINE and follows with the
+    // starter input (QA onefile_rad, accepted by the starter); it has no #RADIOSS STARTER line.
+    bool one_file = false;
+    for (std::size_t b = first_block; b < deck.blocks.size(); ++b)
+        one_file = one_file || deck.blocks[b].keyword == "/END/ENGINE";
+    if (!engine && !one_file) check_first_line(deck, id);
 }
 
 // The engine deck next to a starter, read as a second main file (it has no include chain).

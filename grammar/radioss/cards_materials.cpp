@@ -1,0 +1,71 @@
+// Materials: /MAT/<law>/mat_ID. sphdeck reads what the density, the mass and the sound speed
+// need, each card where the starter's CFG files put it (hm_cfg_files/config/CFG/radiossNNNN/MAT/):
+// the density card of every law, E and nu of the elastic-plastic laws, C0-C3 of the older LAW3
+// and LAW6 forms. The other cards of a law are kept as text, not checked: sphdeck does not know
+// their layout and says nothing about their fields.
+#include "grammar/radioss/cards_build.hpp"
+
+namespace sphdeck::grammar::radioss::detail {
+
+using namespace build;
+
+namespace {
+
+// A line sphdeck keeps without reading its fields.
+CardSpec skipped_line() { return once({L("")}); }
+
+// E and nu, then the law's own fields (Iflag, Eps_p_max...), kept as text and not checked.
+CardSpec young_poisson() { return once({R("E"), R("nu"), L("")}); }
+
+// Card 1 of nearly every law: `%20lg%20lg` RHO_I RHO_0 (`%16lg` in V4), e.g. elast_1.cfg.
+CardSpec density() { return once({R("RHO_I"), R("RHO_0")}); }
+
+KeywordSpec law(std::string_view name, std::vector<std::string_view> aliases, std::string_view summary,
+                std::vector<FormatSpec> formats) {
+    return {.name = name, .aliases = std::move(aliases), .family = "/MAT", .summary = summary,
+            .formats = std::move(formats)};
+}
+
+}  // namespace
+
+void add_material_keywords(std::vector<KeywordSpec>& out) {
+    // Any other law: the density card, then text.
+    out.push_back({.name = "/MAT",
+                   .summary = "material: law and density (the law's other cards are not checked)",
+                   .formats = {{0, {density(), opaque()}}}});
+
+    // Card 2 `%20lg%20lg` E nu (`%16lg%16lg` in V4) in every format of these laws: elast_1.cfg,
+    // matl2_plas_johns.cfg, matl2_plas_zeril.cfg, matl4_hyd_jcook.cfg, matl21_dprag.cfg,
+    // matl22_dama.cfg, matl23_plas_dama.cfg, matl24_conc.cfg, matl27_plas_brit.cfg,
+    // matl32_hill.cfg, matl36_plas_tab.cfg, matl44_cowper.cfg, matl49_steinb.cfg (E0).
+    const FormatSpec elastic{0, {density(), young_poisson(), opaque()}};
+    const std::vector<std::vector<std::string_view>> elastic_laws = {
+        {"/MAT/LAW1", "/MAT/LAW01", "/MAT/ELAST"},
+        {"/MAT/LAW2", "/MAT/LAW02", "/MAT/PLAS_JOHNS", "/MAT/PLAS_ZERIL"},
+        {"/MAT/LAW4", "/MAT/LAW04", "/MAT/HYD_JCOOK"}, {"/MAT/LAW21", "/MAT/DPRAG"},
+        {"/MAT/LAW22", "/MAT/DAMA"},     {"/MAT/LAW23", "/MAT/PLAS_DAM"},
+        {"/MAT/LAW24", "/MAT/CONC"},     {"/MAT/LAW27", "/MAT/PLAS_BRIT"},
+        {"/MAT/LAW32", "/MAT/HILL"},     {"/MAT/LAW36", "/MAT/PLAS_TAB"},
+        {"/MAT/LAW44", "/MAT/COWPER"},   {"/MAT/LAW49", "/MAT/STEINB"}};
+    for (const auto& names : elastic_laws)
+        out.push_back(law(names[0], {names.begin() + 1, names.end()}, "elastic-plastic material: density, E, nu",
+                          {elastic}));
+
+    // LAW3 (matl3_hydpla.cfg): E nu, the yield card, then C0-C3 up to format 2017; from 2018 the
+    // fourth card is Pmin and the coefficients moved to /EOS.
+    out.push_back(law("/MAT/LAW3", {"/MAT/LAW03", "/MAT/HYDPLA"}, "hydrodynamic elastic-plastic material",
+                      {{2018, {density(), young_poisson(), opaque()}},
+                       {0, {density(), young_poisson(), skipped_line(), once({R("C0"), R("C1"), R("C2"), R("C3")}),
+                            opaque()}}}));
+    // LAW6 (mat_law6.cfg): the viscosity card, then C0-C3 up to format 2017 (2018: /EOS).
+    out.push_back(law("/MAT/LAW6", {"/MAT/LAW06", "/MAT/HYD_VISC", "/MAT/HYDRO", "/MAT/K-EPS"}, "hydrodynamic viscous fluid",
+                      {{2018, {density(), opaque()}},
+                       {0, {density(), skipped_line(), once({R("C0"), R("C1"), R("C2"), R("C3")}), opaque()}}}));
+
+    // Laws whose first card is no density: /MAT/GAS/<MASS|MOLE|PREDEF>/id (mat_gas.cfg: a gas
+    // name or a molar mass) and LAW51 (mat_law51.cfg: Iflag and material ids from format 120).
+    out.push_back(law("/MAT/GAS", {}, "gas of a monitored volume (not checked)", {{0, {opaque()}}}));
+    out.push_back(law("/MAT/LAW51", {"/MAT/MULTIMAT"}, "multi-material ALE law (not checked)", {{0, {opaque()}}}));
+}
+
+}  // namespace sphdeck::grammar::radioss::detail
