@@ -1,24 +1,11 @@
 #include "grammar/read_deck.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <stdexcept>
 
 #include "grammar/radioss/reader.hpp"
+#include "grammar/text_file.hpp"
 
 namespace sphdeck::grammar {
-namespace {
-// The first bytes of a file: enough for detect_format, without reading a big deck twice.
-std::string read_prefix(const std::string& path, std::size_t bytes) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot open '" + path + "': " + std::strerror(errno));
-    std::string text(bytes, '\0');
-    in.read(text.data(), static_cast<std::streamsize>(bytes));
-    text.resize(static_cast<std::size_t>(in.gcount()));
-    return text;
-}
-}  // namespace
 
 std::string_view to_string(DeckFormat f) { return f == DeckFormat::Radioss ? "radioss" : "ls-dyna"; }
 
@@ -47,10 +34,17 @@ DeckFormat format_of(const RawDeck& deck) {
 }
 
 RawDeck read_deck(const std::string& path, const dyna::ReaderOptions& options, std::optional<DeckFormat> format) {
-    if (!format) {
-        format = detect_format(read_prefix(path, 64 * 1024), path);
-    }
-    return *format == DeckFormat::Radioss ? radioss::read_file(path, options) : dyna::read_file(path, options);
+    // The first bytes tell the format and whether this is text at all: a binary file is refused
+    // before the line grammar walks through gigabytes of it.
+    const std::string prefix = read_text_prefix(path, 64 * 1024);
+    if (auto why = binary_or_empty(prefix)) throw std::runtime_error("'" + path + "' is not a keyword deck: " + *why);
+    if (!format) format = detect_format(prefix, path);
+    RawDeck deck = *format == DeckFormat::Radioss ? radioss::read_file(path, options) : dyna::read_file(path, options);
+    if (deck.blocks.empty())
+        throw std::runtime_error("'" + path + "' is not a keyword deck: no " +
+                                 (*format == DeckFormat::Radioss ? "header line (/BEGIN, /NODE...)" : "keyword line (*NODE, *PART...)") +
+                                 " in it");
+    return deck;
 }
 
 RawDeck read_deck_buffer(std::string text, const std::string& display_name, const std::string& base_directory,
