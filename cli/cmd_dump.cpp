@@ -19,8 +19,17 @@ int run_dump(const DumpArgs& args) {
     lint::CheckOptions options;
     options.reader.include_paths = args.include_paths;
     lint::CheckResult r = lint::check_file(args.deck, options);
+    if (grammar::format_of(r.deck) == grammar::DeckFormat::Radioss) {
+        // The dump lists keywords through the LS-DYNA card schemas; Radioss cards have none yet.
+        fmt::print(stderr,
+                   "sphdeck: error: '{}' is an OpenRadioss deck; dump reads LS-DYNA decks only (for a Radioss "
+                   "deck's parts and particles: sphdeck smooth --format json)\n",
+                   args.deck);
+        return exit_usage;
+    }
     nlohmann::ordered_json out = model::to_json(r.model, r.deck, {args.particles});
-    fmt::print("{}\n", out.dump(2));
+    // Decks carry Latin-1 comments and titles: bytes that are not UTF-8 become U+FFFD, as in check.
+    fmt::print("{}\n", out.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
     return exit_clean;
 }
 
@@ -28,7 +37,7 @@ int run_dump(const DumpArgs& args) {
 
 std::function<int()> setup_dump(CLI::App& app) {
     auto args = std::make_shared<DumpArgs>();
-    app.add_option("deck", args->deck, "LS-DYNA keyword deck")->required();
+    app.add_option("deck", args->deck, "LS-DYNA keyword deck (.k, .key, .dyn)")->required();
     app.add_option("--format", args->format, "output format")->check(CLI::IsMember({"json"}))->capture_default_str();
     app.add_flag("--particles", args->particles, "list every particle (id, part, mass), not only counts");
     app.add_option("-I,--include-path", args->include_paths, "extra folder searched for *INCLUDE files");
