@@ -120,3 +120,15 @@ TEST_CASE("bad input: a good deck is still read by every subcommand") {
     CHECK(test::run_sphdeck(dir, "check good.k").exit_code == 0);
     CHECK(test::run_sphdeck(dir, "dump good.k").exit_code == 0);
 }
+
+TEST_CASE("bad input: when check reads no deck, its error is the last line, not a summary of nothing") {
+    test::TempDir dir;
+    dir.write("empty.k", "");
+    dir.write("good.k", kGoodDeck);
+    test::Run alone = test::run_sphdeck(dir, "check --format json empty.k");
+    CHECK(alone.exit_code == 2);
+    CHECK(alone.err == "sphdeck: error: 'empty.k' is not a keyword deck: the file is empty\n");
+    test::Run with_good = test::run_sphdeck(dir, "check --format json empty.k good.k");
+    CHECK(with_good.exit_code == 2);
+    CHECK(with_good.err.find("checked 1 file(s)") != std::string::npos);  // the good deck was read
+}
