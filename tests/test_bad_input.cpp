@@ -16,7 +16,7 @@ namespace {
 const std::string kGoodDeck = "*KEYWORD\n*CONTROL_TERMINATION\n$#  endtim\n       1.0\n*END\n";
 
 // The subcommands that read a deck, each with the arguments it needs besides the deck.
-const std::vector<std::string> kReaders = {"check", "dump", "smooth", "run --quiet --end-time 0 --out out",
+const std::vector<std::string> kReaders = {"check", "dump", "smooth", "run --quiet --out out",
                                            "sol2sph"};
 
 void require_refused(const test::TempDir& dir, const std::string& deck, const std::string& expected) {
