@@ -1,6 +1,7 @@
 #include "model/model_json.hpp"
 
 #include <map>
+#include <optional>
 
 #include "model/id_index.hpp"
 
@@ -92,11 +93,47 @@ json record_json(const KeywordRecord& r, const grammar::RawDeck& deck) {
     return out;
 }
 
+// A block written without a single card line (*CONTROL_SPH followed by the next keyword) has no
+// record, yet it has settings: every one a default. Blocks the reader acts on (*INCLUDE...),
+// free text and the particle arrays stay out, as for written blocks.
+std::optional<KeywordRecord> unwritten_record(const grammar::Block& b) {
+    if (b.line_count != 0) return std::nullopt;
+    auto match = keywords::find_keyword(b.keyword);
+    if (!match || !match->unknown_options.empty() || match->schema->free_text) return std::nullopt;
+    const std::string_view name = match->schema->name;
+    if (name == "*NODE" || name == "*ELEMENT_SPH" || name == "*END" || name.starts_with("*INCLUDE") ||
+        name.starts_with("*PARAMETER"))
+        return std::nullopt;
+    bool has_fields = false;
+    for (const keywords::CardSpec* card : keywords::cards_for(*match))
+        for (const keywords::FieldSpec& f : card->fields)
+            has_fields = has_fields || (card->repeat != keywords::CardRepeat::Repeated &&
+                                        f.type != keywords::FieldType::Unused);
+    if (!has_fields) return std::nullopt;  // *KEYWORD, *END: nothing to show
+    KeywordRecord r;
+    r.schema = match->schema;
+    r.keyword = b.keyword;
+    for (const auto* option : match->options) r.options.push_back(option->suffix);
+    r.span = b.span;
+    return r;
+}
+
 }  // namespace
 
 nlohmann::ordered_json to_json(const Model& model, const grammar::RawDeck& deck, const DumpOptions& options) {
+    // Records follow the blocks in deck order; blocks without card lines slot in between.
     json keywords = json::array();
-    for (const auto& r : model.records) keywords.push_back(record_json(r, deck));
+    std::size_t next = 0;
+    for (const grammar::Block& b : deck.blocks) {
+        const KeywordRecord* r = next < model.records.size() ? &model.records[next] : nullptr;
+        if (r && r->span.file == b.span.file && r->span.line == b.span.line) {
+            keywords.push_back(record_json(*r, deck));
+            ++next;
+        } else if (auto unwritten = unwritten_record(b)) {
+            keywords.push_back(record_json(*unwritten, deck));
+        }
+    }
+    for (; next < model.records.size(); ++next) keywords.push_back(record_json(model.records[next], deck));
 
     std::map<std::string, std::size_t> per_part;
     for (long long part : model.particles.part) ++per_part[std::to_string(part)];

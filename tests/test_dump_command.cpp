@@ -105,3 +105,19 @@ TEST_CASE("dump: an OpenRadioss deck is refused plainly") {
     CHECK(r.out.empty());
     CHECK(r.err.find("'m_0000.rad' is an OpenRadioss deck; dump reads LS-DYNA decks only") != std::string::npos);
 }
+
+TEST_CASE("dump: a keyword written without card lines shows its defaults, in deck order") {
+    test::TempDir dir;
+    dir.write("bare.k", "*KEYWORD\n*CONTROL_TERMINATION\n       1.0\n*CONTROL_SPH\n*DEFINE_CURVE\n         7\n*END\n");
+    json doc = dump(dir, "bare.k");
+    REQUIRE(doc["keywords"].size() == 3);
+    CHECK(doc["keywords"][0]["name"] == "*CONTROL_TERMINATION");
+    CHECK(doc["keywords"][2]["name"] == "*DEFINE_CURVE");
+    const json& sph = doc["keywords"][1];
+    CHECK(sph["name"] == "*CONTROL_SPH");
+    CHECK(sph["line"] == 4);
+    CHECK(sph["fields"]["NCBS"]["value"] == 1);
+    CHECK(sph["fields"]["NCBS"]["explicit"] == false);
+    CHECK(sph["fields"]["NCBS"]["line"].is_null());
+    CHECK(sph["fields"]["QL"]["value"] == doctest::Approx(0.01));
+}
