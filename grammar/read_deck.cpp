@@ -7,6 +7,17 @@
 
 namespace sphdeck::grammar {
 
+namespace {
+// A Radioss main file may hold nothing but #include lines: when those fail, their DK010 says
+// why the deck is empty, and the deck is not "not a deck".
+bool names_includes(const RawDeck& deck) {
+    if (deck.sources.size() > 1) return true;
+    for (const diag::Diagnostic& d : deck.diagnostics)
+        if (d.code == "DK010" || d.code == "DK011" || d.code == "DK025") return true;
+    return false;
+}
+}  // namespace
+
 std::string_view to_string(DeckFormat f) { return f == DeckFormat::Radioss ? "radioss" : "ls-dyna"; }
 
 DeckFormat detect_format(std::string_view text, std::string_view file_name) {
@@ -40,7 +51,7 @@ RawDeck read_deck(const std::string& path, const dyna::ReaderOptions& options, s
     if (auto why = binary_or_empty(prefix)) throw std::runtime_error("'" + path + "' is not a keyword deck: " + *why);
     if (!format) format = detect_format(prefix, path);
     RawDeck deck = *format == DeckFormat::Radioss ? radioss::read_file(path, options) : dyna::read_file(path, options);
-    if (deck.blocks.empty())
+    if (deck.blocks.empty() && !names_includes(deck))
         throw std::runtime_error("'" + path + "' is not a keyword deck: no " +
                                  (*format == DeckFormat::Radioss ? "header line (/BEGIN, /NODE...)" : "keyword line (*NODE, *PART...)") +
                                  " in it");

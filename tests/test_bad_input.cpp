@@ -132,3 +132,12 @@ TEST_CASE("bad input: when check reads no deck, its error is the last line, not 
     CHECK(with_good.exit_code == 2);
     CHECK(with_good.err.find("checked 1 file(s)") != std::string::npos);  // the good deck was read
 }
+
+TEST_CASE("bad input: a Radioss deck of #include lines only is a deck; its missing include is DK010") {
+    test::TempDir dir;
+    dir.write("m_0000.rad", "#RADIOSS STARTER\n#include model.inc\n");
+    test::Run r = test::run_sphdeck(dir, "check --format concise m_0000.rad");
+    CHECK(r.exit_code == 1);
+    CHECK(r.out.find("include file 'model.inc' not found [DK010]") != std::string::npos);
+    CHECK(r.err.find("not a keyword deck") == std::string::npos);
+}
