@@ -6,7 +6,6 @@
 #include "grammar/text_file.hpp"
 
 namespace sphdeck::grammar {
-
 namespace {
 // A Radioss main file may hold nothing but #include lines: when those fail, their DK010 says
 // why the deck is empty, and the deck is not "not a deck".
@@ -51,10 +50,11 @@ RawDeck read_deck(const std::string& path, const dyna::ReaderOptions& options, s
     if (auto why = binary_or_empty(prefix)) throw std::runtime_error("'" + path + "' is not a keyword deck: " + *why);
     if (!format) format = detect_format(prefix, path);
     RawDeck deck = *format == DeckFormat::Radioss ? radioss::read_file(path, options) : dyna::read_file(path, options);
-    if (deck.blocks.empty() && !names_includes(deck))
-        throw std::runtime_error("'" + path + "' is not a keyword deck: no " +
-                                 (*format == DeckFormat::Radioss ? "header line (/BEGIN, /NODE...)" : "keyword line (*NODE, *PART...)") +
-                                 " in it");
+    if (deck.blocks.empty() && !names_includes(deck)) {
+        const char* what =
+            *format == DeckFormat::Radioss ? "header line (/BEGIN, /NODE...)" : "keyword line (*NODE, *PART...)";
+        throw std::runtime_error("'" + path + "' is not a keyword deck: no " + what + " in it");
+    }
     return deck;
 }
 

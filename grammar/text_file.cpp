@@ -11,7 +11,8 @@ namespace {
 // std::ifstream opens a directory on Linux and then reports a size of 2^63 - 1: ask first.
 std::ifstream open_regular(const std::string& path) {
     std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw std::runtime_error("'" + path + "' is a directory, not a deck file");
+    if (std::filesystem::is_directory(path, ec))
+        throw std::runtime_error("'" + path + "' is a directory, not a deck file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw std::runtime_error("cannot open '" + path + "': " + std::strerror(errno));
     return in;

@@ -62,7 +62,8 @@ TEST_CASE("bad input: text without a single keyword line is not a keyword deck")
     require_refused(dir, "notes.k", "'notes.k' is not a keyword deck: no keyword line (*NODE, *PART...) in it");
     test::Run r = test::run_sphdeck(dir, "check blank.rad");
     CHECK(r.exit_code == 2);
-    CHECK(r.err.find("'blank.rad' is not a keyword deck: no header line (/BEGIN, /NODE...) in it") != std::string::npos);
+    CHECK(r.err.find("'blank.rad' is not a keyword deck: no header line (/BEGIN, /NODE...) in it") !=
+          std::string::npos);
 }
 
 TEST_CASE("bad input: a directory given as the deck") {
