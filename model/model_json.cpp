@@ -120,6 +120,25 @@ std::optional<KeywordRecord> unwritten_record(const grammar::Block& b) {
 
 }  // namespace
 
+nlohmann::ordered_json particles_json(const Model& model, bool list_each) {
+    std::map<std::string, std::size_t> per_part;
+    for (long long part : model.particles.part) ++per_part[std::to_string(part)];
+    json particles = {{"count", model.particles.size()}, {"parts", per_part}};
+    if (list_each) {
+        json list = json::array();
+        const Particles& p = model.particles;
+        const IdIndex nodes(model.nodes.id);
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            json item = {{"id", p.node[i]}, {"part", p.part[i]}, {"mass", p.mass[i]}, {"volume", p.volume[i] != 0}};
+            if (auto n = nodes.find(p.node[i]))
+                item["position"] = {model.nodes.x[*n], model.nodes.y[*n], model.nodes.z[*n]};
+            list.push_back(std::move(item));
+        }
+        particles["list"] = std::move(list);
+    }
+    return particles;
+}
+
 nlohmann::ordered_json to_json(const Model& model, const grammar::RawDeck& deck, const DumpOptions& options) {
     // Records follow the blocks in deck order; blocks without card lines slot in between.
     json keywords = json::array();
@@ -135,21 +154,7 @@ nlohmann::ordered_json to_json(const Model& model, const grammar::RawDeck& deck,
     }
     for (; next < model.records.size(); ++next) keywords.push_back(record_json(model.records[next], deck));
 
-    std::map<std::string, std::size_t> per_part;
-    for (long long part : model.particles.part) ++per_part[std::to_string(part)];
-    json particles = {{"count", model.particles.size()}, {"parts", per_part}};
-    if (options.particles) {
-        json list = json::array();
-        const Particles& p = model.particles;
-        const IdIndex nodes(model.nodes.id);
-        for (std::size_t i = 0; i < p.size(); ++i) {
-            json item = {{"id", p.node[i]}, {"part", p.part[i]}, {"mass", p.mass[i]}, {"volume", p.volume[i] != 0}};
-            if (auto n = nodes.find(p.node[i]))
-                item["position"] = {model.nodes.x[*n], model.nodes.y[*n], model.nodes.z[*n]};
-            list.push_back(std::move(item));
-        }
-        particles["list"] = std::move(list);
-    }
+    json particles = particles_json(model, options.particles);
     std::map<std::string, std::size_t> unknown;
     for (const auto& b : deck.blocks)
         if (!keywords::find_keyword(b.keyword) || !keywords::find_keyword(b.keyword)->unknown_options.empty())

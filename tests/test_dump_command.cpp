@@ -1,5 +1,5 @@
 // `sphdeck dump --format json`: every field of every card a keyword defines, with the defaults
-// of the cards the deck left out; valid JSON on Latin-1 text; a plain refusal of Radioss decks.
+// of the cards the deck left out; valid JSON on Latin-1 text; OpenRadioss decks block by block.
 #include <doctest/doctest.h>
 
 #include <nlohmann/json.hpp>
@@ -95,15 +95,34 @@ TEST_CASE("dump: Latin-1 text gives valid JSON") {
     CHECK(title == "d\xEF\xBF\xBD" "cembre: barrage \xEF\xBF\xBD 2 dimensions");
 }
 
-TEST_CASE("dump: an OpenRadioss deck is refused plainly") {
+TEST_CASE("dump: an OpenRadioss deck gives its blocks with the fields as read") {
     test::TempDir dir;
-    dir.write("m_0000.rad", "#RADIOSS STARTER\n/BEGIN\nrun\n      2026         0\n"
-                            "                  kg                  mm                  ms\n"
-                            "                  kg                  mm                  ms\n/END\n");
+    dir.write("m_0000.rad",
+              "#RADIOSS STARTER\n/BEGIN\nrun\n      2026         0\n"
+              "                  kg                  mm                  ms\n"
+              "                  kg                  mm                  ms\n"
+              "/PART/2\nwater\n         2         3\n"
+              "/NODE\n      1001                 1.0                 1.0                 1.0\n"
+              "      1002                 2.0                 1.0                 1.0\n"
+              "/UNKNOWN_THING/4\n1 2 3\n/END\n");
     test::Run r = test::run_sphdeck(dir, "dump m_0000.rad");
-    CHECK(r.exit_code == 2);
-    CHECK(r.out.empty());
-    CHECK(r.err.find("'m_0000.rad' is an OpenRadioss deck; dump reads LS-DYNA decks only") != std::string::npos);
+    REQUIRE(r.exit_code == 0);
+    const json doc = json::parse(r.out);
+    CHECK(doc["format"] == "radioss");
+    CHECK(doc["version"] == 2026);
+    REQUIRE(doc["keywords"].size() == 3);
+    const json& part = doc["keywords"][1];
+    CHECK(part["name"] == "/PART/2");
+    CHECK(part["keyword"] == "/PART");
+    CHECK(part["title"] == "water");
+    CHECK(part["line"] == 7);
+    CHECK(part["fields"]["prop_ID"]["value"] == 2);
+    CHECK(part["fields"]["prop_ID"]["explicit"] == true);
+    CHECK(part["fields"]["subset_ID"]["value"].is_null());
+    CHECK(part["fields"]["subset_ID"]["explicit"] == false);
+    CHECK(doc["keywords"][2]["records"] == 2);  // /NODE lines are counted, not listed
+    CHECK(doc["nodes"]["count"] == 2);
+    CHECK(doc["unknown_keywords"]["/UNKNOWN_THING"] == 1);
 }
 
 TEST_CASE("dump: a keyword written without card lines shows its defaults, in deck order") {
