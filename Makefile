@@ -17,8 +17,9 @@ $(BUILD)/CMakeCache.txt:
 build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
 
+# check on a deck with typical mistakes (its findings are the point), then the smoothing-length preview.
 demo: build
-	./$(BUILD)/sphdeck check decks/demo/dam_break_2d.k
+	bash decks/demo/run_demo.sh $(BUILD)/sphdeck
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure

@@ -149,11 +149,14 @@ int run_check(const CheckArgs& args) {
     totals.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (report) fmt::print("{}", report->finish(totals));
     std::fflush(stdout);
-    fmt::print(args.format == "full" ? stdout : stderr,
-               "checked {} file(s): {} keywords, {} cards, {} particles; {} error(s), {} warning(s), {} info(s) "
-               "in {:.2f} s\n",
-               totals.files, totals.keywords, totals.cards, totals.particles, totals.counts.errors,
-               totals.counts.warnings, totals.counts.infos, totals.seconds);
+    // When no deck could be read, its error message is the last word, not a summary of nothing.
+    const bool nothing_read = !totals.complete && totals.files == 0;
+    if (!nothing_read)
+        fmt::print(args.format == "full" ? stdout : stderr,
+                   "checked {} file(s): {} keywords, {} cards, {} particles; {} error(s), {} warning(s), {} info(s) "
+                   "in {:.2f} s\n",
+                   totals.files, totals.keywords, totals.cards, totals.particles, totals.counts.errors,
+                   totals.counts.warnings, totals.counts.infos, totals.seconds);
     if (!totals.complete) return exit_usage;
     return failed ? exit_findings : exit_clean;
 }

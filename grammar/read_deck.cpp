@@ -1,22 +1,19 @@
 #include "grammar/read_deck.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <stdexcept>
 
 #include "grammar/radioss/reader.hpp"
+#include "grammar/text_file.hpp"
 
 namespace sphdeck::grammar {
 namespace {
-// The first bytes of a file: enough for detect_format, without reading a big deck twice.
-std::string read_prefix(const std::string& path, std::size_t bytes) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot open '" + path + "': " + std::strerror(errno));
-    std::string text(bytes, '\0');
-    in.read(text.data(), static_cast<std::streamsize>(bytes));
-    text.resize(static_cast<std::size_t>(in.gcount()));
-    return text;
+// A Radioss main file may hold nothing but #include lines: when those fail, their DK010 says
+// why the deck is empty, and the deck is not "not a deck".
+bool names_includes(const RawDeck& deck) {
+    if (deck.sources.size() > 1) return true;
+    for (const diag::Diagnostic& d : deck.diagnostics)
+        if (d.code == "DK010" || d.code == "DK011" || d.code == "DK025") return true;
+    return false;
 }
 }  // namespace
 
@@ -47,10 +44,18 @@ DeckFormat format_of(const RawDeck& deck) {
 }
 
 RawDeck read_deck(const std::string& path, const dyna::ReaderOptions& options, std::optional<DeckFormat> format) {
-    if (!format) {
-        format = detect_format(read_prefix(path, 64 * 1024), path);
+    // The first bytes tell the format and whether this is text at all: a binary file is refused
+    // before the line grammar walks through gigabytes of it.
+    const std::string prefix = read_text_prefix(path, 64 * 1024);
+    if (auto why = binary_or_empty(prefix)) throw std::runtime_error("'" + path + "' is not a keyword deck: " + *why);
+    if (!format) format = detect_format(prefix, path);
+    RawDeck deck = *format == DeckFormat::Radioss ? radioss::read_file(path, options) : dyna::read_file(path, options);
+    if (deck.blocks.empty() && !names_includes(deck)) {
+        const char* what =
+            *format == DeckFormat::Radioss ? "header line (/BEGIN, /NODE...)" : "keyword line (*NODE, *PART...)";
+        throw std::runtime_error("'" + path + "' is not a keyword deck: no " + what + " in it");
     }
-    return *format == DeckFormat::Radioss ? radioss::read_file(path, options) : dyna::read_file(path, options);
+    return deck;
 }
 
 RawDeck read_deck_buffer(std::string text, const std::string& display_name, const std::string& base_directory,

@@ -1,6 +1,7 @@
 #include "model/model_json.hpp"
 
 #include <map>
+#include <optional>
 
 #include "model/id_index.hpp"
 
@@ -30,6 +31,47 @@ json field_json(const FieldRecord& f) {
     return {{"value", value_of(f)}, {"explicit", f.explicit_value}, {"line", f.span.line}, {"column", f.span.column}};
 }
 
+json default_of(const keywords::FieldSpec& f) {
+    using keywords::FieldType;
+    if (f.type == FieldType::Text) return f.default_text.empty() ? json(nullptr) : json(std::string(f.default_text));
+    if (!f.default_value) return nullptr;
+    if (f.type == FieldType::Real) return *f.default_value;
+    return static_cast<long long>(*f.default_value);
+}
+
+// The value a card condition compares, as the block walker saw it (model/deck_check.cpp): a
+// number read or defaulted, else 0.
+double condition_value(const KeywordRecord& r, std::string_view name) {
+    const FieldRecord* f = r.field(name);
+    return f && f->valid && f->type != keywords::FieldType::Text ? f->number : 0.0;
+}
+
+// Every field of the cards the keyword reads once, in schema order: as decoded when the deck
+// wrote the card, else the default with "explicit": false and no position (*CONTROL_SPH without
+// its optional cards 2 and 3 still runs with INI 0 and QL 0.01). Fields of repeated cards
+// (`written`, in deck order) follow.
+json all_fields(const KeywordRecord& r, json written) {
+    auto match = keywords::find_keyword(r.keyword);
+    if (!match || match->schema != r.schema) return written;
+    const std::vector<const keywords::CardSpec*> cards = keywords::cards_for(*match);
+    const std::size_t single = cards.size() - keywords::repeat_group_size(*match);
+    json out = json::object();
+    for (std::size_t i = 0; i < single; ++i) {
+        const keywords::CardSpec& card = *cards[i];
+        if (card.repeat == keywords::CardRepeat::Repeated) continue;
+        if (card.present_if && !card.present_if->holds(condition_value(r, card.present_if->field))) continue;
+        for (const keywords::FieldSpec& f : card.fields) {
+            const std::string name(f.name);
+            if (f.type == keywords::FieldType::Unused || out.contains(name)) continue;
+            if (written.contains(name)) out[name] = std::move(written[name]);
+            else out[name] = {{"value", default_of(f)}, {"explicit", false}, {"line", nullptr}, {"column", nullptr}};
+        }
+    }
+    for (auto& item : written.items())
+        if (!out.contains(item.key())) out[item.key()] = std::move(item.value());
+    return out;
+}
+
 json record_json(const KeywordRecord& r, const grammar::RawDeck& deck) {
     json fields = json::object();
     json cards = json::array();
@@ -46,21 +88,43 @@ json record_json(const KeywordRecord& r, const grammar::RawDeck& deck) {
                 {"schema", r.schema->name},
                 {"file", deck.sources.file(r.span.file).display_name},
                 {"line", r.span.line},
-                {"fields", std::move(fields)}};
+                {"fields", all_fields(r, std::move(fields))}};
     if (r.rows.size() > 1) out["cards"] = std::move(cards);  // repeated cards: every line
     return out;
 }
 
+// A block written without a single card line (*CONTROL_SPH followed by the next keyword) has no
+// record, yet it has settings: every one a default. Blocks the reader acts on (*INCLUDE...),
+// free text and the particle arrays stay out, as for written blocks.
+std::optional<KeywordRecord> unwritten_record(const grammar::Block& b) {
+    if (b.line_count != 0) return std::nullopt;
+    auto match = keywords::find_keyword(b.keyword);
+    if (!match || !match->unknown_options.empty() || match->schema->free_text) return std::nullopt;
+    const std::string_view name = match->schema->name;
+    if (name == "*NODE" || name == "*ELEMENT_SPH" || name == "*END" || name.starts_with("*INCLUDE") ||
+        name.starts_with("*PARAMETER"))
+        return std::nullopt;
+    bool has_fields = false;
+    for (const keywords::CardSpec* card : keywords::cards_for(*match))
+        for (const keywords::FieldSpec& f : card->fields)
+            has_fields = has_fields || (card->repeat != keywords::CardRepeat::Repeated &&
+                                        f.type != keywords::FieldType::Unused);
+    if (!has_fields) return std::nullopt;  // *KEYWORD, *END: nothing to show
+    KeywordRecord r;
+    r.schema = match->schema;
+    r.keyword = b.keyword;
+    for (const auto* option : match->options) r.options.push_back(option->suffix);
+    r.span = b.span;
+    return r;
+}
+
 }  // namespace
 
-nlohmann::ordered_json to_json(const Model& model, const grammar::RawDeck& deck, const DumpOptions& options) {
-    json keywords = json::array();
-    for (const auto& r : model.records) keywords.push_back(record_json(r, deck));
-
+nlohmann::ordered_json particles_json(const Model& model, bool list_each) {
     std::map<std::string, std::size_t> per_part;
     for (long long part : model.particles.part) ++per_part[std::to_string(part)];
     json particles = {{"count", model.particles.size()}, {"parts", per_part}};
-    if (options.particles) {
+    if (list_each) {
         json list = json::array();
         const Particles& p = model.particles;
         const IdIndex nodes(model.nodes.id);
@@ -72,6 +136,25 @@ nlohmann::ordered_json to_json(const Model& model, const grammar::RawDeck& deck,
         }
         particles["list"] = std::move(list);
     }
+    return particles;
+}
+
+nlohmann::ordered_json to_json(const Model& model, const grammar::RawDeck& deck, const DumpOptions& options) {
+    // Records follow the blocks in deck order; blocks without card lines slot in between.
+    json keywords = json::array();
+    std::size_t next = 0;
+    for (const grammar::Block& b : deck.blocks) {
+        const KeywordRecord* r = next < model.records.size() ? &model.records[next] : nullptr;
+        if (r && r->span.file == b.span.file && r->span.line == b.span.line) {
+            keywords.push_back(record_json(*r, deck));
+            ++next;
+        } else if (auto unwritten = unwritten_record(b)) {
+            keywords.push_back(record_json(*unwritten, deck));
+        }
+    }
+    for (; next < model.records.size(); ++next) keywords.push_back(record_json(model.records[next], deck));
+
+    json particles = particles_json(model, options.particles);
     std::map<std::string, std::size_t> unknown;
     for (const auto& b : deck.blocks)
         if (!keywords::find_keyword(b.keyword) || !keywords::find_keyword(b.keyword)->unknown_options.empty())

@@ -13,6 +13,9 @@ struct DumpOptions {
 };
 
 // Fields keep the schema order (ordered_json), as a user reads the card.
+// `particles`: the count, the count per part and, with `list_each`, every particle.
+nlohmann::ordered_json particles_json(const Model& model, bool list_each);
+
 nlohmann::ordered_json to_json(const Model& model, const grammar::RawDeck& deck, const DumpOptions& options = {});
 
 }  // namespace sphdeck::model

@@ -115,6 +115,13 @@ public:
 
     Model finish() { return builder_.finish(); }
 
+    // Keeps each decoded block's header, title and single-card fields (for `sphdeck dump`).
+    void record_into(RadiossReading* reading) { reading_ = reading; }
+    void count_unknown() {
+        if (!reading_) return;
+        for (const auto& [name, u] : unknown_) reading_->unknown[name] = u.second;
+    }
+
 private:
     // One-file decks: the blocks of a main file before its /END/ENGINE are the engine input.
     void mark_engine_sections() {
@@ -174,6 +181,7 @@ private:
             }
         }
         builder_.begin(b);
+        if (reading_) reading_->records.push_back({block.keyword, spec->name, b.title, block.span, b.format, {}, 0});
         walk_cards(b, format, line, end);
         builder_.end(b);
     }
@@ -208,6 +216,23 @@ private:
             }
             decoder_.decode(*line, cards[index], b.version, b.engine, values_, newer, b.spec->trailing_checked);
             builder_.card(b, index, static_cast<std::uint32_t>(line - deck_.lines.data()), values_);
+            if (reading_) record(index < first_repeated);
+        }
+    }
+
+    void record(bool single_card) {
+        RadiossRecord& r = reading_->records.back();
+        if (!single_card) {
+            ++r.repeated_lines;
+            return;
+        }
+        for (const RadiossValue& v : values_) {
+            if (!v.spec) continue;
+            const rad::Cell cell = v.spec->cell;
+            if (cell == rad::Cell::Skip || cell == rad::Cell::Skip20) continue;
+            const bool number = cell == rad::Cell::Int || cell == rad::Cell::Real;
+            r.fields.push_back({v.spec->name, number, cell == rad::Cell::Int, v.explicit_value, v.valid, v.number,
+                                std::string(v.text), v.span});
         }
     }
 
@@ -236,10 +261,21 @@ private:
     std::vector<RadiossValue> values_;
     std::vector<bool> engine_;  // per file: part of the engine deck
     std::vector<bool> engine_block_;  // per block: before /END/ENGINE in a one-file deck
+    RadiossReading* reading_ = nullptr;
     std::map<std::string, std::pair<grammar::Span, std::size_t>> unknown_;
 };
 
 }  // namespace
+
+RadiossReading read_radioss_records(const grammar::RawDeck& deck) {
+    RadiossReading reading;
+    std::vector<diag::Diagnostic> ignored;  // check reports them; the dump only wants the values
+    Walker walker(deck, ignored, radioss_version(deck));
+    walker.record_into(&reading);
+    walker.walk_all();
+    walker.count_unknown();
+    return reading;
+}
 
 int radioss_version(const grammar::RawDeck& deck) {
     for (const grammar::Block& b : deck.blocks) {

@@ -1,4 +1,4 @@
-// The deck-driven runner (design.md, "Tests"): every deck under decks/tests/ states the
+// The deck-driven runner (design.md, "Tests"): every deck under decks/tests/ and decks/demo/ states the
 // diagnostics it expects with `$ expect: CODE[, CODE...]` on the comment line(s) right before
 // the line that must trigger them; `$ expect-above: CODE` expects one on the line just above (a
 // suppression comment); `$ expect-deck: CODE` expects one without a location. The
@@ -93,11 +93,14 @@ bool is_main_deck(const fs::path& p) {
 }  // namespace
 
 TEST_CASE("decks: every test deck produces exactly the diagnostics it declares") {
-    fs::path root = fs::path(SPHDECK_SOURCE_DIR) / "decks" / "tests";
-    REQUIRE(fs::is_directory(root));
+    // decks/demo too: the demo's mistakes deck declares what `make demo` shows, the dam break none.
     std::vector<fs::path> decks;
-    for (const auto& e : fs::recursive_directory_iterator(root))
-        if (e.is_regular_file() && is_main_deck(e.path())) decks.push_back(e.path());
+    for (const char* folder : {"tests", "demo"}) {
+        fs::path root = fs::path(SPHDECK_SOURCE_DIR) / "decks" / folder;
+        REQUIRE(fs::is_directory(root));
+        for (const auto& e : fs::recursive_directory_iterator(root))
+            if (e.is_regular_file() && is_main_deck(e.path())) decks.push_back(e.path());
+    }
     std::sort(decks.begin(), decks.end());
     CHECK(decks.size() >= 10);
     for (const auto& deck : decks) {

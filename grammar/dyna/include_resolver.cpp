@@ -23,9 +23,16 @@ std::vector<Candidate> candidates(const std::string& name, const IncludeSearch& 
 }  // namespace
 
 std::optional<ResolvedInclude> resolve_include(const std::string& name, const IncludeSearch& search) {
-    for (const auto& c : candidates(name, search)) {
+    const auto list = candidates(name, search);
+    for (const auto& c : list) {
         std::error_code ec;
         if (fs::is_regular_file(c.path, ec)) return ResolvedInclude{c.path, c.why};
+    }
+    // No file, but something of that name (a directory): reading it says what it is, where
+    // "not found" would send the user looking for a file that is there.
+    for (const auto& c : list) {
+        std::error_code ec;
+        if (fs::exists(c.path, ec)) return ResolvedInclude{c.path, c.why};
     }
     return std::nullopt;
 }

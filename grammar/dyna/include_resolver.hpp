@@ -21,7 +21,8 @@ struct ResolvedInclude {
 };
 
 // Order: absolute name as is; the including file's folder; the main file's folder;
-// each include path in order of definition.
+// each include path in order of definition. A regular file wins; when there is none, the first
+// other entry of that name (a directory), so that the caller reports what it is.
 std::optional<ResolvedInclude> resolve_include(const std::string& name, const IncludeSearch& search);
 
 // Every directory tried, for the "not found" note.

@@ -1,12 +1,11 @@
 #include "grammar/dyna/reader.hpp"
 
 #include <cstring>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include "grammar/dyna/deck_reader.hpp"
 #include "grammar/dyna/line_grammar.hpp"
+#include "grammar/text_file.hpp"
 
 namespace sphdeck::grammar::dyna {
 namespace {
@@ -67,19 +66,6 @@ struct action<rules::data_line> {
     static void apply(const Input& in, DeckReader& r) { r.on_data(in.begin(), in.end()); }
 };
 
-std::string read_whole_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot open '" + path + "': " + std::strerror(errno));
-    in.seekg(0, std::ios::end);
-    std::streamoff size = in.tellg();
-    if (size < 0) throw std::runtime_error("cannot read '" + path + "'");
-    std::string text(static_cast<std::size_t>(size), '\0');
-    in.seekg(0, std::ios::beg);
-    in.read(text.data(), size);
-    if (!in) throw std::runtime_error("cannot read '" + path + "'");
-    return text;
-}
-
 RawDeck read_main(SourceFile main, const std::filesystem::path& directory, const ReaderOptions& options) {
     RawDeck deck;
     // One CardLine per line at most: reserving once keeps the big-deck path free of regrowth.
@@ -124,7 +110,7 @@ RawDeck read_file(const std::string& path, const ReaderOptions& options) {
     SourceFile main;
     main.path = path;
     main.display_name = path;
-    main.text = read_whole_file(path);
+    main.text = read_text_file(path);
     return read_main(std::move(main), std::filesystem::path(path).parent_path(), options);
 }
 
@@ -137,6 +123,12 @@ RawDeck read_buffer(std::string text, const std::string& display_name, const std
     return read_main(std::move(main), base_directory, options);
 }
 
-std::string read_include_text(const std::string& path) { return read_whole_file(path); }
+std::string read_include_text(const std::string& path) {
+    std::string text = read_text_file(path);
+    // An empty include is fine; a binary one (a d3plot named by mistake) is not parsed as cards.
+    if (auto why = binary_or_empty(std::string_view(text).substr(0, 64 * 1024)); why && !text.empty())
+        throw std::runtime_error("'" + path + "' is not a keyword deck: " + *why);
+    return text;
+}
 
 }  // namespace sphdeck::grammar::dyna

@@ -32,14 +32,20 @@ LSDYNA_SUFFIXES = (".k", ".key", ".dyn")
 
 
 def find_decks(corpus):
+    """(decks, number of empty files skipped): an empty file is a placeholder, not a deck."""
     decks = []
+    empty = 0
     for root, dirs, files in os.walk(corpus):
         dirs.sort()
         for name in sorted(files):
             lower = name.lower()
             if lower.endswith(LSDYNA_SUFFIXES) or lower.endswith("_0000.rad"):
-                decks.append(os.path.relpath(os.path.join(root, name), corpus))
-    return decks
+                path = os.path.join(root, name)
+                if os.path.getsize(path) == 0:
+                    empty += 1
+                    continue
+                decks.append(os.path.relpath(path, corpus))
+    return decks, empty
 
 
 def starter_errors(corpus, deck):
@@ -125,7 +131,7 @@ def main():
     if not os.path.isdir(corpus):
         print(f"corpus check: no corpus folder at {corpus} (set SPHDECK_CORPUS)", file=sys.stderr)
         return 77 if args.skip_missing else 2
-    decks = find_decks(corpus)
+    decks, empty = find_decks(corpus)
     if not decks:
         print(f"corpus check: no decks under {corpus}", file=sys.stderr)
         return 2
@@ -175,7 +181,8 @@ def main():
         if (deck, code) not in current:
             failures.append(f"{deck}: {code} no longer fires; remove baseline line {line}")
 
-    print(f"corpus check: {len(decks)} decks under {corpus} in {seconds:.1f} s")
+    print(f"corpus check: {len(decks)} decks under {corpus} in {seconds:.1f} s"
+          + (f" ({empty} empty files skipped)" if empty else ""))
     print(f"  decks with errors: {decks_with_errors}; OpenRadioss decks the starter accepted: {accepted}, "
           f"{accepted_with_errors} of them with errors ({errors_on_accepted} errors)")
     for severity in ("error", "warning", "info"):
