@@ -39,6 +39,8 @@ const CardDecoder::Layout& CardDecoder::layout_of(const keywords::CardSpec& card
     l.significant = keywords::significant_width(card, format);
     // A card that starts with a long text field (title, heading) is never in free format.
     l.text_card = !card.fields.empty() && card.fields[0].type == FieldType::Text && card.fields[0].width >= 70;
+    l.title_card = l.text_card && card.fields.size() == 1 &&
+                   (card.fields[0].is_named("TITLE") || card.fields[0].is_named("HEADING"));
     layouts_.push_back(std::move(l));
     last_layout_ = layouts_.size() - 1;
     return layouts_.back();
@@ -57,7 +59,10 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
                grammar::Span{line.file, line.line, static_cast<std::uint32_t>(tab + 1),
                              static_cast<std::uint32_t>(tab + 2)});
     }
-    if (cut.beyond.valid() && cut.extra_values == 0) {
+    // A title or heading longer than its 80 (70) columns is cut in the solver's output and loses
+    // nothing else: no value can slip out of a card that holds one text field. A file name (*INCLUDE)
+    // is no title: cut, it names another file.
+    if (cut.beyond.valid() && cut.extra_values == 0 && !layout.title_card) {
         report("DK006", diag::Severity::Warning,
                fmt::format("text past column {} is ignored by the solver", layout.significant), cut.beyond);
     }
