@@ -1,4 +1,5 @@
 #include "model/deck_check.hpp"
+#include "model/flood_guard.hpp"
 
 #include <algorithm>
 #include <fmt/format.h>
@@ -205,7 +206,9 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
             }
         }
         if (skip_cards(block.keyword) || match->schema->free_text) continue;
+        const std::size_t before = out.size();
         walker.walk(block, *match, summary);
+        collapse_block_floods(out, before, block.keyword);
     }
     for (const auto& [name, u] : unknown) {
         std::string message = fmt::format("unknown keyword {} kept as is", name);

@@ -160,3 +160,18 @@ TEST_CASE("corpus: a title longer than 80 columns is not DK006; a data card is")
     auto card = lint::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n     0.002" + std::string(75, ' ') + "9\n*END\n", "d.k");
     CHECK(count_code(card.diagnostics, "DK006") == 1);
 }
+
+TEST_CASE("corpus: a mistake repeated on every line of a block is five findings and one that counts the rest") {
+    std::string deck = "*KEYWORD\n*NODE\n";
+    for (int i = 1; i <= 3000; ++i) deck += std::to_string(i) + "," + std::to_string(i) + ".0,0.0,0.0\n";
+    deck += "*ELEMENT_SPH\n";
+    for (int i = 1; i <= 3000; ++i) deck += std::to_string(i) + ",1,mass\n";
+    auto r = lint::check_buffer(deck, "d.k");
+    CHECK(count_code(r.diagnostics, "DK003") == 6);
+    std::size_t summaries = 0;
+    for (const auto& d : r.diagnostics)
+        if (d.code == "DK003" && d.message.find("(and 2994 more DK003 finding(s) on the lines of this *ELEMENT_SPH "
+                                                "block: lines ") != std::string::npos)
+            ++summaries;
+    CHECK(summaries == 1);
+}
