@@ -72,9 +72,13 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
                cut.beyond);
     }
     for (std::uint32_t i : cut.too_long) {
+        // A number field holding no number is DK003, which names the value: one finding per field.
+        const grammar::ValueToken token = grammar::classify_value(fields_[i].text);
+        const FieldType type = card.fields[i].type;
+        if (token.shape == grammar::ValueShape::Other && (type == FieldType::Integer || type == FieldType::Real)) continue;
         report("DK005", diag::Severity::Error,
                fmt::format("free-format value '{}' is longer than its {}-column field {}",
-                           shown(grammar::classify_value(fields_[i].text).text), positions_[i].width,
+                           shown(token.text), positions_[i].width,
                            card.fields[i].name),
                fields_[i].span);
     }

@@ -175,3 +175,11 @@ TEST_CASE("corpus: a mistake repeated on every line of a block is five findings 
             ++summaries;
     CHECK(summaries == 1);
 }
+
+TEST_CASE("corpus: a word too long for a number field is one finding (DK003), a number too long is DK005") {
+    auto word = lint::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n0.002,0,0.0,<PAB_TTF-1.1>\n*END\n", "d.k");
+    CHECK(count_code(word.diagnostics, "DK003") == 1);
+    CHECK(count_code(word.diagnostics, "DK005") == 0);
+    auto number = lint::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n0.00200000001,0\n*END\n", "d.k");
+    CHECK(count_code(number.diagnostics, "DK005") == 1);
+}
