@@ -41,7 +41,7 @@ std::string list_ids(const std::vector<long long>& ids) {
 std::string undefined_part_hint(const RuleContext& c, const PartGroups& missing, bool part_is_node) {
     std::size_t particles = 0;
     for (const auto& [id, g] : missing.by_part) particles += g.count;
-    if (part_is_node && particles > 1) return "the part id equals the node id on every line: columns swapped?";
+    if (part_is_node && particles > 2) return "the part id equals the node id on every line: columns swapped?";
     if (c.model.parts.empty()) return fmt::format("the deck defines no {}: a mesh without its parts (a missing include?)", words(c).part);
     return "";
 }
