@@ -16,6 +16,9 @@ using model::Form;
 bool differs(double a, double b) { return std::abs(a - b) > 1e-12 * std::max(1.0, std::abs(b)); }
 
 // SPH010: FORM 12 and 13 exist in MPP LS-DYNA only (Remark 2e; FORM 13 from newer editions).
+// An error when the run is known to be SMP. When nothing tells, information: the solver is chosen
+// on the command line, not in the deck, and a deck with FORM 12 or 13 is written for MPP (the only
+// place it runs), so a warning would sit on every published MLS and ISPH deck without a defect.
 void check_mpp_only(RuleContext& c, const RunKind& run) {
     const auto& form = c.model.controls.sph.form;
     if (!model::is_mpp_only(form.value) || run.solver == Solver::Mpp) return;
@@ -23,7 +26,7 @@ void check_mpp_only(RuleContext& c, const RunKind& run) {
     if (run.solver == Solver::Smp)
         c.report("SPH010", Severity::Error, form.span, fmt::format("{}; the run is SMP ({})", what, run.why));
     else
-        c.report("SPH010", Severity::Warning, form.span,
+        c.report("SPH010", Severity::Info, form.span,
                  fmt::format("{}; nothing shows this is an MPP run (no --solver, no *CONTROL_MPP_*, no memory2=)", what));
 }
 

@@ -8,28 +8,14 @@
 #include <map>
 
 #include "grammar/keywords/schema.hpp"
+#include "lint/particle_groups.hpp"
 #include "lint/rules.hpp"
 #include "model/id_index.hpp"
 
 namespace sphdeck::lint {
 namespace {
 
-constexpr std::size_t max_listed = 5;  // ids named in one message
-
-// Particles that share one problem: how many, the first few, and the first one's index.
-struct Group {
-    std::size_t count = 0;
-    std::vector<std::size_t> first;  // particle indices, at most max_listed
-
-    void add(std::size_t i) {
-        if (count++ < max_listed) first.push_back(i);
-    }
-    std::string ids(const model::Particles& p) const {
-        std::string s;
-        for (std::size_t k = 0; k < first.size(); ++k) s += (k ? ", " : "") + std::to_string(p.node[first[k]]);
-        return count > first.size() ? s + ", ..." : s;
-    }
-};
+using Group = ParticleGroup;
 
 // The columns of `field` on card line `line_index` of a one-card keyword (*NODE, *ELEMENT_SPH),
 // cut by the schema in the block's format; the whole line when that fails.
@@ -129,33 +115,48 @@ void check_planar(RuleContext& c) {
 
 // SPH112: MASS 0 (or blank) is a massless particle: an error, grouped per part. A negative MASS
 // (or *ELEMENT_SPH_VOLUME) is a volume, the mass following from the density: said once per part
-// as information, since a volume where a mass was meant is a common unit slip.
+// as information, since a volume where a mass was meant is a common unit slip. When more than a
+// few parts have them (a mesh fragment whose particles each name their own part), one finding
+// covers them all.
 void check_mass(RuleContext& c) {
     const model::Particles& p = c.model.particles;
-    std::map<long long, Group> zero, volume;
+    PartGroups zero, volume;
     for (std::size_t i = 0; i < p.size(); ++i) {
-        if (p.mass[i] == 0.0) zero[p.part[i]].add(i);
-        else if (p.mass[i] < 0.0 && !p.volume[i]) volume[p.part[i]].add(i);
+        if (p.mass[i] == 0.0) zero.add(p.part[i], i);
+        else if (p.mass[i] < 0.0 && !p.volume[i]) volume.add(p.part[i], i);
     }
     auto mass_span = [&](std::size_t i) {
         return field_span(c.deck, p.line[i], "*ELEMENT_SPH", "MASS", c.particle_span(i));
     };
-    for (const auto& [part, g] : zero) {
+    // "particle 7 of part 1", "12 particles of part 1 (7, 8, ...)".
+    auto who = [&](const Group& g) {
         const std::size_t i = g.first.front();
-        std::string who = g.count == 1 ? fmt::format("particle {} of part {}", p.node[i], part)
-                                       : fmt::format("{} particles of part {} ({})", g.count, part, g.ids(p));
-        c.report("SPH112", diag::Severity::Error, mass_span(i),
-                 fmt::format("MASS 0 or blank on {}; expected a mass > 0, or a volume < 0", who));
-    }
-    for (const auto& [part, g] : volume) {
-        const std::size_t i = g.first.front();
-        std::string who = g.count == 1 ? fmt::format("particle {} of part {}", p.node[i], part)
-                                       : fmt::format("{} particles of part {} ({})", g.count, part, g.ids(p));
-        c.report("SPH112", diag::Severity::Info, mass_span(i),
-                 fmt::format("negative MASS {:g} on {} is read as a volume: the mass follows from the "
-                             "material density",
-                             p.mass[i], who));
-    }
+        return g.count == 1 ? fmt::format("particle {} of part {}", p.node[i], p.part[i])
+                            : fmt::format("{} particles of part {} ({})", g.count, p.part[i], g.ids(p));
+    };
+    auto each = [&](const PartGroups& groups, auto&& report_one) {
+        if (!groups.flood()) {
+            for (const auto& [part, g] : groups.by_part) report_one(g, who(g), false);
+            return;
+        }
+        const Group all = groups.merged();
+        report_one(all, fmt::format("{} particles of {} parts (parts {}; particles {})", all.count, groups.by_part.size(),
+                                    groups.part_list(), all.ids(p)),
+                   true);
+    };
+    each(zero, [&](const Group& g, const std::string& text, bool merged) {
+        auto& d = c.report("SPH112", diag::Severity::Error, mass_span(g.first.front()),
+                           fmt::format("MASS 0 or blank on {}; expected a mass > 0, or a volume < 0", text));
+        if (merged) add_line_notes(c, d, g, [&](std::size_t i) { return fmt::format("particle {} has MASS 0 or blank", p.node[i]); });
+    });
+    each(volume, [&](const Group& g, const std::string& text, bool merged) {
+        auto& d = c.report("SPH112", diag::Severity::Info, mass_span(g.first.front()),
+                           fmt::format("negative MASS {:g} on {} is read as a volume: the mass follows from the "
+                                       "material density",
+                                       p.mass[g.first.front()], text));
+        if (merged)
+            add_line_notes(c, d, g, [&](std::size_t i) { return fmt::format("particle {} has MASS {:g}", p.node[i], p.mass[i]); });
+    });
 }
 
 }  // namespace

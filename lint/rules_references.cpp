@@ -5,6 +5,7 @@
 #include <set>
 #include <unordered_map>
 
+#include "lint/particle_groups.hpp"
 #include "lint/rules.hpp"
 #include "model/id_index.hpp"
 #include "model/radioss_decoder.hpp"
@@ -18,15 +19,16 @@ struct DefiningWords {
     const char* section;
     const char* material;
     const char* eos;
+    const char* section_field;  // the /PART or *PART field naming them
+    const char* material_field;
+    const char* part;
 };
 DefiningWords words(const RuleContext& c) {
-    if (c.model.radioss) return {"/NODE", "/PROP", "/MAT", "/EOS"};
-    return {"*NODE", "*SECTION_", "*MAT_", "*EOS_"};
+    if (c.model.radioss) return {"/NODE", "/PROP", "/MAT", "/EOS", "prop_ID", "mat_ID", "/PART"};
+    return {"*NODE", "*SECTION_", "*MAT_", "*EOS_", "SECID", "MID", "*PART"};
 }
 
 using model::Id;
-
-constexpr std::size_t max_listed = 5;  // ids named in one message
 
 std::string list_ids(const std::vector<long long>& ids) {
     std::string s;
@@ -35,24 +37,60 @@ std::string list_ids(const std::vector<long long>& ids) {
     return s;
 }
 
+// A pattern that explains why particles name parts no *PART defines, or "".
+std::string undefined_part_hint(const RuleContext& c, const PartGroups& missing, bool part_is_node) {
+    std::size_t particles = 0;
+    for (const auto& [id, g] : missing.by_part) particles += g.count;
+    if (part_is_node && particles > 2) return "the part id equals the node id on every line: columns swapped?";
+    if (c.model.parts.empty()) return fmt::format("the deck defines no {}: a mesh without its parts (a missing include?)", words(c).part);
+    return "";
+}
+
+// REF002 for particles: once per undefined part with its particle count; when more than a few parts
+// are undefined (a mesh fragment without its parts, a PID column holding something else), one
+// finding for them all with the first lines, instead of one per part (a finding per particle when
+// every particle names its own part).
+void report_undefined_parts(RuleContext& c, const PartGroups& missing, bool part_is_node) {
+    if (missing.by_part.empty()) return;
+    const model::Particles& p = c.model.particles;
+    const std::string hint = undefined_part_hint(c, missing, part_is_node);
+    if (!missing.flood()) {
+        for (const auto& [id, g] : missing.by_part) {
+            std::string count = g.count > 1 ? fmt::format(" ({} particles)", g.count) : "";
+            auto& d = c.report("REF002", c.particle_span(g.first.front()),
+                               fmt::format("particle part {} is not defined{}", id, count));
+            if (!hint.empty() && id == missing.by_part.begin()->first) d.notes.push_back({{}, hint});
+        }
+        return;
+    }
+    const ParticleGroup all = missing.merged();
+    auto& d = c.report("REF002", c.particle_span(all.first.front()),
+                       fmt::format("{} particles name {} parts that are not defined: parts {}; particles {}", all.count,
+                                   missing.by_part.size(), missing.part_list(), all.ids(p)));
+    add_line_notes(c, d, all, [&](std::size_t i) { return fmt::format("particle {} names part {}", p.node[i], p.part[i]); });
+    if (!hint.empty()) d.notes.push_back({{}, hint});
+}
+
 // REF001 and REF002 for particles: grouped per missing id, so a million bad particles make a
 // handful of findings, each at the first particle that names it.
 void check_particles(RuleContext& c, const model::IdIndex& nodes) {
     const model::Particles& p = c.model.particles;
     std::map<long long, std::pair<std::size_t, std::size_t>> missing_node;  // id → first particle, count
-    std::map<long long, std::pair<std::size_t, std::size_t>> missing_part;
+    PartGroups missing_part;
+    bool part_is_node = true;  // on every particle whose part is undefined
     std::unordered_map<long long, bool> part_known;
     for (std::size_t i = 0; i < p.size(); ++i) {
         if (!nodes.find(p.node[i])) {
             auto [it, fresh] = missing_node.try_emplace(p.node[i], i, 0);
             ++it->second.second;
         }
+        if (p.part[i] < 0) continue;  // the PID could not be read: DK002 says so
         auto known = part_known.find(p.part[i]);
         if (known == part_known.end())
             known = part_known.emplace(p.part[i], c.model.part(std::to_string(p.part[i])) != nullptr).first;
         if (!known->second) {
-            auto [it, fresh] = missing_part.try_emplace(p.part[i], i, 0);
-            ++it->second.second;
+            missing_part.add(p.part[i], i);
+            part_is_node = part_is_node && p.part[i] == p.node[i];
         }
     }
     // Every particle has its own node: a forgotten node include would make a finding per particle.
@@ -69,11 +107,7 @@ void check_particles(RuleContext& c, const model::IdIndex& nodes) {
         c.report("REF001", c.particle_span(std::next(missing_node.begin(), max_listed)->second.first),
                  fmt::format("{} more particles have no {} (first: {})", more, words(c).node,
                              std::next(missing_node.begin(), max_listed)->first));
-    for (const auto& [id, first] : missing_part) {
-        if (id < 0) continue;  // the PID could not be read: DK002 says so
-        std::string count = first.second > 1 ? fmt::format(" ({} particles)", first.second) : "";
-        c.report("REF002", c.particle_span(first.first), fmt::format("particle part {} is not defined{}", id, count));
-    }
+    report_undefined_parts(c, missing_part, part_is_node);
 }
 
 template <typename T>
@@ -117,16 +151,34 @@ void check_particle_duplicates(RuleContext& c) {
     }
 }
 
+// A thermal-only LS-DYNA analysis (*CONTROL_SOLUTION SOLN 1) solves heat transfer alone: a part's
+// properties come from its thermal material TMID (*PART: "thermal properties must be specified for
+// all solid, shell and thick shell parts if a thermal ... analysis is being performed"); the
+// structural MID is not used, and thermal decks leave it 0.
+bool needs_no_structural_material(const RuleContext& c, const model::Part& part) {
+    const auto& t = part.thermal_material;
+    return !c.model.radioss && c.model.controls.soln.value == 1 && t.explicit_value && !t.value.empty() &&
+           t.value != "0";
+}
+
+// SECID and MID are ids, and LS-DYNA ids are positive: a 0 written there names no section or
+// material 0, it leaves the part without one (pydyna and LS-PrePost write 0 for "not set").
+std::string missing_reference(const model::Part& part, std::string_view field, std::string_view what,
+                              const Id& id, std::string_view keyword) {
+    if (id == "0") return fmt::format("part {} has no {} ({} 0)", part.id, what, field);
+    return fmt::format("part {} names {} {}, which no {} defines", part.id, what, id, keyword);
+}
+
 void check_part_references(RuleContext& c, std::set<Id>& used_sections, std::set<Id>& used_materials,
                            std::set<Id>& used_eos) {
     for (const model::Part& part : c.model.parts) {
         const auto& s = part.section;
         if (s.explicit_value && !c.model.section(s.value))
-            c.report("REF003", s.span, fmt::format("part {} names section {}, which no {} defines", part.id, s.value, words(c).section));
+            c.report("REF003", s.span, missing_reference(part, words(c).section_field, "section", s.value, words(c).section));
         used_sections.insert(s.value);
         const auto& m = part.material;
-        if (m.explicit_value && !c.model.material(m.value))
-            c.report("REF004", m.span, fmt::format("part {} names material {}, which no {} defines", part.id, m.value, words(c).material));
+        if (m.explicit_value && !c.model.material(m.value) && !(m.value == "0" && needs_no_structural_material(c, part)))
+            c.report("REF004", m.span, missing_reference(part, words(c).material_field, "material", m.value, words(c).material));
         used_materials.insert(m.value);
         const auto& e = part.eos;
         if (!e.value.empty() && !c.model.eos(e.value))
@@ -212,10 +264,22 @@ void report_unused(RuleContext& c, const std::vector<T>& items, const std::set<I
 
 }  // namespace
 
+// An include that could not be read (DK010) may define any node, part, section, material, EOS or
+// set the deck names, and use any the deck defines: "undefined" and "unused" cannot be told apart
+// from "in the missing file", so those findings would only echo DK010 once per id.
+bool include_missing(const RuleContext& c) {
+    for (const diag::Diagnostic& d : c.deck.diagnostics)
+        if (d.code == "DK010") return true;
+    return false;
+}
+
 void check_references(RuleContext& c) {
     const model::IdIndex& nodes = c.node_index();
-    check_particles(c, nodes);
-    check_set_members(c, nodes);
+    const bool complete = !include_missing(c);
+    if (complete) {
+        check_particles(c, nodes);
+        check_set_members(c, nodes);
+    }
     check_node_duplicates(c, nodes);
     check_particle_duplicates(c);
     check_duplicates(c, c.model.parts, "part");
@@ -223,6 +287,7 @@ void check_references(RuleContext& c) {
     check_duplicates(c, c.model.materials, "material");
     check_duplicates(c, c.model.equations_of_state, "EOS");
     check_duplicates(c, c.model.boxes, "box");
+    if (!complete) return;
     std::set<Id> sections, materials, eos;
     check_part_references(c, sections, materials, eos);
     // *DEFINE_ADAPTIVE_SOLID_TO_SPH gives its new particles a section of their own (ISSPH).

@@ -18,6 +18,36 @@ std::string shown(std::string_view text) {
     return text.size() > limit ? std::string(text.substr(0, limit)) + "..." : std::string(text);
 }
 std::string number_text(double v) { return fmt::format("{:g}", v); }
+
+// A fixed-format value glued to its neighbour across a field boundary explains a DK002/DK003:
+// "     1.0E-3" in a 10-column field is read as "1.0E-" (the value runs on past the field), and
+// "       9.99990000E+03" in a 20-column field leaves "3" at the start of the next field (the value
+// before runs on into this one, and is itself read as 9.9999). Said only when the glued run of
+// characters is a number.
+std::string run_on_note(const grammar::SourceMap& sources, const grammar::Span& at, std::string_view token) {
+    if (!at.valid() || at.column < 1 || at.end_column <= at.column) return {};
+    std::string_view text = sources.line_text(at.file, at.line);
+    auto glued = [](char c) { return c != ' ' && c != '\t' && c != ','; };
+    const std::size_t begin = at.column - 1, end = at.end_column - 1;  // 0-based [begin, end)
+    if (end < text.size() && end > 0 && glued(text[end]) && glued(text[end - 1])) {
+        std::size_t stop = end;
+        while (stop < text.size() && glued(text[stop])) ++stop;
+        const std::string whole = std::string(token) + std::string(text.substr(end, stop - end));
+        if (grammar::parse_real(whole).status == NumberStatus::Ok)
+            return fmt::format("'{}' runs on past column {}, so the field holds only '{}'", whole, end, token);
+    }
+    if (begin > 0 && begin < text.size() && glued(text[begin - 1]) && glued(text[begin])) {
+        std::size_t from = begin, stop = begin;
+        while (from > 0 && glued(text[from - 1])) --from;
+        while (stop < text.size() && glued(text[stop])) ++stop;
+        const std::string whole(text.substr(from, stop - from));
+        if (grammar::parse_real(whole).status == NumberStatus::Ok)
+            return fmt::format("'{}' of the field before runs on into this one at column {}: the field before "
+                               "holds only '{}'",
+                               whole, begin + 1, text.substr(from, begin - from));
+    }
+    return {};
+}
 }  // namespace
 
 void CardDecoder::report(const char* code, diag::Severity s, std::string message, grammar::Span span) {
@@ -39,6 +69,8 @@ const CardDecoder::Layout& CardDecoder::layout_of(const keywords::CardSpec& card
     l.significant = keywords::significant_width(card, format);
     // A card that starts with a long text field (title, heading) is never in free format.
     l.text_card = !card.fields.empty() && card.fields[0].type == FieldType::Text && card.fields[0].width >= 70;
+    l.title_card = l.text_card && card.fields.size() == 1 &&
+                   (card.fields[0].is_named("TITLE") || card.fields[0].is_named("HEADING"));
     layouts_.push_back(std::move(l));
     last_layout_ = layouts_.size() - 1;
     return layouts_.back();
@@ -57,7 +89,10 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
                grammar::Span{line.file, line.line, static_cast<std::uint32_t>(tab + 1),
                              static_cast<std::uint32_t>(tab + 2)});
     }
-    if (cut.beyond.valid() && cut.extra_values == 0) {
+    // A title or heading longer than its 80 (70) columns is cut in the solver's output and loses
+    // nothing else: no value can slip out of a card that holds one text field. A file name (*INCLUDE)
+    // is no title: cut, it names another file.
+    if (cut.beyond.valid() && cut.extra_values == 0 && !layout.title_card) {
         report("DK006", diag::Severity::Warning,
                fmt::format("text past column {} is ignored by the solver", layout.significant), cut.beyond);
     }
@@ -67,9 +102,13 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
                cut.beyond);
     }
     for (std::uint32_t i : cut.too_long) {
+        // A number field holding no number is DK003, which names the value: one finding per field.
+        const grammar::ValueToken token = grammar::classify_value(fields_[i].text);
+        const FieldType type = card.fields[i].type;
+        if (token.shape == grammar::ValueShape::Other && (type == FieldType::Integer || type == FieldType::Real)) continue;
         report("DK005", diag::Severity::Error,
                fmt::format("free-format value '{}' is longer than its {}-column field {}",
-                           shown(grammar::classify_value(fields_[i].text).text), positions_[i].width,
+                           shown(token.text), positions_[i].width,
                            card.fields[i].name),
                fields_[i].span);
     }
@@ -158,6 +197,8 @@ void CardDecoder::decode_number(const grammar::Block& block, const keywords::Fie
         } else {
             report("DK002", diag::Severity::Error,
                    fmt::format("'{}' in integer field {} is not an integer", shown(token.text), spec.name), v.span);
+            if (auto note = run_on_note(deck_.sources, v.span, token.text); !note.empty())
+                out_.back().notes.push_back({grammar::Span{}, std::move(note)});
             return;
         }
     } else {
@@ -165,6 +206,8 @@ void CardDecoder::decode_number(const grammar::Block& block, const keywords::Fie
         if (r.status != NumberStatus::Ok) {
             report("DK003", diag::Severity::Error,
                    fmt::format("'{}' in real field {} is not a number", shown(token.text), spec.name), v.span);
+            if (auto note = run_on_note(deck_.sources, v.span, token.text); !note.empty())
+                out_.back().notes.push_back({grammar::Span{}, std::move(note)});
             return;
         }
         v.number = r.value;

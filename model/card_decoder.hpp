@@ -44,6 +44,7 @@ private:
         std::vector<grammar::FixedField> positions;
         std::uint32_t significant = 80;
         bool text_card = false;
+        bool title_card = false;  // a title or heading only: its tail past the last column is cosmetic
     };
     const Layout& layout_of(const keywords::CardSpec& card, grammar::CardFormat format);
 

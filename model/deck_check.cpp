@@ -1,5 +1,7 @@
 #include "model/deck_check.hpp"
+#include "model/flood_guard.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <map>
 #include <numeric>
@@ -132,7 +134,14 @@ private:
                                              std::make_move_iterator(part.end()));
     }
 
+    // Blank lines past a keyword's last card hold no value, so ignoring them loses nothing: LS-PrePost
+    // and hand-written decks leave them before the next keyword (a blank line that stands for a
+    // mandatory card is another matter: it is read as that card).
     void report_extra(const grammar::Block& block, const grammar::CardLine& line, std::size_t expected) {
+        const bool all_blank = std::all_of(&line, deck_.end_lines(block), [&](const grammar::CardLine& l) {
+            return deck_.text(l).find_first_not_of(" \t") == std::string_view::npos;
+        });
+        if (all_blank) return;
         std::size_t extra = static_cast<std::size_t>(deck_.end_lines(block) - &line);
         out_.push_back({"DK009", diag::Severity::Warning,
                         fmt::format("{} takes {} card(s); {} more line(s) ignored", block.keyword, expected, extra),
@@ -197,7 +206,9 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
             }
         }
         if (skip_cards(block.keyword) || match->schema->free_text) continue;
+        const std::size_t before = out.size();
         walker.walk(block, *match, summary);
+        collapse_block_floods(out, before, block.keyword);
     }
     for (const auto& [name, u] : unknown) {
         std::string message = fmt::format("unknown keyword {} kept as is", name);

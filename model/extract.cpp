@@ -88,6 +88,8 @@ void extract_controls(const KeywordRecord& r, Controls& c) {
     } else if (name == "*CONTROL_TIMESTEP") {
         c.tssfac = setting<double>(r, "TSSFAC", 0.9);
         c.erode = setting<long long>(r, "ERODE", 0);
+    } else if (name == "*CONTROL_SOLUTION") {
+        c.soln = setting<long long>(r, "SOLN", 0);
     } else if (name == "*CONTROL_BULK_VISCOSITY") {
         c.bulk_viscosity_present = true;
         c.q1 = setting<double>(r, "Q1", 1.5);
@@ -132,6 +134,7 @@ void extract_parts(const KeywordRecord& r, std::vector<Part>& parts) {
         p.material = id_setting(one, "MID");
         p.eos = id_setting(one, "EOSID");
         p.hourglass = id_setting(one, "HGID");
+        p.thermal_material = id_setting(one, "TMID");
         if (p.eos.value == "0") p.eos.value.clear();  // 0 = no EOS
         if (p.hourglass.value == "0") p.hourglass.value.clear();
         parts.push_back(std::move(p));
@@ -140,6 +143,9 @@ void extract_parts(const KeywordRecord& r, std::vector<Part>& parts) {
 
 // `limit` bounds what a _GENERATE range expands to: ids past the model's own are missing anyway
 // (REF001 says so), and "1 200000000" must not take gigabytes.
+// A 0 is an empty slot, not a member: LS-DYNA ids are positive ("NID: node ID", "PID: part ID"
+// of *SET_NODE_LIST / *SET_PART_LIST), LS-PrePost and pydyna pad the last line of a list (and
+// of a _GENERATE range card) with zeros, and LS-DYNA skips them.
 std::vector<long long> set_members(const KeywordRecord& r, std::size_t limit, bool& truncated) {
     std::vector<long long> members;
     const bool generate = r.has_option("GENERATE");
@@ -151,6 +157,7 @@ std::vector<long long> set_members(const KeywordRecord& r, std::size_t limit, bo
                 if (row[k].explicit_value && row[k + 1].explicit_value)
                     for (auto id = static_cast<long long>(row[k].number); id <= static_cast<long long>(row[k + 1].number);
                          ++id) {
+                        if (id == 0) continue;
                         if (members.size() >= limit) {
                             truncated = true;
                             return members;
@@ -159,7 +166,7 @@ std::vector<long long> set_members(const KeywordRecord& r, std::size_t limit, bo
                     }
         } else {
             for (const auto& f : row)
-                if (f.explicit_value && f.valid) members.push_back(static_cast<long long>(f.number));
+                if (f.explicit_value && f.valid && f.number != 0) members.push_back(static_cast<long long>(f.number));
         }
     }
     return members;

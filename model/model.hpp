@@ -80,6 +80,7 @@ struct Controls {
     Setting<double> q1{1.5}, q2{0.06}; // *CONTROL_BULK_VISCOSITY
     bool bulk_viscosity_present = false;
     std::vector<grammar::Span> mpp_keywords;  // *CONTROL_MPP_* blocks: evidence of an MPP run
+    Setting<long long> soln{0};        // *CONTROL_SOLUTION: 0 structural, 1 thermal only, 2 coupled
 };
 
 struct Section {
@@ -95,7 +96,7 @@ struct Part {
     Id id;
     std::string heading;
     grammar::Span span;  // the PID field
-    Setting<Id> section, material, eos, hourglass;
+    Setting<Id> section, material, eos, hourglass, thermal_material;
 };
 
 struct Material {

@@ -60,12 +60,12 @@ std::string with_ellipse(std::string text) {
 
 }  // namespace
 
-TEST_CASE("SPH010: FORM 12 is an error on SMP, a warning when the run type is unknown, silent on MPP") {
-    SUBCASE("unknown: warning naming the missing evidence") {
+TEST_CASE("SPH010: FORM 12 is an error on SMP, information when the run type is unknown, silent on MPP") {
+    SUBCASE("unknown: information naming the missing evidence (the run type is not in the deck)") {
         auto r = run(fluid_deck(form12));
         const diag::Diagnostic* d = test::find_code(r.diagnostics, "SPH010");
         REQUIRE(d);
-        CHECK(d->severity == diag::Severity::Warning);
+        CHECK(d->severity == diag::Severity::Info);
         CHECK(d->message ==
               "FORM 12 (MLS) runs only in MPP; nothing shows this is an MPP run (no --solver, no *CONTROL_MPP_*, no "
               "memory2=)");

@@ -94,6 +94,10 @@ void DeckReader::open_include(const std::string& name, Span where, char suffix) 
     if (!resolved) {
         diag::Diagnostic d{"DK010", diag::Severity::Error, "include file '" + name + "' not found", where, {}};
         for (const auto& c : include_candidates(name, search)) d.notes.push_back({Span{}, "tried " + c.string()});
+        // The lint rules see no definition of the file: they leave references unchecked (REF001-REF005,
+        // REF007, REF008) rather than report every id it would have defined.
+        d.notes.push_back({Span{}, "references to nodes, parts, sections, materials and sets are not checked "
+                                   "while it is missing"});
         deck_.diagnostics.push_back(std::move(d));
         return;
     }

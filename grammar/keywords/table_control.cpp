@@ -197,11 +197,16 @@ KeywordSchema control_sph() {
                              .choices = off_on("incremental stabilisation", "total stabilisation (hyperelastic)"),
                              .doc = "MLS stabilisation (FORM = 12 only)",
                              .since = "R11.1"},
+                            // The manual gives QL a default of 0.01 and no meaning for 0 (a QL of 0
+                            // would switch the quasi-linear term off, which Remark 5 never offers);
+                            // a blank reads as 0 in LS-DYNA's fixed columns, so 0 is the default's
+                            // zero. Tool-written decks write card 3 as "0 0 0.0".
                             {.name = "QL",
                              .column = 21,
                              .width = 10,
                              .type = F,
                              .default_value = 0.01,
+                             .zero_is_default = true,
                              .doc = "MLS quasi-linear coefficient (FORM = 12 only)",
                              .since = "R11.1"},
                             unused(31),
@@ -461,6 +466,52 @@ KeywordSchema control_termination() {
     };
 }
 
+// Layout from pydyna (lsdyna-keyword-layouts.json, *CONTROL_SOLUTION); SOLN's meanings are the
+// manual's: 0 structural only, 1 thermal only, 2 coupled thermal-structural. Only SOLN is read by
+// the model (a thermal-only deck needs no structural material, REF004); the other fields are
+// decoded so the card is not an unknown keyword.
+KeywordSchema control_solution() {
+    return {
+        .name = "*CONTROL_SOLUTION",
+        .cards = {{
+            .name = "Card 1",
+            .fields =
+                {
+                    {.name = "SOLN",
+                     .column = 1,
+                     .width = 10,
+                     .type = I,
+                     .default_value = 0,
+                     .doc = "analysis solution procedure: 0 structural, 1 thermal only, 2 coupled"},
+                    {.name = "NLQ", .column = 11, .width = 10, .type = I, .doc = "vector length"},
+                    {.name = "ISNAN",
+                     .column = 21,
+                     .width = 10,
+                     .type = I,
+                     .default_value = 0,
+                     .doc = "check for NaN in the force and moment arrays"},
+                    {.name = "LCINT",
+                     .column = 31,
+                     .width = 10,
+                     .type = I,
+                     .default_value = 100,
+                     .doc = "default number of points of a discretized load curve"},
+                    {.name = "LCACC",
+                     .column = 41,
+                     .width = 10,
+                     .type = I,
+                     .default_value = 0,
+                     .doc = "truncate load curves to single precision"},
+                    {.name = "NCDCF", .column = 51, .width = 10, .type = I, .default_value = 1, .doc = "pydyna"},
+                    {.name = "NOCOPY", .column = 61, .width = 10, .type = I, .default_value = 0, .doc = "pydyna"},
+                    {.name = "CRVP", .column = 71, .width = 10, .type = I, .default_value = 0, .doc = "pydyna"},
+                },
+        }},
+        .unique = true,
+        .doc = "analysis type: structural, thermal only, or coupled",
+    };
+}
+
 KeywordSchema control_mpp_scale_factor_sph() {
     return {
         .name = "*CONTROL_MPP_DECOMPOSITION_SCALE_FACTOR_SPH",
@@ -496,6 +547,7 @@ std::vector<KeywordSchema> control_keywords() {
     k.push_back(control_bulk_viscosity());
     k.push_back(control_timestep());
     k.push_back(control_termination());
+    k.push_back(control_solution());
     k.push_back(control_mpp_scale_factor_sph());
     k.push_back(control_mpp_distribute_sph());
     return k;

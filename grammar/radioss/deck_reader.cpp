@@ -167,6 +167,10 @@ void DeckReader::on_include(const char* begin, const char* end, std::string_view
     if (!resolved) {
         diag::Diagnostic d{"DK010", diag::Severity::Error, "include file '" + file_name + "' not found", where, {}};
         for (const auto& c : dyna::include_candidates(file_name, search)) d.notes.push_back({Span{}, "tried " + c.string()});
+        // The lint rules see no definition of the file: they leave references unchecked (REF001-REF005,
+        // REF007, REF008) rather than report every id it would have defined.
+        d.notes.push_back({Span{}, "references to nodes, parts, sections, materials and sets are not checked "
+                                   "while it is missing"});
         deck_.diagnostics.push_back(std::move(d));
         return;
     }
