@@ -31,7 +31,7 @@ constexpr RuleInfo kRows[] = {
     {"DK009", "too-many-cards", Warning, "0.1.0", "schema",
      "more data cards than the keyword takes"},
     {"DK010", "include-not-found", Error, "0.1.0", "reader",
-     "*INCLUDE target missing after the search path rules"},
+     "*INCLUDE target missing after the search path rules, or not a deck file (a directory, binary data)"},
     {"DK011", "include-cycle", Error, "0.1.0", "reader",
      "a file includes itself, directly or through other files"},
     {"DK012", "undefined-parameter", Error, "0.1.0", "reader",
@@ -141,7 +141,7 @@ constexpr RuleInfo kRows[] = {
 
     // SPH: LS-DYNA SPH controls, sections and particles (*CONTROL_SPH manual page and friends).
     {"SPH010", "form12-requires-mpp", Error, "0.1.0", "CONTROL_SPH R2e",
-     "FORM 12 (or 13) on a run that is SMP (error) or not known to be MPP (warning)"},
+     "FORM 12 (or 13) on a run that is SMP (error) or not known to be MPP (information)"},
     {"SPH011", "form12-constant-h", Warning, "0.1.0", "R2e",
      "FORM 12 and an SPH section with HMIN or HMAX other than 1.0"},
     {"SPH012", "form12-only-fields", Warning, "0.1.0", "card 3",
