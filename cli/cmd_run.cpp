@@ -1,8 +1,9 @@
 // sphdeck run DECK: runs the deck with the reference SPH solver (refsolver/simulation.hpp): lists
 // what the solver does not honour (and refuses, exit 2, when that changes the physics, unless
-// --ignore-unsupported), draws a progress bar on a terminal, writes a time history and .vtp
-// snapshots with --out, and ends with a summary: steps, wall time, particle updates per second,
-// mass, momentum and the energy balance. Equations and settings: docs/solver.md.
+// --ignore-unsupported), draws a progress bar on a terminal, writes a time history, .vtp
+// snapshots and their .pvd time series with --out, and ends with a summary: steps, wall time,
+// particle updates per second, mass, momentum and the energy balance. Equations and settings: docs/solver.md.
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -14,6 +15,7 @@
 #include "cli/progress_bar.hpp"
 #include "diag/render_text.hpp"
 #include "io/csv_writer.hpp"
+#include "io/pvd_writer.hpp"
 #include "io/vtp_writer.hpp"
 #include "lint/pipeline.hpp"
 #include "refsolver/simulation.hpp"
@@ -52,19 +54,48 @@ struct History {
     }
 };
 
-void write_snapshot(const std::string& dir, const refsolver::Simulation& sim) {
-    const refsolver::ParticleState& s = sim.state();
-    std::vector<long long> part(s.size());
-    std::vector<std::uint32_t> active(s.active.begin(), s.active.end());
-    for (std::size_t i = 0; i < s.size(); ++i) part[i] = sim.part_ids()[s.part[i]];
-    using D = std::span<const double>;
-    io::VtpPoints points{s.x, s.y, s.z,
-                         {{"vx", D(s.vx)}, {"vy", D(s.vy)}, {"vz", D(s.vz)}, {"density", D(s.rho)},
-                          {"pressure", D(s.p)}, {"energy", D(s.e)}, {"h", D(s.h)}, {"mass", D(s.mass)},
-                          {"part", std::span<const long long>(part)}, {"active", std::span<const std::uint32_t>(active)}}};
-    const std::string path = fmt::format("{}/particles_{:06}.vtp", dir, sim.steps());
-    io::write_vtp_file(path, points, io::VtpEncoding::Base64);
-}
+// The .vtp snapshots of a run and their .pvd collection (particles.pvd), rewritten after each
+// snapshot so that a run stopped early still leaves a series ParaView plays in simulation time.
+class Snapshots {
+public:
+    explicit Snapshots(std::string dir) : dir_(std::move(dir)) {}
+
+    void write(const refsolver::Simulation& sim) {
+        const refsolver::ParticleState& s = sim.state();
+        const std::size_t n = s.size();
+        std::vector<long long> part(n);
+        std::vector<std::uint32_t> active(s.active.begin(), s.active.end());
+        for (std::size_t i = 0; i < n; ++i) part[i] = sim.part_ids()[s.part[i]];
+        using D = std::span<const double>;
+        io::VtpPoints points{s.x, s.y, s.z,
+                             {{"density", D(s.rho)}, {"pressure", D(s.p)}, {"energy", D(s.e)}, {"h", D(s.h)},
+                              {"mass", D(s.mass)}, {"part", std::span<const long long>(part)},
+                              {"active", std::span<const std::uint32_t>(active)}},
+                             {{"velocity", {D(s.vx), D(s.vy), D(s.vz)}, {"X", "Y", "Z"}}}};
+        // Solids (*MAT_ELASTIC): the Cauchy stress sigma = S - p I as a symmetric tensor in VTK's
+        // component order XX YY ZZ XY YZ XZ (the solver keeps S as xx yy zz xy xz yz).
+        std::array<std::vector<double>, 6> sigma;
+        if (!s.stress.empty()) {
+            constexpr int from[6] = {0, 1, 2, 3, 5, 4};
+            for (int k = 0; k < 6; ++k) {
+                sigma[k].resize(n);
+                for (std::size_t i = 0; i < n; ++i) sigma[k][i] = s.stress[i][from[k]] - (k < 3 ? s.p[i] : 0.0);
+            }
+            points.tuple_data.push_back({"stress",
+                                         {D(sigma[0]), D(sigma[1]), D(sigma[2]), D(sigma[3]), D(sigma[4]), D(sigma[5])},
+                                         {"XX", "YY", "ZZ", "XY", "YZ", "XZ"}});
+        }
+        const std::string file = fmt::format("particles_{:06}.vtp", sim.steps());
+        io::write_vtp_file(dir_ + "/" + file, points, io::VtpEncoding::Base64);
+        if (!entries_.empty() && entries_.back().file == file) entries_.pop_back();  // same step written again
+        entries_.push_back({sim.time(), file});
+        io::write_pvd_file(dir_ + "/particles.pvd", entries_);
+    }
+
+private:
+    std::string dir_;
+    std::vector<io::PvdEntry> entries_;
+};
 
 std::string where(const grammar::Span& span, const grammar::SourceMap& sources, const std::string& deck) {
     return diag::detail::has_location(span, sources) ? diag::detail::location(span, sources) : deck;
@@ -149,26 +180,27 @@ int run_deck(const RunArgs& args) {
     History history;
     const refsolver::Totals start = sim.totals();
     history.add(start);
+    Snapshots snapshots(args.out);
     if (!args.out.empty()) {
         std::filesystem::create_directories(args.out);
-        write_snapshot(args.out, sim);
+        snapshots.write(sim);
     }
     ProgressBar bar("run", !args.quiet && ProgressBar::stderr_is_terminal());
     const auto t0 = std::chrono::steady_clock::now();
     sim.run([&](const refsolver::Simulation& s) {
         history.add(s.totals());
-        if (!args.out.empty() && args.every > 0 && s.steps() % args.every == 0 && !s.finished()) write_snapshot(args.out, s);
+        if (!args.out.empty() && args.every > 0 && s.steps() % args.every == 0 && !s.finished()) snapshots.write(s);
         bar.update(s.end_time() > 0 ? s.time() / s.end_time() : 1.0);
     });
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     bar.finish();
     const refsolver::Totals end = sim.totals();
     if (!args.out.empty()) {
-        write_snapshot(args.out, sim);
+        snapshots.write(sim);
         history.write(args.out + "/history.csv");
     }
     print_summary(sim, start, end, wall, particles);
-    if (!args.out.empty()) fmt::print("wrote {}/history.csv and particles_*.vtp\n", args.out);
+    if (!args.out.empty()) fmt::print("wrote {0}/history.csv, particles_*.vtp and {0}/particles.pvd (open it in ParaView)\n", args.out);
     if (!sim.failure().empty()) {
         fmt::print(stderr, "sphdeck: error: {}: the run stopped: {}\n", args.deck, sim.failure());
         return exit_findings;
@@ -181,8 +213,8 @@ int run_deck(const RunArgs& args) {
 std::function<int()> setup_run(CLI::App& app) {
     auto args = std::make_shared<RunArgs>();
     app.add_option("deck", args->deck, "LS-DYNA keyword deck")->required();
-    app.add_option("--out", args->out, "folder for history.csv (one row per step) and particles_NNNNNN.vtp "
-                                       "snapshots (created if missing)");
+    app.add_option("--out", args->out, "folder for history.csv (one row per step), particles_NNNNNN.vtp "
+                                       "snapshots and particles.pvd, their time series for ParaView (created if missing)");
     app.add_option("--every", args->every, "write a snapshot every N steps (0: only the first and the last)")
         ->capture_default_str();
     app.add_option("--end-time", args->end_time, "end time, instead of *CONTROL_TERMINATION ENDTIM")

@@ -93,6 +93,7 @@ struct Block {
     std::size_t values = 0;       // tuples * components
     std::size_t value_bytes = 8;
     std::function<void(Sink&)> emit;
+    std::vector<std::string> component_names = {};
 
     std::size_t encoded_size() const {  // header and data, each base64-encoded on its own
         return 4 * ((sizeof(std::uint64_t) + 2) / 3) + 4 * ((values * value_bytes + 2) / 3);
@@ -117,10 +118,21 @@ Block column_block(const Column& c) {
     return b;
 }
 
+Block tuple_block(const TupleColumn& c, std::size_t n) {
+    const int k = static_cast<int>(c.components.size());
+    return {c.name, "Float64", k, n * c.components.size(), 8,
+            [&c, n](Sink& s) {
+                for (std::size_t i = 0; i < n; ++i)
+                    for (std::span<const double> component : c.components) s.put(component[i]);
+            },
+            c.component_names};
+}
+
 std::vector<Block> blocks_of(const VtpPoints& p) {
     const std::size_t n = p.x.size();
     std::vector<Block> blocks;
     for (const Column& c : p.point_data) blocks.push_back(column_block(c));
+    for (const TupleColumn& c : p.tuple_data) blocks.push_back(tuple_block(c, n));
     blocks.push_back({"Points", "Float64", 3, 3 * n, 8, [&p, n](Sink& s) {
                           for (std::size_t i = 0; i < n; ++i) {
                               s.put(p.x[i]);
@@ -155,6 +167,13 @@ void write_vtp(std::ostream& out, const VtpPoints& points, VtpEncoding encoding)
     for (const Column& c : points.point_data)
         if (c.size() != n)
             throw std::invalid_argument(fmt::format("vtp array '{}' has {} values, expected {}", c.name, c.size(), n));
+    for (const TupleColumn& c : points.tuple_data) {
+        if (c.components.empty()) throw std::invalid_argument(fmt::format("vtp array '{}' has no components", c.name));
+        for (std::span<const double> component : c.components)
+            if (component.size() != n)
+                throw std::invalid_argument(
+                    fmt::format("vtp array '{}' has {} values, expected {}", c.name, component.size(), n));
+    }
 
     const std::vector<Block> blocks = blocks_of(points);
     const bool ascii = encoding == VtpEncoding::Ascii;
@@ -166,6 +185,8 @@ void write_vtp(std::ostream& out, const VtpPoints& points, VtpEncoding encoding)
         const Block& b = blocks[i];
         sink.raw(fmt::format("{}<DataArray type=\"{}\" Name=\"{}\"", indent, b.type, xml_escape(b.name)));
         if (b.components != 1) sink.raw(fmt::format(" NumberOfComponents=\"{}\"", b.components));
+        for (std::size_t k = 0; k < b.component_names.size(); ++k)
+            sink.raw(fmt::format(" ComponentName{}=\"{}\"", k, xml_escape(b.component_names[k])));
         if (ascii) {
             sink.raw(" format=\"ascii\">\n");
             b.emit(sink);
@@ -181,7 +202,7 @@ void write_vtp(std::ostream& out, const VtpPoints& points, VtpEncoding encoding)
     sink.raw(fmt::format("    <Piece NumberOfPoints=\"{0}\" NumberOfVerts=\"{0}\" NumberOfLines=\"0\" "
                          "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n",
                          n));
-    const std::size_t arrays = points.point_data.size();
+    const std::size_t arrays = points.point_data.size() + points.tuple_data.size();
     sink.raw("      <PointData>\n");
     for (std::size_t i = 0; i < arrays; ++i) header(i, "        ");
     sink.raw("      </PointData>\n      <Points>\n");

@@ -17,9 +17,19 @@ namespace sphdeck::io {
 
 enum class VtpEncoding { Ascii, Base64 };
 
+// A point-data array of several components per point (a vector, a symmetric tensor), each
+// component a separate span; written interleaved as one Float64 array with NumberOfComponents,
+// which ParaView shows as one vector (3) or symmetric tensor (6: XX YY ZZ XY YZ XZ, VTK's order).
+struct TupleColumn {
+    std::string name;
+    std::vector<std::span<const double>> components;
+    std::vector<std::string> component_names;  // ComponentName0..; empty: none written
+};
+
 struct VtpPoints {
     std::span<const double> x, y, z;
     std::vector<Column> point_data;  // each as long as x: long long → Int64, double → Float64, uint32 → UInt32
+    std::vector<TupleColumn> tuple_data = {};  // written after point_data
 };
 
 // Throws std::invalid_argument when array lengths differ, std::runtime_error when the stream fails.

@@ -24,7 +24,7 @@ double record_number(const model::KeywordRecord* r, std::string_view name, doubl
     return f ? f->number : fallback;
 }
 
-// In setup_controls.cpp.
+// In setup_controls.cpp and setup_velocities.cpp.
 void setup_controls(const model::Model& m, const RunOptions& options, SolverInput& in, std::vector<Unsupported>& out);
 void setup_initial_velocities(const model::Model& m, SolverInput& in, std::vector<Unsupported>& out);
 
@@ -219,12 +219,15 @@ SetupResult build_setup(const model::Model& m, const RunOptions& options) {
     if (in.dimension == 2) std::fill(in.z.begin(), in.z.end(), 0.0);  // plane strain: the x-y plane
     in.vx.assign(n, 0), in.vy.assign(n, 0), in.vz.assign(n, 0), in.rho.assign(n, 0), in.e.assign(n, 0);
     in.h_low.assign(n, 0), in.h_high.assign(n, 0);
+    // The EOS's V0 and E0 per part, looked up once (not per particle).
+    std::vector<std::array<double, 2>> v0_e0(preview.parts.size(), {1.0, 0.0});
+    for (std::size_t q = 0; q < preview.parts.size(); ++q)
+        if (!in.parts[q].solid())
+            initial_eos_state(m, m.part(std::to_string(preview.parts[q].part)), v0_e0[q][0], v0_e0[q][1]);
     std::size_t unlocated = 0, massless = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const preproc::PartPreview& pv = preview.parts[pp.part[i]];
-        const model::Part* part = m.part(std::to_string(pv.part));
-        double v0 = 1, e0 = 0;
-        if (!in.parts[pp.part[i]].solid()) initial_eos_state(m, part, v0, e0);
+        const double v0 = v0_e0[pp.part[i]][0], e0 = v0_e0[pp.part[i]][1];
         in.rho[i] = pv.density / v0;
         in.e[i] = pv.density > 0 ? e0 / pv.density : 0.0;  // E0 per reference volume: e = E0 / rho0
         in.h_low[i] = pv.h_min > 0 ? pv.h_min : pv.h0;

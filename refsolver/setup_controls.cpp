@@ -1,9 +1,8 @@
 // The run controls (*CONTROL_SPH, *CONTROL_TERMINATION, *CONTROL_TIMESTEP,
-// *CONTROL_BULK_VISCOSITY), symmetry planes, body loads and *INITIAL_VELOCITY.
+// *CONTROL_BULK_VISCOSITY), symmetry planes and body loads (initial velocities: setup_velocities.cpp).
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
-#include <unordered_set>
 
 #include "refsolver/setup.hpp"
 
@@ -129,46 +128,6 @@ void setup_controls(const model::Model& m, const RunOptions& options, SolverInpu
     }
     setup_planes(m, in, out);
     setup_loads(m, in, out);
-}
-
-void setup_initial_velocities(const model::Model& m, SolverInput& in, std::vector<Unsupported>& out) {
-    // Members of a node set, looked up once per set id.
-    const auto set_members = [&](double id) {
-        std::unordered_set<long long> members;
-        for (const model::IdSet& s : m.node_sets)
-            if (s.id == std::to_string(static_cast<long long>(id))) members.insert(s.members.begin(), s.members.end());
-        return members;
-    };
-    for (const model::KeywordRecord& r : m.records) {
-        if (!keyword_is(r, "*INITIAL_VELOCITY")) continue;
-        if (record_number(&r, "ICID") != 0)
-            note(out, fmt::format("*INITIAL_VELOCITY ICID {}: local coordinate systems are not supported",
-                                  record_number(&r, "ICID")),
-                 record_field(&r, "ICID")->span);
-        for (const char* name : {"VXR", "VYR", "VZR"})
-            if (record_number(&r, name) != 0)
-                note(out, fmt::format("*INITIAL_VELOCITY {} {}: particles have no rotational degrees of freedom",
-                                      name, record_number(&r, name)),
-                     record_field(&r, name)->span, false);
-        const double nsid = record_number(&r, "NSID"), nsidex = record_number(&r, "NSIDEX");
-        const double boxid = record_number(&r, "BOXID");
-        const model::Box* box = boxid != 0 ? m.box(std::to_string(static_cast<long long>(boxid))) : nullptr;
-        const std::array<double, 3> v{record_number(&r, "VX"), record_number(&r, "VY"), record_number(&r, "VZ")};
-        const std::array<double, 3> ve{record_number(&r, "VXE"), record_number(&r, "VYE"), record_number(&r, "VZE")};
-        const std::unordered_set<long long> chosen = set_members(nsid), exempt = set_members(nsidex);
-        for (std::size_t i = 0; i < m.particles.size(); ++i) {
-            const long long node = m.particles.node[i];
-            if (nsid != 0 && !chosen.contains(node)) continue;
-            if (box) {
-                const auto& b = box->bounds;
-                if (in.x[i] < b[0] || in.x[i] > b[1] || in.y[i] < b[2] || in.y[i] > b[3] || in.z[i] < b[4] ||
-                    in.z[i] > b[5])
-                    continue;
-            }
-            const auto& w = nsidex > 0 && exempt.contains(node) ? ve : v;
-            in.vx[i] = w[0], in.vy[i] = w[1], in.vz[i] = in.dimension == 2 ? 0.0 : w[2];
-        }
-    }
 }
 
 }  // namespace sphdeck::refsolver

@@ -12,13 +12,14 @@ namespace sphdeck::refsolver {
 namespace {
 
 // Keywords the solver reads, or that do not change the physics of an SPH-only run.
-constexpr std::array<std::string_view, 27> understood = {
+constexpr std::array<std::string_view, 29> understood = {
     "*KEYWORD", "*TITLE", "*COMMENT", "*END", "*PARAMETER", "*PARAMETER_EXPRESSION", "*PARAMETER_DUPLICATION",
     "*INCLUDE", "*INCLUDE_PATH", "*INCLUDE_PATH_RELATIVE", "*INCLUDE_TRANSFORM", "*CONTROL_SPH",
     "*CONTROL_BULK_VISCOSITY", "*CONTROL_TIMESTEP", "*CONTROL_TERMINATION",
     "*CONTROL_MPP_DECOMPOSITION_SCALE_FACTOR_SPH", "*CONTROL_MPP_DECOMPOSITION_DISTRIBUTE_SPH_ELEMENTS",
     "*DEFINE_BOX", "*DEFINE_CURVE", "*SET_NODE_LIST", "*SET_PART_LIST", "*PART", "*SECTION_SPH",
-    "*BOUNDARY_SPH_SYMMETRY_PLANE", "*INITIAL_VELOCITY", "*HOURGLASS", "*DEFINE_BOX_SPH",
+    "*BOUNDARY_SPH_SYMMETRY_PLANE", "*INITIAL_VELOCITY", "*INITIAL_VELOCITY_NODE", "*INITIAL_VELOCITY_GENERATION",
+    "*HOURGLASS", "*DEFINE_BOX_SPH",
 };
 
 // Keywords that change the physics and that the solver does not model.

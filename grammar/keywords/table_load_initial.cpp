@@ -1,5 +1,7 @@
-// Loads and initial conditions of SPH decks: *LOAD_BODY_X/Y/Z, *INITIAL_VELOCITY
-// (layouts from pydyna load/load_body_x.py and initial_velocity.py).
+// Loads and initial conditions of SPH decks: *LOAD_BODY_X/Y/Z, *INITIAL_VELOCITY,
+// *INITIAL_VELOCITY_NODE, *INITIAL_VELOCITY_GENERATION (layouts from pydyna load/load_body_x.py,
+// boundary/initial_velocity.py, initial_velocity_node.py, initial_velocity_generation.py; see
+// /work/shared/reference/lsdyna-keyword-layouts.json).
 #include "grammar/keywords/tables.hpp"
 
 namespace sphdeck::keywords::tables {
@@ -166,6 +168,121 @@ KeywordSchema initial_velocity() {
     };
 }
 
+// One node per line until the next keyword.
+KeywordSchema initial_velocity_node() {
+    std::vector<FieldSpec> fields = {
+        {.name = "NID", .column = 1, .width = 10, .type = I, .required = true, .doc = "node"}};
+    for (FieldSpec f : velocity_fields()) {
+        f.column = static_cast<std::uint16_t>(f.column + 10);
+        fields.push_back(f);
+    }
+    fields.push_back({.name = "ICID",
+                      .column = 71,
+                      .width = 10,
+                      .type = I,
+                      .default_value = 0,
+                      .doc = "local coordinate system of the velocities"});
+    return {
+        .name = "*INITIAL_VELOCITY_NODE",
+        .cards = {{.name = "Card 1", .fields = fields, .repeat = CardRepeat::Repeated, .doc = "one line per node"}},
+        .doc = "initial translational and rotational velocity of single nodes",
+    };
+}
+
+// Translation plus a rigid rotation about an axis, of a part, a part set or a node set: the
+// velocity at x is (VX, VY, VZ) + OMEGA n x (x - c). Card pairs repeat until the next keyword.
+KeywordSchema initial_velocity_generation() {
+    return {
+        .name = "*INITIAL_VELOCITY_GENERATION",
+        .cards =
+            {
+                {
+                    .name = "Card 1",
+                    .fields =
+                        {
+                            {.name = "ID", .column = 1, .width = 10, .type = I, .doc = "part, part set or node set"},
+                            {.name = "STYP",
+                             .column = 11,
+                             .width = 10,
+                             .type = I,
+                             .default_value = 1,
+                             .choices = {{1, "part set"}, {2, "part"}, {3, "node set"}},
+                             .doc = "what ID is"},
+                            {.name = "OMEGA",
+                             .column = 21,
+                             .width = 10,
+                             .type = F,
+                             .default_value = 0.0,
+                             .doc = "angular velocity about the axis"},
+                            {.name = "VX",
+                             .column = 31,
+                             .width = 10,
+                             .type = F,
+                             .default_value = 0.0,
+                             .doc = "translational velocity in x"},
+                            {.name = "VY",
+                             .column = 41,
+                             .width = 10,
+                             .type = F,
+                             .default_value = 0.0,
+                             .doc = "translational velocity in y"},
+                            {.name = "VZ",
+                             .column = 51,
+                             .width = 10,
+                             .type = F,
+                             .default_value = 0.0,
+                             .doc = "translational velocity in z"},
+                            {.name = "IVATN",
+                             .column = 61,
+                             .width = 10,
+                             .type = I,
+                             .default_value = 0,
+                             .doc = "also set the nodes of constrained rigid bodies"},
+                            {.name = "ICID",
+                             .column = 71,
+                             .width = 10,
+                             .type = I,
+                             .default_value = 0,
+                             .doc = "local coordinate system of the velocities"},
+                        },
+                },
+                {
+                    .name = "Card 2",
+                    .fields =
+                        {
+                            {.name = "XC", .column = 1, .width = 10, .type = F, .default_value = 0.0,
+                             .doc = "x of a point on the axis"},
+                            {.name = "YC", .column = 11, .width = 10, .type = F, .default_value = 0.0,
+                             .doc = "y of a point on the axis"},
+                            {.name = "ZC", .column = 21, .width = 10, .type = F, .default_value = 0.0,
+                             .doc = "z of a point on the axis"},
+                            {.name = "NX", .column = 31, .width = 10, .type = F, .default_value = 0.0,
+                             .doc = "x direction cosine of the axis; -999: NY and NZ are two nodes on the axis"},
+                            {.name = "NY", .column = 41, .width = 10, .type = F, .default_value = 0.0,
+                             .doc = "y direction cosine of the axis"},
+                            {.name = "NZ", .column = 51, .width = 10, .type = F, .default_value = 0.0,
+                             .doc = "z direction cosine of the axis"},
+                            {.name = "PHASE",
+                             .column = 61,
+                             .width = 10,
+                             .type = I,
+                             .default_value = 0,
+                             .choices = {{0, "at once"}, {1, "after dynamic relaxation"}},
+                             .doc = "when the velocities are applied"},
+                            {.name = "IRIGID",
+                             .column = 71,
+                             .width = 10,
+                             .type = I,
+                             .default_value = 0,
+                             .doc = "overwrite rigid-body velocities"},
+                        },
+                },
+            },
+        .doc = "initial translational and rotational (about an axis) velocity of parts or nodes",
+        .repeat_group = 2,
+    };
+}
+
 }  // namespace
 
 std::vector<KeywordSchema> load_initial_keywords() {
@@ -174,6 +291,8 @@ std::vector<KeywordSchema> load_initial_keywords() {
     k.push_back(load_body("*LOAD_BODY_Y", "body force (gravity) in y"));
     k.push_back(load_body("*LOAD_BODY_Z", "body force (gravity) in z"));
     k.push_back(initial_velocity());
+    k.push_back(initial_velocity_node());
+    k.push_back(initial_velocity_generation());
     return k;
 }
 
