@@ -1,6 +1,5 @@
 #include "grammar/dyna/include_resolver.hpp"
 
-
 namespace sphdeck::grammar::dyna {
 namespace fs = std::filesystem;
 
