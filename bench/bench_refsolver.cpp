@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 #include "refsolver/simulation.hpp"
 
 using namespace sphdeck;
@@ -137,7 +137,7 @@ int main(int argc, char** argv) {
     const int repetitions = argc > 2 ? std::atoi(argv[2]) : 3;
     const double dx = argc > 3 ? std::atof(argv[3]) : 0.01;
     constexpr int warm_up = 5;
-    const lint::CheckResult deck = lint::check_buffer(dam_break_deck(dx), "dam_break_3d.k");
+    const engine::CheckResult deck = engine::check_buffer(dam_break_deck(dx), "dam_break_3d.k");
     const std::size_t n = deck.model.particles.size();
     fmt::print("3D dam break in motion: {} particles, spacing {} m; {} warm-up + {} timed steps x {} repetitions "
                "per thread count; load average {}\n",

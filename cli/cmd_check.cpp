@@ -12,7 +12,8 @@
 #include "diag/render_json.hpp"
 #include "diag/render_sarif.hpp"
 #include "diag/render_text.hpp"
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
+#include "lint/rule_catalog.hpp"
 
 namespace sphdeck::cli {
 namespace {
@@ -30,7 +31,7 @@ struct CheckArgs {
 };
 
 // Prints a deck's diagnostics as text; past `max_per_code` of one code, the rest are counted, not shown.
-void print_text(const lint::CheckResult& r, const CheckArgs& args, bool colour) {
+void print_text(const engine::CheckResult& r, const CheckArgs& args, bool colour) {
     std::map<std::string, std::size_t> shown, hidden;
     diag::RenderOptions options{colour};
     for (const diag::Diagnostic& d : r.diagnostics) {
@@ -92,8 +93,8 @@ std::optional<std::vector<lint::Config>> resolve_configs(const CheckArgs& args) 
     return out;
 }
 
-lint::CheckOptions options_for(const lint::Config& config, const CheckArgs& args) {
-    lint::CheckOptions options;
+engine::CheckOptions options_for(const lint::Config& config, const CheckArgs& args) {
+    engine::CheckOptions options;
     options.reader.include_paths = config.include_paths;
     options.config = config;
     options.rules.geometry = !args.no_geometry;
@@ -104,7 +105,7 @@ lint::CheckOptions options_for(const lint::Config& config, const CheckArgs& args
     return options;
 }
 
-void add_totals(const lint::CheckResult& r, diag::RunSummary& totals) {
+void add_totals(const engine::CheckResult& r, diag::RunSummary& totals) {
     totals.files += r.deck.stats.files;
     totals.keywords += r.deck.stats.keywords;
     totals.cards += r.deck.stats.cards;
@@ -120,17 +121,17 @@ int run_check(const CheckArgs& args) {
     auto configs = resolve_configs(args);
     if (!configs) return exit_usage;
     std::unique_ptr<diag::Report> report;
-    if (args.format == "json") report = diag::make_json_report();
-    if (args.format == "sarif") report = diag::make_sarif_report();
+    if (args.format == "json") report = diag::make_json_report(lint::rule_catalog());
+    if (args.format == "sarif") report = diag::make_sarif_report(lint::rule_catalog());
     const bool colour = args.format == "full" && diag::colour_wanted(STDOUT_FILENO);
 
     diag::RunSummary totals;
     bool failed = false;
     for (std::size_t i = 0; i < args.decks.size(); ++i) {
         const lint::Config& config = (*configs)[i];
-        lint::CheckResult r;
+        engine::CheckResult r;
         try {
-            r = lint::check_file(args.decks[i], options_for(config, args));
+            r = engine::check_file(args.decks[i], options_for(config, args));
         } catch (const std::exception& e) {
             fmt::print(stderr, "sphdeck: error: {}\n", e.what());
             totals.complete = false;

@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 #include "model/model_json.hpp"
 #include "model/radioss_json.hpp"
 
@@ -18,9 +18,9 @@ struct DumpArgs {
 };
 
 int run_dump(const DumpArgs& args) {
-    lint::CheckOptions options;
+    engine::CheckOptions options;
     options.reader.include_paths = args.include_paths;
-    lint::CheckResult r = lint::check_file(args.deck, options);
+    engine::CheckResult r = engine::check_file(args.deck, options);
     // Decks carry Latin-1 comments and titles: bytes that are not UTF-8 become U+FFFD, as in check.
     const auto replace = nlohmann::ordered_json::error_handler_t::replace;
     if (grammar::format_of(r.deck) == grammar::DeckFormat::Radioss) {

@@ -17,7 +17,7 @@
 #include "io/csv_writer.hpp"
 #include "io/pvd_writer.hpp"
 #include "io/vtp_writer.hpp"
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 #include "refsolver/simulation.hpp"
 
 namespace sphdeck::cli {
@@ -102,7 +102,7 @@ std::string where(const grammar::Span& span, const grammar::SourceMap& sources, 
 }
 
 // Prints the unsupported list; returns whether something fatal is in it.
-bool print_unsupported(const std::vector<refsolver::Unsupported>& items, const lint::CheckResult& r,
+bool print_unsupported(const std::vector<refsolver::Unsupported>& items, const engine::CheckResult& r,
                        const RunArgs& args) {
     bool fatal = false;
     for (const refsolver::Unsupported& u : items) {
@@ -142,9 +142,9 @@ void print_summary(const refsolver::Simulation& sim, const refsolver::Totals& st
 }
 
 int run_deck(const RunArgs& args) {
-    lint::CheckOptions options;
+    engine::CheckOptions options;
     options.reader.include_paths = args.include_paths;
-    const lint::CheckResult r = lint::check_file(args.deck, options);
+    const engine::CheckResult r = engine::check_file(args.deck, options);
     std::size_t read_errors = 0;
     for (const diag::Diagnostic& d : r.diagnostics)
         if (d.severity == diag::Severity::Error && d.code.rfind("DK", 0) == 0) {

@@ -14,7 +14,7 @@
 #include "io/csv_writer.hpp"
 #include "io/svg_histogram.hpp"
 #include "io/vtp_writer.hpp"
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 #include "preproc/preview.hpp"
 
 namespace sphdeck::cli {
@@ -173,7 +173,7 @@ nlohmann::ordered_json radioss_json(const preproc::RadiossPreview& r) {
             {"unknown_planes", r.unknown_planes}};
 }
 
-nlohmann::ordered_json to_json(const SmoothArgs& args, const lint::CheckResult& r, const preproc::Preview& p) {
+nlohmann::ordered_json to_json(const SmoothArgs& args, const engine::CheckResult& r, const preproc::Preview& p) {
     nlohmann::ordered_json parts = nlohmann::ordered_json::array();
     for (const preproc::PartPreview& pv : p.parts) {
         parts.push_back({{"part", pv.part},
@@ -237,7 +237,7 @@ void print_radioss(const preproc::Preview& p) {
     for (long long id : g.unknown_planes) fmt::print("/SPHBCS {}: plane unknown (frame or Dir): left out\n", id);
 }
 
-void print_text(const SmoothArgs& args, const lint::CheckResult& r, const preproc::Preview& p) {
+void print_text(const SmoothArgs& args, const engine::CheckResult& r, const preproc::Preview& p) {
     const model::IniMode mode = p.parts.empty() ? model::IniMode::BucketSort : p.parts.front().ini;
     if (p.radioss)  // no INI: h as the OpenRadioss starter computes it
         fmt::print("{}: {} particles in {} part(s), {}D, OpenRadioss deck (h0: the starter's rule, spinih.F)\n\n",
@@ -267,9 +267,9 @@ void print_text(const SmoothArgs& args, const lint::CheckResult& r, const prepro
 }
 
 int run_smooth(const SmoothArgs& args) {
-    lint::CheckOptions options;
+    engine::CheckOptions options;
     options.reader.include_paths = args.include_paths;
-    const lint::CheckResult r = lint::check_file(args.deck, options);
+    const engine::CheckResult r = engine::check_file(args.deck, options);
     const diag::Counts counts = diag::count(r.diagnostics);
     if (r.model.particles.size() == 0) {
         for (const diag::Diagnostic& d : r.diagnostics)

@@ -11,7 +11,7 @@
 #include "diag/render_text.hpp"
 #include "io/csv_writer.hpp"
 #include "io/vtp_writer.hpp"
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 #include "preproc/sol2sph.hpp"
 
 namespace sphdeck::cli {
@@ -44,14 +44,14 @@ std::vector<io::Column> columns(const preproc::Sol2sphParticles& p, std::vector<
             {"volume", std::span<const double>(p.volume)}};
 }
 
-std::string where(const lint::CheckResult& r, std::uint32_t line) {
+std::string where(const engine::CheckResult& r, std::uint32_t line) {
     if (line >= r.deck.lines.size()) return r.model.radioss ? r.model.radioss->run_name : "";
     const grammar::CardLine& l = r.deck.lines[line];
     return fmt::format("{}:{}", r.deck.sources.file(l.file).display_name, l.line);
 }
 
 // "file:line:column" of a span, for findings about a part.
-std::string where(const lint::CheckResult& r, const grammar::Span& span) {
+std::string where(const engine::CheckResult& r, const grammar::Span& span) {
     if (!span.valid()) return r.model.radioss ? r.model.radioss->run_name : "";
     return fmt::format("{}:{}:{}", r.deck.sources.file(span.file).display_name, span.line, span.column);
 }
@@ -72,7 +72,7 @@ std::string guidance(const preproc::Sol2sphPart& p) {
     return s;
 }
 
-nlohmann::ordered_json to_json(const Sol2sphArgs& args, const lint::CheckResult& r, const preproc::Sol2sph& s) {
+nlohmann::ordered_json to_json(const Sol2sphArgs& args, const engine::CheckResult& r, const preproc::Sol2sph& s) {
     nlohmann::ordered_json parts = nlohmann::ordered_json::array(), issues = nlohmann::ordered_json::array();
     for (const preproc::Sol2sphPart& p : s.parts)
         parts.push_back({{"solid_part", p.solid_part},
@@ -105,7 +105,7 @@ nlohmann::ordered_json to_json(const Sol2sphArgs& args, const lint::CheckResult&
             {"parts", std::move(parts)}, {"issues", std::move(issues)}};
 }
 
-void print_text(const Sol2sphArgs& args, const lint::CheckResult& r, const preproc::Sol2sph& s) {
+void print_text(const Sol2sphArgs& args, const engine::CheckResult& r, const preproc::Sol2sph& s) {
     fmt::print("{}: {} SOL2SPH part(s), {} particle(s)\n\n", args.deck, s.parts.size(), s.particles.size());
     std::vector<std::vector<std::string>> rows = {{"part", "Ndir", "SPH part", "bricks", "tetras", "particles",
                                                     "pitch", "element mass", "particle mass", "rel. diff", "check"}};
@@ -138,9 +138,9 @@ void print_text(const Sol2sphArgs& args, const lint::CheckResult& r, const prepr
 }
 
 int run_sol2sph(const Sol2sphArgs& args) {
-    lint::CheckOptions options;
+    engine::CheckOptions options;
     options.reader.include_paths = args.include_paths;
-    const lint::CheckResult r = lint::check_file(args.deck, options);
+    const engine::CheckResult r = engine::check_file(args.deck, options);
     if (!r.model.radioss) {
         fmt::print(stderr, "sphdeck: error: {} is not an OpenRadioss deck: SOL2SPH is a Radioss option "
                            "(/PROP/TYPE14 or /PROP/TYPE6 with Ndir)\n", args.deck);

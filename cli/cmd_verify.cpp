@@ -9,14 +9,14 @@
 
 #include "cli/commands.hpp"
 #include "cli/text_table.hpp"
-#include "refsolver/verification/cases.hpp"
-#include "refsolver/verification/report.hpp"
+#include "verify/cases.hpp"
+#include "verify/report.hpp"
 
 namespace sphdeck::cli {
 namespace {
 
 namespace fs = std::filesystem;
-namespace verification = refsolver::verification;
+namespace verification = sphdeck::verify;
 
 struct VerifyArgs {
     std::string which = "all";

@@ -4,8 +4,6 @@
 #include <nlohmann/json.hpp>
 
 #include "diag/render_text.hpp"
-#include "lint/registry.hpp"
-#include "lint/rule_pages.hpp"
 
 namespace sphdeck::diag {
 namespace {
@@ -34,9 +32,11 @@ json include_chain(const grammar::Span& span, const grammar::SourceMap& sources)
 
 class JsonReport final : public Report {
 public:
+    explicit JsonReport(const RuleCatalog& rules) : rules_(rules) {}
+
     void add(const grammar::SourceMap& sources, const std::vector<Diagnostic>& diagnostics) override {
         for (const Diagnostic& d : diagnostics) {
-            const lint::RuleInfo* rule = lint::find_rule(d.code);
+            const RuleMeta* rule = rules_.find(d.code);
             json item = {{"code", d.code},
                          {"name", rule ? json(rule->name) : json(nullptr)},
                          {"severity", to_string(d.severity)},
@@ -50,7 +50,7 @@ public:
             }
             item["notes"] = std::move(notes);
             item["include_chain"] = include_chain(d.span, sources);
-            item["url"] = rule ? json(lint::rule_url(*rule)) : json(nullptr);
+            item["url"] = rule ? json(rule->url) : json(nullptr);
             diagnostics_.push_back(std::move(item));
         }
     }
@@ -72,11 +72,12 @@ public:
     }
 
 private:
+    const RuleCatalog& rules_;
     json diagnostics_ = json::array();
 };
 
 }  // namespace
 
-std::unique_ptr<Report> make_json_report() { return std::make_unique<JsonReport>(); }
+std::unique_ptr<Report> make_json_report(const RuleCatalog& rules) { return std::make_unique<JsonReport>(rules); }
 
 }  // namespace sphdeck::diag

@@ -4,10 +4,12 @@
 #include <memory>
 
 #include "diag/report.hpp"
+#include "diag/rule_catalog.hpp"
 
 namespace sphdeck::diag {
 
 // {"version", "diagnostics": [...], "summary": {...}}; see docs/json.md for every field.
-std::unique_ptr<Report> make_json_report();
+// `rules` names the findings' rules and links their pages; it must outlive the report.
+std::unique_ptr<Report> make_json_report(const RuleCatalog& rules);
 
 }  // namespace sphdeck::diag

@@ -8,8 +8,6 @@
 #include <nlohmann/json.hpp>
 
 #include "diag/render_text.hpp"
-#include "lint/registry.hpp"
-#include "lint/rule_pages.hpp"
 
 namespace sphdeck::diag {
 namespace {
@@ -38,13 +36,13 @@ std::string percent_encoded(std::string_view path) {
     return out;
 }
 
-json rule_descriptor(const lint::RuleInfo& rule) {
+json rule_descriptor(const RuleMeta& rule) {
     return {{"id", rule.code},
             {"name", rule.name},
             {"shortDescription", {{"text", rule.summary}}},
-            {"fullDescription", {{"text", rule.doc.what}}},
-            {"help", {{"text", lint::rule_text_body(rule)}, {"markdown", lint::rule_markdown_body(rule)}}},
-            {"helpUri", lint::rule_url(rule)},
+            {"fullDescription", {{"text", rule.what}}},
+            {"help", {{"text", rule.help_text}, {"markdown", rule.help_markdown}}},
+            {"helpUri", rule.url},
             {"defaultConfiguration", {{"level", level(rule.severity)}}}};
 }
 
@@ -66,8 +64,9 @@ json physical_location(const grammar::Span& span, const grammar::SourceMap& sour
 
 class SarifReport final : public Report {
 public:
+    explicit SarifReport(const RuleCatalog& rules) : rules_(rules) {}
+
     void add(const grammar::SourceMap& sources, const std::vector<Diagnostic>& diagnostics) override {
-        const auto rules = lint::all_rules();
         for (const Diagnostic& d : diagnostics) {
             std::string text = d.message;
             json related = json::array();
@@ -82,8 +81,7 @@ public:
                 related.push_back(std::move(location));
             }
             json result = {{"ruleId", d.code}};
-            if (const lint::RuleInfo* rule = lint::find_rule(d.code))
-                result["ruleIndex"] = static_cast<std::size_t>(rule - rules.data());
+            if (auto index = rules_.index_of(d.code)) result["ruleIndex"] = *index;
             result["level"] = level(d.severity);
             result["message"] = {{"text", text}};
             if (sources.size() > 0) result["locations"] = json::array({physical_location(d.span, sources)});
@@ -94,11 +92,11 @@ public:
 
     std::string finish(const RunSummary& summary) const override {
         json rules = json::array();
-        for (const lint::RuleInfo& rule : lint::all_rules()) rules.push_back(rule_descriptor(rule));
+        for (const RuleMeta& rule : rules_.rules) rules.push_back(rule_descriptor(rule));
         json driver = {{"name", "sphdeck"},
                        {"version", SPHDECK_VERSION},
                        {"semanticVersion", SPHDECK_VERSION},
-                       {"informationUri", lint::project_url},
+                       {"informationUri", rules_.project_url},
                        {"rules", std::move(rules)}};
         json run = {{"tool", {{"driver", std::move(driver)}}}};
         std::error_code ec;
@@ -117,6 +115,7 @@ public:
     }
 
 private:
+    const RuleCatalog& rules_;
     json results_ = json::array();
 };
 
@@ -128,6 +127,6 @@ std::string sarif_uri(const grammar::SourceFile& file, bool& relative) {
     return relative ? percent_encoded(path) : "file://" + percent_encoded(path);
 }
 
-std::unique_ptr<Report> make_sarif_report() { return std::make_unique<SarifReport>(); }
+std::unique_ptr<Report> make_sarif_report(const RuleCatalog& rules) { return std::make_unique<SarifReport>(rules); }
 
 }  // namespace sphdeck::diag

@@ -6,10 +6,12 @@
 #include <memory>
 
 #include "diag/report.hpp"
+#include "diag/rule_catalog.hpp"
 
 namespace sphdeck::diag {
 
-std::unique_ptr<Report> make_sarif_report();
+// `rules` (every rule, listed in the driver) must outlive the report.
+std::unique_ptr<Report> make_sarif_report(const RuleCatalog& rules);
 
 // A file's artifactLocation.uri: percent-encoded, relative to the working directory (uriBaseId
 // %SRCROOT%) when the file lies below it, else an absolute file:// URI.

@@ -1,38 +1,16 @@
-// The whole check of one deck: read, decode, and (as rules land) lint. What `sphdeck check`,
-// the deck-driven tests and the benchmarks call.
+// Transitional forwarding header: the check pipeline moved to engine/check.hpp (issue 15). It stays
+// so that tests and branches written against lint::check_file / lint::check_buffer keep compiling;
+// new code includes engine/check.hpp. tests/test_layering.cpp allows this one file of lint/ to name
+// engine/; delete it once nothing includes it.
 #pragma once
 
-#include <string>
-#include <vector>
-
-#include "diag/diagnostic.hpp"
-#include "grammar/dyna/reader.hpp"
-#include "grammar/raw_deck.hpp"
-#include "grammar/read_deck.hpp"
-#include "lint/config.hpp"
-#include "lint/rule_context.hpp"
-#include "model/deck_check.hpp"
-#include "model/model.hpp"
+#include "engine/check.hpp"
 
 namespace sphdeck::lint {
 
-struct CheckOptions {
-    grammar::dyna::ReaderOptions reader;
-    RuleOptions rules;
-    Config config;  // sphdeck.toml merged with the command line; cli/ copies the solver into `rules`
-};
-
-struct CheckResult {
-    grammar::RawDeck deck;
-    std::vector<diag::Diagnostic> diagnostics;  // sorted by location
-    model::DeckSummary summary;
-    model::Model model;
-};
-
-// Throws std::runtime_error when the main file cannot be read.
-CheckResult check_file(const std::string& path, const CheckOptions& options = {});
-// `format`: the reader to use (LS-DYNA unless told; nullopt detects it from the text and name).
-CheckResult check_buffer(std::string text, const std::string& name, const CheckOptions& options = {},
-                         std::optional<grammar::DeckFormat> format = grammar::DeckFormat::LsDyna);
+using engine::CheckOptions;
+using engine::CheckResult;
+using engine::check_buffer;
+using engine::check_file;
 
 }  // namespace sphdeck::lint

@@ -12,6 +12,7 @@
 #include "diag/render_sarif.hpp"
 #include "lint/pipeline.hpp"
 #include "lint/registry.hpp"
+#include "lint/rule_catalog.hpp"
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
@@ -24,7 +25,7 @@ namespace {
 const std::string kBadReal = "*KEYWORD\n*CONTROL_TERMINATION\n$#  endtim\nabc\n*END\n";
 
 json json_of(const lint::CheckResult& r, const diag::RunSummary& summary = {}) {
-    auto report = diag::make_json_report();
+    auto report = diag::make_json_report(lint::rule_catalog());
     report->add(r.deck.sources, r.diagnostics);
     return json::parse(report->finish(summary));
 }
@@ -90,7 +91,7 @@ TEST_CASE("output: json survives bytes that are not UTF-8") {
 TEST_CASE("output: sarif lists every rule and maps results") {
     lint::CheckResult r = lint::check_buffer(kBadReal, "main.k");
     r.diagnostics[0].notes.push_back({grammar::Span{0, 2, 1, 21}, "keyword here"});
-    auto report = diag::make_sarif_report();
+    auto report = diag::make_sarif_report(lint::rule_catalog());
     report->add(r.deck.sources, r.diagnostics);
     const json log = json::parse(report->finish({}));
     CHECK(log["version"] == "2.1.0");
@@ -142,7 +143,7 @@ TEST_CASE("output: sarif validates against the SARIF 2.1.0 schema") {
     const std::string main = dir.write("main.k", "units\n*KEYWORD\n*INCLUDE\ninc/part.k\n*INCLUDE\nmissing.k\n*END\n");
     lint::CheckResult r = lint::check_file(main);
     r.diagnostics.push_back({"XX999", diag::Severity::Info, "unregistered", grammar::Span{}, {}});
-    auto report = diag::make_sarif_report();
+    auto report = diag::make_sarif_report(lint::rule_catalog());
     report->add(r.deck.sources, r.diagnostics);
     const std::string log = dir.write("out.sarif", report->finish({}));
     auto validates = [&](const std::string& path, const char* redirect) {

@@ -1,4 +1,4 @@
-// refsolver/verification/: the exact Riemann solver against verification.md §1's table, the error norms
+// verify/: the exact Riemann solver against verification.md §1's table, the error norms
 // and convergence order on synthetic data with known answers (§9), wave detection on synthetic
 // profiles, the surge-front rule, the Martin & Moyce table, and the verification decks passing `check`.
 #include <doctest/doctest.h>
@@ -11,14 +11,14 @@
 
 #include "lint/pipeline.hpp"
 #include "refsolver/simulation.hpp"
-#include "refsolver/verification/martin_moyce.hpp"
-#include "refsolver/verification/norms.hpp"
-#include "refsolver/verification/riemann.hpp"
-#include "refsolver/verification/sod_waves.hpp"
-#include "refsolver/verification/surge_front.hpp"
-#include "refsolver/verification/wave_detection.hpp"
+#include "verify/martin_moyce.hpp"
+#include "verify/norms.hpp"
+#include "verify/riemann.hpp"
+#include "verify/sod_waves.hpp"
+#include "verify/surge_front.hpp"
+#include "verify/wave_detection.hpp"
 
-using namespace sphdeck::refsolver::verification;
+using namespace sphdeck::verify;
 using doctest::Approx;
 
 namespace {

@@ -9,12 +9,12 @@
 #include <string>
 
 #include "io/svg_plot.hpp"
-#include "refsolver/verification/report.hpp"
+#include "verify/report.hpp"
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
 using namespace sphdeck;
-using namespace sphdeck::refsolver::verification;
+using namespace sphdeck::verify;
 
 namespace {
 

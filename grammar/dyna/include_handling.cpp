@@ -7,7 +7,7 @@
 
 namespace sphdeck::grammar::dyna {
 
-std::string read_include_text(const std::string& path);  // reader.cpp
+std::string read_include_text(const std::string& path, const FileOverlay* overlay = nullptr);  // reader.cpp
 
 namespace {
 constexpr std::size_t max_include_name = 236;  // *INCLUDE Remark 2, via dynareadout and pydyna
@@ -89,7 +89,7 @@ void DeckReader::open_include(const std::string& name, Span where, char suffix) 
                where);
         return;
     }
-    IncludeSearch search{std::filesystem::path(parent_source.path).parent_path(), main_directory_, include_paths_};
+    IncludeSearch search{std::filesystem::path(parent_source.path).parent_path(), main_directory_, include_paths_, options_.overlay};
     auto resolved = resolve_include(name, search);
     if (!resolved) {
         diag::Diagnostic d{"DK010", diag::Severity::Error, "include file '" + name + "' not found", where, {}};
@@ -119,7 +119,7 @@ void DeckReader::open_include(const std::string& name, Span where, char suffix) 
     child.include_line = where.line;
     child.depth = parent_source.depth + 1;
     try {
-        child.text = read_include_text(child.path);
+        child.text = read_include_text(child.path, options_.overlay);
     } catch (const std::exception& e) {
         report("DK010", diag::Severity::Error, std::string("include file '") + name + "' cannot be read: " + e.what(),
                where);

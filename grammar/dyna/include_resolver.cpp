@@ -1,7 +1,5 @@
 #include "grammar/dyna/include_resolver.hpp"
 
-#include <system_error>
-
 namespace sphdeck::grammar::dyna {
 namespace fs = std::filesystem;
 
@@ -25,14 +23,12 @@ std::vector<Candidate> candidates(const std::string& name, const IncludeSearch& 
 std::optional<ResolvedInclude> resolve_include(const std::string& name, const IncludeSearch& search) {
     const auto list = candidates(name, search);
     for (const auto& c : list) {
-        std::error_code ec;
-        if (fs::is_regular_file(c.path, ec)) return ResolvedInclude{c.path, c.why};
+        if (grammar::is_regular_file(c.path, search.overlay)) return ResolvedInclude{c.path, c.why};
     }
     // No file, but something of that name (a directory): reading it says what it is, where
     // "not found" would send the user looking for a file that is there.
     for (const auto& c : list) {
-        std::error_code ec;
-        if (fs::exists(c.path, ec)) return ResolvedInclude{c.path, c.why};
+        if (file_exists(c.path, search.overlay)) return ResolvedInclude{c.path, c.why};
     }
     return std::nullopt;
 }

@@ -7,12 +7,15 @@
 #include <string>
 #include <vector>
 
+#include "grammar/file_overlay.hpp"
+
 namespace sphdeck::grammar::dyna {
 
 struct IncludeSearch {
     std::filesystem::path including_directory;  // folder of the file with the *INCLUDE
     std::filesystem::path main_directory;       // folder of the main deck
     std::vector<std::filesystem::path> include_paths;  // *INCLUDE_PATH(_RELATIVE) entries, then --include-path
+    const FileOverlay* overlay = nullptr;  // in-memory texts that count as files
 };
 
 struct ResolvedInclude {

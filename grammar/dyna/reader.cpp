@@ -110,7 +110,7 @@ RawDeck read_file(const std::string& path, const ReaderOptions& options) {
     SourceFile main;
     main.path = path;
     main.display_name = path;
-    main.text = read_text_file(path);
+    main.text = read_file_text(path, options.overlay);
     return read_main(std::move(main), std::filesystem::path(path).parent_path(), options);
 }
 
@@ -123,8 +123,8 @@ RawDeck read_buffer(std::string text, const std::string& display_name, const std
     return read_main(std::move(main), base_directory, options);
 }
 
-std::string read_include_text(const std::string& path) {
-    std::string text = read_text_file(path);
+std::string read_include_text(const std::string& path, const FileOverlay* overlay) {
+    std::string text = read_file_text(path, overlay);
     // An empty include is fine; a binary one (a d3plot named by mistake) is not parsed as cards.
     if (auto why = binary_or_empty(std::string_view(text).substr(0, 64 * 1024)); why && !text.empty())
         throw std::runtime_error("'" + path + "' is not a keyword deck: " + *why);

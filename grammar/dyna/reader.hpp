@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "grammar/file_overlay.hpp"
 #include "grammar/raw_deck.hpp"
 
 namespace sphdeck::grammar::dyna {
@@ -11,6 +12,7 @@ namespace sphdeck::grammar::dyna {
 struct ReaderOptions {
     std::vector<std::string> include_paths;  // extra directories searched after the deck's own
     unsigned max_include_depth = 200;        // deeper nesting is reported, not followed
+    const FileOverlay* overlay = nullptr;    // texts in memory read instead of the files (engine/)
 };
 
 // Reads a deck and everything it includes. Throws std::runtime_error only when the main

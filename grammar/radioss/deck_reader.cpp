@@ -7,7 +7,7 @@
 #include "grammar/fields.hpp"
 
 namespace sphdeck::grammar::dyna {
-std::string read_include_text(const std::string& path);  // grammar/dyna/reader.cpp
+std::string read_include_text(const std::string& path, const FileOverlay* overlay = nullptr);  // grammar/dyna/reader.cpp
 }
 
 namespace sphdeck::grammar::radioss {
@@ -162,7 +162,7 @@ void DeckReader::on_include(const char* begin, const char* end, std::string_view
     }
     const SourceFile& parent = deck_.sources.file(f.id);
     std::vector<std::filesystem::path> paths(options_.include_paths.begin(), options_.include_paths.end());
-    dyna::IncludeSearch search{std::filesystem::path(parent.path).parent_path(), main_directory_, paths};
+    dyna::IncludeSearch search{std::filesystem::path(parent.path).parent_path(), main_directory_, paths, options_.overlay};
     auto resolved = dyna::resolve_include(file_name, search);
     if (!resolved) {
         diag::Diagnostic d{"DK010", diag::Severity::Error, "include file '" + file_name + "' not found", where, {}};
@@ -192,7 +192,7 @@ void DeckReader::on_include(const char* begin, const char* end, std::string_view
     child.include_line = f.line;
     child.depth = parent.depth + 1;
     try {
-        child.text = dyna::read_include_text(child.path);
+        child.text = dyna::read_include_text(child.path, options_.overlay);
     } catch (const std::exception& e) {
         report("DK010", diag::Severity::Error, "include file '" + file_name + "' cannot be read: " + e.what(), where);
         return;

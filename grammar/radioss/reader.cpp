@@ -7,7 +7,7 @@
 #include "grammar/radioss/line_grammar.hpp"
 
 namespace sphdeck::grammar::dyna {
-std::string read_include_text(const std::string& path);  // grammar/dyna/reader.cpp
+std::string read_include_text(const std::string& path, const FileOverlay* overlay = nullptr);  // grammar/dyna/reader.cpp
 }
 
 namespace sphdeck::grammar::radioss {
@@ -100,13 +100,12 @@ void read_engine(RawDeck& deck, const std::string& starter_name, const fs::path&
     auto name = engine_file_name(fs::path(starter_name).filename().string());
     if (!name) return;
     fs::path path = directory / *name;
-    std::error_code ec;
-    if (!fs::is_regular_file(path, ec)) return;
+    if (!is_regular_file(path, options.overlay)) return;
     SourceFile engine;
     engine.path = path.string();
     engine.display_name = (fs::path(starter_name).parent_path() / *name).string();
     try {
-        engine.text = dyna::read_include_text(engine.path);
+        engine.text = dyna::read_include_text(engine.path, options.overlay);
     } catch (const std::exception& e) {
         deck.diagnostics.push_back({"DK010", diag::Severity::Error,
                                     "engine deck '" + engine.display_name + "' cannot be read: " + e.what(), Span{}, {}});
@@ -172,7 +171,7 @@ RawDeck read_file(const std::string& path, const ReaderOptions& options) {
     SourceFile main;
     main.path = path;
     main.display_name = path;
-    main.text = dyna::read_include_text(path);
+    main.text = dyna::read_include_text(path, options.overlay);
     return read_main(std::move(main), fs::path(path).parent_path(), options);
 }
 

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <span>
 
-namespace sphdeck::refsolver::verification {
+namespace sphdeck::verify {
 
 // What the errors are divided by. Pointwise: the same norm of the exact field (§9.1 as written).
 // MaxAbs: max |f_exact| times the same weights, for fields that cross zero (§9.1's "absolute scale").
@@ -29,4 +29,4 @@ double observed_order(double error_coarse, double error_fine, double ratio);
 // |value - reference| / |reference|; NaN when the reference is 0.
 double relative_error(double value, double reference);
 
-}  // namespace sphdeck::refsolver::verification
+}  // namespace sphdeck::verify

@@ -1,8 +1,8 @@
-#include "refsolver/verification/sod_waves.hpp"
+#include "verify/sod_waves.hpp"
 
-#include "refsolver/verification/wave_detection.hpp"
+#include "verify/wave_detection.hpp"
 
-namespace sphdeck::refsolver::verification {
+namespace sphdeck::verify {
 
 SodWaves detect_sod_waves(std::span<const double> x, std::span<const double> rho, std::span<const double> u,
                           const RiemannSolution& exact, double lo, double hi, double bin_width) {
@@ -24,4 +24,4 @@ SodWaves exact_sod_waves(const RiemannSolution& exact, double x0, double t) {
     return {x0 + exact.left_head * t, x0 + exact.left_tail * t, x0 + exact.u_star * t, x0 + exact.right_head * t};
 }
 
-}  // namespace sphdeck::refsolver::verification
+}  // namespace sphdeck::verify

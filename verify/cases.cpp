@@ -1,6 +1,6 @@
-#include "refsolver/verification/cases.hpp"
+#include "verify/cases.hpp"
 
-namespace sphdeck::refsolver::verification {
+namespace sphdeck::verify {
 
 const std::vector<VerificationCase>& verification_cases() {
     static const std::vector<VerificationCase> cases = {
@@ -11,4 +11,4 @@ const std::vector<VerificationCase>& verification_cases() {
     return cases;
 }
 
-}  // namespace sphdeck::refsolver::verification
+}  // namespace sphdeck::verify

@@ -1,10 +1,10 @@
-#include "refsolver/verification/wave_detection.hpp"
+#include "verify/wave_detection.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-namespace sphdeck::refsolver::verification {
+namespace sphdeck::verify {
 
 Profile binned_profile(std::span<const double> x, std::span<const double> f, double lo, double hi, double width) {
     if (x.size() != f.size()) throw std::invalid_argument("binned_profile: x and f differ in length");
@@ -69,4 +69,4 @@ std::optional<LineFit> fit_line(const Profile& profile, double x_lo, double x_hi
     return fit;
 }
 
-}  // namespace sphdeck::refsolver::verification
+}  // namespace sphdeck::verify

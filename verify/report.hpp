@@ -7,9 +7,9 @@
 #include <string_view>
 #include <vector>
 
-#include "refsolver/verification/case_result.hpp"
+#include "verify/case_result.hpp"
 
-namespace sphdeck::refsolver::verification {
+namespace sphdeck::verify {
 
 // Header row, then one row per check: quantity, value, reference, error, tolerance, PASS/FAIL.
 std::vector<std::vector<std::string>> check_table(const CaseResult& result);
@@ -18,4 +18,4 @@ std::vector<std::vector<std::string>> check_table(const CaseResult& result);
 std::string case_markdown(const CaseResult& result, bool quick, std::string_view figure);
 std::string summary_markdown(std::span<const CaseResult> results, bool quick);
 
-}  // namespace sphdeck::refsolver::verification
+}  // namespace sphdeck::verify

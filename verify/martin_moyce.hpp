@@ -6,7 +6,7 @@
 #include <span>
 #include <string_view>
 
-namespace sphdeck::refsolver::verification {
+namespace sphdeck::verify {
 
 struct FrontPoint {
     double T, z_over_a;
@@ -32,4 +32,4 @@ inline const std::array<FrontSeries, 2>& martin_moyce() {
     return series;
 }
 
-}  // namespace sphdeck::refsolver::verification
+}  // namespace sphdeck::verify

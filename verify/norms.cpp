@@ -1,11 +1,11 @@
-#include "refsolver/verification/norms.hpp"
+#include "verify/norms.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-namespace sphdeck::refsolver::verification {
+namespace sphdeck::verify {
 
 ErrorNorms error_norms(std::span<const double> values, std::span<const double> exact, std::span<const double> volumes,
                        NormScale scale) {
@@ -49,4 +49,4 @@ double relative_error(double value, double reference) {
                           : std::numeric_limits<double>::quiet_NaN();
 }
 
-}  // namespace sphdeck::refsolver::verification
+}  // namespace sphdeck::verify

@@ -1,9 +1,9 @@
-#include "refsolver/verification/report.hpp"
+#include "verify/report.hpp"
 
 #include <cmath>
 #include <fmt/format.h>
 
-namespace sphdeck::refsolver::verification {
+namespace sphdeck::verify {
 namespace {
 
 std::string g4(double v) { return std::isfinite(v) ? fmt::format("{:.4g}", v) : "n/a"; }
@@ -91,4 +91,4 @@ std::string summary_markdown(std::span<const CaseResult> results, bool quick) {
     return md;
 }
 
-}  // namespace sphdeck::refsolver::verification
+}  // namespace sphdeck::verify

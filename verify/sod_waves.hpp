@@ -9,9 +9,9 @@
 #include <optional>
 #include <span>
 
-#include "refsolver/verification/riemann.hpp"
+#include "verify/riemann.hpp"
 
-namespace sphdeck::refsolver::verification {
+namespace sphdeck::verify {
 
 struct SodWaves {
     std::optional<double> rarefaction_head, rarefaction_tail, contact, shock;
@@ -24,4 +24,4 @@ SodWaves detect_sod_waves(std::span<const double> x, std::span<const double> rho
 // Exact positions at time t for a diaphragm at x0.
 SodWaves exact_sod_waves(const RiemannSolution& exact, double x0, double t);
 
-}  // namespace sphdeck::refsolver::verification
+}  // namespace sphdeck::verify

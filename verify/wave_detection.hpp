@@ -10,7 +10,7 @@
 #include <span>
 #include <vector>
 
-namespace sphdeck::refsolver::verification {
+namespace sphdeck::verify {
 
 // Bin centres (mean x of the particles in the bin) and mean values, ascending in x; empty bins left out.
 struct Profile {
@@ -34,4 +34,4 @@ struct LineFit {
 // f between f_a and f_b (either order); nullopt with fewer than two points or a flat line.
 std::optional<LineFit> fit_line(const Profile& profile, double x_lo, double x_hi, double f_a, double f_b);
 
-}  // namespace sphdeck::refsolver::verification
+}  // namespace sphdeck::verify

@@ -1,9 +1,9 @@
-#include "refsolver/verification/riemann.hpp"
+#include "verify/riemann.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace sphdeck::refsolver::verification {
+namespace sphdeck::verify {
 namespace {
 
 double sound_speed(const GasState& s, double gamma) { return std::sqrt(gamma * s.p / s.rho); }
@@ -102,4 +102,4 @@ GasState RiemannSolution::sample(double xi) const {
             right.p * std::pow(base, 2.0 * gamma / g1)};
 }
 
-}  // namespace sphdeck::refsolver::verification
+}  // namespace sphdeck::verify

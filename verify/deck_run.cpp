@@ -1,4 +1,4 @@
-#include "refsolver/verification/deck_run.hpp"
+#include "verify/deck_run.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -7,9 +7,9 @@
 #include <fmt/format.h>
 
 #include "diag/diagnostic.hpp"
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 
-namespace sphdeck::refsolver::verification {
+namespace sphdeck::verify {
 
 DeckRun run_deck(const std::filesystem::path& deck, const CaseOptions& options,
                  const std::function<void(const Simulation&)>& observer) {
@@ -17,9 +17,9 @@ DeckRun run_deck(const std::filesystem::path& deck, const CaseOptions& options,
     run.record.deck = deck.filename().string();
     run.record.threads = options.threads;
     if (options.progress) options.progress(fmt::format("running {}", deck.string()));
-    lint::CheckResult checked;
+    engine::CheckResult checked;
     try {
-        checked = lint::check_file(deck.string());
+        checked = engine::check_file(deck.string());
     } catch (const std::exception& e) {
         run.failure = fmt::format("cannot read {}: {}", deck.string(), e.what());
         return run;
@@ -83,4 +83,4 @@ bool add_run(CaseResult& result, const DeckRun& run) {
     return false;
 }
 
-}  // namespace sphdeck::refsolver::verification
+}  // namespace sphdeck::verify

@@ -7,7 +7,7 @@
 #include <optional>
 #include <span>
 
-namespace sphdeck::refsolver::verification {
+namespace sphdeck::verify {
 
 std::optional<double> surge_front(std::span<const double> x, std::span<const double> y,
                                   std::span<const std::uint8_t> active, double spacing, double floor_band);
@@ -26,4 +26,4 @@ std::optional<FrontDelay> best_front_delay(std::span<const double> T, std::span<
                                            std::span<const double> reference_T, std::span<const double> reference_z,
                                            double max_delay, double step);
 
-}  // namespace sphdeck::refsolver::verification
+}  // namespace sphdeck::verify

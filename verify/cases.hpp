@@ -5,9 +5,9 @@
 #include <string_view>
 #include <vector>
 
-#include "refsolver/verification/case_result.hpp"
+#include "verify/case_result.hpp"
 
-namespace sphdeck::refsolver::verification {
+namespace sphdeck::verify {
 
 // Sod shock tube (§1): L1 errors of rho, u, p at two resolutions, wave positions, convergence order.
 CaseResult run_sod(const CaseOptions& options);
@@ -25,4 +25,4 @@ struct VerificationCase {
 // In the order `sphdeck verify all` runs them.
 const std::vector<VerificationCase>& verification_cases();
 
-}  // namespace sphdeck::refsolver::verification
+}  // namespace sphdeck::verify

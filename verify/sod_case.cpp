@@ -4,13 +4,13 @@
 #include <fmt/format.h>
 
 #include "io/svg_plot.hpp"
-#include "refsolver/verification/cases.hpp"
-#include "refsolver/verification/deck_run.hpp"
-#include "refsolver/verification/norms.hpp"
-#include "refsolver/verification/riemann.hpp"
-#include "refsolver/verification/sod_waves.hpp"
+#include "verify/cases.hpp"
+#include "verify/deck_run.hpp"
+#include "verify/norms.hpp"
+#include "verify/riemann.hpp"
+#include "verify/sod_waves.hpp"
 
-namespace sphdeck::refsolver::verification {
+namespace sphdeck::verify {
 namespace {
 
 constexpr double gamma_gas = 1.4, x0 = 0.5, tube_length = 1.0;
@@ -158,4 +158,4 @@ CaseResult run_sod(const CaseOptions& options) {
     return result;
 }
 
-}  // namespace sphdeck::refsolver::verification
+}  // namespace sphdeck::verify

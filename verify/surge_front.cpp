@@ -1,10 +1,10 @@
-#include "refsolver/verification/surge_front.hpp"
+#include "verify/surge_front.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
-namespace sphdeck::refsolver::verification {
+namespace sphdeck::verify {
 
 std::optional<double> surge_front(std::span<const double> x, std::span<const double> y,
                                   std::span<const std::uint8_t> active, double spacing, double floor_band) {
@@ -52,4 +52,4 @@ std::optional<FrontDelay> best_front_delay(std::span<const double> T, std::span<
     return best;
 }
 
-}  // namespace sphdeck::refsolver::verification
+}  // namespace sphdeck::verify

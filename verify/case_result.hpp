@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-namespace sphdeck::refsolver::verification {
+namespace sphdeck::verify {
 
 struct Check {
     enum class Bound { AtMost, AtLeast };  // pass when error <= tolerance, or error >= tolerance
@@ -65,4 +65,4 @@ struct CaseOptions {
     std::function<void(std::string_view)> progress;  // a line of progress ("running sod_2d_400.k"), may be empty
 };
 
-}  // namespace sphdeck::refsolver::verification
+}  // namespace sphdeck::verify

@@ -7,9 +7,15 @@
 #include <string>
 
 #include "refsolver/simulation.hpp"
-#include "refsolver/verification/case_result.hpp"
+#include "verify/case_result.hpp"
 
-namespace sphdeck::refsolver::verification {
+namespace sphdeck::verify {
+
+// The solver types the cases drive (refsolver/ is a library that runs a model).
+using refsolver::ParticleState;
+using refsolver::RunOptions;
+using refsolver::Simulation;
+using refsolver::Unsupported;
 
 struct DeckRun {
     RunRecord record;
@@ -34,4 +40,4 @@ Check reached_end_time(const DeckRun& run);
 // set) or the run was stopped (its record, the failed end-time check and the reason are added).
 bool add_run(CaseResult& result, const DeckRun& run);
 
-}  // namespace sphdeck::refsolver::verification
+}  // namespace sphdeck::verify

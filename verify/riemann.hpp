@@ -6,7 +6,7 @@
 
 #include <optional>
 
-namespace sphdeck::refsolver::verification {
+namespace sphdeck::verify {
 
 struct GasState {
     double rho = 0, u = 0, p = 0;
@@ -32,4 +32,4 @@ struct RiemannSolution {
 // (Toro eq. 4.40: 2 (c_L + c_R) / (gamma - 1) <= u_R - u_L), which this solver does not handle.
 std::optional<RiemannSolution> solve_riemann(const GasState& left, const GasState& right, double gamma);
 
-}  // namespace sphdeck::refsolver::verification
+}  // namespace sphdeck::verify

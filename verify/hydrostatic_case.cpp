@@ -6,12 +6,12 @@
 #include <fmt/format.h>
 
 #include "io/svg_plot.hpp"
-#include "refsolver/verification/cases.hpp"
-#include "refsolver/verification/deck_run.hpp"
-#include "refsolver/verification/norms.hpp"
-#include "refsolver/verification/wave_detection.hpp"
+#include "verify/cases.hpp"
+#include "verify/deck_run.hpp"
+#include "verify/norms.hpp"
+#include "verify/wave_detection.hpp"
 
-namespace sphdeck::refsolver::verification {
+namespace sphdeck::verify {
 namespace {
 
 constexpr double rho0 = 1000.0, gravity = 9.81;  // as in the decks (make_hydrostatic.py)
@@ -129,4 +129,4 @@ CaseResult run_hydrostatic(const CaseOptions& options) {
     return result;
 }
 
-}  // namespace sphdeck::refsolver::verification
+}  // namespace sphdeck::verify

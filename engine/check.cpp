@@ -1,11 +1,11 @@
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 
-#include "lint/suppressions.hpp"
 #include "grammar/read_deck.hpp"
+#include "lint/suppressions.hpp"
 #include "model/model_builder.hpp"
 #include "model/radioss_decoder.hpp"
 
-namespace sphdeck::lint {
+namespace sphdeck::engine {
 namespace {
 CheckResult finish(grammar::RawDeck deck, const CheckOptions& options) {
     CheckResult result;
@@ -14,16 +14,23 @@ CheckResult finish(grammar::RawDeck deck, const CheckOptions& options) {
     result.model = grammar::format_of(result.deck) == grammar::DeckFormat::Radioss
                        ? model::build_radioss_model(result.deck, result.diagnostics, &result.summary)
                        : model::build_model(result.deck, result.diagnostics, &result.summary);
-    RuleContext context(result.model, result.deck, options.rules, result.diagnostics);
-    run_rules(context);
+    lint::RuleContext context(result.model, result.deck, options.rules, result.diagnostics);
+    lint::run_rules(context);
     diag::sort_by_location(result.diagnostics);
     // What the deck's own comments and the configuration say about the findings: every consumer
     // (the CLI, the deck tests, an editor) sees the same list.
-    apply_suppressions(result.deck.sources, result.diagnostics, grammar::format_of(result.deck));
-    apply_rule_settings(options.config, result.diagnostics);
+    lint::apply_suppressions(result.deck.sources, result.diagnostics, grammar::format_of(result.deck));
+    lint::apply_rule_settings(options.config, result.diagnostics);
+    result.includes = include_graph(result.deck.sources);
     return result;
 }
 }  // namespace
+
+CheckResult check_deck(const std::string& path, const Documents& documents, const CheckOptions& options) {
+    CheckOptions with_documents = options;
+    if (!documents.empty()) with_documents.reader.overlay = &documents;
+    return finish(grammar::read_deck(path, with_documents.reader), with_documents);
+}
 
 CheckResult check_file(const std::string& path, const CheckOptions& options) {
     return finish(grammar::read_deck(path, options.reader), options);
@@ -34,4 +41,4 @@ CheckResult check_buffer(std::string text, const std::string& name, const CheckO
     return finish(grammar::read_deck_buffer(std::move(text), name, ".", options.reader, format), options);
 }
 
-}  // namespace sphdeck::lint
+}  // namespace sphdeck::engine

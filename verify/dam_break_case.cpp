@@ -6,13 +6,13 @@
 #include <fmt/format.h>
 
 #include "io/svg_plot.hpp"
-#include "refsolver/verification/cases.hpp"
-#include "refsolver/verification/deck_run.hpp"
-#include "refsolver/verification/martin_moyce.hpp"
-#include "refsolver/verification/norms.hpp"
-#include "refsolver/verification/surge_front.hpp"
+#include "verify/cases.hpp"
+#include "verify/deck_run.hpp"
+#include "verify/martin_moyce.hpp"
+#include "verify/norms.hpp"
+#include "verify/surge_front.hpp"
 
-namespace sphdeck::refsolver::verification {
+namespace sphdeck::verify {
 namespace {
 
 constexpr double gravity = 9.81;       // as in the decks
@@ -110,4 +110,4 @@ CaseResult run_dam_break(const CaseOptions& options) {
     return result;
 }
 
-}  // namespace sphdeck::refsolver::verification
+}  // namespace sphdeck::verify

@@ -1,0 +1,50 @@
+// "Check these documents": the one pipeline behind `sphdeck check`, the other commands that read a
+// deck, `sphdeck verify`, the deck-driven tests and (next) the editor server. Read the deck and its
+// includes (from disk, or from in-memory documents laid over it), decode and build the model, run
+// the rules, apply suppressions and settings. lint/ owns the rules and never reads a file; this does.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "diag/diagnostic.hpp"
+#include "engine/documents.hpp"
+#include "engine/include_graph.hpp"
+#include "grammar/dyna/reader.hpp"
+#include "grammar/raw_deck.hpp"
+#include "grammar/read_deck.hpp"
+#include "lint/config.hpp"
+#include "lint/rule_context.hpp"
+#include "model/deck_check.hpp"
+#include "model/model.hpp"
+
+namespace sphdeck::engine {
+
+struct CheckOptions {
+    grammar::dyna::ReaderOptions reader;  // its `overlay` is set by check_deck from the documents
+    lint::RuleOptions rules;
+    lint::Config config;  // sphdeck.toml merged with the command line; cli/ copies the solver into `rules`
+};
+
+struct CheckResult {
+    grammar::RawDeck deck;
+    std::vector<diag::Diagnostic> diagnostics;  // sorted by location
+    model::DeckSummary summary;
+    model::Model model;
+    IncludeGraph includes;  // the files the deck pulled in
+};
+
+// Checks the deck at `path`; its text and its includes' come from `documents` where they hold the
+// path, else from disk. Throws std::runtime_error when the main deck cannot be read.
+CheckResult check_deck(const std::string& path, const Documents& documents, const CheckOptions& options = {});
+
+// The same with every file from disk.
+CheckResult check_file(const std::string& path, const CheckOptions& options = {});
+
+// A deck that exists only in memory under `name` (tests, fuzzing); relative includes from ".".
+// `format`: the reader to use (LS-DYNA unless told; nullopt detects it from the text and name).
+CheckResult check_buffer(std::string text, const std::string& name, const CheckOptions& options = {},
+                         std::optional<grammar::DeckFormat> format = grammar::DeckFormat::LsDyna);
+
+}  // namespace sphdeck::engine

@@ -1,0 +1,50 @@
+#include "grammar/file_overlay.hpp"
+
+#include <system_error>
+
+#include "grammar/text_file.hpp"
+
+namespace sphdeck::grammar {
+namespace fs = std::filesystem;
+
+fs::path FileOverlay::key(const fs::path& path) {
+    std::error_code ec;
+    fs::path absolute = fs::absolute(path, ec);
+    if (ec) absolute = path;
+    fs::path canonical = fs::weakly_canonical(absolute, ec);
+    return ec ? absolute.lexically_normal() : canonical;
+}
+
+void FileOverlay::set(const fs::path& path, std::string text) { texts_[key(path)] = std::move(text); }
+
+void FileOverlay::erase(const fs::path& path) { texts_.erase(key(path)); }
+
+const std::string* FileOverlay::find(const fs::path& path) const {
+    if (texts_.empty()) return nullptr;  // the common case (the command line) pays nothing
+    auto it = texts_.find(key(path));
+    return it == texts_.end() ? nullptr : &it->second;
+}
+
+bool is_regular_file(const fs::path& path, const FileOverlay* overlay) {
+    if (overlay && overlay->find(path)) return true;
+    std::error_code ec;
+    return fs::is_regular_file(path, ec);
+}
+
+bool file_exists(const fs::path& path, const FileOverlay* overlay) {
+    if (overlay && overlay->find(path)) return true;
+    std::error_code ec;
+    return fs::exists(path, ec);
+}
+
+std::string read_file_text(const std::string& path, const FileOverlay* overlay) {
+    if (const std::string* text = overlay ? overlay->find(path) : nullptr) return *text;
+    return read_text_file(path);
+}
+
+std::string read_file_prefix(const std::string& path, std::size_t bytes, const FileOverlay* overlay) {
+    if (const std::string* text = overlay ? overlay->find(path) : nullptr) return text->substr(0, bytes);
+    return read_text_prefix(path, bytes);
+}
+
+}  // namespace sphdeck::grammar

@@ -1,0 +1,37 @@
+// Texts held in memory that stand in for files of the same path: an editor's unsaved buffers, or
+// a test's decks. The readers ask the overlay before the file system, for the main deck, its
+// includes and the Radioss engine deck alike, so an edited include is read as the editor holds it.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+namespace sphdeck::grammar {
+
+class FileOverlay {
+public:
+    // Adds or replaces the text of `path` (relative paths are taken from the working directory).
+    void set(const std::filesystem::path& path, std::string text);
+    void erase(const std::filesystem::path& path);
+    // The text held for `path`, or nullptr when the file system has the say.
+    const std::string* find(const std::filesystem::path& path) const;
+    bool empty() const { return texts_.empty(); }
+    const std::map<std::filesystem::path, std::string>& texts() const { return texts_; }  // keyed by key()
+
+    // The name both sides are compared by: absolute, normalised, symbolic links resolved where the
+    // folders exist (a buffer not yet saved has no file).
+    static std::filesystem::path key(const std::filesystem::path& path);
+
+private:
+    std::map<std::filesystem::path, std::string> texts_;
+};
+
+// The file access the readers use: the overlay's text when it holds the path, else the disk's.
+// `overlay` may be null (disk only). read_file_text throws like read_text_file (grammar/text_file.hpp).
+bool is_regular_file(const std::filesystem::path& path, const FileOverlay* overlay);
+bool file_exists(const std::filesystem::path& path, const FileOverlay* overlay);
+std::string read_file_text(const std::string& path, const FileOverlay* overlay);
+std::string read_file_prefix(const std::string& path, std::size_t bytes, const FileOverlay* overlay);
+
+}  // namespace sphdeck::grammar

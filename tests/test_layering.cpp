@@ -1,0 +1,97 @@
+// The parts of the program and the one-way arrows between them (docs/architecture.md, "Parts and
+// arrows"): each part may include only the parts listed here. A new arrow is a design change: change
+// this table and the picture together.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// part -> the parts its files may include (its own always). grammar and diag share one seam each
+// way: a reader's output carries diagnostics, a diagnostic carries a span (see kFileExceptions).
+const std::map<std::string, std::set<std::string>> kAllowed = {
+    {"io", {}},
+    {"diag", {"grammar"}},
+    {"grammar", {"diag"}},
+    {"model", {"grammar", "diag"}},
+    {"preproc", {"model", "grammar", "diag"}},
+    {"lint", {"preproc", "model", "grammar", "diag"}},
+    {"refsolver", {"preproc", "model", "grammar", "diag"}},
+    {"engine", {"lint", "preproc", "model", "grammar", "diag"}},
+    {"verify", {"engine", "refsolver", "lint", "preproc", "model", "grammar", "diag", "io"}},
+    {"cli", {"verify", "engine", "refsolver", "lint", "preproc", "model", "grammar", "diag", "io"}},
+};
+
+// The narrow seams: (part, included header) pairs allowed although the part is not, and single
+// files allowed one more arrow.
+const std::set<std::pair<std::string, std::string>> kHeaderOnly = {
+    {"diag", "grammar/source_map.hpp"},  // a diagnostic's span
+    {"grammar", "diag/diagnostic.hpp"},  // the readers' findings
+};
+const std::map<std::string, std::string> kFileExceptions = {
+    // Transitional: forwards lint::check_file & co. to engine/ for branches written before issue 15.
+    {"lint/pipeline.hpp", "engine"},
+};
+
+struct Violation {
+    std::string file;
+    int line;
+    std::string header;
+};
+
+struct Scan {
+    std::vector<Violation> violations;
+    std::size_t includes = 0;  // project includes seen, to know the scan read the tree
+};
+
+Scan scan() {
+    const fs::path root(SPHDECK_SOURCE_DIR);
+    const std::regex include(R"(^\s*#\s*include\s*"(([a-z_]+)/[^"]*)\")");
+    Scan out;
+    for (const auto& [part, allowed] : kAllowed) {
+        if (!fs::is_directory(root / part)) continue;
+        for (const auto& entry : fs::recursive_directory_iterator(root / part)) {
+            const std::string ext = entry.path().extension().string();
+            if (ext != ".cpp" && ext != ".hpp" && ext != ".h") continue;
+            const std::string relative = fs::relative(entry.path(), root).generic_string();
+            std::ifstream in(entry.path());
+            std::string text;
+            int line = 0;
+            while (std::getline(in, text)) {
+                ++line;
+                std::smatch m;
+                if (!std::regex_search(text, m, include)) continue;
+                ++out.includes;
+                const std::string target = m[2];
+                if (target == part || allowed.count(target) || !kAllowed.count(target)) continue;
+                if (kHeaderOnly.count({part, m[1]})) continue;
+                auto exception = kFileExceptions.find(relative);
+                if (exception != kFileExceptions.end() && exception->second == target) continue;
+                out.violations.push_back({relative, line, m[1]});
+            }
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("layering: every part includes only the parts below it (docs/architecture.md)") {
+    const Scan s = scan();
+    CHECK(s.includes > 300);  // about 450 in November 2026
+    for (const Violation& v : s.violations)
+        FAIL_CHECK(v.file << ":" << v.line << " includes \"" << v.header << "\", which its part may not import");
+}
+
+TEST_CASE("layering: every part named in the table is a folder of the tree") {
+    const fs::path root(SPHDECK_SOURCE_DIR);
+    for (const auto& [part, allowed] : kAllowed) CHECK_MESSAGE(fs::is_directory(root / part), part);
+}
