@@ -13,6 +13,7 @@
 #include "diag/render_sarif.hpp"
 #include "diag/render_text.hpp"
 #include "engine/check.hpp"
+#include "engine/config_file.hpp"
 #include "lint/rule_catalog.hpp"
 
 namespace sphdeck::cli {
@@ -73,13 +74,13 @@ std::optional<std::vector<lint::Config>> resolve_configs(const CheckArgs& args) 
         if (!args.no_config && !args.config_file.empty()) {
             path = args.config_file;
         } else if (!args.no_config) {
-            if (auto found = lint::find_config(deck)) path = found->string();
+            if (auto found = engine::find_config(deck)) path = found->string();
         }
         lint::Config config;
         if (!path.empty()) {
             auto it = loaded.find(path);
             if (it == loaded.end()) {
-                if (auto error = lint::load_config(path, config)) {
+                if (auto error = engine::load_config(path, config)) {
                     fmt::print(stderr, "{}\n", error->to_string());
                     return std::nullopt;
                 }

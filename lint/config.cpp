@@ -1,11 +1,9 @@
-// sphdeck.toml: discovery, parsing with toml++, validation, and applying the rule settings.
+// sphdeck.toml: parsing with toml++, validation, and applying the rule settings (engine/config_file finds and reads the file).
 #include "lint/config.hpp"
 
 #include <toml++/toml.h>
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
 #include "lint/registry.hpp"
 #include "lint/rule_pages.hpp"
@@ -92,20 +90,6 @@ std::string ConfigError::to_string() const {
     return file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": error: " + message;
 }
 
-std::optional<fs::path> find_config(const fs::path& deck) {
-    std::error_code ec;
-    fs::path folder = fs::absolute(deck, ec).parent_path();
-    while (!folder.empty()) {
-        for (std::string_view name : config_names) {
-            fs::path candidate = folder / name;
-            if (fs::is_regular_file(candidate, ec)) return candidate;
-        }
-        if (folder == folder.root_path() || folder == folder.parent_path()) break;
-        folder = folder.parent_path();
-    }
-    return std::nullopt;
-}
-
 std::optional<ConfigError> parse_config(std::string_view text, const std::string& path, Config& out) {
     out = Config{};
     out.path = path;
@@ -146,14 +130,6 @@ std::optional<ConfigError> parse_config(std::string_view text, const std::string
         if (problem) return problem;
     }
     return std::nullopt;
-}
-
-std::optional<ConfigError> load_config(const std::string& path, Config& out) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return ConfigError{path, 0, 0, "cannot read the configuration file"};
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parse_config(text.str(), path, out);
 }
 
 void apply_overrides(const ConfigOverrides& overrides, Config& config) {

@@ -39,15 +39,9 @@ struct ConfigError {
     std::string to_string() const;  // "file:line:column: error: message", as compilers write it
 };
 
-// File names searched in each folder, in order of precedence.
-inline constexpr std::string_view config_names[] = {"sphdeck.toml", ".sphdeck.toml"};
-
-// The nearest config file in the deck's folder or a folder above it, up to the filesystem root.
-std::optional<std::filesystem::path> find_config(const std::filesystem::path& deck);
-
 // Parses TOML text into `out`; `path` names the file in errors and anchors relative include paths.
+// Finding and reading the file is engine/config_file.hpp's job: lint reads no files.
 std::optional<ConfigError> parse_config(std::string_view text, const std::string& path, Config& out);
-std::optional<ConfigError> load_config(const std::string& path, Config& out);
 
 // Command-line settings; each overrides what the file says.
 struct ConfigOverrides {

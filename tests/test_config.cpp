@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "engine/config_file.hpp"
 #include "lint/config.hpp"
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
@@ -84,7 +85,7 @@ TEST_CASE("config: errors name the file, line and column") {
     CHECK(parse_error("include-paths = [1]\n").message == "'include-paths' must be an array of strings");
 
     lint::Config c;
-    auto missing = lint::load_config("/nonexistent/sphdeck.toml", c);
+    auto missing = engine::load_config("/nonexistent/sphdeck.toml", c);
     REQUIRE(missing.has_value());
     CHECK(missing->to_string() == "/nonexistent/sphdeck.toml: error: cannot read the configuration file");
 }
@@ -92,15 +93,15 @@ TEST_CASE("config: errors name the file, line and column") {
 TEST_CASE("config: found in the deck's folder or the nearest folder above it") {
     test::TempDir dir;
     const std::string deck = dir.write("a/b/c/deck.k", "*KEYWORD\n*END\n");
-    CHECK_FALSE(lint::find_config(deck).has_value());  // assumes no sphdeck.toml above the temp dir
+    CHECK_FALSE(engine::find_config(deck).has_value());  // assumes no sphdeck.toml above the temp dir
     dir.write("sphdeck.toml", "");
-    CHECK(lint::find_config(deck) == dir.path() / "sphdeck.toml");
+    CHECK(engine::find_config(deck) == dir.path() / "sphdeck.toml");
     dir.write("a/.sphdeck.toml", "");
-    CHECK(lint::find_config(deck) == dir.path() / "a" / ".sphdeck.toml");
+    CHECK(engine::find_config(deck) == dir.path() / "a" / ".sphdeck.toml");
     dir.write("a/sphdeck.toml", "");  // preferred over the hidden name in the same folder
-    CHECK(lint::find_config(deck) == dir.path() / "a" / "sphdeck.toml");
+    CHECK(engine::find_config(deck) == dir.path() / "a" / "sphdeck.toml");
     dir.write("a/b/c/sphdeck.toml", "");
-    CHECK(lint::find_config(deck) == dir.path() / "a" / "b" / "c" / "sphdeck.toml");
+    CHECK(engine::find_config(deck) == dir.path() / "a" / "b" / "c" / "sphdeck.toml");
 }
 
 TEST_CASE("config: command-line options override the file") {
