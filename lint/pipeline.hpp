@@ -32,7 +32,9 @@ struct CheckResult {
 // Throws std::runtime_error when the main file cannot be read.
 CheckResult check_file(const std::string& path, const CheckOptions& options = {});
 // `format`: the reader to use (LS-DYNA unless told; nullopt detects it from the text and name).
+// Relative includes are searched from `base_directory`.
 CheckResult check_buffer(std::string text, const std::string& name, const CheckOptions& options = {},
-                         std::optional<grammar::DeckFormat> format = grammar::DeckFormat::LsDyna);
+                         std::optional<grammar::DeckFormat> format = grammar::DeckFormat::LsDyna,
+                         const std::string& base_directory = ".");
 
 }  // namespace sphdeck::lint
