@@ -21,8 +21,8 @@ std::size_t node_lines(const grammar::RawDeck& deck);
 // range. `values` are the card's decoded NID, PID, MASS, NEND.
 std::size_t range_extra(const std::vector<FieldValue>& values);
 
-// The deck's budget of range-generated particles, spent range by range in deck order: the
-// ranges together may generate at most as many particles as the deck has node lines.
+// The deck's budget of range-generated particles, spent range by range in deck order: one range
+// may generate at most as many particles as the deck has node lines, all ranges together twice that.
 class RangeBudget {
 public:
     explicit RangeBudget(const grammar::RawDeck& deck) : deck_(deck) {}

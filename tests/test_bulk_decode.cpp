@@ -95,8 +95,8 @@ TEST_CASE("bulk decode: the parallel walk gives the model and findings of the se
 
 TEST_CASE("bulk decode: NEND ranges the deck's nodes cannot hold are refused alike on threads") {
     // 10000 node lines; every particle card asks for a range of 3, so the ranges together would
-    // need 30000 particles: the first 3333 are generated, the rest refused (DK007), and one card
-    // asks for 1e15 particles by itself (the OOM of issue 14).
+    // need 30000 particles, more than twice the nodes: the first 6666 are generated, the rest
+    // refused (DK007), and one card asks for 1e15 particles by itself (the OOM of issue 14).
     const int n = 10000;
     std::string text = "*KEYWORD\n*NODE\n";
     for (int i = 1; i <= n; ++i) text += fmt::format("{:8d}{:16.6f}{:16.6f}{:16.6f}\n", i, 0.001 * i, 0.0, 0.0);
@@ -110,7 +110,7 @@ TEST_CASE("bulk decode: NEND ranges the deck's nodes cannot hold are refused ali
     Built serial = build(deck, false);
     Built parallel = build(deck, true);
 
-    CHECK(serial.model.particles.size() == 3333 * 3 + (n - 3333));
+    CHECK(serial.model.particles.size() == 6666 * 3 + (n - 6666));
     CHECK(serial.summary.particles == serial.model.particles.size());
     std::size_t refused = 0, alone = 0;
     for (const auto& d : serial.diagnostics) {
@@ -124,7 +124,7 @@ TEST_CASE("bulk decode: NEND ranges the deck's nodes cannot hold are refused ali
         }
     }
     CHECK(alone == 1);
-    CHECK(refused == static_cast<std::size_t>(n - 3333));
+    CHECK(refused == static_cast<std::size_t>(n - 6666));
 
     CHECK(serial.model.particles.node == parallel.model.particles.node);
     CHECK(serial.model.particles.line == parallel.model.particles.line);
