@@ -11,20 +11,22 @@ usage: fuzz/run_fuzz.sh [-t SECONDS] [-n RUNS] [-B BUILD] [-o OUT] [-u] [TARGET.
   -B BUILD    build folder (default build-fuzz; configured with clang++-14 and built when missing)
   -o OUT      work folder for seeds, new inputs, logs and crashing inputs (default BUILD/fuzz-out)
   -u          merge the new inputs that add coverage into fuzz/corpus/<target>/ (the tree)
+  -s          skip building: use the targets already in BUILD
   TARGET      dyna_check radioss_check keyword_arguments expression (default: all)
 Environment: FUZZ_FLAGS adds libFuzzer flags (e.g. -entropic=0: about twice the executions per
 second on the deck targets, whose time goes mostly to the entropic schedule's bookkeeping).
 USAGE
 }
 root="$(cd "$(dirname "$0")/.." && pwd)"
-seconds=60 runs=-1 build="$root/build-fuzz" out="" update=0
-while getopts "t:n:B:o:uh" opt; do
+seconds=60 runs=-1 build="$root/build-fuzz" out="" update=0 skip_build=0
+while getopts "t:n:B:o:ush" opt; do
   case $opt in
     t) seconds=$OPTARG ;;
     n) runs=$OPTARG ;;
     B) build=$(cd "$OPTARG" 2>/dev/null && pwd || echo "$OPTARG") ;;
     o) out=$OPTARG ;;
     u) update=1 ;;
+    s) skip_build=1 ;;
     h) usage; exit 0 ;;
     *) usage >&2; exit 2 ;;
   esac
@@ -34,11 +36,13 @@ targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=(dyna_check radioss_check keyword_arguments expression)
 out=${out:-$build/fuzz-out}
 
-if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER="${CXX:-clang++-14}" \
-    -DSPHDECK_FUZZ=ON
+if [ "$skip_build" -eq 0 ]; then
+  if [ ! -f "$build/CMakeCache.txt" ]; then
+    cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER="${CXX:-clang++-14}" \
+      -DSPHDECK_FUZZ=ON
+  fi
+  cmake --build "$build" -j "${JOBS:-$(nproc)}" --target fuzz_dictionary $(printf 'fuzz_%s ' "${targets[@]}")
 fi
-cmake --build "$build" -j "${JOBS:-$(nproc)}" --target fuzz_dictionary $(printf 'fuzz_%s ' "${targets[@]}")
 
 # Seeds: the small decks of decks/ (large ones only slow each execution down), by format.
 seeds_for() {
