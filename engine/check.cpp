@@ -37,8 +37,8 @@ CheckResult check_file(const std::string& path, const CheckOptions& options) {
 }
 
 CheckResult check_buffer(std::string text, const std::string& name, const CheckOptions& options,
-                         std::optional<grammar::DeckFormat> format) {
-    return finish(grammar::read_deck_buffer(std::move(text), name, ".", options.reader, format), options);
+                         std::optional<grammar::DeckFormat> format, const std::string& base_directory) {
+    return finish(grammar::read_deck_buffer(std::move(text), name, base_directory, options.reader, format), options);
 }
 
 }  // namespace sphdeck::engine

@@ -42,9 +42,11 @@ CheckResult check_deck(const std::string& path, const Documents& documents, cons
 // The same with every file from disk.
 CheckResult check_file(const std::string& path, const CheckOptions& options = {});
 
-// A deck that exists only in memory under `name` (tests, fuzzing); relative includes from ".".
-// `format`: the reader to use (LS-DYNA unless told; nullopt detects it from the text and name).
+// A deck that exists only in memory under `name` (tests, fuzzing); relative includes are searched
+// from `base_directory`. `format`: the reader to use (LS-DYNA unless told; nullopt detects it from the
+// text and name).
 CheckResult check_buffer(std::string text, const std::string& name, const CheckOptions& options = {},
-                         std::optional<grammar::DeckFormat> format = grammar::DeckFormat::LsDyna);
+                         std::optional<grammar::DeckFormat> format = grammar::DeckFormat::LsDyna,
+                         const std::string& base_directory = ".");
 
 }  // namespace sphdeck::engine

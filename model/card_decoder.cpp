@@ -50,6 +50,13 @@ std::string run_on_note(const grammar::SourceMap& sources, const grammar::Span& 
 }
 }  // namespace
 
+bool exceeds_integer_range(double number) { return !(std::fabs(number) <= max_exact_integer); }
+
+std::string integer_range_message(std::string_view field, double number) {
+    return fmt::format("{} = {} is too large for an integer field (at most {} in magnitude)", field,
+                       number_text(number), static_cast<long long>(max_exact_integer));
+}
+
 void CardDecoder::report(const char* code, diag::Severity s, std::string message, grammar::Span span) {
     out_.push_back(diag::Diagnostic{code, s, std::move(message), span, {}});
 }
@@ -212,6 +219,11 @@ void CardDecoder::decode_number(const grammar::Block& block, const keywords::Fie
         }
         v.number = r.value;
         v.valid = true;
+    }
+    if (integer && exceeds_integer_range(v.number)) {
+        report("DK007", diag::Severity::Error, integer_range_message(spec.name, v.number), v.span);
+        v.valid = false;
+        return;
     }
     if (v.number == 0.0 && spec.zero_is_default && spec.default_value) {
         v.number = *spec.default_value;  // the manual maps an explicit 0 to the default here

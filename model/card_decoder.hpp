@@ -2,6 +2,7 @@
 // parameters substituted, defaults applied; every problem becomes a diagnostic at the field.
 #pragma once
 
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -21,6 +22,13 @@ struct FieldValue {
     bool valid = false;           // decoded to a value (explicit or default)
     double number = 0.0;          // I and F fields, after defaults and zero-means-default
 };
+
+// The largest integer an integer field may hold: the model keeps numbers as doubles and ids as
+// long long, and beyond 2^53 neither holds the value exactly; converting a larger double (or NaN)
+// to an integer is undefined. Both decoders report larger values (DK007) and leave them unused.
+inline constexpr double max_exact_integer = 9007199254740992.0;  // 2^53
+bool exceeds_integer_range(double number);                        // |number| > 2^53, or NaN
+std::string integer_range_message(std::string_view field, double number);
 
 class CardDecoder {
 public:

@@ -4,8 +4,11 @@
 #include <algorithm>
 #include <fmt/format.h>
 #include <map>
+#include <optional>
 #include <numeric>
 #include <string>
+
+#include "model/particle_ranges.hpp"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -28,14 +31,12 @@ int available_threads() {
 #endif
 }
 
-// Particles one *ELEMENT_SPH card stands for, and the NEND width warning (DK023).
+// Particles one *ELEMENT_SPH card stands for (its range already checked), and the NEND width
+// warning (DK023).
 std::size_t count_particles(const grammar::RawDeck& deck, const grammar::CardLine& line, grammar::CardFormat format,
                             const std::vector<FieldValue>& values, std::vector<diag::Diagnostic>& out) {
     // NID, PID, MASS, NEND: NEND > NID generates the range NID..NEND.
-    std::size_t n = 1;
-    if (values.size() >= 4 && values[0].valid && values[3].valid && values[3].explicit_value &&
-        values[3].number > values[0].number)
-        n = static_cast<std::size_t>(values[3].number - values[0].number) + 1;
+    const std::size_t n = 1 + range_extra(values);
     // Sources disagree on NEND's width (lsdyna-format.md §3); we read 33-42 and flag 41-42. Text in
     // 41-42 makes NEND written, so the line is looked at again only then (this runs once per particle).
     if (format != grammar::CardFormat::Standard || values.size() < 4 || !values[3].explicit_value) return n;
@@ -77,15 +78,27 @@ public:
             }
             const CardSpec& card = *cards[next];
             decoder_.decode(block, *l, card, values_);
+            std::optional<diag::Diagnostic> refused;
+            if (particles) refused = take_range(values_);
             if (card.repeat != CardRepeat::Repeated) remember(values_);  // conditions look at header cards
             if (visit_) visit_(block, match, card, *l, values_);
             if (particles) summary.particles += count_particles(deck_, *l, block.format, values_, out_);
+            if (refused) out_.push_back(std::move(*refused));  // last of the line's findings, as in parallel
             if (card.repeat != CardRepeat::Repeated) ++next;
         }
         report_missing(block, cards, next);
     }
 
 private:
+    // A refused NEND range is reported and its NEND marked unusable, so that neither the model
+    // nor the particle count expands it.
+    std::optional<diag::Diagnostic> take_range(std::vector<FieldValue>& values) {
+        auto problem = ranges_.take(range_extra(values));
+        if (!problem) return std::nullopt;
+        values[3].valid = false;
+        return range_error(values[3].span, *problem);
+    }
+
     bool applies(const CardSpec& card) const {
         if (!card.present_if) return true;
         auto it = earlier_.find(std::string(card.present_if->field));
@@ -106,6 +119,14 @@ private:
         std::vector<std::vector<diag::Diagnostic>> found(static_cast<std::size_t>(threads));
         std::vector<std::size_t> counted(static_cast<std::size_t>(threads), 0);
         const grammar::CardLine* lines = deck_.begin_lines(block);
+        // Ranges longer than the deck's nodes are refused on the threads; the deck's running
+        // budget is spent afterwards, range by range in line order.
+        struct Range {
+            std::size_t index, extra;
+            grammar::Span nend;
+        };
+        std::vector<std::vector<Range>> ranges(static_cast<std::size_t>(threads));
+        if (particles) ranges_.nodes();
         bulk_->begin(block, n, threads);
 #pragma omp parallel num_threads(threads)
         {
@@ -123,10 +144,34 @@ private:
             std::size_t count = 0;
             for (std::size_t i = first; i < last; ++i) {
                 decoder.decode(block, lines[i], card, values);
+                std::optional<std::string> refused;
+                if (particles) {
+                    refused = ranges_.check_alone(range_extra(values));
+                    if (refused) values[3].valid = false;
+                    else if (std::size_t extra = range_extra(values))
+                        ranges[static_cast<std::size_t>(t)].push_back({i, extra, values[3].span});
+                }
                 bulk_->line(block, i, t, lines[i], values);
                 if (particles) count += count_particles(deck_, lines[i], block.format, values, out);
+                if (refused) out.push_back(range_error(values[3].span, *refused));
             }
             counted[static_cast<std::size_t>(t)] = count;
+        }
+        for (std::size_t t = 0; t < ranges.size(); ++t) {
+            bool refused = false;
+            for (const Range& r : ranges[t])
+                if (auto problem = ranges_.take(r.extra)) {
+                    found[t].push_back(range_error(r.nend, *problem));
+                    bulk_->drop_range(r.index);
+                    counted[t] -= r.extra;
+                    refused = true;
+                }
+            // Back to line order, each refusal last among its line's findings (as in the serial walk).
+            if (refused)
+                std::stable_sort(found[t].begin(), found[t].end(), [](const diag::Diagnostic& a,
+                                                                       const diag::Diagnostic& b) {
+                    return a.span.line < b.span.line;
+                });
         }
         bulk_->end(block);
         summary.particles += std::accumulate(counted.begin(), counted.end(), std::size_t{0});
@@ -165,6 +210,7 @@ private:
     CardDecoder decoder_;
     const CardVisitor& visit_;
     BulkVisitor* bulk_;
+    RangeBudget ranges_{deck_};
     std::vector<FieldValue> values_;
     std::map<std::string, double> earlier_;
 };

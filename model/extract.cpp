@@ -1,6 +1,8 @@
 #include "model/extract.hpp"
 
 #include <fmt/format.h>
+#include <limits>
+#include <type_traits>
 
 #include "grammar/fields.hpp"
 #include "grammar/value.hpp"
@@ -8,11 +10,20 @@
 namespace sphdeck::model {
 namespace {
 
+// Whether `number` converts to T without undefined behaviour (integers: finite and in range).
+template <typename T>
+bool fits(double number) {
+    if constexpr (std::is_integral_v<T>)
+        return number >= static_cast<double>(std::numeric_limits<T>::min()) &&
+               number < 2.0 * static_cast<double>(std::numeric_limits<T>::max() / 2 + 1);  // max + 1, exact
+    return true;
+}
+
 template <typename T>
 Setting<T> setting(const KeywordRecord& r, std::string_view name, T fallback) {
     Setting<T> s{fallback, false, r.span};
     if (const FieldRecord* f = r.field(name)) {
-        if (f->valid) s.value = static_cast<T>(f->number);
+        if (f->valid && fits<T>(f->number)) s.value = static_cast<T>(f->number);
         s.explicit_value = f->explicit_value;
         s.span = f->span;
     }

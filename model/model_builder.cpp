@@ -1,6 +1,9 @@
 #include "model/model_builder.hpp"
 
+#include <algorithm>
+
 #include "model/extract.hpp"
+#include "model/particle_ranges.hpp"
 
 namespace sphdeck::model {
 
@@ -34,10 +37,9 @@ void ModelBuilder::add_particles(const grammar::Block& block, const std::vector<
     if (v.size() < 3 || !v[0].valid) return;
     Particles& p = model_.particles;
     const long long first = static_cast<long long>(v[0].number);
-    long long last = first;
-    // NEND > NID generates NID..NEND with the same part and mass (lsdyna-sph-cards.md §3).
-    if (v.size() >= 4 && v[3].valid && v[3].explicit_value && v[3].number > v[0].number)
-        last = static_cast<long long>(v[3].number);
+    // NEND > NID generates NID..NEND with the same part and mass (lsdyna-sph-cards.md §3); the
+    // syntax pass has refused ranges the deck's nodes cannot hold.
+    const long long last = first + static_cast<long long>(range_extra(v));
     const long long part = v[1].valid ? static_cast<long long>(v[1].number) : -1;
     const bool volume = block.keyword.find("_VOLUME") != std::string::npos;
     const auto index = static_cast<std::uint32_t>(&line - deck_.lines.data());
@@ -122,8 +124,16 @@ void ModelBuilder::Bulk::line(const grammar::Block&, std::size_t index, int thre
     p.mass[slot] = v[2].valid ? v[2].number : 0.0;
     p.volume[slot] = volume_;
     p.line[slot] = static_cast<std::uint32_t>(&line - owner_.deck_.lines.data());
-    if (v.size() >= 4 && v[3].valid && v[3].explicit_value && v[3].number > v[0].number)
-        irregular.push_back({index, static_cast<long long>(v[3].number), false});
+    if (const std::size_t extra = range_extra(v))
+        irregular.push_back({index, p.node[slot] + static_cast<long long>(extra), false});
+}
+
+void ModelBuilder::Bulk::drop_range(std::size_t index) {
+    for (auto& list : irregular_) {
+        auto it = std::lower_bound(list.begin(), list.end(), index,
+                                   [](const Irregular& entry, std::size_t i) { return entry.index < i; });
+        if (it != list.end() && it->index == index && !it->skipped) return void(list.erase(it));
+    }
 }
 
 void ModelBuilder::Bulk::end(const grammar::Block&) {

@@ -35,6 +35,7 @@ private:
         void begin(const grammar::Block& block, std::size_t lines, int threads) override;
         void line(const grammar::Block& block, std::size_t index, int thread, const grammar::CardLine& line,
                   const std::vector<FieldValue>& values) override;
+        void drop_range(std::size_t index) override;
         void end(const grammar::Block& block) override;
 
     private:

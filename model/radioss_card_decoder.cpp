@@ -6,6 +6,7 @@
 
 #include "grammar/fields.hpp"
 #include "grammar/value.hpp"
+#include "model/card_decoder.hpp"  // the integer range both decoders enforce
 #include "model/radioss_parameters.hpp"
 
 namespace sphdeck::model {
@@ -184,7 +185,9 @@ void RadiossCardDecoder::read_value(RadiossValue& v, std::string_view field, boo
         if (!parameters_) return;  // no table: the value stays unknown, no finding
         if (auto value = parameters_->value_of(*ref, block_, integer, v.spec->name, v.span, out_)) {
             v.number = integer ? std::trunc(*value) : *value;
-            v.valid = true;
+            v.valid = !(integer && exceeds_integer_range(v.number));
+            if (!v.valid)
+                report("DK007", diag::Severity::Error, integer_range_message(v.spec->name, v.number), v.span);
         }
         return;
     }
@@ -202,6 +205,10 @@ void RadiossCardDecoder::read_value(RadiossValue& v, std::string_view field, boo
                    fmt::format("integer field {} written as real '{}'; read as {}", v.spec->name, shown(token), n.value),
                    v.span);
         v.number = static_cast<double>(n.value);
+        if (exceeds_integer_range(v.number)) {
+            report("DK007", diag::Severity::Error, integer_range_message(v.spec->name, v.number), v.span);
+            return;
+        }
     } else {
         grammar::RealValue r = grammar::to_real(t);
         if (r.status != NumberStatus::Ok) {

@@ -205,8 +205,18 @@ namespace {
 constexpr std::uint32_t count_reach = 1;
 
 // The counting loop vectorises with AVX2 (a double comparison into 64-bit lanes) but not with
-// the SSE2 baseline; x86-64 builds carry both and pick one when loaded.
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__AVX2__) && !defined(__SANITIZE_ADDRESS__)
+// the SSE2 baseline; x86-64 builds carry both and pick one when loaded. GCC and Clang (14 and
+// later) both clone plain functions, but Clang refuses target_clones on a function template, so
+// the clones are the non-template wrappers below. Not under the sanitizers: the ifunc resolver
+// runs before their runtime is set up.
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(undefined_behavior_sanitizer) || \
+    __has_feature(coverage_sanitizer)
+#define SPHDECK_NO_CLONES 1
+#endif
+#endif
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__AVX2__) && !defined(__SANITIZE_ADDRESS__) && \
+    !defined(SPHDECK_NO_CLONES) && (!defined(__clang__) || __clang_major__ >= 14)
 #define SPHDECK_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define SPHDECK_CLONES
@@ -239,11 +249,12 @@ template <bool Uniform>
 }
 
 // The pairs of one occupied cell's points [first, last): with each other, and with the points of
-// `ranges` (cells after it in cell order). Compiled for AVX2 and the baseline.
+// `ranges` (cells after it in cell order). Inlined into the two cloned functions after it.
 template <bool Uniform>
-SPHDECK_CLONES void count_cell(const NeighbourGrid& g, const double* support, std::uint32_t first, std::uint32_t last,
-                               std::span<const NeighbourGrid::Range> ranges, double tol2, std::uint64_t* count,
-                               std::vector<std::uint32_t>& close_points) {
+[[gnu::always_inline]] inline void count_cell(const NeighbourGrid& g, const double* support, std::uint32_t first,
+                                              std::uint32_t last, std::span<const NeighbourGrid::Range> ranges,
+                                              double tol2, std::uint64_t* count,
+                                              std::vector<std::uint32_t>& close_points) {
     for (std::uint32_t k = first; k < last; ++k) {
         std::uint64_t within = 0, close = 0;
         count_pairs<Uniform>(g, support, k, k + 1, last, tol2, count, within, close);
@@ -252,6 +263,18 @@ SPHDECK_CLONES void count_cell(const NeighbourGrid& g, const double* support, st
         count[k] += within;
         if (close) close_points.push_back(k);
     }
+}
+
+// count_cell compiled for AVX2 and the baseline, for uniform and for mixed supports.
+SPHDECK_CLONES void count_cell_uniform(const NeighbourGrid& g, const double* support, std::uint32_t first,
+                                       std::uint32_t last, std::span<const NeighbourGrid::Range> ranges, double tol2,
+                                       std::uint64_t* count, std::vector<std::uint32_t>& close_points) {
+    count_cell<true>(g, support, first, last, ranges, tol2, count, close_points);
+}
+SPHDECK_CLONES void count_cell_mixed(const NeighbourGrid& g, const double* support, std::uint32_t first,
+                                     std::uint32_t last, std::span<const NeighbourGrid::Range> ranges, double tol2,
+                                     std::uint64_t* count, std::vector<std::uint32_t>& close_points) {
+    count_cell<false>(g, support, first, last, ranges, tol2, count, close_points);
 }
 
 // Every pair once: for each occupied cell, the pairs inside it and with the cells after it in a
@@ -265,7 +288,8 @@ void count_symmetric(const NeighbourGrid& g, const std::vector<double>& support,
     static_assert(count_reach == 1, "the half-block rows assume cells as large as the support");
     g.for_each_cell_rows(half, [&](std::size_t o, NeighbourGrid::Cell, const std::vector<NeighbourGrid::Range>& ranges) {
         const auto [first, last] = g.occupied_range(o);
-        count_cell<Uniform>(g, support.data(), first, last, ranges, tol2, count.data(), close_points);
+        const auto cell = Uniform ? count_cell_uniform : count_cell_mixed;
+        cell(g, support.data(), first, last, ranges, tol2, count.data(), close_points);
     });
 }
 

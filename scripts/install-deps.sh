@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages sphdeck builds and tests with, only those missing.
 # Runs as root (CI, fresh machines) or through sudo when available.
+#   --fuzz  also Clang 14, its sanitizer and libFuzzer runtimes and its OpenMP library, for the
+#           Clang build and the fuzz targets (fuzz/README.md); the default install stays GCC only.
 set -euo pipefail
 packages=(
   build-essential cmake
@@ -8,6 +10,12 @@ packages=(
   libtomlplusplus-dev
   python3 python3-jsonschema
 )
+for arg in "$@"; do
+  case $arg in
+    --fuzz) packages+=(clang-14 libclang-rt-14-dev libomp-14-dev) ;;
+    *) echo "usage: scripts/install-deps.sh [--fuzz]" >&2; exit 2 ;;
+  esac
+done
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -92,3 +92,51 @@ TEST_CASE("bulk decode: the parallel walk gives the model and findings of the se
         CHECK(b.particles.line[i] == b.particles.line[6]);
     }
 }
+
+TEST_CASE("bulk decode: NEND ranges the deck's nodes cannot hold are refused alike on threads") {
+    // 10000 node lines; every particle card asks for a range of 3, so the ranges together would
+    // need 30000 particles, more than twice the nodes: the first 6666 are generated, the rest
+    // refused (DK007), and one card asks for 1e15 particles by itself (the OOM of issue 14).
+    const int n = 10000;
+    std::string text = "*KEYWORD\n*NODE\n";
+    for (int i = 1; i <= n; ++i) text += fmt::format("{:8d}{:16.6f}{:16.6f}{:16.6f}\n", i, 0.001 * i, 0.0, 0.0);
+    text += "*ELEMENT_SPH\n";
+    for (int i = 1; i <= n; ++i) {
+        if (i == 5) text += fmt::format("{:8d}{:8d}{:16.6f}{:>8}\n", i, 1, 1.0, "1e15");
+        else text += fmt::format("{:8d}{:8d}{:16.6f}{:8d}\n", i, 1, 1.0, i + 2);
+    }
+    text += "*END\n";
+    grammar::RawDeck deck = grammar::read_deck_buffer(text, "ranges.k");
+    Built serial = build(deck, false);
+    Built parallel = build(deck, true);
+
+    CHECK(serial.model.particles.size() == 6666 * 3 + (n - 6666));
+    CHECK(serial.summary.particles == serial.model.particles.size());
+    std::size_t refused = 0, alone = 0;
+    for (const auto& d : serial.diagnostics) {
+        if (d.code != "DK007") continue;
+        ++refused;
+        // The flood guard (model/flood_guard.cpp) keeps the first findings of a block and counts the
+        // rest in the last one: "(and N more DK007 finding(s) ...)".
+        if (const auto more = d.message.find("(and "); more != std::string::npos)
+            refused += std::stoul(d.message.substr(more + 5));
+        if (d.span.line == 10000 + 3 + 5) {  // *KEYWORD, *NODE, the nodes, *ELEMENT_SPH, then card 5
+            ++alone;
+            CHECK(d.message.find("range of 999999999999996 particles; the deck defines 10000 node(s)") !=
+                  std::string::npos);
+            CHECK(d.span.column == 37);  // NEND's "1e15", underlined where it is written
+        }
+    }
+    CHECK(alone == 1);
+    CHECK(refused == static_cast<std::size_t>(n - 6666));
+
+    CHECK(serial.model.particles.node == parallel.model.particles.node);
+    CHECK(serial.model.particles.line == parallel.model.particles.line);
+    CHECK(serial.summary.particles == parallel.summary.particles);
+    REQUIRE(serial.diagnostics.size() == parallel.diagnostics.size());
+    for (std::size_t i = 0; i < serial.diagnostics.size(); ++i) {
+        CHECK(serial.diagnostics[i].code == parallel.diagnostics[i].code);
+        CHECK(serial.diagnostics[i].message == parallel.diagnostics[i].message);
+        CHECK(serial.diagnostics[i].span.line == parallel.diagnostics[i].span.line);
+    }
+}

@@ -139,6 +139,27 @@ TEST_CASE("radioss: an included file's blocks start at its first header, with it
     CHECK(count_code(cycle.diagnostics, "DK011") == 1);
 }
 
+TEST_CASE("radioss: #include files read and bytes read are bounded like the LS-DYNA reader's") {
+    test::TempDir dir;
+    for (int i = 0; i < 30; ++i) {
+        const std::string next = "d" + std::to_string(i + 1) + ".inc";
+        dir.write("d" + std::to_string(i) + ".inc", "#include " + next + "\n#include " + next + "\n");
+    }
+    dir.write("d30.inc", "/NODE\n");
+    grammar::dyna::ReaderOptions few;
+    few.max_include_files = 40;
+    auto limited = grammar::radioss::read_file(dir.write("m_0000.rad", "#RADIOSS STARTER\n#include d0.inc\n"), few);
+    CHECK(limited.stats.files == 41);
+    CHECK(count_code(limited.diagnostics, "DK011") >= 1);
+
+    dir.write("big.inc", "/NODE\n" + std::string(1000, '#') + "\n");
+    grammar::dyna::ReaderOptions small;
+    small.max_total_bytes = 500;
+    auto refused = grammar::radioss::read_file(dir.write("b_0000.rad", "#RADIOSS STARTER\n#include big.inc\n"), small);
+    CHECK(refused.stats.files == 1);
+    CHECK(count_code(refused.diagnostics, "DK011") == 1);
+}
+
 TEST_CASE("radioss: the engine deck next to the starter is read; /DT cards belong there") {
     test::TempDir dir;
     const std::string body = kWater + "/PROP/SPH/2\nw\n" + r20("8.0E-6") + "\n\n/NODE\n" + i10("1") + "\n/SPHCEL/2\n" +

@@ -89,6 +89,33 @@ TEST_CASE("includes: 100-deep nesting is read; deeper than the limit is reported
     CHECK(count_code(limited.diagnostics, "DK011") == 1);
 }
 
+TEST_CASE("includes: files read and bytes read are bounded, so a diamond of includes stays small") {
+    // Each level includes the next one twice: 2^31 - 1 files if nothing stopped it.
+    TempDir dir;
+    for (int i = 0; i < 30; ++i) {
+        const std::string next = "d" + std::to_string(i + 1) + ".k";
+        dir.write("d" + std::to_string(i) + ".k", "*INCLUDE\n" + next + "\n" + next + "\n");
+    }
+    dir.write("d30.k", "*NODE\n       1\n");
+    grammar::dyna::ReaderOptions few;
+    few.max_include_files = 50;
+    auto limited = read_file((dir.path() / "d0.k").string(), few);
+    CHECK(limited.stats.files == 51);  // the main file and 50 includes
+    CHECK(count_code(limited.diagnostics, "DK011") >= 1);
+    REQUIRE(!limited.diagnostics.empty());
+    CHECK(limited.diagnostics.front().message.find("already read 50 include files") != std::string::npos);
+    CHECK(limited.diagnostics.front().span.line >= 2);  // at a file name of an *INCLUDE
+
+    dir.write("big.k", "*NODE\n" + std::string(1000, '$') + "\n");
+    const std::string main = dir.write("main.k", "*INCLUDE\nbig.k\n");
+    grammar::dyna::ReaderOptions small;
+    small.max_total_bytes = 500;
+    auto refused = read_file(main, small);
+    CHECK(refused.stats.files == 1);
+    REQUIRE(count_code(refused.diagnostics, "DK011") == 1);
+    CHECK(refused.diagnostics.front().message.find("1007 bytes would take the deck past 500") != std::string::npos);
+}
+
 TEST_CASE("includes: the format passes down and a suffix on *INCLUDE changes it") {
     TempDir dir;
     dir.write("long.k", "*NODE\n*KEYWORD long=y\n");

@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include <chrono>
+#include <fmt/format.h>
 
 #include "lint/pipeline.hpp"
 #include "test_support.hpp"
@@ -16,8 +17,14 @@ const std::string kPart =
 }  // namespace
 
 TEST_CASE("references: a missing node include makes a handful of findings, not one per particle") {
-    auto r = lint::check_buffer(kPart + "*ELEMENT_SPH\n       1       1           0.001    1000\n", "d.k");
+    std::string cards;
+    for (int i = 1; i <= 1000; ++i) cards += fmt::format("{:8d}       1           0.001\n", i);
+    auto r = lint::check_buffer(kPart + "*ELEMENT_SPH\n" + cards, "d.k");
     CHECK(count_code(r.diagnostics, "REF001") == 6);  // five named, one summary of the 995 others
+    // An NEND range needs the nodes it names: without them it is refused where it is written (issue 14).
+    auto range = lint::check_buffer(kPart + "*ELEMENT_SPH\n       1       1           0.001    1000\n", "d.k");
+    CHECK(count_code(range.diagnostics, "DK007") == 1);
+    CHECK(count_code(range.diagnostics, "REF001") == 1);
 }
 
 TEST_CASE("references: a huge _GENERATE range is bounded, reported, and fast") {

@@ -112,6 +112,11 @@ void DeckReader::open_include(const std::string& name, Span where, char suffix) 
             return;
         }
     }
+    if (auto problem = include_budget_problem(resolved->path, deck_.sources.size() - 1, deck_.stats.bytes,
+                                              options_.max_include_files, options_.max_total_bytes)) {
+        report("DK011", diag::Severity::Error, "include file '" + name + "' is not read: " + *problem, where);
+        return;
+    }
     SourceFile child;
     child.path = resolved->path.string();
     child.display_name = resolved->path.lexically_normal().string();

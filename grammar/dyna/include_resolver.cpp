@@ -33,6 +33,18 @@ std::optional<ResolvedInclude> resolve_include(const std::string& name, const In
     return std::nullopt;
 }
 
+std::optional<std::string> include_budget_problem(const fs::path& path, std::size_t files, std::size_t bytes,
+                                                  std::size_t max_files, std::size_t max_bytes) {
+    if (files >= max_files)
+        return "the deck has already read " + std::to_string(files) + " include files, the most sphdeck reads";
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (!ec && (size > max_bytes || bytes > max_bytes - size))
+        return "its " + std::to_string(size) + " bytes would take the deck past " + std::to_string(max_bytes) +
+               " bytes read";
+    return std::nullopt;
+}
+
 std::vector<fs::path> include_candidates(const std::string& name, const IncludeSearch& search) {
     std::vector<fs::path> out;
     for (const auto& c : candidates(name, search)) out.push_back(c.path);

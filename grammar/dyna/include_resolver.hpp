@@ -28,6 +28,11 @@ struct ResolvedInclude {
 // other entry of that name (a directory), so that the caller reports what it is.
 std::optional<ResolvedInclude> resolve_include(const std::string& name, const IncludeSearch& search);
 
+// Why an include of `path` may not be read given what the deck has read so far (`files`
+// include files, `bytes` in all), or nullopt. Both readers ask before reading.
+std::optional<std::string> include_budget_problem(const std::filesystem::path& path, std::size_t files,
+                                                  std::size_t bytes, std::size_t max_files, std::size_t max_bytes);
+
 // Every directory tried, for the "not found" note.
 std::vector<std::filesystem::path> include_candidates(const std::string& name, const IncludeSearch& search);
 

@@ -185,6 +185,11 @@ void DeckReader::on_include(const char* begin, const char* end, std::string_view
             return;
         }
     }
+    if (auto problem = dyna::include_budget_problem(resolved->path, deck_.sources.size() - 1, deck_.stats.bytes,
+                                                    options_.max_include_files, options_.max_total_bytes)) {
+        report("DK011", diag::Severity::Error, "include file '" + file_name + "' is not read: " + *problem, where);
+        return;
+    }
     SourceFile child;
     child.path = resolved->path.string();
     child.display_name = resolved->path.lexically_normal().string();

@@ -1,0 +1,90 @@
+#include "fuzz/targets.hpp"
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+
+#include "diag/render_github.hpp"
+#include "diag/render_json.hpp"
+#include "diag/render_text.hpp"
+#include "engine/check.hpp"
+#include "grammar/dyna/expression.hpp"
+#include "grammar/dyna/keyword_arguments.hpp"
+#include "lint/rule_catalog.hpp"
+
+namespace sphdeck::fuzz {
+namespace {
+
+std::string text_of(const std::uint8_t* data, std::size_t size) {
+    return std::string(reinterpret_cast<const char*>(data), size);
+}
+
+// Relative includes resolve against a folder that does not exist, so the fuzzer reads no files
+// but the ones it names by absolute path (which the reader must survive too).
+constexpr const char* no_folder = "/nonexistent-sphdeck-fuzz";
+
+void render_all(const engine::CheckResult& r) {
+    std::size_t bytes = 0;
+    for (const diag::Diagnostic& d : r.diagnostics) {
+        bytes += diag::render_concise(d, r.deck.sources).size();
+        bytes += diag::render_full(d, r.deck.sources, diag::RenderOptions{true}).size();
+        bytes += diag::render_github(d, r.deck.sources).size();
+    }
+    // JSON only: a SARIF document carries the documentation of every rule, the same whatever the
+    // input, and rendering it would take nine tenths of each execution.
+    auto report = diag::make_json_report(lint::rule_catalog());
+    report->add(r.deck.sources, r.diagnostics);
+    bytes += report->finish(diag::RunSummary{}).size();
+    volatile std::size_t sink = bytes;  // keep the rendering from being optimised away
+    (void)sink;
+}
+
+void check(const std::uint8_t* data, std::size_t size, const char* name, grammar::DeckFormat format) {
+    engine::CheckOptions options;
+    options.rules.geometry = true;
+    engine::CheckResult r = engine::check_buffer(text_of(data, size), std::string(no_folder) + "/" + name, options,
+                                             format, no_folder);
+    render_all(r);
+}
+
+}  // namespace
+
+void check_dyna_deck(const std::uint8_t* data, std::size_t size) {
+    check(data, size, "fuzz.k", grammar::DeckFormat::LsDyna);
+}
+
+void check_radioss_deck(const std::uint8_t* data, std::size_t size) {
+    check(data, size, "fuzz_0000.rad", grammar::DeckFormat::Radioss);
+}
+
+void parse_keyword_arguments(const std::uint8_t* data, std::size_t size) {
+    const std::string text = text_of(data, size);
+    (void)grammar::dyna::parse_keyword_arguments(text);
+}
+
+void evaluate_expression(const std::uint8_t* data, std::size_t size) {
+    const std::string text = text_of(data, size);
+    // A few names with values that test the arithmetic's edges; the rest are undefined.
+    const auto lookup = [](std::string_view name) -> std::optional<double> {
+        if (name == "a" || name == "A") return 2.5;
+        if (name == "zero") return 0.0;
+        if (name == "big") return 1e308;
+        if (name == "tiny") return 5e-324;
+        if (name == "neg") return -1.0;
+        if (name == "inf") return std::numeric_limits<double>::infinity();
+        return std::nullopt;
+    };
+    const grammar::ExpressionResult r = grammar::evaluate_expression(text, lookup);
+    if (!r.ok() && (r.offset > text.size() || r.length == 0)) __builtin_trap();  // the documented contract
+}
+
+Target find_target(std::string_view name) {
+    if (name == "dyna_check") return check_dyna_deck;
+    if (name == "radioss_check") return check_radioss_deck;
+    if (name == "keyword_arguments") return parse_keyword_arguments;
+    if (name == "expression") return evaluate_expression;
+    return nullptr;
+}
+
+}  // namespace sphdeck::fuzz

@@ -1,0 +1,26 @@
+// The fuzz targets' bodies, shared by the libFuzzer executables (fuzz_*.cpp) and by the test
+// that replays the corpus of found inputs (tests/test_fuzz_corpus.cpp). Each takes any bytes and
+// must return without crashing, hanging or allocating more than the input warrants.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+namespace sphdeck::fuzz {
+
+// An LS-DYNA deck through the whole check (read, decode, every rule, suppressions), then every
+// renderer over the findings.
+void check_dyna_deck(const std::uint8_t* data, std::size_t size);
+// The same for an OpenRadioss starter deck.
+void check_radioss_deck(const std::uint8_t* data, std::size_t size);
+// The text after *KEYWORD (memory sizes, long=, i10=, ...).
+void parse_keyword_arguments(const std::uint8_t* data, std::size_t size);
+// A *PARAMETER_EXPRESSION expression, with a few parameters defined.
+void evaluate_expression(const std::uint8_t* data, std::size_t size);
+
+// A target by its name (the executable's name without "fuzz_"); nullptr when unknown.
+using Target = void (*)(const std::uint8_t*, std::size_t);
+Target find_target(std::string_view name);
+
+}  // namespace sphdeck::fuzz
