@@ -115,6 +115,12 @@ TEST_CASE("generated layouts: hand-written tables win, the rest falls back to th
     CHECK(titled->has("ID"));
     CHECK_FALSE(keywords::find_keyword("*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_BOGUS").has_value());
     CHECK_FALSE(keywords::find_keyword("*NOT_A_KEYWORD").has_value());
+    // every *SECTION_ keyword takes _TITLE, also where pydyna does not list it; others do not
+    auto solid = keywords::find_keyword("*SECTION_SOLID_TITLE");
+    REQUIRE(solid);
+    CHECK(solid->has("TITLE"));
+    CHECK(solid->schema->cards.front().name == "Title");
+    CHECK_FALSE(keywords::find_keyword("*CONTROL_IMPLICIT_AUTO_TITLE").has_value());
     // a condition the table can decide: *CONTROL_IMPLICIT_AUTO card 2 when IAUTO = 3
     auto implicit = keywords::find_keyword("*CONTROL_IMPLICIT_AUTO");
     REQUIRE(implicit);

@@ -84,6 +84,11 @@ std::unique_ptr<KeywordSchema> build(const LayoutEntry& entry, const std::vector
     const auto lines = split(entry.body, '\n');
     for (std::string_view o : split(lines[0], ' '))
         if (!o.empty()) k->options.push_back({.suffix = o});
+    if (written(on, "TITLE") && !k->option("TITLE")) {
+        // A _TITLE pydyna does not list (see option_named): the manual's title line, A80.
+        k->options.push_back({.suffix = "TITLE"});
+        k->cards.push_back({.name = "Title", .fields = {{.name = "TITLE", .column = 1, .width = 80, .type = FieldType::Text}}});
+    }
     std::size_t group_start = 0;
     bool group = false;
     for (std::size_t i = 1; i < lines.size(); ++i) {
@@ -122,10 +127,14 @@ const LayoutEntry* entry_named(std::string_view name) {
 
 // The option of `entry` that `token` names; "TITLE" stands for ID when the keyword has no TITLE
 // option (pydyna's rule, kept in its code rather than in the data).
-std::string_view option_named(const std::vector<std::string_view>& options, std::string_view token) {
+std::string_view option_named(std::string_view keyword, const std::vector<std::string_view>& options,
+                              std::string_view token) {
     for (std::string_view o : options)
         if (o == token) return o;
     if (token == "TITLE" && written(options, "ID")) return "ID";
+    // Every *SECTION_ keyword takes _TITLE in the manual (an A80 title card before card 1), but pydyna
+    // lists it for some only (*SECTION_SHELL yes, *SECTION_SOLID and *SECTION_BEAM no).
+    if (token == "TITLE" && keyword.starts_with("*SECTION_")) return "TITLE";
     return {};
 }
 
@@ -142,7 +151,7 @@ std::optional<KeywordMatch> find_generated(std::string_view key) {
             for (std::size_t pos = base_end; pos < key.size() && all_known;) {
                 std::size_t end = key.find('_', pos + 1);
                 if (end == std::string_view::npos) end = key.size();
-                const std::string_view o = option_named(options, key.substr(pos + 1, end - pos - 1));
+                const std::string_view o = option_named(entry->name, options, key.substr(pos + 1, end - pos - 1));
                 if (o.empty() || written(on, o)) all_known = end == pos + 1;  // "__" is no option
                 else on.push_back(o);
                 pos = end;
