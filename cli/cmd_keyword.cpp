@@ -82,7 +82,8 @@ void print_card_table(const CardSpec& card, CardFormat format) {
         const FieldSpec& f = card.fields[i];
         rows.push_back({fmt::format("{}-{}", slots[i].start + 1, slots[i].start + slots[i].width), field_name(f),
                         std::string(keywords::to_string(f.type)), default_cell(f), allowed_cell(f),
-                        with_since(f.doc, f.since)});
+                        f.refers_to.empty() ? with_since(f.doc, f.since)
+                                            : fmt::format("{} of a {}", with_since(f.doc, f.since), f.refers_to)});
     }
     std::array<std::size_t, 6> width{};
     for (const auto& row : rows)

@@ -109,4 +109,7 @@ TEST_CASE("keyword command: keywords without a hand-written schema show their ge
     CHECK(contains(r.output, "layout generated from pydyna"));
     CHECK(contains(r.output, "read only when IAUTO == 3"));
     CHECK(contains(r.output, "further lines are not checked"));
+
+    const Run contact = sphdeck("keyword '*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE'");
+    CHECK(contains(contact.output, "an id of a DEFINE_BOX"));  // SABOXID, from pydyna's links
 }

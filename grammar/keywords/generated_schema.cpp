@@ -45,12 +45,14 @@ FieldSpec field_of(std::string_view text) {
     // TGRLC, contact SBOPT) and its layouts differ between versions (*FREQUENCY_DOMAIN_FRF): its integer
     // fields are checked as numbers only, so no DK002/DK004 comes from a generated layout.
     f.type = t == 'I' || t == 'F' ? FieldType::Real : t == 'U' ? FieldType::Unused : FieldType::Text;
-    if (t == 'I') f.doc = "integer in pydyna's layout, checked as a number";
     if (parts.size() > 3) {
         f.column = static_cast<std::uint16_t>(small(parts[2]) + 1);
         f.width = small(parts[3]);
     }
-    if (parts.size() > 4) f.default_value = number(parts[4]);
+    if (parts.size() > 4 && !parts[4].empty()) f.default_value = number(parts[4]);
+    if (parts.size() > 5) f.refers_to = parts[5];
+    if (t == 'I') f.doc = f.refers_to.empty() ? "integer in pydyna's layout, checked as a number"
+                                              : "integer in pydyna's layout, checked as a number; an id";
     return f;
 }
 

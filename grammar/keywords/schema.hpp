@@ -51,6 +51,9 @@ struct FieldSpec {
     // words (case-insensitive; empty: any text).
     std::string_view default_text = {};
     std::vector<std::string_view> text_choices = {};
+    // Generated layouts: what the id in this field names ("PART", "SET_NODE", "DEFINE_CURVE"),
+    // from pydyna's links; empty: not an id, or not known. Not yet followed by REF rules.
+    std::string_view refers_to = {};
 
     bool is_named(std::string_view n) const;  // name or alias, case-insensitive
     const EnumChoice* choice(long long v) const;  // nullptr when v is not one of the choices
