@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "grammar/keywords/generated_layouts.hpp"
 #include "grammar/keywords/schema.hpp"
 
 namespace sphdeck::cli {
@@ -81,7 +82,8 @@ void print_card_table(const CardSpec& card, CardFormat format) {
         const FieldSpec& f = card.fields[i];
         rows.push_back({fmt::format("{}-{}", slots[i].start + 1, slots[i].start + slots[i].width), field_name(f),
                         std::string(keywords::to_string(f.type)), default_cell(f), allowed_cell(f),
-                        with_since(f.doc, f.since)});
+                        f.refers_to.empty() ? with_since(f.doc, f.since)
+                                            : fmt::format("{} of a {}", with_since(f.doc, f.since), f.refers_to)});
     }
     std::array<std::size_t, 6> width{};
     for (const auto& row : rows)
@@ -106,9 +108,14 @@ void print_card_table(const CardSpec& card, CardFormat format) {
 std::string card_notes(const CardSpec& card, std::size_t index, std::size_t count, std::size_t group) {
     std::vector<std::string> notes{std::string(keywords::to_string(card.repeat))};
     if (card.repeat == keywords::CardRepeat::Repeated) notes.back() += ": one line per item until the next keyword";
-    if (card.present_if)
+    if (card.present_if && !card.present_if->any_of.empty()) {
+        std::vector<std::string> values;
+        for (double v : card.present_if->any_of) values.push_back(number(v));
+        notes.push_back(fmt::format("read only when {} is one of {}", card.present_if->field, fmt::join(values, ", ")));
+    } else if (card.present_if) {
         notes.push_back(fmt::format("read only when {} {} {}", card.present_if->field,
                                     keywords::to_string(card.present_if->compare), number(card.present_if->value)));
+    }
     if (group > 0 && index + group >= count)
         notes.push_back(fmt::format("repeats in a group of {} cards until the next keyword", group));
     if (!card.since.empty()) notes.push_back(fmt::format("since {}", card.since));
@@ -140,6 +147,10 @@ void print_keyword(const KeywordMatch& match, CardFormat format) {
         fmt::print("\ncolumns in {} format\n", format == CardFormat::Long ? "long (+)" : "i10 (%)");
     for (std::size_t i = 0; i < cards.size(); ++i) {
         const CardSpec& card = *cards[i];
+        if (card.unknown_layout) {
+            fmt::print("\n(further lines are not checked: their layout depends on values or on the solver version)\n");
+            break;
+        }
         fmt::print("\n{} ({})\n", card.name, card_notes(card, i, cards.size(), group));
         if (!card.doc.empty()) fmt::print("  {}\n", card.doc);
         print_card_table(card, format);
@@ -154,6 +165,12 @@ void print_list() {
         if (!k.aliases.empty()) names += fmt::format(" ({})", fmt::join(k.aliases, ", "));
         w = std::max(w, names.size());
         rows.emplace_back(std::move(names), k.doc);
+    }
+    // Every other LS-DYNA keyword, from the generated layouts (hand-written names are listed above).
+    for (const auto& e : keywords::generated::layouts()) {
+        auto match = keywords::find_keyword(e.name);
+        if (match && match->schema->generated && match->schema->name == e.name)
+            rows.emplace_back(std::string(e.name), "(layout generated from pydyna)");
     }
     for (const auto& [names, doc] : rows) fmt::print("{:<{}}  {}\n", names, w, doc);
 }

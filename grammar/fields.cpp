@@ -124,7 +124,10 @@ CutReport cut_fields(std::string_view text, const CardLine& line, std::span<cons
         return report;
     }
 
-    report.has_tab = std::memchr(text.data(), '\t', text.size()) != nullptr;
+    // Only a tab before a value shifts columns; tabs after the last value are trailing blanks.
+    std::size_t end = text.size();
+    while (end > 0 && (text[end - 1] == ' ' || text[end - 1] == '\t' || text[end - 1] == '\r')) --end;
+    report.has_tab = end > 0 && std::memchr(text.data(), '\t', end) != nullptr;
     for (const FixedField& f : positions) {
         std::string_view field = f.start < text.size() ? text.substr(f.start, f.width) : std::string_view{};
         out.push_back({field, column_span(line, f.start, f.start + f.width)});

@@ -68,6 +68,7 @@ public:
         const bool particles = block.keyword.rfind("*ELEMENT_SPH", 0) == 0;
         for (const grammar::CardLine* l = deck_.begin_lines(block); l != deck_.end_lines(block); ++l) {
             while (next < cards.size() && !applies(*cards[next])) ++next;
+            if (next < cards.size() && cards[next]->unknown_layout) return;  // generated layout ends here
             if (next >= cards.size()) {
                 if (group > 0) {
                     next = group_start;

@@ -285,9 +285,9 @@ void extract_unknown_definitions(const grammar::RawDeck& deck, Model& m) {
         const bool part_variant = starts_with(b.keyword, "*PART_");
         const bool eos = starts_with(b.keyword, "*EOS_");
         if (!section && !material && !eos && !part_variant) continue;
-        if (keywords::find_keyword(b.keyword).has_value() &&
-            keywords::find_keyword(b.keyword)->unknown_options.empty())
-            continue;  // known: already extracted from its record
+        if (auto known = keywords::find_keyword(b.keyword);
+            known && known->unknown_options.empty() && !known->schema->generated)
+            continue;  // known by hand: already extracted from its record
         if (part_variant) {
             extract_part_variant(deck, b, m);
             continue;

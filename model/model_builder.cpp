@@ -55,6 +55,7 @@ void ModelBuilder::add_particles(const grammar::Block& block, const std::vector<
 void ModelBuilder::on_card(const grammar::Block& block, const keywords::KeywordMatch& match,
                            const keywords::CardSpec&, const grammar::CardLine& line,
                            const std::vector<FieldValue>& values) {
+    if (match.schema->generated) return;  // generated layouts are checked, not read into the model
     const std::string_view name = match.schema->name;
     const bool new_block = current_block_ != &block;
     current_block_ = &block;

@@ -99,7 +99,8 @@ json record_json(const KeywordRecord& r, const grammar::RawDeck& deck) {
 std::optional<KeywordRecord> unwritten_record(const grammar::Block& b) {
     if (b.line_count != 0) return std::nullopt;
     auto match = keywords::find_keyword(b.keyword);
-    if (!match || !match->unknown_options.empty() || match->schema->free_text) return std::nullopt;
+    if (!match || !match->unknown_options.empty() || match->schema->free_text || match->schema->generated)
+        return std::nullopt;
     const std::string_view name = match->schema->name;
     if (name == "*NODE" || name == "*ELEMENT_SPH" || name == "*END" || name.starts_with("*INCLUDE") ||
         name.starts_with("*PARAMETER"))

@@ -97,3 +97,19 @@ TEST_CASE("keyword command: --list names every keyword with its aliases") {
     CHECK(contains(r.output, "*MAT_NULL (*MAT_009)"));
     CHECK(contains(r.output, "*ELEMENT_SPH"));
 }
+
+TEST_CASE("keyword command: keywords without a hand-written schema show their generated layout") {
+    const Run list = sphdeck("keyword --list");
+    CHECK(contains(list.output, "*CONTROL_SPH_INCOMPRESSIBLE"));
+    CHECK(contains(list.output, "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE"));
+
+    const Run r = sphdeck("keyword '*CONTROL_IMPLICIT_AUTO'");
+    INFO(r.output);
+    CHECK(r.exit_code == 0);
+    CHECK(contains(r.output, "layout generated from pydyna"));
+    CHECK(contains(r.output, "read only when IAUTO == 3"));
+    CHECK(contains(r.output, "further lines are not checked"));
+
+    const Run contact = sphdeck("keyword '*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE'");
+    CHECK(contains(contact.output, "an id of a DEFINE_BOX"));  // SABOXID, from pydyna's links
+}

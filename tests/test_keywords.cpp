@@ -247,9 +247,11 @@ TEST_CASE("keywords: lookup by case, alias and options") {
         CHECK(m->unknown_options[0] == "Bogus");
         CHECK(m->unknown_options[0].data() == name.data() + 21);
 
-        auto incompressible = keywords::find_keyword("*CONTROL_SPH_INCOMPRESSIBLE");
+        // a hand-written base with an unknown option falls back to the generated layouts when
+        // LS-DYNA has the whole name (tests/test_generated_layouts.cpp)
+        auto incompressible = keywords::find_keyword("*CONTROL_SPH_INCOMPRESSIBLY");
         REQUIRE(incompressible);
-        CHECK(incompressible->unknown_options == std::vector<std::string_view>{"INCOMPRESSIBLE"});
+        CHECK(incompressible->unknown_options == std::vector<std::string_view>{"INCOMPRESSIBLY"});
 
         auto twice = keywords::find_keyword("*SECTION_SPH_TITLE_TITLE");
         REQUIRE(twice);

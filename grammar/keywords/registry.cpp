@@ -4,6 +4,7 @@
 #include <string>
 #include <utility>
 
+#include "grammar/keywords/generated_layouts.hpp"
 #include "grammar/keywords/schema.hpp"
 #include "grammar/keywords/tables.hpp"
 
@@ -100,6 +101,8 @@ std::string_view first_tokens(std::string_view s, std::size_t tokens) {
     return s.substr(0, pos);
 }
 
+std::optional<KeywordMatch> find_hand_written(const std::string& key, std::string_view core);
+
 }  // namespace
 
 std::span<const KeywordSchema> all_keywords() { return registry().schemas; }
@@ -108,6 +111,16 @@ std::optional<KeywordMatch> find_keyword(std::string_view full_name) {
     std::string_view core;
     const std::string key = normalized_key(full_name, &core);
     if (key.size() < 2) return std::nullopt;
+    // The hand-written tables win; the generated layouts cover every other LS-DYNA keyword.
+    std::optional<KeywordMatch> hand = find_hand_written(key, core);
+    if (hand && hand->unknown_options.empty()) return hand;
+    if (auto generated = generated::find_generated(key)) return generated;
+    return hand;
+}
+
+namespace {
+
+std::optional<KeywordMatch> find_hand_written(const std::string& key, std::string_view core) {
 
     // Longest base name first: the whole name, then without its last token, and so on.
     std::size_t base_end = key.size();
@@ -153,6 +166,8 @@ std::optional<KeywordMatch> find_keyword(std::string_view full_name) {
     }
     return match;
 }
+
+}  // namespace
 
 std::vector<std::string_view> similar_keywords(std::string_view name, std::size_t max) {
     const std::string key = normalized_key(name, nullptr);

@@ -55,6 +55,7 @@ std::string_view to_string(Compare c) {
 }
 
 bool CardCondition::holds(double v) const {
+    if (!any_of.empty()) return std::find(any_of.begin(), any_of.end(), v) != any_of.end();
     switch (compare) {
         case Compare::Less: return v < value;
         case Compare::LessEqual: return v <= value;

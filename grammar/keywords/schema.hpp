@@ -51,6 +51,9 @@ struct FieldSpec {
     // words (case-insensitive; empty: any text).
     std::string_view default_text = {};
     std::vector<std::string_view> text_choices = {};
+    // Generated layouts: what the id in this field names ("PART", "SET_NODE", "DEFINE_CURVE"),
+    // from pydyna's links; empty: not an id, or not known. Not yet followed by REF rules.
+    std::string_view refers_to = {};
 
     bool is_named(std::string_view n) const;  // name or alias, case-insensitive
     const EnumChoice* choice(long long v) const;  // nullptr when v is not one of the choices
@@ -76,6 +79,7 @@ struct CardCondition {
     std::string_view field = {};  // name of a field of an earlier card of the block
     Compare compare = Compare::Equal;
     double value = 0.0;
+    std::vector<double> any_of = {};  // non-empty: holds when the value is one of these (compare unused)
 
     bool holds(double field_value) const;
 };
@@ -88,6 +92,9 @@ struct CardSpec {
     std::uint16_t line_width = 80;  // significant columns in standard format
     std::string_view since = {};    // edition that introduced the card
     std::string_view doc = {};
+    // Generated layouts only: from this card on the layout is not known (an undecidable condition,
+    // a count read from values), so the rest of the block is not checked and nothing is reported.
+    bool unknown_layout = false;
 
     const FieldSpec* field(std::string_view name) const;  // by name or alias, case-insensitive
 };
@@ -117,6 +124,9 @@ struct KeywordSchema {
     // (*PART: heading card + data card per part). Cards inside the group are marked Once.
     std::uint8_t repeat_group = 0;
     bool free_text = false;  // data lines are free text, never split into fields (*COMMENT)
+    // From the table generated from pydyna's layouts (grammar/keywords/generated/), not hand-written:
+    // its cards are cut and type-checked, but it is not read into the model.
+    bool generated = false;
 
     const OptionSpec* option(std::string_view suffix) const;  // suffix or alias
 };
