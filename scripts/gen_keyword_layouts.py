@@ -208,9 +208,12 @@ def main():
     print("namespace sphdeck::keywords::generated {")
     print()
     print("namespace {")
+    print("using namespace std::string_view_literals;")
+    print("// \"...\"sv: the length comes with the literal, so no strlen runs at compile time (clang's")
+    print("// constexpr step limit stops a strlen over 3,684 long literals).")
     print("constexpr LayoutEntry kLayouts[] = {")
     for name, body in rows:
-        print(f"    {{{cxx_string(name)}, {cxx_string(body)}}},")
+        print(f"    {{{cxx_string(name)}sv, {cxx_string(body)}sv}},")
     print("};")
     print("}  // namespace")
     print()
