@@ -1,0 +1,45 @@
+// What the editor server answers about a checked deck, one function per request, each a pure
+// function of the deck and the request's parameters that returns the LSP result as JSON (null when
+// there is nothing to say). The server (lsp/server.*) finds the deck and the file a request is
+// about, then calls these; they never read a file or write to the client.
+// One file per feature: lsp/feature_hover.cpp, feature_definition.cpp, feature_completion.cpp,
+// feature_symbols.cpp, feature_folding.cpp, feature_code_actions.cpp.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "grammar/source_map.hpp"
+#include "lsp/checked_deck.hpp"
+#include "lsp/text_position.hpp"
+
+namespace sphdeck::lsp {
+
+// textDocument/hover: a keyword (what it is), a field (name, columns, type, default, allowed values,
+// effective value), an id (what it names). Returns a Hover ({"contents": MarkupContent, "range"}) or null.
+nlohmann::json hover(const CheckedDeck& deck, grammar::FileId file, TextPosition position);
+
+// textDocument/definition: where the id, `&name` parameter or include file under the cursor is
+// defined. Returns Location | Location[] | null.
+nlohmann::json definition(const CheckedDeck& deck, grammar::FileId file, TextPosition position);
+
+// textDocument/references: every place that names the same id (with the definition when
+// `include_declaration`). Returns Location[] (possibly empty).
+nlohmann::json references(const CheckedDeck& deck, grammar::FileId file, TextPosition position,
+                          bool include_declaration);
+
+// textDocument/completion: keyword names at the start of a line, allowed values of enum fields,
+// ids that exist for id fields. Returns CompletionList.
+nlohmann::json completion(const CheckedDeck& deck, grammar::FileId file, TextPosition position);
+
+// textDocument/documentSymbol of one file of the deck: keywords, parts with their titles
+// (DocumentSymbol[]).
+nlohmann::json document_symbols(const CheckedDeck& deck, grammar::FileId file);
+
+// textDocument/foldingRange: one range per keyword block (and comment runs). FoldingRange[].
+nlohmann::json folding_ranges(const CheckedDeck& deck, grammar::FileId file);
+
+// textDocument/codeAction for the diagnostics of the request's context (`params` is the request's
+// whole params object: textDocument, range, context). CodeAction[] with WorkspaceEdits on `uri`.
+nlohmann::json code_actions(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json& params);
+
+}  // namespace sphdeck::lsp
