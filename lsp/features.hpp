@@ -6,6 +6,8 @@
 // feature_symbols.cpp, feature_folding.cpp, feature_code_actions.cpp.
 #pragma once
 
+#include <string_view>
+
 #include <nlohmann/json.hpp>
 
 #include "grammar/source_map.hpp"
@@ -41,5 +43,18 @@ nlohmann::json folding_ranges(const CheckedDeck& deck, grammar::FileId file);
 // textDocument/codeAction for the diagnostics of the request's context (`params` is the request's
 // whole params object: textDocument, range, context). CodeAction[] with WorkspaceEdits on `uri`.
 nlohmann::json code_actions(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json& params);
+
+// The feature requests by method name, for the server: it finds the deck and the file that a
+// request's textDocument names, then asks here. `handled` is false for a method no feature answers
+// (the server then says MethodNotFound). The table is lsp/feature_dispatch.cpp: one row a feature.
+struct FeatureAnswer {
+    bool handled = false;
+    nlohmann::json result;
+};
+FeatureAnswer answer_feature(std::string_view method, const CheckedDeck& deck, grammar::FileId file,
+                             const nlohmann::json& params);
+
+// What the features offer, merged into the server's initialize result ("hoverProvider": true...).
+nlohmann::json feature_capabilities();
 
 }  // namespace sphdeck::lsp
