@@ -76,7 +76,8 @@ int Server::run() {
         } while (batch.size() < options_.max_batch && reader_.more_available());
         for (const ReadResult& read : batch)
             if (is_cancel(read)) {
-                const nlohmann::json* id = member(read.message.value("params", nlohmann::json()), "id");
+                const nlohmann::json params = read.message.value("params", nlohmann::json());
+                const nlohmann::json* id = member(params, "id");
                 if (id && valid_id(*id)) cancelled_.insert(id->dump());
             }
         for (const ReadResult& read : batch) {
