@@ -149,6 +149,7 @@ void Server::handle_request(const nlohmann::json& id, const std::string& method,
         } else if (shut_down_) {
             throw RpcError{error_code::invalid_request, "the server is shut down"};
         } else if (method == "shutdown") {
+            workspace_.flush();  // what the edits so far found is published before the end
             shut_down_ = true;
         } else if (method.rfind("textDocument/", 0) == 0) {
             result = document_request(method, params);
