@@ -186,7 +186,7 @@ ReadResult MessageReader::next() {
             resync_inside(body);
             return {ReadStatus::parse_error, nullptr, "the body is not JSON"};
         }
-        return {ReadStatus::message, std::move(*parsed), {}};
+        return {ReadStatus::message, std::move(*parsed), {}, body.size()};
     }
 }
 

@@ -65,6 +65,7 @@ int Server::run() {
         // Whatever is already waiting, read before anything is handled (cancellation, one re-check).
         std::vector<ReadResult> batch;
         bool ended = false;
+        std::size_t held = 0;  // bodies read ahead: at most about one message's bound
         do {
             ReadResult read = reader_.next();
             if (read.status == ReadStatus::end) {
@@ -72,8 +73,9 @@ int Server::run() {
                 ended = true;
                 break;
             }
+            held += read.bytes;
             batch.push_back(std::move(read));
-        } while (batch.size() < options_.max_batch && reader_.more_available());
+        } while (batch.size() < options_.max_batch && held < options_.max_body && reader_.more_available());
         for (const ReadResult& read : batch)
             if (is_cancel(read)) {
                 const nlohmann::json params = read.message.value("params", nlohmann::json());

@@ -261,3 +261,31 @@ TEST_CASE("lsp workspace: a buffer that is no deck yet, and one that cannot be r
     CHECK_FALSE(r.workspace.open("untitled:Untitled-1", "*KEYWORD\n", 1));
     CHECK_FALSE(r.workspace.change(lsp::uri_from_path(dir.path() / "closed.k"), 1, json::array()));
 }
+
+TEST_CASE("lsp server: waiting didChange notifications cost one re-check; a request sees every edit before it") {
+    test::TempDir dir;
+    const std::string text = "*KEYWORD\n*CONTROL_TERMINATION\n     0.002\n*END\n";
+    const std::string uri = lsp::uri_from_path(dir.write("deck.k", text));
+    const json add_twice = json::array({edit(1, 0, 1, 0, "*CONTROL_TERMINATION\n     0.001\n")});
+    std::vector<json> messages = {test::initialize_request(), test::did_open(uri, text, 1)};
+    for (int version = 2; version <= 6; ++version)
+        messages.push_back(test::did_change(uri, version, json::array({edit(0, 0, 0, 0, "$ typing\n")})));
+    auto s = test::serve(messages);
+    CHECK(s.publications(uri) == 1);  // five edits, one re-check
+    CHECK(s.last_published(uri)["version"] == 6);
+
+    const json hover = {{"textDocument", {{"uri", uri}}}, {"position", {{"line", 0}, {"character", 0}}}};
+    s = test::serve({test::initialize_request(), test::did_open(uri, text, 1), test::did_change(uri, 2, add_twice),
+                     test::request(7, "textDocument/hover", hover), test::did_change(uri, 3, json::array({json{{"text", text}}}))});
+    REQUIRE(s.publications(uri) == 2);
+    std::size_t first_list = 0, answer = 0;
+    for (std::size_t i = 0; i < s.messages.size(); ++i) {
+        if (s.messages[i].value("method", "") == "textDocument/publishDiagnostics" && first_list == 0) first_list = i;
+        if (s.messages[i].contains("id") && s.messages[i]["id"] == 7) answer = i;
+    }
+    CHECK(first_list < answer);  // re-checked before the request was answered
+    CHECK(s.messages[first_list]["params"]["version"] == 2);
+    CHECK(s.messages[first_list]["params"]["diagnostics"].size() == 1);
+    CHECK(s.last_published(uri)["diagnostics"].empty());
+    CHECK(s.last_published(uri)["version"] == 3);
+}
