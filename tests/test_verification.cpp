@@ -249,7 +249,7 @@ TEST_CASE("verification decks: every deck in decks/verification passes sphdeck c
         CHECK(r.model.particles.size() > 0);
         CHECK(r.model.symmetry_planes.size() >= 3);
     }
-    CHECK(decks == 10);  // sod x 3, hydrostatic x 2, dam break x 2, sedov x 3
+    CHECK(decks == 11);  // sod x 3, hydrostatic x 2, dam break x 2, sedov x 4
 }
 
 // The Sod strips expand along x only (by rho_L / rho*_L = 2.35), while DERIV 0 in 2D grows h only as

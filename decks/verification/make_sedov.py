@@ -32,12 +32,12 @@ ENERGY = 1.0          # per unit length of the line source, the full plane
 P_AMBIENT = 1.0e-6
 BOX = 1.0             # the quarter [0, BOX]^2
 END_TIME = 0.5
-HOT_RADIUS = 0.1      # the particles within it get the energy
-RESOLUTIONS = (25, 50, 100)
+HOT_RADIUS = 3.0      # in spacings: the particles within it get the energy
+RESOLUTIONS = (35, 50, 70, 100)  # quick: 35 and 70; full: 50 and 100
 
 
 def hot(x, y, dx):
-    return math.hypot(x, y) < HOT_RADIUS
+    return math.hypot(x, y) < HOT_RADIUS * dx
 
 
 def sedov_deck(n):
@@ -68,8 +68,8 @@ def sedov_deck(n):
     d.symmetry_plane(f"Box wall x = {BOX}", (BOX, 0.0, 0.0), (BOX - 1.0, 0.0, 0.0))
     d.symmetry_plane(f"Box wall y = {BOX}", (0.0, BOX, 0.0), (0.0, BOX - 1.0, 0.0))
     rows = [(x, y, 2 if hot(x, y, dx) else 1, mass) for x, y in points]
-    d.particles(rows, [f"{n} x {n} particles on a square lattice of spacing {dx:g}, half a spacing from",
-                       f"every wall; part 2 within {HOT_RADIUS:g} dx of the origin. Mass RO dx^2."])
+    d.particles(rows, [f"{n} x {n} particles on a square lattice of spacing 1/{n}, half a spacing",
+                       f"from every wall; part 2 within {HOT_RADIUS:g} dx of the origin. Mass RO dx^2."])
     return d, n_hot
 
 
