@@ -7,14 +7,23 @@ energy E = 1 is per unit length of the line source, the masses per unit thicknes
 x >= 0, y >= 0 is modelled: symmetry planes at x = 0 and y = 0 mirror it into the full plane, and planes
 at x = y = 1 close the box (the shock reaches r_s = 0.71 at t = 0.5, well inside). The quarter holds E / 4.
 
-The point energy goes into the particles within 2 dx of the origin (3 in the quarter, 12 in the full plane)
-as one hot part with the same RO: a deck gives each part its own initial energy (*EOS_LINEAR_POLYNOMIAL E0,
-per reference volume), not each particle. The ambient gas has p0 = 1e-6, negligible against the post-shock
-pressure (0.42 at t = 0.5): the strong-shock limit of the similarity solution.
+The point energy goes into the particles within 3 dx of the origin (8 in the quarter, 32 in the full plane,
+at every resolution, so the deposit shrinks towards a point as dx does) as one hot part with the same RO: a
+deck gives each part its own initial energy (*EOS_LINEAR_POLYNOMIAL E0, per reference volume), not each
+particle. The ambient gas has p0 = 1e-6, negligible against the post-shock pressure (0.42 at t = 0.5): the
+strong-shock limit of the similarity solution.
 
 Gas: *MAT_NULL RO = 1 + *EOS_LINEAR_POLYNOMIAL C4 = C5 = gamma - 1 (p = (gamma - 1) rho e, sph-algorithms.md
 section 10.1). Monaghan viscosity alpha = 1, beta = 2 (Q2 = 1, Q1 = 2) as for Sod; TSSFAC 0.3; h0 from
-CSLH 1.2 (an ordinary deck), HMIN 0.2 and HMAX 2.0 (the defaults).
+CSLH 1.2. Three settings a strong 2D shock needs (docs/verification.md section 4, measured):
+- FORM 1 (renormalised gradients). The lattice is compressed 6-fold radially behind the shock but not
+  tangentially, and DERIV 0 shrinks h as rho^(-1/2) in 2D, so h falls below the tangential spacing; the
+  uncorrected FORM 0 gradients then left the shock 7 % short at N = 50 and 100 alike (0.660 / 0.665 for
+  0.710), with the kinetic share of the energy at 13 % instead of 21 %.
+- HMIN 1: h never below h0, so the shell keeps its tangential neighbours (peak density 6.94 with HMIN 0.2,
+  6.23 with HMIN 1, exact 6, at N = 100).
+- HMAX 5: the core thins about 20-fold; with HMAX 2 the hot particles stopped at h = 2 h0, lost their
+  neighbours and kept their energy (the shock ended 12-21 % short).
 
 Standard library only; deterministic. Run `python3 decks/verification/make_sedov.py`.
 """
