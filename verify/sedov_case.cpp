@@ -158,7 +158,7 @@ CaseResult run_sedov(const CaseOptions& options) {
                     "beta = 2; TSSFAC 0.3.",
                     resolutions[0], resolutions[1]),
         fmt::format("Reference: the cylindrical (j = 2) similarity solution, solved in `verify/sedov_exact.cpp` "
-                    "(alpha = {:.6f}; Kamm & Timmes 2007: 0.9840), shock at r_s = (E / (alpha rho0))^(1/4) "
+                    "(alpha = {:.6f}; 0.984 in Kamm & Timmes 2007), shock at r_s = (E / (alpha rho0))^(1/4) "
                     "t^(1/2) = {:.4f} at t = {:.4g}, density jump (gamma + 1) / (gamma - 1) = {:g}.",
                     exact.alpha, shock_exact, t, peak_exact),
         "Density averaged in rings one spacing wide: peak density = the largest ring mean; shock radius = where "
