@@ -23,7 +23,7 @@ CSLH 1.2. Three settings a strong 2D shock needs (docs/verification.md section 4
 - HMIN 1: h never below h0, so the shell keeps its tangential neighbours (peak density 6.94 with HMIN 0.2,
   6.23 with HMIN 1, exact 6, at N = 100).
 - HMAX 5: the core thins about 20-fold; with HMAX 2 the hot particles stopped at h = 2 h0, lost their
-  neighbours and kept their energy (the shock ended 12-21 % short).
+  neighbours and kept their energy (with FORM 0 and HMAX 2 the shock ended 12-21 % short).
 
 Standard library only; deterministic. Run `python3 decks/verification/make_sedov.py`.
 """
