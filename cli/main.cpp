@@ -19,7 +19,7 @@ const std::vector<sphdeck::cli::Command>& commands() {
         {"smooth", "preview smoothing lengths, neighbours and time step per part (table, json, csv, vtk, svg)", sphdeck::cli::setup_smooth},
         {"sol2sph", "generate the particles SOL2SPH parts of a Radioss deck will release (vtp, csv)", sphdeck::cli::setup_sol2sph},
         {"run", "run the deck with the compact reference SPH solver (time history, vtp snapshots)", sphdeck::cli::setup_run},
-        {"verify", "run the verification cases (sod, hydrostatic, dambreak) against exact and experimental data", sphdeck::cli::setup_verify},
+        {"verify", "run the verification cases (sod, hydrostatic, dambreak, sedov) against exact and experimental data", sphdeck::cli::setup_verify},
         {"lsp", "serve editors over the Language Server Protocol on stdio: diagnostics as you type, hover, go to definition", sphdeck::cli::setup_lsp},
     };
     return table;

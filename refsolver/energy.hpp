@@ -1,13 +1,23 @@
-// Specific internal energy, the form that conserves energy with momentum.hpp:
-//   de_i/dt = 1/2 sum_j m_j A_ij v_ij . g_ij,  A_ij = p_i / rho_i^2 + p_j / rho_j^2 + Pi_ij
-// (Monaghan 1992, Annu. Rev. Astron. Astrophys. 30, 543, eq. 2.23 with the viscous term; literature,
-// cited from general knowledge). Summed with the kinetic energy the pair terms cancel:
+// Specific internal energy, consistent with the density by continuity (continuity.hpp) and with
+// momentum.hpp:
+//   de_i/dt = (p_i / rho_i) sum_j V_j v_ij . g_ij + 1/2 sum_j m_j Pi_ij v_ij . g_ij
+//           = (p_i / rho_i^2) d rho_i/dt + viscous heating.
+// The first term is each particle's own pdV work (as an EOS integrates energy from its own volume
+// change: de = -p dv, v = 1/rho), the second splits the viscous work of each pair equally (Monaghan
+// 1992, Annu. Rev. Astron. Astrophys. 30, 543; literature, cited from general knowledge). Summed
+// with the kinetic energy the pair terms cancel against momentum.hpp's:
 // d/dt sum_i m_i (v_i^2 / 2 + e_i) = sum_i m_i v_i . a_body, so the total drifts only by the time
 // integration error (viscous heating keeps the energy the viscosity removes).
+// Before (up to Nov 2026) the solver split the pressure work of each pair equally too,
+// 1/2 m_j (p_i / rho_i^2 + p_j / rho_j^2): it conserves energy with the p / rho^2 momentum form but
+// heats a particle by its neighbour's pressure rather than by its own compression (docs/verification.md §4).
 #pragma once
 
 namespace sphdeck::refsolver {
 
-inline double energy_term(double m_j, double a_ij, double v_dot_g) { return 0.5 * m_j * a_ij * v_dot_g; }
+// j's share of de_i: V_j = m_j / rho_j, p_over_rho_i = p_i / rho_i.
+inline double energy_term(double volume_j, double p_over_rho_i, double m_j, double pi_ij, double v_dot_g) {
+    return (volume_j * p_over_rho_i + 0.5 * m_j * pi_ij) * v_dot_g;
+}
 
 }  // namespace sphdeck::refsolver

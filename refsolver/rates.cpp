@@ -14,14 +14,15 @@ namespace {
 
 using Correction = std::array<double, 6>;
 
-// The geometry and the momentum factors of one pair (i, j), seen from i: g = g_ij, a_ij for i's
-// sums, a_ji for j's (momentum.hpp's A with the arguments swapped; equal in exact arithmetic).
+// The geometry of one pair (i, j), seen from i (g = g_ij), the momentum factor A_ij (momentum.hpp,
+// symmetric: both particles' sums use it) and Pi_ij for the viscous heating (energy.hpp).
 struct PairTerms {
-    double gx, gy, gz, v_dot_g, a_ij, a_ji;
+    double gx, gy, gz, v_dot_g, a, pi;  // a: momentum.hpp's A_ij (= A_ji)
 };
 
 // One pair within the support (r2 < 4 h_ij^2). One square root and two divisions for the kernel
-// (1 / h_ij and the outer-shell 1 / r); p / rho^2 comes precomputed per particle.
+// (1 / h_ij and the outer-shell 1 / r) and one for the momentum factor; p / rho comes precomputed per
+// particle.
 template <int Dimension, bool Renormalise>
 [[gnu::always_inline]] inline PairTerms pair_terms(const PackedParticle& a, const PackedParticle& b, const Correction& ba, const Correction& bb,
                      double dx, double dy, double dz, double r2, double norm, const MonaghanViscosity& viscosity) {
@@ -43,25 +44,24 @@ template <int Dimension, bool Renormalise>
     const double v_dot_g = dvx * gx + dvy * gy + dvz * gz;
     const double v_dot_x = dvx * dx + dvy * dy + dvz * dz;
     const double pi_ij = viscosity.pi(v_dot_x, r2, hij, 0.5 * (a.c + b.c), 0.5 * (a.rho + b.rho));
-    return {gx, gy, gz, v_dot_g, momentum_factor(a.p_over_rho2, b.p_over_rho2, pi_ij),
-            momentum_factor(b.p_over_rho2, a.p_over_rho2, pi_ij)};
+    return {gx, gy, gz, v_dot_g, momentum_factor(a.p_over_rho, a.rho, b.p_over_rho, b.rho, pi_ij), pi_ij};
 }
 
 // Sums of one particle: ax ay az drho de.
 using Sums = std::array<double, 5>;
 
 // Adds j's share of pair (i, j) to i's sums: m_j A_ij g_ij and the continuity and energy terms.
-inline void add_to(Sums& sums, const PairTerms& t, const PackedParticle& j) {
-    sums[0] -= j.m * t.a_ij * t.gx, sums[1] -= j.m * t.a_ij * t.gy, sums[2] -= j.m * t.a_ij * t.gz;
+inline void add_to(Sums& sums, const PairTerms& t, const PackedParticle& i, const PackedParticle& j) {
+    sums[0] -= j.m * t.a * t.gx, sums[1] -= j.m * t.a * t.gy, sums[2] -= j.m * t.a * t.gz;
     sums[3] += continuity_term(j.volume, t.v_dot_g);
-    sums[4] += energy_term(j.m, t.a_ij, t.v_dot_g);
+    sums[4] += energy_term(j.volume, i.p_over_rho, j.m, t.pi, t.v_dot_g);
 }
 
 // Adds i's share of pair (i, j) to j's sums: g_ji = -g_ij and v_ji . g_ji = v_ij . g_ij.
-inline void add_reverse(Sums& sums, const PairTerms& t, const PackedParticle& i) {
-    sums[0] += i.m * t.a_ji * t.gx, sums[1] += i.m * t.a_ji * t.gy, sums[2] += i.m * t.a_ji * t.gz;
+inline void add_reverse(Sums& sums, const PairTerms& t, const PackedParticle& i, const PackedParticle& j) {
+    sums[0] += i.m * t.a * t.gx, sums[1] += i.m * t.a * t.gy, sums[2] += i.m * t.a * t.gz;
     sums[3] += continuity_term(i.volume, t.v_dot_g);
-    sums[4] += energy_term(i.m, t.a_ji, t.v_dot_g);
+    sums[4] += energy_term(i.volume, j.p_over_rho, i.m, t.pi, t.v_dot_g);
 }
 
 // The stress terms of pair (i, j) of a deck with *MAT_ELASTIC parts (stress.hpp; sph-algorithms.md
@@ -160,8 +160,8 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
                 const double dx = me.x - o.x, dy = me.y - o.y, dz = me.z - o.z;
                 const PairTerms terms = pair_terms<Dimension, Renormalise>(
                     me, o, bi, correction[j], dx, dy, dz, dx * dx + dy * dy + dz * dz, norm, viscosity);
-                add_to(own, terms, o);
-                add_reverse(received[j], terms, me);
+                add_to(own, terms, me, o);
+                add_reverse(received[j], terms, me, o);
                 if constexpr (Solid) {
                     const StressTerms st = stress_terms(stress[i], stress[j], me, o, terms, dx, dy, dz);
                     add_stress(own, own_gradient, st, o.m, o.volume, 1.0);
@@ -177,7 +177,7 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
                 const double dx = me.x - o.x, dy = me.y - o.y, dz = me.z - o.z;
                 const PairTerms terms = pair_terms<Dimension, Renormalise>(me, o, bi, correction[j], dx, dy, dz,
                                                                            dx * dx + dy * dy + dz * dz, norm, viscosity);
-                add_to(own, terms, o);
+                add_to(own, terms, me, o);
                 if constexpr (Solid)
                     add_stress(own, own_gradient, stress_terms(stress[i], stress[j], me, o, terms, dx, dy, dz), o.m,
                                o.volume, 1.0);
@@ -225,7 +225,7 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
 }  // namespace
 
 void compute_rates(Particles& s, const NeighbourList& list, const RateParameters& parameters, RateScratch& scratch) {
-    // Pack what neighbours are read for, ghosts included; p / rho^2 and m / rho once per particle.
+    // Pack what neighbours are read for, ghosts included; p / rho and m / rho once per particle.
     const std::size_t n = s.total();
     scratch.packed.resize(n);
     PackedParticle* packed = scratch.packed.data();
@@ -233,7 +233,7 @@ void compute_rates(Particles& s, const NeighbourList& list, const RateParameters
     for (std::size_t i = 0; i < n; ++i) {
         const double m = s.interacting[i] ? s.m[i] : 0.0;
         packed[i] = {s.x[i], s.y[i], s.z[i], s.vx[i], s.vy[i], s.vz[i], s.h[i], m,
-                     s.rho[i], s.c[i], s.p[i] / (s.rho[i] * s.rho[i]), m / s.rho[i]};
+                     s.rho[i], s.c[i], s.p[i] / s.rho[i], m / s.rho[i]};
     }
     const bool two = parameters.kernel.dimension == 2;
     if (parameters.solid) {  // *MAT_ELASTIC parts: S / rho^2 too, and the loops with the stress terms

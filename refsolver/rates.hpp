@@ -37,7 +37,7 @@ struct RateParameters {
 // What the pair loop reads of a particle, packed together: one or two cache lines per neighbour
 // instead of one per array. Non-interacting particles get m = 0 and contribute nothing.
 struct PackedParticle {
-    double x, y, z, vx, vy, vz, h, m, rho, c, p_over_rho2, volume;  // volume = m / rho
+    double x, y, z, vx, vy, vz, h, m, rho, c, p_over_rho, volume;  // volume = m / rho
 };
 
 // Work arrays of compute_rates, kept between steps so that no step allocates.

@@ -1,6 +1,7 @@
 // verify/: the exact Riemann solver against verification.md §1's table, the error norms
 // and convergence order on synthetic data with known answers (§9), wave detection on synthetic
-// profiles, the surge-front rule, the Martin & Moyce table, and the verification decks passing `check`.
+// profiles, the surge-front rule, the Martin & Moyce table, the verification decks passing `check`, and the
+// deck settings the Sod and Sedov cases depend on.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -249,7 +250,7 @@ TEST_CASE("verification decks: every deck in decks/verification passes sphdeck c
         CHECK(r.model.particles.size() > 0);
         CHECK(r.model.symmetry_planes.size() >= 3);
     }
-    CHECK(decks == 7);  // sod x 3, hydrostatic x 2, dam break x 2
+    CHECK(decks == 11);  // sod x 3, hydrostatic x 2, dam break x 2, sedov x 4
 }
 
 // The Sod strips expand along x only (by rho_L / rho*_L = 2.35), while DERIV 0 in 2D grows h only as
@@ -272,5 +273,32 @@ TEST_CASE("verification decks: the Sod decks keep h about 2 spacings along x in 
         CHECK(h_high == Approx(h_low));  // one h0 on both sides of the diaphragm
         const double lowest_ratio = h_low / dx * std::sqrt(exact.rho_star_left / exact.left.rho);
         CHECK(lowest_ratio >= 1.9);
+    }
+}
+
+// The Sedov decks (docs/verification.md §4): FORM 0 left the shock 7 % short and not converging, HMIN 0.2
+// let the shell's h fall below the tangential spacing, and HMAX 2 froze the hot core, so the decks must keep
+// FORM 1, HMIN 1 and HMAX 5, and put E/4 in the same 8 particles at every resolution.
+TEST_CASE("verification decks: the Sedov decks keep FORM 1, HMIN 1, HMAX 5 and E/4 in 8 particles") {
+    for (int n : {35, 50, 70, 100}) {
+        const std::filesystem::path deck = std::filesystem::path(SPHDECK_SOURCE_DIR) / "decks" / "verification" /
+                                           ("sedov_2d_" + std::to_string(n) + ".k");
+        INFO(deck.filename().string());
+        const sphdeck::lint::CheckResult r = sphdeck::lint::check_file(deck.string());
+        CHECK(r.model.controls.sph.form.value == sphdeck::model::Form::Renormalized);
+        REQUIRE(r.model.sections.size() == 1);
+        CHECK(r.model.sections[0].hmin.value == 1.0);
+        CHECK(r.model.sections[0].hmax.value == 5.0);
+        const auto setup = sphdeck::refsolver::Simulation::create(r.model);
+        REQUIRE(setup.simulation);
+        const sphdeck::refsolver::ParticleState& s = setup.simulation->state();
+        double energy = 0;
+        std::size_t hot = 0;
+        for (std::size_t i = 0; i < s.size(); ++i) {
+            energy += s.mass[i] * s.e[i];
+            hot += s.e[i] > 1.0;
+        }
+        CHECK(hot == 8);
+        CHECK(energy == Approx(0.25 + 2.5e-6).epsilon(1e-6));  // E / 4 in the quarter, plus the ambient gas
     }
 }

@@ -13,8 +13,10 @@ namespace sphdeck::verify {
 CaseResult run_sod(const CaseOptions& options);
 // Hydrostatic water column (§2): pressure against rho0 g (H - y), bottom pressure, residual kinetic energy.
 CaseResult run_hydrostatic(const CaseOptions& options);
-// Dam break (§3): surge-front position against Martin & Moyce (1952).
+// Dam break (§3): surge-front position against Martin & Moyce (1952) and Koshizuka & Oka (1996).
 CaseResult run_dam_break(const CaseOptions& options);
+// Sedov-Taylor blast wave (§4): shock radius and peak density at two resolutions, energy conservation.
+CaseResult run_sedov(const CaseOptions& options);
 
 struct VerificationCase {
     std::string_view name;  // as typed on the command line

@@ -77,11 +77,11 @@ class Deck:
                  ruler("dtinit", "tssfac", "isdo", "tslimt", "dt2ms", "lctm", "erode", "ms1st"),
                  card(0.0, tssfac, 0, 0.0, 0.0, 0, 0, 0))
 
-    def control_sph(self):
+    def control_sph(self, form=0, why="FORM 0: the default (standard) formulation."):
         self.add("*CONTROL_SPH",
-                 "$ IDIM 2: 2D plane strain. FORM 0: the default (standard) formulation.",
+                 f"$ IDIM 2: 2D plane strain. {why}",
                  ruler("ncbs", "boxid", "dt", "idim", "memory", "form", "start", "maxv"),
-                 card(1, 0, 1.0e20, 2, 150, 0, 0.0, 1.0e15),
+                 card(1, 0, 1.0e20, 2, 150, form, 0.0, 1.0e15),
                  ruler("cont", "deriv", "ini", "ishow", "ierod", "icont", "iavis", "isymp"),
                  card(0, 0, 0, 0, 0, 0, 0, 100),
                  ruler("ithk", "istab", "ql"),
@@ -95,13 +95,13 @@ class Deck:
                  ruler("q1", "q2", "type"),
                  card(q1, q2, 1))
 
-    def section_sph(self, secid=1, cslh=1.2, sphini=None, why=None):
+    def section_sph(self, secid=1, cslh=1.2, sphini=None, why=None, hmin=0.2, hmax=2.0):
         """CSLH times the largest nearest-neighbour distance gives h0, unless SPHINI sets h0 itself
-        (CSLH is then left blank: LS-DYNA ignores it)."""
+        (CSLH is then left blank: LS-DYNA ignores it). HMIN and HMAX default to LS-DYNA's 0.2 and 2.0."""
         comment = [f"$ {why}"] if why else []
         self.add("*SECTION_SPH", *comment,
                  ruler("secid", "cslh", "hmin", "hmax", "sphini", "death", "start"),
-                 card(secid, "" if sphini else cslh, 0.2, 2.0, sphini or 0.0, 1.0e20, 0.0))
+                 card(secid, "" if sphini else cslh, hmin, hmax, sphini or 0.0, 1.0e20, 0.0))
 
     def part(self, pid, title, secid, mid, eosid):
         self.add("*PART", ruler("title", widths=[70]), title,
