@@ -23,6 +23,19 @@ bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
 std::string_view trim(std::string_view s, std::size_t& offset) {
     std::size_t b = 0, e = s.size();
+    // Leading spaces eight at a time: right-aligned fixed fields ("       1") are mostly blanks.
+    if constexpr (std::endian::native == std::endian::little) {
+        while (e - b >= 8) {
+            std::uint64_t v;
+            std::memcpy(&v, s.data() + b, 8);
+            v ^= 0x2020202020202020u;  // spaces become zero bytes
+            if (v != 0) {
+                b += static_cast<std::size_t>(std::countr_zero(v)) / 8;
+                break;
+            }
+            b += 8;
+        }
+    }
     while (b < e && is_blank(s[b])) ++b;
     while (e > b && is_blank(s[e - 1])) --e;
     offset = b;

@@ -1,6 +1,5 @@
 #include "grammar/dyna/reader.hpp"
 
-#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 
@@ -70,7 +69,12 @@ struct action<rules::data_line> {
 RawDeck read_main(SourceFile main, const std::filesystem::path& directory, const ReaderOptions& options) {
     RawDeck deck;
     // One CardLine per line at most: reserving once keeps the big-deck path free of regrowth.
-    const auto newlines = static_cast<std::size_t>(std::count(main.text.data(), main.text.data() + main.text.size(), '\n'));
+    // memchr, not std::count: glibc's vectorised memchr costs a tenth of the instructions per byte.
+    std::size_t newlines = 0;
+    const char* const end = main.text.data() + main.text.size();
+    for (const char* p = main.text.data();
+         (p = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)))); ++p)
+        ++newlines;
     deck.lines.reserve(newlines + 1);
     main.text.release(0, main.text.size());
     FileId id = deck.sources.add(std::move(main));
