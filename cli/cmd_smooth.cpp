@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
+#include <memory>
 #include <optional>
 
 #include "cli/commands.hpp"
@@ -269,6 +270,9 @@ void print_text(const SmoothArgs& args, const engine::CheckResult& r, const prep
 int run_smooth(const SmoothArgs& args) {
     engine::CheckOptions options;
     options.reader.include_paths = args.include_paths;
+    // The geometry rules compute the preview of the deck's own INI mode: printed as it is unless
+    // --ini asks for another mode (computing it twice was half the command's time on big decks).
+    options.rules.keep_preview = !args.ini.has_value();
     const engine::CheckResult r = engine::check_file(args.deck, options);
     const diag::Counts counts = diag::count(r.diagnostics);
     if (r.model.particles.size() == 0) {
@@ -283,10 +287,14 @@ int run_smooth(const SmoothArgs& args) {
 
     preproc::PreviewOptions preview_options;
     if (args.ini) preview_options.ini = static_cast<model::IniMode>(*args.ini);
-    ProgressBar bar("smooth");
-    if (bar.enabled()) preview_options.progress = [&bar](double f) { bar.update(f); };
-    const preproc::Preview preview = preproc::compute_preview(r.model, preview_options);
-    bar.finish();
+    std::shared_ptr<const preproc::Preview> computed = r.preview;
+    if (!computed) {
+        ProgressBar bar("smooth");
+        if (bar.enabled()) preview_options.progress = [&bar](double f) { bar.update(f); };
+        computed = std::make_shared<const preproc::Preview>(preproc::compute_preview(r.model, preview_options));
+        bar.finish();
+    }
+    const preproc::Preview& preview = *computed;
 
     const bool json = args.format == "json";
     if (json) {

@@ -4,6 +4,7 @@
 // the rules, apply suppressions and settings. lint/ owns the rules and never reads a file; this does.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,6 +34,7 @@ struct CheckResult {
     model::DeckSummary summary;
     model::Model model;
     IncludeGraph includes;  // the files the deck pulled in
+    std::shared_ptr<const preproc::Preview> preview;  // when CheckOptions::rules.keep_preview (else null)
 };
 
 // Checks the deck at `path`; its text and its includes' come from `documents` where they hold the

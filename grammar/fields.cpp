@@ -148,7 +148,7 @@ CutReport cut_fields(std::string_view text, const CardLine& line, std::span<cons
 namespace sphdeck::grammar {
 
 std::string_view RawDeck::text(const CardLine& l) const {
-    const std::string& file = sources.file(l.file).text;
+    const std::string_view file = sources.file(l.file).text;
     const char* begin = file.data() + l.offset;
     const std::size_t rest = file.size() - l.offset;
     const void* newline = std::memchr(begin, '\n', rest);

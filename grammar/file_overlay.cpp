@@ -42,6 +42,11 @@ std::string read_file_text(const std::string& path, const FileOverlay* overlay) 
     return read_text_file(path);
 }
 
+SourceText read_source_text(const std::string& path, const FileOverlay* overlay) {
+    if (const std::string* text = overlay ? overlay->find(path) : nullptr) return SourceText(*text);
+    return SourceText::read(path);
+}
+
 std::string read_file_prefix(const std::string& path, std::size_t bytes, const FileOverlay* overlay) {
     if (const std::string* text = overlay ? overlay->find(path) : nullptr) return text->substr(0, bytes);
     return read_text_prefix(path, bytes);

@@ -7,6 +7,8 @@
 #include <map>
 #include <string>
 
+#include "grammar/source_text.hpp"
+
 namespace sphdeck::grammar {
 
 class FileOverlay {
@@ -32,6 +34,8 @@ private:
 bool is_regular_file(const std::filesystem::path& path, const FileOverlay* overlay);
 bool file_exists(const std::filesystem::path& path, const FileOverlay* overlay);
 std::string read_file_text(const std::string& path, const FileOverlay* overlay);
+// The same as a SourceText: a big file on disk is mapped, not copied (grammar/source_text.hpp).
+SourceText read_source_text(const std::string& path, const FileOverlay* overlay);
 std::string read_file_prefix(const std::string& path, std::size_t bytes, const FileOverlay* overlay);
 
 }  // namespace sphdeck::grammar

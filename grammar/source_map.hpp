@@ -9,6 +9,8 @@
 #include <string_view>
 #include <vector>
 
+#include "grammar/source_text.hpp"
+
 namespace sphdeck::grammar {
 
 using FileId = std::uint32_t;
@@ -29,7 +31,7 @@ struct Span {
 struct SourceFile {
     std::string path;          // as opened (resolved)
     std::string display_name;  // as the user or the include line wrote it
-    std::string text;          // whole content, never modified after reading
+    SourceText text;           // whole content, never modified after reading (owned or mapped)
     FileId parent = no_file;   // the file whose *INCLUDE opened this one
     std::uint32_t include_line = 0;  // line of that *INCLUDE keyword in the parent
     unsigned depth = 0;        // 0 for a main file

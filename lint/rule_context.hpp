@@ -15,6 +15,10 @@
 #include "model/id_index.hpp"
 #include "model/model.hpp"
 
+namespace sphdeck::preproc {
+struct Preview;
+}
+
 namespace sphdeck::lint {
 
 enum class Solver { Unknown, Smp, Mpp };
@@ -25,6 +29,9 @@ struct RuleOptions {
     // The rules that need the particle geometry (neighbour grid, nearest neighbours: SPH090,
     // SPH113-SPH118) cost about as much as reading the deck; `check --no-geometry` skips them.
     bool geometry = true;
+    // Keep the preview the geometry rules computed (RuleContext::preview): `sphdeck smooth` prints
+    // it instead of computing the same preview a second time.
+    bool keep_preview = false;
 };
 
 class RuleContext {
@@ -54,6 +61,9 @@ public:
     // Position in model.nodes of each particle's node; no_node where the node is missing (REF001).
     static constexpr std::uint32_t no_node = 0xFFFFFFFFu;
     const std::vector<std::uint32_t>& particle_nodes() const;
+
+    // The geometry rules' preview, when RuleOptions::keep_preview asked for it (else null).
+    std::shared_ptr<const preproc::Preview> preview;
 
 private:
     std::vector<diag::Diagnostic>& out_;

@@ -2,6 +2,7 @@
 // The preview is computed once per check, here; rules never measure geometry themselves.
 #include <cmath>
 #include <fmt/format.h>
+#include <memory>
 
 #include "lint/rules.hpp"
 #include "preproc/preview.hpp"
@@ -155,7 +156,9 @@ void check_few_neighbours(RuleContext& c, const Preview& p) {
 
 void check_preview(RuleContext& c) {
     if (c.model.particles.size() == 0) return;
-    const Preview p = preproc::compute_preview(c.model);
+    auto kept = std::make_shared<Preview>(preproc::compute_preview(c.model));
+    const Preview& p = *kept;
+    if (c.options.keep_preview) c.preview = kept;
     check_memory(c, p);
     check_mass_spacing(c, p);
     check_coincident(c, p);

@@ -201,7 +201,7 @@ void apply_suppressions(const grammar::SourceMap& sources, std::vector<diag::Dia
     std::vector<diag::Diagnostic> problems;
     for (grammar::FileId f = 0; f < sources.size(); ++f) {
         const grammar::SourceFile& source = sources.file(f);
-        if (source.text.find(kMarker) == std::string::npos) continue;  // the common case: no directive
+        if (!source.text.contains(kMarker)) continue;  // the common case: no directive
         place_directives(source, f, kinds, placed, problems);
     }
     if (placed.empty() && problems.empty()) return;

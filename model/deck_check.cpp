@@ -143,7 +143,9 @@ private:
             CardDecoder decoder(deck_, out);
             std::vector<FieldValue> values;
             std::size_t count = 0;
+            std::size_t released = first;  // lines whose text went back (a mapped file's pages)
             for (std::size_t i = first; i < last; ++i) {
+                if (i - released == release_lines) release_text(lines[released], lines[i]), released = i;
                 decoder.decode(block, lines[i], card, values);
                 std::optional<std::string> refused;
                 if (particles) {
@@ -178,6 +180,13 @@ private:
         summary.particles += std::accumulate(counted.begin(), counted.end(), std::size_t{0});
         for (auto& part : found) out_.insert(out_.end(), std::make_move_iterator(part.begin()),
                                              std::make_move_iterator(part.end()));
+    }
+
+    // The text of lines [from, to) of one block is decoded: a mapped file's pages go back, so that
+    // decoding keeps the model, not the deck, resident (grammar/source_text.hpp).
+    static constexpr std::size_t release_lines = 65536;
+    void release_text(const grammar::CardLine& from, const grammar::CardLine& to) const {
+        if (from.file == to.file) deck_.sources.file(from.file).text.release(from.offset, to.offset);
     }
 
     // Blank lines past a keyword's last card hold no value, so ignoring them loses nothing: LS-PrePost

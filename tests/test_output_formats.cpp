@@ -166,7 +166,7 @@ TEST_CASE("output: github annotations escape data and properties") {
     grammar::SourceMap map;
     grammar::SourceFile f;
     f.path = f.display_name = "dir,x/a:b.k";
-    f.text = "*KEYWORD\nabc\n";
+    f.text = std::string("*KEYWORD\nabc\n");
     const auto id = map.add(std::move(f));
     diag::Diagnostic d{"DK003", diag::Severity::Warning, "100% wrong\nreally", grammar::Span{id, 2, 1, 4},
                        {{grammar::Span{id, 1, 1, 9}, "see"}}};

@@ -1,5 +1,13 @@
 // Format rules for single values (lsdyna-format.md §10, §14.2).
 #include <doctest/doctest.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <iterator>
+#include <random>
+#include <string>
 #include <tao/pegtl/contrib/analyze.hpp>
 
 #include "grammar/value.hpp"
@@ -86,4 +94,36 @@ TEST_CASE("values: the from_chars fast path agrees with the grammar") {
     }
     CHECK(classify_value("inf", ValueShape::Real).shape == ValueShape::Other);
     CHECK(classify_value("-nan", ValueShape::Real).shape == ValueShape::Other);
+}
+
+TEST_CASE("values: the short-real path gives from_chars' double, bit for bit") {
+    // Reals of at most 17 digits and a decimal exponent within 22 are converted without
+    // from_chars (Clinger's fast path): the result must be the correctly rounded double that
+    // from_chars gives, for the "%16.8e" coordinates of big decks and every other C form.
+    std::mt19937_64 rng(7);
+    const char* formats[] = {"%.8e", "%.3e", "%.16e", "%.6f", "%.1f", "%.12g", "%.17g", "%.0f", "%.2E"};
+    auto same = [](const std::string& text) {
+        double expected = 0.0;
+        const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), expected);
+        const ValueToken token = classify_value(text, ValueShape::Real);
+        CAPTURE(text);
+        REQUIRE(ec == std::errc());
+        REQUIRE(end == text.data() + text.size());
+        REQUIRE(token.shape == ValueShape::Real);
+        const RealValue got = to_real(token);
+        CHECK(got.status == NumberStatus::Ok);
+        CHECK(std::memcmp(&got.value, &expected, sizeof expected) == 0);
+    };
+    for (int i = 0; i < 200000; ++i) {
+        const double magnitude = std::ldexp(static_cast<double>(rng() >> 11) / 9007199254740992.0,
+                                            static_cast<int>(rng() % 120) - 60);
+        const double value = (rng() & 1) ? -magnitude : magnitude;
+        char text[64];
+        std::snprintf(text, sizeof text, formats[i % std::size(formats)], value);
+        same(text);
+    }
+    for (const char* text : {"0", "-0", "0.0", "-0.0", "1.", "-.5", "000123.4500", "1e22", "1e-22", "9007199254740993",
+                             "9007199254740992e-22", "123456789012345678", "4.9e-324", "1.7976931348623157e308",
+                             "0.000000000000000000000001", "1.00000000e-06", "-2.29938015e-02", "1E+0", "2e-0"})
+        same(text);
 }

@@ -75,6 +75,12 @@ void DeckReader::on_pgp_end(const char* begin, const char* end) {
 
 void DeckReader::on_data(const char* begin, const char* end) {
     OpenFile& f = current();
+    // A mapped file's pages behind the reader go back every few MB: reading a 1 GB deck keeps
+    // the lines read, not the gigabyte, resident (the model is decoded from the text later).
+    if (const auto at = static_cast<std::size_t>(begin - f.base); at >= f.released + release_step) {
+        f.text->release(f.released, at);
+        f.released = at;
+    }
     ++f.line;
     if (f.in_encrypted || after_end(begin, end) || f.in_comment_block) return;
     std::string_view text = strip_cr(begin, end);

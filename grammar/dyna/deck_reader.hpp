@@ -43,6 +43,8 @@ private:
         FileId id = 0;
         CardFormat format = CardFormat::Standard;
         const char* base = nullptr;
+        const SourceText* text = nullptr;
+        std::size_t released = 0;          // bytes of `text` handed back (SourceText::release)
         std::uint32_t line = 0;
         std::optional<std::size_t> block;  // index of the open block in deck_.blocks
         bool ended = false;                // after *END
@@ -51,6 +53,8 @@ private:
         bool in_encrypted = false;
         bool reported_stray_data = false;
     };
+
+    static constexpr std::size_t release_step = std::size_t{8} << 20;
 
     OpenFile& current() { return stack_.back(); }
     bool indented_data(std::size_t star, const KeywordLineParts& parts);

@@ -7,7 +7,7 @@
 
 namespace sphdeck::grammar::dyna {
 
-std::string read_include_text(const std::string& path, const FileOverlay* overlay = nullptr);  // reader.cpp
+SourceText read_include_text(const std::string& path, const FileOverlay* overlay = nullptr);  // reader.cpp
 
 namespace {
 constexpr std::size_t max_include_name = 236;  // *INCLUDE Remark 2, via dynareadout and pydyna

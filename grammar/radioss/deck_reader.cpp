@@ -7,7 +7,7 @@
 #include "grammar/fields.hpp"
 
 namespace sphdeck::grammar::dyna {
-std::string read_include_text(const std::string& path, const FileOverlay* overlay = nullptr);  // grammar/dyna/reader.cpp
+SourceText read_include_text(const std::string& path, const FileOverlay* overlay = nullptr);  // grammar/dyna/reader.cpp
 }
 
 namespace sphdeck::grammar::radioss {

@@ -1,0 +1,86 @@
+#include "grammar/source_text.hpp"
+
+#include <algorithm>
+
+#include "grammar/text_file.hpp"
+
+#if defined(__unix__) || defined(__APPLE__)
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#define SPHDECK_HAS_MMAP 1
+#endif
+
+namespace sphdeck::grammar {
+
+struct SourceText::Mapping {
+    void* address = nullptr;
+    std::size_t size = 0;
+    ~Mapping() {
+#ifdef SPHDECK_HAS_MMAP
+        if (address) ::munmap(address, size);
+#endif
+    }
+};
+
+SourceText SourceText::read(const std::string& path, std::size_t min_bytes) {
+#ifdef SPHDECK_HAS_MMAP
+    // Directories, unreadable files and small files go the plain way (its messages included): a
+    // deck with thousands of small includes must not use thousands of mappings.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd >= 0) {
+        struct stat st {};
+        void* address = MAP_FAILED;
+        std::size_t size = 0;
+        if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && static_cast<std::size_t>(st.st_size) >= min_bytes &&
+            st.st_size > 0) {
+            size = static_cast<std::size_t>(st.st_size);
+            address = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
+        }
+        ::close(fd);
+        if (address != MAP_FAILED) {
+            ::madvise(address, size, MADV_SEQUENTIAL);  // read ahead: the readers walk it front to back
+            auto mapping = std::make_shared<Mapping>();
+            mapping->address = address, mapping->size = size;
+            SourceText text;
+            text.view_ = static_cast<const char*>(address);
+            text.size_ = size;
+            text.mapping_ = std::move(mapping);
+            return text;
+        }
+    }
+#else
+    (void)min_bytes;
+#endif
+    return SourceText(read_text_file(path));
+}
+
+void SourceText::release(std::size_t begin, std::size_t end) const {
+#ifdef SPHDECK_HAS_MMAP
+    if (!mapping_) return;
+    static const std::size_t page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+    end = std::min(end, size_);
+    const std::size_t first = (begin + page - 1) / page * page;  // whole pages inside [begin, end)
+    const std::size_t last = end / page * page;
+    if (first < last) ::madvise(const_cast<char*>(view_) + first, last - first, MADV_DONTNEED);
+#else
+    (void)begin, (void)end;
+#endif
+}
+
+bool SourceText::contains(std::string_view needle) const {
+    const std::string_view text = view();
+    if (!mapping_ || needle.empty()) return text.find(needle) != std::string_view::npos;
+    constexpr std::size_t slice = std::size_t{8} << 20;
+    for (std::size_t at = 0; at < text.size(); at += slice) {
+        // Each slice reaches needle.size() - 1 bytes into the next, so no occurrence is cut.
+        const std::size_t length = std::min(text.size() - at, slice + needle.size() - 1);
+        const bool found = text.substr(at, length).find(needle) != std::string_view::npos;
+        release(at, at + slice);
+        if (found) return true;
+    }
+    return false;
+}
+
+}  // namespace sphdeck::grammar
