@@ -37,6 +37,7 @@ public:
         return view().substr(pos, n);
     }
     bool mapped() const { return mapping_ != nullptr; }
+    friend bool operator==(const SourceText& a, std::string_view b) { return a.view() == b; }
 
     // Bytes [begin, end) are not needed for a while: a mapping drops their whole pages from the
     // process (the next access reads them again from the page cache, unchanged); owned text stays.
