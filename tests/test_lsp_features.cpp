@@ -3,12 +3,15 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
 #include "engine/check.hpp"
 #include "lsp/features.hpp"
 #include "lsp/realign.hpp"
+#include "lsp/uri.hpp"
 
 using namespace sphdeck;
 
@@ -380,4 +383,45 @@ TEST_CASE("lsp features: the server's table answers every feature and announces 
     // A request without a position is answered, with nothing.
     CHECK(ask(deck, "textDocument/hover", nlohmann::json::object()).is_null());
     CHECK(ask(deck, "textDocument/definition", {{"position", "x"}}).is_null());
+}
+
+TEST_CASE("lsp definition: an *INCLUDE file name opens the file; ids defined in an include") {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "sphdeck_lsp_features_include";
+    fs::create_directories(dir);
+    const std::string main_text = "*KEYWORD\n*INCLUDE\nsection.k\n*PART\nwater\n         1         3         5\n*END\n";
+    {
+        std::ofstream(dir / "main.k") << main_text;
+        std::ofstream(dir / "section.k") << "*KEYWORD\n*SECTION_SPH\n         3       1.2\n*END\n";
+    }
+    lsp::CheckedDeck deck;
+    deck.main = dir / "main.k";
+    deck.result = engine::check_file((dir / "main.k").string());
+    REQUIRE(deck.result.deck.sources.size() == 2);
+    auto location = ask(deck, "textDocument/definition", {{"position", position(find(main_text, "section.k"))}});
+    CHECK(location["uri"] == lsp::uri_from_path(dir / "section.k"));
+    CHECK(location["range"]["start"]["line"] == 0);
+    const At part = find(main_text, "         1         3");
+    location = ask(deck, "textDocument/definition", {{"position", position({part.line, 19})}});
+    CHECK(location["uri"] == lsp::uri_from_path(dir / "section.k"));
+    CHECK(location["range"]["start"]["line"] == 2);
+    // A request about the include file itself.
+    auto hover = lsp::answer_feature("textDocument/hover", deck, 1, {{"position", {{"line", 2}, {"character", 9}}}});
+    REQUIRE(hover.result.is_object());
+    CHECK(hover.result["contents"]["value"].get<std::string>().find("**SECID**") != std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("lsp definition: ids named by the generated layouts (a *LOAD_BODY_Z curve)") {
+    const std::string text = "*KEYWORD\n*DEFINE_CURVE\n         9\n       0.0       1.0\n*LOAD_BODY_Z\n         9\n*END\n";
+    const auto deck = check(text);
+    const At load = find(text, "         9", find(text, "*LOAD_BODY_Z").line);
+    auto location = ask(deck, "textDocument/definition", {{"position", position({load.line, 9})}});
+    REQUIRE(location.is_object());
+    CHECK(location["range"]["start"]["line"] == 2);
+    auto refs = ask(deck, "textDocument/references",
+                    {{"position", position({2, 9})}, {"context", {{"includeDeclaration", false}}}});
+    REQUIRE(refs.size() == 1);
+    CHECK(refs[0]["range"]["start"]["line"] == load.line);
+    CHECK(hover_text(deck, {load.line, 9}).find("names DEFINE_CURVE 9") != std::string::npos);
 }
