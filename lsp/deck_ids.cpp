@@ -251,7 +251,7 @@ std::optional<IdUse> id_at(const CheckedDeck& deck, grammar::FileId file, std::u
     if (radioss) {
         auto card = radioss_card_at(raw, *block, *card_line, model::radioss_version(raw));
         if (!card || !card->card) return std::nullopt;
-        auto index = radioss_field_at(card->values, column);
+        auto index = radioss_field_at(*card, raw.text(*card_line), column);
         if (!index) return std::nullopt;
         const auto& v = card->values[*index];
         auto role = radioss_id_role(*v.spec);

@@ -267,12 +267,19 @@ std::optional<RadiossCard> radioss_card_at(const grammar::RawDeck& deck, const g
     return found;
 }
 
-std::optional<std::size_t> radioss_field_at(const std::vector<model::RadiossValue>& values, std::uint32_t column) {
-    for (std::size_t i = 0; i < values.size(); ++i) {
-        const auto& v = values[i];
-        if (!v.spec || v.spec->cell == rad::Cell::Skip || v.spec->cell == rad::Cell::Skip20) continue;
-        if (column >= v.span.column && column < v.span.end_column) return i;
+std::optional<std::size_t> radioss_field_at(const RadiossCard& card, std::string_view text, std::uint32_t column) {
+    const auto skipped = [](const rad::FieldSpec* spec) {
+        return !spec || spec->cell == rad::Cell::Skip || spec->cell == rad::Cell::Skip20;
+    };
+    for (std::size_t i = 0; i < card.values.size(); ++i) {
+        const auto& v = card.values[i];
+        if (!skipped(v.spec) && v.explicit_value && column >= v.span.column && column < v.span.end_column) return i;
     }
+    if (!card.card || card.engine || grammar::is_free_format(text)) return std::nullopt;
+    const auto cells = rad::layout(*card.card, card.version);
+    for (std::size_t i = 0; i < cells.size() && i < card.values.size(); ++i)
+        if (!skipped(card.values[i].spec) && column >= cells[i].start + 1 && column < cells[i].start + 1 + cells[i].width)
+            return i;
     return std::nullopt;
 }
 

@@ -88,8 +88,9 @@ using RadiossCardVisitor = std::function<bool(const grammar::CardLine&, const Ra
 void walk_radioss_block(const grammar::RawDeck& deck, const grammar::Block& block, int version,
                         const RadiossCardVisitor& visit);
 
-// Index of the Radioss field under `column`, from the decoded spans; nullopt when none.
-std::optional<std::size_t> radioss_field_at(const std::vector<model::RadiossValue>& values, std::uint32_t column);
+// Index of the Radioss field under `column` of the card's line `text`: a written value's span,
+// else the cell's columns in the deck's version (fixed format only); nullopt when none.
+std::optional<std::size_t> radioss_field_at(const RadiossCard& card, std::string_view text, std::uint32_t column);
 
 // A `&name` parameter reference (LS-DYNA; Radioss also `[name]`) on a line of a file.
 struct ParameterReference {

@@ -169,8 +169,9 @@ nlohmann::json radioss_field_items(const CheckedDeck& deck, const grammar::Block
     if (!card_line) return list(std::move(items), false);
     auto card = radioss_card_at(raw, block, *card_line, model::radioss_version(raw));
     if (!card || !card->card) return list(std::move(items), false);
-    auto index = radioss_field_at(card->values, column);
-    if (!index && column > 1) index = radioss_field_at(card->values, column - 1);
+    const std::string_view text = raw.text(*card_line);
+    auto index = radioss_field_at(*card, text, column);
+    if (!index && column > 1) index = radioss_field_at(*card, text, column - 1);
     if (!index) return list(std::move(items), false);
     if (auto role = radioss_id_role(*card->values[*index].spec)) id_items(deck, role->kind, edit, items);
     return list(std::move(items), false);
@@ -189,8 +190,10 @@ nlohmann::json completion(const CheckedDeck& deck, grammar::FileId file, TextPos
     const bool keyword_start = !typed.empty() && (typed[0] == '*' || (radioss && typed[0] == '/')) &&
                                typed.find_first_of(" ,\t") == std::string_view::npos;
     if (keyword_start) {
-        const Edit edit{position.line, 0, utf16_offset(text, std::max<std::uint32_t>(
-                                                                 byte, static_cast<std::uint32_t>(typed.size())))};
+        // The whole name is replaced, also when the cursor stands inside it.
+        std::size_t end = text.find_first_of(" ,\t", typed.size());
+        if (end == std::string_view::npos) end = text.size();
+        const Edit edit{position.line, 0, utf16_offset(text, static_cast<std::uint32_t>(end))};
         return radioss ? radioss_keyword_items(typed, edit) : keyword_items(typed, edit);
     }
     if (!text.empty() && (text[0] == '$' || text[0] == '#')) return list(nlohmann::json::array(), false);

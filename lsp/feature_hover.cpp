@@ -172,12 +172,18 @@ nlohmann::json radioss_hover(const CheckedDeck& deck, const grammar::Block& bloc
         grammar::Span span{card_line->file, card_line->line, 1, raw.length(*card_line) + 1};
         return hover_json(fmt::format("title of `{}`", spec->name), raw.sources, span);
     }
-    auto index = radioss_field_at(card->values, column);
+    auto index = radioss_field_at(*card, raw.text(*card_line), column);
     if (!index) return nullptr;
     const model::RadiossValue& v = card->values[*index];
-    std::string text = fmt::format("**{}** (`{}`, format {}): {}, columns {}-{}", v.spec->name, spec->name,
-                                   spec->format_for(card->version).since, cell_name(v.spec->cell), v.span.column,
-                                   v.span.end_column - 1);
+    grammar::Span span = v.span;
+    std::string columns;
+    if (!card->engine && !grammar::is_free_format(raw.text(*card_line))) {
+        const auto cells = rad::layout(*card->card, card->version);
+        columns = fmt::format(", columns {}-{}", cells[*index].start + 1, cells[*index].start + cells[*index].width);
+        if (!v.explicit_value) span.column = cells[*index].start + 1, span.end_column = span.column + cells[*index].width;
+    }
+    std::string text = fmt::format("**{}** (`{}`, format {}): {}{}", v.spec->name, spec->name,
+                                   spec->format_for(card->version).since, cell_name(v.spec->cell), columns);
     if (!v.explicit_value) {
         text += "\n\nvalue: blank (the starter's default applies)";
     } else if (!v.valid) {
@@ -189,7 +195,7 @@ nlohmann::json radioss_hover(const CheckedDeck& deck, const grammar::Block& bloc
         text += fmt::format("\n\nvalue: `{}`", v.text);
     }
     text += id_text_of(deck, radioss_id_role(*v.spec), id_text(v));
-    return hover_json(std::move(text), raw.sources, v.span);
+    return hover_json(std::move(text), raw.sources, span);
 }
 
 // `&name` under the cursor: the parameter's value and where it is defined.

@@ -350,6 +350,10 @@ water
     text = hover_text(deck, {ids.line, 9});
     CHECK(text.find("**prop_ID**") != std::string::npos);
     CHECK(text.find("names PROP 2") != std::string::npos);
+    const At h = find(rad, "         0                 2.4");
+    text = hover_text(deck, {h.line, 15});  // in h's cell, on a blank before the value
+    CHECK(text.find("**h** (`/PROP/SPH`, format 2026): real, columns 11-30") != std::string::npos);
+    CHECK(text.find("value: 2.4") != std::string::npos);
     auto location = ask(deck, "textDocument/definition", {{"position", position({ids.line, 9})}});
     CHECK(location["range"]["start"]["line"] == prop.line);
     location = ask(deck, "textDocument/definition", {{"position", position({ids.line, 19})}});
