@@ -8,6 +8,7 @@
 
 #include "grammar/value.hpp"
 #include "lsp/deck_lookup.hpp"
+#include "lsp/display_text.hpp"
 #include "model/model.hpp"
 #include "model/radioss_decoder.hpp"
 
@@ -327,7 +328,7 @@ std::vector<grammar::Span> particle_part_spans(const CheckedDeck& deck, const st
 std::string describe(const CheckedDeck& deck, const IdUse& d) {
     const auto& sources = deck.result.deck.sources;
     std::string keyword = d.block ? d.block->keyword : d.kind;
-    if (d.block && d.block->keyword[0] == '/') {
+    if (d.block && !d.block->keyword.empty() && d.block->keyword[0] == '/') {
         // Radioss: the header without its id ("/PROP/SPH/7" -> "/PROP/SPH 7").
         keyword = d.block->keyword.substr(0, d.block->keyword.rfind('/' + d.id));
     }
@@ -336,7 +337,7 @@ std::string describe(const CheckedDeck& deck, const IdUse& d) {
     text += fmt::format(", line {}", d.span.line);
     if (d.span.file != 0 && d.span.file < sources.size())
         text += fmt::format(" of {}", sources.file(d.span.file).display_name);
-    return text;
+    return display_text(text);
 }
 
 }  // namespace sphdeck::lsp

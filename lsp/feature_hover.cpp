@@ -8,6 +8,7 @@
 #include "grammar/value.hpp"
 #include "lsp/deck_ids.hpp"
 #include "lsp/deck_lookup.hpp"
+#include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
 #include "model/radioss_decoder.hpp"
 
@@ -23,7 +24,7 @@ constexpr std::size_t kMaxChoices = 24;  // enum values listed in a hover; the r
 std::string number(double v) { return fmt::format("{:g}", v); }
 
 nlohmann::json hover_json(std::string markdown, const grammar::SourceMap& sources, const grammar::Span& span) {
-    return {{"contents", {{"kind", "markdown"}, {"value", std::move(markdown)}}}, {"range", range_json(sources, span)}};
+    return {{"contents", {{"kind", "markdown"}, {"value", display_text(markdown)}}}, {"range", range_json(sources, span)}};
 }
 
 std::string default_text(const FieldSpec& f) {

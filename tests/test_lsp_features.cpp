@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/check.hpp"
+#include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
 #include "lsp/realign.hpp"
 #include "lsp/uri.hpp"
@@ -428,4 +429,73 @@ TEST_CASE("lsp definition: ids named by the generated layouts (a *LOAD_BODY_Z cu
     REQUIRE(refs.size() == 1);
     CHECK(refs[0]["range"]["start"]["line"] == load.line);
     CHECK(hover_text(deck, {load.line, 9}).find("names DEFINE_CURVE 9") != std::string::npos);
+}
+
+TEST_CASE("lsp features: every request on every line of the test decks answers valid JSON") {
+    namespace fs = std::filesystem;
+    std::size_t decks = 0, answers = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(fs::path(SPHDECK_SOURCE_DIR) / "decks" / "tests")) {
+        const auto ext = entry.path().extension();
+        if (!entry.is_regular_file() || (ext != ".k" && ext != ".rad")) continue;
+        lsp::CheckedDeck deck;
+        deck.main = entry.path();
+        try {
+            deck.result = engine::check_file(entry.path().string());
+        } catch (const std::exception&) {
+            continue;  // a deck the tests expect to be refused
+        }
+        ++decks;
+        const auto& sources = deck.result.deck.sources;
+        nlohmann::json diagnostics = nlohmann::json::array();
+        for (const auto& d : deck.result.diagnostics)
+            if (d.span.valid() && d.span.file == 0)
+                diagnostics.push_back({{"range", lsp::range_json(sources, d.span)}, {"code", d.code}});
+        // One check per deck: the answers' JSON must dump (strictly: valid UTF-8) and be handled.
+        std::size_t failed = 0;
+        for (grammar::FileId file = 0; file < sources.size(); ++file) {
+            const std::uint32_t lines = sources.line_count(file);
+            for (std::uint32_t line = 0; line <= lines; ++line)
+                for (std::uint32_t character : {0u, 9u, 19u, 200u}) {
+                    const nlohmann::json params = {{"position", {{"line", line}, {"character", character}}},
+                                                   {"context", {{"includeDeclaration", true}}}};
+                    for (const char* method : {"textDocument/hover", "textDocument/definition",
+                                               "textDocument/references", "textDocument/completion"}) {
+                        try {
+                            auto answer = lsp::answer_feature(method, deck, file, params);
+                            failed += !answer.handled || answer.result.dump().empty();
+                        } catch (const std::exception&) {
+                            ++failed;
+                        }
+                        ++answers;
+                    }
+                }
+            for (const char* method : {"textDocument/documentSymbol", "textDocument/foldingRange"})
+                try {
+                    failed += lsp::answer_feature(method, deck, file, nlohmann::json::object()).result.dump().empty();
+                } catch (const std::exception&) {
+                    ++failed;
+                }
+        }
+        auto actions = lsp::answer_feature("textDocument/codeAction", deck, 0, {{"context", {{"diagnostics", diagnostics}}}});
+        CHECK_MESSAGE(failed == 0, entry.path().string());
+        CHECK(actions.result.is_array());
+    }
+    CHECK(decks > 100);
+    MESSAGE(answers << " answers on " << decks << " decks");
+}
+
+TEST_CASE("lsp features: Latin-1 deck text reaches the client as UTF-8") {
+    std::string text = kDeck;
+    text.replace(text.find("water"), 5, "d\xE9p\xF4t");
+    const auto deck = check(text);
+    const At part = find(text, "         1         3         5         7");
+    const std::string hover = hover_text(deck, {part.line, 19});
+    CHECK_NOTHROW((void)nlohmann::json(hover).dump());
+    const At particle = find(text, "       1       1   0.001");
+    CHECK(hover_text(deck, {particle.line, 15}).find("\"d\xC3\xA9p\xC3\xB4t\"") != std::string::npos);
+    auto symbols = ask(deck, "textDocument/documentSymbol", nlohmann::json::object());
+    CHECK_NOTHROW((void)symbols.dump());
+    // A surrogate's bytes (ED A0 80) are no UTF-8: three Latin-1 characters.
+    CHECK(lsp::display_text("a\xC3\xA9\xE9\xED\xA0\x80") == "a\xC3\xA9\xC3\xA9\xC3\xAD\xC2\xA0\xC2\x80");
+    CHECK(lsp::display_text("\xED\x9F\xBF") == "\xED\x9F\xBF");  // U+D7FF, the last before the surrogates
 }
