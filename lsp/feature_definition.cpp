@@ -89,9 +89,11 @@ nlohmann::json references(const CheckedDeck& deck, grammar::FileId file, TextPos
     for (const auto& u : collect_ids(deck))
         if (u.kind == use->kind && u.id == use->id && (include_declaration || !u.defines))
             out.push_back(location(sources, u.span));
-    if (use->kind == "PART")
-        for (const auto& span : particle_part_spans(deck, use->id, kMaxParticleReferences))
-            out.push_back(location(sources, span));
+    // Nodes are defined in the bulk *NODE blocks, which the walk of the deck leaves out.
+    if (include_declaration && use->kind == "NODE")
+        for (const auto& d : find_definitions(deck, use->kind, use->id)) out.push_back(location(sources, d.span));
+    for (const auto& span : particle_spans(deck, use->kind, use->id, kMaxParticleReferences))
+        out.push_back(location(sources, span));
     return out;
 }
 

@@ -195,6 +195,18 @@ TEST_CASE("lsp definition and references: part -> section, material, EOS; parame
     refs = ask(deck, "textDocument/references",
                {{"position", position({part.line, 9})}, {"context", {{"includeDeclaration", true}}}});
     CHECK(refs.size() == 3);
+    // A particle's NID -> its *NODE line (with the node's coordinates in the hover); node 2 is
+    // named by particle 2.
+    const At particle = find(kDeck, "       1       1   0.001");
+    location = ask(deck, "textDocument/definition", {{"position", position({particle.line, 7})}});
+    CHECK(location["range"]["start"]["line"] == find(kDeck, "       1           0.010").line);
+    CHECK(hover_text(deck, {particle.line, 7}).find("names NODE 1: `node 1 at (0.01, 0.03, 0), line 22`") !=
+          std::string::npos);
+    const At node2 = find(kDeck, "       2           0.030");
+    refs = ask(deck, "textDocument/references",
+               {{"position", position({node2.line, 7})}, {"context", {{"includeDeclaration", false}}}});
+    REQUIRE(refs.size() == 1);
+    CHECK(refs[0]["range"]["start"]["line"] == find(kDeck, "       2       1   0.001").line);
     // Section 3 from its definition: the part's SECID.
     const At secid = find(kDeck, "         3       1.2");
     refs = ask(deck, "textDocument/references",
@@ -365,6 +377,10 @@ water
                     {{"position", position({part.line, 6})}, {"context", {{"includeDeclaration", false}}}});
     REQUIRE(refs.size() == 1);
     CHECK(refs[0]["range"]["start"]["line"] == find(rad, "/SPHCEL/2").line);
+    // A cell's node_ID -> its /NODE line.
+    const At cell = find(rad, "      1001         0");
+    location = ask(deck, "textDocument/definition", {{"position", position({cell.line, 8})}});
+    CHECK(location["range"]["start"]["line"] == find(rad, "      1001                 1.0").line);
     auto symbols = ask(deck, "textDocument/documentSymbol", nlohmann::json::object());
     CHECK(symbols.size() == deck.result.deck.blocks.size());
     // A suppression in a Radioss deck uses '#', after the #RADIOSS line.
