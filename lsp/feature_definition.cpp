@@ -18,16 +18,6 @@ nlohmann::json location(const grammar::SourceMap& sources, const grammar::Span& 
     return {{"uri", uri_from_path(sources.file(span.file).path)}, {"range", range_json(sources, span)}};
 }
 
-// The file an include line opened: an *INCLUDE file name line, a Radioss #include line.
-std::optional<grammar::FileId> included_file(const grammar::SourceMap& sources, grammar::FileId file,
-                                             std::uint32_t line) {
-    for (grammar::FileId id = 0; id < sources.size(); ++id) {
-        const auto& f = sources.file(id);
-        if (f.parent == file && f.include_line == line) return id;
-    }
-    return std::nullopt;
-}
-
 bool same_name(std::string_view a, std::string_view b) {
     return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
                return std::toupper(static_cast<unsigned char>(x)) == std::toupper(static_cast<unsigned char>(y));
