@@ -312,6 +312,16 @@ TEST_CASE("lsp code actions: suppression comments and the realignment of a value
     REQUIRE(actions.size() == 2);
     CHECK(apply(with_directive, actions[1]["edit"]["changes"]["file:///tmp/main.k"]).rfind(
               "$ sphdeck: disable-file=DK003,DK004 -- legacy\n", 0) == 0);
+    // And one above the card.
+    const std::string with_card_directive = "*KEYWORD\n$ sphdeck: disable=DK002\n*CONTROL_TERMINATION\n      1.0E-3\n*END\n";
+    const auto deck3 = check(with_card_directive);
+    other["range"]["start"]["line"] = 2;
+    actions = ask(deck3, "textDocument/codeAction",
+                  {{"textDocument", {{"uri", "file:///tmp/main.k"}}}, {"context", {{"diagnostics", {other}}}}});
+    REQUIRE(actions.size() == 2);
+    CHECK(actions[0]["title"] == "Suppress DK004 for this keyword block");
+    CHECK(apply(with_card_directive, actions[0]["edit"]["changes"]["file:///tmp/main.k"]) ==
+          "*KEYWORD\n$ sphdeck: disable=DK002,DK004\n*CONTROL_TERMINATION\n      1.0E-3\n*END\n");
 }
 
 TEST_CASE("lsp realign: only when the result is certain") {
