@@ -5,7 +5,7 @@
 
 namespace sphdeck::lint {
 
-void check_references(RuleContext& c);  // rules_references.cpp: REF001-REF008
+void check_references(RuleContext& c);  // rules_references.cpp: REF001-REF009
 void check_control_sph(RuleContext& c);  // rules_control_sph*.cpp: SPH010-SPH080, SPH091-SPH094
 void check_section_sph(RuleContext& c);    // rules_section_sph.cpp: SPH081, SPH100-SPH104
 void check_sph_particles(RuleContext& c);  // rules_particles.cpp: SPH110-SPH112
