@@ -150,6 +150,8 @@ constexpr RuleInfo kRows[] = {
      "ISTAB or QL set to a non-default value while FORM is not 12"},
     {"SPH013", "ql-range", Info, "0.1.0", "R5",
      "FORM 12 and QL outside 0.001-0.1"},
+    {"SPH014", "isph-htc-without-fluid-properties", Warning, "0.1.0", "CONTROL_SPH_INCOMPRESSIBLE",
+     "IHTC 1 (heat transfer coefficients) without *MAT_SPH_INCOMPRESSIBLE_FLUID, or one without CP or LAMBDA"},
     {"SPH020", "asph-requires-ellipse", Error, "0.1.0", "R2g",
      "FORM 9 or 10 and an SPH part whose section is not *SECTION_SPH_ELLIPSE"},
     {"SPH021", "asph-3d-only", Error, "0.1.0", "R2g",
