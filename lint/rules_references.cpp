@@ -295,6 +295,11 @@ void check_references(RuleContext& c) {
     for (const model::KeywordRecord& r : c.model.records)
         if (const model::FieldRecord* f = r.schema->name == "*DEFINE_ADAPTIVE_SOLID_TO_SPH" ? r.field("ISSPH") : nullptr)
             if (f->explicit_value) sections.insert(model::normalise_id(f->text));
+    // Sections and materials that generated keywords name (*DEFINE_SPH_MESH_SURFACE SPHXID...) are used.
+    for (const model::IdReference& r : c.model.id_references) {
+        if (r.kind == "SECTION") sections.insert(std::to_string(r.id));
+        if (r.kind == "MAT") materials.insert(std::to_string(r.id));
+    }
     check_set_references(c);
     report_unused(c, c.model.sections, sections, "section");
     report_unused(c, c.model.materials, materials, "material");

@@ -127,3 +127,13 @@ TEST_CASE("references: *FREQUENCY_DOMAIN_FRF ids are not followed (pydyna's layo
                                 "d.k");
     CHECK(r.model.id_references.empty());
 }
+
+TEST_CASE("references: a material named by a generated keyword is used, an undefined one is REF004") {
+    const std::string group = "*MAT_NULL\n         2     900.0\n*ALE_STRUCTURED_MULTI_MATERIAL_GROUP\n{}";
+    auto used = lint::check_buffer(kPart + fmt::format(fmt::runtime(group), "         1         2\n"), "d.k");
+    CHECK(count_code(used.diagnostics, "REF007") == 0);
+    CHECK(count_code(used.diagnostics, "REF004") == 0);
+    auto missing = lint::check_buffer(kPart + fmt::format(fmt::runtime(group), "         1         3\n"), "d.k");
+    CHECK(count_code(missing.diagnostics, "REF007") == 1);  // material 2
+    CHECK(count_code(missing.diagnostics, "REF004") == 1);  // material 3
+}
