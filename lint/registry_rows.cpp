@@ -123,9 +123,9 @@ constexpr RuleInfo kRows[] = {
 
     // REF: references between definitions (ids of nodes, parts, sections, materials, sets).
     {"REF001", "undefined-node", Error, "0.1.0", "references",
-     "a particle or a node set names a node that no *NODE defines"},
+     "a particle, a node set or another keyword's node field names a node that no *NODE defines"},
     {"REF002", "undefined-part", Error, "0.1.0", "references",
-     "a particle or a part set names a *PART that does not exist"},
+     "a particle, a part set or another keyword's part field names a *PART that does not exist"},
     {"REF003", "undefined-section", Error, "0.1.0", "references",
      "*PART SECID with no *SECTION_ keyword of that id"},
     {"REF004", "undefined-material", Error, "0.1.0", "references",
@@ -137,7 +137,9 @@ constexpr RuleInfo kRows[] = {
     {"REF007", "unused-definition", Info, "0.1.0", "references",
      "a section, material, EOS or box that nothing references"},
     {"REF008", "undefined-set", Error, "0.1.0", "references",
-     "a node or part set id that is not defined"},
+     "a node, part, segment, solid, beam or discrete set id that is not defined"},
+    {"REF009", "undefined-id", Error, "0.1.0", "references",
+     "a curve, box, vector, coordinate system, transformation or hourglass id that no keyword defines"},
 
     // SPH: LS-DYNA SPH controls, sections and particles (*CONTROL_SPH manual page and friends).
     {"SPH010", "form12-requires-mpp", Error, "0.1.0", "CONTROL_SPH R2e",
@@ -148,6 +150,8 @@ constexpr RuleInfo kRows[] = {
      "ISTAB or QL set to a non-default value while FORM is not 12"},
     {"SPH013", "ql-range", Info, "0.1.0", "R5",
      "FORM 12 and QL outside 0.001-0.1"},
+    {"SPH014", "isph-htc-without-fluid-properties", Warning, "0.1.0", "CONTROL_SPH_INCOMPRESSIBLE",
+     "IHTC 1 (heat transfer coefficients) without *MAT_SPH_INCOMPRESSIBLE_FLUID, or one without CP or LAMBDA"},
     {"SPH020", "asph-requires-ellipse", Error, "0.1.0", "R2g",
      "FORM 9 or 10 and an SPH part whose section is not *SECTION_SPH_ELLIPSE"},
     {"SPH021", "asph-3d-only", Error, "0.1.0", "R2g",

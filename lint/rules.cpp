@@ -8,6 +8,7 @@ void run_rules(RuleContext& context) {
     check_section_sph(context);
     if (!context.model.radioss) check_sph_particles(context);  // *ELEMENT_SPH masses; Radioss cells: RAD026
     check_sph_materials(context);
+    check_isph(context);
     if (context.options.geometry) check_preview(context);
     check_radioss(context);
 }

@@ -5,11 +5,14 @@
 
 namespace sphdeck::lint {
 
-void check_references(RuleContext& c);  // rules_references.cpp: REF001-REF008
+// An include that could not be read (DK010): definitions may be in it (rules_references.cpp).
+bool include_missing(const RuleContext& c);
+void check_references(RuleContext& c);  // rules_references.cpp: REF001-REF009
 void check_control_sph(RuleContext& c);  // rules_control_sph*.cpp: SPH010-SPH080, SPH091-SPH094
 void check_section_sph(RuleContext& c);    // rules_section_sph.cpp: SPH081, SPH100-SPH104
 void check_sph_particles(RuleContext& c);  // rules_particles.cpp: SPH110-SPH112
 void check_sph_materials(RuleContext& c);  // rules_materials.cpp: SPH116-SPH117
+void check_isph(RuleContext& c);           // rules_isph.cpp: SPH014
 void check_preview(RuleContext& c);        // rules_preview.cpp: SPH090, SPH113-SPH115, SPH118
 void check_radioss(RuleContext& c);        // rules_radioss*.cpp: RAD002-RAD029 (Radioss decks only)
 

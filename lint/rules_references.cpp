@@ -1,4 +1,4 @@
-// REF001-REF008: references between definitions (particle → node, part → section, material,
+// REF001-REF009: references between definitions (particle → node, part → section, material,
 // EOS; sets; boxes), duplicate ids and unused definitions.
 #include <fmt/format.h>
 #include <map>
@@ -7,6 +7,7 @@
 
 #include "lint/particle_groups.hpp"
 #include "lint/rules.hpp"
+#include "lint/rules_references_links.hpp"
 #include "model/id_index.hpp"
 #include "model/radioss_decoder.hpp"
 
@@ -294,11 +295,17 @@ void check_references(RuleContext& c) {
     for (const model::KeywordRecord& r : c.model.records)
         if (const model::FieldRecord* f = r.schema->name == "*DEFINE_ADAPTIVE_SOLID_TO_SPH" ? r.field("ISSPH") : nullptr)
             if (f->explicit_value) sections.insert(model::normalise_id(f->text));
+    // Sections and materials that generated keywords name (*DEFINE_SPH_MESH_SURFACE SPHXID...) are used.
+    for (const model::IdReference& r : c.model.id_references) {
+        if (r.kind == "SECTION") sections.insert(std::to_string(r.id));
+        if (r.kind == "MAT") materials.insert(std::to_string(r.id));
+    }
     check_set_references(c);
     report_unused(c, c.model.sections, sections, "section");
     report_unused(c, c.model.materials, materials, "material");
     report_unused(c, c.model.equations_of_state, eos, "EOS");
     std::set<Id> boxes = referenced_boxes(c.model);
+    check_followed_references(c, boxes);
     for (const auto& b : c.model.boxes)
         if (!b.id.empty() && !boxes.count(b.id))
             c.report("REF007", b.span, fmt::format("box {} is not referenced", b.id));

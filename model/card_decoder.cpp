@@ -215,7 +215,9 @@ void CardDecoder::decode_number(const grammar::Block& block, const keywords::Fie
         grammar::RealValue r = grammar::to_real(token);
         if (r.status != NumberStatus::Ok) {
             report("DK003", diag::Severity::Error,
-                   fmt::format("'{}' in real field {} is not a number", shown(token.text), spec.name), v.span);
+                   fmt::format("'{}' in {} field {} is not a number", shown(token.text),
+                               spec.pydyna_integer ? "integer" : "real", spec.name),
+                   v.span);
             if (auto note = run_on_note(deck_.sources, v.span, token.text); !note.empty())
                 out_.back().notes.push_back({grammar::Span{}, std::move(note)});
             return;

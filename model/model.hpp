@@ -11,6 +11,7 @@
 
 #include "grammar/keywords/schema.hpp"
 #include "grammar/source_map.hpp"
+#include "model/id_links.hpp"
 #include "model/radioss_facts.hpp"
 #include "model/settings.hpp"
 
@@ -159,6 +160,7 @@ struct Model {
     std::vector<Box> boxes;
     std::vector<SymmetryPlane> symmetry_planes;
     std::vector<IdSet> node_sets, part_sets;
+    std::vector<IdReference> id_references;  // ids named by generated keywords (model/id_links.hpp)
     Nodes nodes;
     Particles particles;
     bool memory2_given = false;  // memory2= on *KEYWORD: MPP evidence

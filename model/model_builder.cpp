@@ -55,7 +55,8 @@ void ModelBuilder::add_particles(const grammar::Block& block, const std::vector<
 void ModelBuilder::on_card(const grammar::Block& block, const keywords::KeywordMatch& match,
                            const keywords::CardSpec&, const grammar::CardLine& line,
                            const std::vector<FieldValue>& values) {
-    if (match.schema->generated) return;  // generated layouts are checked, not read into the model
+    // Generated layouts are checked, not read into the model, but the ids they name are followed.
+    if (match.schema->generated) return links_.on_card(match, values);
     const std::string_view name = match.schema->name;
     const bool new_block = current_block_ != &block;
     current_block_ = &block;
@@ -186,6 +187,7 @@ void ModelBuilder::Bulk::end_particles() {
 }
 
 Model ModelBuilder::finish(std::vector<diag::Diagnostic>& out) {
+    model_.id_references = links_.take();
     extract_typed(deck_, model_, out);
     return std::move(model_);
 }

@@ -60,6 +60,7 @@ private:
 
     const grammar::RawDeck& deck_;
     Model model_;
+    IdLinkCollector links_;
     const grammar::Block* current_block_ = nullptr;
     Bulk bulk_{*this};
 };

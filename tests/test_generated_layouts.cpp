@@ -11,6 +11,7 @@
 
 #include "grammar/keywords/generated_layouts.hpp"
 #include "grammar/keywords/schema.hpp"
+#include "lint/pipeline.hpp"
 
 using namespace sphdeck;
 using keywords::CardSpec;
@@ -142,4 +143,13 @@ TEST_CASE("generated layouts: differences from the hand-written tables are liste
         std::ofstream(file.string() + ".new") << now;
         FAIL_CHECK("differences changed: compare " << file.string() << ".new with the committed file");
     }
+}
+
+TEST_CASE("generated layouts: a pydyna integer field is checked as a number and called an integer field") {
+    auto r = lint::check_buffer("*KEYWORD\n*LOAD_NODE_POINT\n        80       abc\n*NODE\n      80\n", "d.k");
+    REQUIRE(r.diagnostics.size() >= 1);
+    bool found = false;
+    for (const auto& d : r.diagnostics)
+        if (d.code == "DK003") found = d.message == "'abc' in integer field DOF is not a number";
+    CHECK(found);
 }

@@ -195,6 +195,10 @@ TEST_CASE("keywords: lookup by case, alias and options") {
         CHECK(keywords::find_keyword("*mat_015")->schema->name == "*MAT_JOHNSON_COOK");
         CHECK(keywords::find_keyword("*CONTROL_TIME_STEP")->schema->name == "*CONTROL_TIMESTEP");
         CHECK(keywords::find_keyword("*SET_NODE")->schema->name == "*SET_NODE_LIST");
+        CHECK(keywords::find_keyword("*SET_PART")->schema->name == "*SET_PART_LIST");
+        CHECK(keywords::find_keyword("*SET_PART_TITLE")->schema->name == "*SET_PART_LIST");
+        // Other *SET_PART_ keywords keep their own (generated) layouts.
+        CHECK(keywords::find_keyword("*SET_PART_ADD")->schema->name == "*SET_PART_ADD");
         auto m = keywords::find_keyword("*MAT_009_TITLE");
         REQUIRE(m);
         CHECK(m->schema->name == "*MAT_NULL");

@@ -89,3 +89,51 @@ TEST_CASE("references: findings on an OpenRadioss deck name its own keywords") {
     CHECK(material->message.find("/MAT") != std::string::npos);
     CHECK(node->message.find('*') == std::string::npos);
 }
+
+TEST_CASE("references: ids named by generated keywords are followed (REF009 and friends)") {
+    const std::string load = "*LOAD_NODE_POINT\n        80         3        12       1.0\n*NODE\n      80\n";
+    auto r = lint::check_buffer(kPart + load, "d.k");
+    REQUIRE(count_code(r.diagnostics, "REF009") == 1);
+    CHECK(r.model.id_references.size() == 2);  // NID (node 80) and LCID (curve 12)
+    // Defined as a *DEFINE_CURVE_TITLE (title line first), a table or a function: the same id space.
+    for (const char* curve : {"*DEFINE_CURVE_TITLE\nload\n        12\n       0.0       1.0\n",
+                              "*DEFINE_TABLE\n        12\n       0.0         1\n", "*DEFINE_FUNCTION\n        12\nf(t)=t\n"})
+        CHECK(count_code(lint::check_buffer(kPart + load + curve, "d.k").diagnostics, "REF009") == 0);
+    // A curve defined through a parameter cannot be judged: the kind is skipped.
+    CHECK(count_code(lint::check_buffer(kPart + "*PARAMETER\nI lc              13\n" + load + "*DEFINE_CURVE\n&lc\n", "d.k").diagnostics,
+                     "REF009") == 0);
+    // Ids in a missing include cannot be matched.
+    CHECK(count_code(lint::check_buffer(kPart + load + "*INCLUDE\nmissing.k\n", "d.k").diagnostics, "REF009") == 0);
+}
+
+TEST_CASE("references: a type field decides what a generated keyword's id names") {
+    const std::string contact = "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n         9         1         {}         3\n       0.1\n";
+    // SURFATYP 3: part 9 (undefined, REF002); 4: node set 9 (REF008); 5: all (not judged);
+    // 0 on the node side of a node-to-surface contact: not a segment set.
+    CHECK(count_code(lint::check_buffer(kPart + fmt::format(fmt::runtime(contact), 3), "d.k").diagnostics, "REF002") == 1);
+    CHECK(count_code(lint::check_buffer(kPart + fmt::format(fmt::runtime(contact), 4), "d.k").diagnostics, "REF008") == 1);
+    for (int type : {0, 5}) {
+        auto r = lint::check_buffer(kPart + fmt::format(fmt::runtime(contact), type), "d.k");
+        CHECK(count_code(r.diagnostics, "REF002") + count_code(r.diagnostics, "REF008") == 0);
+    }
+    // The data card of a *PART_ variant: its SECID is the part's, reported once by REF003.
+    auto jet = lint::check_buffer(kPart + "*PART_INERTIA\nsteel\n         7         5         5\n", "d.k");
+    CHECK(count_code(jet.diagnostics, "REF003") == 1);  // the part's own SECID, once (not again as a link)
+}
+
+TEST_CASE("references: *FREQUENCY_DOMAIN_FRF ids are not followed (pydyna's layout has a card more)") {
+    auto r = lint::check_buffer(kPart + "*FREQUENCY_DOMAIN_FRF\n         0         0         1         1         0"
+                                        "      20.0\n      0.01         0\n         2         1\n",
+                                "d.k");
+    CHECK(r.model.id_references.empty());
+}
+
+TEST_CASE("references: a material named by a generated keyword is used, an undefined one is REF004") {
+    const std::string group = "*MAT_NULL\n         2     900.0\n*ALE_STRUCTURED_MULTI_MATERIAL_GROUP\n{}";
+    auto used = lint::check_buffer(kPart + fmt::format(fmt::runtime(group), "         1         2\n"), "d.k");
+    CHECK(count_code(used.diagnostics, "REF007") == 0);
+    CHECK(count_code(used.diagnostics, "REF004") == 0);
+    auto missing = lint::check_buffer(kPart + fmt::format(fmt::runtime(group), "         1         3\n"), "d.k");
+    CHECK(count_code(missing.diagnostics, "REF007") == 1);  // material 2
+    CHECK(count_code(missing.diagnostics, "REF004") == 1);  // material 3
+}

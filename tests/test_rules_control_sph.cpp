@@ -256,3 +256,16 @@ TEST_CASE("SPH092: ISYMP 100 with symmetry planes and over a million particles")
     particles(1'000'001);
     CHECK(test::count_code(findings(100), "SPH092") == 0);
 }
+
+TEST_CASE("SPH014: IHTC 1 needs CP and LAMBDA of the fluid; silent with IHTC 0 or a missing include") {
+    const std::string control = "*KEYWORD\n*CONTROL_SPH_INCOMPRESSIBLE\n         0      0.01     1e+20     1e+20         {}\n";
+    const std::string fluid = "*MAT_SPH_INCOMPRESSIBLE_FLUID\n         1    1000.0    1.0e-3\n    4180.0\n";
+    auto with = [&](int ihtc, const std::string& more) {
+        return test::count_code(lint::check_buffer(fmt::format(fmt::runtime(control), ihtc) + more, "d.k").diagnostics, "SPH014");
+    };
+    CHECK(with(1, fluid) == 1);                                   // LAMBDA blank
+    CHECK(with(1, "") == 1);                                      // no fluid material
+    CHECK(with(1, fluid.substr(0, fluid.size() - 1) + "       0.6\n") == 0);  // both given
+    CHECK(with(0, fluid) == 0);                                   // no heat transfer coefficients asked
+    CHECK(with(1, "*INCLUDE\nfluids.k\n") == 0);                  // the fluid may be in the include
+}

@@ -50,7 +50,10 @@ FieldSpec field_of(std::string_view text) {
         f.width = small(parts[3]);
     }
     if (parts.size() > 4 && !parts[4].empty()) f.default_value = number(parts[4]);
-    if (parts.size() > 5) f.refers_to = parts[5];
+    // pydyna links a few real fields to ids (*DEFINE_SPH_DE_COUPLING PFACT to a section,
+    // *EM_CONTROL_SOLUTION ANG to a node): only its integer fields are taken as ids.
+    if (parts.size() > 5 && t == 'I') f.refers_to = parts[5];
+    f.pydyna_integer = t == 'I';
     if (t == 'I') f.doc = f.refers_to.empty() ? "integer in pydyna's layout, checked as a number"
                                               : "integer in pydyna's layout, checked as a number; an id";
     return f;

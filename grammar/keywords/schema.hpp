@@ -52,8 +52,12 @@ struct FieldSpec {
     std::string_view default_text = {};
     std::vector<std::string_view> text_choices = {};
     // Generated layouts: what the id in this field names ("PART", "SET_NODE", "DEFINE_CURVE"),
-    // from pydyna's links; empty: not an id, or not known. Not yet followed by REF rules.
+    // from pydyna's links (integer fields only); empty: not an id, or not known. Followed by the REF
+    // rules (model/id_links.hpp).
     std::string_view refers_to = {};
+    // Generated layouts: an integer in pydyna's layout, checked as a number only (type Real; pydyna
+    // types some manual F fields int). Findings still call it an integer field.
+    bool pydyna_integer = false;
 
     bool is_named(std::string_view n) const;  // name or alias, case-insensitive
     const EnumChoice* choice(long long v) const;  // nullptr when v is not one of the choices

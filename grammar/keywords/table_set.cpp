@@ -108,6 +108,10 @@ KeywordSchema set_node_list() {
 KeywordSchema set_part_list() {
     return {
         .name = "*SET_PART_LIST",
+        // The manual's *SET_PART_{OPTION} takes a blank option for the list, as *SET_NODE does; pydyna
+        // has no *SET_PART class (its manifest aliases *SET_NODE only). Corpus: pydyna's
+        // run/case-keywords/projectile.k writes *SET_PART with an SID card and a PID card.
+        .aliases = {"*SET_PART"},
         .cards = {{.name = "Card 1", .fields = set_header("part set id")}, part_ids()},
         .doc = "part set: eight part ids per line",
         .options = {title_option(), generate_option()},
