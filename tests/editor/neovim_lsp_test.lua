@@ -73,10 +73,11 @@ say("nvim " .. tostring(vim.version().major) .. "." .. tostring(vim.version().mi
 
 local client_id = nil
 wait_for("the server to start and answer initialize", function()
-  local clients = vim.lsp.buf_get_clients(buf)
-  for id, client in pairs(clients) do
-    if client.name == "sphdeck" and client.initialized ~= false then
-      client_id = id
+  -- vim.lsp.get_clients from 0.10 on, vim.lsp.buf_get_clients before
+  local clients = vim.lsp.get_clients and vim.lsp.get_clients({ bufnr = buf }) or vim.lsp.buf_get_clients(buf)
+  for _, client in pairs(clients) do
+    if client.name == "sphdeck" then
+      client_id = client.id
       return true
     end
   end
