@@ -37,9 +37,23 @@ local function remaining_ms()
   return math.max(0, time_limit_ms - (vim.loop.now() - started))
 end
 
--- vim.wait bounded by the global limit; fails with `what` when `condition` never holds.
-local function wait_for(what, condition)
-  if not vim.wait(remaining_ms(), condition, 20) then
+local server_exit = nil -- {code, signal} once the server process ended
+
+-- vim.wait bounded by the global limit; fails with `what` when `condition` never holds, and at once
+-- when the server ends before (unless its end is what is awaited).
+local function wait_for(what, condition, server_may_end)
+  local ended_early = false
+  local done = vim.wait(remaining_ms(), function()
+    if condition() then
+      return true
+    end
+    ended_early = server_exit ~= nil and not server_may_end
+    return ended_early
+  end, 20)
+  if ended_early then
+    fail(("the server ended (exit code %s, signal %s) while waiting for %s"):format(
+      server_exit.code, server_exit.signal, what))
+  elseif not done then
     fail("timed out waiting for " .. what)
   end
 end
@@ -52,8 +66,6 @@ vim.opt.shadafile = "NONE"
 
 package.path = source_dir .. "/editors/neovim/lua/?.lua;" .. package.path
 local sphdeck_nvim = require("sphdeck")
-local server_exit = nil
-local stderr_lines = {}
 sphdeck_nvim.setup({
   cmd = { sphdeck, "lsp" },
   on_exit = function(code, signal)
@@ -140,7 +152,7 @@ say("diagnostic gone after the edit")
 
 -- 4. Shutdown and exit: the server must end by itself with exit code 0.
 vim.lsp.stop_client(client_id)
-wait_for("the server to exit after shutdown", function() return server_exit ~= nil end)
+wait_for("the server to exit after shutdown", function() return server_exit ~= nil end, true)
 if server_exit.code ~= 0 or server_exit.signal ~= 0 then
   fail(("server ended with code %s, signal %s after shutdown"):format(server_exit.code, server_exit.signal))
 end
