@@ -28,5 +28,6 @@ std::function<int()> setup_smooth(CLI::App& app);
 std::function<int()> setup_sol2sph(CLI::App& app);
 std::function<int()> setup_run(CLI::App& app);
 std::function<int()> setup_verify(CLI::App& app);
+std::function<int()> setup_lsp(CLI::App& app);
 
 }  // namespace sphdeck::cli

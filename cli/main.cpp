@@ -20,6 +20,7 @@ const std::vector<sphdeck::cli::Command>& commands() {
         {"sol2sph", "generate the particles SOL2SPH parts of a Radioss deck will release (vtp, csv)", sphdeck::cli::setup_sol2sph},
         {"run", "run the deck with the compact reference SPH solver (time history, vtp snapshots)", sphdeck::cli::setup_run},
         {"verify", "run the verification cases (sod, hydrostatic, dambreak) against exact and experimental data", sphdeck::cli::setup_verify},
+        {"lsp", "serve editors over the Language Server Protocol on stdio: diagnostics as you type, hover, go to definition", sphdeck::cli::setup_lsp},
     };
     return table;
 }

@@ -1,0 +1,63 @@
+#include "lsp/deck_settings.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <string>
+
+#include "engine/config_file.hpp"
+
+namespace sphdeck::lsp {
+namespace fs = std::filesystem;
+
+DeckSettings settings_for(const fs::path& deck, const std::vector<fs::path>& roots) {
+    DeckSettings out;
+    std::optional<fs::path> config = engine::find_config(deck);
+    for (std::size_t i = 0; !config && i < roots.size(); ++i) {
+        std::error_code ec;
+        for (std::string_view name : engine::config_names)
+            if (fs::is_regular_file(roots[i] / name, ec)) {
+                config = roots[i] / name;
+                break;
+            }
+    }
+    lint::Config settings;
+    if (config) {
+        if (auto error = engine::load_config(config->string(), settings)) {
+            out.error = std::move(error);
+            settings = lint::Config{};
+        }
+    }
+    // As cli/cmd_check.cpp's options_for, without command-line overrides: the reader searches the
+    // config's include paths, the rules see its solver.
+    out.options.reader.include_paths = settings.include_paths;
+    out.options.rules.geometry = true;
+    if (settings.solver) {
+        out.options.rules.solver = *settings.solver == "mpp" ? lint::Solver::Mpp : lint::Solver::Smp;
+        out.options.rules.solver_source = settings.path;
+    }
+    out.options.config = std::move(settings);
+    return out;
+}
+
+bool is_deck(const fs::path& path, std::string_view text) {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    for (std::string_view known : {".k", ".key", ".dyn", ".inc", ".rad"})
+        if (extension == known) return true;
+    std::size_t at = 0;
+    while (at < text.size()) {
+        std::size_t end = text.find('\n', at);
+        if (end == std::string_view::npos) end = text.size();
+        std::string_view line = text.substr(at, end - at);
+        at = end + 1;
+        while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.remove_suffix(1);
+        if (line.empty() || line.front() == '$') continue;
+        if (line.rfind("#RADIOSS", 0) == 0) return true;
+        if (line.front() == '#') continue;  // a Radioss comment
+        return line.front() == '*' || line.front() == '/';
+    }
+    return false;
+}
+
+}  // namespace sphdeck::lsp

@@ -1,0 +1,15 @@
+// Applies LSP TextDocumentContentChangeEvents to a buffer: a whole new text, or a range (UTF-16
+// positions, lines split at '\n' as the deck readers split them) replaced by new text.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace sphdeck::lsp {
+
+// Applies one change to `text`. Positions past a line's end or past the last line clamp to them,
+// a reversed range is taken in order. False (and `text` unchanged) when `change` is not a change event.
+bool apply_change(std::string& text, const nlohmann::json& change);
+
+}  // namespace sphdeck::lsp

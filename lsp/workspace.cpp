@@ -1,0 +1,205 @@
+#include "lsp/workspace.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <exception>
+
+#include "lsp/deck_settings.hpp"
+#include "lsp/text_change.hpp"
+#include "lsp/uri.hpp"
+
+namespace sphdeck::lsp {
+namespace fs = std::filesystem;
+namespace {
+bool blank(const std::string& text) {
+    return std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isspace(c); });
+}
+
+// A deck that cannot be read at all (`sphdeck check` says "error: ..." and exits 2): one error at
+// its first line, unless the buffer is still empty (a new file being written).
+nlohmann::json unreadable(const std::string& message) {
+    return {{"range", {{"start", {{"line", 0}, {"character", 0}}}, {"end", {{"line", 0}, {"character", 0}}}}},
+            {"severity", 1},
+            {"source", "sphdeck"},
+            {"message", message}};
+}
+}  // namespace
+
+bool Workspace::open(const std::string& uri, std::string text, std::int64_t version) {
+    const fs::path path = path_from_uri(uri);
+    if (path.empty()) return false;
+    const fs::path key = engine::Documents::key(path);
+    documents_.set(key, std::move(text));
+    open_[key] = OpenDocument{uri, version, opened_++};
+    dirty_.insert(key);
+    return true;
+}
+
+bool Workspace::change(const std::string& uri, std::int64_t version, const nlohmann::json& content_changes) {
+    const fs::path path = path_from_uri(uri);
+    if (path.empty() || !content_changes.is_array()) return false;
+    const fs::path key = engine::Documents::key(path);
+    const auto document = open_.find(key);
+    const std::string* current = documents_.find(key);
+    if (document == open_.end() || !current) return false;
+    std::string text = *current;
+    bool all_applied = true;
+    for (const nlohmann::json& change : content_changes) all_applied = apply_change(text, change) && all_applied;
+    documents_.set(key, std::move(text));
+    document->second.version = version;
+    dirty_.insert(key);
+    return all_applied;
+}
+
+bool Workspace::save(const std::string& uri, const std::optional<std::string>& text) {
+    const fs::path path = path_from_uri(uri);
+    if (path.empty()) return false;
+    const fs::path key = engine::Documents::key(path);
+    if (text && open_.count(key)) documents_.set(key, *text);
+    dirty_.insert(key);  // a saved file may also have been written by another program
+    return true;
+}
+
+bool Workspace::close(const std::string& uri) {
+    const fs::path path = path_from_uri(uri);
+    if (path.empty()) return false;
+    const fs::path key = engine::Documents::key(path);
+    const bool was_open = open_.erase(key) > 0;
+    documents_.erase(key);  // the disk has the say again
+    dirty_.insert(key);
+    return was_open;
+}
+
+std::string Workspace::uri_of(const fs::path& key, const std::string& path) const {
+    const auto document = open_.find(key);
+    return document != open_.end() ? document->second.uri : uri_from_path(path);
+}
+
+bool Workspace::reads(const Deck& deck, const fs::path& key) const { return deck.findings.count(key) > 0; }
+
+Workspace::Deck Workspace::check(const fs::path& main) const {
+    Deck out;
+    out.checked.main = main;
+    const DeckSettings settings = settings_for(main, roots_);
+    try {
+        out.checked.result = engine::check_deck(main.string(), documents_, settings.options);
+    } catch (const std::exception& e) {
+        out.checked.result = engine::CheckResult{};
+        out.checked.result.includes.main = main;
+        FileFindings& findings = out.findings[main];
+        findings.path = main.string();
+        const std::string* text = documents_.find(main);
+        if (!text || !blank(*text)) findings.diagnostics.push_back(unreadable(e.what()));
+        return out;
+    }
+    out.findings = findings_by_file(out.checked.result, [this](const fs::path& key, const std::string& path) {
+        return uri_of(key, path);
+    });
+    if (settings.error) {
+        FileFindings& findings = out.findings[main];
+        if (findings.path.empty()) findings.path = main.string();
+        findings.diagnostics.insert(findings.diagnostics.begin(), unreadable(settings.error->to_string()));
+    }
+    return out;
+}
+
+void Workspace::flush() {
+    if (dirty_.empty()) return;
+    std::set<fs::path> affected;
+    const auto note = [&](const Deck& deck) {
+        for (const auto& entry : deck.findings) affected.insert(entry.first);
+    };
+    // Closed decks go; decks that read a changed file are checked again.
+    std::vector<Deck> kept;
+    for (Deck& deck : decks_) {
+        note(deck);
+        if (!open_.count(deck.checked.main)) continue;
+        if (std::any_of(dirty_.begin(), dirty_.end(), [&](const fs::path& key) { return reads(deck, key); })) {
+            deck = check(deck.checked.main);
+            note(deck);
+        }
+        kept.push_back(std::move(deck));
+    }
+    decks_ = std::move(kept);
+    // Open decks that no deck reads are checked on their own, oldest first.
+    std::vector<std::pair<std::uint64_t, fs::path>> candidates;
+    for (const auto& [key, document] : open_) candidates.emplace_back(document.order, key);
+    std::sort(candidates.begin(), candidates.end());
+    for (const auto& [order, key] : candidates) {
+        if (std::any_of(decks_.begin(), decks_.end(), [&](const Deck& deck) { return reads(deck, key); })) continue;
+        const std::string* text = documents_.find(key);
+        if (!text || !is_deck(key, *text)) continue;
+        decks_.push_back(check(key));
+        note(decks_.back());
+    }
+    // A deck that another deck includes is checked as part of it (the first of a cycle stays).
+    std::vector<bool> removed(decks_.size(), false);
+    for (std::size_t i = 0; i < decks_.size(); ++i)
+        for (std::size_t j = 0; j < decks_.size(); ++j)
+            if (j != i && !removed[j] && reads(decks_[j], decks_[i].checked.main)) {
+                removed[i] = true;
+                break;
+            }
+    std::vector<Deck> roots;
+    for (std::size_t i = 0; i < decks_.size(); ++i)
+        if (!removed[i]) roots.push_back(std::move(decks_[i]));
+    decks_ = std::move(roots);
+    dirty_.clear();
+    publish(affected);
+}
+
+void Workspace::publish(const std::set<fs::path>& files) {
+    for (const fs::path& key : files) {
+        nlohmann::json diagnostics = nlohmann::json::array();
+        std::string path;
+        std::size_t readers = 0;
+        for (const Deck& deck : decks_) {
+            const auto found = deck.findings.find(key);
+            if (found == deck.findings.end()) continue;
+            path = found->second.path;
+            // A file two open decks read: each finding once.
+            for (const nlohmann::json& d : found->second.diagnostics)
+                if (readers == 0 || std::find(diagnostics.begin(), diagnostics.end(), d) == diagnostics.end())
+                    diagnostics.push_back(d);
+            ++readers;
+        }
+        nlohmann::json params;
+        if (readers > 0) {
+            params["uri"] = uri_of(key, path);
+            published_[key] = params["uri"];
+        } else {
+            const auto previous = published_.find(key);
+            params["uri"] = previous != published_.end() ? previous->second : uri_of(key, key.string());
+            published_.erase(key);
+        }
+        if (const auto document = open_.find(key); document != open_.end()) params["version"] = document->second.version;
+        params["diagnostics"] = std::move(diagnostics);
+        publish_(params);
+    }
+}
+
+std::optional<Workspace::Located> Workspace::locate(const fs::path& path) const {
+    const fs::path key = engine::Documents::key(path);
+    const Deck* chosen = nullptr;
+    for (const Deck& deck : decks_)
+        if (deck.checked.main == key) chosen = &deck;
+    for (std::size_t i = 0; !chosen && i < decks_.size(); ++i)
+        if (reads(decks_[i], key)) chosen = &decks_[i];
+    if (!chosen) return std::nullopt;
+    const auto file = file_of(chosen->checked, key);
+    if (!file) return std::nullopt;
+    return Located{&chosen->checked, *file};
+}
+
+const std::string* Workspace::text(const std::string& uri) const {
+    const fs::path path = path_from_uri(uri);
+    return path.empty() ? nullptr : documents_.find(path);
+}
+
+std::vector<fs::path> Workspace::deck_mains() const {
+    std::vector<fs::path> out;
+    for (const Deck& deck : decks_) out.push_back(deck.checked.main);
+    return out;
+}
+
+}  // namespace sphdeck::lsp
