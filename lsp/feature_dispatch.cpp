@@ -14,8 +14,42 @@ struct FeatureRow {
     Handler handler;
 };
 
-// One row a feature (filled in as the features land).
-constexpr std::array<FeatureRow, 0> kFeatures{};
+// The request's position (params.position); a request without one gets a null answer.
+template <nlohmann::json (*Feature)(const CheckedDeck&, grammar::FileId, TextPosition)>
+nlohmann::json at_position(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json& params) {
+    TextPosition position;
+    if (!params.is_object() || !params.contains("position") || !parse_position(params["position"], position))
+        return nullptr;
+    return Feature(deck, file, position);
+}
+
+nlohmann::json references_of(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json& params) {
+    TextPosition position;
+    if (!params.is_object() || !params.contains("position") || !parse_position(params["position"], position))
+        return nlohmann::json::array();
+    bool declaration = false;
+    if (auto context = params.find("context"); context != params.end() && context->is_object())
+        if (auto d = context->find("includeDeclaration"); d != context->end() && d->is_boolean()) declaration = *d;
+    return references(deck, file, position, declaration);
+}
+
+nlohmann::json symbols_of(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json&) {
+    return document_symbols(deck, file);
+}
+nlohmann::json folding_of(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json&) {
+    return folding_ranges(deck, file);
+}
+
+// One row a feature.
+constexpr std::array<FeatureRow, 7> kFeatures{{
+    {"textDocument/hover", "hoverProvider", at_position<hover>},
+    {"textDocument/definition", "definitionProvider", at_position<definition>},
+    {"textDocument/references", "referencesProvider", references_of},
+    {"textDocument/completion", "completionProvider", at_position<completion>},
+    {"textDocument/documentSymbol", "documentSymbolProvider", symbols_of},
+    {"textDocument/foldingRange", "foldingRangeProvider", folding_of},
+    {"textDocument/codeAction", "codeActionProvider", code_actions},
+}};
 }  // namespace
 
 FeatureAnswer answer_feature(std::string_view method, const CheckedDeck& deck, grammar::FileId file,
@@ -28,6 +62,9 @@ FeatureAnswer answer_feature(std::string_view method, const CheckedDeck& deck, g
 nlohmann::json feature_capabilities() {
     nlohmann::json capabilities = nlohmann::json::object();
     for (const auto& row : kFeatures) capabilities[std::string(row.capability)] = true;
+    // Completion is asked for on these characters too (a keyword after '*', a value after ',').
+    capabilities["completionProvider"] = {{"triggerCharacters", {"*", ","}}, {"resolveProvider", false}};
+    capabilities["codeActionProvider"] = {{"codeActionKinds", {"quickfix"}}};
     return capabilities;
 }
 

@@ -1,0 +1,342 @@
+#include "lsp/deck_ids.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "grammar/value.hpp"
+#include "lsp/deck_lookup.hpp"
+#include "model/model.hpp"
+#include "model/radioss_decoder.hpp"
+
+namespace sphdeck::lsp {
+namespace {
+
+namespace rad = grammar::radioss;
+
+bool starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
+
+// Keyword families and the field that holds their own id (the manual's *PART PID, *SECTION SECID...).
+struct Definition {
+    std::string_view keyword;  // the schema name or a family prefix ending in '_'
+    std::string_view field;
+    std::string_view kind;
+};
+constexpr std::array<Definition, 17> kDefinitions{{
+    {"*PART", "PID", "PART"},
+    {"*SECTION_", "SECID", "SECTION"},
+    {"*MAT_", "MID", "MAT"},
+    {"*EOS_", "EOSID", "EOS"},
+    {"*HOURGLASS", "HGID", "HOURGLASS"},
+    {"*SET_NODE", "SID", "SET_NODE"},
+    {"*SET_PART", "SID", "SET_PART"},
+    {"*SET_SEGMENT", "SID", "SET_SEGMENT"},
+    {"*SET_SOLID", "SID", "SET_SOLID"},
+    {"*SET_SHELL", "SID", "SET_SHELL"},
+    {"*SET_BEAM", "SID", "SET_BEAM"},
+    {"*DEFINE_CURVE", "LCID", "DEFINE_CURVE"},
+    {"*DEFINE_TABLE", "TBID", "DEFINE_CURVE"},
+    {"*DEFINE_BOX", "BOXID", "DEFINE_BOX"},
+    {"*DEFINE_VECTOR", "VID", "DEFINE_VECTOR"},
+    {"*DEFINE_COORDINATE_", "CID", "DEFINE_COORDINATE_SYSTEM"},
+    {"*DEFINE_TRANSFORMATION", "TRANID", "DEFINE_TRANSFORMATION"},
+}};
+
+// Fields of the hand-written tables that name an id (the generated layouts say it in refers_to).
+struct Reference {
+    std::string_view field;
+    std::string_view kind;
+};
+constexpr std::array<Reference, 18> kReferences{{
+    {"SECID", "SECTION"},     {"ISSPH", "SECTION"},       {"MID", "MAT"},
+    {"EOSID", "EOS"},         {"HGID", "HOURGLASS"},      {"PID", "PART"},
+    {"IPID", "PART"},         {"IPSPH", "PART"},          {"BOXID", "DEFINE_BOX"},
+    {"IBOXA", "DEFINE_BOX"},  {"IBOXB", "DEFINE_BOX"},    {"NSID", "SET_NODE"},
+    {"NSIDEX", "SET_NODE"},   {"LCID", "DEFINE_CURVE"},   {"LCFLD", "DEFINE_CURVE"},
+    {"DT2MSLC", "DEFINE_CURVE"}, {"LCIDDR", "DEFINE_CURVE"}, {"LCEPSMX", "DEFINE_CURVE"},
+}};
+
+bool family_matches(std::string_view keyword, std::string_view family) {
+    if (family.back() == '_') return starts_with(keyword, family);
+    return keyword == family || starts_with(keyword, std::string(family) + "_");
+}
+
+// PID1..PID8 of *SET_PART_LIST: the name without its trailing digits.
+std::string_view without_digits(std::string_view name) {
+    while (!name.empty() && std::isdigit(static_cast<unsigned char>(name.back()))) name.remove_suffix(1);
+    return name;
+}
+
+// A Radioss header's family ("/PROP/SPH/7" -> "PROP") and its id segment with its columns.
+struct HeaderId {
+    std::string family;
+    std::string id;
+    grammar::Span span;
+};
+std::optional<HeaderId> header_id(const grammar::Block& block) {
+    const std::string_view header = block.keyword;
+    HeaderId out;
+    std::size_t i = 0, segment = 0;
+    while (i < header.size()) {
+        if (header[i] == '/') {
+            ++i;
+            continue;
+        }
+        std::size_t end = std::min(header.find('/', i), header.size());
+        const std::string_view s = header.substr(i, end - i);
+        if (segment++ == 0) {
+            out.family = std::string(s);
+        } else if (std::all_of(s.begin(), s.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
+            out.id = model::normalise_id(s);
+            out.span = grammar::Span{block.span.file, block.span.line, block.span.column + static_cast<std::uint32_t>(i),
+                                     block.span.column + static_cast<std::uint32_t>(end)};
+            return out;
+        }
+        i = end;
+    }
+    return std::nullopt;
+}
+
+// Radioss header families: those that define an id, and those whose id names another block's.
+std::optional<IdRole> header_role(std::string_view family) {
+    static constexpr std::array<std::string_view, 10> defines{"PART", "PROP",  "MAT",    "GRNOD", "GRPART",
+                                                              "FRAME", "SKEW", "SURF", "FUNCT", "SUBSET"};
+    static constexpr std::array<std::string_view, 9> of_part{"SPHCEL", "BRICK", "TETRA4", "TETRA10", "PENTA6",
+                                                             "SHELL",  "SH3N",  "BEAM",   "SPRING"};
+    if (std::find(defines.begin(), defines.end(), family) != defines.end()) return IdRole{std::string(family), true};
+    if (std::find(of_part.begin(), of_part.end(), family) != of_part.end()) return IdRole{"PART", false};
+    if (family == "EOS") return IdRole{"MAT", false};  // an /EOS carries the id of its material
+    return std::nullopt;
+}
+
+// Bulk blocks: millions of lines whose ids are nodes and particles.
+bool bulk_block(const grammar::Block& block) {
+    const std::string& k = block.keyword;
+    return k == "*NODE" || starts_with(k, "*ELEMENT_SPH") || k == "/NODE" || starts_with(k, "/NODE/") ||
+           starts_with(k, "/SPHCEL") || starts_with(k, "/BRICK") || starts_with(k, "/TETRA");
+}
+
+std::string field_title(std::string_view name, std::string_view text) {
+    return name == "TITLE" || name == "HEADING" ? std::string(grammar::trim_blanks(text)) : std::string();
+}
+
+void collect_dyna(const CheckedDeck& deck, const grammar::Block& block, std::vector<IdUse>& out) {
+    const auto& raw = deck.result.deck;
+    std::string title;
+    walk_dyna_block(raw, block, [&](const DynaCard& card) {
+        for (const auto& v : card.values) {
+            if (!v.spec) continue;
+            if (auto t = field_title(v.spec->name, v.text); !t.empty()) title = t;
+            auto role = dyna_id_role(card.match.schema->name, *v.spec);
+            if (!role) continue;
+            std::string id = id_text(v);
+            if (id.empty()) continue;
+            out.push_back({role->kind, std::move(id), v.span, role->defines, &block, role->defines ? title : ""});
+        }
+        return true;
+    });
+}
+
+void collect_radioss(const CheckedDeck& deck, const grammar::Block& block, int version, std::vector<IdUse>& out) {
+    const auto& raw = deck.result.deck;
+    auto header = header_id(block);
+    std::string title;
+    if (header) {
+        if (auto role = header_role(header->family)) {
+            if (role->defines && block.line_count > 0 && !rad::is_v4(version))
+                title = std::string(grammar::trim_blanks(raw.text(*raw.begin_lines(block))));
+            out.push_back({role->kind, header->id, header->span, role->defines, &block, title});
+        }
+    }
+    if (bulk_block(block)) return;
+    walk_radioss_block(raw, block, version, [&](const grammar::CardLine&, const RadiossCard& card) {
+        for (const auto& v : card.values) {
+            if (!v.spec) continue;
+            auto role = radioss_id_role(*v.spec);
+            if (!role) continue;
+            std::string id = id_text(v);
+            if (!id.empty()) out.push_back({role->kind, std::move(id), v.span, false, &block, ""});
+        }
+        return true;
+    });
+}
+
+}  // namespace
+
+std::optional<IdRole> dyna_id_role(std::string_view keyword, const keywords::FieldSpec& field) {
+    if (field.type == keywords::FieldType::Real || field.type == keywords::FieldType::Unused) return std::nullopt;
+    for (const auto& d : kDefinitions)
+        if (field.name == d.field && family_matches(keyword, d.keyword) && !starts_with(keyword, "*MAT_ADD_"))
+            return IdRole{std::string(d.kind), true};
+    if (!field.refers_to.empty()) {
+        if (field.refers_to == "DEFINE_CURVE_OR_TABLE") return IdRole{"DEFINE_CURVE", false};
+        return IdRole{std::string(field.refers_to), false};
+    }
+    if (keyword == "*ELEMENT_SPH" && field.name != "PID") return std::nullopt;  // NID is the particle itself
+    const std::string_view name = starts_with(keyword, "*SET_PART") ? without_digits(field.name) : field.name;
+    for (const auto& r : kReferences)
+        if (name == r.field) return IdRole{std::string(r.kind), false};
+    return std::nullopt;
+}
+
+std::optional<IdRole> radioss_id_role(const rad::FieldSpec& field) {
+    if (field.cell != rad::Cell::Int) return std::nullopt;
+    std::string_view name = field.name;
+    const std::size_t at = name.rfind("_ID");
+    if (at == std::string_view::npos || at == 0) return std::nullopt;
+    std::string prefix(name.substr(0, at));
+    for (char& c : prefix) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (prefix == "FCT") prefix = "FUNCT";
+    if (prefix == "NODE" || prefix == "BRICK" || prefix == "TETRA" || prefix == "PENTA") return std::nullopt;
+    return IdRole{prefix, false};
+}
+
+std::optional<std::string> radioss_header_kind(std::string_view header) {
+    grammar::Block b;
+    b.keyword = std::string(header);
+    auto id = header_id(b);
+    if (!id) return std::nullopt;
+    auto role = header_role(id->family);
+    if (!role || !role->defines) return std::nullopt;
+    return role->kind;
+}
+
+std::string id_text(const model::FieldValue& v) {
+    if (!v.spec || !v.explicit_value) return {};
+    if (v.spec->type == keywords::FieldType::Label && grammar::classify_value(v.text).shape == grammar::ValueShape::Other)
+        return model::normalise_id(v.text);
+    if (!v.valid || v.number == 0.0 || v.number != std::trunc(v.number) || model::exceeds_integer_range(v.number))
+        return {};
+    return std::to_string(static_cast<long long>(v.number));
+}
+
+std::string id_text(const model::RadiossValue& v) {
+    if (!v.spec || !v.explicit_value || !v.valid || v.number == 0.0 || v.number != std::trunc(v.number) ||
+        model::exceeds_integer_range(v.number))
+        return {};
+    return std::to_string(static_cast<long long>(v.number));
+}
+
+std::vector<IdUse> collect_ids(const CheckedDeck& deck) {
+    std::vector<IdUse> out;
+    const auto& raw = deck.result.deck;
+    const bool radioss = deck.result.model.radioss.has_value();
+    const int version = radioss ? model::radioss_version(raw) : 0;
+    for (const grammar::Block& block : raw.blocks) {
+        if (radioss) {
+            collect_radioss(deck, block, version, out);
+        } else if (!bulk_block(block)) {
+            collect_dyna(deck, block, out);
+        }
+    }
+    return out;
+}
+
+std::optional<IdUse> id_at(const CheckedDeck& deck, grammar::FileId file, std::uint32_t line, std::uint32_t column) {
+    const auto& raw = deck.result.deck;
+    const grammar::Block* block = block_at(raw, file, line);
+    if (!block) return std::nullopt;
+    const bool radioss = deck.result.model.radioss.has_value();
+    if (radioss && line == block->span.line) {
+        auto header = header_id(*block);
+        if (!header || column < header->span.column || column >= header->span.end_column) return std::nullopt;
+        auto role = header_role(header->family);
+        if (!role) return std::nullopt;
+        return IdUse{role->kind, header->id, header->span, role->defines, block, ""};
+    }
+    const grammar::CardLine* card_line = card_line_at(raw, *block, line);
+    if (!card_line) return std::nullopt;
+    if (radioss) {
+        auto card = radioss_card_at(raw, *block, *card_line, model::radioss_version(raw));
+        if (!card || !card->card) return std::nullopt;
+        auto index = radioss_field_at(*card, raw.text(*card_line), column);
+        if (!index) return std::nullopt;
+        const auto& v = card->values[*index];
+        auto role = radioss_id_role(*v.spec);
+        std::string id = id_text(v);
+        if (!role || id.empty()) return std::nullopt;
+        return IdUse{role->kind, id, v.span, false, block, ""};
+    }
+    auto card = dyna_card_at(raw, *block, *card_line);
+    if (!card) return std::nullopt;
+    auto index = dyna_field_at(*card->card, block->format, card->values, column);
+    if (!index) return std::nullopt;
+    const auto& v = card->values[*index];
+    auto role = dyna_id_role(card->match.schema->name, *v.spec);
+    std::string id = id_text(v);
+    if (!role || id.empty()) return std::nullopt;
+    return IdUse{role->kind, id, v.span, role->defines, block, ""};
+}
+
+std::vector<IdUse> find_definitions(const CheckedDeck& deck, const std::string& kind, const std::string& id) {
+    std::vector<IdUse> out;
+    const auto& raw = deck.result.deck;
+    const bool radioss = deck.result.model.radioss.has_value();
+    const int version = radioss ? model::radioss_version(raw) : 0;
+    for (const grammar::Block& block : raw.blocks) {
+        std::vector<IdUse> found;
+        if (radioss) {
+            auto header = header_id(block);
+            if (!header || header->family != kind || header->id != id) continue;
+            collect_radioss(deck, block, version, found);
+        } else {
+            const bool family = std::any_of(kDefinitions.begin(), kDefinitions.end(), [&](const Definition& d) {
+                return d.kind == kind && starts_with(block.keyword, d.keyword);
+            });
+            if (!family || bulk_block(block)) continue;
+            collect_dyna(deck, block, found);
+        }
+        for (auto& use : found)
+            if (use.defines && use.kind == kind && use.id == id) out.push_back(std::move(use));
+    }
+    return out;
+}
+
+std::vector<grammar::Span> particle_part_spans(const CheckedDeck& deck, const std::string& id, std::size_t limit) {
+    std::vector<grammar::Span> out;
+    const auto& raw = deck.result.deck;
+    const auto& particles = deck.result.model.particles;
+    if (deck.result.model.radioss) return out;  // /SPHCEL names its part in the header
+    long long part = 0;
+    try {
+        std::size_t used = 0;
+        part = std::stoll(id, &used);
+        if (used != id.size()) return out;
+    } catch (const std::exception&) {
+        return out;
+    }
+    std::uint32_t last_line = 0xFFFFFFFFu;
+    for (std::size_t i = 0; i < particles.size() && out.size() < limit; ++i) {
+        if (particles.part[i] != part || particles.line[i] == last_line) continue;
+        last_line = particles.line[i];
+        const grammar::CardLine& line = raw.lines[last_line];
+        // The block holding the line: blocks own contiguous runs of RawDeck::lines.
+        auto block = std::upper_bound(raw.blocks.begin(), raw.blocks.end(), last_line,
+                                      [](std::uint32_t n, const grammar::Block& b) { return n < b.first_line; });
+        if (block == raw.blocks.begin()) continue;
+        --block;
+        auto card = dyna_card_at(raw, *block, line);
+        if (!card || card->values.size() < 2) continue;
+        out.push_back(card->values[1].span);  // NID, PID, MASS, NEND
+    }
+    return out;
+}
+
+std::string describe(const CheckedDeck& deck, const IdUse& d) {
+    const auto& sources = deck.result.deck.sources;
+    std::string keyword = d.block ? d.block->keyword : d.kind;
+    if (d.block && d.block->keyword[0] == '/') {
+        // Radioss: the header without its id ("/PROP/SPH/7" -> "/PROP/SPH 7").
+        keyword = d.block->keyword.substr(0, d.block->keyword.rfind('/' + d.id));
+    }
+    std::string text = fmt::format("{} {}", keyword, d.id);
+    if (!d.title.empty()) text += fmt::format(" \"{}\"", d.title);
+    text += fmt::format(", line {}", d.span.line);
+    if (d.span.file != 0 && d.span.file < sources.size())
+        text += fmt::format(" of {}", sources.file(d.span.file).display_name);
+    return text;
+}
+
+}  // namespace sphdeck::lsp

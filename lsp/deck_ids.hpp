@@ -1,0 +1,67 @@
+// Ids in a deck: which fields define an id of a kind (a *PART's PID, a *SECTION's SECID, the id
+// of a Radioss /PROP header) and which name one (a part's SECID, a particle's PID, an LCID), so
+// that definition, references, hover and completion can follow them. Kinds are spelled like the
+// generated layouts' links: "PART", "SECTION", "MAT", "EOS", "HOURGLASS", "SET_NODE", "SET_PART",
+// "DEFINE_CURVE", "DEFINE_BOX"; Radioss kinds are their header families: "PART", "PROP", "MAT",
+// "GRNOD", "FRAME", "SKEW".
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "grammar/keywords/schema.hpp"
+#include "grammar/radioss/cards.hpp"
+#include "grammar/raw_deck.hpp"
+#include "lsp/checked_deck.hpp"
+#include "model/card_decoder.hpp"
+#include "model/radioss_card_decoder.hpp"
+
+namespace sphdeck::lsp {
+
+struct IdRole {
+    std::string kind;
+    bool defines = false;
+};
+
+// The id role of an LS-DYNA field of a keyword (canonical schema name), or nullopt.
+std::optional<IdRole> dyna_id_role(std::string_view keyword, const keywords::FieldSpec& field);
+// The id role of a Radioss card field ("prop_ID" names a PROP), or nullopt.
+std::optional<IdRole> radioss_id_role(const grammar::radioss::FieldSpec& field);
+// The kind a Radioss header defines an id of (its first numeric segment): "/PROP/SPH/7" -> PROP.
+std::optional<std::string> radioss_header_kind(std::string_view header);
+
+// The id a decoded field holds ("7", a label), empty when blank, zero or unreadable.
+std::string id_text(const model::FieldValue& value);
+std::string id_text(const model::RadiossValue& value);
+
+// One place an id stands.
+struct IdUse {
+    std::string kind;
+    std::string id;
+    grammar::Span span;
+    bool defines = false;
+    const grammar::Block* block = nullptr;  // the block it stands in
+    std::string title;                      // for a definition: the part heading, the block's title
+};
+
+// Every id use of the deck outside its bulk blocks (*NODE, *ELEMENT_SPH, /NODE, /SPHCEL):
+// one walk of the other blocks, decoding their cards again.
+std::vector<IdUse> collect_ids(const CheckedDeck& deck);
+
+// The id use under a position (1-based line, byte column) of `file`, bulk lines included.
+std::optional<IdUse> id_at(const CheckedDeck& deck, grammar::FileId file, std::uint32_t line, std::uint32_t column);
+
+// The definitions of id `id` of `kind` (usually one; a duplicated id gives more): a walk of the
+// blocks of the defining families only (LS-DYNA), or of the block headers (Radioss).
+std::vector<IdUse> find_definitions(const CheckedDeck& deck, const std::string& kind, const std::string& id);
+
+// The particle lines (*ELEMENT_SPH, /SPHCEL) of part `id`, as PID field spans: a scan of the
+// particle arrays, decoding only the lines that match; at most `limit`.
+std::vector<grammar::Span> particle_part_spans(const CheckedDeck& deck, const std::string& id, std::size_t limit);
+
+// A short description of a definition: "*SECTION_SPH 3, line 40" (+ its title when known).
+std::string describe(const CheckedDeck& deck, const IdUse& definition);
+
+}  // namespace sphdeck::lsp

@@ -1,0 +1,309 @@
+#include "lsp/deck_lookup.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+#include <string>
+
+#include "grammar/radioss/reader.hpp"
+
+namespace sphdeck::lsp {
+namespace {
+
+using keywords::CardRepeat;
+using keywords::CardSpec;
+namespace rad = grammar::radioss;
+
+// Blocks the syntax pass does not cut into cards (model/deck_check.cpp skip_cards).
+bool read_by_reader(const std::string& keyword) {
+    return keyword == "*COMMENT" || keyword.rfind("*INCLUDE", 0) == 0 || keyword.rfind("*PARAMETER", 0) == 0 ||
+           keyword == "*END";
+}
+
+// The card sequence walk of model/deck_check.cpp's BlockWalker, without its reports.
+class CardSequence {
+public:
+    explicit CardSequence(const keywords::KeywordMatch& match)
+        : cards_(keywords::cards_for(match)), group_(keywords::repeat_group_size(match)) {}
+
+    // The card the next line is read as; nullptr past the block's cards or the known layout.
+    const CardSpec* next() {
+        while (next_ < cards_.size() && !applies(*cards_[next_])) ++next_;
+        if (next_ < cards_.size() && cards_[next_]->unknown_layout) return nullptr;
+        if (next_ >= cards_.size()) {
+            if (group_ == 0) return nullptr;
+            next_ = cards_.size() - group_;
+        }
+        return cards_[next_];
+    }
+    // After a line was decoded as `card` with `values`.
+    void advance(const CardSpec& card, const std::vector<model::FieldValue>& values) {
+        if (card.repeat == CardRepeat::Repeated) return;
+        for (const auto& v : values)
+            if (v.valid && v.spec->type != keywords::FieldType::Text) earlier_[std::string(v.spec->name)] = v.number;
+        ++next_;
+    }
+    // True when every further line is read as `card`: one repeated card, no group after it.
+    bool only_repeats(const CardSpec& card) const { return card.repeat == CardRepeat::Repeated && group_ == 0; }
+
+private:
+    bool applies(const CardSpec& card) const {
+        if (!card.present_if) return true;
+        auto it = earlier_.find(std::string(card.present_if->field));
+        return card.present_if->holds(it == earlier_.end() ? 0.0 : it->second);
+    }
+
+    std::vector<const CardSpec*> cards_;
+    std::size_t group_ = 0;
+    std::size_t next_ = 0;
+    std::map<std::string, double> earlier_;
+};
+
+}  // namespace
+
+const grammar::Block* block_at(const grammar::RawDeck& deck, grammar::FileId file, std::uint32_t line) {
+    const grammar::Block* found = nullptr;
+    for (const grammar::Block& b : deck.blocks) {
+        if (b.span.file != file) continue;
+        if (b.span.line > line) break;  // blocks of one file come in line order
+        found = &b;
+    }
+    return found;
+}
+
+const grammar::CardLine* card_line_at(const grammar::RawDeck& deck, const grammar::Block& block, std::uint32_t line) {
+    const grammar::CardLine* begin = deck.begin_lines(block);
+    const grammar::CardLine* end = deck.end_lines(block);
+    const grammar::CardLine* at =
+        std::lower_bound(begin, end, line, [](const grammar::CardLine& l, std::uint32_t n) { return l.line < n; });
+    return at != end && at->line == line && at->file == block.span.file ? at : nullptr;
+}
+
+std::uint32_t block_last_line(const grammar::RawDeck& deck, const grammar::Block& block) {
+    if (block.line_count == 0) return block.span.line;
+    const grammar::CardLine& last = *(deck.end_lines(block) - 1);
+    return last.file == block.span.file ? std::max(last.line, block.span.line) : block.span.line;
+}
+
+std::optional<keywords::KeywordMatch> decodable_match(const grammar::Block& block) {
+    if (block.keyword.empty() || block.keyword[0] != '*' || read_by_reader(block.keyword)) return std::nullopt;
+    auto match = keywords::find_keyword(block.keyword);
+    if (!match || !match->unknown_options.empty() || match->schema->free_text) return std::nullopt;
+    return match;
+}
+
+void walk_dyna_block(const grammar::RawDeck& deck, const grammar::Block& block, const DynaCardVisitor& visit) {
+    auto match = decodable_match(block);
+    if (!match) return;
+    std::vector<diag::Diagnostic> dropped;
+    model::CardDecoder decoder(deck, dropped);
+    CardSequence sequence(*match);
+    DynaCard card{*match, nullptr, nullptr, {}};
+    for (const grammar::CardLine* l = deck.begin_lines(block); l != deck.end_lines(block); ++l) {
+        card.card = sequence.next();
+        if (!card.card) return;
+        card.line = l;
+        decoder.decode(block, *l, *card.card, card.values);
+        dropped.clear();
+        sequence.advance(*card.card, card.values);
+        if (!visit(card)) return;
+    }
+}
+
+std::optional<DynaCard> dyna_card_at(const grammar::RawDeck& deck, const grammar::Block& block,
+                                     const grammar::CardLine& line) {
+    auto match = decodable_match(block);
+    if (!match) return std::nullopt;
+    std::vector<diag::Diagnostic> dropped;
+    model::CardDecoder decoder(deck, dropped);
+    CardSequence sequence(*match);
+    DynaCard card{*match, nullptr, nullptr, {}};
+    for (const grammar::CardLine* l = deck.begin_lines(block); l != deck.end_lines(block); ++l) {
+        const CardSpec* spec = sequence.next();
+        if (!spec) return std::nullopt;
+        // A block of one repeated card (*NODE, *ELEMENT_SPH): every line is that card.
+        if (sequence.only_repeats(*spec)) l = &line;
+        if (l == &line) {
+            card.card = spec;
+            card.line = l;
+            decoder.decode(block, *l, *spec, card.values);
+            return card;
+        }
+        decoder.decode(block, *l, *spec, card.values);
+        dropped.clear();
+        sequence.advance(*spec, card.values);
+    }
+    return std::nullopt;
+}
+
+const keywords::CardSpec* dyna_card_after(const grammar::RawDeck& deck, const grammar::Block& block,
+                                          const grammar::CardLine* before) {
+    auto match = decodable_match(block);
+    if (!match) return nullptr;
+    std::vector<diag::Diagnostic> dropped;
+    model::CardDecoder decoder(deck, dropped);
+    CardSequence sequence(*match);
+    std::vector<model::FieldValue> values;
+    const grammar::CardLine* stop = before ? before + 1 : deck.begin_lines(block);
+    for (const grammar::CardLine* l = deck.begin_lines(block); l != stop; ++l) {
+        const CardSpec* spec = sequence.next();
+        if (!spec) return nullptr;
+        if (sequence.only_repeats(*spec)) return spec;
+        decoder.decode(block, *l, *spec, values);
+        dropped.clear();
+        sequence.advance(*spec, values);
+    }
+    return sequence.next();
+}
+
+std::optional<std::size_t> dyna_field_at(const keywords::CardSpec& card, grammar::CardFormat format,
+                                         const std::vector<model::FieldValue>& values, std::uint32_t column) {
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        const auto& v = values[i];
+        if (v.spec && v.spec->type != keywords::FieldType::Unused && v.explicit_value && column >= v.span.column &&
+            column < v.span.end_column)
+            return i;
+    }
+    const auto slots = keywords::layout(card, format);
+    for (std::size_t i = 0; i < slots.size() && i < card.fields.size(); ++i)
+        if (card.fields[i].type != keywords::FieldType::Unused && column >= slots[i].start + 1 &&
+            column < slots[i].start + 1 + slots[i].width) {
+            // A free-format line moves fields off their columns: trust the columns only when the
+            // decoded field sits there.
+            if (i < values.size() && values[i].explicit_value && values[i].span.column != slots[i].start + 1 &&
+                (column < values[i].span.column || column >= values[i].span.end_column))
+                return std::nullopt;
+            return i;
+        }
+    return std::nullopt;
+}
+
+const rad::KeywordSpec* radioss_keyword(const grammar::Block& block, std::size_t* prefix) {
+    if (block.keyword.empty() || block.keyword[0] != '/') return nullptr;
+    return rad::find_keyword(block.keyword, prefix);
+}
+
+bool radioss_engine_block(const grammar::RawDeck& deck, const grammar::Block& block) {
+    const grammar::FileId root = deck.sources.include_chain(block.span.file).front();
+    if (rad::is_engine_file_name(deck.sources.file(root).display_name)) return true;
+    // One-file decks: blocks before /END/ENGINE of the same file are the engine input.
+    for (const grammar::Block* b = &block + 1; b < deck.blocks.data() + deck.blocks.size(); ++b)
+        if (b->keyword == "/END/ENGINE" && deck.sources.include_chain(b->span.file).front() == root) return true;
+    return false;
+}
+
+namespace {
+// The walk of model/radioss_decoder.cpp's Walker: the title line, then the format's cards, a
+// trailing repeated group cycling (blank lines there are no records). `target` set: only that
+// line is decoded, and a single repeated card jumps straight to it.
+template <typename Visit>
+void radioss_walk(const grammar::RawDeck& deck, const grammar::Block& block, int version,
+                  const grammar::CardLine* target, Visit visit) {
+    RadiossCard out;
+    out.keyword = radioss_keyword(block);
+    if (!out.keyword || !out.keyword->decoded) return;
+    out.engine = radioss_engine_block(deck, block);
+    if (out.keyword->engine != out.engine) return;
+    out.version = out.engine ? rad::latest_version : version;
+    const rad::FormatSpec& format = out.keyword->format_for(out.version);
+    const grammar::CardLine* l = deck.begin_lines(block);
+    const grammar::CardLine* end = deck.end_lines(block);
+    if (out.keyword->title && !out.engine && !rad::is_v4(version) && l != end) {
+        if (l == target) {
+            out.title = true;
+            visit(*l, out);
+            return;
+        }
+        ++l;
+    }
+    const auto& cards = format.cards;
+    std::size_t first_repeated = cards.size();
+    for (std::size_t k = 0; k < cards.size(); ++k)
+        if (cards[k].repeat == rad::Repeat::Repeated) {
+            first_repeated = k;
+            break;
+        }
+    const std::size_t group = cards.size() - first_repeated;
+    std::vector<diag::Diagnostic> dropped;
+    model::RadiossCardDecoder decoder(deck, dropped);
+    std::size_t next = 0, in_group = 0;
+    for (; l != end; ++l) {
+        if (target && l > target) return;
+        std::size_t index;
+        if (next < first_repeated) {
+            index = next++;
+        } else if (group == 1 && target) {
+            index = first_repeated;
+            l = target;  // one repeated card: every further line is read as it
+        } else if (group > 0) {
+            index = first_repeated + in_group;
+            const auto& fields = cards[index].fields;
+            if (!fields.empty() && fields.front().cell == rad::Cell::Int && grammar::is_blank(deck.text(*l))) continue;
+            in_group = (in_group + 1) % group;
+        } else {
+            return;
+        }
+        if (target && l != target) continue;
+        out.card = &cards[index];
+        decoder.decode(*l, cards[index], out.version, out.engine, out.values, {}, out.keyword->trailing_checked);
+        dropped.clear();
+        if (!visit(*l, out)) return;
+    }
+}
+}  // namespace
+
+void walk_radioss_block(const grammar::RawDeck& deck, const grammar::Block& block, int version,
+                        const RadiossCardVisitor& visit) {
+    radioss_walk(deck, block, version, nullptr, visit);
+}
+
+std::optional<RadiossCard> radioss_card_at(const grammar::RawDeck& deck, const grammar::Block& block,
+                                           const grammar::CardLine& line, int version) {
+    std::optional<RadiossCard> found;
+    radioss_walk(deck, block, version, &line, [&](const grammar::CardLine&, const RadiossCard& card) {
+        found = card;
+        return false;
+    });
+    return found;
+}
+
+std::optional<std::size_t> radioss_field_at(const RadiossCard& card, std::string_view text, std::uint32_t column) {
+    const auto skipped = [](const rad::FieldSpec* spec) {
+        return !spec || spec->cell == rad::Cell::Skip || spec->cell == rad::Cell::Skip20;
+    };
+    for (std::size_t i = 0; i < card.values.size(); ++i) {
+        const auto& v = card.values[i];
+        if (!skipped(v.spec) && v.explicit_value && column >= v.span.column && column < v.span.end_column) return i;
+    }
+    if (!card.card || card.engine || grammar::is_free_format(text)) return std::nullopt;
+    const auto cells = rad::layout(*card.card, card.version);
+    for (std::size_t i = 0; i < cells.size() && i < card.values.size(); ++i)
+        if (!skipped(card.values[i].spec) && column >= cells[i].start + 1 && column < cells[i].start + 1 + cells[i].width)
+            return i;
+    return std::nullopt;
+}
+
+std::vector<ParameterReference> parameter_references(std::string_view text, grammar::FileId file, std::uint32_t line) {
+    std::vector<ParameterReference> out;
+    auto name_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    for (std::size_t at = text.find('&'); at != std::string_view::npos; at = text.find('&', at + 1)) {
+        std::size_t end = at + 1;
+        while (end < text.size() && name_char(text[end])) ++end;
+        if (end == at + 1) continue;
+        out.push_back({std::string(text.substr(at + 1, end - at - 1)),
+                       grammar::Span{file, line, static_cast<std::uint32_t>(at + 1), static_cast<std::uint32_t>(end + 1)}});
+    }
+    return out;
+}
+
+std::optional<ParameterReference> parameter_reference_at(const grammar::SourceMap& sources, grammar::FileId file,
+                                                         std::uint32_t line, std::uint32_t column) {
+    if (file >= sources.size()) return std::nullopt;
+    std::string_view text = sources.line_text(file, line);
+    if (text.find('&') == std::string_view::npos) return std::nullopt;
+    for (auto& reference : parameter_references(text, file, line))
+        if (column >= reference.span.column && column < reference.span.end_column) return reference;
+    return std::nullopt;
+}
+
+}  // namespace sphdeck::lsp

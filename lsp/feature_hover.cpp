@@ -1,0 +1,245 @@
+// textDocument/hover: what the keyword, field or id under the cursor is, from the schema tables
+// (the same data `sphdeck keyword` prints) and the deck's decoded values.
+#include <cmath>
+#include <fmt/format.h>
+#include <string>
+
+#include "grammar/keywords/schema.hpp"
+#include "grammar/value.hpp"
+#include "lsp/deck_ids.hpp"
+#include "lsp/deck_lookup.hpp"
+#include "lsp/features.hpp"
+#include "model/radioss_decoder.hpp"
+
+namespace sphdeck::lsp {
+namespace {
+
+using keywords::FieldSpec;
+using keywords::FieldType;
+namespace rad = grammar::radioss;
+
+constexpr std::size_t kMaxChoices = 24;  // enum values listed in a hover; the rest are counted
+
+std::string number(double v) { return fmt::format("{:g}", v); }
+
+nlohmann::json hover_json(std::string markdown, const grammar::SourceMap& sources, const grammar::Span& span) {
+    return {{"contents", {{"kind", "markdown"}, {"value", std::move(markdown)}}}, {"range", range_json(sources, span)}};
+}
+
+std::string default_text(const FieldSpec& f) {
+    if (f.default_value)
+        return f.zero_is_default ? fmt::format("{} (0 means the default)", number(*f.default_value))
+                                 : number(*f.default_value);
+    if (!f.default_text.empty()) return std::string(f.default_text);
+    return f.required ? "none (required)" : "none";
+}
+
+// The value the solver uses, and why: as written, the default for a blank or a zero that means it.
+std::string effective_value(const model::FieldValue& v) {
+    const FieldSpec& f = *v.spec;
+    if (f.type == FieldType::Text) {
+        if (v.explicit_value) return fmt::format("`{}`", v.text);
+        return f.default_text.empty() ? "blank" : fmt::format("`{}` (default)", f.default_text);
+    }
+    if (!v.explicit_value)
+        return v.valid ? fmt::format("{} (default: left blank)", number(v.number)) : "blank (no default)";
+    if (!v.valid) return fmt::format("`{}` cannot be read (see the diagnostic)", v.text);
+    if (f.type == FieldType::Label && grammar::classify_value(v.text).shape == grammar::ValueShape::Other)
+        return fmt::format("label `{}`", v.text);
+    std::string value = number(v.number);
+    const grammar::ValueToken token = grammar::classify_value(v.text);
+    if (token.shape == grammar::ValueShape::Parameter) value = fmt::format("{} (from `{}`)", value, v.text);
+    if (f.zero_is_default && f.default_value && v.number == *f.default_value &&
+        grammar::parse_real(v.text).status == grammar::NumberStatus::Ok && grammar::parse_real(v.text).value == 0.0)
+        return fmt::format("{} (default: 0 means the default)", value);
+    if (const auto* choice = f.choice(static_cast<long long>(v.number)); choice && v.number == std::trunc(v.number))
+        value += fmt::format(": {}", choice->meaning);
+    return value;
+}
+
+std::string allowed_text(const FieldSpec& f) {
+    std::string out;
+    if (!f.choices.empty()) {
+        out += "\n\nallowed values:";
+        std::size_t shown = 0;
+        for (const auto& c : f.choices) {
+            if (shown++ == kMaxChoices) {
+                out += fmt::format("\n- ... {} more", f.choices.size() - kMaxChoices);
+                break;
+            }
+            out += fmt::format("\n- `{}`: {}{}", c.value, c.meaning, c.since.empty() ? "" : fmt::format(" (since {})", c.since));
+        }
+    } else if (!f.text_choices.empty()) {
+        out += fmt::format("\n\nallowed values: {}", fmt::join(f.text_choices, ", "));
+    } else if (f.min || f.max) {
+        out += fmt::format("\n\nrange: [{}, {}]", f.min ? number(*f.min) : "-inf", f.max ? number(*f.max) : "inf");
+    }
+    return out;
+}
+
+// "names SECTION 3: `*SECTION_SPH 3`, line 40" or "defines PART 1 (named 12 times)".
+std::string id_text_of(const CheckedDeck& deck, const std::optional<IdRole>& role, const std::string& id) {
+    if (!role || id.empty()) return {};
+    if (role->defines) return fmt::format("\n\ndefines {} {}", role->kind, id);
+    const auto definitions = find_definitions(deck, role->kind, id);
+    if (definitions.empty()) return fmt::format("\n\nnames {} {}, which the deck does not define", role->kind, id);
+    return fmt::format("\n\nnames {} {}: `{}`", role->kind, id, describe(deck, definitions.front()));
+}
+
+nlohmann::json dyna_keyword_hover(const CheckedDeck& deck, const grammar::Block& block) {
+    const auto& sources = deck.result.deck.sources;
+    auto match = keywords::find_keyword(block.keyword);
+    if (!match || !match->unknown_options.empty()) {
+        std::string text = fmt::format("`{}`: unknown keyword, kept as is", block.keyword);
+        const auto similar = keywords::similar_keywords(block.keyword, 1);
+        if (!similar.empty()) text += fmt::format("; did you mean `{}`?", similar.front());
+        return hover_json(std::move(text), sources, block.span);
+    }
+    const auto& schema = *match->schema;
+    std::string text = fmt::format("**`{}`**", block.keyword);
+    if (!schema.doc.empty()) text += fmt::format(": {}", schema.doc);
+    if (schema.generated) text += "\n\n(layout generated from pydyna: cards are checked, not read into the model)";
+    for (const auto* option : match->options)
+        if (!option->doc.empty()) text += fmt::format("\n- `_{}`: {}", option->suffix, option->doc);
+    if (schema.unique) text += "\n\nat most once per deck";
+    if (block.format != grammar::CardFormat::Standard) text += fmt::format("\n\ncards in {} format", to_string(block.format));
+    return hover_json(std::move(text), sources, block.span);
+}
+
+nlohmann::json dyna_field_hover(const CheckedDeck& deck, const grammar::Block& block, const grammar::CardLine& line,
+                                std::uint32_t column) {
+    const auto& raw = deck.result.deck;
+    auto card = dyna_card_at(raw, block, line);
+    if (!card) return nullptr;
+    auto index = dyna_field_at(*card->card, block.format, card->values, column);
+    if (!index) return nullptr;
+    const model::FieldValue& v = card->values[*index];
+    const FieldSpec& f = *v.spec;
+    const auto slots = keywords::layout(*card->card, block.format);
+    std::string text = fmt::format("**{}** (`{}`, {})", f.name, card->match.schema->name,
+                                   card->card->name.empty() ? "card" : card->card->name);
+    if (!f.doc.empty()) text += fmt::format(": {}", f.doc);
+    text += fmt::format("\n\ncolumns {}-{}, type {}, default {}", slots[*index].start + 1,
+                        slots[*index].start + slots[*index].width, keywords::to_string(f.type), default_text(f));
+    if (!f.since.empty()) text += fmt::format(", since {}", f.since);
+    text += fmt::format("\n\nvalue: {}", effective_value(v));
+    text += allowed_text(f);
+    text += id_text_of(deck, dyna_id_role(card->match.schema->name, f), id_text(v));
+    grammar::Span span = v.span;
+    if (!v.explicit_value) {
+        span.column = slots[*index].start + 1;
+        span.end_column = slots[*index].start + 1 + slots[*index].width;
+    }
+    return hover_json(std::move(text), raw.sources, span);
+}
+
+std::string_view cell_name(rad::Cell cell) {
+    switch (cell) {
+        case rad::Cell::Int: return "integer";
+        case rad::Cell::Real: return "real";
+        case rad::Cell::Text:
+        case rad::Cell::Text20: return "text";
+        case rad::Cell::Line: return "line";
+        default: return "unused";
+    }
+}
+
+nlohmann::json radioss_hover(const CheckedDeck& deck, const grammar::Block& block, std::uint32_t line,
+                             std::uint32_t column) {
+    const auto& raw = deck.result.deck;
+    const rad::KeywordSpec* spec = radioss_keyword(block);
+    if (line == block.span.line) {
+        std::string text;
+        if (!spec) {
+            text = fmt::format("`{}`: keyword sphdeck does not read, kept as is", block.keyword);
+        } else {
+            text = fmt::format("**`{}`**", spec->name);
+            if (!spec->summary.empty()) text += fmt::format(": {}", spec->summary);
+            if (!spec->decoded) text += "\n\n(known, kept as is: its cards are not read)";
+        }
+        grammar::Span span = block.span;
+        if (auto id = id_at(deck, block.span.file, line, column)) {
+            text += id_text_of(deck, IdRole{id->kind, id->defines}, id->id);
+            span = id->span;
+        }
+        return hover_json(std::move(text), raw.sources, span);
+    }
+    const grammar::CardLine* card_line = card_line_at(raw, block, line);
+    if (!card_line || !spec) return nullptr;
+    auto card = radioss_card_at(raw, block, *card_line, model::radioss_version(raw));
+    if (!card) return nullptr;
+    if (card->title) {
+        grammar::Span span{card_line->file, card_line->line, 1, raw.length(*card_line) + 1};
+        return hover_json(fmt::format("title of `{}`", spec->name), raw.sources, span);
+    }
+    auto index = radioss_field_at(*card, raw.text(*card_line), column);
+    if (!index) return nullptr;
+    const model::RadiossValue& v = card->values[*index];
+    grammar::Span span = v.span;
+    std::string columns;
+    if (!card->engine && !grammar::is_free_format(raw.text(*card_line))) {
+        const auto cells = rad::layout(*card->card, card->version);
+        columns = fmt::format(", columns {}-{}", cells[*index].start + 1, cells[*index].start + cells[*index].width);
+        if (!v.explicit_value) span.column = cells[*index].start + 1, span.end_column = span.column + cells[*index].width;
+    }
+    std::string text = fmt::format("**{}** (`{}`, format {}): {}{}", v.spec->name, spec->name,
+                                   spec->format_for(card->version).since, cell_name(v.spec->cell), columns);
+    if (!v.explicit_value) {
+        text += "\n\nvalue: blank (the starter's default applies)";
+    } else if (!v.valid) {
+        text += fmt::format("\n\nvalue: `{}` cannot be read (see the diagnostic)", v.text);
+    } else if (v.spec->cell == rad::Cell::Int || v.spec->cell == rad::Cell::Real) {
+        text += fmt::format("\n\nvalue: {}", number(v.number));
+        if (v.number == 0.0) text += " (zero: the starter's default applies)";
+    } else {
+        text += fmt::format("\n\nvalue: `{}`", v.text);
+    }
+    text += id_text_of(deck, radioss_id_role(*v.spec), id_text(v));
+    return hover_json(std::move(text), raw.sources, span);
+}
+
+// `&name` under the cursor: the parameter's value and where it is defined.
+std::optional<nlohmann::json> parameter_hover(const CheckedDeck& deck, const grammar::Block& block,
+                                              grammar::FileId file, std::uint32_t line, std::uint32_t column);
+
+}  // namespace
+
+nlohmann::json hover(const CheckedDeck& deck, grammar::FileId file, TextPosition position) {
+    const auto& raw = deck.result.deck;
+    if (file >= raw.sources.size()) return nullptr;
+    const LineColumn at = line_column(raw.sources, file, position);
+    const grammar::Block* block = block_at(raw, file, at.line);
+    if (!block) return nullptr;
+    if (deck.result.model.radioss) return radioss_hover(deck, *block, at.line, at.column);
+    if (at.line == block->span.line) return dyna_keyword_hover(deck, *block);
+    if (auto parameter = parameter_hover(deck, *block, file, at.line, at.column)) return *parameter;
+    const grammar::CardLine* line = card_line_at(raw, *block, at.line);
+    if (!line) return nullptr;
+    return dyna_field_hover(deck, *block, *line, at.column);
+}
+
+namespace {
+std::optional<nlohmann::json> parameter_hover(const CheckedDeck& deck, const grammar::Block& block,
+                                              grammar::FileId file, std::uint32_t line, std::uint32_t column) {
+    auto reference = parameter_reference_at(deck.result.deck.sources, file, line, column);
+    if (!reference) return std::nullopt;
+    const auto& raw = deck.result.deck;
+    auto found = raw.parameters.find(reference->name, file, block.parameter_epoch);
+    if (!found.parameter) {
+        return hover_json(fmt::format("parameter `&{}` is not defined before this line", reference->name), raw.sources,
+                          reference->span);
+    }
+    const grammar::Parameter& p = *found.parameter;
+    std::string value = p.type == grammar::ParameterType::Character ? fmt::format("`{}`", p.text) : number(p.number);
+    std::string text = fmt::format("parameter **{}** = {} ({}), `*PARAMETER` line {}", p.name, value,
+                                   p.type == grammar::ParameterType::Real      ? "real"
+                                   : p.type == grammar::ParameterType::Integer ? "integer"
+                                                                               : "character",
+                                   p.span.line);
+    if (p.span.file != file && p.span.file < raw.sources.size())
+        text += fmt::format(" of {}", raw.sources.file(p.span.file).display_name);
+    return hover_json(std::move(text), raw.sources, reference->span);
+}
+}  // namespace
+
+}  // namespace sphdeck::lsp

@@ -1,0 +1,97 @@
+// textDocument/documentSymbol: the outline of one file: its keyword blocks, *PART blocks with a
+// child per part (id and heading), Radioss headers with their titles.
+#include <fmt/format.h>
+
+#include "lsp/deck_lookup.hpp"
+#include "lsp/features.hpp"
+#include "model/radioss_decoder.hpp"
+
+namespace sphdeck::lsp {
+namespace {
+
+// LSP SymbolKind values.
+constexpr int kStruct = 23;  // a keyword block
+constexpr int kObject = 19;  // a part
+
+nlohmann::json line_range(const grammar::SourceMap& sources, grammar::FileId file, std::uint32_t first,
+                          std::uint32_t last) {
+    const auto length = static_cast<std::uint32_t>(sources.line_text(file, last).size());
+    return {{"start", position_json(sources, file, first, 1)}, {"end", position_json(sources, file, last, length + 1)}};
+}
+
+bool within(const grammar::Span& span, grammar::FileId file, std::uint32_t first, std::uint32_t last) {
+    return span.file == file && span.line >= first && span.line <= last;
+}
+
+// The block's own id and title, from the model: "3", "3 water".
+std::string block_detail(const CheckedDeck& deck, const grammar::Block& block, std::uint32_t last) {
+    const auto& m = deck.result.model;
+    const grammar::FileId file = block.span.file;
+    for (const auto& s : m.sections)
+        if (within(s.span, file, block.span.line, last)) return fmt::format("id {}", s.id);
+    for (const auto& x : m.materials)
+        if (within(x.span, file, block.span.line, last)) return fmt::format("id {}", x.id);
+    for (const auto& e : m.equations_of_state)
+        if (within(e.span, file, block.span.line, last)) return fmt::format("id {}", e.id);
+    return {};
+}
+
+nlohmann::json dyna_symbol(const CheckedDeck& deck, const grammar::Block& block) {
+    const auto& raw = deck.result.deck;
+    const std::uint32_t last = block_last_line(raw, block);
+    nlohmann::json symbol = {{"name", block.keyword},
+                             {"kind", kStruct},
+                             {"range", line_range(raw.sources, block.span.file, block.span.line, last)},
+                             {"selectionRange", range_json(raw.sources, block.span)}};
+    std::string detail = block_detail(deck, block, last);
+    if (block.keyword.rfind("*PART", 0) == 0) {
+        nlohmann::json children = nlohmann::json::array();
+        for (const auto& part : deck.result.model.parts) {
+            if (!within(part.span, block.span.file, block.span.line, last)) continue;
+            // The heading line comes just before the PID card (*PART: heading + data per part).
+            const std::uint32_t first = part.span.line > block.span.line + 1 ? part.span.line - 1 : part.span.line;
+            children.push_back({{"name", fmt::format("part {}", part.id)},
+                                {"detail", part.heading},
+                                {"kind", kObject},
+                                {"range", line_range(raw.sources, block.span.file, first, part.span.line)},
+                                {"selectionRange", range_json(raw.sources, part.span)}});
+        }
+        if (children.size() == 1) detail = children[0]["name"].get<std::string>() + " " +
+                                           children[0]["detail"].get<std::string>();
+        if (!children.empty()) symbol["children"] = std::move(children);
+    }
+    if (!detail.empty()) symbol["detail"] = detail;
+    return symbol;
+}
+
+nlohmann::json radioss_symbol(const CheckedDeck& deck, const grammar::Block& block, int version) {
+    const auto& raw = deck.result.deck;
+    const std::uint32_t last = block_last_line(raw, block);
+    nlohmann::json symbol = {{"name", block.arguments.empty() ? block.keyword : block.arguments},
+                             {"kind", block.keyword.rfind("/PART", 0) == 0 ? kObject : kStruct},
+                             {"range", line_range(raw.sources, block.span.file, block.span.line, last)},
+                             {"selectionRange", range_json(raw.sources, block.span)}};
+    const auto* spec = radioss_keyword(block);
+    if (spec && spec->title && block.line_count > 0 && !grammar::radioss::is_v4(version)) {
+        std::string title(grammar::trim_blanks(raw.text(*raw.begin_lines(block))));
+        if (!title.empty()) symbol["detail"] = title;
+    }
+    return symbol;
+}
+
+}  // namespace
+
+nlohmann::json document_symbols(const CheckedDeck& deck, grammar::FileId file) {
+    nlohmann::json out = nlohmann::json::array();
+    const auto& raw = deck.result.deck;
+    if (file >= raw.sources.size()) return out;
+    const bool radioss = deck.result.model.radioss.has_value();
+    const int version = radioss ? model::radioss_version(raw) : 0;
+    for (const grammar::Block& block : raw.blocks) {
+        if (block.span.file != file || block.keyword.empty()) continue;
+        out.push_back(radioss ? radioss_symbol(deck, block, version) : dyna_symbol(deck, block));
+    }
+    return out;
+}
+
+}  // namespace sphdeck::lsp

@@ -1,0 +1,431 @@
+// The editor server's request features (lsp/features.hpp) on small checked decks: hover,
+// definition, references, completion, outline, folding and code actions, as LSP JSON.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "engine/check.hpp"
+#include "lsp/features.hpp"
+#include "lsp/realign.hpp"
+#include "lsp/uri.hpp"
+
+using namespace sphdeck;
+
+namespace {
+
+// Line 0-based of the first line containing `needle` (after line `from`), and its column.
+struct At {
+    std::uint32_t line = 0, character = 0;
+};
+At find(const std::string& text, std::string_view needle, std::uint32_t from = 0) {
+    std::uint32_t line = 0;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        const std::string_view l(text.data() + start, end - start);
+        if (line >= from)
+            if (auto at = l.find(needle); at != std::string_view::npos)
+                return {line, static_cast<std::uint32_t>(at)};
+        start = end + 1;
+        ++line;
+    }
+    FAIL("not found: " << needle);
+    return {};
+}
+
+lsp::CheckedDeck check(const std::string& text, const std::string& name = "main.k",
+                       std::optional<grammar::DeckFormat> format = grammar::DeckFormat::LsDyna) {
+    lsp::CheckedDeck deck;
+    deck.main = name;
+    deck.result = engine::check_buffer(text, name, {}, format);
+    return deck;
+}
+
+nlohmann::json position(At at) { return {{"line", at.line}, {"character", at.character}}; }
+
+nlohmann::json ask(const lsp::CheckedDeck& deck, std::string_view method, nlohmann::json params) {
+    auto answer = lsp::answer_feature(method, deck, 0, params);
+    REQUIRE(answer.handled);
+    return answer.result;
+}
+
+std::string hover_text(const lsp::CheckedDeck& deck, At at) {
+    auto result = ask(deck, "textDocument/hover", {{"position", position(at)}});
+    if (result.is_null()) return {};
+    return result["contents"]["value"].get<std::string>();
+}
+
+std::vector<std::string> labels(const nlohmann::json& list) {
+    std::vector<std::string> out;
+    for (const auto& item : list["items"]) out.push_back(item["label"].get<std::string>());
+    return out;
+}
+
+bool has(const std::vector<std::string>& v, const std::string& s) { return std::find(v.begin(), v.end(), s) != v.end(); }
+
+// Applies TextEdits (ASCII text: characters are bytes), last first.
+std::string apply(std::string text, nlohmann::json edits) {
+    std::vector<nlohmann::json> sorted(edits.begin(), edits.end());
+    std::sort(sorted.begin(), sorted.end(), [](const nlohmann::json& a, const nlohmann::json& b) {
+        auto key = [](const nlohmann::json& e) {
+            return std::make_pair(e["range"]["start"]["line"].get<int>(), e["range"]["start"]["character"].get<int>());
+        };
+        return key(a) > key(b);
+    });
+    auto offset = [&](const nlohmann::json& p) {
+        std::size_t at = 0;
+        for (int l = 0; l < p["line"].get<int>(); ++l) at = text.find('\n', at) + 1;
+        return at + p["character"].get<std::size_t>();
+    };
+    for (const auto& e : sorted) {
+        const std::size_t begin = offset(e["range"]["start"]), end = offset(e["range"]["end"]);
+        text.replace(begin, end - begin, e["newText"].get<std::string>());
+    }
+    return text;
+}
+
+// The diagnostics of a check as publishDiagnostics gives them (code, source, range).
+std::vector<nlohmann::json> published(const lsp::CheckedDeck& deck) {
+    std::vector<nlohmann::json> out;
+    for (const auto& d : deck.result.diagnostics)
+        out.push_back({{"range", lsp::range_json(deck.result.deck.sources, d.span)},
+                       {"code", d.code},
+                       {"source", "sphdeck"},
+                       {"message", d.message}});
+    return out;
+}
+
+std::size_t count_code(const lsp::CheckedDeck& deck, std::string_view code) {
+    return static_cast<std::size_t>(std::count_if(deck.result.diagnostics.begin(), deck.result.diagnostics.end(),
+                                                  [&](const diag::Diagnostic& d) { return d.code == code; }));
+}
+
+const std::string kDeck = R"(*KEYWORD
+*PARAMETER
+R rho         1000.0
+*CONTROL_SPH
+$#    ncbs     boxid        dt      idim    memory      form     start      maxv
+         1         0   1.0e+20         3         0         1
+*SECTION_SPH
+$#   secid      cslh      hmin      hmax    sphini     death     start
+         3       1.2       0.2       2.0       0.0   1.0e+20       0.0
+*PART
+$#                                                               title
+water
+$#     pid     secid       mid     eosid
+         1         3         5         7
+*MAT_NULL
+$#     mid        ro
+         5      &rho
+*EOS_MURNAGHAN
+$#   eosid     gamma        k0
+         7       7.0  340000.0
+*NODE
+       1           0.010           0.030             0.0
+       2           0.030           0.030             0.0
+*ELEMENT_SPH
+       1       1   0.001
+       2       1   0.001
+*END
+)";
+
+}  // namespace
+
+TEST_CASE("lsp hover: a field's name, columns, default, allowed values and effective value") {
+    const auto deck = check(kDeck);
+    const At card = find(kDeck, "   1.0e+20         3");
+    // FORM 1 written in columns 51-60.
+    std::string text = hover_text(deck, {card.line, 59});
+    CHECK(text.find("**FORM**") != std::string::npos);
+    CHECK(text.find("columns 51-60") != std::string::npos);
+    CHECK(text.find("default 0") != std::string::npos);
+    CHECK(text.find("allowed values") != std::string::npos);
+    CHECK(text.find("value: 1") != std::string::npos);
+    // MEMORY written as 0, which means the default 150.
+    text = hover_text(deck, {card.line, 49});
+    CHECK(text.find("**MEMORY**") != std::string::npos);
+    CHECK(text.find("value: 150 (default: 0 means the default)") != std::string::npos);
+    // START left blank (the line stops before column 61).
+    text = hover_text(deck, {card.line, 65});
+    CHECK(text.find("**START**") != std::string::npos);
+    CHECK(text.find("value: 0 (default: left blank)") != std::string::npos);
+}
+
+TEST_CASE("lsp hover: keywords, ids and parameters") {
+    const auto deck = check(kDeck);
+    const At section = find(kDeck, "*SECTION_SPH");
+    std::string text = hover_text(deck, section);
+    CHECK(text.find("`*SECTION_SPH`") != std::string::npos);
+    const At part = find(kDeck, "         1         3         5         7");
+    text = hover_text(deck, {part.line, 19});  // SECID 3
+    CHECK(text.find("**SECID**") != std::string::npos);
+    CHECK(text.find("names SECTION 3: `*SECTION_SPH 3, line 9`") != std::string::npos);
+    text = hover_text(deck, {part.line, 9});  // PID 1
+    CHECK(text.find("defines PART 1") != std::string::npos);
+    const At rho = find(kDeck, "&rho");
+    text = hover_text(deck, {rho.line, rho.character + 2});
+    CHECK(text.find("parameter **rho** = 1000") != std::string::npos);
+    // A comment line says nothing.
+    CHECK(ask(deck, "textDocument/hover", {{"position", position(find(kDeck, "$#   secid"))}}).is_null());
+}
+
+TEST_CASE("lsp definition and references: part -> section, material, EOS; parameters") {
+    const auto deck = check(kDeck);
+    const At part = find(kDeck, "         1         3         5         7");
+    auto location = ask(deck, "textDocument/definition", {{"position", position({part.line, 29})}});  // MID 5
+    REQUIRE(location.is_object());
+    CHECK(location["range"]["start"]["line"] == find(kDeck, "         5      &rho").line);
+    CHECK(location["uri"].get<std::string>().find("main.k") != std::string::npos);
+    location = ask(deck, "textDocument/definition", {{"position", position({part.line, 39})}});  // EOSID 7
+    CHECK(location["range"]["start"]["line"] == find(kDeck, "         7       7.0").line);
+    const At rho = find(kDeck, "&rho");
+    location = ask(deck, "textDocument/definition", {{"position", position({rho.line, rho.character + 1})}});
+    CHECK(location["range"]["start"]["line"] == find(kDeck, "R rho").line);
+
+    // Part 1: named by the PID of both particles.
+    auto refs = ask(deck, "textDocument/references",
+                    {{"position", position({part.line, 9})}, {"context", {{"includeDeclaration", false}}}});
+    CHECK(refs.size() == 2);
+    refs = ask(deck, "textDocument/references",
+               {{"position", position({part.line, 9})}, {"context", {{"includeDeclaration", true}}}});
+    CHECK(refs.size() == 3);
+    // Section 3 from its definition: the part's SECID.
+    const At secid = find(kDeck, "         3       1.2");
+    refs = ask(deck, "textDocument/references",
+               {{"position", position({secid.line, 9})}, {"context", {{"includeDeclaration", false}}}});
+    REQUIRE(refs.size() == 1);
+    CHECK(refs[0]["range"]["start"]["line"] == part.line);
+    CHECK(refs[0]["range"]["start"]["character"] == 19);
+}
+
+TEST_CASE("lsp completion: keyword names, enum values, ids that exist") {
+    const std::string typing = kDeck + "*CONTROL_S\n";
+    const auto deck = check(typing);
+    const At keyword = find(typing, "*CONTROL_S", find(typing, "*END").line);
+    auto list = ask(deck, "textDocument/completion", {{"position", position({keyword.line, 10})}});
+    auto names = labels(list);
+    CHECK(has(names, "*CONTROL_SPH"));
+    CHECK_FALSE(has(names, "*SECTION_SPH"));
+    // Every name starting "*C" is more than the list holds.
+    const std::string many = kDeck + "*C\n";
+    const auto many_deck = check(many);
+    list = ask(many_deck, "textDocument/completion", {{"position", position({find(many, "*END").line + 1, 2})}});
+    CHECK(list["isIncomplete"] == true);
+    CHECK(list["items"].size() == 200);
+
+    const At card = find(kDeck, "   1.0e+20         3");
+    list = ask(deck, "textDocument/completion", {{"position", position({card.line, 59})}});  // FORM
+    names = labels(list);
+    CHECK(has(names, "0"));
+    CHECK(has(names, "1"));
+    const At part = find(kDeck, "         1         3         5         7");
+    list = ask(deck, "textDocument/completion", {{"position", position({part.line, 19})}});  // SECID
+    names = labels(list);
+    REQUIRE(names.size() == 1);
+    CHECK(names[0] == "3");
+}
+
+TEST_CASE("lsp outline and folding: one symbol and one range per keyword block, parts as children") {
+    const auto deck = check(kDeck);
+    auto symbols = ask(deck, "textDocument/documentSymbol", nlohmann::json::object());
+    REQUIRE(symbols.size() == deck.result.deck.blocks.size());
+    const auto part = std::find_if(symbols.begin(), symbols.end(), [](const auto& s) { return s["name"] == "*PART"; });
+    REQUIRE(part != symbols.end());
+    REQUIRE((*part)["children"].size() == 1);
+    CHECK((*part)["children"][0]["name"] == "part 1");
+    CHECK((*part)["children"][0]["detail"] == "water");
+    auto folds = ask(deck, "textDocument/foldingRange", nlohmann::json::object());
+    const At control = find(kDeck, "*CONTROL_SPH");
+    const bool found = std::any_of(folds.begin(), folds.end(), [&](const auto& f) {
+        return f["startLine"] == control.line && f["endLine"] == control.line + 2;
+    });
+    CHECK(found);
+}
+
+TEST_CASE("lsp code actions: suppression comments and the realignment of a value over its columns") {
+    // ENDTIM "1.0E-3" starts in column 7 of its 10 columns: the field holds "1.0E" (DK003).
+    const std::string text = "*KEYWORD\n*CONTROL_TERMINATION\n      1.0E-3\n*END\n";
+    const auto deck = check(text);
+    REQUIRE(count_code(deck, "DK003") == 1);
+    nlohmann::json diagnostic;
+    for (const auto& d : published(deck))
+        if (d["code"] == "DK003") diagnostic = d;
+    auto actions = ask(deck, "textDocument/codeAction",
+                       {{"textDocument", {{"uri", "file:///tmp/main.k"}}},
+                        {"range", diagnostic["range"]},
+                        {"context", {{"diagnostics", {diagnostic}}}}});
+    REQUIRE(actions.size() == 3);
+    for (const auto& a : actions) {
+        CHECK(a["kind"] == "quickfix");
+        CHECK(a["diagnostics"][0]["code"] == "DK003");
+        REQUIRE(a["edit"]["changes"].contains("file:///tmp/main.k"));
+    }
+    auto edited = [&](std::size_t i) { return apply(text, actions[i]["edit"]["changes"]["file:///tmp/main.k"]); };
+
+    CHECK(actions[0]["title"] == "Realign the values of this card into their columns");
+    CHECK(edited(0) == "*KEYWORD\n*CONTROL_TERMINATION\n    1.0E-3\n*END\n");
+    auto fixed = check(edited(0));
+    CHECK(count_code(fixed, "DK003") == 0);
+    CHECK(fixed.result.model.controls.endtim.value == doctest::Approx(1.0e-3));
+
+    CHECK(actions[1]["title"] == "Suppress DK003 for this card");
+    CHECK(edited(1) == "*KEYWORD\n*CONTROL_TERMINATION\n$ sphdeck: disable=DK003\n      1.0E-3\n*END\n");
+    auto silenced = check(edited(1));
+    CHECK(count_code(silenced, "DK003") == 0);
+    CHECK(count_code(silenced, "DK026") == 0);
+
+    CHECK(actions[2]["title"] == "Suppress DK003 in this file");
+    CHECK(edited(2) == "$ sphdeck: disable-file=DK003\n" + text);
+    silenced = check(edited(2));
+    CHECK(count_code(silenced, "DK003") == 0);
+    CHECK(count_code(silenced, "DK026") == 0);
+
+    // A second code joins the file's directive instead of adding a line.
+    const std::string with_directive = "$ sphdeck: disable-file=DK003 -- legacy\n" + text.substr(0);
+    const auto deck2 = check(with_directive + "");
+    nlohmann::json other = {{"range", {{"start", {{"line", 3}, {"character", 0}}}, {"end", {{"line", 3}, {"character", 1}}}}},
+                            {"code", "DK004"},
+                            {"source", "sphdeck"}};
+    actions = ask(deck2, "textDocument/codeAction",
+                  {{"textDocument", {{"uri", "file:///tmp/main.k"}}}, {"context", {{"diagnostics", {other}}}}});
+    REQUIRE(actions.size() == 2);
+    CHECK(apply(with_directive, actions[1]["edit"]["changes"]["file:///tmp/main.k"]).rfind(
+              "$ sphdeck: disable-file=DK003,DK004 -- legacy\n", 0) == 0);
+}
+
+TEST_CASE("lsp realign: only when the result is certain") {
+    keywords::CardSpec card{.fields = {{.name = "A", .column = 1, .width = 10, .type = keywords::FieldType::Real},
+                                       {.name = "B", .column = 11, .width = 10, .type = keywords::FieldType::Real}}};
+    using grammar::CardFormat;
+    CHECK(lsp::realign_card("      1.0E-3      2.5", card, CardFormat::Standard) == "    1.0E-3       2.5");
+    CHECK_FALSE(lsp::realign_card("       1.0       2.0", card, CardFormat::Standard));  // nothing strays
+    CHECK_FALSE(lsp::realign_card("   1.23456789012", card, CardFormat::Standard));      // wider than its field
+    CHECK_FALSE(lsp::realign_card("       1.0E-3", card, CardFormat::Standard));  // 3 and 3 columns: a tie
+    CHECK_FALSE(lsp::realign_card("      1.0,2.0", card, CardFormat::Standard));  // free format
+    CHECK_FALSE(lsp::realign_card("   1.0 2.0  3.0", card, CardFormat::Standard));  // two values for one field
+}
+
+TEST_CASE("lsp features on an OpenRadioss deck: header hover, field hover, /PART -> /PROP, /MAT") {
+    const std::string rad = R"(#RADIOSS STARTER
+/BEGIN
+LSP
+      2026
+                  kg                  mm                  ms
+                  kg                  mm                  ms
+/PART/2
+water
+#  prop_ID    mat_ID subset_ID
+         2         3         0
+/PROP/SPH/2
+water particles
+#                 mp                  qa                  qb            alpha_cs   skew_ID      h_1D
+              8.0E-6                 2.0                 1.0                 0.0         0         0
+#    Order                   h             Xi_Stab                          hmin                hmax
+         0                 2.4                 0.0
+/MAT/LAW6/3
+water
+#              RHO_I
+              1.0E-6
+#                 Nu                Pmin
+                 0.0                 0.0
+/NODE
+#  node_ID                   X                   Y                   Z
+      1001                 1.0                 1.0                 1.0
+/SPHCEL/2
+#  node_ID      Type                MASS
+      1001         0
+/END
+)";
+    const auto deck = check(rad, "lsp_0000.rad", std::nullopt);
+    REQUIRE(deck.result.model.radioss);
+    const At prop = find(rad, "/PROP/SPH/2");
+    std::string text = hover_text(deck, prop);
+    CHECK(text.find("`/PROP/SPH`") != std::string::npos);
+    const At ids = find(rad, "         2         3         0");
+    text = hover_text(deck, {ids.line, 9});
+    CHECK(text.find("**prop_ID**") != std::string::npos);
+    CHECK(text.find("names PROP 2") != std::string::npos);
+    const At h = find(rad, "         0                 2.4");
+    text = hover_text(deck, {h.line, 15});  // in h's cell, on a blank before the value
+    CHECK(text.find("**h** (`/PROP/SPH`, format 2026): real, columns 11-30") != std::string::npos);
+    CHECK(text.find("value: 2.4") != std::string::npos);
+    auto location = ask(deck, "textDocument/definition", {{"position", position({ids.line, 9})}});
+    CHECK(location["range"]["start"]["line"] == prop.line);
+    location = ask(deck, "textDocument/definition", {{"position", position({ids.line, 19})}});
+    CHECK(location["range"]["start"]["line"] == find(rad, "/MAT/LAW6/3").line);
+    // Part 2 is named by /SPHCEL/2's header.
+    const At part = find(rad, "/PART/2");
+    auto refs = ask(deck, "textDocument/references",
+                    {{"position", position({part.line, 6})}, {"context", {{"includeDeclaration", false}}}});
+    REQUIRE(refs.size() == 1);
+    CHECK(refs[0]["range"]["start"]["line"] == find(rad, "/SPHCEL/2").line);
+    auto symbols = ask(deck, "textDocument/documentSymbol", nlohmann::json::object());
+    CHECK(symbols.size() == deck.result.deck.blocks.size());
+    // A suppression in a Radioss deck uses '#', after the #RADIOSS line.
+    nlohmann::json d = {{"range", {{"start", {{"line", ids.line}, {"character", 0}}}, {"end", {{"line", ids.line}, {"character", 1}}}}},
+                        {"code", "RAD001"},
+                        {"source", "sphdeck"}};
+    auto actions = ask(deck, "textDocument/codeAction",
+                       {{"textDocument", {{"uri", "file:///tmp/lsp_0000.rad"}}}, {"context", {{"diagnostics", {d}}}}});
+    REQUIRE(actions.size() == 2);
+    CHECK(actions[0]["edit"]["changes"]["file:///tmp/lsp_0000.rad"][0]["newText"] == "# sphdeck: disable=RAD001\n");
+    CHECK(actions[1]["edit"]["changes"]["file:///tmp/lsp_0000.rad"][0]["range"]["start"]["line"] == 1);
+}
+
+TEST_CASE("lsp features: the server's table answers every feature and announces it") {
+    const auto capabilities = lsp::feature_capabilities();
+    for (const char* key : {"hoverProvider", "definitionProvider", "referencesProvider", "completionProvider",
+                            "documentSymbolProvider", "foldingRangeProvider", "codeActionProvider"})
+        CHECK(capabilities.contains(key));
+    const auto deck = check(kDeck);
+    CHECK_FALSE(lsp::answer_feature("textDocument/rename", deck, 0, nlohmann::json::object()).handled);
+    // A request without a position is answered, with nothing.
+    CHECK(ask(deck, "textDocument/hover", nlohmann::json::object()).is_null());
+    CHECK(ask(deck, "textDocument/definition", {{"position", "x"}}).is_null());
+}
+
+TEST_CASE("lsp definition: an *INCLUDE file name opens the file; ids defined in an include") {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "sphdeck_lsp_features_include";
+    fs::create_directories(dir);
+    const std::string main_text = "*KEYWORD\n*INCLUDE\nsection.k\n*PART\nwater\n         1         3         5\n*END\n";
+    {
+        std::ofstream(dir / "main.k") << main_text;
+        std::ofstream(dir / "section.k") << "*KEYWORD\n*SECTION_SPH\n         3       1.2\n*END\n";
+    }
+    lsp::CheckedDeck deck;
+    deck.main = dir / "main.k";
+    deck.result = engine::check_file((dir / "main.k").string());
+    REQUIRE(deck.result.deck.sources.size() == 2);
+    auto location = ask(deck, "textDocument/definition", {{"position", position(find(main_text, "section.k"))}});
+    CHECK(location["uri"] == lsp::uri_from_path(dir / "section.k"));
+    CHECK(location["range"]["start"]["line"] == 0);
+    const At part = find(main_text, "         1         3");
+    location = ask(deck, "textDocument/definition", {{"position", position({part.line, 19})}});
+    CHECK(location["uri"] == lsp::uri_from_path(dir / "section.k"));
+    CHECK(location["range"]["start"]["line"] == 2);
+    // A request about the include file itself.
+    auto hover = lsp::answer_feature("textDocument/hover", deck, 1, {{"position", {{"line", 2}, {"character", 9}}}});
+    REQUIRE(hover.result.is_object());
+    CHECK(hover.result["contents"]["value"].get<std::string>().find("**SECID**") != std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("lsp definition: ids named by the generated layouts (a *LOAD_BODY_Z curve)") {
+    const std::string text = "*KEYWORD\n*DEFINE_CURVE\n         9\n       0.0       1.0\n*LOAD_BODY_Z\n         9\n*END\n";
+    const auto deck = check(text);
+    const At load = find(text, "         9", find(text, "*LOAD_BODY_Z").line);
+    auto location = ask(deck, "textDocument/definition", {{"position", position({load.line, 9})}});
+    REQUIRE(location.is_object());
+    CHECK(location["range"]["start"]["line"] == 2);
+    auto refs = ask(deck, "textDocument/references",
+                    {{"position", position({2, 9})}, {"context", {{"includeDeclaration", false}}}});
+    REQUIRE(refs.size() == 1);
+    CHECK(refs[0]["range"]["start"]["line"] == load.line);
+    CHECK(hover_text(deck, {load.line, 9}).find("names DEFINE_CURVE 9") != std::string::npos);
+}
