@@ -111,7 +111,7 @@ class Server:
         while True:
             left = deadline - time.perf_counter()
             if left <= 0:
-                raise BenchError(f"no {what} within {timeout_s:.0f} s")
+                raise BenchError(f"no {what} within {timeout_s:.0f} s; server's stderr: {self.tail_of_stderr()}")
             try:
                 item = self.messages.get(timeout=left)
             except queue.Empty:
