@@ -53,6 +53,14 @@ void keyword_arguments(std::set<std::string>& out) {
         out.emplace(token);
 }
 
+void lsp_messages(std::set<std::string>& out) {
+    for (const char* token : {"Content-Length: ", "Content-Type: application/vscode-jsonrpc; charset=utf-8", "\r\n",
+                              "\r\n\r\n", "{\"jsonrpc\":\"2.0\",", "\"id\":", "\"method\":", "\"params\":",
+                              "\"initialize\"", "\"textDocument/didChange\"", "\"contentChanges\"", "\"range\"",
+                              "[", "]", "{", "}", "\\u00e9", "99999999999999999999"})
+        out.emplace(token);
+}
+
 // A dictionary entry: the token in double quotes, with quote, backslash and bytes outside
 // printable ASCII written as \xNN.
 void print(std::string_view token) {
@@ -73,8 +81,9 @@ int main(int argc, char** argv) {
     else if (target == "radioss_check") radioss(tokens);
     else if (target == "expression") expression(tokens);
     else if (target == "keyword_arguments") keyword_arguments(tokens);
+    else if (target == "lsp_messages") lsp_messages(tokens);
     else {
-        std::fprintf(stderr, "usage: fuzz_dictionary dyna_check|radioss_check|expression|keyword_arguments\n");
+        std::fprintf(stderr, "usage: fuzz_dictionary dyna_check|radioss_check|expression|keyword_arguments|lsp_messages\n");
         return 2;
     }
     tokens.erase("");

@@ -33,7 +33,7 @@ while getopts "t:n:B:o:ush" opt; do
 done
 shift $((OPTIND - 1))
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(dyna_check radioss_check keyword_arguments expression)
+[ ${#targets[@]} -eq 0 ] && targets=(dyna_check radioss_check keyword_arguments expression lsp_messages)
 out=${out:-$build/fuzz-out}
 
 if [ "$skip_build" -eq 0 ]; then

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include "diag/render_github.hpp"
@@ -12,6 +13,7 @@
 #include "grammar/dyna/expression.hpp"
 #include "grammar/dyna/keyword_arguments.hpp"
 #include "lint/rule_catalog.hpp"
+#include "lsp/json_rpc.hpp"
 
 namespace sphdeck::fuzz {
 namespace {
@@ -79,11 +81,24 @@ void evaluate_expression(const std::uint8_t* data, std::size_t size) {
     if (!r.ok() && (r.offset > text.size() || r.length == 0)) __builtin_trap();  // the documented contract
 }
 
+void read_lsp_messages(const std::uint8_t* data, std::size_t size) {
+    std::istringstream in(text_of(data, size));
+    // A small bound, so the fuzzer reaches the skipping of oversized bodies with small inputs.
+    lsp::MessageReader reader(in, 1024);
+    // Each read consumes at least one byte or ends: the loop cannot outlast the input.
+    for (std::size_t reads = 0; reads <= size + 1; ++reads) {
+        const lsp::ReadResult r = reader.next();
+        if (r.status == lsp::ReadStatus::end) return;
+    }
+    __builtin_trap();  // a read that consumed nothing: the reader would spin on a live stream
+}
+
 Target find_target(std::string_view name) {
     if (name == "dyna_check") return check_dyna_deck;
     if (name == "radioss_check") return check_radioss_deck;
     if (name == "keyword_arguments") return parse_keyword_arguments;
     if (name == "expression") return evaluate_expression;
+    if (name == "lsp_messages") return read_lsp_messages;
     return nullptr;
 }
 

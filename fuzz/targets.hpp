@@ -19,6 +19,9 @@ void parse_keyword_arguments(const std::uint8_t* data, std::size_t size);
 // A *PARAMETER_EXPRESSION expression, with a few parameters defined.
 void evaluate_expression(const std::uint8_t* data, std::size_t size);
 
+// LSP messages (headers and JSON bodies) through the editor server's reader, to the end of the input.
+void read_lsp_messages(const std::uint8_t* data, std::size_t size);
+
 // A target by its name (the executable's name without "fuzz_"); nullptr when unknown.
 using Target = void (*)(const std::uint8_t*, std::size_t);
 Target find_target(std::string_view name);

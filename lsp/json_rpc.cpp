@@ -151,7 +151,11 @@ ReadResult MessageReader::next() {
                 break;
             }
             any = true;
-            const std::string_view text = *line;
+            std::string_view text = *line;
+            // Out of step (a body shorter than its length said, glued to the next header): the
+            // header is found inside the line, and the block starts there.
+            for (std::string_view name : {"Content-Length:", "content-length:"})
+                if (const auto at = text.find(name); at != std::string_view::npos && at > 0) text = text.substr(at);
             const auto colon = text.find(':');
             const std::string_view name = colon == std::string_view::npos ? text : text.substr(0, colon);
             if (colon != std::string_view::npos && equals_ignoring_case(trim(name), "Content-Length")) {
@@ -182,7 +186,7 @@ ReadResult MessageReader::next() {
             resync_inside(body);
             return {ReadStatus::parse_error, nullptr, "the body is not JSON"};
         }
-        return {ReadStatus::message, std::move(*parsed), {}};
+        return {ReadStatus::message, std::move(*parsed), {}, body.size()};
     }
 }
 

@@ -45,6 +45,7 @@ struct ReadResult {
     ReadStatus status = ReadStatus::end;
     nlohmann::json message;
     std::string error;  // what was wrong, for the log
+    std::size_t bytes = 0;  // the body's length (what holding the message costs)
 };
 
 class MessageReader {

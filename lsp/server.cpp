@@ -65,6 +65,7 @@ int Server::run() {
         // Whatever is already waiting, read before anything is handled (cancellation, one re-check).
         std::vector<ReadResult> batch;
         bool ended = false;
+        std::size_t held = 0;  // bodies read ahead: at most about one message's bound
         do {
             ReadResult read = reader_.next();
             if (read.status == ReadStatus::end) {
@@ -72,11 +73,13 @@ int Server::run() {
                 ended = true;
                 break;
             }
+            held += read.bytes;
             batch.push_back(std::move(read));
-        } while (batch.size() < options_.max_batch && reader_.more_available());
+        } while (batch.size() < options_.max_batch && held < options_.max_body && reader_.more_available());
         for (const ReadResult& read : batch)
             if (is_cancel(read)) {
-                const nlohmann::json* id = member(read.message.value("params", nlohmann::json()), "id");
+                const nlohmann::json params = read.message.value("params", nlohmann::json());
+                const nlohmann::json* id = member(params, "id");
                 if (id && valid_id(*id)) cancelled_.insert(id->dump());
             }
         for (const ReadResult& read : batch) {
@@ -148,6 +151,7 @@ void Server::handle_request(const nlohmann::json& id, const std::string& method,
         } else if (shut_down_) {
             throw RpcError{error_code::invalid_request, "the server is shut down"};
         } else if (method == "shutdown") {
+            workspace_.flush();  // what the edits so far found is published before the end
             shut_down_ = true;
         } else if (method.rfind("textDocument/", 0) == 0) {
             result = document_request(method, params);

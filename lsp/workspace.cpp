@@ -125,7 +125,8 @@ void Workspace::flush() {
     std::vector<std::pair<std::uint64_t, fs::path>> candidates;
     for (const auto& [key, document] : open_) candidates.emplace_back(document.order, key);
     std::sort(candidates.begin(), candidates.end());
-    for (const auto& [order, key] : candidates) {
+    for (const auto& candidate : candidates) {
+        const fs::path& key = candidate.second;  // a plain name: lambdas cannot capture bindings (clang 14)
         if (std::any_of(decks_.begin(), decks_.end(), [&](const Deck& deck) { return reads(deck, key); })) continue;
         const std::string* text = documents_.find(key);
         if (!text || !is_deck(key, *text)) continue;

@@ -1,0 +1,291 @@
+// Open documents, edits and published diagnostics of the language server (lsp/text_change.*,
+// lsp/workspace.*, lsp/diagnostics.*): the editor sees what `sphdeck check` reports.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "engine/check.hpp"
+#include "lsp/deck_settings.hpp"
+#include "lsp/diagnostics.hpp"
+#include "lsp/text_change.hpp"
+#include "lsp/text_position.hpp"
+#include "lsp/uri.hpp"
+#include "lsp/workspace.hpp"
+#include "lsp_session.hpp"
+#include "test_support.hpp"
+
+using namespace sphdeck;
+using nlohmann::json;
+
+namespace {
+json range(int l0, int c0, int l1, int c1) {
+    return {{"start", {{"line", l0}, {"character", c0}}}, {"end", {{"line", l1}, {"character", c1}}}};
+}
+
+json edit(int l0, int c0, int l1, int c1, const std::string& text) { return {{"range", range(l0, c0, l1, c1)}, {"text", text}}; }
+
+// A workspace that keeps what it publishes.
+struct Recorder {
+    std::vector<json> published;
+    lsp::Workspace workspace{[this](const json& params) { published.push_back(params); }};
+
+    json last(const std::string& uri) const {
+        json out;
+        for (const auto& p : published)
+            if (p["uri"] == uri) out = p;
+        return out;
+    }
+    std::vector<std::string> codes(const std::string& uri) const {
+        std::vector<std::string> out;
+        const json published_last = last(uri);  // kept: the loop must not walk a temporary
+        for (const auto& d : published_last["diagnostics"]) out.push_back(d["code"]);
+        return out;
+    }
+};
+
+const std::string fine_inc = "*CONTROL_TERMINATION\n$#  endtim\n     0.003\n";
+const std::string main_deck = "*KEYWORD\n*INCLUDE\nparts.inc\n*END\n";
+}  // namespace
+
+TEST_CASE("lsp edits: full and incremental changes, UTF-16 ranges over multi-byte characters") {
+    std::string text = "ab\ncd\n";
+    CHECK(lsp::apply_change(text, edit(0, 1, 1, 1, "X")));
+    CHECK(text == "aXd\n");
+    CHECK(lsp::apply_change(text, json{{"text", "new"}}));
+    CHECK(text == "new");
+    // "é" is one UTF-16 unit and two bytes, "😀" two units and four bytes.
+    text = "$ \xc3\xa9\xf0\x9f\x98\x80z\r\n*END\n";
+    CHECK(lsp::apply_change(text, edit(0, 3, 0, 5, "")));  // the emoji
+    CHECK(text == "$ \xc3\xa9z\r\n*END\n");
+    CHECK(lsp::apply_change(text, edit(0, 2, 0, 3, "e")));  // the é
+    CHECK(text == "$ ez\r\n*END\n");
+    CHECK(lsp::apply_change(text, edit(0, 99, 0, 99, "!")));  // past the line's end: before its "\r\n"
+    CHECK(text == "$ ez!\r\n*END\n");
+    CHECK(lsp::apply_change(text, edit(9, 0, 9, 0, "tail")));  // past the last line: the end
+    CHECK(text == "$ ez!\r\n*END\ntail");
+    CHECK(lsp::apply_change(text, edit(1, 4, 1, 0, "")));  // a reversed range is taken in order
+    CHECK(text == "$ ez!\r\n\ntail");
+    CHECK_FALSE(lsp::apply_change(text, json{{"range", range(0, 0, 0, 1)}}));
+    CHECK_FALSE(lsp::apply_change(text, json{{"range", "x"}, {"text", ""}}));
+    CHECK(text == "$ ez!\r\n\ntail");
+}
+
+TEST_CASE("lsp decks: which open files are decks, by name and by content") {
+    CHECK(lsp::is_deck("a.k", ""));
+    CHECK(lsp::is_deck("a.KEY", ""));
+    CHECK(lsp::is_deck("a.dyn", ""));
+    CHECK(lsp::is_deck("a.inc", ""));
+    CHECK(lsp::is_deck("a_0000.rad", ""));
+    CHECK(lsp::is_deck("a.rad", ""));
+    CHECK(lsp::is_deck("a.txt", "$ comment\n\n*KEYWORD\n"));
+    CHECK(lsp::is_deck("a.txt", "#RADIOSS STARTER\n/BEGIN\n"));
+    CHECK(lsp::is_deck("a.txt", "# comment\n/BEGIN\n"));
+    CHECK_FALSE(lsp::is_deck("a.txt", "hello\n*KEYWORD\n"));
+    CHECK_FALSE(lsp::is_deck("a.txt", ""));
+}
+
+TEST_CASE("lsp diagnostics: the findings of sphdeck check, with ranges, severities, notes and rule URLs") {
+    const std::string path = std::string(SPHDECK_SOURCE_DIR) + "/decks/tests/dk/DK018_fires.k";
+    const engine::CheckResult expected = engine::check_file(path, lsp::settings_for(path, {}).options);
+    REQUIRE(expected.diagnostics.size() >= 2);
+
+    const std::string uri = lsp::uri_from_path(path);
+    std::string text;
+    {
+        std::ifstream in(path, std::ios::binary);
+        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    const auto s = test::serve({test::initialize_request(), test::did_open(uri, text, 5), test::request(2, "shutdown")});
+    std::vector<json> got;
+    for (const auto& m : s.messages)
+        if (m.value("method", "") == "textDocument/publishDiagnostics")
+            for (const auto& d : m["params"]["diagnostics"]) got.push_back(json{{"uri", m["params"]["uri"]}, {"d", d}});
+    REQUIRE(got.size() == expected.diagnostics.size());
+    const auto& sources = expected.deck.sources;
+    std::size_t with_notes = 0, in_include = 0;
+    for (const diag::Diagnostic& d : expected.diagnostics) {
+        INFO(d.code << " " << d.message);
+        const std::string file_uri = lsp::uri_from_path(sources.file(d.span.file).path);
+        const json range = lsp::range_json(sources, d.span);
+        const auto match = std::find_if(got.begin(), got.end(), [&](const json& g) {
+            return g["uri"] == file_uri && g["d"]["code"] == d.code && g["d"]["range"] == range;
+        });
+        REQUIRE(match != got.end());
+        const json& g = (*match)["d"];
+        CHECK(g["severity"] == lsp::lsp_severity(d.severity));
+        CHECK(g["message"] == d.message);
+        CHECK(g["source"] == "sphdeck");
+        CHECK(g["codeDescription"]["href"] == "https://github.com/sphdeck/sphdeck/blob/main/docs/rules.md#dk018");
+        REQUIRE(g.contains("relatedInformation"));
+        CHECK(g["relatedInformation"].size() == d.notes.size());
+        CHECK(g["relatedInformation"][0]["message"] == d.notes[0].message);
+        CHECK(g["relatedInformation"][0]["location"]["uri"] == uri);
+        CHECK(g["relatedInformation"][0]["location"]["range"] == lsp::range_json(sources, d.notes[0].span));
+        with_notes += 1;
+        in_include += file_uri != uri;
+    }
+    CHECK(with_notes == expected.diagnostics.size());
+    CHECK(in_include == 1);  // the include's finding went to the include's URI
+    CHECK(s.last_published(uri)["version"] == 5);
+    CHECK_FALSE(s.last_published(lsp::uri_from_path(std::string(SPHDECK_SOURCE_DIR) + "/decks/tests/dk/include/dk018_f_controls.inc"))
+                    .contains("version"));  // not open: no version
+}
+
+TEST_CASE("lsp diagnostics: notes without a location join the message; unknown codes link their rule page") {
+    diag::Diagnostic d{"XX999", diag::Severity::Info, "something", {}, {{{}, "a remark"}}};
+    grammar::SourceMap sources;
+    const json j = lsp::lsp_diagnostic(d, sources, [](grammar::FileId) { return std::string("file:///x"); });
+    CHECK(j["message"] == "something\nnote: a remark");
+    CHECK(j["severity"] == 3);
+    CHECK_FALSE(j.contains("relatedInformation"));
+    CHECK(j["codeDescription"]["href"] == "https://github.com/sphdeck/sphdeck/blob/main/docs/rules/XX999.md");
+}
+
+TEST_CASE("lsp workspace: an edit fixes a finding, the list empties, versions follow") {
+    test::TempDir dir;
+    const std::string deck = dir.write("deck.k", "*KEYWORD\n*CONTROL_TERMINATION\n     0.002\n*CONTROL_TERMINATION\n     0.003\n*END\n");
+    const std::string uri = lsp::uri_from_path(deck);
+    Recorder r;
+    // Open with the text on disk, then edit the buffer only.
+    std::ifstream in(deck);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    REQUIRE(r.workspace.open(uri, text, 1));
+    r.workspace.flush();
+    CHECK(r.codes(uri) == std::vector<std::string>{"DK018"});
+    CHECK(r.last(uri)["version"] == 1);
+    // Delete the second *CONTROL_TERMINATION and its card (lines 3-4).
+    REQUIRE(r.workspace.change(uri, 2, json::array({edit(3, 0, 5, 0, "")})));
+    CHECK(*r.workspace.text(uri) == "*KEYWORD\n*CONTROL_TERMINATION\n     0.002\n*END\n");
+    r.workspace.flush();
+    CHECK(r.last(uri)["diagnostics"].empty());
+    CHECK(r.last(uri)["version"] == 2);
+    const std::size_t before = r.published.size();
+    r.workspace.flush();  // nothing changed: nothing published
+    CHECK(r.published.size() == before);
+    // Closing the deck clears what it published.
+    REQUIRE(r.workspace.change(uri, 3, json::array({json{{"text", text}}})));
+    r.workspace.flush();
+    CHECK(r.codes(uri) == std::vector<std::string>{"DK018"});
+    REQUIRE(r.workspace.close(uri));
+    r.workspace.flush();
+    CHECK(r.last(uri)["diagnostics"].empty());
+    CHECK(r.workspace.deck_mains().empty());
+}
+
+TEST_CASE("lsp workspace: an edited include re-checks the deck that reads it, buffers win over the disk") {
+    test::TempDir dir;
+    const std::string main_path = dir.write("main.k", main_deck);
+    const std::string inc_path = dir.write("parts.inc", fine_inc);
+    const std::string main_uri = lsp::uri_from_path(main_path), inc_uri = lsp::uri_from_path(inc_path);
+    Recorder r;
+    REQUIRE(r.workspace.open(inc_uri, fine_inc, 1));  // opened first: a deck of its own for now
+    r.workspace.flush();
+    CHECK(r.workspace.deck_mains().size() == 1);
+    REQUIRE(r.workspace.open(main_uri, main_deck + "", 1));
+    r.workspace.flush();
+    // The include is checked as part of the main deck, not on its own.
+    REQUIRE(r.workspace.deck_mains().size() == 1);
+    CHECK(r.workspace.deck_mains()[0] == engine::Documents::key(main_path));
+    CHECK(r.last(inc_uri)["diagnostics"].empty());
+    CHECK(r.last(main_uri)["diagnostics"].empty());
+
+    // The include, edited in the editor only, now repeats a control the main deck gains too.
+    REQUIRE(r.workspace.change(main_uri, 2, json::array({edit(1, 0, 1, 0, "*CONTROL_TERMINATION\n     0.001\n")})));
+    r.workspace.flush();
+    CHECK(r.codes(inc_uri) == std::vector<std::string>{"DK018"});
+    CHECK(r.last(inc_uri)["version"] == 1);
+    const json note = r.last(inc_uri)["diagnostics"][0]["relatedInformation"][0];
+    CHECK(note["location"]["uri"] == main_uri);
+    CHECK(note["location"]["range"]["start"]["line"] == 1);
+
+    // Fix it in the include's buffer: the main deck is re-checked and the finding goes.
+    REQUIRE(r.workspace.change(inc_uri, 2, json::array({edit(0, 0, 3, 0, "$ nothing here\n")})));
+    r.workspace.flush();
+    CHECK(r.last(inc_uri)["diagnostics"].empty());
+    CHECK(r.last(inc_uri)["version"] == 2);
+
+    // A request about the include finds the main deck.
+    const auto located = r.workspace.locate(inc_path);
+    REQUIRE(located);
+    CHECK(located->deck->main == engine::Documents::key(main_path));
+    CHECK(located->deck->result.deck.sources.file(located->file).text == "$ nothing here\n");
+
+    // The main deck closes: the include, still open, is a deck of its own again.
+    REQUIRE(r.workspace.close(main_uri));
+    r.workspace.flush();
+    REQUIRE(r.workspace.deck_mains().size() == 1);
+    CHECK(r.workspace.deck_mains()[0] == engine::Documents::key(inc_path));
+    CHECK(r.last(main_uri)["diagnostics"].empty());
+}
+
+TEST_CASE("lsp workspace: an include dropped from the deck gets an empty list; sphdeck.toml is honoured") {
+    test::TempDir dir;
+    const std::string main_path = dir.write("main.k", main_deck);
+    const std::string inc_path = dir.write("parts.inc", fine_inc + "*CONTROL_TERMINATION\n     0.004\n");
+    const std::string main_uri = lsp::uri_from_path(main_path), inc_uri = lsp::uri_from_path(inc_path);
+    Recorder r;
+    REQUIRE(r.workspace.open(main_uri, main_deck, 1));
+    r.workspace.flush();
+    CHECK(r.codes(inc_uri) == std::vector<std::string>{"DK018"});  // read from the disk
+    CHECK_FALSE(r.last(inc_uri).contains("version"));
+    REQUIRE(r.workspace.change(main_uri, 2, json::array({edit(1, 0, 3, 0, "")})));  // no *INCLUDE any more
+    r.workspace.flush();
+    CHECK(r.last(inc_uri)["diagnostics"].empty());
+
+    dir.write("sphdeck.toml", "ignore = [\"DK018\"]\n");
+    REQUIRE(r.workspace.change(main_uri, 3, json::array({json{{"text", main_deck}}})));
+    r.workspace.flush();
+    CHECK(r.last(inc_uri)["diagnostics"].empty());
+    dir.write("sphdeck.toml", "ignore = [\n");  // broken: said on the deck, the check goes on without it
+    REQUIRE(r.workspace.save(main_uri, std::nullopt));
+    r.workspace.flush();
+    CHECK(r.codes(inc_uri) == std::vector<std::string>{"DK018"});
+    const json main_list = r.last(main_uri)["diagnostics"];
+    REQUIRE(main_list.size() == 1);
+    CHECK(main_list[0]["message"].get<std::string>().find("sphdeck.toml") != std::string::npos);
+}
+
+TEST_CASE("lsp workspace: a buffer that is no deck yet, and one that cannot be read") {
+    test::TempDir dir;
+    const std::string uri = lsp::uri_from_path(dir.path() / "new.k");
+    Recorder r;
+    REQUIRE(r.workspace.open(uri, "", 1));
+    r.workspace.flush();
+    CHECK(r.last(uri)["diagnostics"].empty());  // an empty new file is not an error
+    REQUIRE(r.workspace.change(uri, 2, json::array({json{{"text", "just words\n"}}})));
+    r.workspace.flush();
+    CHECK(r.last(uri)["diagnostics"].size() == 1);  // what `check` says: no keyword line
+    CHECK_FALSE(r.workspace.open("untitled:Untitled-1", "*KEYWORD\n", 1));
+    CHECK_FALSE(r.workspace.change(lsp::uri_from_path(dir.path() / "closed.k"), 1, json::array()));
+}
+
+TEST_CASE("lsp server: waiting didChange notifications cost one re-check; a request sees every edit before it") {
+    test::TempDir dir;
+    const std::string text = "*KEYWORD\n*CONTROL_TERMINATION\n     0.002\n*END\n";
+    const std::string uri = lsp::uri_from_path(dir.write("deck.k", text));
+    const json add_twice = json::array({edit(1, 0, 1, 0, "*CONTROL_TERMINATION\n     0.001\n")});
+    std::vector<json> messages = {test::initialize_request(), test::did_open(uri, text, 1)};
+    for (int version = 2; version <= 6; ++version)
+        messages.push_back(test::did_change(uri, version, json::array({edit(0, 0, 0, 0, "$ typing\n")})));
+    auto s = test::serve(messages);
+    CHECK(s.publications(uri) == 1);  // five edits, one re-check
+    CHECK(s.last_published(uri)["version"] == 6);
+
+    const json hover = {{"textDocument", {{"uri", uri}}}, {"position", {{"line", 0}, {"character", 0}}}};
+    s = test::serve({test::initialize_request(), test::did_open(uri, text, 1), test::did_change(uri, 2, add_twice),
+                     test::request(7, "textDocument/hover", hover), test::did_change(uri, 3, json::array({json{{"text", text}}}))});
+    REQUIRE(s.publications(uri) == 2);
+    std::size_t first_list = 0, answer = 0;
+    for (std::size_t i = 0; i < s.messages.size(); ++i) {
+        if (s.messages[i].value("method", "") == "textDocument/publishDiagnostics" && first_list == 0) first_list = i;
+        if (s.messages[i].contains("id") && s.messages[i]["id"] == 7) answer = i;
+    }
+    CHECK(first_list < answer);  // re-checked before the request was answered
+    CHECK(s.messages[first_list]["params"]["version"] == 2);
+    CHECK(s.messages[first_list]["params"]["diagnostics"].size() == 1);
+    CHECK(s.last_published(uri)["diagnostics"].empty());
+    CHECK(s.last_published(uri)["version"] == 3);
+}
