@@ -78,6 +78,8 @@ int main(int argc, char** argv) {
         {"hover, the part's SECID", "textDocument/hover", at(part_card, 19)},
         {"definition, a particle's PID", "textDocument/definition", at(middle, 15)},
         {"definition, the part's MID", "textDocument/definition", at(part_card, 29)},
+        {"definition, a particle's NID (its *NODE line)", "textDocument/definition", at(middle, 7)},
+        {"references, a node (*NODE line, mid block)", "textDocument/references", at(middle - 1000000, 7)},
         {"references, the part (<= 10000 particles)", "textDocument/references", at(part_card, 9)},
         {"completion, the part's SECID", "textDocument/completion", at(part_card, 19)},
         {"documentSymbol", "textDocument/documentSymbol", nlohmann::json::object()},

@@ -8,6 +8,7 @@
 
 #include "grammar/value.hpp"
 #include "lsp/deck_lookup.hpp"
+#include "lsp/display_text.hpp"
 #include "model/model.hpp"
 #include "model/radioss_decoder.hpp"
 
@@ -24,7 +25,8 @@ struct Definition {
     std::string_view field;
     std::string_view kind;
 };
-constexpr std::array<Definition, 17> kDefinitions{{
+constexpr std::array<Definition, 18> kDefinitions{{
+    {"*NODE", "NID", "NODE"},
     {"*PART", "PID", "PART"},
     {"*SECTION_", "SECID", "SECTION"},
     {"*MAT_", "MID", "MAT"},
@@ -49,7 +51,8 @@ struct Reference {
     std::string_view field;
     std::string_view kind;
 };
-constexpr std::array<Reference, 18> kReferences{{
+constexpr std::array<Reference, 19> kReferences{{
+    {"NID", "NODE"},
     {"SECID", "SECTION"},     {"ISSPH", "SECTION"},       {"MID", "MAT"},
     {"EOSID", "EOS"},         {"HGID", "HOURGLASS"},      {"PID", "PART"},
     {"IPID", "PART"},         {"IPSPH", "PART"},          {"BOXID", "DEFINE_BOX"},
@@ -174,8 +177,10 @@ std::optional<IdRole> dyna_id_role(std::string_view keyword, const keywords::Fie
         if (field.refers_to == "DEFINE_CURVE_OR_TABLE") return IdRole{"DEFINE_CURVE", false};
         return IdRole{std::string(field.refers_to), false};
     }
-    if (keyword == "*ELEMENT_SPH" && field.name != "PID") return std::nullopt;  // NID is the particle itself
-    const std::string_view name = starts_with(keyword, "*SET_PART") ? without_digits(field.name) : field.name;
+    // *ELEMENT_SPH: NID is the particle's node, PID its part; NEND ends a range of nodes.
+    if (keyword == "*ELEMENT_SPH" && field.name != "PID" && field.name != "NID") return std::nullopt;
+    const bool numbered = starts_with(keyword, "*SET_PART") || starts_with(keyword, "*SET_NODE");
+    const std::string_view name = numbered ? without_digits(field.name) : field.name;
     for (const auto& r : kReferences)
         if (name == r.field) return IdRole{std::string(r.kind), false};
     return std::nullopt;
@@ -189,7 +194,7 @@ std::optional<IdRole> radioss_id_role(const rad::FieldSpec& field) {
     std::string prefix(name.substr(0, at));
     for (char& c : prefix) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     if (prefix == "FCT") prefix = "FUNCT";
-    if (prefix == "NODE" || prefix == "BRICK" || prefix == "TETRA" || prefix == "PENTA") return std::nullopt;
+    if (prefix == "BRICK" || prefix == "TETRA" || prefix == "PENTA") return std::nullopt;
     return IdRole{prefix, false};
 }
 
@@ -270,8 +275,79 @@ std::optional<IdUse> id_at(const CheckedDeck& deck, grammar::FileId file, std::u
     return IdUse{role->kind, id, v.span, role->defines, block, ""};
 }
 
+namespace {
+std::optional<long long> integer_id(const std::string& id) {
+    const grammar::IntegerValue v = grammar::parse_integer(id);
+    if (v.status != grammar::NumberStatus::Ok) return std::nullopt;
+    return v.value;
+}
+
+// The block holding RawDeck line `index`: blocks own contiguous runs of lines.
+const grammar::Block* block_of_line(const grammar::RawDeck& raw, std::uint32_t index) {
+    auto block = std::upper_bound(raw.blocks.begin(), raw.blocks.end(), index,
+                                  [](std::uint32_t n, const grammar::Block& b) { return n < b.first_line; });
+    if (block == raw.blocks.begin()) return nullptr;
+    --block;
+    return index < block->first_line + block->line_count ? &*block : nullptr;
+}
+
+// The NID field of a *NODE line when it holds `id`.
+std::optional<IdUse> node_on_line(const grammar::RawDeck& raw, std::uint32_t index, long long id) {
+    const grammar::Block* block = block_of_line(raw, index);
+    if (!block) return std::nullopt;
+    auto card = dyna_card_at(raw, *block, raw.lines[index]);
+    if (!card || card->values.empty() || !card->values[0].valid || card->values[0].number != static_cast<double>(id))
+        return std::nullopt;
+    return IdUse{"NODE", std::to_string(id), card->values[0].span, true, block, ""};
+}
+
+// Where node `id` is defined. The model keeps no line per node (decks of 10^7 nodes), but nodes
+// are stored in the order of the *NODE lines: the node's position there names its line unless an
+// unreadable line was skipped before it; then the *NODE blocks are scanned.
+std::vector<IdUse> node_definitions(const CheckedDeck& deck, long long id) {
+    std::vector<IdUse> out;
+    const auto& raw = deck.result.deck;
+    if (deck.result.model.radioss) {
+        const auto lines = model::radioss_node_lines(raw, {id});
+        const auto found = lines.find(id);
+        if (found == lines.end()) return out;
+        for (const auto& span : found->second) {
+            const grammar::Block* block = block_at(raw, span.file, span.line);
+            out.push_back({"NODE", std::to_string(id), span, true, block, ""});
+        }
+        return out;
+    }
+    const auto& ids = deck.result.model.nodes.id;
+    const auto at = std::find(ids.begin(), ids.end(), id);
+    if (at == ids.end()) return out;
+    std::size_t position = static_cast<std::size_t>(at - ids.begin());
+    for (const grammar::Block& b : raw.blocks) {
+        if (b.keyword != "*NODE") continue;
+        if (position < b.line_count) {
+            if (auto use = node_on_line(raw, b.first_line + static_cast<std::uint32_t>(position), id))
+                return {*use};
+            break;
+        }
+        position -= b.line_count;
+    }
+    for (const grammar::Block& b : raw.blocks) {
+        if (b.keyword != "*NODE") continue;
+        for (std::uint32_t i = b.first_line; i < b.first_line + b.line_count; ++i) {
+            // Cheap test first: the id's digits on the line at all.
+            if (raw.text(raw.lines[i]).find(std::to_string(id)) == std::string_view::npos) continue;
+            if (auto use = node_on_line(raw, i, id)) out.push_back(*use);
+        }
+    }
+    return out;
+}
+}  // namespace
+
 std::vector<IdUse> find_definitions(const CheckedDeck& deck, const std::string& kind, const std::string& id) {
     std::vector<IdUse> out;
+    if (kind == "NODE") {
+        auto node = integer_id(id);
+        return node ? node_definitions(deck, *node) : out;
+    }
     const auto& raw = deck.result.deck;
     const bool radioss = deck.result.model.radioss.has_value();
     const int version = radioss ? model::radioss_version(raw) : 0;
@@ -294,40 +370,46 @@ std::vector<IdUse> find_definitions(const CheckedDeck& deck, const std::string& 
     return out;
 }
 
-std::vector<grammar::Span> particle_part_spans(const CheckedDeck& deck, const std::string& id, std::size_t limit) {
+std::vector<grammar::Span> particle_spans(const CheckedDeck& deck, const std::string& kind, const std::string& id,
+                                          std::size_t limit) {
     std::vector<grammar::Span> out;
     const auto& raw = deck.result.deck;
     const auto& particles = deck.result.model.particles;
-    if (deck.result.model.radioss) return out;  // /SPHCEL names its part in the header
-    long long part = 0;
-    try {
-        std::size_t used = 0;
-        part = std::stoll(id, &used);
-        if (used != id.size()) return out;
-    } catch (const std::exception&) {
-        return out;
-    }
+    if (deck.result.model.radioss || (kind != "PART" && kind != "NODE")) return out;  // /SPHCEL: part in the header
+    const auto wanted = integer_id(id);
+    if (!wanted) return out;
+    const bool part = kind == "PART";
+    const std::vector<long long>& column = part ? particles.part : particles.node;
     std::uint32_t last_line = 0xFFFFFFFFu;
     for (std::size_t i = 0; i < particles.size() && out.size() < limit; ++i) {
-        if (particles.part[i] != part || particles.line[i] == last_line) continue;
+        if (column[i] != *wanted || particles.line[i] == last_line) continue;
         last_line = particles.line[i];
         const grammar::CardLine& line = raw.lines[last_line];
-        // The block holding the line: blocks own contiguous runs of RawDeck::lines.
-        auto block = std::upper_bound(raw.blocks.begin(), raw.blocks.end(), last_line,
-                                      [](std::uint32_t n, const grammar::Block& b) { return n < b.first_line; });
-        if (block == raw.blocks.begin()) continue;
-        --block;
+        const grammar::Block* block = block_of_line(raw, last_line);
+        if (!block) continue;
         auto card = dyna_card_at(raw, *block, line);
         if (!card || card->values.size() < 2) continue;
-        out.push_back(card->values[1].span);  // NID, PID, MASS, NEND
+        out.push_back(card->values[part ? 1 : 0].span);  // NID, PID, MASS, NEND
     }
     return out;
 }
 
 std::string describe(const CheckedDeck& deck, const IdUse& d) {
     const auto& sources = deck.result.deck.sources;
+    if (d.kind == "NODE") {
+        const auto& nodes = deck.result.model.nodes;
+        std::string text = fmt::format("node {}", d.id);
+        if (auto n = integer_id(d.id)) {
+            const auto at = std::find(nodes.id.begin(), nodes.id.end(), *n);
+            if (at != nodes.id.end()) {
+                const auto i = static_cast<std::size_t>(at - nodes.id.begin());
+                text += fmt::format(" at ({:g}, {:g}, {:g})", nodes.x[i], nodes.y[i], nodes.z[i]);
+            }
+        }
+        return display_text(fmt::format("{}, line {}", text, d.span.line));
+    }
     std::string keyword = d.block ? d.block->keyword : d.kind;
-    if (d.block && d.block->keyword[0] == '/') {
+    if (d.block && !d.block->keyword.empty() && d.block->keyword[0] == '/') {
         // Radioss: the header without its id ("/PROP/SPH/7" -> "/PROP/SPH 7").
         keyword = d.block->keyword.substr(0, d.block->keyword.rfind('/' + d.id));
     }
@@ -336,7 +418,7 @@ std::string describe(const CheckedDeck& deck, const IdUse& d) {
     text += fmt::format(", line {}", d.span.line);
     if (d.span.file != 0 && d.span.file < sources.size())
         text += fmt::format(" of {}", sources.file(d.span.file).display_name);
-    return text;
+    return display_text(text);
 }
 
 }  // namespace sphdeck::lsp

@@ -57,9 +57,11 @@ std::optional<IdUse> id_at(const CheckedDeck& deck, grammar::FileId file, std::u
 // blocks of the defining families only (LS-DYNA), or of the block headers (Radioss).
 std::vector<IdUse> find_definitions(const CheckedDeck& deck, const std::string& kind, const std::string& id);
 
-// The particle lines (*ELEMENT_SPH, /SPHCEL) of part `id`, as PID field spans: a scan of the
-// particle arrays, decoding only the lines that match; at most `limit`.
-std::vector<grammar::Span> particle_part_spans(const CheckedDeck& deck, const std::string& id, std::size_t limit);
+// The *ELEMENT_SPH lines that name part (kind PART) or node (NODE) `id`, as PID or NID field
+// spans: a scan of the particle arrays, decoding only the lines that match; at most `limit`.
+// Empty for other kinds and for Radioss decks (/SPHCEL names its part in the header).
+std::vector<grammar::Span> particle_spans(const CheckedDeck& deck, const std::string& kind, const std::string& id,
+                                          std::size_t limit);
 
 // A short description of a definition: "*SECTION_SPH 3, line 40" (+ its title when known).
 std::string describe(const CheckedDeck& deck, const IdUse& definition);

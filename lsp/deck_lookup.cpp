@@ -283,6 +283,15 @@ std::optional<std::size_t> radioss_field_at(const RadiossCard& card, std::string
     return std::nullopt;
 }
 
+std::optional<grammar::FileId> included_file(const grammar::SourceMap& sources, grammar::FileId file,
+                                             std::uint32_t line) {
+    for (grammar::FileId id = 0; id < sources.size(); ++id) {
+        const auto& f = sources.file(id);
+        if (f.parent == file && f.include_line == line) return id;
+    }
+    return std::nullopt;
+}
+
 std::vector<ParameterReference> parameter_references(std::string_view text, grammar::FileId file, std::uint32_t line) {
     std::vector<ParameterReference> out;
     auto name_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };

@@ -92,6 +92,11 @@ void walk_radioss_block(const grammar::RawDeck& deck, const grammar::Block& bloc
 // else the cell's columns in the deck's version (fixed format only); nullopt when none.
 std::optional<std::size_t> radioss_field_at(const RadiossCard& card, std::string_view text, std::uint32_t column);
 
+// The file an include line of `file` opened (an *INCLUDE file name line, a Radioss #include
+// line), or nullopt.
+std::optional<grammar::FileId> included_file(const grammar::SourceMap& sources, grammar::FileId file,
+                                             std::uint32_t line);
+
 // A `&name` parameter reference (LS-DYNA; Radioss also `[name]`) on a line of a file.
 struct ParameterReference {
     std::string name;   // without '&'

@@ -8,6 +8,7 @@
 #include "lint/registry.hpp"
 #include "lint/suppressions.hpp"
 #include "lsp/deck_lookup.hpp"
+#include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
 #include "lsp/realign.hpp"
 #include "lsp/uri.hpp"
@@ -95,7 +96,7 @@ std::optional<nlohmann::json> realign(const Request& r, std::uint32_t line0, con
     auto fixed = realign_card(text, *card->card, block->format);
     if (!fixed) return std::nullopt;
     return action("Realign the values of this card into their columns", diagnostic, r.uri,
-                  text_edit(line0, 0, line0, utf16_offset(text, static_cast<std::uint32_t>(text.size())), *fixed),
+                  text_edit(line0, 0, line0, utf16_offset(text, static_cast<std::uint32_t>(text.size())), display_text(*fixed)),
                   true);
 }
 

@@ -10,6 +10,7 @@
 #include "grammar/parameters.hpp"
 #include "lsp/deck_ids.hpp"
 #include "lsp/deck_lookup.hpp"
+#include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
 #include "model/radioss_decoder.hpp"
 
@@ -98,7 +99,7 @@ void id_items(const CheckedDeck& deck, const std::string& kind, const Edit& edit
     for (const auto& use : collect_ids(deck)) {
         if (!use.defines || use.kind != kind || !seen.insert(use.id).second) continue;
         if (items.size() >= kMaxItems) break;
-        items.push_back(item(use.id, kReference, describe(deck, use), edit));
+        items.push_back(item(display_text(use.id), kReference, describe(deck, use), edit));
     }
 }
 

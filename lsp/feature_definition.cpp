@@ -18,16 +18,6 @@ nlohmann::json location(const grammar::SourceMap& sources, const grammar::Span& 
     return {{"uri", uri_from_path(sources.file(span.file).path)}, {"range", range_json(sources, span)}};
 }
 
-// The file an include line opened: an *INCLUDE file name line, a Radioss #include line.
-std::optional<grammar::FileId> included_file(const grammar::SourceMap& sources, grammar::FileId file,
-                                             std::uint32_t line) {
-    for (grammar::FileId id = 0; id < sources.size(); ++id) {
-        const auto& f = sources.file(id);
-        if (f.parent == file && f.include_line == line) return id;
-    }
-    return std::nullopt;
-}
-
 bool same_name(std::string_view a, std::string_view b) {
     return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
                return std::toupper(static_cast<unsigned char>(x)) == std::toupper(static_cast<unsigned char>(y));
@@ -89,9 +79,11 @@ nlohmann::json references(const CheckedDeck& deck, grammar::FileId file, TextPos
     for (const auto& u : collect_ids(deck))
         if (u.kind == use->kind && u.id == use->id && (include_declaration || !u.defines))
             out.push_back(location(sources, u.span));
-    if (use->kind == "PART")
-        for (const auto& span : particle_part_spans(deck, use->id, kMaxParticleReferences))
-            out.push_back(location(sources, span));
+    // Nodes are defined in the bulk *NODE blocks, which the walk of the deck leaves out.
+    if (include_declaration && use->kind == "NODE")
+        for (const auto& d : find_definitions(deck, use->kind, use->id)) out.push_back(location(sources, d.span));
+    for (const auto& span : particle_spans(deck, use->kind, use->id, kMaxParticleReferences))
+        out.push_back(location(sources, span));
     return out;
 }
 

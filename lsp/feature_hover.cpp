@@ -8,6 +8,7 @@
 #include "grammar/value.hpp"
 #include "lsp/deck_ids.hpp"
 #include "lsp/deck_lookup.hpp"
+#include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
 #include "model/radioss_decoder.hpp"
 
@@ -23,7 +24,7 @@ constexpr std::size_t kMaxChoices = 24;  // enum values listed in a hover; the r
 std::string number(double v) { return fmt::format("{:g}", v); }
 
 nlohmann::json hover_json(std::string markdown, const grammar::SourceMap& sources, const grammar::Span& span) {
-    return {{"contents", {{"kind", "markdown"}, {"value", std::move(markdown)}}}, {"range", range_json(sources, span)}};
+    return {{"contents", {{"kind", "markdown"}, {"value", display_text(markdown)}}}, {"range", range_json(sources, span)}};
 }
 
 std::string default_text(const FieldSpec& f) {
@@ -86,6 +87,25 @@ std::string id_text_of(const CheckedDeck& deck, const std::optional<IdRole>& rol
     return fmt::format("\n\nnames {} {}: `{}`", role->kind, id, describe(deck, definitions.front()));
 }
 
+// The cards of a keyword and their fields, one line a card ("Card 1: NCBS, BOXID, DT..."), up to
+// the first card whose layout is not known.
+std::string card_overview(const keywords::KeywordMatch& match) {
+    constexpr std::size_t kMaxCards = 12;
+    std::string out;
+    const auto cards = keywords::cards_for(match);
+    for (std::size_t i = 0; i < cards.size() && i < kMaxCards; ++i) {
+        const keywords::CardSpec& card = *cards[i];
+        if (card.unknown_layout) break;
+        std::vector<std::string_view> names;
+        for (const auto& f : card.fields)
+            if (f.type != FieldType::Unused) names.push_back(f.name);
+        out += fmt::format("\n- {}{}: {}", card.name.empty() ? "card" : card.name,
+                           card.repeat == keywords::CardRepeat::Repeated ? " (repeated)" : "", fmt::join(names, ", "));
+    }
+    if (cards.size() > kMaxCards) out += fmt::format("\n- ... {} more cards", cards.size() - kMaxCards);
+    return out.empty() ? out : "\n\ncards:" + out;
+}
+
 nlohmann::json dyna_keyword_hover(const CheckedDeck& deck, const grammar::Block& block) {
     const auto& sources = deck.result.deck.sources;
     auto match = keywords::find_keyword(block.keyword);
@@ -102,6 +122,7 @@ nlohmann::json dyna_keyword_hover(const CheckedDeck& deck, const grammar::Block&
     for (const auto* option : match->options)
         if (!option->doc.empty()) text += fmt::format("\n- `_{}`: {}", option->suffix, option->doc);
     if (schema.unique) text += "\n\nat most once per deck";
+    text += card_overview(*match);
     if (block.format != grammar::CardFormat::Standard) text += fmt::format("\n\ncards in {} format", to_string(block.format));
     return hover_json(std::move(text), sources, block.span);
 }
@@ -208,6 +229,11 @@ nlohmann::json hover(const CheckedDeck& deck, grammar::FileId file, TextPosition
     const auto& raw = deck.result.deck;
     if (file >= raw.sources.size()) return nullptr;
     const LineColumn at = line_column(raw.sources, file, position);
+    if (auto child = included_file(raw.sources, file, at.line)) {
+        const auto& f = raw.sources.file(*child);
+        const grammar::Span span{file, at.line, 1, static_cast<std::uint32_t>(raw.sources.line_text(file, at.line).size()) + 1};
+        return hover_json(fmt::format("includes `{}` ({} lines)", f.path, raw.sources.line_count(*child)), raw.sources, span);
+    }
     const grammar::Block* block = block_at(raw, file, at.line);
     if (!block) return nullptr;
     if (deck.result.model.radioss) return radioss_hover(deck, *block, at.line, at.column);

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "lsp/deck_lookup.hpp"
+#include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
 #include "model/radioss_decoder.hpp"
 
@@ -39,7 +40,7 @@ std::string block_detail(const CheckedDeck& deck, const grammar::Block& block, s
 nlohmann::json dyna_symbol(const CheckedDeck& deck, const grammar::Block& block) {
     const auto& raw = deck.result.deck;
     const std::uint32_t last = block_last_line(raw, block);
-    nlohmann::json symbol = {{"name", block.keyword},
+    nlohmann::json symbol = {{"name", display_text(block.keyword)},
                              {"kind", kStruct},
                              {"range", line_range(raw.sources, block.span.file, block.span.line, last)},
                              {"selectionRange", range_json(raw.sources, block.span)}};
@@ -51,7 +52,7 @@ nlohmann::json dyna_symbol(const CheckedDeck& deck, const grammar::Block& block)
             // The heading line comes just before the PID card (*PART: heading + data per part).
             const std::uint32_t first = part.span.line > block.span.line + 1 ? part.span.line - 1 : part.span.line;
             children.push_back({{"name", fmt::format("part {}", part.id)},
-                                {"detail", part.heading},
+                                {"detail", display_text(part.heading)},
                                 {"kind", kObject},
                                 {"range", line_range(raw.sources, block.span.file, first, part.span.line)},
                                 {"selectionRange", range_json(raw.sources, part.span)}});
@@ -60,21 +61,21 @@ nlohmann::json dyna_symbol(const CheckedDeck& deck, const grammar::Block& block)
                                            children[0]["detail"].get<std::string>();
         if (!children.empty()) symbol["children"] = std::move(children);
     }
-    if (!detail.empty()) symbol["detail"] = detail;
+    if (!detail.empty()) symbol["detail"] = display_text(detail);
     return symbol;
 }
 
 nlohmann::json radioss_symbol(const CheckedDeck& deck, const grammar::Block& block, int version) {
     const auto& raw = deck.result.deck;
     const std::uint32_t last = block_last_line(raw, block);
-    nlohmann::json symbol = {{"name", block.arguments.empty() ? block.keyword : block.arguments},
+    nlohmann::json symbol = {{"name", display_text(block.arguments.empty() ? block.keyword : block.arguments)},
                              {"kind", block.keyword.rfind("/PART", 0) == 0 ? kObject : kStruct},
                              {"range", line_range(raw.sources, block.span.file, block.span.line, last)},
                              {"selectionRange", range_json(raw.sources, block.span)}};
     const auto* spec = radioss_keyword(block);
     if (spec && spec->title && block.line_count > 0 && !grammar::radioss::is_v4(version)) {
         std::string title(grammar::trim_blanks(raw.text(*raw.begin_lines(block))));
-        if (!title.empty()) symbol["detail"] = title;
+        if (!title.empty()) symbol["detail"] = display_text(title);
     }
     return symbol;
 }

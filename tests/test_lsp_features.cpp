@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/check.hpp"
+#include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
 #include "lsp/realign.hpp"
 #include "lsp/uri.hpp"
@@ -161,6 +162,9 @@ TEST_CASE("lsp hover: keywords, ids and parameters") {
     const At section = find(kDeck, "*SECTION_SPH");
     std::string text = hover_text(deck, section);
     CHECK(text.find("`*SECTION_SPH`") != std::string::npos);
+    text = hover_text(deck, find(kDeck, "*CONTROL_SPH"));
+    CHECK(text.find("cards:") != std::string::npos);
+    CHECK(text.find(": NCBS, BOXID, DT, IDIM, MEMORY, FORM, START, MAXV") != std::string::npos);
     const At part = find(kDeck, "         1         3         5         7");
     text = hover_text(deck, {part.line, 19});  // SECID 3
     CHECK(text.find("**SECID**") != std::string::npos);
@@ -194,6 +198,18 @@ TEST_CASE("lsp definition and references: part -> section, material, EOS; parame
     refs = ask(deck, "textDocument/references",
                {{"position", position({part.line, 9})}, {"context", {{"includeDeclaration", true}}}});
     CHECK(refs.size() == 3);
+    // A particle's NID -> its *NODE line (with the node's coordinates in the hover); node 2 is
+    // named by particle 2.
+    const At particle = find(kDeck, "       1       1   0.001");
+    location = ask(deck, "textDocument/definition", {{"position", position({particle.line, 7})}});
+    CHECK(location["range"]["start"]["line"] == find(kDeck, "       1           0.010").line);
+    CHECK(hover_text(deck, {particle.line, 7}).find("names NODE 1: `node 1 at (0.01, 0.03, 0), line 22`") !=
+          std::string::npos);
+    const At node2 = find(kDeck, "       2           0.030");
+    refs = ask(deck, "textDocument/references",
+               {{"position", position({node2.line, 7})}, {"context", {{"includeDeclaration", false}}}});
+    REQUIRE(refs.size() == 1);
+    CHECK(refs[0]["range"]["start"]["line"] == find(kDeck, "       2       1   0.001").line);
     // Section 3 from its definition: the part's SECID.
     const At secid = find(kDeck, "         3       1.2");
     refs = ask(deck, "textDocument/references",
@@ -364,6 +380,10 @@ water
                     {{"position", position({part.line, 6})}, {"context", {{"includeDeclaration", false}}}});
     REQUIRE(refs.size() == 1);
     CHECK(refs[0]["range"]["start"]["line"] == find(rad, "/SPHCEL/2").line);
+    // A cell's node_ID -> its /NODE line.
+    const At cell = find(rad, "      1001         0");
+    location = ask(deck, "textDocument/definition", {{"position", position({cell.line, 8})}});
+    CHECK(location["range"]["start"]["line"] == find(rad, "      1001                 1.0").line);
     auto symbols = ask(deck, "textDocument/documentSymbol", nlohmann::json::object());
     CHECK(symbols.size() == deck.result.deck.blocks.size());
     // A suppression in a Radioss deck uses '#', after the #RADIOSS line.
@@ -405,6 +425,8 @@ TEST_CASE("lsp definition: an *INCLUDE file name opens the file; ids defined in 
     auto location = ask(deck, "textDocument/definition", {{"position", position(find(main_text, "section.k"))}});
     CHECK(location["uri"] == lsp::uri_from_path(dir / "section.k"));
     CHECK(location["range"]["start"]["line"] == 0);
+    CHECK(hover_text(deck, find(main_text, "section.k")).find("includes `" + (dir / "section.k").string() + "` (4 lines)") !=
+          std::string::npos);
     const At part = find(main_text, "         1         3");
     location = ask(deck, "textDocument/definition", {{"position", position({part.line, 19})}});
     CHECK(location["uri"] == lsp::uri_from_path(dir / "section.k"));
@@ -428,4 +450,71 @@ TEST_CASE("lsp definition: ids named by the generated layouts (a *LOAD_BODY_Z cu
     REQUIRE(refs.size() == 1);
     CHECK(refs[0]["range"]["start"]["line"] == load.line);
     CHECK(hover_text(deck, {load.line, 9}).find("names DEFINE_CURVE 9") != std::string::npos);
+}
+
+TEST_CASE("lsp features: every request on every line of the test decks answers valid JSON") {
+    namespace fs = std::filesystem;
+    std::size_t decks = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(fs::path(SPHDECK_SOURCE_DIR) / "decks" / "tests")) {
+        const auto ext = entry.path().extension();
+        if (!entry.is_regular_file() || (ext != ".k" && ext != ".rad")) continue;
+        lsp::CheckedDeck deck;
+        deck.main = entry.path();
+        try {
+            deck.result = engine::check_file(entry.path().string());
+        } catch (const std::exception&) {
+            continue;  // a deck the tests expect to be refused
+        }
+        ++decks;
+        const auto& sources = deck.result.deck.sources;
+        nlohmann::json diagnostics = nlohmann::json::array();
+        for (const auto& d : deck.result.diagnostics)
+            if (d.span.valid() && d.span.file == 0)
+                diagnostics.push_back({{"range", lsp::range_json(sources, d.span)}, {"code", d.code}});
+        // One check per deck: the answers' JSON must dump (strictly: valid UTF-8) and be handled.
+        std::size_t failed = 0;
+        for (grammar::FileId file = 0; file < sources.size(); ++file) {
+            const std::uint32_t lines = sources.line_count(file);
+            for (std::uint32_t line = 0; line <= lines; ++line)
+                for (std::uint32_t character : {0u, 9u, 19u, 200u}) {
+                    const nlohmann::json params = {{"position", {{"line", line}, {"character", character}}},
+                                                   {"context", {{"includeDeclaration", true}}}};
+                    for (const char* method : {"textDocument/hover", "textDocument/definition",
+                                               "textDocument/references", "textDocument/completion"}) {
+                        try {
+                            auto answer = lsp::answer_feature(method, deck, file, params);
+                            failed += !answer.handled || answer.result.dump().empty();
+                        } catch (const std::exception&) {
+                            ++failed;
+                        }
+                    }
+                }
+            for (const char* method : {"textDocument/documentSymbol", "textDocument/foldingRange"})
+                try {
+                    failed += lsp::answer_feature(method, deck, file, nlohmann::json::object()).result.dump().empty();
+                } catch (const std::exception&) {
+                    ++failed;
+                }
+        }
+        auto actions = lsp::answer_feature("textDocument/codeAction", deck, 0, {{"context", {{"diagnostics", diagnostics}}}});
+        CHECK_MESSAGE(failed == 0, entry.path().string());
+        CHECK(actions.result.is_array());
+    }
+    CHECK(decks > 100);
+}
+
+TEST_CASE("lsp features: Latin-1 deck text reaches the client as UTF-8") {
+    std::string text = kDeck;
+    text.replace(text.find("water"), 5, "d\xE9p\xF4t");
+    const auto deck = check(text);
+    const At part = find(text, "         1         3         5         7");
+    const std::string hover = hover_text(deck, {part.line, 19});
+    CHECK_NOTHROW((void)nlohmann::json(hover).dump());
+    const At particle = find(text, "       1       1   0.001");
+    CHECK(hover_text(deck, {particle.line, 15}).find("\"d\xC3\xA9p\xC3\xB4t\"") != std::string::npos);
+    auto symbols = ask(deck, "textDocument/documentSymbol", nlohmann::json::object());
+    CHECK_NOTHROW((void)symbols.dump());
+    // A surrogate's bytes (ED A0 80) are no UTF-8: three Latin-1 characters.
+    CHECK(lsp::display_text("a\xC3\xA9\xE9\xED\xA0\x80") == "a\xC3\xA9\xC3\xA9\xC3\xAD\xC2\xA0\xC2\x80");
+    CHECK(lsp::display_text("\xED\x9F\xBF") == "\xED\x9F\xBF");  // U+D7FF, the last before the surrogates
 }
