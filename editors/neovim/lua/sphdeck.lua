@@ -107,7 +107,13 @@ function M.attach(bufnr, opts)
     cmd = opts.cmd or { "sphdeck", "lsp" },
     root_dir = M.root_dir(path ~= "" and path or vim.fn.getcwd() .. "/x"),
     flags = { debounce_text_changes = opts.debounce_ms or 50 },
-    on_attach = opts.on_attach,
+    on_attach = function(client, attached)
+      -- completion with <C-x><C-o> (Neovim 0.7 does not set it by itself)
+      vim.bo[attached].omnifunc = "v:lua.vim.lsp.omnifunc"
+      if opts.on_attach then
+        opts.on_attach(client, attached)
+      end
+    end,
     on_exit = opts.on_exit,
     capabilities = opts.capabilities,
     settings = opts.settings,
