@@ -343,11 +343,16 @@ std::vector<IdUse> node_definitions(const CheckedDeck& deck, long long id) {
 }  // namespace
 
 std::vector<IdUse> find_definitions(const CheckedDeck& deck, const std::string& kind, const std::string& id) {
-    std::vector<IdUse> out;
     if (kind == "NODE") {
         auto node = integer_id(id);
-        return node ? node_definitions(deck, *node) : out;
+        return node ? node_definitions(deck, *node) : std::vector<IdUse>{};
     }
+    return definitions_of(deck, kind, &id);
+}
+
+std::vector<IdUse> definitions_of(const CheckedDeck& deck, const std::string& kind, const std::string* id) {
+    std::vector<IdUse> out;
+    if (kind == "NODE") return out;  // millions: never listed
     const auto& raw = deck.result.deck;
     const bool radioss = deck.result.model.radioss.has_value();
     const int version = radioss ? model::radioss_version(raw) : 0;
@@ -355,7 +360,7 @@ std::vector<IdUse> find_definitions(const CheckedDeck& deck, const std::string& 
         std::vector<IdUse> found;
         if (radioss) {
             auto header = header_id(block);
-            if (!header || header->family != kind || header->id != id) continue;
+            if (!header || header->family != kind || (id && header->id != *id)) continue;
             collect_radioss(deck, block, version, found);
         } else {
             const bool family = std::any_of(kDefinitions.begin(), kDefinitions.end(), [&](const Definition& d) {
@@ -365,7 +370,7 @@ std::vector<IdUse> find_definitions(const CheckedDeck& deck, const std::string& 
             collect_dyna(deck, block, found);
         }
         for (auto& use : found)
-            if (use.defines && use.kind == kind && use.id == id) out.push_back(std::move(use));
+            if (use.defines && use.kind == kind && (!id || use.id == *id)) out.push_back(std::move(use));
     }
     return out;
 }

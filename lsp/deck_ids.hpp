@@ -56,6 +56,8 @@ std::optional<IdUse> id_at(const CheckedDeck& deck, grammar::FileId file, std::u
 // The definitions of id `id` of `kind` (usually one; a duplicated id gives more): a walk of the
 // blocks of the defining families only (LS-DYNA), or of the block headers (Radioss).
 std::vector<IdUse> find_definitions(const CheckedDeck& deck, const std::string& kind, const std::string& id);
+// Every definition of `kind` (of id `*id` when given), the same walk; none for NODE.
+std::vector<IdUse> definitions_of(const CheckedDeck& deck, const std::string& kind, const std::string* id = nullptr);
 
 // The *ELEMENT_SPH lines that name part (kind PART) or node (NODE) `id`, as PID or NID field
 // spans: a scan of the particle arrays, decoding only the lines that match; at most `limit`.

@@ -292,6 +292,14 @@ std::optional<grammar::FileId> included_file(const grammar::SourceMap& sources, 
     return std::nullopt;
 }
 
+std::optional<ParameterReference> parameter_definition_at(const grammar::RawDeck& deck, grammar::FileId file,
+                                                          std::uint32_t line, std::uint32_t column) {
+    for (const grammar::Parameter& p : deck.parameters.definitions())
+        if (p.span.file == file && p.span.line == line && column >= p.span.column && column < p.span.end_column)
+            return ParameterReference{p.name, p.span};
+    return std::nullopt;
+}
+
 std::vector<ParameterReference> parameter_references(std::string_view text, grammar::FileId file, std::uint32_t line) {
     std::vector<ParameterReference> out;
     auto name_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };

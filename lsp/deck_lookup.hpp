@@ -105,6 +105,10 @@ struct ParameterReference {
 // The reference under 1-based byte `column` of line `line`, or nullopt.
 std::optional<ParameterReference> parameter_reference_at(const grammar::SourceMap& sources, grammar::FileId file,
                                                          std::uint32_t line, std::uint32_t column);
+// The *PARAMETER definition whose name field is under the position, as a reference to itself
+// (so hover, definition and references treat a definition's name like a use of it).
+std::optional<ParameterReference> parameter_definition_at(const grammar::RawDeck& deck, grammar::FileId file,
+                                                          std::uint32_t line, std::uint32_t column);
 // Every reference in a line's text (for references of a parameter).
 std::vector<ParameterReference> parameter_references(std::string_view text, grammar::FileId file, std::uint32_t line);
 

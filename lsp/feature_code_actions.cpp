@@ -45,6 +45,19 @@ struct Request {
     char comment;  // '$' LS-DYNA, '#' Radioss
 };
 
+// The UTF-16 column just after the last code of a well-formed directive of `scope` on a comment
+// line (1-based `line`), or nullopt.
+std::optional<std::uint32_t> directive_end(const Request& r, std::string_view text, std::uint32_t line,
+                                           lint::Suppression::Scope scope) {
+    if (text.empty() || (text[0] != r.comment && text[0] != '$')) return std::nullopt;
+    lint::Suppression directive;
+    std::vector<diag::Diagnostic> problems;
+    if (!lint::parse_suppression(text, r.file, line, directive, problems) || !problems.empty() ||
+        directive.scope != scope || directive.items.empty())
+        return std::nullopt;
+    return utf16_offset(text, directive.items.back().end_column - 1);
+}
+
 // "Suppress CODE in this file": a code added to the file's `disable-file=` directive near its
 // top, else a directive line at the top (after a Radioss file's `#RADIOSS` line, which tells the
 // format).
@@ -52,17 +65,9 @@ nlohmann::json file_suppression(const Request& r, const std::string& code, const
     const auto& sources = r.deck.result.deck.sources;
     const std::uint32_t lines = std::min(sources.line_count(r.file), kHeaderLines);
     const std::string title = fmt::format("Suppress {} in this file", code);
-    for (std::uint32_t l = 1; l <= lines; ++l) {
-        const std::string_view text = sources.line_text(r.file, l);
-        lint::Suppression directive;
-        std::vector<diag::Diagnostic> problems;
-        if (!lint::parse_suppression(text, r.file, l, directive, problems) || !problems.empty() ||
-            directive.scope != lint::Suppression::Scope::File || directive.items.empty())
-            continue;
-        const std::uint32_t end = directive.items.back().end_column - 1;  // 0-based, after the last code
-        const std::uint32_t at = utf16_offset(text, end);
-        return action(title, diagnostic, r.uri, text_edit(l - 1, at, l - 1, at, "," + code));
-    }
+    for (std::uint32_t l = 1; l <= lines; ++l)
+        if (auto at = directive_end(r, sources.line_text(r.file, l), l, lint::Suppression::Scope::File))
+            return action(title, diagnostic, r.uri, text_edit(l - 1, *at, l - 1, *at, "," + code));
     std::uint32_t line = 0;
     if (r.comment == '#' && sources.line_text(r.file, 1).rfind("#RADIOSS", 0) == 0) line = 1;
     return action(title, diagnostic, r.uri,
@@ -78,6 +83,12 @@ nlohmann::json card_suppression(const Request& r, const std::string& code, std::
     const bool keyword_line = block && block->span.line == line0 + 1;
     const std::string title =
         fmt::format("Suppress {} for this {}", code, keyword_line ? "keyword block" : "card");
+    // A `disable=` directive just above takes the code too.
+    if (line0 > 0) {
+        const std::string_view above = raw.sources.line_text(r.file, line0);
+        if (auto end = directive_end(r, above, line0, lint::Suppression::Scope::NextBlock))
+            return action(title, diagnostic, r.uri, text_edit(line0 - 1, *end, line0 - 1, *end, "," + code));
+    }
     return action(title, diagnostic, r.uri,
                   text_edit(line0, 0, line0, 0, fmt::format("{} sphdeck: disable={}\n", r.comment, code)));
 }

@@ -96,8 +96,8 @@ nlohmann::json radioss_keyword_items(std::string_view typed, const Edit& edit) {
 // The ids of `kind` the deck defines, with their titles.
 void id_items(const CheckedDeck& deck, const std::string& kind, const Edit& edit, nlohmann::json& items) {
     std::set<std::string> seen;
-    for (const auto& use : collect_ids(deck)) {
-        if (!use.defines || use.kind != kind || !seen.insert(use.id).second) continue;
+    for (const auto& use : definitions_of(deck, kind)) {
+        if (!seen.insert(use.id).second) continue;
         if (items.size() >= kMaxItems) break;
         items.push_back(item(display_text(use.id), kReference, describe(deck, use), edit));
     }

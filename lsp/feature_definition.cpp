@@ -41,6 +41,7 @@ nlohmann::json definition(const CheckedDeck& deck, grammar::FileId file, TextPos
         if (!found.parameter) return nullptr;
         return location(sources, found.parameter->span);
     }
+    if (auto own = parameter_definition_at(raw, file, at.line, at.column)) return location(sources, own->span);
     auto use = id_at(deck, file, at.line, at.column);
     if (!use) return nullptr;
     if (use->defines) return location(sources, use->span);
@@ -59,7 +60,9 @@ nlohmann::json references(const CheckedDeck& deck, grammar::FileId file, TextPos
     const auto& sources = raw.sources;
     if (file >= sources.size()) return out;
     const LineColumn at = line_column(sources, file, position);
-    if (auto reference = parameter_reference_at(sources, file, at.line, at.column)) {
+    auto reference = parameter_reference_at(sources, file, at.line, at.column);
+    if (!reference) reference = parameter_definition_at(raw, file, at.line, at.column);
+    if (reference) {
         for (grammar::FileId f = 0; f < sources.size(); ++f) {
             const std::uint32_t lines = sources.line_count(f);
             for (std::uint32_t l = 1; l <= lines; ++l) {

@@ -247,10 +247,15 @@ nlohmann::json hover(const CheckedDeck& deck, grammar::FileId file, TextPosition
 namespace {
 std::optional<nlohmann::json> parameter_hover(const CheckedDeck& deck, const grammar::Block& block,
                                               grammar::FileId file, std::uint32_t line, std::uint32_t column) {
-    auto reference = parameter_reference_at(deck.result.deck.sources, file, line, column);
-    if (!reference) return std::nullopt;
     const auto& raw = deck.result.deck;
-    auto found = raw.parameters.find(reference->name, file, block.parameter_epoch);
+    auto reference = parameter_reference_at(raw.sources, file, line, column);
+    std::uint32_t epoch = block.parameter_epoch;
+    if (!reference) {
+        reference = parameter_definition_at(raw, file, line, column);
+        epoch = raw.parameters.epoch();
+    }
+    if (!reference) return std::nullopt;
+    auto found = raw.parameters.find(reference->name, file, epoch);
     if (!found.parameter) {
         return hover_json(fmt::format("parameter `&{}` is not defined before this line", reference->name), raw.sources,
                           reference->span);

@@ -1,6 +1,7 @@
 // textDocument/documentSymbol: the outline of one file: its keyword blocks, *PART blocks with a
 // child per part (id and heading), Radioss headers with their titles.
 #include <fmt/format.h>
+#include <map>
 
 #include "lsp/deck_lookup.hpp"
 #include "lsp/display_text.hpp"
@@ -20,36 +21,38 @@ nlohmann::json line_range(const grammar::SourceMap& sources, grammar::FileId fil
     return {{"start", position_json(sources, file, first, 1)}, {"end", position_json(sources, file, last, length + 1)}};
 }
 
-bool within(const grammar::Span& span, grammar::FileId file, std::uint32_t first, std::uint32_t last) {
-    return span.file == file && span.line >= first && span.line <= last;
-}
+// The model's sections, materials, EOS and parts of one file by the line of their id field, so
+// each block finds its own with a lookup (decks of thousands of parts have thousands of blocks).
+struct FileItems {
+    std::map<std::uint32_t, std::string> ids;            // line -> "id 3"
+    std::multimap<std::uint32_t, const model::Part*> parts;  // line -> part
 
-// The block's own id and title, from the model: "3", "3 water".
-std::string block_detail(const CheckedDeck& deck, const grammar::Block& block, std::uint32_t last) {
-    const auto& m = deck.result.model;
-    const grammar::FileId file = block.span.file;
-    for (const auto& s : m.sections)
-        if (within(s.span, file, block.span.line, last)) return fmt::format("id {}", s.id);
-    for (const auto& x : m.materials)
-        if (within(x.span, file, block.span.line, last)) return fmt::format("id {}", x.id);
-    for (const auto& e : m.equations_of_state)
-        if (within(e.span, file, block.span.line, last)) return fmt::format("id {}", e.id);
-    return {};
-}
+    FileItems(const model::Model& m, grammar::FileId file) {
+        auto add = [&](const grammar::Span& span, const std::string& id) {
+            if (span.file == file) ids.emplace(span.line, fmt::format("id {}", id));
+        };
+        for (const auto& x : m.sections) add(x.span, x.id);
+        for (const auto& x : m.materials) add(x.span, x.id);
+        for (const auto& x : m.equations_of_state) add(x.span, x.id);
+        for (const auto& p : m.parts)
+            if (p.span.file == file) parts.emplace(p.span.line, &p);
+    }
+};
 
-nlohmann::json dyna_symbol(const CheckedDeck& deck, const grammar::Block& block) {
+nlohmann::json dyna_symbol(const CheckedDeck& deck, const grammar::Block& block, const FileItems& items) {
     const auto& raw = deck.result.deck;
     const std::uint32_t last = block_last_line(raw, block);
     nlohmann::json symbol = {{"name", display_text(block.keyword)},
                              {"kind", kStruct},
                              {"range", line_range(raw.sources, block.span.file, block.span.line, last)},
                              {"selectionRange", range_json(raw.sources, block.span)}};
-    std::string detail = block_detail(deck, block, last);
+    std::string detail;
+    if (auto id = items.ids.lower_bound(block.span.line); id != items.ids.end() && id->first <= last) detail = id->second;
     if (block.keyword.rfind("*PART", 0) == 0) {
         nlohmann::json children = nlohmann::json::array();
-        for (const auto& part : deck.result.model.parts) {
-            if (!within(part.span, block.span.file, block.span.line, last)) continue;
-            // The heading line comes just before the PID card (*PART: heading + data per part).
+        for (auto it = items.parts.lower_bound(block.span.line); it != items.parts.end() && it->first <= last; ++it) {
+            const model::Part& part = *it->second;
+            // The heading line comes before the PID card (*PART: heading + data per part).
             const std::uint32_t first = part.span.line > block.span.line + 1 ? part.span.line - 1 : part.span.line;
             children.push_back({{"name", fmt::format("part {}", part.id)},
                                 {"detail", display_text(part.heading)},
@@ -88,9 +91,10 @@ nlohmann::json document_symbols(const CheckedDeck& deck, grammar::FileId file) {
     if (file >= raw.sources.size()) return out;
     const bool radioss = deck.result.model.radioss.has_value();
     const int version = radioss ? model::radioss_version(raw) : 0;
+    const FileItems items(deck.result.model, file);
     for (const grammar::Block& block : raw.blocks) {
         if (block.span.file != file || block.keyword.empty()) continue;
-        out.push_back(radioss ? radioss_symbol(deck, block, version) : dyna_symbol(deck, block));
+        out.push_back(radioss ? radioss_symbol(deck, block, version) : dyna_symbol(deck, block, items));
     }
     return out;
 }

@@ -174,6 +174,7 @@ TEST_CASE("lsp hover: keywords, ids and parameters") {
     const At rho = find(kDeck, "&rho");
     text = hover_text(deck, {rho.line, rho.character + 2});
     CHECK(text.find("parameter **rho** = 1000") != std::string::npos);
+    CHECK(hover_text(deck, {find(kDeck, "R rho").line, 3}).find("parameter **rho** = 1000 (real)") != std::string::npos);
     // A comment line says nothing.
     CHECK(ask(deck, "textDocument/hover", {{"position", position(find(kDeck, "$#   secid"))}}).is_null());
 }
@@ -190,6 +191,11 @@ TEST_CASE("lsp definition and references: part -> section, material, EOS; parame
     const At rho = find(kDeck, "&rho");
     location = ask(deck, "textDocument/definition", {{"position", position({rho.line, rho.character + 1})}});
     CHECK(location["range"]["start"]["line"] == find(kDeck, "R rho").line);
+    // From the definition's name: its one use, and itself with the declaration.
+    auto uses = ask(deck, "textDocument/references",
+                    {{"position", position({find(kDeck, "R rho").line, 3})}, {"context", {{"includeDeclaration", true}}}});
+    REQUIRE(uses.size() == 2);
+    CHECK(uses[0]["range"]["start"]["line"] == rho.line);
 
     // Part 1: named by the PID of both particles.
     auto refs = ask(deck, "textDocument/references",
@@ -312,6 +318,16 @@ TEST_CASE("lsp code actions: suppression comments and the realignment of a value
     REQUIRE(actions.size() == 2);
     CHECK(apply(with_directive, actions[1]["edit"]["changes"]["file:///tmp/main.k"]).rfind(
               "$ sphdeck: disable-file=DK003,DK004 -- legacy\n", 0) == 0);
+    // And one above the card.
+    const std::string with_card_directive = "*KEYWORD\n$ sphdeck: disable=DK002\n*CONTROL_TERMINATION\n      1.0E-3\n*END\n";
+    const auto deck3 = check(with_card_directive);
+    other["range"]["start"]["line"] = 2;
+    actions = ask(deck3, "textDocument/codeAction",
+                  {{"textDocument", {{"uri", "file:///tmp/main.k"}}}, {"context", {{"diagnostics", {other}}}}});
+    REQUIRE(actions.size() == 2);
+    CHECK(actions[0]["title"] == "Suppress DK004 for this keyword block");
+    CHECK(apply(with_card_directive, actions[0]["edit"]["changes"]["file:///tmp/main.k"]) ==
+          "*KEYWORD\n$ sphdeck: disable=DK002,DK004\n*CONTROL_TERMINATION\n      1.0E-3\n*END\n");
 }
 
 TEST_CASE("lsp realign: only when the result is certain") {
