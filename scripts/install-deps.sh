@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages sphdeck builds and tests with, only those missing.
+# Installs the Debian 12 packages sphdeck builds and tests with, only those missing
+# (neovim: the editor test tests/editor/, ctest entry editor-neovim).
 # Runs as root (CI, fresh machines) or through sudo when available.
 #   --fuzz  also Clang 14, its sanitizer and libFuzzer runtimes and its OpenMP library, for the
 #           Clang build and the fuzz targets (fuzz/README.md); the default install stays GCC only.
@@ -9,6 +10,7 @@ packages=(
   tao-pegtl-dev libeigen3-dev libfmt-dev libcli11-dev doctest-dev nlohmann-json3-dev
   libtomlplusplus-dev
   python3 python3-jsonschema
+  neovim
 )
 for arg in "$@"; do
   case $arg in

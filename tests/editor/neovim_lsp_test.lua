@@ -1,0 +1,161 @@
+-- The editor test of issue 16: Debian's Neovim, headless, with editors/neovim/lua/sphdeck.lua, talks
+-- to `sphdeck lsp`: open a deck with a known finding, wait for its diagnostic, hover a field, fix the
+-- finding with an edit, wait for the diagnostic to go, shut the server down.
+--   SPHDECK=build/sphdeck nvim --headless --clean -u tests/editor/neovim_lsp_test.lua
+-- (tests/editor/run_neovim_test.sh sets it up.) Exit 0 on success; otherwise a printed reason and
+-- exit 1 (a check failed) or 3 (the global time limit passed). Every wait is bounded.
+local source_dir = vim.fn.fnamemodify(debug.getinfo(1, "S").source:sub(2), ":p:h:h:h")
+local sphdeck = os.getenv("SPHDECK") or (source_dir .. "/build/sphdeck")
+local deck = source_dir .. "/tests/editor/bad_endcyc.k"
+local time_limit_ms = tonumber(os.getenv("SPHDECK_EDITOR_TIMEOUT_MS") or "20000")
+local started = vim.loop.now()
+
+local function say(text)
+  io.stdout:write("editor-neovim: " .. text .. "\n")
+  io.stdout:flush()
+end
+
+local function fail(reason, code)
+  io.stderr:write("editor-neovim: FAILED: " .. reason .. "\n")
+  io.stderr:flush()
+  -- leave no server behind: a forced stop kills it (client ids count from 1; get_active_clients
+  -- misses a client still initializing)
+  for id = 1, 8 do
+    pcall(vim.lsp.stop_client, id, true)
+  end
+  os.exit(code or 1)
+end
+
+-- The waits below share the global limit and say what they waited for; this timer, 2 s later, ends
+-- the run should something block outside them (vim.wait runs timers).
+local watchdog = vim.loop.new_timer()
+watchdog:start(time_limit_ms + 2000, 0, function()
+  fail(("no result within %d ms (global time limit)"):format(time_limit_ms + 2000), 3)
+end)
+
+local function remaining_ms()
+  return math.max(0, time_limit_ms - (vim.loop.now() - started))
+end
+
+local server_exit = nil -- {code, signal} once the server process ended
+
+-- vim.wait bounded by the global limit; fails with `what` when `condition` never holds, and at once
+-- when the server ends before (unless its end is what is awaited).
+local function wait_for(what, condition, server_may_end)
+  local ended_early = false
+  local done = vim.wait(remaining_ms(), function()
+    if condition() then
+      return true
+    end
+    ended_early = server_exit ~= nil and not server_may_end
+    return ended_early
+  end, 20)
+  if ended_early then
+    fail(("the server ended (exit code %s, signal %s) while waiting for %s"):format(
+      server_exit.code, server_exit.signal, what))
+  elseif not done then
+    fail("timed out waiting for " .. what)
+  end
+end
+
+if vim.fn.executable(sphdeck) ~= 1 then
+  fail("sphdeck executable not found: " .. sphdeck .. " (set SPHDECK)")
+end
+vim.opt.swapfile = false
+vim.opt.shadafile = "NONE"
+
+package.path = source_dir .. "/editors/neovim/lua/?.lua;" .. package.path
+local sphdeck_nvim = require("sphdeck")
+sphdeck_nvim.setup({
+  cmd = { sphdeck, "lsp" },
+  on_exit = function(code, signal)
+    server_exit = { code = code, signal = signal }
+  end,
+})
+-- Server messages on stderr would be useful when the test fails.
+vim.lsp.set_log_level("WARN")
+
+vim.cmd("edit " .. vim.fn.fnameescape(deck))
+local buf = vim.api.nvim_get_current_buf()
+if vim.bo[buf].filetype ~= "lsdyna" then
+  fail("filetype of " .. deck .. " is '" .. vim.bo[buf].filetype .. "', expected lsdyna")
+end
+say("nvim " .. tostring(vim.version().major) .. "." .. tostring(vim.version().minor) .. "." ..
+    tostring(vim.version().patch) .. ", server " .. sphdeck)
+
+local client_id = nil
+wait_for("the server to start and answer initialize", function()
+  -- vim.lsp.get_clients from 0.10 on, vim.lsp.buf_get_clients before
+  local clients = vim.lsp.get_clients and vim.lsp.get_clients({ bufnr = buf }) or vim.lsp.buf_get_clients(buf)
+  for _, client in pairs(clients) do
+    if client.name == "sphdeck" then
+      client_id = client.id
+      return true
+    end
+  end
+  return false
+end)
+wait_for("the server to initialize", function()
+  local client = vim.lsp.get_client_by_id(client_id)
+  return client ~= nil and client.server_capabilities ~= nil and next(client.server_capabilities) ~= nil
+end)
+say("attached, client " .. client_id)
+
+-- 1. The finding of the deck: DK002 at line 6, column 15 (0-based 5, 14), an error.
+local function dk002()
+  for _, d in ipairs(vim.diagnostic.get(buf)) do
+    if d.code == "DK002" or (d.user_data and d.user_data.lsp and d.user_data.lsp.code == "DK002") then
+      return d
+    end
+  end
+  return nil
+end
+wait_for("the DK002 diagnostic", function() return dk002() ~= nil end)
+local d = dk002()
+if d.lnum ~= 5 or d.col ~= 14 then
+  fail(("DK002 at line %d col %d (0-based), expected 5, 14"):format(d.lnum, d.col))
+end
+if d.severity ~= vim.diagnostic.severity.ERROR then
+  fail("DK002 severity " .. tostring(d.severity) .. ", expected ERROR")
+end
+if not d.message:find("10000O", 1, true) then
+  fail("DK002 message does not quote the value: " .. d.message)
+end
+say("diagnostic: " .. d.message)
+
+-- 2. Hover on the ENDTIM value (line 6, column 8).
+local params = {
+  textDocument = { uri = vim.uri_from_bufnr(buf) },
+  position = { line = 5, character = 7 },
+}
+local responses, err = vim.lsp.buf_request_sync(buf, "textDocument/hover", params, math.min(5000, remaining_ms()))
+if not responses then
+  fail("no hover answer: " .. tostring(err))
+end
+local response = responses[client_id]
+if not response or response.error or not response.result then
+  fail("hover answered " .. vim.inspect(response))
+end
+local text = table.concat(vim.lsp.util.convert_input_to_markdown_lines(response.result.contents), "\n")
+if not text:upper():find("ENDTIM", 1, true) then
+  fail("hover on ENDTIM does not name the field:\n" .. text)
+end
+if not text:find("0.002", 1, true) then
+  fail("hover on ENDTIM does not give its value 0.002:\n" .. text)
+end
+say("hover: " .. text:gsub("\n", " | "))
+
+-- 3. Fix ENDCYC (a zero, not the letter O): Neovim sends didChange; the diagnostic must go.
+vim.api.nvim_buf_set_lines(buf, 5, 6, false, { "     0.002     10000" })
+wait_for("the DK002 diagnostic to go after the fix", function() return dk002() == nil end)
+say("diagnostic gone after the edit")
+
+-- 4. Shutdown and exit: the server must end by itself with exit code 0.
+vim.lsp.stop_client(client_id)
+wait_for("the server to exit after shutdown", function() return server_exit ~= nil end, true)
+if server_exit.code ~= 0 or server_exit.signal ~= 0 then
+  fail(("server ended with code %s, signal %s after shutdown"):format(server_exit.code, server_exit.signal))
+end
+say(("passed in %d ms"):format(vim.loop.now() - started))
+watchdog:stop()
+os.exit(0)
