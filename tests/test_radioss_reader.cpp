@@ -77,6 +77,9 @@ TEST_CASE("radioss: RAD001 when the first line is not #RADIOSS STARTER") {
     CHECK(count_code(read_buffer("", "run_0000.rad").diagnostics, "RAD001") == 1);
     CHECK(count_code(read_buffer("#RADIOSS STARTER   \n", "run_0000.rad").diagnostics, "RAD001") == 0);
     CHECK(count_code(read_buffer("/RUN/run/1\n", "run_0001.rad").diagnostics, "RAD001") == 0);  // an engine deck
+    // Another name is an include or a fragment, not a starter deck: no header asked for.
+    CHECK(count_code(read_buffer("/BEGIN\n", "materials.rad").diagnostics, "RAD001") == 0);
+    CHECK(count_code(read_buffer("/BEGIN\n", "parts.inc").diagnostics, "RAD001") == 0);
 }
 
 TEST_CASE("radioss: data before any header and an indented header are reported") {

@@ -91,7 +91,10 @@ void read_one(RawDeck& deck, SourceFile file, const fs::path& directory, const R
     bool one_file = false;
     for (std::size_t b = first_block; b < deck.blocks.size(); ++b)
         one_file = one_file || deck.blocks[b].keyword == "/END/ENGINE";
-    if (!engine && !one_file) check_first_line(deck, id);
+    // Only a file named as a starter deck (<run>_0000.rad, the name the starter reads) must begin
+    // with #RADIOSS STARTER: another name is an include or a fragment (an editor opens those alone).
+    const bool starter_name = ends_with(deck.sources.file(id).display_name, "_0000.rad");
+    if (!engine && !one_file && starter_name) check_first_line(deck, id);
 }
 
 // The engine deck next to a starter, read as a second main file (it has no include chain).
