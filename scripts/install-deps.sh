@@ -10,6 +10,7 @@ packages=(
   tao-pegtl-dev libeigen3-dev libfmt-dev libcli11-dev doctest-dev nlohmann-json3-dev
   libtomlplusplus-dev
   python3 python3-jsonschema
+  python3-vtk9   # VTK's own reader checks the .vtp/.pvd files we write (tests/test_io_writers.cpp)
   neovim
 )
 for arg in "$@"; do
