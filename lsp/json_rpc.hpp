@@ -30,7 +30,9 @@ inline constexpr int server_not_initialized = -32002;
 inline constexpr int request_cancelled = -32800;
 }  // namespace error_code
 
-inline constexpr std::size_t default_max_body = std::size_t{64} << 20;  // 64 MiB
+// 1 GiB: the didOpen of a 10-million-particle deck (about 1 GB of text) still fits; beyond, the
+// message is skipped and the user told (window/showMessage).
+inline constexpr std::size_t default_max_body = std::size_t{1} << 30;
 
 // What one read gives.
 enum class ReadStatus {

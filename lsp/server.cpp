@@ -105,6 +105,13 @@ void Server::handle(const ReadResult& read) {
             send(error_response(nullptr, error_code::parse_error, "Parse error: " + read.error));
             return;
         case ReadStatus::too_large:
+            // No id to answer, and it may have been a didOpen: say so where the user looks.
+            log(read.error);
+            send(notification("window/showMessage",
+                              {{"type", 1}, {"message", "sphdeck: " + read.error +
+                                                            "; a deck this big is not checked in the editor: run "
+                                                            "`sphdeck check` on it"}}));
+            return;
         case ReadStatus::bad_header:
             log(read.error);  // no id to answer: skipped
             return;

@@ -106,3 +106,24 @@ TEST_CASE("lsp server: a request about a file no deck reads answers null, string
     CHECK(error_code(s.answer(3)) == lsp::error_code::invalid_params);
     CHECK(error_code(s.answer(4)) == lsp::error_code::method_not_found);
 }
+
+TEST_CASE("lsp server: a message above the bound is skipped and the user told; the server goes on") {
+    lsp::ServerOptions options;
+    options.max_body = 2048;
+    const json open = notify("textDocument/didOpen",
+                             {{"textDocument",
+                               {{"uri", "file:///tmp/huge.k"}, {"languageId", "lsdyna"}, {"version", 1},
+                                {"text", "*KEYWORD\n" + std::string(4096, '$') + "\n*END\n"}}}});
+    const auto s = test::serve({test::initialize_request(1), open, request(2, "shutdown"), notify("exit")}, options);
+    CHECK(s.exit_code == 0);
+    std::size_t shown = 0;
+    for (const auto& m : s.messages)
+        if (m.value("method", "") == "window/showMessage") {
+            ++shown;
+            CHECK(m["params"]["type"] == 1);
+            CHECK(m["params"]["message"].get<std::string>().find("skipped") != std::string::npos);
+        }
+    CHECK(shown == 1);
+    CHECK(s.publications("file:///tmp/huge.k") == 0);
+    CHECK(s.answer(2).contains("result"));
+}
