@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 #include "test_support.hpp"
 
 using namespace sphdeck;
@@ -42,7 +42,7 @@ bool has_note(const diag::Diagnostic& d, const std::string& text) {
 }  // namespace
 
 TEST_CASE("corpus: 0 entries padding a set list are empty slots, not undefined ids") {
-    auto silent = lint::check_buffer(kFluid +
+    auto silent = engine::check_buffer(kFluid +
                                          "*SET_NODE_LIST\n         1\n         1         2         0         0\n"
                                          "*SET_PART_LIST\n         1\n         1         0         0         0\n"
                                          "*SET_NODE_LIST_GENERATE\n         2\n         1         3         0         0\n",
@@ -52,7 +52,7 @@ TEST_CASE("corpus: 0 entries padding a set list are empty slots, not undefined i
     REQUIRE(silent.model.node_sets.size() == 2);
     CHECK(silent.model.node_sets[0].members == std::vector<long long>{1, 2});
     CHECK(silent.model.node_sets[1].members == std::vector<long long>{1, 2, 3});
-    auto fires = lint::check_buffer(kFluid + "*SET_NODE_LIST\n         1\n         1        99         0         0\n", "d.k");
+    auto fires = engine::check_buffer(kFluid + "*SET_NODE_LIST\n         1\n         1        99         0         0\n", "d.k");
     const diag::Diagnostic* d = find_code(fires.diagnostics, "REF001");
     REQUIRE(d);
     CHECK(d->message == "node set 1 names undefined node(s) 99");
@@ -61,25 +61,25 @@ TEST_CASE("corpus: 0 entries padding a set list are empty slots, not undefined i
 TEST_CASE("corpus: MID 0 on a part of a thermal-only analysis is not a missing material") {
     const std::string part = "*SECTION_SPH\n         1\n*PART\nwafer\n         1         1         0         0         0"
                              "         0         0         1\n";
-    auto thermal = lint::check_buffer("*KEYWORD\n*CONTROL_SOLUTION\n         1\n" + part, "d.k");
+    auto thermal = engine::check_buffer("*KEYWORD\n*CONTROL_SOLUTION\n         1\n" + part, "d.k");
     CHECK(count_code(thermal.diagnostics, "REF004") == 0);
     CHECK(thermal.model.controls.soln.value == 1);
     SUBCASE("structural or coupled: the part has no material, said without a 'material 0'") {
         for (std::string control : {"", "*CONTROL_SOLUTION\n         0\n", "*CONTROL_SOLUTION\n         2\n"}) {
-            auto r = lint::check_buffer("*KEYWORD\n" + control + part, "d.k");
+            auto r = engine::check_buffer("*KEYWORD\n" + control + part, "d.k");
             const diag::Diagnostic* d = find_code(r.diagnostics, "REF004");
             REQUIRE(d);
             CHECK(d->message == "part 1 has no material (MID 0)");
         }
     }
     SUBCASE("thermal-only without a TMID: still no material at all") {
-        auto r = lint::check_buffer("*KEYWORD\n*CONTROL_SOLUTION\n         1\n*SECTION_SPH\n         1\n*PART\nwafer\n"
+        auto r = engine::check_buffer("*KEYWORD\n*CONTROL_SOLUTION\n         1\n*SECTION_SPH\n         1\n*PART\nwafer\n"
                                     "         1         1         0\n",
                                     "d.k");
         CHECK(count_code(r.diagnostics, "REF004") == 1);
     }
     SUBCASE("SECID 0 is a part without section") {
-        auto r = lint::check_buffer("*KEYWORD\n*PART\nshell\n         1         0         0\n", "d.k");
+        auto r = engine::check_buffer("*KEYWORD\n*PART\nshell\n         1         0         0\n", "d.k");
         const diag::Diagnostic* d = find_code(r.diagnostics, "REF003");
         REQUIRE(d);
         CHECK(d->message == "part 1 has no section (SECID 0)");
@@ -87,7 +87,7 @@ TEST_CASE("corpus: MID 0 on a part of a thermal-only analysis is not a missing m
 }
 
 TEST_CASE("corpus: a mesh fragment whose particles each name their own part makes one REF002 and one SPH112") {
-    auto r = lint::check_buffer(particles(3000, true), "d.k");
+    auto r = engine::check_buffer(particles(3000, true), "d.k");
     CHECK(count_code(r.diagnostics, "REF002") == 1);
     CHECK(count_code(r.diagnostics, "SPH112") == 1);
     CHECK(r.diagnostics.size() < 10);
@@ -104,13 +104,13 @@ TEST_CASE("corpus: a mesh fragment whose particles each name their own part make
 }
 
 TEST_CASE("corpus: a few undefined parts keep one finding each; the hint needs its pattern") {
-    auto r = lint::check_buffer(particles(70, false), "d.k");  // 70 particles over parts 1000-1006
+    auto r = engine::check_buffer(particles(70, false), "d.k");  // 70 particles over parts 1000-1006
     CHECK(count_code(r.diagnostics, "REF002") == 1);           // 7 parts > 5: merged
-    auto few = lint::check_buffer(kFluid + "*ELEMENT_SPH\n       1    1001           0.001\n       2    1002           0.001\n",
+    auto few = engine::check_buffer(kFluid + "*ELEMENT_SPH\n       1    1001           0.001\n       2    1002           0.001\n",
                                   "d.k");
     CHECK(count_code(few.diagnostics, "REF002") == 2);
     for (const auto& d : few.diagnostics) CHECK_FALSE(has_note(d, "columns swapped"));
-    auto no_parts = lint::check_buffer(particles(3, false), "d.k");
+    auto no_parts = engine::check_buffer(particles(3, false), "d.k");
     const diag::Diagnostic* d = find_code(no_parts.diagnostics, "REF002");
     REQUIRE(d);
     CHECK(has_note(*d, "the deck defines no *PART"));
@@ -120,10 +120,10 @@ TEST_CASE("corpus: a missing include silences undefined and unused references, n
     test::TempDir dir;
     const std::string body = kFluid + "*SET_NODE_LIST\n         1\n      1001\n*SECTION_SPH\n         7\n"
                                       "*NODE\n       1\n";
-    auto complete = lint::check_file(dir.write("complete.k", body));
+    auto complete = engine::check_file(dir.write("complete.k", body));
     CHECK(count_code(complete.diagnostics, "REF001") == 1);
     CHECK(count_code(complete.diagnostics, "REF007") == 1);
-    auto missing = lint::check_file(dir.write("missing.k", body + "*INCLUDE\nmesh.k\n"));
+    auto missing = engine::check_file(dir.write("missing.k", body + "*INCLUDE\nmesh.k\n"));
     CHECK(count_code(missing.diagnostics, "DK010") == 1);
     CHECK(count_code(missing.diagnostics, "REF001") == 0);
     CHECK(count_code(missing.diagnostics, "REF007") == 0);
@@ -138,26 +138,26 @@ TEST_CASE("corpus: QL 0.0 is the default's zero: no SPH012 away from FORM 12, no
                       "         0" +
                ql + "\n";
     };
-    auto zero = lint::check_buffer(deck("        15", "       0.0"), "d.k");
+    auto zero = engine::check_buffer(deck("        15", "       0.0"), "d.k");
     CHECK(count_code(zero.diagnostics, "SPH012") == 0);
     CHECK(zero.model.controls.sph.ql.value == doctest::Approx(0.01));
-    CHECK(count_code(lint::check_buffer(deck("        15", "      0.05"), "d.k").diagnostics, "SPH012") == 1);
-    CHECK(count_code(lint::check_buffer(deck("        12", "       0.0"), "d.k").diagnostics, "SPH013") == 0);
-    CHECK(count_code(lint::check_buffer(deck("        12", "       0.5"), "d.k").diagnostics, "SPH013") == 1);
+    CHECK(count_code(engine::check_buffer(deck("        15", "      0.05"), "d.k").diagnostics, "SPH012") == 1);
+    CHECK(count_code(engine::check_buffer(deck("        12", "       0.0"), "d.k").diagnostics, "SPH013") == 0);
+    CHECK(count_code(engine::check_buffer(deck("        12", "       0.5"), "d.k").diagnostics, "SPH013") == 1);
 }
 
 TEST_CASE("corpus: blank lines past a keyword's last card are not DK009; a data line is") {
-    auto blank = lint::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n     0.002\n\n   \n*END\n", "d.k");
+    auto blank = engine::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n     0.002\n\n   \n*END\n", "d.k");
     CHECK(count_code(blank.diagnostics, "DK009") == 0);
-    auto data = lint::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n     0.002\n\n       1.0\n*END\n", "d.k");
+    auto data = engine::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n     0.002\n\n       1.0\n*END\n", "d.k");
     CHECK(count_code(data.diagnostics, "DK009") == 1);
 }
 
 TEST_CASE("corpus: a title longer than 80 columns is not DK006; a data card is") {
     const std::string long_title(95, 'T');
-    auto title = lint::check_buffer("*KEYWORD\n*TITLE\n" + long_title + "\n*END\n", "d.k");
+    auto title = engine::check_buffer("*KEYWORD\n*TITLE\n" + long_title + "\n*END\n", "d.k");
     CHECK(count_code(title.diagnostics, "DK006") == 0);
-    auto card = lint::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n     0.002" + std::string(75, ' ') + "9\n*END\n", "d.k");
+    auto card = engine::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n     0.002" + std::string(75, ' ') + "9\n*END\n", "d.k");
     CHECK(count_code(card.diagnostics, "DK006") == 1);
 }
 
@@ -166,7 +166,7 @@ TEST_CASE("corpus: a mistake repeated on every line of a block is five findings 
     for (int i = 1; i <= 3000; ++i) deck += std::to_string(i) + "," + std::to_string(i) + ".0,0.0,0.0\n";
     deck += "*ELEMENT_SPH\n";
     for (int i = 1; i <= 3000; ++i) deck += std::to_string(i) + ",1,mass\n";
-    auto r = lint::check_buffer(deck, "d.k");
+    auto r = engine::check_buffer(deck, "d.k");
     CHECK(count_code(r.diagnostics, "DK003") == 6);
     std::size_t summaries = 0;
     for (const auto& d : r.diagnostics)
@@ -177,15 +177,15 @@ TEST_CASE("corpus: a mistake repeated on every line of a block is five findings 
 }
 
 TEST_CASE("corpus: a word too long for a number field is one finding (DK003), a number too long is DK005") {
-    auto word = lint::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n0.002,0,0.0,<PAB_TTF-1.1>\n*END\n", "d.k");
+    auto word = engine::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n0.002,0,0.0,<PAB_TTF-1.1>\n*END\n", "d.k");
     CHECK(count_code(word.diagnostics, "DK003") == 1);
     CHECK(count_code(word.diagnostics, "DK005") == 0);
-    auto number = lint::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n0.00200000001,0\n*END\n", "d.k");
+    auto number = engine::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n0.00200000001,0\n*END\n", "d.k");
     CHECK(count_code(number.diagnostics, "DK005") == 1);
 }
 
 TEST_CASE("corpus: a number glued across a field boundary says so in a note on its DK003") {
-    auto r = lint::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n     1.0E-3\n*DEFINE_CURVE\n         1\n"
+    auto r = engine::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n     1.0E-3\n*DEFINE_CURVE\n         1\n"
                                 "       9.99990000E+03      0.00000000E+00\n*END\n",
                                 "d.k");
     REQUIRE(count_code(r.diagnostics, "DK003") == 2);
@@ -195,7 +195,7 @@ TEST_CASE("corpus: a number glued across a field boundary says so in a note on i
     CHECK(notes[0] == "'1.0E-3' runs on past column 10, so the field holds only '1.0E-'");
     CHECK(notes[1] == "'9.99990000E+03' of the field before runs on into this one at column 21: the field before "
                       "holds only '9.99990000E+0'");
-    auto word = lint::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n     abcdefghij\n*END\n", "d.k");
+    auto word = engine::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n     abcdefghij\n*END\n", "d.k");
     const diag::Diagnostic* d = find_code(word.diagnostics, "DK003");
     REQUIRE(d);
     CHECK(d->notes.empty());  // glued, but no number: nothing to explain

@@ -13,7 +13,7 @@
 #include <tuple>
 
 #include "grammar/radioss/reader.hpp"
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 
 namespace fs = std::filesystem;
 using namespace sphdeck;
@@ -67,7 +67,7 @@ std::multiset<Expectation> expectations(const grammar::SourceMap& sources) {
     return out;
 }
 
-std::multiset<Expectation> found(const lint::CheckResult& r) {
+std::multiset<Expectation> found(const engine::CheckResult& r) {
     std::multiset<Expectation> out;
     for (const auto& d : r.diagnostics) {
         if (d.span.valid()) out.insert({r.deck.sources.file(d.span.file).display_name, d.span.line, d.code});
@@ -105,7 +105,7 @@ TEST_CASE("decks: every test deck produces exactly the diagnostics it declares")
     CHECK(decks.size() >= 10);
     for (const auto& deck : decks) {
         CAPTURE(deck.string());
-        lint::CheckResult r = lint::check_file(deck.string());
+        engine::CheckResult r = engine::check_file(deck.string());
         auto expected = expectations(r.deck.sources);
         auto actual = found(r);
         std::multiset<Expectation> missing, unexpected;

@@ -11,7 +11,7 @@
 
 #include "grammar/keywords/generated_layouts.hpp"
 #include "grammar/keywords/schema.hpp"
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 
 using namespace sphdeck;
 using keywords::CardSpec;
@@ -146,7 +146,7 @@ TEST_CASE("generated layouts: differences from the hand-written tables are liste
 }
 
 TEST_CASE("generated layouts: a pydyna integer field is checked as a number and called an integer field") {
-    auto r = lint::check_buffer("*KEYWORD\n*LOAD_NODE_POINT\n        80       abc\n*NODE\n      80\n", "d.k");
+    auto r = engine::check_buffer("*KEYWORD\n*LOAD_NODE_POINT\n        80       abc\n*NODE\n      80\n", "d.k");
     REQUIRE(r.diagnostics.size() >= 1);
     bool found = false;
     for (const auto& d : r.diagnostics)

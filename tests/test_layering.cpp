@@ -37,10 +37,7 @@ const std::set<std::pair<std::string, std::string>> kHeaderOnly = {
     {"diag", "grammar/source_map.hpp"},  // a diagnostic's span
     {"grammar", "diag/diagnostic.hpp"},  // the readers' findings
 };
-const std::map<std::string, std::string> kFileExceptions = {
-    // Transitional: forwards lint::check_file & co. to engine/ for branches written before issue 15.
-    {"lint/pipeline.hpp", "engine"},
-};
+const std::map<std::string, std::string> kFileExceptions = {};  // none today
 
 struct Violation {
     std::string file;

@@ -1,14 +1,14 @@
 // The typed model built from decoded cards.
 #include <doctest/doctest.h>
 
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 #include "test_support.hpp"
 
 using namespace sphdeck;
 using test::count_code;
 
 TEST_CASE("model: controls, sections, parts and particles of the demo deck") {
-    auto r = lint::check_file(std::string(SPHDECK_SOURCE_DIR) + "/decks/demo/dam_break_2d.k");
+    auto r = engine::check_file(std::string(SPHDECK_SOURCE_DIR) + "/decks/demo/dam_break_2d.k");
     const model::Model& m = r.model;
     CHECK(m.controls.sph.present);
     CHECK(m.controls.sph.idim.value == model::Dimension::PlaneStrain);
@@ -27,7 +27,7 @@ TEST_CASE("model: controls, sections, parts and particles of the demo deck") {
 }
 
 TEST_CASE("model: blank fields take defaults and say so; zero means default where documented") {
-    auto r = lint::check_buffer("*KEYWORD\n*CONTROL_SPH\n                              2\n*SECTION_SPH\n         1       0.0\n", "d.k");
+    auto r = engine::check_buffer("*KEYWORD\n*CONTROL_SPH\n                              2\n*SECTION_SPH\n         1       0.0\n", "d.k");
     const auto& c = r.model.controls.sph;
     CHECK(c.ncbs.value == 1);
     CHECK_FALSE(c.ncbs.explicit_value);
@@ -40,14 +40,14 @@ TEST_CASE("model: blank fields take defaults and say so; zero means default wher
 }
 
 TEST_CASE("model: IDIM 0 is a warning without a default, not an out-of-range error") {
-    auto r = lint::check_buffer("*KEYWORD\n*CONTROL_SPH\n                             0\n", "d.k");
+    auto r = engine::check_buffer("*KEYWORD\n*CONTROL_SPH\n                             0\n", "d.k");
     CHECK(count_code(r.diagnostics, "DK007") == 0);
     REQUIRE(count_code(r.diagnostics, "DK008") == 1);
     CHECK(test::find_code(r.diagnostics, "DK008")->severity == diag::Severity::Warning);
 }
 
 TEST_CASE("model: NEND generates particles; *SET_NODE_LIST_TITLE members exclude the header") {
-    auto r = lint::check_buffer(
+    auto r = engine::check_buffer(
         "*KEYWORD\n*NODE\n       1\n       2\n       3\n*ELEMENT_SPH\n       1       1          1.0e-3       3\n"
         "*SET_NODE_LIST_TITLE\noutlet\n         6\n         1         2\n",
         "d.k");

@@ -10,7 +10,7 @@
 #include "diag/render_github.hpp"
 #include "diag/render_json.hpp"
 #include "diag/render_sarif.hpp"
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 #include "lint/registry.hpp"
 #include "lint/rule_catalog.hpp"
 #include "run_sphdeck.hpp"
@@ -24,7 +24,7 @@ namespace {
 // DK003 on line 4, columns 1-10 of the only card.
 const std::string kBadReal = "*KEYWORD\n*CONTROL_TERMINATION\n$#  endtim\nabc\n*END\n";
 
-json json_of(const lint::CheckResult& r, const diag::RunSummary& summary = {}) {
+json json_of(const engine::CheckResult& r, const diag::RunSummary& summary = {}) {
     auto report = diag::make_json_report(lint::rule_catalog());
     report->add(r.deck.sources, r.diagnostics);
     return json::parse(report->finish(summary));
@@ -33,7 +33,7 @@ json json_of(const lint::CheckResult& r, const diag::RunSummary& summary = {}) {
 }  // namespace
 
 TEST_CASE("output: json carries code, name, location, notes and summary") {
-    lint::CheckResult r = lint::check_buffer(kBadReal, "main.k");
+    engine::CheckResult r = engine::check_buffer(kBadReal, "main.k");
     r.diagnostics.push_back({"DK018", diag::Severity::Warning, "deck-wide", grammar::Span{}, {{grammar::Span{}, "n"}}});
     diag::RunSummary summary;
     summary.files = 1;
@@ -71,7 +71,7 @@ TEST_CASE("output: json names the include chain, main deck first") {
     test::TempDir dir;
     dir.write("parts.k", "*CONTROL_TERMINATION\nabc\n");
     const std::string main = dir.write("main.k", "*KEYWORD\n*INCLUDE\nparts.k\n*END\n");
-    const json doc = json_of(lint::check_file(main));
+    const json doc = json_of(engine::check_file(main));
     const json* found = nullptr;
     for (const json& d : doc["diagnostics"])
         if (d["code"] == "DK003") found = &d;
@@ -83,13 +83,13 @@ TEST_CASE("output: json names the include chain, main deck first") {
 }
 
 TEST_CASE("output: json survives bytes that are not UTF-8") {
-    lint::CheckResult r = lint::check_buffer(kBadReal, "main.k");
+    engine::CheckResult r = engine::check_buffer(kBadReal, "main.k");
     r.diagnostics[0].message = "bad \xff byte";
     CHECK(json_of(r)["diagnostics"][0]["message"] == "bad \xEF\xBF\xBD byte");
 }
 
 TEST_CASE("output: sarif lists every rule and maps results") {
-    lint::CheckResult r = lint::check_buffer(kBadReal, "main.k");
+    engine::CheckResult r = engine::check_buffer(kBadReal, "main.k");
     r.diagnostics[0].notes.push_back({grammar::Span{0, 2, 1, 21}, "keyword here"});
     auto report = diag::make_sarif_report(lint::rule_catalog());
     report->add(r.deck.sources, r.diagnostics);
@@ -141,7 +141,7 @@ TEST_CASE("output: sarif validates against the SARIF 2.1.0 schema") {
     test::TempDir dir;
     dir.write("inc/part.k", "*CONTROL_TERMINATION\nabc\n*FOO\n");
     const std::string main = dir.write("main.k", "units\n*KEYWORD\n*INCLUDE\ninc/part.k\n*INCLUDE\nmissing.k\n*END\n");
-    lint::CheckResult r = lint::check_file(main);
+    engine::CheckResult r = engine::check_file(main);
     r.diagnostics.push_back({"XX999", diag::Severity::Info, "unregistered", grammar::Span{}, {}});
     auto report = diag::make_sarif_report(lint::rule_catalog());
     report->add(r.deck.sources, r.diagnostics);

@@ -2,7 +2,7 @@
 #include <doctest/doctest.h>
 
 #include "grammar/dyna/reader.hpp"
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 #include "test_support.hpp"
 
 using namespace sphdeck;
@@ -40,14 +40,14 @@ TEST_CASE("parameters: free format pairs") {
 }
 
 TEST_CASE("parameters: &name and -&name substitute in fields, right-justified references too") {
-    auto r = lint::check_buffer(
+    auto r = engine::check_buffer(
         "*PARAMETER\nR tend    2.5\n*CONTROL_TERMINATION\n     &tend\n*CONTROL_TIMESTEP\n         0    -&tend\n", "d.k");
     CHECK(count_code(r.diagnostics, "DK012") == 0);
     CHECK(count_code(r.diagnostics, "DK003") == 0);
 }
 
 TEST_CASE("parameters: undefined, used before definition, and wrong type") {
-    auto r = lint::check_buffer(
+    auto r = engine::check_buffer(
         "*CONTROL_TERMINATION\n     &tend\n*PARAMETER\nR tend    2.5\nC word    abc       R x            1.5\n"
         "*CONTROL_TERMINATION\n     &word\n*CONTROL_SPH\n        &x\n",
         "d.k");
@@ -97,7 +97,7 @@ TEST_CASE("parameters: *PARAMETER_DUPLICATION decides what a redefinition does")
 TEST_CASE("parameters: case-only differences are reported") {
     auto deck = read_buffer("*PARAMETER_DUPLICATION\n         4\n*PARAMETER\nR Rho     1.0\nR rho     2.0\n", "d.k");
     CHECK(count_code(deck.diagnostics, "DK024") == 1);
-    auto r = lint::check_buffer("*PARAMETER\nR Tend    1.0\n*CONTROL_TERMINATION\n     &tend\n", "d.k");
+    auto r = engine::check_buffer("*PARAMETER\nR Tend    1.0\n*CONTROL_TERMINATION\n     &tend\n", "d.k");
     CHECK(count_code(r.diagnostics, "DK024") == 1);
     CHECK(count_code(r.diagnostics, "DK012") == 0);
 }
@@ -109,7 +109,7 @@ TEST_CASE("parameters: *PARAMETER_LOCAL is seen by its file and its includes onl
     dir.write("global.k", "*PARAMETER\nR glob    1.0\n");
     auto main = dir.write("main.k",
                           "*INCLUDE\nlocal.k\nglobal.k\n*CONTROL_TIMESTEP\n     &glob\n*CONTROL_TERMINATION\n     &loc\n");
-    auto r = lint::check_file(main);
+    auto r = engine::check_file(main);
     // The sibling's global parameter is visible; the local one is not, outside local.k's tree.
     REQUIRE(count_code(r.diagnostics, "DK012") == 1);
     const auto* d = test::find_code(r.diagnostics, "DK012");

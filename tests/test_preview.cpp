@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 #include <random>
 
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 #include "preproc/nearest_neighbours.hpp"
 #include "preproc/neighbour_grid.hpp"
 #include "preproc/preview.hpp"
@@ -67,7 +67,7 @@ struct LatticeDeck {
 };
 
 model::Model model_of(const std::string& deck) {
-    return lint::check_buffer(deck, "lattice.k").model;
+    return engine::check_buffer(deck, "lattice.k").model;
 }
 
 }  // namespace
@@ -327,7 +327,7 @@ TEST_CASE("preview: parts, missing nodes and progress") {
 }
 
 TEST_CASE("preview: the demo dam break deck: 20 neighbours inside, no preview finding") {
-    const lint::CheckResult r = lint::check_file(std::string(SPHDECK_SOURCE_DIR) + "/decks/demo/dam_break_2d.k");
+    const engine::CheckResult r = engine::check_file(std::string(SPHDECK_SOURCE_DIR) + "/decks/demo/dam_break_2d.k");
     const Preview p = compute_preview(r.model);
     CHECK(p.dimension == 2);
     REQUIRE(p.parts.size() == 1);

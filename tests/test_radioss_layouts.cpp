@@ -4,7 +4,7 @@
 #include <doctest/doctest.h>
 
 #include "grammar/read_deck.hpp"
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 #include "test_support.hpp"
 
 using namespace sphdeck;
@@ -19,17 +19,17 @@ std::string deck(const std::string& body, int version) {
     return "#RADIOSS STARTER\n/BEGIN\nrun\n" + i10(std::to_string(version)) + "\n" + body + "/END\n";
 }
 
-lint::CheckResult check(const std::string& text) {
-    return lint::check_buffer(text, "deck_0000.rad", {}, grammar::DeckFormat::Radioss);
+engine::CheckResult check(const std::string& text) {
+    return engine::check_buffer(text, "deck_0000.rad", {}, grammar::DeckFormat::Radioss);
 }
 
-std::size_t warnings_and_errors(const lint::CheckResult& r) {
+std::size_t warnings_and_errors(const engine::CheckResult& r) {
     std::size_t n = 0;
     for (const auto& d : r.diagnostics) n += d.severity != diag::Severity::Info;
     return n;
 }
 
-const model::RadiossFacts& facts(const lint::CheckResult& r) {
+const model::RadiossFacts& facts(const engine::CheckResult& r) {
     REQUIRE(r.model.radioss.has_value());
     return *r.model.radioss;
 }

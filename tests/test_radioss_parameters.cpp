@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 #include "model/radioss_parameters.hpp"
 #include "test_support.hpp"
 
@@ -28,13 +28,13 @@ std::string integer_parameter(int id, const std::string& name, const std::string
     return fmt::format("/PARAMETER/GLOBAL/INTEGER/{}\ntitle\n{:<10}{:>10}\n", id, name, value);
 }
 
-lint::CheckResult check(const std::string& body) {
-    return lint::check_buffer("#RADIOSS STARTER\n/BEGIN\nrun\n      2026\n" + body + "/END\n", "deck_0000.rad", {},
+engine::CheckResult check(const std::string& body) {
+    return engine::check_buffer("#RADIOSS STARTER\n/BEGIN\nrun\n      2026\n" + body + "/END\n", "deck_0000.rad", {},
                               grammar::DeckFormat::Radioss);
 }
 
 // The x coordinate the model holds for node `id`.
-double x_of(const lint::CheckResult& r, long long id) {
+double x_of(const engine::CheckResult& r, long long id) {
     const auto& n = r.model.nodes;
     for (std::size_t i = 0; i < n.id.size(); ++i)
         if (n.id[i] == id) return n.x[i];

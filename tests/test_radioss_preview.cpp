@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 #include "preproc/preview.hpp"
 #include "preproc/radioss_formulas.hpp"
 #include "run_sphdeck.hpp"
@@ -21,12 +21,12 @@ namespace {
 const std::string kDecks = std::string(SPHDECK_SOURCE_DIR) + "/decks/tests/rad/preview/";
 
 struct Loaded {
-    lint::CheckResult result;
+    engine::CheckResult result;
     preproc::Preview preview;
 };
 
 Loaded load(const std::string& path) {
-    Loaded l{lint::check_file(path), {}};
+    Loaded l{engine::check_file(path), {}};
     REQUIRE(l.result.model.radioss.has_value());
     l.preview = preproc::compute_preview(l.result.model);
     REQUIRE(l.preview.radioss.has_value());
@@ -234,7 +234,7 @@ namespace {
 
 // A 3 x 3 x 3 lattice of pitch 1 whose cells take the property's mass; `card2` is the /PROP/SPH
 // Order, h, Xi_Stab line (empty: no such line). Few neighbours either way: SPH118.
-lint::CheckResult sparse_lattice(const std::string& mp, const std::string& card2) {
+engine::CheckResult sparse_lattice(const std::string& mp, const std::string& card2) {
     std::string s = "#RADIOSS STARTER\n/BEGIN\nsparse\n      2026\n"  // lines 1-4
                     "/PART/2\nwater\n         2         3         0\n"   // lines 5-7
                     "/PROP/SPH/2\nwater particles\n" +                    // lines 8-9
@@ -248,7 +248,7 @@ lint::CheckResult sparse_lattice(const std::string& mp, const std::string& card2
             for (int k = 0; k < 3; ++k) s += fmt::format("{:>10}{:>20.1f}{:>20.1f}{:>20.1f}\n", id++, i * 1.0, j * 1.0, k * 1.0);
     s += "/SPHCEL/2\n";
     for (long long n = 1; n < id; ++n) s += fmt::format("{:>10}         0\n", n);
-    return lint::check_buffer(s + "/END\n", "sparse_0000.rad", {}, grammar::DeckFormat::Radioss);
+    return engine::check_buffer(s + "/END\n", "sparse_0000.rad", {}, grammar::DeckFormat::Radioss);
 }
 
 }  // namespace

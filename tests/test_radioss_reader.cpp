@@ -10,7 +10,7 @@
 #include "grammar/radioss/line_grammar.hpp"
 #include "grammar/radioss/reader.hpp"
 #include "grammar/read_deck.hpp"
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 #include "model/radioss_decoder.hpp"
 #include "test_support.hpp"
 
@@ -29,11 +29,11 @@ std::string deck(const std::string& body, int version = 2026) {
     return "#RADIOSS STARTER\n/BEGIN\nrun\n" + i10(std::to_string(version)) + "\n" + body + "/END\n";
 }
 
-lint::CheckResult check(const std::string& text, const std::string& name = "deck_0000.rad") {
-    return lint::check_buffer(text, name, {}, grammar::DeckFormat::Radioss);
+engine::CheckResult check(const std::string& text, const std::string& name = "deck_0000.rad") {
+    return engine::check_buffer(text, name, {}, grammar::DeckFormat::Radioss);
 }
 
-const model::RadiossFacts& facts(const lint::CheckResult& r) {
+const model::RadiossFacts& facts(const engine::CheckResult& r) {
     REQUIRE(r.model.radioss.has_value());
     return *r.model.radioss;
 }
@@ -113,7 +113,7 @@ TEST_CASE("radioss: an included file's blocks start at its first header, with it
     dir.write("sub/nodes.inc", "Copyright> text\n/NODE\n         9                 1.0                 2.0                 3.0\n");
     const std::string main = dir.write(
         "m_0000.rad", deck("/NODE\n" + i10("1") + "\n#include sub/lead.inc\n" + i10("8") + "\n#include sub/nodes.inc\n"));
-    auto r = lint::check_file(main);
+    auto r = engine::check_file(main);
     REQUIRE(r.model.nodes.id.size() == 3);
     CHECK(r.model.nodes.id[0] == 1);
     CHECK(r.model.nodes.id[1] == 8);  // the block goes on after an include without headers
@@ -130,7 +130,7 @@ TEST_CASE("radioss: an included file's blocks start at its first header, with it
     // After an included file with blocks of its own, the includer's lines before its next
     // header belong to no block sphdeck can follow: reported, not read into the child's block.
     const std::string after = dir.write("n_0000.rad", deck("/NODE\n#include sub/nodes.inc\n" + i10("8") + "\n"));
-    auto a = lint::check_file(after);
+    auto a = engine::check_file(after);
     CHECK(a.model.nodes.id.size() == 1);
     CHECK(count_code(a.diagnostics, "DK027") == 1);
 
@@ -169,7 +169,7 @@ TEST_CASE("radioss: the engine deck next to the starter is read; /DT cards belon
                              i10("1") + "\n";
     const std::string starter = dir.write("run_0000.rad", deck(body));
     dir.write("run_0001.rad", "/RUN/run/1\n  1.0\n/DT/SPHCEL/STOP\n 0.3, 1.0E-7\n/DT/NODA/CST/1\n0.67 0.0\n/END\n");
-    auto r = lint::check_file(starter);
+    auto r = engine::check_file(starter);
     REQUIRE(r.deck.sources.size() == 2);
     const auto& f = facts(r);
     CHECK(f.engine_deck);
@@ -201,7 +201,7 @@ TEST_CASE("radioss: format detection by content, then by name") {
     CHECK(grammar::detect_format("$ c\n*KEYWORD\n", "x.rad") == DeckFormat::LsDyna);
     CHECK(grammar::detect_format("", "run_0000.rad") == DeckFormat::Radioss);
     CHECK(grammar::detect_format("", "deck.k") == DeckFormat::LsDyna);
-    auto r = lint::check_buffer(deck("/NODE\n" + i10("3") + "\n"), "plain.txt", {}, std::nullopt);
+    auto r = engine::check_buffer(deck("/NODE\n" + i10("3") + "\n"), "plain.txt", {}, std::nullopt);
     CHECK(r.model.radioss.has_value());
     CHECK(r.model.nodes.id.size() == 1);
 }
@@ -439,7 +439,7 @@ TEST_CASE("radioss: bad input never crashes the reader or the decoder") {
                                   deck("/SPHCEL/x\n1\n/BRICK/2\n1 2 3\n/DT/SPHCEL\n")};
     for (const auto& text : inputs) {
         CHECK_NOTHROW(check(text, "fuzz_0000.rad"));
-        CHECK_NOTHROW(lint::check_buffer(text, "fuzz.rad", {}, std::nullopt));
+        CHECK_NOTHROW(engine::check_buffer(text, "fuzz.rad", {}, std::nullopt));
     }
 }
 

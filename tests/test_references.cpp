@@ -4,7 +4,7 @@
 #include <chrono>
 #include <fmt/format.h>
 
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 #include "test_support.hpp"
 
 using namespace sphdeck;
@@ -19,17 +19,17 @@ const std::string kPart =
 TEST_CASE("references: a missing node include makes a handful of findings, not one per particle") {
     std::string cards;
     for (int i = 1; i <= 1000; ++i) cards += fmt::format("{:8d}       1           0.001\n", i);
-    auto r = lint::check_buffer(kPart + "*ELEMENT_SPH\n" + cards, "d.k");
+    auto r = engine::check_buffer(kPart + "*ELEMENT_SPH\n" + cards, "d.k");
     CHECK(count_code(r.diagnostics, "REF001") == 6);  // five named, one summary of the 995 others
     // An NEND range needs the nodes it names: without them it is refused where it is written (issue 14).
-    auto range = lint::check_buffer(kPart + "*ELEMENT_SPH\n       1       1           0.001    1000\n", "d.k");
+    auto range = engine::check_buffer(kPart + "*ELEMENT_SPH\n       1       1           0.001    1000\n", "d.k");
     CHECK(count_code(range.diagnostics, "DK007") == 1);
     CHECK(count_code(range.diagnostics, "REF001") == 1);
 }
 
 TEST_CASE("references: a huge _GENERATE range is bounded, reported, and fast") {
     auto start = std::chrono::steady_clock::now();
-    auto r = lint::check_buffer(kPart + "*NODE\n       1\n*SET_NODE_LIST_GENERATE\n         1\n         1 200000000\n",
+    auto r = engine::check_buffer(kPart + "*NODE\n       1\n*SET_NODE_LIST_GENERATE\n         1\n         1 200000000\n",
                                 "d.k");
     CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(5));
     REQUIRE(r.model.node_sets.size() == 1);
@@ -38,7 +38,7 @@ TEST_CASE("references: a huge _GENERATE range is bounded, reported, and fast") {
 }
 
 TEST_CASE("references: integral reals in id fields are the ids DK004 says they are") {
-    auto r = lint::check_buffer(
+    auto r = engine::check_buffer(
         "*KEYWORD\n*SECTION_SPH\n         1\n*MAT_NULL\n         1    1000.0\n*PART\np\n         1       1.0         1"
         "       0.0\n",
         "d.k");
@@ -48,13 +48,13 @@ TEST_CASE("references: integral reals in id fields are the ids DK004 says they a
 }
 
 TEST_CASE("references: *MAT_ADD_* and *MAT_THERMAL_* do not define materials") {
-    auto r = lint::check_buffer(kPart + "*MAT_ADD_THERMAL_EXPANSION\n         1         0    1.0e-5\n", "d.k");
+    auto r = engine::check_buffer(kPart + "*MAT_ADD_THERMAL_EXPANSION\n         1         0    1.0e-5\n", "d.k");
     CHECK(count_code(r.diagnostics, "REF006") == 0);
     CHECK(r.model.materials.size() == 1);
 }
 
 TEST_CASE("references: sections of *DEFINE_ADAPTIVE_SOLID_TO_SPH and parts of *PART_CONTACT count") {
-    auto r = lint::check_buffer(kPart +
+    auto r = engine::check_buffer(kPart +
                                     "*SECTION_SPH\n         2\n*DEFINE_ADAPTIVE_SOLID_TO_SPH\n         1         0         1"
                                     "         3         2         0         0\n*PART_CONTACT\nsteel\n         7         1"
                                     "         1\n       0.1       0.1\n",
@@ -64,7 +64,7 @@ TEST_CASE("references: sections of *DEFINE_ADAPTIVE_SOLID_TO_SPH and parts of *P
 }
 
 TEST_CASE("references: an unreadable PID is DK002 only") {
-    auto r = lint::check_buffer(kPart + "*NODE\n       1\n*ELEMENT_SPH\n       1     abc           0.001\n", "d.k");
+    auto r = engine::check_buffer(kPart + "*NODE\n       1\n*ELEMENT_SPH\n       1     abc           0.001\n", "d.k");
     CHECK(count_code(r.diagnostics, "DK002") == 1);
     CHECK(count_code(r.diagnostics, "REF002") == 0);
 }
@@ -77,7 +77,7 @@ TEST_CASE("references: findings on an OpenRadioss deck name its own keywords") {
         "/PART/2\nwater\n         7         9         0\n"
         "/NODE\n      1001                 1.0                 1.0                 1.0\n"
         "/SPHCEL/2\n      1001         0\n      1002         0\n/END\n";
-    auto r = lint::check_buffer(deck, "ref_0000.rad", {}, std::nullopt);
+    auto r = engine::check_buffer(deck, "ref_0000.rad", {}, std::nullopt);
     const diag::Diagnostic* node = test::find_code(r.diagnostics, "REF001");
     const diag::Diagnostic* section = test::find_code(r.diagnostics, "REF003");
     const diag::Diagnostic* material = test::find_code(r.diagnostics, "REF004");
@@ -92,37 +92,37 @@ TEST_CASE("references: findings on an OpenRadioss deck name its own keywords") {
 
 TEST_CASE("references: ids named by generated keywords are followed (REF009 and friends)") {
     const std::string load = "*LOAD_NODE_POINT\n        80         3        12       1.0\n*NODE\n      80\n";
-    auto r = lint::check_buffer(kPart + load, "d.k");
+    auto r = engine::check_buffer(kPart + load, "d.k");
     REQUIRE(count_code(r.diagnostics, "REF009") == 1);
     CHECK(r.model.id_references.size() == 2);  // NID (node 80) and LCID (curve 12)
     // Defined as a *DEFINE_CURVE_TITLE (title line first), a table or a function: the same id space.
     for (const char* curve : {"*DEFINE_CURVE_TITLE\nload\n        12\n       0.0       1.0\n",
                               "*DEFINE_TABLE\n        12\n       0.0         1\n", "*DEFINE_FUNCTION\n        12\nf(t)=t\n"})
-        CHECK(count_code(lint::check_buffer(kPart + load + curve, "d.k").diagnostics, "REF009") == 0);
+        CHECK(count_code(engine::check_buffer(kPart + load + curve, "d.k").diagnostics, "REF009") == 0);
     // A curve defined through a parameter cannot be judged: the kind is skipped.
-    CHECK(count_code(lint::check_buffer(kPart + "*PARAMETER\nI lc              13\n" + load + "*DEFINE_CURVE\n&lc\n", "d.k").diagnostics,
+    CHECK(count_code(engine::check_buffer(kPart + "*PARAMETER\nI lc              13\n" + load + "*DEFINE_CURVE\n&lc\n", "d.k").diagnostics,
                      "REF009") == 0);
     // Ids in a missing include cannot be matched.
-    CHECK(count_code(lint::check_buffer(kPart + load + "*INCLUDE\nmissing.k\n", "d.k").diagnostics, "REF009") == 0);
+    CHECK(count_code(engine::check_buffer(kPart + load + "*INCLUDE\nmissing.k\n", "d.k").diagnostics, "REF009") == 0);
 }
 
 TEST_CASE("references: a type field decides what a generated keyword's id names") {
     const std::string contact = "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n         9         1         {}         3\n       0.1\n";
     // SURFATYP 3: part 9 (undefined, REF002); 4: node set 9 (REF008); 5: all (not judged);
     // 0 on the node side of a node-to-surface contact: not a segment set.
-    CHECK(count_code(lint::check_buffer(kPart + fmt::format(fmt::runtime(contact), 3), "d.k").diagnostics, "REF002") == 1);
-    CHECK(count_code(lint::check_buffer(kPart + fmt::format(fmt::runtime(contact), 4), "d.k").diagnostics, "REF008") == 1);
+    CHECK(count_code(engine::check_buffer(kPart + fmt::format(fmt::runtime(contact), 3), "d.k").diagnostics, "REF002") == 1);
+    CHECK(count_code(engine::check_buffer(kPart + fmt::format(fmt::runtime(contact), 4), "d.k").diagnostics, "REF008") == 1);
     for (int type : {0, 5}) {
-        auto r = lint::check_buffer(kPart + fmt::format(fmt::runtime(contact), type), "d.k");
+        auto r = engine::check_buffer(kPart + fmt::format(fmt::runtime(contact), type), "d.k");
         CHECK(count_code(r.diagnostics, "REF002") + count_code(r.diagnostics, "REF008") == 0);
     }
     // The data card of a *PART_ variant: its SECID is the part's, reported once by REF003.
-    auto jet = lint::check_buffer(kPart + "*PART_INERTIA\nsteel\n         7         5         5\n", "d.k");
+    auto jet = engine::check_buffer(kPart + "*PART_INERTIA\nsteel\n         7         5         5\n", "d.k");
     CHECK(count_code(jet.diagnostics, "REF003") == 1);  // the part's own SECID, once (not again as a link)
 }
 
 TEST_CASE("references: *FREQUENCY_DOMAIN_FRF ids are not followed (pydyna's layout has a card more)") {
-    auto r = lint::check_buffer(kPart + "*FREQUENCY_DOMAIN_FRF\n         0         0         1         1         0"
+    auto r = engine::check_buffer(kPart + "*FREQUENCY_DOMAIN_FRF\n         0         0         1         1         0"
                                         "      20.0\n      0.01         0\n         2         1\n",
                                 "d.k");
     CHECK(r.model.id_references.empty());
@@ -130,10 +130,10 @@ TEST_CASE("references: *FREQUENCY_DOMAIN_FRF ids are not followed (pydyna's layo
 
 TEST_CASE("references: a material named by a generated keyword is used, an undefined one is REF004") {
     const std::string group = "*MAT_NULL\n         2     900.0\n*ALE_STRUCTURED_MULTI_MATERIAL_GROUP\n{}";
-    auto used = lint::check_buffer(kPart + fmt::format(fmt::runtime(group), "         1         2\n"), "d.k");
+    auto used = engine::check_buffer(kPart + fmt::format(fmt::runtime(group), "         1         2\n"), "d.k");
     CHECK(count_code(used.diagnostics, "REF007") == 0);
     CHECK(count_code(used.diagnostics, "REF004") == 0);
-    auto missing = lint::check_buffer(kPart + fmt::format(fmt::runtime(group), "         1         3\n"), "d.k");
+    auto missing = engine::check_buffer(kPart + fmt::format(fmt::runtime(group), "         1         3\n"), "d.k");
     CHECK(count_code(missing.diagnostics, "REF007") == 1);  // material 2
     CHECK(count_code(missing.diagnostics, "REF004") == 1);  // material 3
 }

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 #include "refsolver/simulation.hpp"
 
 namespace sphdeck::test {
@@ -49,7 +49,7 @@ struct TestDeck {
 
 // Reads the deck and sets the solver up (the model must outlive the simulation only during create).
 inline refsolver::Simulation::Setup solver_for(const TestDeck& deck, refsolver::RunOptions options = {}) {
-    const lint::CheckResult r = lint::check_buffer(deck.text(), "test.k");
+    const engine::CheckResult r = engine::check_buffer(deck.text(), "test.k");
     return refsolver::Simulation::create(r.model, options);
 }
 

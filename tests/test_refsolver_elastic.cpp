@@ -39,7 +39,7 @@ std::string elastic_text(TestDeck deck, double young, double poisson) {
 }
 
 refsolver::Simulation::Setup elastic_solver(const TestDeck& deck, double young, double poisson) {
-    const lint::CheckResult r = lint::check_buffer(elastic_text(deck, young, poisson), "elastic.k");
+    const engine::CheckResult r = engine::check_buffer(elastic_text(deck, young, poisson), "elastic.k");
     return refsolver::Simulation::create(r.model, {});
 }
 

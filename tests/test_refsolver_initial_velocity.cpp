@@ -13,7 +13,7 @@ using namespace sphdeck::test;
 namespace {
 
 refsolver::Simulation::Setup solver_for_file(const std::string& name) {
-    const lint::CheckResult r = lint::check_file(std::string(SPHDECK_SOURCE_DIR) + "/decks/tests/run/" + name, {});
+    const engine::CheckResult r = engine::check_file(std::string(SPHDECK_SOURCE_DIR) + "/decks/tests/run/" + name, {});
     return refsolver::Simulation::create(r.model, {});
 }
 

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 #include "lint/rules.hpp"
 #include "test_support.hpp"
 
@@ -42,12 +42,12 @@ std::string fluid_deck(const std::string& control_sph, const std::string& extra 
 const std::string form12 = "         1         0   1.0e+20         3       150        12       0.0   1.0e+15\n";
 const std::string form9 = "         1         0   1.0e+20         3       150         9       0.0   1.0e+15\n";
 
-lint::CheckResult run(const std::string& text, lint::Solver solver = lint::Solver::Unknown,
+engine::CheckResult run(const std::string& text, lint::Solver solver = lint::Solver::Unknown,
                       const std::string& source = "") {
-    lint::CheckOptions o;
+    engine::CheckOptions o;
     o.rules.solver = solver;
     o.rules.solver_source = source;
-    return lint::check_buffer(text, "deck.k", o);
+    return engine::check_buffer(text, "deck.k", o);
 }
 
 // Deck with the plain *SECTION_SPH swapped for an ellipse section (FORM 9/10 decks).
@@ -261,7 +261,7 @@ TEST_CASE("SPH014: IHTC 1 needs CP and LAMBDA of the fluid; silent with IHTC 0 o
     const std::string control = "*KEYWORD\n*CONTROL_SPH_INCOMPRESSIBLE\n         0      0.01     1e+20     1e+20         {}\n";
     const std::string fluid = "*MAT_SPH_INCOMPRESSIBLE_FLUID\n         1    1000.0    1.0e-3\n    4180.0\n";
     auto with = [&](int ihtc, const std::string& more) {
-        return test::count_code(lint::check_buffer(fmt::format(fmt::runtime(control), ihtc) + more, "d.k").diagnostics, "SPH014");
+        return test::count_code(engine::check_buffer(fmt::format(fmt::runtime(control), ihtc) + more, "d.k").diagnostics, "SPH014");
     };
     CHECK(with(1, fluid) == 1);                                   // LAMBDA blank
     CHECK(with(1, "") == 1);                                      // no fluid material

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 #include "test_support.hpp"
 
 using namespace sphdeck;
@@ -36,7 +36,7 @@ TEST_CASE("SPH112: many massless particles of one part make one finding with the
     const int n = 100000;
     std::string deck = head() + nodes(1, n) + "*ELEMENT_SPH\n       1       1\n";
     deck += "       2       1             0.0" + std::to_string(n).insert(0, 8 - std::to_string(n).size(), ' ') + "\n";
-    auto r = lint::check_buffer(deck, "d.k");  // NEND: particles 2..n from one line, MASS 0
+    auto r = engine::check_buffer(deck, "d.k");  // NEND: particles 2..n from one line, MASS 0
     REQUIRE(count_code(r.diagnostics, "SPH112") == 1);
     const diag::Diagnostic* d = find_code(r.diagnostics, "SPH112");
     CHECK(d->severity == diag::Severity::Error);
@@ -45,7 +45,7 @@ TEST_CASE("SPH112: many massless particles of one part make one finding with the
 }
 
 TEST_CASE("SPH112: the MASS field is found in free format; a volume is information") {
-    auto r = lint::check_buffer(head() + nodes(1, 1) + "*ELEMENT_SPH\n1,1,-1.0e-3\n", "d.k");
+    auto r = engine::check_buffer(head() + nodes(1, 1) + "*ELEMENT_SPH\n1,1,-1.0e-3\n", "d.k");
     const diag::Diagnostic* d = find_code(r.diagnostics, "SPH112");
     REQUIRE(d);
     CHECK(d->severity == diag::Severity::Info);
@@ -55,7 +55,7 @@ TEST_CASE("SPH112: the MASS field is found in free format; a volume is informati
 TEST_CASE("SPH110: one finding for all particles off the plane, with the count") {
     std::string deck = head("2") + nodes(1, 3, 0.0) + nodes(4, 3, 2.0) +
                        "*ELEMENT_SPH\n1,1,1.0\n2,1,1.0\n3,1,1.0\n4,1,1.0\n5,1,1.0\n6,1,1.0\n";
-    auto r = lint::check_buffer(deck, "d.k");
+    auto r = engine::check_buffer(deck, "d.k");
     REQUIRE(count_code(r.diagnostics, "SPH110") == 1);
     const diag::Diagnostic* d = find_code(r.diagnostics, "SPH110");
     CHECK(d->message.find("3 particles") != std::string::npos);
@@ -71,12 +71,12 @@ TEST_CASE("SPH117: an initial velocity counts only on the nodes of its set") {
         return "*INITIAL_VELOCITY\n" + std::string(10 - nsid.size(), ' ') + nsid + "\n      20.0\n";
     };
     const std::string sets = "*SET_NODE_LIST\n         7\n        50\n*SET_NODE_LIST\n         8\n         1\n";
-    auto other = lint::check_buffer(head() + particle + sets + velocity("7"), "d.k");
+    auto other = engine::check_buffer(head() + particle + sets + velocity("7"), "d.k");
     CHECK(count_code(other.diagnostics, "SPH117") == 0);  // node 50 is no particle
-    auto own = lint::check_buffer(head() + particle + sets + velocity("8"), "d.k");
+    auto own = engine::check_buffer(head() + particle + sets + velocity("8"), "d.k");
     REQUIRE(count_code(own.diagnostics, "SPH117") == 1);
     CHECK(find_code(own.diagnostics, "SPH117")->message.find("10 x 20") != std::string::npos);
-    auto all = lint::check_buffer(head() + particle + sets + velocity("0"), "d.k");
+    auto all = engine::check_buffer(head() + particle + sets + velocity("0"), "d.k");
     CHECK(count_code(all.diagnostics, "SPH117") == 1);
 }
 
@@ -87,9 +87,9 @@ TEST_CASE("SPH117: gravity counts only with a constant curve") {
         return "*LOAD_BODY_Z\n         1      9.81\n*DEFINE_CURVE\n         1\n                 0.0                 1.0\n"
                "               100.0" + std::string(20 - o2.size(), ' ') + o2 + "\n";
     };
-    auto constant = lint::check_buffer(head() + particles + gravity("1.0"), "d.k");
+    auto constant = engine::check_buffer(head() + particles + gravity("1.0"), "d.k");
     REQUIRE(count_code(constant.diagnostics, "SPH117") == 1);
     CHECK(find_code(constant.diagnostics, "SPH117")->message.find("free-fall") != std::string::npos);
-    auto ramp = lint::check_buffer(head() + particles + gravity("2.0"), "d.k");
+    auto ramp = engine::check_buffer(head() + particles + gravity("2.0"), "d.k");
     CHECK(count_code(ramp.diagnostics, "SPH117") == 0);
 }

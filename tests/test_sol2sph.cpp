@@ -10,7 +10,7 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 #include "preproc/sol2sph.hpp"
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
@@ -45,7 +45,7 @@ std::string brick_line(long long id, std::array<int, 8> n) {
 }
 
 preproc::Sol2sph generate(const std::string& text) {
-    const lint::CheckResult r = lint::check_buffer(text, "run_0000.rad", {}, grammar::DeckFormat::Radioss);
+    const engine::CheckResult r = engine::check_buffer(text, "run_0000.rad", {}, grammar::DeckFormat::Radioss);
     REQUIRE(r.model.radioss.has_value());
     return preproc::generate_sol2sph(r.model);
 }

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <string>
 
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 #include "lint/suppressions.hpp"
 #include "test_support.hpp"
 
@@ -18,7 +18,7 @@ namespace {
 // whose first field is real, so "abc" gives one DK003 per line.
 std::vector<diag::Diagnostic> check(const std::string& text) {
     // The pipeline applies the deck's suppressions itself.
-    return lint::check_buffer(text, "main.k").diagnostics;
+    return engine::check_buffer(text, "main.k").diagnostics;
 }
 
 std::vector<std::uint32_t> lines_of(const std::vector<diag::Diagnostic>& ds, const std::string& code) {
@@ -142,7 +142,7 @@ TEST_CASE("suppress: a directive applies to its own file, not to the files it in
     const std::string main = dir.write("main.k",
                                        "*KEYWORD\n$ sphdeck: disable-file=DK003\n*CONTROL_TERMINATION\nabc\n"
                                        "*INCLUDE\npart.k\n*END\n");
-    lint::CheckResult r = lint::check_file(main);
+    engine::CheckResult r = engine::check_file(main);
     REQUIRE(count_code(r.diagnostics, "DK003") == 1);
     CHECK(r.deck.sources.file(find_code(r.diagnostics, "DK003")->span.file).display_name.ends_with("part.k"));
 }
@@ -168,7 +168,7 @@ namespace {
 // A Radioss starter deck: lines 1-5 are the header, /BEGIN and /NODE; `body` starts on line 6.
 // "abc" in a coordinate gives one DK003 per line.
 std::vector<diag::Diagnostic> check_radioss(const std::string& body) {
-    return lint::check_buffer("#RADIOSS STARTER\n/BEGIN\nrun\n      2026\n/NODE\n" + body + "/END\n", "main_0000.rad",
+    return engine::check_buffer("#RADIOSS STARTER\n/BEGIN\nrun\n      2026\n/NODE\n" + body + "/END\n", "main_0000.rad",
                               {}, grammar::DeckFormat::Radioss)
         .diagnostics;
 }
@@ -207,7 +207,7 @@ TEST_CASE("suppress: in a Radioss deck a directive before a '/' header covers it
                              "/NODE\n" +   // line 10: a new block
                              "         3                 abc                 0.0                 0.0\n"  // line 11
                              "/END\n";
-    auto ds = lint::check_buffer(text, "main_0000.rad", {}, grammar::DeckFormat::Radioss).diagnostics;
+    auto ds = engine::check_buffer(text, "main_0000.rad", {}, grammar::DeckFormat::Radioss).diagnostics;
     CHECK(lines_of(ds, "DK003") == std::vector<std::uint32_t>{11});
     CHECK(count_code(ds, "DK026") == 0);
 
@@ -227,7 +227,7 @@ TEST_CASE("suppress: '#include' and '#enddata' are no comments, and '#' is no co
     const std::string main = dir.write("main_0000.rad", "#RADIOSS STARTER\n/BEGIN\nrun\n      2026\n/NODE\n"
                                                         "# sphdeck: disable=DK003\n#include empty.inc\n" +
                                                             kBadNode1 + "/END\n");
-    auto r = lint::check_file(main);
+    auto r = engine::check_file(main);
     CHECK(lines_of(r.diagnostics, "DK003") == std::vector<std::uint32_t>{8});
     CHECK(count_code(r.diagnostics, "DK026") == 1);
 

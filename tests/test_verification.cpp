@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "lint/pipeline.hpp"
+#include "engine/check.hpp"
 #include "refsolver/simulation.hpp"
 #include "verify/martin_moyce.hpp"
 #include "verify/norms.hpp"
@@ -242,7 +242,7 @@ TEST_CASE("verification decks: every deck in decks/verification passes sphdeck c
     for (const auto& entry : std::filesystem::directory_iterator(folder)) {
         if (entry.path().extension() != ".k") continue;
         ++decks;
-        const sphdeck::lint::CheckResult r = sphdeck::lint::check_file(entry.path().string());
+        const sphdeck::engine::CheckResult r = sphdeck::engine::check_file(entry.path().string());
         std::size_t errors = 0;
         for (const auto& d : r.diagnostics) errors += d.severity == sphdeck::diag::Severity::Error;
         INFO(entry.path().filename().string());
@@ -263,7 +263,7 @@ TEST_CASE("verification decks: the Sod decks keep h about 2 spacings along x in 
         const std::filesystem::path deck = std::filesystem::path(SPHDECK_SOURCE_DIR) / "decks" / "verification" /
                                            ("sod_2d_" + std::to_string(n) + ".k");
         INFO(deck.filename().string());
-        const sphdeck::lint::CheckResult r = sphdeck::lint::check_file(deck.string());
+        const sphdeck::engine::CheckResult r = sphdeck::engine::check_file(deck.string());
         const auto setup = sphdeck::refsolver::Simulation::create(r.model);
         REQUIRE(setup.simulation);
         const sphdeck::refsolver::ParticleState& s = setup.simulation->state();
@@ -284,7 +284,7 @@ TEST_CASE("verification decks: the Sedov decks keep FORM 1, HMIN 1, HMAX 5 and E
         const std::filesystem::path deck = std::filesystem::path(SPHDECK_SOURCE_DIR) / "decks" / "verification" /
                                            ("sedov_2d_" + std::to_string(n) + ".k");
         INFO(deck.filename().string());
-        const sphdeck::lint::CheckResult r = sphdeck::lint::check_file(deck.string());
+        const sphdeck::engine::CheckResult r = sphdeck::engine::check_file(deck.string());
         CHECK(r.model.controls.sph.form.value == sphdeck::model::Form::Renormalized);
         REQUIRE(r.model.sections.size() == 1);
         CHECK(r.model.sections[0].hmin.value == 1.0);
