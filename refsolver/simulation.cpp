@@ -14,9 +14,11 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <omp.h>
 
 #include "refsolver/body_load.hpp"
+#include "refsolver/core_share.hpp"
 #include "refsolver/deactivation.hpp"
 #include "refsolver/neighbour_list.hpp"
 #include "refsolver/rates.hpp"
@@ -59,6 +61,7 @@ struct Simulation::Impl {
     RateParameters rates;
     RateScratch scratch;
     Deactivation deactivation;
+    std::optional<CoreShare> core_share;  // set when the thread count is ours to choose (core_share.hpp)
     std::vector<long long> part_ids;
     double time = 0, dt = 0, dt_next = 0, external_work = 0;
     std::size_t steps = 0, since_rebuild = 0, rebuilds = 0;
@@ -229,6 +232,7 @@ void Simulation::Impl::step() {
         failure = "the time step collapsed to " + std::to_string(dt) + " at time " + std::to_string(time);
         return;
     }
+    if (core_share) rates.threads = core_share->threads();
     const double half = 0.5 * dt;
     const std::array<double, 3> body_mid = body_acceleration(in.loads, time + half);
     double work = 0;
@@ -284,6 +288,11 @@ Simulation::Setup Simulation::create(const model::Model& model, const RunOptions
     constexpr std::size_t small_run = 4096;
     impl->rates.threads = options.threads > 0 ? options.threads
                           : impl->in.x.size() < small_run ? 1 : omp_get_max_threads();
+    // Not told how many: as many as the cores other processes leave free, watched while the run goes.
+    if (options.threads <= 0 && impl->rates.threads > 1) {
+        impl->core_share.emplace(impl->rates.threads);
+        impl->rates.threads = impl->core_share->threads();
+    }
     for (const PartSetup& p : impl->in.parts) impl->part_ids.push_back(p.id);
     impl->initialise();
     setup.simulation.reset(new Simulation(std::move(impl)));
@@ -320,6 +329,7 @@ Timings Simulation::timings() const { return impl_->timings; }
 const std::vector<long long>& Simulation::part_ids() const { return impl_->part_ids; }
 const std::string& Simulation::failure() const { return impl_->failure; }
 std::size_t Simulation::neighbour_rebuilds() const { return impl_->rebuilds; }
+int Simulation::threads() const { return impl_->rates.threads; }
 
 const ParticleState& Simulation::state() const {
     const Impl& m = *impl_;

@@ -109,6 +109,7 @@ public:
     // while all is well. finished() is true once this is set.
     const std::string& failure() const;
     std::size_t neighbour_rebuilds() const;  // Added: how many times the lists were rebuilt
+    int threads() const;  // OpenMP threads of the last step (chosen by refsolver/core_share.hpp when not given)
 
 private:
     struct Impl;
