@@ -55,5 +55,6 @@ grammar::Span cell_field_span(const RuleContext& c, std::size_t particle, std::s
 void check_symmetry(RuleContext& c);     // RAD002-RAD008
 void check_sol2sph(RuleContext& c);      // RAD010-RAD016, RAD021
 void check_properties(RuleContext& c);   // RAD020, RAD022-RAD024, RAD026-RAD029, DK018 for /SPHGLO
+void check_sph_references(RuleContext& c);  // REF001, REF002: /SPH/INOUT and /INISPHCEL ids
 
 }  // namespace sphdeck::lint::radioss

@@ -95,6 +95,7 @@ void RadiossBuilder::card(const RadiossBlock& b, std::size_t index, std::uint32_
     if (name == "/BRICK" || name == "/TETRA4" || name == "/TETRA10" || name == "/PENTA6")
         return add_element(b, index, line, values);
     if (name == "/GRNOD/NODE" || name == "/GRNOD/PART") return add_group_members(values);
+    if (name == "/INISPHCEL") return add_initial_state(b, index, line, values);
     const auto& cards = b.spec->format_for(b.version).cards;
     if (cards[index].repeat == grammar::radioss::Repeat::Once) cards_[index] = values;
 }

@@ -185,6 +185,29 @@ void RadiossBuilder::end_eos(const RadiossBlock& b) {
 
 // §5.4: only the first /SPHGLO counts; Alpha_sort 0 → 0.25; Nneigh at least 120; Lneigh 0 →
 // Nneigh; Nneigh at least Lneigh. Without one: Lneigh 120, Nneigh 120 (Invers < 130) or 240.
+// /INISPHCEL/FULL cards (hm_read_inistate_d00.F); the starter reads no other kind (CASE DEFAULT).
+void RadiossBuilder::add_initial_state(const RadiossBlock& b, std::size_t card, std::uint32_t line,
+                                       const std::vector<RadiossValue>& v) {
+    if (b.args.empty() || b.args[0] != "FULL") return;
+    auto num = [&](std::size_t k) { return k < v.size() && v[k].valid ? v[k].number : 0.0; };
+    auto& states = facts_.initial_states;
+    if (card == 0) {
+        if (v.empty()) return;
+        RadiossInitialState s;  // kept when the id is unreadable (reported), so its cards stay with it
+        s.cell = static_cast<long long>(num(0));
+        s.span = v[0].span;
+        s.line = line;
+        s.nvar = static_cast<long long>(num(1));
+        states.push_back(s);
+        return;
+    }
+    if (states.empty() || states.back().line > line) return;
+    RadiossInitialState& s = states.back();
+    if (card == 1) s.eint = num(0), s.rho = num(1), s.h = num(2);
+    else if (card == 2) s.sigma = {num(0), num(1), num(2)};
+    else if (card == 3) s.epsp = num(0);
+}
+
 void RadiossBuilder::end_sphglo(const RadiossBlock& b) {
     RadiossSphGlobal& g = facts_.sph_global;
     if (g.present) {
@@ -199,6 +222,7 @@ void RadiossBuilder::end_sphglo(const RadiossBlock& b) {
     g.lneigh = starter<long long>("Lneigh", b);
     g.nneigh = starter<long long>("Nneigh", b);
     g.isol2sph = starter<long long>("Isol2sph", b);
+    zero_means(g.isol2sph, 1LL);  // hm_read_sphglo.F: ITSOL2SPH 0 → 1
     g.nneigh.value = std::max<long long>(g.nneigh.value, 120);
     if (g.lneigh.value == 0) g.lneigh.value = g.nneigh.value;
     g.nneigh.value = std::max(g.nneigh.value, g.lneigh.value);
@@ -241,6 +265,10 @@ void RadiossBuilder::end_inout(const RadiossBlock& b) {
     io.itype = starter<long long>("Itype", b);
     io.part = starter<long long>("part_ID", b);
     io.surface = starter<long long>("surf_ID", b);
+    io.dist = starter<double>("Dist", b);
+    io.nodes = {starter<long long>("node_ID1", b), starter<long long>("node_ID2", b),
+                starter<long long>("node_ID3", b)};
+    io.fcut = starter<double>("Fcut", b);
     facts_.inouts.push_back(std::move(io));
 }
 

@@ -52,6 +52,8 @@ private:
     void add_particle(const RadiossBlock& b, std::uint32_t line, const std::vector<RadiossValue>& v);
     void add_element(const RadiossBlock& b, std::size_t card, std::uint32_t line, const std::vector<RadiossValue>& v);
     void add_group_members(const std::vector<RadiossValue>& v);
+    void add_initial_state(const RadiossBlock& b, std::size_t card, std::uint32_t line,
+                           const std::vector<RadiossValue>& v);
 
     // Per-block handlers.
     void end_begin(const RadiossBlock& b);

@@ -89,7 +89,8 @@ struct RadiossSphGlobal {
     bool present = false;
     grammar::Span span;
     StarterValue<double> alpha_sort;   // 0 → 0.25
-    StarterValue<long long> maxsph, lneigh, nneigh, isol2sph;  // lneigh, nneigh: the starter's values
+    StarterValue<long long> maxsph, lneigh, nneigh;  // lneigh, nneigh: the starter's values
+    StarterValue<long long> isol2sph{1, 0, false, {}};  // 1 without a /SPHGLO or when 0 (hm_read_sphglo.F)
     std::vector<grammar::Span> ignored;  // headers of the later /SPHGLO blocks
 };
 
@@ -149,11 +150,25 @@ struct RadiossInout {
     long long id = 0;
     grammar::Span span;
     StarterValue<long long> itype, part, surface;
+    StarterValue<double> dist;                  // Dist: particle control distance from the surface
+    std::array<StarterValue<long long>, 3> nodes;  // node_ID1-3 (format 140 on): the frontier by nodes
+    StarterValue<double> fcut;                  // Fcut (format 140 on): Butterworth corner frequency
 };
 struct RadiossReserve {
     long long part = 0;
     grammar::Span span;
     StarterValue<long long> count;
+};
+
+// /INISPHCEL/FULL (hm_read_inistate_d00.F): the initial state of one particle, named by its
+// /SPHCEL node id; the starter skips ids it does not find (warning 3045).
+struct RadiossInitialState {
+    long long cell = 0;                  // sphcel_ID
+    grammar::Span span;                  // its cell
+    std::uint32_t line = 0;              // index into RawDeck::lines
+    long long nvar = 0;                  // nvarsph: auxiliary values that follow
+    double eint = 0, rho = 0, h = 0, epsp = 0;
+    std::array<double, 3> sigma{};       // Sigma1-3 (the starter sets the shear stresses to 0)
 };
 
 enum class DtKind : std::uint8_t { SphCell, Nodal, Brick, Global, Other };
@@ -192,6 +207,7 @@ struct RadiossFacts {
         penta6{6, {}, {}, {}, {}};
     std::vector<RadiossInout> inouts;
     std::vector<RadiossReserve> reserves;
+    std::vector<RadiossInitialState> initial_states;
     std::vector<RadiossDt> time_steps;
     bool engine_deck = false;         // an engine deck was read
 

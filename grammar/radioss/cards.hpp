@@ -41,6 +41,9 @@ enum class Repeat : std::uint8_t {
 struct CardSpec {
     std::vector<FieldSpec> fields = {};
     Repeat repeat = Repeat::Once;
+    // A LIST card of a repeated group (CFG `LIST("%20lg", V, nvarsph)`): as many values as the
+    // integer field `count` of the group's first card says, fields.size() a line, no line for 0.
+    std::string_view count = {};
 
     const FieldSpec* field(std::string_view name) const;
     std::size_t index(std::string_view name) const;  // fields.size() when absent

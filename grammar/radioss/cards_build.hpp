@@ -28,6 +28,15 @@ inline CardSpec repeated_ints(std::string_view name, int count) {
     return c;
 }
 
+// A LIST card of `per_line` reals named `name`, its value count in field `count` of the group.
+inline CardSpec list(std::string_view name, int per_line, std::string_view count) {
+    CardSpec c;
+    c.repeat = Repeat::Repeated;
+    c.count = count;
+    for (int i = 0; i < per_line; ++i) c.fields.push_back(R(name));
+    return c;
+}
+
 // Lines kept as text, not decoded.
 inline CardSpec opaque() { return repeated({L("text")}); }
 

@@ -1,0 +1,104 @@
+// The OpenRadioss SPH cards read per format version from the starter's CFG files: /SPH/INOUT
+// (radioss140/LOADS/sph_inout.cfg), /SPHGLO (radioss2017/CARDS/sphglo.cfg) and /INISPHCEL/FULL
+// (radioss2025/TABLE/inisphcel_full*.cfg).
+#include <doctest/doctest.h>
+#include <string>
+
+#include "engine/check.hpp"
+#include "model/radioss_facts.hpp"
+#include "test_support.hpp"
+
+using namespace sphdeck;
+using test::count_code;
+
+namespace {
+
+std::string i10(const std::string& v) { return std::string(v.size() < 10 ? 10 - v.size() : 0, ' ') + v; }
+std::string r20(const std::string& v) { return std::string(v.size() < 20 ? 20 - v.size() : 0, ' ') + v; }
+
+std::string deck(const std::string& body, int version = 2026) {
+    return "#RADIOSS STARTER\n/BEGIN\nrun\n" + i10(std::to_string(version)) + "\n" + body + "/END\n";
+}
+
+engine::CheckResult check(const std::string& text) {
+    return engine::check_buffer(text, "deck_0000.rad", {}, grammar::DeckFormat::Radioss);
+}
+
+const model::RadiossFacts& facts(const engine::CheckResult& r) {
+    REQUIRE(r.model.radioss.has_value());
+    return *r.model.radioss;
+}
+
+// An outlet through three nodes with a cut-off frequency (card 1 of FORMAT(radioss140)).
+const std::string kInout = "/SPH/INOUT/4\noutlet\n" + i10("2") + i10("2") + i10("0") + r20("2.5") + i10("11") +
+                           i10("12") + i10("13") + r20("500.0") + "\n" + std::string(30, ' ') + i10("0") +
+                           r20("1.0") + "\n\n";
+
+}  // namespace
+
+TEST_CASE("radioss sph cards: /SPH/INOUT reads node_ID1-3 and Fcut from format 140 on") {
+    auto r = check(deck(kInout));
+    REQUIRE(facts(r).inouts.size() == 1);
+    const auto& io = facts(r).inouts[0];
+    CHECK(io.id == 4);
+    CHECK(io.itype.value == 2);
+    CHECK(io.dist.value == 2.5);
+    CHECK(io.nodes[0].value == 11);
+    CHECK(io.nodes[2].value == 13);
+    CHECK(io.fcut.value == 500.0);
+    CHECK(count_code(r.diagnostics, "DK006") == 0);
+    // Format 110 reads four fields: the nodes are text past the card's end, as in the starter.
+    auto old = check(deck(kInout, 110));
+    REQUIRE(facts(old).inouts.size() == 1);
+    CHECK(facts(old).inouts[0].nodes[0].value == 0);
+    CHECK(facts(old).inouts[0].dist.value == 2.5);
+    CHECK(count_code(old.diagnostics, "DK006") == 1);
+}
+
+TEST_CASE("radioss sph cards: /SPH/INOUT ids are checked as the starter checks them") {
+    auto r = check(deck(kInout));
+    CHECK(count_code(r.diagnostics, "REF002") == 1);  // no /PART 2 (error 437)
+    CHECK(count_code(r.diagnostics, "REF001") == 3);  // no nodes 11-13 (error 78)
+}
+
+TEST_CASE("radioss sph cards: /SPHGLO Isol2sph 0 or absent is 1 (hm_read_sphglo.F)") {
+    CHECK(facts(check(deck("/SPHGLO\n" + r20("0.25") + i10("0") + i10("0") + i10("0") + i10("0") + "\n")))
+              .sph_global.isol2sph.value == 1);
+    CHECK(facts(check(deck("/SPHGLO\n" + r20("0.25") + i10("0") + i10("0") + i10("0") + i10("2") + "\n")))
+              .sph_global.isol2sph.value == 2);
+    CHECK(facts(check(deck(""))).sph_global.isol2sph.value == 1);
+    // Format 120 has no Isol2sph cell: what stands there is past the card's end.
+    auto v120 = check(deck("/SPHGLO\n" + r20("0.25") + i10("0") + i10("0") + i10("200") + i10("2") + "\n", 120));
+    CHECK(facts(v120).sph_global.isol2sph.value == 1);
+    CHECK(facts(v120).sph_global.nneigh.value == 200);
+    CHECK(count_code(v120.diagnostics, "DK006") == 1);
+}
+
+TEST_CASE("radioss sph cards: /INISPHCEL/FULL states, their LIST of nvarsph values skipped by count") {
+    const std::string state_a = i10("1001") + i10("7") + "\n" + r20("5.0") + r20("1.0E-6") + r20("2.4") + "\n" +
+                                r20("-1.0") + r20("-2.0") + r20("-3.0") + "\n" + r20("0.1") + "\n" +
+                                r20("1") + r20("2") + r20("3") + r20("4") + r20("5") + "\n" + r20("6") + r20("7") +
+                                "\n";
+    const std::string state_b = i10("1002") + i10("0") + "\n" + r20("6.0") + r20("2.0E-6") + r20("3.0") + "\n" +
+                                r20("-4.0") + "\n" + r20("0.2") + "\n";
+    const std::string sph = "/NODE\n" + i10("1001") + r20("0") + r20("0") + r20("0") + "\n" + i10("1002") + r20("1") +
+                            r20("0") + r20("0") + "\n/SPHCEL/2\n" + i10("1001") + "\n" + i10("1002") + "\n";
+    auto r = check(deck(sph + "/INISPHCEL/FULL\n" + state_a + state_b + i10("1003") + i10("0") + "\n"));
+    const auto& s = facts(r).initial_states;
+    REQUIRE(s.size() == 3);
+    CHECK(s[0].cell == 1001);
+    CHECK(s[0].nvar == 7);
+    CHECK(s[0].rho == 1.0E-6);
+    CHECK(s[0].sigma[2] == -3.0);
+    CHECK(s[0].epsp == 0.1);
+    CHECK(s[1].cell == 1002);  // after the two lines of values of the first state
+    CHECK(s[1].eint == 6.0);
+    CHECK(s[1].h == 3.0);
+    CHECK(s[1].sigma[0] == -4.0);
+    CHECK(s[1].epsp == 0.2);  // no value line with nvarsph 0
+    CHECK(s[2].cell == 1003);
+    CHECK(count_code(r.diagnostics, "REF001") == 1);  // 1003 is no particle (warning 3045)
+    CHECK(count_code(r.diagnostics, "DK006") == 0);
+    // Another kind than FULL is not read by the starter (CASE DEFAULT).
+    CHECK(facts(check(deck(sph + "/INISPHCEL/OTHER\n" + state_b))).initial_states.empty());
+}
