@@ -125,6 +125,10 @@ void IdLinkCollector::on_card(const keywords::KeywordMatch& match, const std::ve
     constexpr std::size_t max_references = 100000;
     const std::string_view keyword = match.schema->name;
     for (const FieldValue& v : values) {
+        // Most fields of a bulk card (element ids, coordinates) link nothing: leave before any
+        // string work, since this runs for every line of every generated keyword.
+        const std::string_view name = v.spec->name;
+        if (v.spec->refers_to.empty() && name != "LCID" && name != "SURFA" && name != "SURFB") continue;
         if (!v.explicit_value || !v.valid || v.number <= 0 || v.number != std::floor(v.number) ||
             v.number > max_exact_integer)
             continue;
