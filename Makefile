@@ -37,6 +37,7 @@ test-asan: deps
 
 bench: build
 	bash bench/run_reader_bench.sh $(BUILD)
+	bash bench/bench_many_sets.sh $(BUILD)
 	python3 bench/bench_lsp.py $(BUILD)
 	$(BUILD)/bench_refsolver
 

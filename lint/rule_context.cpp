@@ -39,6 +39,22 @@ const std::vector<std::uint32_t>& RuleContext::particle_nodes() const {
 }
 
 namespace {
+const model::IdSet* find_set(std::unique_ptr<std::unordered_map<model::Id, const model::IdSet*>>& index,
+                             const std::vector<model::IdSet>& sets, const model::Id& id) {
+    if (!index) {
+        index = std::make_unique<std::unordered_map<model::Id, const model::IdSet*>>();
+        index->reserve(sets.size());
+        for (const model::IdSet& s : sets) index->emplace(s.id, &s);  // emplace keeps the first
+    }
+    const auto it = index->find(id);
+    return it == index->end() ? nullptr : it->second;
+}
+}  // namespace
+
+const model::IdSet* RuleContext::node_set(const model::Id& id) const { return find_set(node_sets_, model.node_sets, id); }
+const model::IdSet* RuleContext::part_set(const model::Id& id) const { return find_set(part_sets_, model.part_sets, id); }
+
+namespace {
 grammar::Span whole_line(const grammar::RawDeck& deck, std::uint32_t index) {
     if (index >= deck.lines.size()) return {};
     const grammar::CardLine& l = deck.lines[index];

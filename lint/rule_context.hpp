@@ -8,6 +8,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "diag/diagnostic.hpp"
@@ -61,6 +62,10 @@ public:
     // Position in model.nodes of each particle's node; no_node where the node is missing (REF001).
     static constexpr std::uint32_t no_node = 0xFFFFFFFFu;
     const std::vector<std::uint32_t>& particle_nodes() const;
+    // The first node set / part set defining `id` (null when none). Decks written by pre-processors
+    // hold one set per particle, so rules look sets up by id, never by scanning the list.
+    const model::IdSet* node_set(const model::Id& id) const;
+    const model::IdSet* part_set(const model::Id& id) const;
 
     // The geometry rules' preview, when RuleOptions::keep_preview asked for it (else null).
     std::shared_ptr<const preproc::Preview> preview;
@@ -69,6 +74,8 @@ private:
     std::vector<diag::Diagnostic>& out_;
     mutable std::unique_ptr<model::IdIndex> node_index_, particle_index_;
     mutable std::unique_ptr<std::vector<std::uint32_t>> particle_nodes_;
+    using SetIndex = std::unordered_map<model::Id, const model::IdSet*>;
+    mutable std::unique_ptr<SetIndex> node_sets_, part_sets_;
 };
 
 // Every lint rule family, run in order.

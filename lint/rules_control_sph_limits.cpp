@@ -2,6 +2,7 @@
 // the BOXID box, the MAXV velocity limit, and the DT / START times against ENDTIM.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "grammar/fields.hpp"
@@ -76,12 +77,10 @@ Speed largest_initial_speed(const RuleContext& c) {
         if (r.schema->name != "*INITIAL_VELOCITY") continue;
         const model::FieldRecord* nsid = r.field("NSID");
         if (nsid && nsid->explicit_value && nsid->valid && nsid->number != 0) {
-            const model::Id id = model::normalise_id(nsid->text);
-            bool has_particle = false;
-            for (const model::IdSet& s : m.node_sets)
-                if (s.id == id)
-                    for (long long node : s.members) has_particle = has_particle || particles.find(node).has_value();
-            if (!has_particle) continue;
+            const model::IdSet* set = c.node_set(model::normalise_id(nsid->text));
+            if (!set || std::none_of(set->members.begin(), set->members.end(),
+                                     [&](long long node) { return particles.find(node).has_value(); }))
+                continue;
         }
         auto value = [&](std::string_view name) {
             const model::FieldRecord* f = r.field(name);

@@ -124,19 +124,15 @@ bool holds_particles(const RuleContext& c, const std::vector<const model::Part*>
             if (p->id == std::to_string(pid)) return true;
         return false;
     };
-    auto members = [&](const std::vector<model::IdSet>& sets) -> const std::vector<long long>* {
-        for (const model::IdSet& s : sets)
-            if (s.id == std::to_string(ssid)) return &s.members;
-        return nullptr;
-    };
+    auto members = [&](const model::IdSet* set) { return set ? &set->members : nullptr; };
     switch (sstyp) {
         case 2:  // part set
-            if (const auto* m = members(c.model.part_sets))
+            if (const auto* m = members(c.part_set(std::to_string(ssid))))
                 for (long long pid : *m) if (sph_part(pid)) return true;
             return false;
         case 3: return sph_part(ssid);
         case 4:  // node set
-            if (const auto* m = members(c.model.node_sets)) {
+            if (const auto* m = members(c.node_set(std::to_string(ssid)))) {
                 const model::IdIndex& particles = c.particle_index();
                 for (long long node : *m) if (particles.find(node)) return true;
             }

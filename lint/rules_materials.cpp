@@ -50,33 +50,29 @@ std::map<Id, PartStats> particle_parts(const model::Model& m, const std::vector<
     return parts;
 }
 
-const model::IdSet* node_set(const model::Model& m, const model::FieldRecord* f) {
+const model::IdSet* node_set(const RuleContext& c, const model::FieldRecord* f) {
     if (!f || !f->valid || f->number == 0) return nullptr;
-    const Id id = model::normalise_id(f->text);
-    for (const auto& s : m.node_sets)
-        if (s.id == id) return &s;
-    return nullptr;
+    return c.node_set(model::normalise_id(f->text));
 }
 
 // *INITIAL_VELOCITY: VX, VY, VZ on the nodes of NSID (0 = all) inside BOXID, VXE... on those of
-// NSIDEX. Rotational velocities are left out (they need the rigid-body centre).
-void add_initial_velocities(const model::Model& m, const std::vector<std::uint32_t>& node_of,
+// NSIDEX. Rotational velocities are left out (they need the rigid-body centre). With a set, only
+// its members are visited: pre-processors write one set and one card per particle.
+void add_initial_velocities(const RuleContext& c, const std::vector<std::uint32_t>& node_of,
                             std::map<Id, PartStats>& parts) {
+    const model::Model& m = c.model;
     for (const model::KeywordRecord& r : m.records) {
         if (r.schema->name != "*INITIAL_VELOCITY") continue;
         const double speed = std::hypot(number(r, "VX"), number(r, "VY"), number(r, "VZ"));
         const double exempt_speed = std::hypot(number(r, "VXE"), number(r, "VYE"), number(r, "VZE"));
-        const model::IdSet* set = node_set(m, r.field("NSID"));
+        const model::IdSet* set = node_set(c, r.field("NSID"));
         if (number(r, "NSID") != 0 && !set) continue;  // REF008
-        const model::IdSet* exempt = node_set(m, r.field("NSIDEX"));
+        const model::IdSet* exempt = node_set(c, r.field("NSIDEX"));
         const model::Box* box = number(r, "BOXID") != 0 ? m.box(model::normalise_id(r.field("BOXID")->text)) : nullptr;
         if (speed == 0 && (!exempt || exempt_speed == 0)) continue;
-        std::unordered_set<long long> members, exempted;
-        if (set) members.insert(set->members.begin(), set->members.end());
+        std::unordered_set<long long> exempted;
         if (exempt) exempted.insert(exempt->members.begin(), exempt->members.end());
-        for_each_particle(m.particles, parts, [&](std::size_t i, PartStats& s) {
-            const long long node = m.particles.node[i];
-            if (set && !members.count(node)) return;
+        auto visit = [&](std::size_t i, PartStats& s) {
             if (box) {
                 const std::uint32_t k = node_of[i];
                 if (k == RuleContext::no_node) return;
@@ -85,9 +81,16 @@ void add_initial_velocities(const model::Model& m, const std::vector<std::uint32
                     m.nodes.z[k] < b[4] || m.nodes.z[k] > b[5])
                     return;
             }
-            const double v = exempted.count(node) ? exempt_speed : speed;
+            const double v = exempted.count(m.particles.node[i]) ? exempt_speed : speed;
             if (v > s.speed) s.speed = v, s.speed_record = &r;
-        });
+        };
+        if (!set) {
+            for_each_particle(m.particles, parts, visit);
+            continue;
+        }
+        const model::IdIndex& particles = c.particle_index();
+        for (long long node : set->members)
+            if (const auto i = particles.find(node)) visit(*i, parts[std::to_string(m.particles.part[*i])]);
     }
 }
 
@@ -216,7 +219,7 @@ void check_sph_materials(RuleContext& c) {
     const std::vector<std::uint32_t>& node_of = c.particle_nodes();
     std::map<Id, PartStats> parts = particle_parts(c.model, node_of);
     check_null_without_eos(c, parts);
-    add_initial_velocities(c.model, node_of, parts);
+    add_initial_velocities(c, node_of, parts);
     check_murnaghan(c, parts);
 }
 

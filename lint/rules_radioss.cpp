@@ -212,8 +212,7 @@ void check_geometry(RuleContext& c, const Positions& at, const std::vector<doubl
         if (s.ilev.value != 1 || !r.on_plane.count) continue;
         const model::IdSet* group = nullptr;
         if (s.grnod_id.value != 0) {
-            for (const auto& g : c.model.node_sets)
-                if (g.id == std::to_string(s.grnod_id.value)) group = &g;
+            group = c.node_set(std::to_string(s.grnod_id.value));
             if (!group) continue;  // undefined (REF008), or a group kind sphdeck does not expand
         }
         std::unordered_set<long long> members;

@@ -190,21 +190,13 @@ void check_part_references(RuleContext& c, std::set<Id>& used_sections, std::set
 
 // Set references: the keyword, the field holding the set id, and when it is a set.
 void check_set_references(RuleContext& c) {
-    auto node_set = [&](const Id& id) {
-        for (const auto& s : c.model.node_sets) if (s.id == id) return true;
-        return false;
-    };
-    auto part_set = [&](const Id& id) {
-        for (const auto& s : c.model.part_sets) if (s.id == id) return true;
-        return false;
-    };
     for (const model::KeywordRecord& r : c.model.records) {
         const std::string_view k = r.schema->name;
         auto need = [&](std::string_view field, bool part_kind, std::string_view why) {
             const model::FieldRecord* f = r.field(field);
             if (!f || !f->explicit_value || !f->valid || f->number == 0) return;
             Id id = model::normalise_id(f->text);
-            if (!(part_kind ? part_set(id) : node_set(id)))
+            if (!(part_kind ? c.part_set(id) : c.node_set(id)))
                 c.report("REF008", f->span,
                          fmt::format("{} {} is not defined{}", part_kind ? "part set" : "node set", id, why));
         };
