@@ -5,6 +5,12 @@
 // the non-dimensionalisation of martin_moyce.hpp with a = L; pysph's `dam_break_2d.py` plots it against
 // its own front over T = t sqrt(2 g / column width) with the column 1 wide and 2 high, the same scaling.
 // The first point is the column at rest (T = 0, Z/L = 1).
+// Scaling checked (docs/verification.md §3): the k-th point sits at T = k sqrt(2 g / L) / 30 within 2 %,
+// one frame of a 30 frame/s video per point; read as t sqrt(g / L), or with L = 0.292 m, the frames would
+// be 42 or 21 per second. Another digitisation labelled as this experiment (OndrejKincl/SmoothedParticles.jl
+// `examples/reference/dambreak_X_Koshizuka.csv`, beside its example after Violeau, "Fluid Mechanics and the
+// SPH Method", 2012, p. 484; same T) lies 5 % below to 12 % above this one at T = 1.15-2.7: the experimental
+// front is known to a few per cent only.
 #pragma once
 
 #include <array>
