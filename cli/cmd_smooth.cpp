@@ -175,6 +175,23 @@ nlohmann::ordered_json radioss_json(const preproc::RadiossPreview& r) {
             {"unknown_planes", r.unknown_planes}};
 }
 
+// "file:line" of a *DEFINE_SPH_MESH_BOX keyword ("" when unknown).
+std::string box_location(const engine::CheckResult& r, const preproc::MeshBox& b) {
+    return b.span.valid() ? fmt::format("{}:{}", r.deck.sources.file(b.span.file).display_name, b.span.line) : "";
+}
+
+nlohmann::ordered_json mesh_boxes_json(const engine::CheckResult& r, const preproc::MeshBoxParticles& boxes) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::array();
+    for (const preproc::MeshBox& b : boxes.boxes)
+        out.push_back({{"location", box_location(r, b)},
+                       {"part", b.part},
+                       {"particles", b.particles},
+                       {"counts", {b.nx, b.ny, b.nz}},
+                       {"cell", {b.dx, b.dy, b.dz}},
+                       {"skipped", b.skipped}});
+    return out;
+}
+
 nlohmann::ordered_json to_json(const SmoothArgs& args, const preproc::Preview& p) {
     nlohmann::ordered_json parts = nlohmann::ordered_json::array();
     for (const preproc::PartPreview& pv : p.parts) {
@@ -271,8 +288,7 @@ void print_text(const SmoothArgs& args, const preproc::Preview& p) {
 // One line per *DEFINE_SPH_MESH_BOX: what it added to the table above, or why nothing.
 void print_mesh_boxes(const engine::CheckResult& r, const preproc::MeshBoxParticles& boxes) {
     for (const preproc::MeshBox& b : boxes.boxes) {
-        const std::string where =
-            b.span.valid() ? fmt::format("{}:{}", r.deck.sources.file(b.span.file).display_name, b.span.line) : "";
+        const std::string where = box_location(r, b);
         if (b.skipped.empty())
             fmt::print("{}: *DEFINE_SPH_MESH_BOX: {} particles of part {} ({} x {} x {}, cells {} x {} x {}) "
                        "included above\n", where, b.particles, b.part, b.nx, b.ny, b.nz, g4(b.dx), g4(b.dy), g4(b.dz));
@@ -316,7 +332,9 @@ int run_smooth(const SmoothArgs& args) {
 
     const bool json = args.format == "json";
     if (json) {
-        fmt::print("{}\n", to_json(args, preview).dump(2));
+        nlohmann::ordered_json out = to_json(args, preview);
+        out["mesh_boxes"] = mesh_boxes_json(r, boxes);
+        fmt::print("{}\n", out.dump(2));
     } else {
         print_text(args, preview);
         print_mesh_boxes(r, boxes);

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <string>
 
@@ -83,4 +84,19 @@ TEST_CASE("smooth command: *DEFINE_SPH_MESH_BOX particles are previewed") {
     CHECK(contains(run.out, "24 particles in 1 part(s)"));
     CHECK(contains(run.out, "*DEFINE_SPH_MESH_BOX: 24 particles of part 1 (4 x 3 x 2, cells 0.5 x 1 x 2) included above"));
     CHECK(contains(run.out, "*DEFINE_SPH_MESH_BOX of part 1: not previewed: IDSEG is set"));
+}
+
+TEST_CASE("smooth command: --format json lists the mesh boxes") {
+    test::TempDir dir;
+    const test::Run run = test::run_sphdeck(dir, "smooth --format json '" + box_deck + "'");
+    INFO(run.out, run.err);
+    REQUIRE(run.exit_code == 0);
+    const auto j = nlohmann::json::parse(run.out);
+    CHECK(j["particles"] == 24);
+    REQUIRE(j["mesh_boxes"].size() == 3);
+    CHECK(j["mesh_boxes"][0]["particles"] == 24);
+    CHECK(j["mesh_boxes"][0]["counts"] == nlohmann::json::array({4, 3, 2}));
+    CHECK(j["mesh_boxes"][0]["skipped"] == "");
+    CHECK(j["mesh_boxes"][1]["particles"] == 0);
+    CHECK(j["mesh_boxes"][1]["skipped"].get<std::string>().find("IDSEG") != std::string::npos);
 }
