@@ -17,6 +17,7 @@
 #include "io/vtp_writer.hpp"
 #include "engine/check.hpp"
 #include "preproc/preview.hpp"
+#include "preproc/sph_mesh_box.hpp"
 
 namespace sphdeck::cli {
 namespace {
@@ -174,7 +175,24 @@ nlohmann::ordered_json radioss_json(const preproc::RadiossPreview& r) {
             {"unknown_planes", r.unknown_planes}};
 }
 
-nlohmann::ordered_json to_json(const SmoothArgs& args, const engine::CheckResult& r, const preproc::Preview& p) {
+// "file:line" of a *DEFINE_SPH_MESH_BOX keyword ("" when unknown).
+std::string box_location(const engine::CheckResult& r, const preproc::MeshBox& b) {
+    return b.span.valid() ? fmt::format("{}:{}", r.deck.sources.file(b.span.file).display_name, b.span.line) : "";
+}
+
+nlohmann::ordered_json mesh_boxes_json(const engine::CheckResult& r, const preproc::MeshBoxParticles& boxes) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::array();
+    for (const preproc::MeshBox& b : boxes.boxes)
+        out.push_back({{"location", box_location(r, b)},
+                       {"part", b.part},
+                       {"particles", b.particles},
+                       {"counts", {b.nx, b.ny, b.nz}},
+                       {"cell", {b.dx, b.dy, b.dz}},
+                       {"skipped", b.skipped}});
+    return out;
+}
+
+nlohmann::ordered_json to_json(const SmoothArgs& args, const preproc::Preview& p) {
     nlohmann::ordered_json parts = nlohmann::ordered_json::array();
     for (const preproc::PartPreview& pv : p.parts) {
         parts.push_back({{"part", pv.part},
@@ -201,7 +219,7 @@ nlohmann::ordered_json to_json(const SmoothArgs& args, const engine::CheckResult
     nlohmann::ordered_json out = {{"version", SPHDECK_VERSION},
             {"deck", args.deck},
             {"dimension", p.dimension},
-            {"particles", r.model.particles.size()},
+            {"particles", p.particles.x.size()},
             {"ini_forced", args.ini.has_value()},
             {"coincident_pairs", p.coincident.size()},
             {"neighbour_sample_stride", p.neighbour_sample_stride},
@@ -238,13 +256,13 @@ void print_radioss(const preproc::Preview& p) {
     for (long long id : g.unknown_planes) fmt::print("/SPHBCS {}: plane unknown (frame or Dir): left out\n", id);
 }
 
-void print_text(const SmoothArgs& args, const engine::CheckResult& r, const preproc::Preview& p) {
+void print_text(const SmoothArgs& args, const preproc::Preview& p) {
     const model::IniMode mode = p.parts.empty() ? model::IniMode::BucketSort : p.parts.front().ini;
     if (p.radioss)  // no INI: h as the OpenRadioss starter computes it
         fmt::print("{}: {} particles in {} part(s), {}D, OpenRadioss deck (h0: the starter's rule, spinih.F)\n\n",
-                   args.deck, r.model.particles.size(), p.parts.size(), p.dimension);
+                   args.deck, p.particles.x.size(), p.parts.size(), p.dimension);
     else
-        fmt::print("{}: {} particles in {} part(s), {}D, INI {} ({}{})\n\n", args.deck, r.model.particles.size(),
+        fmt::print("{}: {} particles in {} part(s), {}D, INI {} ({}{})\n\n", args.deck, p.particles.x.size(),
                    p.parts.size(), p.dimension, static_cast<int>(mode), ini_name(mode),
                    args.ini ? ", forced by --ini" : ", from *CONTROL_SPH");
     std::vector<std::vector<std::string>> rows = {
@@ -267,6 +285,18 @@ void print_text(const SmoothArgs& args, const engine::CheckResult& r, const prep
     if (p.radioss) print_radioss(p);
 }
 
+// One line per *DEFINE_SPH_MESH_BOX: what it added to the table above, or why nothing.
+void print_mesh_boxes(const engine::CheckResult& r, const preproc::MeshBoxParticles& boxes) {
+    for (const preproc::MeshBox& b : boxes.boxes) {
+        const std::string where = box_location(r, b);
+        if (b.skipped.empty())
+            fmt::print("{}: *DEFINE_SPH_MESH_BOX: {} particles of part {} ({} x {} x {}, cells {} x {} x {}) "
+                       "included above\n", where, b.particles, b.part, b.nx, b.ny, b.nz, g4(b.dx), g4(b.dy), g4(b.dz));
+        else
+            fmt::print("{}: *DEFINE_SPH_MESH_BOX of part {}: not previewed: {}\n", where, b.part, b.skipped);
+    }
+}
+
 int run_smooth(const SmoothArgs& args) {
     engine::CheckOptions options;
     options.reader.include_paths = args.include_paths;
@@ -275,7 +305,11 @@ int run_smooth(const SmoothArgs& args) {
     options.rules.keep_preview = !args.ini.has_value();
     const engine::CheckResult r = engine::check_file(args.deck, options);
     const diag::Counts counts = diag::count(r.diagnostics);
-    if (r.model.particles.size() == 0) {
+    // *DEFINE_SPH_MESH_BOX particles join the deck's own (preproc/sph_mesh_box.hpp).
+    const preproc::MeshBoxParticles boxes = preproc::generate_mesh_box_particles(r.model);
+    const model::Model extended = boxes.size() ? preproc::with_mesh_box_particles(r.model, boxes) : model::Model{};
+    const model::Model& model = boxes.size() ? extended : r.model;
+    if (model.particles.size() == 0) {
         for (const diag::Diagnostic& d : r.diagnostics)
             if (d.severity == diag::Severity::Error) fmt::print(stderr, "{}", diag::render_concise(d, r.deck.sources));
         fmt::print(stderr, "sphdeck: error: {}: no SPH particles (*ELEMENT_SPH): nothing to preview\n", args.deck);
@@ -287,25 +321,28 @@ int run_smooth(const SmoothArgs& args) {
 
     preproc::PreviewOptions preview_options;
     if (args.ini) preview_options.ini = static_cast<model::IniMode>(*args.ini);
-    std::shared_ptr<const preproc::Preview> computed = r.preview;
+    std::shared_ptr<const preproc::Preview> computed = boxes.size() ? nullptr : r.preview;
     if (!computed) {
         ProgressBar bar("smooth");
         if (bar.enabled()) preview_options.progress = [&bar](double f) { bar.update(f); };
-        computed = std::make_shared<const preproc::Preview>(preproc::compute_preview(r.model, preview_options));
+        computed = std::make_shared<const preproc::Preview>(preproc::compute_preview(model, preview_options));
         bar.finish();
     }
     const preproc::Preview& preview = *computed;
 
     const bool json = args.format == "json";
     if (json) {
-        fmt::print("{}\n", to_json(args, r, preview).dump(2));
+        nlohmann::ordered_json out = to_json(args, preview);
+        out["mesh_boxes"] = mesh_boxes_json(r, boxes);
+        fmt::print("{}\n", out.dump(2));
     } else {
-        print_text(args, r, preview);
+        print_text(args, preview);
+        print_mesh_boxes(r, boxes);
     }
     std::fflush(stdout);
     std::FILE* notes = json ? stderr : stdout;
     if (!args.csv.empty() || !args.vtk.empty()) {
-        const ParticleTable table = particle_table(r.model, preview);
+        const ParticleTable table = particle_table(model, preview);
         if (table.left_out > 0)
             fmt::print(stderr, "sphdeck: warning: {} particle(s) without a *NODE left out of the files\n",
                        table.left_out);

@@ -68,6 +68,12 @@ void ModelBuilder::on_card(const grammar::Block& block, const keywords::KeywordM
         if (new_block) reserve_more(model_.particles, block.line_count);
         return add_particles(block, values, line);
     }
+    // Hand-written schemas may mark ids too (*DEFINE_SPH_MESH_BOX IPID): followed like generated ones.
+    for (const FieldValue& v : values)
+        if (!v.spec->refers_to.empty()) {
+            links_.on_card(match, values);
+            break;
+        }
     if (new_block) {
         current_block_ = &block;
         KeywordRecord record;

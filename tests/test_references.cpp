@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "engine/check.hpp"
+#include "grammar/keywords/schema.hpp"
 #include "test_support.hpp"
 
 using namespace sphdeck;
@@ -61,6 +62,18 @@ TEST_CASE("references: sections of *DEFINE_ADAPTIVE_SOLID_TO_SPH and parts of *P
                                 "d.k");
     CHECK(count_code(r.diagnostics, "REF007") == 0);
     CHECK(r.model.part("7") != nullptr);
+}
+
+TEST_CASE("references: *DEFINE_ADAPTIVE_SOLID_TO_SPH_TITLE is read with its title line") {
+    auto r = engine::check_buffer(kPart +
+                                    "*SECTION_SPH\n         2\n*DEFINE_ADAPTIVE_SOLID_TO_SPH_TITLE\nsolid to particles\n"
+                                    "         1         0         1         3         2         0         0\n",
+                                "d.k");
+    CHECK(count_code(r.diagnostics, "REF007") == 0);
+    const auto match = keywords::find_keyword("*DEFINE_ADAPTIVE_SOLID_TO_SPH_TITLE");
+    REQUIRE(match);
+    CHECK_FALSE(match->schema->generated);
+    CHECK(match->has("TITLE"));
 }
 
 TEST_CASE("references: an unreadable PID is DK002 only") {

@@ -329,7 +329,65 @@ KeywordSchema adaptive_solid_to_sph() {
         .doc = "converts failing solid elements into SPH particles",
         // pydyna puts the DID + HEADING card in both the plain and the _ID class; in the manual an
         // id card normally belongs to _ID only. We follow the manual pattern (UNVERIFIED, §11, §24).
-        .options = {id_option("DID", "definition id")},
+        // _TITLE: pydyna lists it (define_adaptive_solid_to_sph.py, an A80 line first) as for the other
+        // *DEFINE_ keywords; without it here _TITLE fell back to pydyna's layout, whose DID card took the
+        // data line, and the keyword was not read (its ISSPH section was then unused: REF007).
+        .options = {title_option(), id_option("DID", "definition id")},
+    };
+}
+
+KeywordSchema sph_mesh_box() {
+    // Layout from pydyna (define_sph_mesh_box.py) and its field texts; read into the model so that
+    // `sphdeck smooth` can preview the particles the box generates (preproc/sph_mesh_box.hpp).
+    // No manual default is known: only IPID is required; blanks read as 0 and generate nothing.
+    return {
+        .name = "*DEFINE_SPH_MESH_BOX",
+        .cards =
+            {
+                {
+                    .name = "Card 1",
+                    .fields =
+                        {
+                            {.name = "XMIN", .column = 1, .width = 10, .type = F, .doc = "minimum x-coordinate"},
+                            {.name = "YMIN", .column = 11, .width = 10, .type = F, .doc = "minimum y-coordinate"},
+                            {.name = "ZMIN", .column = 21, .width = 10, .type = F, .doc = "minimum z-coordinate"},
+                            {.name = "XLEN", .column = 31, .width = 10, .type = F, .doc = "box length in x"},
+                            {.name = "YLEN", .column = 41, .width = 10, .type = F, .doc = "box length in y"},
+                            {.name = "ZLEN", .column = 51, .width = 10, .type = F, .doc = "box length in z"},
+                        },
+                },
+                {
+                    .name = "Card 2",
+                    .fields =
+                        {
+                            {.name = "IPID",
+                             .column = 1,
+                             .width = 10,
+                             .type = I,
+                             .required = true,
+                             .doc = "part of the generated SPH elements",
+                             .refers_to = "PART"},
+                            {.name = "NX", .column = 11, .width = 10, .type = I, .doc = "particles along x"},
+                            {.name = "NY", .column = 21, .width = 10, .type = I, .doc = "particles along y"},
+                            {.name = "NZ", .column = 31, .width = 10, .type = I, .doc = "particles along z"},
+                            unused(41),
+                            {.name = "IDSEG",
+                             .column = 51,
+                             .width = 10,
+                             .type = I,
+                             .default_value = 0,
+                             .doc = "segment set splitting the box; its sign says which side keeps particles (0: none removed)",
+                             .refers_to = "SET_SEGMENT"},
+                            {.name = "SFSP",
+                             .column = 61,
+                             .width = 10,
+                             .type = F,
+                             .doc = "scale of the smoothing length below which particles near IDSEG are removed"},
+                        },
+                },
+            },
+        .doc = "fills a box with NX x NY x NZ SPH particles of part IPID",
+        .options = {title_option()},
     };
 }
 
@@ -427,6 +485,7 @@ std::vector<KeywordSchema> define_keywords() {
     k.push_back(define_box_sph());
     k.push_back(sph_to_sph_coupling());
     k.push_back(adaptive_solid_to_sph());
+    k.push_back(sph_mesh_box());
     k.push_back(define_curve());
     return k;
 }
