@@ -46,7 +46,9 @@ std::string_view contact_kind(std::string_view keyword, std::string_view field, 
     if (!side_a && field != "SURFB") return {};
     if (!side_a && contains(keyword, "SINGLE_SURFACE")) return {};  // SURFB is not used
     const FieldValue* type = value_named(card, side_a ? "SURFATYP" : "SURFBTYP");
-    if (!type || !type->valid || type->number != std::floor(type->number)) return {};
+    // Outside the listed types (1e20 in a fuzzed deck) it names nothing, and must not reach the cast.
+    if (!type || !type->valid || type->number != std::floor(type->number) || type->number < 0 || type->number > 7)
+        return {};
     static constexpr std::array<std::string_view, 5> a_why = {"SURFATYP 0", "", "SURFATYP 2", "SURFATYP 3",
                                                               "SURFATYP 4"};
     static constexpr std::array<std::string_view, 5> b_why = {"SURFBTYP 0", "", "SURFBTYP 2", "SURFBTYP 3",

@@ -52,13 +52,16 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
 std::optional<std::string_view> similar_keyword(std::string_view name) {
     std::optional<std::string_view> best;
     std::size_t best_distance = 3;
+    const auto consider = [&](std::string_view n) {
+        // A length gap is a lower bound of the distance: most names need no distance at all.
+        const std::size_t gap = n.size() > name.size() ? n.size() - name.size() : name.size() - n.size();
+        if (gap >= best_distance) return;
+        const std::size_t d = edit_distance(name, n);
+        if (d < best_distance) best_distance = d, best = n;
+    };
     for (const rad::KeywordSpec& k : rad::all_keywords()) {
-        std::vector<std::string_view> names{k.name};
-        names.insert(names.end(), k.aliases.begin(), k.aliases.end());
-        for (std::string_view n : names) {
-            std::size_t d = edit_distance(name, n);
-            if (d < best_distance) best_distance = d, best = n;
-        }
+        consider(k.name);
+        for (std::string_view alias : k.aliases) consider(alias);
     }
     return best;
 }

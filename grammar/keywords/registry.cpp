@@ -179,10 +179,19 @@ std::vector<std::string_view> similar_keywords(std::string_view name, std::size_
     std::vector<Candidate> candidates;
     for (const auto& [known, schema] : registry().names) {
         const std::size_t tokens = static_cast<std::size_t>(std::count(known.begin(), known.end(), '_')) + 1;
-        // Compare with the whole name and with as many leading tokens as the known name has,
-        // so that options (*SECTON_SPH_TITLE) do not hide a close base name.
-        const std::size_t d = std::min(edit_distance(key, known), edit_distance(first_tokens(key, tokens), known));
         const std::size_t limit = std::max<std::size_t>(2, known.size() / 4);
+        // Compare with the whole name and with as many leading tokens as the known name has,
+        // so that options (*SECTON_SPH_TITLE) do not hide a close base name. Names whose lengths
+        // differ by more than the limit are farther than it (each edit changes the length by at
+        // most one): skipping them spares most of the distances, for every unknown keyword.
+        const std::string_view head = first_tokens(key, tokens);
+        std::size_t d = limit + 1;
+        for (const std::string_view written : {head, std::string_view(key)}) {
+            const std::size_t length_gap = written.size() > known.size() ? written.size() - known.size()
+                                                                           : known.size() - written.size();
+            if (length_gap <= limit) d = std::min(d, edit_distance(written, known));
+            if (head.size() == key.size()) break;  // the same text: one distance is enough
+        }
         if (d <= limit) candidates.push_back({d, known, schema});
     }
     std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
