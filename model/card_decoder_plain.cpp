@@ -3,6 +3,7 @@
 // significant width, a blank required field, a value outside the fast number forms or outside
 // its field's range) is left to decode(), which reports it: findings stay those of decode().
 #include <cmath>
+#include <cstring>
 
 #include "grammar/value.hpp"
 #include "model/card_decoder.hpp"
@@ -34,7 +35,10 @@ bool CardDecoder::decode_plain(const grammar::Block& block, const grammar::CardL
     if (!layout.plain) return false;
     const std::string_view text = deck_.text(line);
     // Free format (a comma), a tab, or text past the significant width: decode() says what.
-    if (text.size() > layout.significant || text.find_first_of(",\t") != std::string_view::npos) return false;
+    // (Two memchr: string_view::find_first_of calls memchr on the set once per character.)
+    if (text.size() > layout.significant || std::memchr(text.data(), ',', text.size()) ||
+        std::memchr(text.data(), '\t', text.size()))
+        return false;
     values.resize(card.fields.size());
     for (std::size_t i = 0; i < card.fields.size(); ++i) {
         const keywords::FieldSpec& spec = card.fields[i];

@@ -153,7 +153,7 @@ TEST_CASE("bulk decode: lines the lean path must leave to the full decoder") {
         "      12\t1.0             2.0             3.0",                       // tab
         "      13            &XX             2.0             3.0",             // parameter
         "",                                                                    // blank line: NID required
-        "      15             1.0             2.0             3.0          junk past 80",  // DK006
+        "      15             1.0             2.0             3.0       0       0        junk past 80",  // DK006
         "   16            1.0D3             2.0             3.0",              // Fortran real
         "      +17            1.0             2.0             3.0",            // '+' integer (misaligned)
         "99999999999999999             1.0             2.0",                   // 17 digits > 2^53: DK007
@@ -180,7 +180,7 @@ TEST_CASE("bulk decode: lines the lean path must leave to the full decoder") {
         "      18       1  1.0e+00        x",      // text in an unused column (if any)
         "      19       1  .5",                    // real without a leading digit
         "      20       1  5.",                    // real without digits after the point
-        "      21       1  1e999",                 // overflow
+        "      21       1        1.000000      1e15",  // NEND range of 1e15 written as real: DK007
     };
     for (int i = 1; i <= n; ++i) {
         if (i >= 11 && i <= 21) {
