@@ -82,6 +82,14 @@ base_nogeo_mb_s=${BENCH_BASE_NOGEO:-212}    # check --no-geometry, 1 thread (0.4
 base_smooth_s=${BENCH_BASE_SMOOTH:-1.15}    # smooth on the 1M-particle deck
 base_full_rss=3.41                          # peak RSS / deck size, all rules
 base_nogeo_rss=1.98                         # peak RSS / deck size, --no-geometry
+# The same old binary measured on the current (slower, shared) host, old and new runs interleaved:
+# the fair comparison there. Seconds and MB; override with BENCH_HOST_* for another host.
+host_full_s=${BENCH_HOST_FULL:-1.45}        # check, all rules, 1 thread
+host_nogeo_s=${BENCH_HOST_NOGEO:-0.89}      # check --no-geometry, 1 thread
+host_two_s=${BENCH_HOST_TWO:-1.69}          # check, all rules, 2 threads
+host_smooth_s=${BENCH_HOST_SMOOTH:-2.60}    # smooth
+host_full_rss=${BENCH_HOST_FULL_RSS:-353}   # peak RSS MB, all rules
+host_nogeo_rss=${BENCH_HOST_NOGEO_RSS:-206} # peak RSS MB, --no-geometry
 
 # OMP_NUM_THREADS goes through env(1): measure_command runs the command as given.
 measure "sphdeck check --no-geometry, 1 thread" env OMP_NUM_THREADS=1 "$build/sphdeck" check --no-geometry "$deck"
@@ -101,7 +109,9 @@ wc_rss=$median_rss
 echo
 awk -v size="$size_mb" -v cs="$check_s" -v cr="$check_rss" -v fs="$full_s" -v fr="$full_rss" -v ts="$two_s" \
     -v ss="$smooth_s" -v ws="$wc_s" -v wr="$wc_rss" -v bf="$base_full_mb_s" -v bn="$base_nogeo_mb_s" \
-    -v bs="$base_smooth_s" -v bfr="$base_full_rss" -v bnr="$base_nogeo_rss" -v strict="${BENCH_STRICT:-0}" '
+    -v bs="$base_smooth_s" -v bfr="$base_full_rss" -v bnr="$base_nogeo_rss" -v strict="${BENCH_STRICT:-0}" \
+    -v hf="$host_full_s" -v hn="$host_nogeo_s" -v ht="$host_two_s" -v hs="$host_smooth_s" -v hfr="$host_full_rss" \
+    -v hnr="$host_nogeo_rss" '
 function rate(s) { return s > 0 ? size / s : 0 }
 function verdict(ok) { return ok ? "met" : "NOT MET" }
 BEGIN {
@@ -116,6 +126,15 @@ BEGIN {
   printf "%-38s %10.2f %10.2f %7.2fx   <= 1.0x deck: %s\n", "peak RSS / deck, --no-geometry", bnr, cr / size, (cr / size) / bnr, verdict(ok5)
   printf "%-38s %10.2f %10.3f %7.2fx   <= 0.6 s: %s\n", "smooth (s)", bs, ss, ss / bs, verdict(ok6)
   printf "%-38s %10s %10.1f %8s   the floor: reading the bytes alone\n", "wc -l (MB/s)", "-", w, ""
+  printf "\nbeside the old binary on this host (seconds, MB; ratio old/new, above 1 is faster or smaller)\n"
+  printf "%-38s %10s %10s %8s\n", "figure", "old here", "now", "ratio"
+  printf "%-38s %10.2f %10.2f %7.2fx   goal 3x\n", "check, all rules, 1 thread (s)", hf, fs, (fs > 0 ? hf / fs : 0)
+  printf "%-38s %10.2f %10.2f %7.2fx   goal 2x\n", "check --no-geometry, 1 thread (s)", hn, cs, (cs > 0 ? hn / cs : 0)
+  printf "%-38s %10.2f %10.2f %7.2fx   goal: 1.6x of 1 thread now (%.2fx)\n", "check, all rules, 2 threads (s)", ht, ts, \
+         (ts > 0 ? ht / ts : 0), (ts > 0 ? fs / ts : 0)
+  printf "%-38s %10.2f %10.2f %7.2fx\n", "smooth (s)", hs, ss, (ss > 0 ? hs / ss : 0)
+  printf "%-38s %10.0f %10.0f %7.2fx   goal <= %.0f MB (deck)\n", "peak RSS, all rules (MB)", hfr, fr, (fr > 0 ? hfr / fr : 0), size
+  printf "%-38s %10.0f %10.0f %7.2fx   goal <= %.0f MB (deck)\n", "peak RSS, --no-geometry (MB)", hnr, cr, (cr > 0 ? hnr / cr : 0), size
   printf "\nreader (check --no-geometry, 1 thread) at %.3f of the speed of wc -l (wc -l is %.1fx faster)\n", \
          (w > 0 ? c / w : 0), (c > 0 ? w / c : 0)
   printf "deck %.1f MB; peak RSS %.1f MB (all rules), %.1f MB (--no-geometry)\n", size, fr, cr

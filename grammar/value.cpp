@@ -207,6 +207,14 @@ bool fast_classify(ValueToken& token, ValueShape expected) {
 
 }  // namespace
 
+bool plain_integer(std::string_view text, long long& value) {
+    return !text.empty() && starts_like_c_number(text) && short_integer(text.data(), text.data() + text.size(), value);
+}
+
+bool plain_real(std::string_view text, double& value) {
+    return !text.empty() && starts_like_c_number(text) && short_real(text.data(), text.data() + text.size(), value);
+}
+
 ValueToken classify_value(std::string_view field, ValueShape expected) {
     ValueToken token;
     token.text = trim(field, token.offset);

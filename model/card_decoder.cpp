@@ -78,6 +78,11 @@ const CardDecoder::Layout& CardDecoder::layout_of(const keywords::CardSpec& card
     l.text_card = !card.fields.empty() && card.fields[0].type == FieldType::Text && card.fields[0].width >= 70;
     l.title_card = l.text_card && card.fields.size() == 1 &&
                    (card.fields[0].is_named("TITLE") || card.fields[0].is_named("HEADING"));
+    l.plain = format == grammar::CardFormat::Standard &&
+              std::all_of(card.fields.begin(), card.fields.end(), [](const keywords::FieldSpec& f) {
+                  return f.type == FieldType::Integer || f.type == FieldType::Real || f.type == FieldType::Label ||
+                         f.type == FieldType::Unused;
+              });
     layouts_.push_back(std::move(l));
     last_layout_ = layouts_.size() - 1;
     return layouts_.back();

@@ -38,7 +38,17 @@ public:
     void decode(const grammar::Block& block, const grammar::CardLine& line, const keywords::CardSpec& card,
                 std::vector<FieldValue>& values);
 
+    // The bulk path of *NODE and *ELEMENT_SPH lines: a plain fixed-format line (standard widths,
+    // numbers in their columns, nothing to report) is decoded straight from its columns; any
+    // other line goes through decode(). `values` come out as decode() would fill them.
+    void decode_bulk(const grammar::Block& block, const grammar::CardLine& line, const keywords::CardSpec& card,
+                     std::vector<FieldValue>& values) {
+        if (!decode_plain(block, line, card, values)) decode(block, line, card, values);
+    }
+
 private:
+    bool decode_plain(const grammar::Block& block, const grammar::CardLine& line, const keywords::CardSpec& card,
+                      std::vector<FieldValue>& values);
     void decode_number(const grammar::Block& block, const keywords::FieldSpec& spec, const grammar::ValueToken& token,
                        FieldValue& v);
     void check_text(const keywords::FieldSpec& spec, FieldValue& v);
@@ -53,6 +63,7 @@ private:
         std::uint32_t significant = 80;
         bool text_card = false;
         bool title_card = false;  // a title or heading only: its tail past the last column is cosmetic
+        bool plain = false;       // standard widths and number fields only: decode_plain may take it
     };
     const Layout& layout_of(const keywords::CardSpec& card, grammar::CardFormat format);
 

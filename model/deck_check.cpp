@@ -146,7 +146,7 @@ private:
             std::size_t released = first;  // lines whose text went back (a mapped file's pages)
             for (std::size_t i = first; i < last; ++i) {
                 if (i - released == release_lines) release_text(lines[released], lines[i]), released = i;
-                decoder.decode(block, lines[i], card, values);
+                decoder.decode_bulk(block, lines[i], card, values);
                 std::optional<std::string> refused;
                 if (particles) {
                     refused = ranges_.check_alone(range_extra(values));

@@ -6,9 +6,24 @@
 
 #include "preproc/neighbour_grid.hpp"
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 namespace sphdeck::preproc {
 
 namespace {
+
+// Threads for the grid passes: OMP_NUM_THREADS (or --threads) decides; below a few thousand points
+// starting a team costs more than it saves.
+int grid_threads(std::size_t points) {
+#ifdef _OPENMP
+    return points < 4096 ? 1 : std::max(1, omp_get_max_threads());
+#else
+    (void)points;
+    return 1;
+#endif
+}
 
 // Axes the points span, and their bounding-box measure over those axes.
 std::pair<int, double> spanned(std::span<const double> x, std::span<const double> y, std::span<const double> z) {
@@ -144,7 +159,15 @@ NearestNeighbours nearest_neighbours_grid(std::span<const double> x, std::span<c
     NearestNeighbours out{std::vector<double>(n, 0.0), std::vector<std::uint32_t>(n, NearestNeighbours::none)};
     if (n < 2) return out;
     const NeighbourGrid g = nearest_neighbour_grid(x, y, z);
-    g.for_each_cell_rows(block_rows, [&](std::size_t o, NeighbourGrid::Cell at, const auto& block) {
+    // Each point's search is its own and writes only its own entry: contiguous runs of cells
+    // go to the threads, and the numbers are those of one thread.
+    const int threads = grid_threads(n);
+    const std::size_t cells = g.occupied();
+#pragma omp parallel for num_threads(threads) schedule(static, 1) if (threads > 1)
+    for (int t = 0; t < threads; ++t) {
+    const std::size_t from = cells * static_cast<std::size_t>(t) / static_cast<std::size_t>(threads);
+    const std::size_t to = cells * static_cast<std::size_t>(t + 1) / static_cast<std::size_t>(threads);
+    g.for_each_cell_rows(block_rows, from, to, [&](std::size_t o, NeighbourGrid::Cell at, const auto& block) {
         const auto [first, last] = g.occupied_range(o);
         for (std::uint32_t k = first; k < last; ++k) {
             double best2 = std::numeric_limits<double>::infinity();
@@ -167,6 +190,7 @@ NearestNeighbours nearest_neighbours_grid(std::span<const double> x, std::span<c
             out.index[i] = best == NearestNeighbours::none ? best : g.order()[best];
         }
     });
+    }
     return out;
 }
 
@@ -280,17 +304,59 @@ SPHDECK_CLONES void count_cell_mixed(const NeighbourGrid& g, const double* suppo
 // Every pair once: for each occupied cell, the pairs inside it and with the cells after it in a
 // half-block: the rest of its row, then the rows above it (y + 1 in its plane, the whole next
 // plane), all contiguous ranges.
+//
+// On several threads: a cell's pairs reach its own z plane and the next one only. The occupied
+// cells are cut at plane boundaries into 2 x threads runs of about equal points; runs 0, 2, 4...
+// write disjoint planes and go together, then runs 1, 3, 5... Counts are sums of 0/1 terms, so
+// the order of the additions changes nothing.
 template <bool Uniform>
 void count_symmetric(const NeighbourGrid& g, const std::vector<double>& support, double tol2,
                      std::vector<std::uint64_t>& count, std::vector<std::uint32_t>& close_points) {
     static constexpr NeighbourGrid::RowOffset half[] = {
         {1, 1, 0, 0}, {-1, 1, 1, 0}, {-1, 1, -1, 1}, {-1, 1, 0, 1}, {-1, 1, 1, 1}};
     static_assert(count_reach == 1, "the half-block rows assume cells as large as the support");
-    g.for_each_cell_rows(half, [&](std::size_t o, NeighbourGrid::Cell, const std::vector<NeighbourGrid::Range>& ranges) {
-        const auto [first, last] = g.occupied_range(o);
-        const auto cell = Uniform ? count_cell_uniform : count_cell_mixed;
-        cell(g, support.data(), first, last, ranges, tol2, count.data(), close_points);
-    });
+    const auto run = [&](std::size_t from, std::size_t to, std::vector<std::uint32_t>& close) {
+        g.for_each_cell_rows(half, from, to,
+                             [&](std::size_t o, NeighbourGrid::Cell, const std::vector<NeighbourGrid::Range>& ranges) {
+                                 const auto [first, last] = g.occupied_range(o);
+                                 const auto cell = Uniform ? count_cell_uniform : count_cell_mixed;
+                                 cell(g, support.data(), first, last, ranges, tol2, count.data(), close);
+                             });
+    };
+    const int threads = grid_threads(g.size());
+    const std::size_t cells = g.occupied();
+    if (threads == 1) return run(0, cells, close_points);
+    // Run boundaries: the first occupied cell of a plane, near each 1/(2 threads) of the points.
+    const std::size_t runs = 2 * static_cast<std::size_t>(threads);
+    std::vector<std::size_t> bound{0};
+    for (std::size_t r = 1; r < runs; ++r) {
+        const auto target = static_cast<std::uint32_t>(g.size() * r / runs);
+        std::size_t lo = bound.back(), hi = cells;  // first cell whose points start at or after target
+        while (lo < hi) {
+            const std::size_t mid = lo + (hi - lo) / 2;
+            if (g.occupied_range(mid).first < target) lo = mid + 1;
+            else hi = mid;
+        }
+        while (lo < cells && lo > 0 && g.occupied_cell(lo)[2] == g.occupied_cell(lo - 1)[2]) ++lo;
+        bound.push_back(std::max(lo, bound.back()));
+    }
+    bound.push_back(cells);
+    // Runs of one parity must stay a plane apart (an empty run between them would let them touch):
+    // otherwise one thread does it all.
+    for (std::size_t parity = 0; parity < 2; ++parity) {
+        long long reach = -2;  // the last plane the runs so far write into
+        for (std::size_t r = parity; r < runs; r += 2) {
+            if (bound[r] == bound[r + 1]) continue;
+            if (static_cast<long long>(g.occupied_cell(bound[r])[2]) <= reach) return run(0, cells, close_points);
+            reach = static_cast<long long>(g.occupied_cell(bound[r + 1] - 1)[2]) + 1;
+        }
+    }
+    std::vector<std::vector<std::uint32_t>> close(runs);
+    for (std::size_t parity = 0; parity < 2; ++parity) {
+#pragma omp parallel for num_threads(threads) schedule(static, 1)
+        for (std::size_t r = parity; r < runs; r += 2) run(bound[r], bound[r + 1], close[r]);
+    }
+    for (const auto& c : close) close_points.insert(close_points.end(), c.begin(), c.end());
 }
 
 // Gather counting of every `stride`-th point (in cell order) over its whole block; the others

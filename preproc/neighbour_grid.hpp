@@ -85,10 +85,15 @@ public:
     // cell on a hashed grid: one cursor per row offset moves forward through the occupied cells.
     template <typename F>
     void for_each_cell_rows(std::span<const RowOffset> rows, F&& f) const {
+        for_each_cell_rows(rows, 0, occupied(), std::forward<F>(f));
+    }
+    // The same for the occupied cells [begin, end) only: threads walk disjoint runs of cells.
+    template <typename F>
+    void for_each_cell_rows(std::span<const RowOffset> rows, std::size_t begin, std::size_t end_cell, F&& f) const {
         std::vector<Range> ranges(rows.size());
         std::vector<std::size_t> cursor(rows.size(), 0);
         const std::size_t count = occupied();
-        for (std::size_t o = 0; o < count; ++o) {
+        for (std::size_t o = begin; o < end_cell; ++o) {
             const Cell c = occupied_cell(o);
             for (std::size_t r = 0; r < rows.size(); ++r) {
                 const RowOffset& row = rows[r];

@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 #include <fmt/format.h>
 
+#include <set>
 #include <string>
 
 #include "grammar/read_deck.hpp"
@@ -139,4 +140,86 @@ TEST_CASE("bulk decode: NEND ranges the deck's nodes cannot hold are refused ali
         CHECK(serial.diagnostics[i].message == parallel.diagnostics[i].message);
         CHECK(serial.diagnostics[i].span.line == parallel.diagnostics[i].span.line);
     }
+}
+
+// The lean path (model/card_decoder_plain.cpp) takes plain lines only; every line below must fall
+// back to the full decoder, and the parallel walk (lean path) must still match the serial one
+// (full decoder only), finding by finding, span by span.
+TEST_CASE("bulk decode: lines the lean path must leave to the full decoder") {
+    const int n = 12000;
+    std::string text = "*KEYWORD\n*PARAMETER\nR XX      2.5\n*NODE\n";
+    const char* odd_nodes[] = {
+        "      11,1.0,2.0,3.0",                                               // free format
+        "      12\t1.0             2.0             3.0",                       // tab
+        "      13            &XX             2.0             3.0",             // parameter
+        "",                                                                    // blank line: NID required
+        "      15             1.0             2.0             3.0       0       0        junk past 80",  // DK006
+        "   16            1.0D3             2.0             3.0",              // Fortran real
+        "      +17            1.0             2.0             3.0",            // '+' integer (misaligned)
+        "99999999999999999             1.0             2.0",                   // 17 digits > 2^53: DK007
+        "      19             1.0             2.0             3.0      x",    // TC not an integer
+        "      20             1.0             2.0             3.0       1.5", // TC written as real
+        "      21             1.0             2.0             3.0\r",          // CRLF line end
+        "      22             1.x             2.0             3.0",            // DK003
+        "      23     1.0e+400             2.0             3.0",               // overflow
+        "      24             1.0             2.0             3.0       0       0  extra",  // columns 73-80
+    };
+    for (int i = 1; i <= n; ++i) {
+        if (i >= 11 && i <= 24) text += std::string(odd_nodes[i - 11]) + "\n";
+        else if (i == 30) text += "$ a comment inside the block\n";
+        else text += fmt::format("{:8d}{:16.6f}{:16.6f}{:16.6f}\n", i, 0.001 * i, 0.002 * i, 0.5);
+    }
+    text += "*ELEMENT_SPH\n";
+    const char* odd_particles[] = {
+        "      11       1     1.0    &XX",        // parameter in NEND
+        "      12       1  1.0e+00    13",         // NEND range
+        "      14,1,1.0",                          // free format
+        "      15          1.0e+00",               // PID blank: required
+        "      16       1        -",               // a lone '-'
+        "      17       1  1.0e+00      17  7",    // NEND reaches 41-42 (DK023)
+        "      18       1  1.0e+00        x",      // text in an unused column (if any)
+        "      19       1  .5",                    // real without a leading digit
+        "      20       1  5.",                    // real without digits after the point
+        "      21       1        1.000000      1e15",  // NEND range of 1e15 written as real: DK007
+    };
+    for (int i = 1; i <= n; ++i) {
+        if (i >= 11 && i <= 21) {
+            if (i - 11 < static_cast<int>(std::size(odd_particles))) text += std::string(odd_particles[i - 11]) + "\n";
+        } else {
+            text += fmt::format("{:8d}{:8d}{:16.6f}\n", i, 1 + i % 3, 1.0 + i);
+        }
+    }
+    text += "*END\n";
+    grammar::RawDeck deck = grammar::read_deck_buffer(text, "odd.k");
+    Built serial = build(deck, false);
+    Built parallel = build(deck, true);
+
+    CHECK(serial.model.nodes.id == parallel.model.nodes.id);
+    CHECK(serial.model.nodes.x == parallel.model.nodes.x);
+    CHECK(serial.model.nodes.y == parallel.model.nodes.y);
+    CHECK(serial.model.nodes.z == parallel.model.nodes.z);
+    CHECK(serial.model.particles.node == parallel.model.particles.node);
+    CHECK(serial.model.particles.part == parallel.model.particles.part);
+    CHECK(serial.model.particles.mass == parallel.model.particles.mass);
+    CHECK(serial.model.particles.line == parallel.model.particles.line);
+    CHECK(serial.summary.particles == parallel.summary.particles);
+    REQUIRE(serial.diagnostics.size() == parallel.diagnostics.size());
+    for (std::size_t i = 0; i < serial.diagnostics.size(); ++i) {
+        CAPTURE(serial.diagnostics[i].message);
+        CHECK(serial.diagnostics[i].code == parallel.diagnostics[i].code);
+        CHECK(serial.diagnostics[i].message == parallel.diagnostics[i].message);
+        CHECK(serial.diagnostics[i].span.line == parallel.diagnostics[i].span.line);
+        CHECK(serial.diagnostics[i].span.column == parallel.diagnostics[i].span.column);
+        CHECK(serial.diagnostics[i].span.end_column == parallel.diagnostics[i].span.end_column);
+        CHECK(serial.diagnostics[i].notes.size() == parallel.diagnostics[i].notes.size());
+    }
+    // The odd lines do report: the comparison is not between two empty lists.
+    std::set<std::string> codes;
+    for (const auto& d : serial.diagnostics) codes.insert(d.code);
+    CHECK(codes.count("DK002"));
+    CHECK(codes.count("DK003"));
+    CHECK(codes.count("DK006"));
+    CHECK(codes.count("DK007"));
+    CHECK(codes.count("DK008"));
+    CHECK(codes.count("DK016"));
 }

@@ -1,0 +1,89 @@
+// The lean path of CardDecoder for the lines that make up nearly all of a big deck: plain
+// fixed-format number lines. Anything it does not take whole (a comma, a tab, '&', text past the
+// significant width, a blank required field, a value outside the fast number forms or outside
+// its field's range) is left to decode(), which reports it: findings stay those of decode().
+#include <cmath>
+#include <cstring>
+
+#include "grammar/value.hpp"
+#include "model/card_decoder.hpp"
+
+namespace sphdeck::model {
+
+using keywords::FieldType;
+
+namespace {
+// Spaces only: a tab or '\r' inside a field sends the line to decode().
+std::string_view trim_spaces(std::string_view s, std::size_t& offset) {
+    std::size_t b = 0, e = s.size();
+    while (b < e && s[b] == ' ') ++b;
+    while (e > b && s[e - 1] == ' ') --e;
+    offset = b;
+    return s.substr(b, e - b);
+}
+
+// What decode_number checks after the value: an integer beyond 2^53, choices and ranges.
+bool in_range(const keywords::FieldSpec& spec, double number) {
+    if (!spec.choices.empty()) return number == std::trunc(number) && spec.choice(static_cast<long long>(number));
+    return !(spec.min && number < *spec.min) && !(spec.max && number > *spec.max);
+}
+}  // namespace
+
+bool CardDecoder::decode_plain(const grammar::Block& block, const grammar::CardLine& line,
+                               const keywords::CardSpec& card, std::vector<FieldValue>& values) {
+    const Layout& layout = layout_of(card, block.format);
+    if (!layout.plain) return false;
+    const std::string_view text = deck_.text(line);
+    // Free format (a comma), a tab, or text past the significant width: decode() says what.
+    // (Two memchr: string_view::find_first_of calls memchr on the set once per character.)
+    if (text.size() > layout.significant || std::memchr(text.data(), ',', text.size()) ||
+        std::memchr(text.data(), '\t', text.size()))
+        return false;
+    values.resize(card.fields.size());
+    for (std::size_t i = 0; i < card.fields.size(); ++i) {
+        const keywords::FieldSpec& spec = card.fields[i];
+        const grammar::FixedField& at = layout.positions[i];
+        FieldValue& v = values[i];
+        std::size_t offset = 0;
+        const std::string_view field =
+            trim_spaces(at.start < text.size() ? text.substr(at.start, at.width) : std::string_view{}, offset);
+        v.spec = &spec;
+        v.span = grammar::Span{line.file, line.line, at.start + 1, at.start + at.width + 1};
+        v.text = field;
+        v.explicit_value = !field.empty();
+        v.valid = false;
+        v.number = 0.0;
+        if (field.empty()) {
+            if (spec.type == FieldType::Unused) continue;
+            if (!spec.default_value) {
+                if (spec.required) return false;  // DK008
+                continue;
+            }
+            v.number = *spec.default_value;
+            v.valid = true;
+            continue;
+        }
+        if (spec.type == FieldType::Unused) return false;  // text in an unused field: rare, decode() keeps it
+        if (offset > 0) {
+            v.span.column += static_cast<std::uint32_t>(offset);
+            v.span.end_column = v.span.column + static_cast<std::uint32_t>(field.size());
+        }
+        if (spec.type == FieldType::Real) {
+            if (!grammar::plain_real(field, v.number)) return false;
+        } else {
+            long long n = 0;
+            if (!grammar::plain_integer(field, n)) return false;
+            v.number = static_cast<double>(n);
+            if (exceeds_integer_range(v.number)) return false;  // DK007
+        }
+        v.valid = true;
+        if (v.number == 0.0 && spec.zero_is_default && spec.default_value) {
+            v.number = *spec.default_value;
+            continue;
+        }
+        if ((!spec.choices.empty() || spec.min || spec.max) && !in_range(spec, v.number)) return false;  // DK007
+    }
+    return true;
+}
+
+}  // namespace sphdeck::model
