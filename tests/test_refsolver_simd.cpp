@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "refsolver/pair_rows.hpp"
 #include "test_refsolver_decks.hpp"
@@ -72,7 +73,7 @@ TEST_CASE("refsolver: the SIMD pair loop equals the scalar loop to round-off") {
                                               {&refsolver::ParticleState::vx, "vx"}, {&refsolver::ParticleState::vy, "vy"},
                                               {&refsolver::ParticleState::vz, "vz"}, {&refsolver::ParticleState::rho, "rho"},
                                               {&refsolver::ParticleState::e, "e"}, {&refsolver::ParticleState::h, "h"}}) {
-                CAPTURE(name);
+                CAPTURE(std::string(name));
                 CHECK(relative_gap(a.*field, b.*field) < 1e-11);
             }
         }
