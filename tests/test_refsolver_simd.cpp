@@ -69,11 +69,13 @@ TEST_CASE("refsolver: the SIMD pair loop equals the scalar loop to round-off") {
             REQUIRE(a.size() == b.size());
             // The run did something: particles moved and the density changed by far more than the tolerance.
             CHECK(relative_gap(a.rho, std::vector<double>(a.size(), 1000.0)) > 1e-6);
-            for (const auto& [field, name] : {std::pair{&refsolver::ParticleState::x, "x"}, {&refsolver::ParticleState::y, "y"},
+            for (const auto& [member, label] : {std::pair{&refsolver::ParticleState::x, "x"}, {&refsolver::ParticleState::y, "y"},
                                               {&refsolver::ParticleState::vx, "vx"}, {&refsolver::ParticleState::vy, "vy"},
                                               {&refsolver::ParticleState::vz, "vz"}, {&refsolver::ParticleState::rho, "rho"},
                                               {&refsolver::ParticleState::e, "e"}, {&refsolver::ParticleState::h, "h"}}) {
-                CAPTURE(std::string(name));
+                const std::string name = label;  // a copy: clang 14 lambdas (CAPTURE) cannot capture bindings
+                const auto field = member;
+                CAPTURE(name);
                 CHECK(relative_gap(a.*field, b.*field) < 1e-11);
             }
         }
