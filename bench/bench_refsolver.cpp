@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "engine/check.hpp"
+#include "refsolver/pair_rows.hpp"
 #include "refsolver/simulation.hpp"
 
 using namespace sphdeck;
@@ -46,6 +47,9 @@ namespace {
 // skin 0.3 h, rebuilt every 4 steps here: 20 % of the time), same 2-core VM, load average 0.7:
 // docs/solver.md, "Performance".
 constexpr double baseline_one_thread = 0.89e6, baseline_two_threads = 1.66e6;
+// Issue 18 item 5 (SIMD pair loop, refsolver/pair_rows.hpp): the scalar loop on the 2-core AMD EPYC
+// VM (AVX2, no AVX-512), idle, 25 Nov 2026: median of 3 runs, 1 thread. Goal: 2x per core.
+constexpr double scalar_one_thread_epyc = 6.85e5;
 
 std::string dam_break_deck(double dx) {
     const int nx = static_cast<int>(0.6 / dx + 0.5), ny = nx, nz = static_cast<int>(0.28 / dx + 0.5);
@@ -111,6 +115,8 @@ double cpu_seconds() {
 Repetition measure(const model::Model& model, int threads, int warm_up, int steps) {
     refsolver::RunOptions options;
     options.threads = threads;
+    const char* scalar = std::getenv("BENCH_SCALAR");  // BENCH_SCALAR=1: the scalar pair loop, for comparison
+    options.simd = !(scalar && std::string(scalar) == "1");
     options.end_time = 10.0;
     auto setup = refsolver::Simulation::create(model, options);
     if (!setup.simulation) {
@@ -173,9 +179,12 @@ int main(int argc, char** argv) {
     constexpr int warm_up = 5;
     const engine::CheckResult deck = engine::check_buffer(dam_break_deck(dx), "dam_break_3d.k");
     const std::size_t n = deck.model.particles.size();
+    const char* scalar = std::getenv("BENCH_SCALAR");
     fmt::print("3D dam break in motion: {} particles, spacing {} m; {} warm-up + {} timed steps x {} repetitions "
-               "per thread count; load average {}\n",
-               n, dx, warm_up, steps, repetitions, load_average());
+               "per thread count; pair loop {}; load average {}\n",
+               n, dx, warm_up, steps, repetitions,
+               scalar && std::string(scalar) == "1" ? "scalar (BENCH_SCALAR=1)" : refsolver::best_pair_rows().name,
+               load_average());
     bool met = true;
     double alone_one_thread = 0;
     for (int threads : {1, 2}) {
@@ -188,12 +197,16 @@ int main(int argc, char** argv) {
         }
         const double r = median(rate), s = median(share);
         const double baseline = threads == 1 ? baseline_one_thread : baseline_two_threads;
-        fmt::print("threads {}: {:.3g} particle updates/s (baseline {:.2g}, x{:.1f}; {:.3g} per CPU second); rebuild "
+        fmt::print("threads {}: {:.3g} particle updates/s (issue-7 baseline {:.2g} on another host, x{:.1f}; {:.3g} per "
+                   "CPU second); rebuild "
                    "share {:.1f}% ({} rebuilds in {} steps; one rebuild costs {:.2f} steps)\n",
                    threads, r, baseline, r / baseline, median(cpu_rate), 100 * s, median(rebuilds), steps,
                    median(rebuild_in_steps));
         if (threads == 2) met = r >= 1e6 && s <= 0.05;
         if (threads == 1) alone_one_thread = r;
+        fmt::print("  per core: {:.3g} updates/s, x{:.2f} the scalar loop on the EPYC VM ({:.3g} per core, 1 thread; "
+                   "goal x2)\n",
+                   r / threads, r / threads / scalar_one_thread_epyc, scalar_one_thread_epyc);
     }
     fmt::print("goal (2 threads: >= 1e6 updates/s, rebuild <= 5%): {}; load average now {}\n", met ? "met" : "not met",
                load_average());

@@ -1,11 +1,13 @@
 #include "refsolver/rates.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <omp.h>
 
 #include "refsolver/continuity.hpp"
 #include "refsolver/energy.hpp"
 #include "refsolver/momentum.hpp"
+#include "refsolver/pair_rows.hpp"
 #include "refsolver/stress.hpp"
 
 namespace sphdeck::refsolver {
@@ -117,6 +119,28 @@ inline void add_stress(Sums& sums, GradientSums& gradient, const StressTerms& st
     return n;
 }
 
+// The SIMD rows' view of the pair loop's input and output (pair_rows.hpp), per-thread scratch
+// sized for the longest row (the threads set their own pointers).
+template <int Dimension, bool Renormalise>
+PairRows pair_rows_view(Particles& s, const NeighbourList& list, const RateParameters& rp, RateScratch& scratch) {
+    PairRows v;
+    std::uint32_t longest = 0;
+    for (std::size_t i = 0; i < s.real; ++i)
+        longest = std::max({longest, list.forward_offsets[i + 1] - list.forward_offsets[i],
+                            list.ghost_offsets[i + 1] - list.ghost_offsets[i]});
+    v.stride = longest + 16;
+    scratch.reverse.resize(scratch.inside.size());
+    v.nb = scratch.packed.data(), v.positions = reinterpret_cast<const double*>(scratch.positions.data()), v.interacting = s.interacting.data();
+    v.correction = Renormalise ? reinterpret_cast<const double*>(s.correction.data()) : nullptr;
+    v.forward_offsets = list.forward_offsets.data(), v.forward = list.forward.data();
+    v.ghost_offsets = list.ghost_offsets.data(), v.ghost = list.ghost.data();
+    v.norm = CubicSpline{Dimension}.normalisation(), v.q1 = rp.viscosity.q1, v.q2 = rp.viscosity.q2;
+    v.body[0] = rp.body[0], v.body[1] = rp.body[1], v.body[2] = rp.body[2];
+    v.dimension = Dimension, v.renormalise = Renormalise;
+    v.ax = s.ax.data(), v.ay = s.ay.data(), v.az = s.az.data(), v.drho = s.drho.data(), v.de = s.de.data();
+    return v;
+}
+
 template <int Dimension, bool Renormalise, bool Solid>
 void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp, RateScratch& scratch) {
     const std::size_t real = s.real;
@@ -137,16 +161,32 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
             scratch.received_gradient.assign(real * static_cast<std::size_t>(team), GradientSums{});
     }
 
+    // The SIMD rows (pair_rows.hpp) for fluid decks when the CPU runs them; the scalar loop below
+    // then has nothing to do.
+    const PairRowsPath fast = !Solid && rp.simd ? best_pair_rows() : PairRowsPath{};
+    const PairRows view = fast.run ? pair_rows_view<Dimension, Renormalise>(s, list, rp, scratch) : PairRows{};
+    const std::size_t scalar_end = fast.run ? 0 : real;
+
 #pragma omp parallel num_threads(team)
     {
         const auto t = static_cast<std::size_t>(omp_get_thread_num());
         Sums* received = scratch.received.data() + t * real;
         GradientSums* received_gradient = Solid ? scratch.received_gradient.data() + t * real : nullptr;
         std::vector<std::uint32_t>& inside = scratch.inside[t];
+        if (fast.run) {
+            PairRows mine = view;
+            if (inside.size() < view.stride) inside.resize(view.stride);
+            if (scratch.reverse[t].size() < 5 * view.stride) scratch.reverse[t].resize(5 * view.stride);
+            mine.inside = inside.data(), mine.reverse = scratch.reverse[t].data();
+            mine.received = received->data();  // Sums: 5 contiguous doubles per particle
+            // Chunks of 256 particles dealt round-robin: the same schedule as the scalar loop's.
+#pragma omp for schedule(static, 1)
+            for (std::size_t first = 0; first < real; first += 256) fast.run(mine, first, std::min(real, first + 256));
+        }
         // schedule(static, chunk): a fixed assignment of particles to threads, so the sums are
         // added in the same order at every run with this thread count.
 #pragma omp for schedule(static, 256)
-        for (std::size_t i = 0; i < real; ++i) {
+        for (std::size_t i = 0; i < scalar_end; ++i) {
             if (!interacting[i]) continue;
             const PackedParticle& me = nb[i];
             const Correction& bi = correction[i];
@@ -229,11 +269,15 @@ void compute_rates(Particles& s, const NeighbourList& list, const RateParameters
     const std::size_t n = s.total();
     scratch.packed.resize(n);
     PackedParticle* packed = scratch.packed.data();
+    const bool simd = parameters.simd && !parameters.solid && best_pair_rows().run;
+    if (simd) scratch.positions.resize(n);
+    std::array<double, 4>* positions = scratch.positions.data();
 #pragma omp parallel for schedule(static) num_threads(parameters.threads)
     for (std::size_t i = 0; i < n; ++i) {
         const double m = s.interacting[i] ? s.m[i] : 0.0;
         packed[i] = {s.x[i], s.y[i], s.z[i], s.vx[i], s.vy[i], s.vz[i], s.h[i], m,
                      s.rho[i], s.c[i], s.p[i] / s.rho[i], m / s.rho[i]};
+        if (simd) positions[i] = {s.x[i], s.y[i], s.z[i], s.h[i]};
     }
     const bool two = parameters.kernel.dimension == 2;
     if (parameters.solid) {  // *MAT_ELASTIC parts: S / rho^2 too, and the loops with the stress terms

@@ -14,6 +14,7 @@
 
 #include "refsolver/kernel.hpp"
 #include "refsolver/neighbour_list.hpp"
+#include "refsolver/packed_particle.hpp"
 #include "refsolver/particles.hpp"
 #include "refsolver/smoothing_length.hpp"
 #include "refsolver/stress.hpp"
@@ -32,21 +33,21 @@ struct RateParameters {
     // (stress.hpp) and fills dstress; fluid-only decks run the loop without them.
     bool solid = false;
     std::vector<double> shear;  // per part: G, 0 for a fluid
+    // The SIMD pair loop (pair_rows.hpp) when the CPU runs one and the deck is fluid-only; false:
+    // the scalar loop (the reference the tests compare it with).
+    bool simd = true;
 };
 
-// What the pair loop reads of a particle, packed together: one or two cache lines per neighbour
-// instead of one per array. Non-interacting particles get m = 0 and contribute nothing.
-struct PackedParticle {
-    double x, y, z, vx, vy, vz, h, m, rho, c, p_over_rho, volume;  // volume = m / rho
-};
 
 // Work arrays of compute_rates, kept between steps so that no step allocates.
 struct RateScratch {
     std::vector<PackedParticle> packed;  // real + ghost particles
+    std::vector<std::array<double, 4>> positions;  // SIMD path: x y z h of the same (pair_rows.hpp)
     // Per thread, per real particle: ax ay az drho de received from pairs listed under another
     // particle (no two threads write the same entry; the sums are added in thread order).
     std::vector<std::array<double, 5>> received;
     std::vector<std::vector<std::uint32_t>> inside;  // per thread: one particle's pairs within the support
+    std::vector<std::vector<double>> reverse;        // per thread, SIMD path: the shares a row's partners receive
     // Solid decks only: S / rho^2 (real + ghost), and per real particle the P and Q sums of
     // stress.hpp, own and (per thread) received.
     std::vector<SymmetricTensor> stress_over_rho2;

@@ -40,6 +40,7 @@ struct RunOptions {
     std::optional<double> end_time;  // overrides *CONTROL_TERMINATION ENDTIM
     int threads = 0;                 // OpenMP threads; 0: the OpenMP default
     bool ignore_unsupported = false; // run anyway, ignoring what cannot be honoured
+    bool simd = true;                // the SIMD pair loop where the CPU has one (false: scalar, for comparison)
 };
 
 // Particle state in model order (structure of arrays).
