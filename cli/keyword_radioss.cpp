@@ -52,6 +52,8 @@ std::string card_notes(const rad::KeywordSpec& keyword, const rad::FormatSpec& f
         return fmt::format("LIST: {} values in all, {} a line, as field {} of the group's first card says; no "
                            "line for 0",
                            card.count, card.fields.size(), card.count);
+    if (card.repeat == rad::Repeat::Once && card.present_if)
+        return fmt::format("once, only when {}; an absent card takes every default", card.condition);
     if (card.repeat == rad::Repeat::Once) return keyword.engine ? "once" : "once; an absent card takes every default";
     if (card.fields.size() == 1 && card.fields[0].cell == rad::Cell::Line && card.fields[0].name == "text")
         return "any further lines: kept as text, not checked";
@@ -73,7 +75,7 @@ void print_card(const rad::CardSpec& card, int version, bool engine) {
                               : to_end ? fmt::format("{}-", cells[i].start + 1)
                                        : fmt::format("{}-{}", cells[i].start + 1, cells[i].start + cells[i].width);
         rows.push_back({std::move(columns), f.name.empty() ? "-" : std::string(f.name), std::string(cell_type(f.cell)),
-                        std::string()});
+                        std::string(f.note)});
     }
     if (engine) rows[0][0] = "value";
     std::array<std::size_t, 3> width{};
@@ -98,6 +100,7 @@ void print_radioss_keyword(const rad::KeywordSpec& keyword) {
     fmt::print("{}  (OpenRadioss {} keyword)\n", keyword.name, keyword.engine ? "engine" : "starter");
     if (!keyword.aliases.empty()) fmt::print("aliases: {}\n", fmt::join(keyword.aliases, ", "));
     if (!keyword.summary.empty()) fmt::print("{}\n", keyword.summary);
+    if (!keyword.source.empty()) fmt::print("source: {}\n", keyword.source);
     if (!keyword.decoded) {
         fmt::print("\nknown and kept as is: its lines are not cut into fields or checked\n");
         return;

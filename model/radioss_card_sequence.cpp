@@ -22,6 +22,18 @@ RadiossCardSequence::RadiossCardSequence(const std::vector<rad::CardSpec>& cards
             list_ = k;
             break;
         }
+    for (std::size_t k = 0; k < first_repeated_; ++k) conditional_ = conditional_ || cards[k].present_if;
+    skip_absent();
+}
+
+double RadiossCardSequence::Earlier::operator()(std::string_view field) const {
+    for (const auto& [name, value] : values)
+        if (name == field) return value;
+    return 0.0;
+}
+
+void RadiossCardSequence::skip_absent() {
+    while (next_ < first_repeated_ && cards_[next_].present_if && !cards_[next_].present_if(earlier_)) ++next_;
 }
 
 RadiossCardSequence::Next RadiossCardSequence::next(std::string_view text) const {
@@ -37,7 +49,12 @@ RadiossCardSequence::Next RadiossCardSequence::next(std::string_view text) const
 
 void RadiossCardSequence::advance(std::size_t index, const std::vector<RadiossValue>& values) {
     if (index < first_repeated_) {
+        if (conditional_)
+            for (const RadiossValue& v : values)
+                if (v.spec && v.valid && (v.spec->cell == rad::Cell::Int || v.spec->cell == rad::Cell::Real))
+                    earlier_.values.emplace_back(v.spec->name, v.number);
         ++next_;
+        skip_absent();
         return;
     }
     if (in_group_ == 0) list_left_ = needs_values(index) ? list_lines(values) : 0;

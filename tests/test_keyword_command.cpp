@@ -114,16 +114,17 @@ TEST_CASE("keyword command: keywords without a hand-written schema show their ge
     CHECK(contains(contact.output, "an id of a DEFINE_BOX"));  // SABOXID, from pydyna's links
 }
 
-TEST_CASE("keyword command: an OpenRadioss card prints its formats and cells") {
+TEST_CASE("keyword command: an OpenRadioss card prints its formats, cells, notes and source") {
     const Run r = sphdeck("keyword /sphglo");
     INFO(r.output);
     CHECK(r.exit_code == 0);
     CHECK(contains(r.output, "/SPHGLO  (OpenRadioss starter keyword)"));
+    CHECK(contains(r.output, "source: CFG radioss2017/CARDS/sphglo.cfg"));
     CHECK(contains(r.output, "format 2017 (decks of Invers 2017 and later)"));
     CHECK(contains(r.output, "format 120 (decks of Invers 120 to 2016)"));
     CHECK(contains(r.output, "in V4 decks (Invers below 51) integers are 8 and reals 16 wide"));
-    CHECK(contains(r.output, "  1-20     Alpha_sort  real"));
-    CHECK(contains(r.output, "  51-60    Isol2sph    integer"));
+    CHECK(contains(r.output, "  1-20     Alpha_sort  real     0: 0.25"));
+    CHECK(contains(r.output, "  51-60    Isol2sph    integer  0: 1"));
 
     // A LIST card and its count; an alias and a header with ids.
     const Run list = sphdeck("keyword /INISPHCEL/FULL");
