@@ -1,5 +1,6 @@
 // sphdeck keyword NAME: a keyword's cards as the schema tables describe them (columns, types,
-// defaults, allowed values, docs); `--list` prints every keyword the tables know.
+// defaults, allowed values, docs); `--list` prints every keyword the tables know. Names with a
+// leading '/' are OpenRadioss cards (cli/keyword_radioss.cpp).
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/keyword_radioss.hpp"
 #include "grammar/keywords/generated_layouts.hpp"
 #include "grammar/keywords/schema.hpp"
 
@@ -24,6 +26,7 @@ using keywords::KeywordMatch;
 struct KeywordArgs {
     std::string name;
     std::string format = "standard";
+    std::string solver;  // --list: "lsdyna", "radioss" or both
     bool list = false;
 };
 
@@ -157,9 +160,19 @@ void print_keyword(const KeywordMatch& match, CardFormat format) {
     }
 }
 
-void print_list() {
+void print_list(const std::string& solver) {
     std::vector<std::pair<std::string, std::string_view>> rows;
     std::size_t w = 0;
+    const auto radioss = radioss_list_rows();
+    if (solver != "lsdyna")
+        for (const auto& [names, what] : radioss) {
+            w = std::max(w, names.size());
+            rows.emplace_back(names, what);
+        }
+    if (solver == "radioss") {
+        for (const auto& [names, doc] : rows) fmt::print("{:<{}}  {}\n", names, w, doc);
+        return;
+    }
     for (const auto& k : keywords::all_keywords()) {
         std::string names(k.name);
         if (!k.aliases.empty()) names += fmt::format(" ({})", fmt::join(k.aliases, ", "));
@@ -192,12 +205,24 @@ CardFormat format_of(const std::string& s) {
 
 int run_keyword(const KeywordArgs& args) {
     if (args.list) {
-        print_list();
+        print_list(args.solver);
         return exit_clean;
     }
     if (args.name.empty()) {
-        fmt::print(stderr, "sphdeck keyword: give a keyword name (e.g. *CONTROL_SPH) or --list\n");
+        fmt::print(stderr, "sphdeck keyword: give a keyword name (e.g. *CONTROL_SPH, /SPHGLO) or --list\n");
         return exit_usage;
+    }
+    if (args.name.front() == '/') {
+        const auto* keyword = find_radioss_keyword(args.name);
+        if (!keyword) {
+            fmt::print(stderr,
+                       "sphdeck: unknown OpenRadioss keyword '{}'{}\nrun 'sphdeck keyword --list --solver radioss' "
+                       "for every one\n",
+                       args.name, radioss_suggestion(args.name));
+            return exit_usage;
+        }
+        print_radioss_keyword(*keyword);
+        return exit_clean;
     }
     const auto match = keywords::find_keyword(args.name);
     if (!match || !match->unknown_options.empty()) {
@@ -216,9 +241,12 @@ int run_keyword(const KeywordArgs& args) {
 
 std::function<int()> setup_keyword(CLI::App& app) {
     auto args = std::make_shared<KeywordArgs>();
-    app.add_option("name", args->name, "keyword, with or without '*' and options: *CONTROL_SPH, mat_009");
+    app.add_option("name", args->name,
+                   "keyword, with or without '*' and options: *CONTROL_SPH, mat_009; or an OpenRadioss card: /SPHGLO");
     app.add_flag("--list", args->list, "list every keyword the schema tables know");
-    app.add_option("--format", args->format, "card format whose columns are shown")
+    app.add_option("--solver", args->solver, "with --list: only the keywords of one solver")
+        ->check(CLI::IsMember({"lsdyna", "radioss"}));
+    app.add_option("--format", args->format, "LS-DYNA card format whose columns are shown")
         ->check(CLI::IsMember({"standard", "long", "i10"}))
         ->capture_default_str();
     return [args] { return run_keyword(*args); };

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "grammar/radioss/reader.hpp"
+#include "model/radioss_card_sequence.hpp"
 
 namespace sphdeck::lsp {
 namespace {
@@ -193,8 +194,8 @@ bool radioss_engine_block(const grammar::RawDeck& deck, const grammar::Block& bl
 }
 
 namespace {
-// The walk of model/radioss_decoder.cpp's Walker: the title line, then the format's cards, a
-// trailing repeated group cycling (blank lines there are no records). `target` set: only that
+// The walk of model/radioss_decoder.cpp's Walker: the title line, then the cards in the order of
+// model::RadiossCardSequence. `target` set: only that
 // line is decoded, and a single repeated card jumps straight to it.
 template <typename Visit>
 void radioss_walk(const grammar::RawDeck& deck, const grammar::Block& block, int version,
@@ -217,36 +218,27 @@ void radioss_walk(const grammar::RawDeck& deck, const grammar::Block& block, int
         ++l;
     }
     const auto& cards = format.cards;
-    std::size_t first_repeated = cards.size();
-    for (std::size_t k = 0; k < cards.size(); ++k)
-        if (cards[k].repeat == rad::Repeat::Repeated) {
-            first_repeated = k;
-            break;
-        }
-    const std::size_t group = cards.size() - first_repeated;
+    model::RadiossCardSequence sequence(cards);
     std::vector<diag::Diagnostic> dropped;
     model::RadiossCardDecoder decoder(deck, dropped);
-    std::size_t next = 0, in_group = 0;
     for (; l != end; ++l) {
         if (target && l > target) return;
-        std::size_t index;
-        if (next < first_repeated) {
-            index = next++;
-        } else if (group == 1 && target) {
-            index = first_repeated;
-            l = target;  // one repeated card: every further line is read as it
-        } else if (group > 0) {
-            index = first_repeated + in_group;
-            const auto& fields = cards[index].fields;
-            if (!fields.empty() && fields.front().cell == rad::Cell::Int && grammar::is_blank(deck.text(*l))) continue;
-            in_group = (in_group + 1) % group;
-        } else {
-            return;
+        auto next = sequence.next(deck.text(*l));
+        if (next.step == model::RadiossCardSequence::Step::Past) return;
+        if (next.step == model::RadiossCardSequence::Step::Blank) continue;
+        // One repeated card: every further line is read as it.
+        if (target && next.index >= sequence.first_repeated() && sequence.one_repeated_card()) l = target;
+        // Looking for one line: the others are decoded only where their values steer the walk
+        // (the count of a LIST card, /INISPHCEL/FULL's nvarsph).
+        const bool wanted = !target || l == target;
+        if (wanted || sequence.needs_values(next.index)) {
+            decoder.decode(*l, cards[next.index], out.version, out.engine, out.values, {},
+                           out.keyword->trailing_checked);
+            dropped.clear();
         }
-        if (target && l != target) continue;
-        out.card = &cards[index];
-        decoder.decode(*l, cards[index], out.version, out.engine, out.values, {}, out.keyword->trailing_checked);
-        dropped.clear();
+        sequence.advance(next.index, out.values);
+        if (!wanted) continue;
+        out.card = &cards[next.index];
         if (!visit(*l, out)) return;
     }
 }

@@ -205,6 +205,7 @@ nlohmann::json radioss_hover(const CheckedDeck& deck, const grammar::Block& bloc
     }
     std::string text = fmt::format("**{}** (`{}`, format {}): {}{}", v.spec->name, spec->name,
                                    spec->format_for(card->version).since, cell_name(v.spec->cell), columns);
+    if (!v.spec->note.empty()) text += fmt::format("\n\n{}", v.spec->note);
     if (!v.explicit_value) {
         text += "\n\nvalue: blank (the starter's default applies)";
     } else if (!v.valid) {

@@ -269,6 +269,25 @@ void RadiossBuilder::end_inout(const RadiossBlock& b) {
     io.nodes = {starter<long long>("node_ID1", b), starter<long long>("node_ID2", b),
                 starter<long long>("node_ID3", b)};
     io.fcut = starter<double>("Fcut", b);
+    io.density_function = starter<long long>("fct_IDr", b);
+    io.energy_function = starter<long long>("fct_IDE", b);
+    io.velocity_function = starter<long long>("fct_IDVn", b);
+    io.pressure_function = starter<long long>("fct_IDP", b);
+    io.density_scale = starter<double>("Fscaler", b);
+    io.energy_scale = starter<double>("FscaleE", b);
+    io.pressure_scale = starter<double>("FscaleP", b);
+    io.length = starter<double>("Lc", b);
+    // hm_read_sphio.F: a scale left 0 with a function given is 1 (in the deck's units).
+    if (io.density_function.value != 0) zero_means(io.density_scale, 1.0);
+    if (io.energy_function.value != 0) zero_means(io.energy_scale, 1.0);
+    if (io.pressure_function.value != 0) zero_means(io.pressure_scale, 1.0);
+    static constexpr std::array<std::array<std::string_view, 3>, 3> kPoints{
+        {{"XM", "YM", "ZM"}, {"XM1", "YM1", "ZM1"}, {"XM2", "YM2", "ZM2"}}};
+    for (std::size_t p = 0; p < 3; ++p)
+        for (std::size_t k = 0; k < 3; ++k) {
+            io.points[p][k] = starter<double>(kPoints[p][k], b);
+            io.by_points = io.by_points || value(kPoints[p][k]) != nullptr;
+        }
     facts_.inouts.push_back(std::move(io));
 }
 

@@ -77,6 +77,7 @@ private:
     void resolve_planes();
     void resolve_groups();
     void resolve_links();
+    void collect_surfaces();
 
     const grammar::RawDeck& deck_;
     std::vector<diag::Diagnostic>& out_;

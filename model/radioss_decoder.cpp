@@ -3,7 +3,6 @@
 #include "model/radioss_decoder.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <fmt/format.h>
 #include <map>
 
@@ -11,6 +10,7 @@
 #include "grammar/radioss/reader.hpp"
 #include "grammar/value.hpp"
 #include "model/radioss_builder.hpp"
+#include "model/radioss_card_sequence.hpp"
 #include "model/radioss_parameters.hpp"
 #include "grammar/fields.hpp"
 
@@ -193,60 +193,20 @@ private:
     void walk_cards(const RadiossBlock& b, const rad::FormatSpec& format, const grammar::CardLine* line,
                     const grammar::CardLine* end) {
         const auto& cards = format.cards;
-        std::size_t first_repeated = cards.size();
-        for (std::size_t k = 0; k < cards.size(); ++k)
-            if (cards[k].repeat == rad::Repeat::Repeated) {
-                first_repeated = k;
-                break;
-            }
-        const std::size_t group = cards.size() - first_repeated;
+        RadiossCardSequence sequence(cards);
         const std::string newer = newer_format(*b.spec, format);
-        std::size_t next = 0, in_group = 0;
-        std::size_t list_lines = 0;  // lines left of the group's LIST card
-        // The group card after `k`, past a LIST card with no line left to read.
-        auto after = [&](std::size_t k) {
-            k = (k + 1) % group;
-            if (!cards[first_repeated + k].count.empty() && list_lines == 0) k = (k + 1) % group;
-            return k;
-        };
         for (; line != end; ++line) {
-            std::size_t index;
-            if (next < first_repeated) {
-                index = next++;
-            } else if (group > 0) {
-                index = first_repeated + in_group;
-                // Blank lines between records (nodes, particles, elements, ids) are no records; a
-                // blank row of reals (a /MAT card) is a card of defaults and keeps its place.
-                const auto& fields = cards[index].fields;
-                if (!fields.empty() && fields.front().cell == rad::Cell::Int && grammar::is_blank(deck_.text(*line)))
-                    continue;
-            } else {
+            const auto next = sequence.next(deck_.text(*line));
+            if (next.step == RadiossCardSequence::Step::Blank) continue;
+            if (next.step == RadiossCardSequence::Step::Past) {
                 report_extra(b, format, *line, static_cast<std::size_t>(end - line), newer);
                 return;
             }
-            decoder_.decode(*line, cards[index], b.version, b.engine, values_, newer, b.spec->trailing_checked);
-            if (index >= first_repeated) {
-                if (in_group == 0) list_lines = list_lines_of(cards, first_repeated);
-                if (!cards[index].count.empty() && list_lines > 0) --list_lines;
-                if (cards[index].count.empty() || list_lines == 0) in_group = after(in_group);
-            }
-            builder_.card(b, index, static_cast<std::uint32_t>(line - deck_.lines.data()), values_);
-            if (reading_) record(index < first_repeated);
+            decoder_.decode(*line, cards[next.index], b.version, b.engine, values_, newer, b.spec->trailing_checked);
+            sequence.advance(next.index, values_);
+            builder_.card(b, next.index, static_cast<std::uint32_t>(line - deck_.lines.data()), values_);
+            if (reading_) record(next.index < sequence.first_repeated());
         }
-    }
-
-    // Lines of the LIST card of a group whose first card was just decoded (values_): its count
-    // field's value over the values a line holds, rounded up; 0 without a LIST card.
-    std::size_t list_lines_of(const std::vector<rad::CardSpec>& cards, std::size_t first_repeated) const {
-        for (std::size_t k = first_repeated; k < cards.size(); ++k) {
-            if (cards[k].count.empty()) continue;
-            const std::size_t field = cards[first_repeated].index(cards[k].count);
-            if (field >= values_.size() || !values_[field].valid || !(values_[field].number > 0)) return 0;
-            // A count past the block's lines only reads the lines there are: no allocation follows it.
-            const double per_line = static_cast<double>(cards[k].fields.size());
-            return static_cast<std::size_t>(std::ceil(std::min(values_[field].number, 1e12) / per_line));
-        }
-        return 0;
     }
 
     void record(bool single_card) {

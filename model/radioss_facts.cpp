@@ -25,6 +25,9 @@ const RadiossEos* RadiossFacts::eos_of(long long mat) const {
 const RadiossFrame* RadiossFacts::frame(long long id, bool skew_allowed) const {
     return first_of(frames, [&](const RadiossFrame& f) { return f.id == id && (!f.skew || skew_allowed); });
 }
+bool RadiossFacts::has_surface(long long id) const {
+    return first_of(surfaces, [&](const RadiossSurface& s) { return s.id == id; }) != nullptr;
+}
 const RadiossDt* RadiossFacts::time_step(DtKind kind) const {
     const RadiossDt* found = nullptr;
     for (const RadiossDt& d : time_steps)

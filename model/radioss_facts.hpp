@@ -153,6 +153,18 @@ struct RadiossInout {
     StarterValue<double> dist;                  // Dist: particle control distance from the surface
     std::array<StarterValue<long long>, 3> nodes;  // node_ID1-3 (format 140 on): the frontier by nodes
     StarterValue<double> fcut;                  // Fcut (format 140 on): Butterworth corner frequency
+    // The cards of its Itype (hm_read_sphio.F): functions of time and their scales (a scale 0
+    // with a function is 1), the frontier's characteristic length (Itype 3), and from format 140
+    // the three points M, M1, M2 of a frontier given by coordinates.
+    StarterValue<long long> density_function, energy_function, velocity_function, pressure_function;
+    StarterValue<double> density_scale, energy_scale, pressure_scale, length;
+    std::array<std::array<StarterValue<double>, 3>, 3> points;
+    bool by_points = false;  // the M cards were read
+};
+// A surface a /SURF/<kind>/.../id block defines: every kind names its id in the header.
+struct RadiossSurface {
+    long long id = 0;
+    grammar::Span span;  // the header
 };
 struct RadiossReserve {
     long long part = 0;
@@ -206,6 +218,8 @@ struct RadiossFacts {
     RadiossSolids bricks{8, {}, {}, {}, {}}, tetra4{4, {}, {}, {}, {}}, tetra10{10, {}, {}, {}, {}},
         penta6{6, {}, {}, {}, {}};
     std::vector<RadiossInout> inouts;
+    std::vector<RadiossSurface> surfaces;
+    bool surfaces_known = true;       // false: a /SURF header without a readable id (ids unchecked)
     std::vector<RadiossReserve> reserves;
     std::vector<RadiossInitialState> initial_states;
     std::vector<RadiossDt> time_steps;
@@ -217,6 +231,7 @@ struct RadiossFacts {
     const RadiossEos* eos_of(long long material) const;
     const RadiossFrame* frame(long long id, bool skew_allowed = false) const;
     const RadiossDt* time_step(DtKind kind) const;  // the last card of that kind
+    bool has_surface(long long id) const;
 };
 
 }  // namespace sphdeck::model

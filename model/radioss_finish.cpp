@@ -177,6 +177,7 @@ Model RadiossBuilder::finish() {
     resolve_planes();
     resolve_groups();
     resolve_links();
+    collect_surfaces();
     model_.radioss = std::move(facts_);
     return std::move(model_);
 }

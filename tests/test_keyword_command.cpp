@@ -113,3 +113,46 @@ TEST_CASE("keyword command: keywords without a hand-written schema show their ge
     const Run contact = sphdeck("keyword '*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE'");
     CHECK(contains(contact.output, "an id of a DEFINE_BOX"));  // SABOXID, from pydyna's links
 }
+
+TEST_CASE("keyword command: an OpenRadioss card prints its formats, cells, notes and source") {
+    const Run r = sphdeck("keyword /sphglo");
+    INFO(r.output);
+    CHECK(r.exit_code == 0);
+    CHECK(contains(r.output, "/SPHGLO  (OpenRadioss starter keyword)"));
+    CHECK(contains(r.output, "source: CFG radioss2017/CARDS/sphglo.cfg"));
+    CHECK(contains(r.output, "format 2017 (decks of Invers 2017 and later)"));
+    CHECK(contains(r.output, "format 120 (decks of Invers 120 to 2016)"));
+    CHECK(contains(r.output, "in V4 decks (Invers below 51) integers are 8 and reals 16 wide"));
+    CHECK(contains(r.output, "  1-20     Alpha_sort  real     0: 0.25"));
+    CHECK(contains(r.output, "  51-60    Isol2sph    integer  0: 1"));
+
+    // A LIST card and its count; an alias and a header with ids.
+    const Run list = sphdeck("keyword /INISPHCEL/FULL");
+    INFO(list.output);
+    CHECK(contains(list.output, "LIST: nvarsph values in all, 5 a line"));
+    CHECK(contains(list.output, "cards 1-5 repeat as a group"));
+    CHECK(contains(sphdeck("keyword /PROP/TYPE34/7").output, "/PROP/SPH  (OpenRadioss starter keyword)"));
+    // Engine cards are list-directed: no columns.
+    CHECK(contains(sphdeck("keyword /DT/SPHCEL").output, "values list-directed"));
+}
+
+TEST_CASE("keyword command: an unknown OpenRadioss card exits 2 with a suggestion") {
+    const Run r = sphdeck("keyword /SPHGLOB");
+    CHECK(r.exit_code == 2);
+    CHECK(contains(r.output, "unknown OpenRadioss keyword '/SPHGLOB'; did you mean /SPHGLO?"));
+}
+
+TEST_CASE("keyword command: --list shows the Radioss cards; --solver keeps one solver's") {
+    const Run all = sphdeck("keyword --list");
+    CHECK(contains(all.output, "/SPHGLO "));
+    CHECK(contains(all.output, "/PROP/SPH (/PROP/TYPE34)"));
+    CHECK(contains(all.output, "*CONTROL_SPH "));
+    const Run radioss = sphdeck("keyword --list --solver radioss");
+    CHECK(contains(radioss.output, "[radioss starter] global SPH parameters"));
+    CHECK(contains(radioss.output, "[radioss engine] particle time step"));
+    CHECK(!contains(radioss.output, "*CONTROL_SPH"));
+    const Run dyna = sphdeck("keyword --list --solver lsdyna");
+    CHECK(contains(dyna.output, "*CONTROL_SPH "));
+    CHECK(!contains(dyna.output, "/SPHGLO"));
+    CHECK(sphdeck("keyword --list --solver abaqus").exit_code != 0);
+}

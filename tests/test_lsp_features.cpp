@@ -413,6 +413,47 @@ water
     CHECK(actions[1]["edit"]["changes"]["file:///tmp/lsp_0000.rad"][0]["range"]["start"]["line"] == 1);
 }
 
+TEST_CASE("lsp hover on /INISPHCEL/FULL: the LIST lines of nvarsph values, then the next particle") {
+    // Particle 1001 has nvarsph 7: two lines of values (5 + 2) follow its Epsp card; 1002 has none.
+    const std::string rad = R"(#RADIOSS STARTER
+/BEGIN
+LSP
+      2026
+                  kg                  mm                  ms
+                  kg                  mm                  ms
+/INISPHCEL/FULL
+      1001         7
+                 5.0              1.0E-6                 2.4
+                -1.0                -2.0                -3.0
+                 0.1
+                11.0                12.0                13.0                14.0                15.0
+                16.0                17.0
+      1002         0
+                 6.0              2.0E-6                 3.0
+                -4.0
+                 0.2
+      1003         0
+/END
+)";
+    const auto deck = check(rad, "lsp_0000.rad", std::nullopt);
+    REQUIRE(deck.result.model.radioss);
+    std::string text = hover_text(deck, {find(rad, "                11.0").line, 15});
+    CHECK(text.find("**V** (`/INISPHCEL`, format 2024): real, columns 1-20") != std::string::npos);
+    text = hover_text(deck, {find(rad, "                16.0").line, 30});
+    CHECK(text.find("**V** (`/INISPHCEL`, format 2024): real, columns 21-40") != std::string::npos);
+    text = hover_text(deck, {find(rad, "      1002").line, 8});
+    CHECK(text.find("**sphcel_ID**") != std::string::npos);
+    text = hover_text(deck, {find(rad, "      1002").line, 18});
+    CHECK(text.find("**nvarsph**") != std::string::npos);
+    text = hover_text(deck, {find(rad, "                -4.0").line, 15});
+    CHECK(text.find("**Sigma1**") != std::string::npos);
+    text = hover_text(deck, {find(rad, "                 0.2").line, 15});
+    CHECK(text.find("**Epsp**") != std::string::npos);
+    // nvarsph 0: no LIST line, the next particle follows Epsp.
+    text = hover_text(deck, {find(rad, "      1003").line, 8});
+    CHECK(text.find("**sphcel_ID**") != std::string::npos);
+}
+
 TEST_CASE("lsp features: the server's table answers every feature and announces it") {
     const auto capabilities = lsp::feature_capabilities();
     for (const char* key : {"hoverProvider", "definitionProvider", "referencesProvider", "completionProvider",

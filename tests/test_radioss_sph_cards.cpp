@@ -102,3 +102,54 @@ TEST_CASE("radioss sph cards: /INISPHCEL/FULL states, their LIST of nvarsph valu
     // Another kind than FULL is not read by the starter (CASE DEFAULT).
     CHECK(facts(check(deck(sph + "/INISPHCEL/OTHER\n" + state_b))).initial_states.empty());
 }
+
+TEST_CASE("radioss sph cards: /SPH/INOUT reads the cards of its Itype (sph_inout.cfg, hm_read_sphio.F)") {
+    const std::string blank30(30, ' ');
+    // Itype 1, an inlet through a surface: density and energy functions, then the velocity's.
+    const std::string inlet = "/SPH/INOUT/1\ninlet\n" + i10("1") + i10("2") + i10("5") + r20("1.5") + "\n" +
+                              i10("11") + r20("0") + blank30 + i10("12") + r20("2.0") + "\n" + i10("13") + "\n";
+    // Itype 3 from format 140 without surface or nodes: the points M, M1, M2, then its card.
+    const std::string frontier = "/SPH/INOUT/2\nfrontier\n" + i10("3") + i10("2") + i10("0") + r20("1.0") + "\n" +
+                                 r20("0") + r20("0") + r20("0") + "\n" + r20("1") + r20("0") + r20("0") + "\n" +
+                                 r20("0") + r20("1") + r20("4.5") + "\n" + blank30 + i10("7") + r20("0") +
+                                 r20("0.5") + "\n\n";
+    auto r = check(deck(inlet + frontier));
+    REQUIRE(facts(r).inouts.size() == 2);
+    const auto& in = facts(r).inouts[0];
+    CHECK(in.density_function.value == 11);
+    CHECK(in.density_scale.value == 1.0);  // 0 with a function: 1
+    CHECK(in.energy_function.value == 12);
+    CHECK(in.energy_scale.value == 2.0);
+    CHECK(in.velocity_function.value == 13);
+    CHECK(!in.by_points);
+    const auto& nrf = facts(r).inouts[1];
+    CHECK(nrf.by_points);
+    CHECK(nrf.points[1][0].value == 1.0);
+    CHECK(nrf.points[2][2].value == 4.5);
+    CHECK(nrf.pressure_function.value == 7);
+    CHECK(nrf.pressure_scale.value == 1.0);
+    CHECK(nrf.length.value == 0.5);
+    CHECK(count_code(r.diagnostics, "DK006") == 0);
+    CHECK(count_code(r.diagnostics, "DK002") == 0);
+
+    // Format 110 has no points: the Itype 3 card follows card 1.
+    const std::string old = "/SPH/INOUT/3\nfrontier\n" + i10("3") + i10("2") + i10("0") + r20("1.0") + "\n" +
+                            blank30 + i10("8") + r20("3.0") + r20("0.25") + "\n\n";
+    auto v110 = check(deck(old, 110));
+    REQUIRE(facts(v110).inouts.size() == 1);
+    CHECK(!facts(v110).inouts[0].by_points);
+    CHECK(facts(v110).inouts[0].pressure_function.value == 8);
+    CHECK(facts(v110).inouts[0].pressure_scale.value == 3.0);
+    CHECK(facts(v110).inouts[0].length.value == 0.25);
+}
+
+TEST_CASE("radioss sph cards: /SPH/INOUT surf_ID is checked against the /SURF headers (starter error 438)") {
+    const std::string inout = "/SPH/INOUT/1\noutlet\n" + i10("2") + i10("2") + i10("7") + r20("1.0") + "\n";
+    const std::string part = "/PART/2\nwater\n" + i10("2") + i10("3") + "\n";
+    CHECK(count_code(check(deck(part + inout)).diagnostics, "REF008") == 1);
+    CHECK(count_code(check(deck(part + "/SURF/SEG/7\nface\n" + inout)).diagnostics, "REF008") == 0);
+    CHECK(count_code(check(deck(part + inout + "/SURF/PART/EXT/7\nskin\n" + i10("2") + "\n")).diagnostics,
+                     "REF008") == 0);
+    // A /SURF header whose id cannot be read: surface ids are not checked.
+    CHECK(count_code(check(deck(part + "/SURF/PART\nno id\n" + inout)).diagnostics, "REF008") == 0);
+}

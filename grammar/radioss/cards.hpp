@@ -31,6 +31,9 @@ struct FieldSpec {
     // A literal width the CFG format spells out (`%8d          %8d`: ten blanks even in V4);
     // 0: the cell's width in the deck's version.
     std::uint32_t width = 0;
+    // What a blank or 0 means and which values the starter takes, as its reader decides them
+    // (shown by `sphdeck keyword`; the decoding itself lives in model/).
+    std::string_view note = {};
 };
 
 enum class Repeat : std::uint8_t {
@@ -38,12 +41,26 @@ enum class Repeat : std::uint8_t {
     Repeated,  // one line each until the block ends (a trailing group repeats together)
 };
 
+// The numbers read on the cards before a card, by field name (0 when blank, absent or text).
+class EarlierValues {
+public:
+    virtual double operator()(std::string_view field) const = 0;
+
+protected:
+    ~EarlierValues() = default;
+};
+// Whether a card read once is in the deck, decided by the cards before it (CFG `if(Itype == 1)`).
+using CardCondition = bool (*)(const EarlierValues& earlier);
+
 struct CardSpec {
     std::vector<FieldSpec> fields = {};
     Repeat repeat = Repeat::Once;
     // A LIST card of a repeated group (CFG `LIST("%20lg", V, nvarsph)`): as many values as the
     // integer field `count` of the group's first card says, fields.size() a line, no line for 0.
     std::string_view count = {};
+    // A card read once only when this holds (nullptr: always); `condition` says it in words.
+    CardCondition present_if = nullptr;
+    std::string_view condition = {};
 
     const FieldSpec* field(std::string_view name) const;
     std::size_t index(std::string_view name) const;  // fields.size() when absent
@@ -67,6 +84,7 @@ struct KeywordSpec {
     // handles it as the family, and the header's segments after the family are its arguments.
     std::string_view family = {};
     std::string_view summary = {};
+    std::string_view source = {};            // where the layout comes from (CFG files of the starter)
     std::vector<FormatSpec> formats = {};    // newest first
 
     // The format a deck of version `version` reads: the newest one not above it (the reader's

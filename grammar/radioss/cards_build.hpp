@@ -12,6 +12,8 @@ inline FieldSpec R(std::string_view name) { return {name, Cell::Real}; }
 inline FieldSpec T(std::string_view name) { return {name, Cell::Text}; }
 inline FieldSpec T20(std::string_view name) { return {name, Cell::Text20}; }
 inline FieldSpec L(std::string_view name) { return {name, Cell::Line}; }
+inline FieldSpec I(std::string_view name, std::string_view note) { return {name, Cell::Int, 0, note}; }
+inline FieldSpec R(std::string_view name, std::string_view note) { return {name, Cell::Real, 0, note}; }
 inline FieldSpec S() { return {"", Cell::Skip}; }
 inline FieldSpec S20() { return {"", Cell::Skip20}; }
 // An unused run of `width` columns in every version (CFG formats that spell the blanks out).

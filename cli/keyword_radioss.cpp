@@ -1,0 +1,162 @@
+#include "cli/keyword_radioss.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <fmt/format.h>
+
+namespace sphdeck::cli {
+namespace {
+
+namespace rad = grammar::radioss;
+
+std::string upper(std::string_view s) {
+    std::string out(s);
+    for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return out;
+}
+
+std::string_view cell_type(rad::Cell cell) {
+    switch (cell) {
+        case rad::Cell::Int: return "integer";
+        case rad::Cell::Real: return "real";
+        case rad::Cell::Text:
+        case rad::Cell::Text20: return "text";
+        case rad::Cell::Line: return "line";
+        case rad::Cell::Skip:
+        case rad::Cell::Skip20: return "unused";
+    }
+    return "";
+}
+
+// The deck versions (Invers of /BEGIN) that read format `k` of the keyword (formats newest first).
+std::string versions_text(const rad::KeywordSpec& keyword, std::size_t k) {
+    const int since = keyword.formats[k].since;
+    const int until = k == 0 ? 0 : keyword.formats[k - 1].since - 1;
+    if (k == 0) return since == 0 ? "every deck version" : fmt::format("decks of Invers {} and later", since);
+    if (since == 0) return fmt::format("decks of Invers up to {}", until);
+    return fmt::format("decks of Invers {} to {}", since, until);
+}
+
+// The version whose cell widths show a format's columns: its own first version; the oldest
+// format shows the 51 widths unless only V4 decks (Invers below 51) read it.
+int columns_version(const rad::KeywordSpec& keyword, std::size_t k) {
+    const int since = keyword.formats[k].since;
+    if (since != 0) return since;
+    return k > 0 && keyword.formats[k - 1].since <= 51 ? 44 : 51;
+}
+
+std::string card_notes(const rad::KeywordSpec& keyword, const rad::FormatSpec& format, std::size_t i) {
+    const rad::CardSpec& card = format.cards[i];
+    if (!card.count.empty())
+        return fmt::format("LIST: {} values in all, {} a line, as field {} of the group's first card says; no "
+                           "line for 0",
+                           card.count, card.fields.size(), card.count);
+    if (card.repeat == rad::Repeat::Once && card.present_if)
+        return fmt::format("once, only when {}; an absent card takes every default", card.condition);
+    if (card.repeat == rad::Repeat::Once) return keyword.engine ? "once" : "once; an absent card takes every default";
+    if (card.fields.size() == 1 && card.fields[0].cell == rad::Cell::Line && card.fields[0].name == "text")
+        return "any further lines: kept as text, not checked";
+    std::size_t first = i;
+    while (first > 0 && format.cards[first - 1].repeat == rad::Repeat::Repeated) --first;
+    const std::size_t group = format.cards.size() - first;
+    if (group == 1) return "repeated: one line per item until the next keyword";
+    return fmt::format("repeated: cards {}-{} repeat as a group until the next keyword", first + 1,
+                       format.cards.size());
+}
+
+void print_card(const rad::CardSpec& card, int version, bool engine) {
+    std::vector<std::array<std::string, 4>> rows{{"columns", "field", "type", "default and allowed values"}};
+    const auto cells = rad::layout(card, version);
+    for (std::size_t i = 0; i < card.fields.size() && i < cells.size(); ++i) {
+        const rad::FieldSpec& f = card.fields[i];
+        const bool to_end = f.cell == rad::Cell::Line;
+        std::string columns = engine ? std::to_string(i + 1)
+                              : to_end ? fmt::format("{}-", cells[i].start + 1)
+                                       : fmt::format("{}-{}", cells[i].start + 1, cells[i].start + cells[i].width);
+        rows.push_back({std::move(columns), f.name.empty() ? "-" : std::string(f.name), std::string(cell_type(f.cell)),
+                        std::string(f.note)});
+    }
+    if (engine) rows[0][0] = "value";
+    std::array<std::size_t, 3> width{};
+    for (const auto& row : rows)
+        for (std::size_t c = 0; c < width.size(); ++c) width[c] = std::max(width[c], row[c].size());
+    for (const auto& row : rows) {
+        std::string line = fmt::format("  {:<{}}  {:<{}}  {:<{}}  {}", row[0], width[0], row[1], width[1], row[2],
+                                       width[2], row[3]);
+        while (!line.empty() && line.back() == ' ') line.pop_back();
+        fmt::print("{}\n", line);
+    }
+}
+
+}  // namespace
+
+const rad::KeywordSpec* find_radioss_keyword(std::string_view name) {
+    if (name.empty() || name.front() != '/') return nullptr;
+    return rad::find_keyword(upper(name));
+}
+
+void print_radioss_keyword(const rad::KeywordSpec& keyword) {
+    fmt::print("{}  (OpenRadioss {} keyword)\n", keyword.name, keyword.engine ? "engine" : "starter");
+    if (!keyword.aliases.empty()) fmt::print("aliases: {}\n", fmt::join(keyword.aliases, ", "));
+    if (!keyword.summary.empty()) fmt::print("{}\n", keyword.summary);
+    if (!keyword.source.empty()) fmt::print("source: {}\n", keyword.source);
+    if (!keyword.decoded) {
+        fmt::print("\nknown and kept as is: its lines are not cut into fields or checked\n");
+        return;
+    }
+    if (keyword.engine)
+        fmt::print("engine deck (<run>_0001.rad): values list-directed, separated by blanks or commas\n");
+    else if (keyword.title)
+        fmt::print("a title line follows the header (in V4 decks, Invers below 51, the header path ends with it)\n");
+    else
+        fmt::print("no title line\n");
+    for (std::size_t k = 0; k < keyword.formats.size(); ++k) {
+        const rad::FormatSpec& format = keyword.formats[k];
+        const int version = columns_version(keyword, k);
+        std::string widths;
+        if (!keyword.engine)
+            widths = rad::is_v4(version) ? "; V4 cells: integers 8, reals 16 wide"
+                     : format.since < 51 ? "; in V4 decks (Invers below 51) integers are 8 and reals 16 wide"
+                                         : "";
+        fmt::print("\nformat {} ({}{})\n", format.since, versions_text(keyword, k), widths);
+        for (std::size_t i = 0; i < format.cards.size(); ++i) {
+            fmt::print("Card {} ({})\n", i + 1, card_notes(keyword, format, i));
+            print_card(format.cards[i], version, keyword.engine);
+        }
+    }
+}
+
+std::vector<std::pair<std::string, std::string>> radioss_list_rows() {
+    std::vector<std::pair<std::string, std::string>> rows;
+    for (const rad::KeywordSpec& k : rad::all_keywords()) {
+        std::string names(k.name);
+        if (!k.aliases.empty()) names += fmt::format(" ({})", fmt::join(k.aliases, ", "));
+        std::string what = fmt::format("[radioss {}{}] {}", k.engine ? "engine" : "starter",
+                                       k.decoded ? "" : ", kept as is", k.summary);
+        rows.emplace_back(std::move(names), std::move(what));
+    }
+    std::sort(rows.begin(), rows.end());
+    return rows;
+}
+
+std::string radioss_suggestion(std::string_view name) {
+    const std::string wanted = upper(name);
+    std::string_view best;
+    std::size_t best_distance = 3;
+    for (const rad::KeywordSpec& k : rad::all_keywords()) {
+        const std::string_view n = k.name;
+        std::vector<std::size_t> prev(n.size() + 1), cur(n.size() + 1);
+        for (std::size_t j = 0; j <= n.size(); ++j) prev[j] = j;
+        for (std::size_t i = 1; i <= wanted.size(); ++i) {
+            cur[0] = i;
+            for (std::size_t j = 1; j <= n.size(); ++j)
+                cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (wanted[i - 1] == n[j - 1] ? 0 : 1)});
+            std::swap(prev, cur);
+        }
+        if (prev[n.size()] < best_distance) best_distance = prev[n.size()], best = n;
+    }
+    return best.empty() ? "" : fmt::format("; did you mean {}?", best);
+}
+
+}  // namespace sphdeck::cli
