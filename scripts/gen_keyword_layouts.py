@@ -39,8 +39,13 @@ def field_name(f):
 LINKS = {}  # pydyna field name -> what its id names, for the keyword being written
 
 
+# Fields pydyna types wrongly, by pydyna name: AMMGNM of *ALE_STRUCTURED_MULTI-MATERIAL_GROUP is the
+# group's name (A10 in the manual; "vacuum", "air" in pydyna's own test deck standard/sale.k).
+TYPE_FIXES = {"ammgnm": "str"}
+
+
 def field_text(f, offset=None, width=None, name=None, ftype=None):
-    t = ftype or f["type"]
+    t = ftype or TYPE_FIXES.get(f.get("name", ""), f["type"])
     code = {"int": "I", "float": "F", "str": "A", "bool": "A"}.get(t, "A")
     name = name or field_name(f)
     if name.startswith("UNUSED"):
