@@ -190,7 +190,6 @@ TEST_CASE("generated layouts: every name of the layouts file, written on a keywo
     CHECK(deck.blocks[1 + 0].keyword.find(' ') == std::string::npos);
     CHECK_FALSE(keywords::find_keyword("*CASE_BEGIN_X").has_value());
     CHECK_FALSE(keywords::find_keyword("*CASE_BEGIN_1_2").has_value());
-    CHECK_FALSE(keywords::find_keyword("*CONTROL_TERMINATION_1").has_value());
 }
 
 TEST_CASE("generated layouts: a condition naming two fields is decided by both") {
