@@ -108,17 +108,25 @@ void print_card_table(const CardSpec& card, CardFormat format) {
     }
 }
 
+// "DOF is one of -11, 11 or VAD == 4": the test, its `and` parts, then its `or` alternatives.
+std::string condition_text(const keywords::CardCondition& c) {
+    std::string out;
+    if (!c.any_of.empty()) {
+        std::vector<std::string> values;
+        for (double v : c.any_of) values.push_back(number(v));
+        out = fmt::format("{} is one of {}", c.field, fmt::join(values, ", "));
+    } else {
+        out = fmt::format("{} {} {}", c.field, keywords::to_string(c.compare), number(c.value));
+    }
+    for (const auto& a : c.all_of) out += " and " + condition_text(a);
+    for (const auto& o : c.or_else) out += " or " + condition_text(o);
+    return out;
+}
+
 std::string card_notes(const CardSpec& card, std::size_t index, std::size_t count, std::size_t group) {
     std::vector<std::string> notes{std::string(keywords::to_string(card.repeat))};
     if (card.repeat == keywords::CardRepeat::Repeated) notes.back() += ": one line per item until the next keyword";
-    if (card.present_if && !card.present_if->any_of.empty()) {
-        std::vector<std::string> values;
-        for (double v : card.present_if->any_of) values.push_back(number(v));
-        notes.push_back(fmt::format("read only when {} is one of {}", card.present_if->field, fmt::join(values, ", ")));
-    } else if (card.present_if) {
-        notes.push_back(fmt::format("read only when {} {} {}", card.present_if->field,
-                                    keywords::to_string(card.present_if->compare), number(card.present_if->value)));
-    }
+    if (card.present_if) notes.push_back("read only when " + condition_text(*card.present_if));
     if (group > 0 && index + group >= count)
         notes.push_back(fmt::format("repeats in a group of {} cards until the next keyword", group));
     if (!card.since.empty()) notes.push_back(fmt::format("since {}", card.since));

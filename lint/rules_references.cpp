@@ -8,6 +8,7 @@
 #include "lint/particle_groups.hpp"
 #include "lint/rules.hpp"
 #include "lint/rules_references_links.hpp"
+#include "model/case_blocks.hpp"
 #include "model/id_index.hpp"
 #include "model/radioss_decoder.hpp"
 
@@ -111,15 +112,22 @@ void check_particles(RuleContext& c, const model::IdIndex& nodes) {
     report_undefined_parts(c, missing_part, part_is_node);
 }
 
+// Definitions in different *CASE_BEGIN_n blocks are read in different runs (model/case_blocks.hpp).
 template <typename T>
-void check_duplicates(RuleContext& c, const std::vector<T>& items, std::string_view what) {
-    std::map<Id, const T*> seen;
+void check_duplicates(RuleContext& c, const model::CaseBlocks& cases, const std::vector<T>& items,
+                      std::string_view what) {
+    std::map<Id, std::vector<const T*>> seen;
     for (const T& item : items) {
         if (item.id.empty()) continue;
-        auto [it, fresh] = seen.emplace(item.id, &item);
-        if (!fresh)
+        auto& earlier = seen[item.id];
+        const std::string_view in_case = cases.case_of(item.span);
+        for (const T* first : earlier) {
+            if (!model::same_run(cases.case_of(first->span), in_case)) continue;
             c.report("REF006", item.span, fmt::format("{} {} is defined twice", what, item.id))
-                .notes.push_back({it->second->span, "first defined here"});
+                .notes.push_back({first->span, "first defined here"});
+            break;
+        }
+        earlier.push_back(&item);
     }
 }
 
@@ -275,11 +283,12 @@ void check_references(RuleContext& c) {
     }
     check_node_duplicates(c, nodes);
     check_particle_duplicates(c);
-    check_duplicates(c, c.model.parts, "part");
-    check_duplicates(c, c.model.sections, "section");
-    check_duplicates(c, c.model.materials, "material");
-    check_duplicates(c, c.model.equations_of_state, "EOS");
-    check_duplicates(c, c.model.boxes, "box");
+    const model::CaseBlocks cases(c.deck);
+    check_duplicates(c, cases, c.model.parts, "part");
+    check_duplicates(c, cases, c.model.sections, "section");
+    check_duplicates(c, cases, c.model.materials, "material");
+    check_duplicates(c, cases, c.model.equations_of_state, "EOS");
+    check_duplicates(c, cases, c.model.boxes, "box");
     if (!complete) return;
     std::set<Id> sections, materials, eos;
     check_part_references(c, sections, materials, eos);

@@ -40,8 +40,9 @@ public:
     // After a line was decoded as `card` with `values`.
     void advance(const CardSpec& card, const std::vector<model::FieldValue>& values) {
         if (card.repeat == CardRepeat::Repeated) return;
-        for (const auto& v : values)
-            if (v.valid && v.spec->type != keywords::FieldType::Text) earlier_[std::string(v.spec->name)] = v.number;
+        for (const auto& v : values)  // as model/deck_check.cpp: a blank field without default is 0
+            if (v.spec->type != keywords::FieldType::Text && v.spec->type != keywords::FieldType::Unused)
+                earlier_[std::string(v.spec->name)] = model::condition_value(v);
         ++next_;
     }
     // True when every further line is read as `card`: one repeated card, no group after it.
@@ -50,8 +51,10 @@ public:
 private:
     bool applies(const CardSpec& card) const {
         if (!card.present_if) return true;
-        auto it = earlier_.find(std::string(card.present_if->field));
-        return card.present_if->holds(it == earlier_.end() ? 0.0 : it->second);
+        return card.present_if->holds_with([&](std::string_view field) {
+            auto it = earlier_.find(std::string(field));
+            return it == earlier_.end() ? 0.0 : it->second;
+        });
     }
 
     std::vector<const CardSpec*> cards_;

@@ -2,6 +2,7 @@
 // parameters substituted, defaults applied; every problem becomes a diagnostic at the field.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,6 +23,13 @@ struct FieldValue {
     bool valid = false;           // decoded to a value (explicit or default)
     double number = 0.0;          // I and F fields, after defaults and zero-means-default
 };
+
+// The value a card condition compares (CardCondition::holds_with): the number read or defaulted,
+// 0 for a blank field without default, NaN (equal to nothing) for a value that is not a number.
+inline double condition_value(const FieldValue& v) {
+    if (v.valid) return v.number;
+    return v.explicit_value ? std::numeric_limits<double>::quiet_NaN() : 0.0;
+}
 
 // The largest integer an integer field may hold: the model keeps numbers as doubles and ids as
 // long long, and beyond 2^53 neither holds the value exactly; converting a larger double (or NaN)

@@ -8,6 +8,7 @@
 #include <numeric>
 #include <string>
 
+#include "model/case_blocks.hpp"
 #include "model/particle_ranges.hpp"
 
 #ifdef _OPENMP
@@ -102,13 +103,19 @@ private:
 
     bool applies(const CardSpec& card) const {
         if (!card.present_if) return true;
-        auto it = earlier_.find(std::string(card.present_if->field));
-        return card.present_if->holds(it == earlier_.end() ? 0.0 : it->second);
+        return card.present_if->holds_with([&](std::string_view field) {
+            auto it = earlier_.find(std::string(field));
+            return it == earlier_.end() ? 0.0 : it->second;
+        });
     }
 
     void remember(const std::vector<FieldValue>& values) {
+        // A blank field without a default compares as 0, like a field not read: a card group read
+        // again (*ELEMENT_SOLID's one- or two-line elements) must not see the last group's value. A
+        // value that is not a number (reported) equals nothing.
         for (const auto& v : values)
-            if (v.valid && v.spec->type != keywords::FieldType::Text) earlier_[std::string(v.spec->name)] = v.number;
+            if (v.spec->type != keywords::FieldType::Text && v.spec->type != keywords::FieldType::Unused)
+                earlier_[std::string(v.spec->name)] = condition_value(v);
     }
 
     // Every line of `block` is one `card`: contiguous ranges of lines go to the threads, and their
@@ -225,6 +232,18 @@ private:
     std::map<std::string, double> earlier_;
 };
 
+// A keyword that may appear once, where it appeared and in which case ("": every case).
+struct CaseSpan {
+    std::string case_id;
+    grammar::Span span;
+};
+
+const CaseSpan* first_in_run(const std::vector<CaseSpan>& seen, const std::string& case_id) {
+    for (const CaseSpan& s : seen)
+        if (same_run(s.case_id, case_id)) return &s;
+    return nullptr;
+}
+
 bool skip_cards(const std::string& keyword) {
     // Read by the reader itself (includes, parameters) or free text.
     return keyword == "*COMMENT" || keyword.rfind("*INCLUDE", 0) == 0 || keyword.rfind("*PARAMETER", 0) == 0 ||
@@ -242,9 +261,11 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
         std::size_t count = 0;
     };
     std::map<std::string, Unknown> unknown;
-    std::map<const keywords::KeywordSchema*, grammar::Span> seen_unique;
+    std::map<const keywords::KeywordSchema*, std::vector<CaseSpan>> seen_unique;
+    std::string current_case;  // inside *CASE_BEGIN_n ... *CASE_END_n: "n"; else empty (every case)
     for (const grammar::Block& block : deck.blocks) {
         if (block.keyword == "*") continue;  // a bare '*' line: the reader reported it
+        track_case(block.keyword, current_case);
         auto match = keywords::find_keyword(block.keyword);
         if (!match || !match->unknown_options.empty()) {
             auto& u = unknown[block.keyword];
@@ -254,12 +275,13 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
         }
         // Only *CONTROL_ keywords: every include file legitimately starts with its own *KEYWORD.
         if (match->schema->unique && match->schema->name.rfind("*CONTROL_", 0) == 0) {
-            auto [it, inserted] = seen_unique.emplace(match->schema, block.span);
-            if (!inserted) {
+            auto& seen = seen_unique[match->schema];
+            if (const CaseSpan* first = first_in_run(seen, current_case)) {
                 out.push_back({"DK018", diag::Severity::Error,
                                fmt::format("{} appears more than once", match->schema->name), block.span,
-                               {{it->second, "first defined here"}}});
+                               {{first->span, "first defined here"}}});
             }
+            seen.push_back({current_case, block.span});
         }
         if (skip_cards(block.keyword) || match->schema->free_text) continue;
         const std::size_t before = out.size();

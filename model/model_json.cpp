@@ -59,7 +59,9 @@ json all_fields(const KeywordRecord& r, json written) {
     for (std::size_t i = 0; i < single; ++i) {
         const keywords::CardSpec& card = *cards[i];
         if (card.repeat == keywords::CardRepeat::Repeated) continue;
-        if (card.present_if && !card.present_if->holds(condition_value(r, card.present_if->field))) continue;
+        if (card.present_if &&
+            !card.present_if->holds_with([&](std::string_view field) { return condition_value(r, field); }))
+            continue;
         for (const keywords::FieldSpec& f : card.fields) {
             const std::string name(f.name);
             if (f.type == keywords::FieldType::Unused || out.contains(name)) continue;

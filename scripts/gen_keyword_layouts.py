@@ -13,7 +13,8 @@ run time only for the keywords a deck uses (grammar/keywords/generated_schema.cp
       REPEAT    1 once, r repeated until the next keyword, gN first of a group of N cards that
                 repeats until the next keyword, x layout unknown from here on (not checked)
       OPTION    - base card, * always read when present (*CONTACT cards A-G), else an option name
-      CONDITION - none, else FIELD OP V1;V2... with OP one of == != < <= > >= in
+      CONDITION - none, else tests FIELD OP V1;V2... (OP one of == != < <= > >= in) joined by
+                " and " (binds first) and " or ": "DOF in -11;-10;-9;9;10;11 or VAD == 4"
       FIELD     NAME:TYPE:OFFSET:WIDTH[:DEFAULT[:LINK]], TYPE one of I F A U (unused), LINK what
                 the id names (PART, SET_NODE, DEFINE_CURVE...: the JSON's links)
 
@@ -38,8 +39,13 @@ def field_name(f):
 LINKS = {}  # pydyna field name -> what its id names, for the keyword being written
 
 
+# Fields pydyna types wrongly, by pydyna name: AMMGNM of *ALE_STRUCTURED_MULTI-MATERIAL_GROUP is the
+# group's name (A10 in the manual; "vacuum", "air" in pydyna's own test deck standard/sale.k).
+TYPE_FIXES = {"ammgnm": "str"}
+
+
 def field_text(f, offset=None, width=None, name=None, ftype=None):
-    t = ftype or f["type"]
+    t = ftype or TYPE_FIXES.get(f.get("name", ""), f["type"])
     code = {"int": "I", "float": "F", "str": "A", "bool": "A"}.get(t, "A")
     name = name or field_name(f)
     if name.startswith("UNUSED"):
@@ -74,6 +80,9 @@ def padded(fields):
 
 
 SIMPLE = re.compile(r"^(abs\()?self\.(\w+)\)?\s*(==|!=|<=|>=|<|>|in)\s*(.+)$")
+VALUE = r"(?:\[[^\]]*\]|-?\d+(?:\.\d*)?|None)"
+TOKEN = re.compile(r"\s*(\(|\)|and\b|or\b|abs\(self\.\w+\)\s*(?:==|!=|<=|>=|<|>|in)\s*" + VALUE +
+                   r"|self\.\w+(?:\s+is not None|\s*(?:==|!=|<=|>=|<|>|in)\s*" + VALUE + r")?)")
 
 
 def number_list(text):
@@ -89,22 +98,73 @@ def number_list(text):
     return vals
 
 
-def condition_text(cond, names):
-    """The condition in the table's form, '' when there is none, None when it cannot be decided."""
-    if cond is None:
-        return ""
-    c = cond.strip()
-    # "self.x and abs(self.x) == 1", "self.x is not None and self.x < 0": the guard only says the
-    # field is written; a blank field compares through its default below.
-    m = re.match(r"^self\.(\w+)( is not None)? and (.+)$", c)
-    if m and f"self.{m.group(1)}" in m.group(3) and " and " not in m.group(3) and " or " not in m.group(3):
-        c = m.group(3).strip()
-    m = re.match(r"^self\.(\w+) == None or self\.(\w+) == 0$", c)
-    if m and m.group(1) == m.group(2):
-        c = f"self.{m.group(1)} == 0"
-    if " and " in c or " or " in c or "(" in c.replace("abs(", ""):
-        return None
-    m = SIMPLE.match(c)
+def tokens(text):
+    out, pos = [], 0
+    while pos < len(text):
+        m = TOKEN.match(text, pos)
+        if not m or m.end() == pos:
+            return None
+        out.append(m.group(1))
+        pos = m.end()
+        while pos < len(text) and text[pos].isspace():
+            pos += 1
+    return out
+
+
+def dnf(toks):
+    """The condition as a list of clauses (or) of atoms (and); None when it does not parse."""
+    pos = 0
+
+    def expr():
+        nonlocal pos
+        clauses = term()
+        while clauses is not None and pos < len(toks) and toks[pos] == "or":
+            pos += 1
+            more = term()
+            clauses = None if more is None else clauses + more
+        return clauses
+
+    def term():
+        nonlocal pos
+        clauses = factor()
+        while clauses is not None and pos < len(toks) and toks[pos] == "and":
+            pos += 1
+            more = factor()
+            clauses = None if more is None else [a + b for a in clauses for b in more]
+        return clauses
+
+    def factor():
+        nonlocal pos
+        if pos >= len(toks):
+            return None
+        t = toks[pos]
+        pos += 1
+        if t == "(":
+            inner = expr()
+            if inner is None or pos >= len(toks) or toks[pos] != ")":
+                return None
+            pos += 1
+            return inner
+        if t in (")", "and", "or"):
+            return None
+        return [[t]]
+
+    out = expr()
+    return out if pos == len(toks) else None
+
+
+def atom_text(atom, clause, names):
+    """One test in the table's form; '' for a guard implied by the rest of its clause; None when
+    it cannot be decided from the fields of earlier cards."""
+    m = re.match(r"^self\.(\w+)( is not None)?$", atom)
+    if m:  # "self.x" (x written and not 0) or "self.x is not None" (x written)
+        name = m.group(1)
+        if any(a != atom and f"self.{name}" in a for a in clause):
+            return ""  # a guard: the other test on x compares a blank field through its default
+        if m.group(2) or name not in names:
+            return None  # "written at all" cannot be told from a default; a flag of the card itself
+        return f"{names[name]} != 0"
+    m = SIMPLE.match(atom)
     if not m:
         return None
     absolute, name, op, rest = m.group(1), m.group(2), m.group(3), m.group(4)
@@ -119,6 +179,32 @@ def condition_text(cond, names):
         op = "in"
         vals = sorted(set(vals + [-v for v in vals]))
     return f"{names[name]} {op} {';'.join(repr(v) for v in vals)}"
+
+
+def condition_text(cond, names):
+    """The condition in the table's form, '' when there is none, None when it cannot be decided.
+    `names` maps pydyna names to table names for the fields of earlier cards only: a card's
+    presence cannot depend on its own fields. Several fields: " and " binds before " or "."""
+    if cond is None:
+        return ""
+    c = cond.strip()
+    m = re.match(r"^self\.(\w+) == None or self\.(\w+) == 0$", c)
+    if m and m.group(1) == m.group(2):
+        c = f"self.{m.group(1)} == 0"  # blank or 0: a blank field compares through its default
+    toks = tokens(c)
+    clauses = dnf(toks) if toks else None
+    if not clauses:
+        return None
+    out = []
+    for clause in clauses:
+        tests = [atom_text(a, clause, names) for a in clause]
+        if any(t is None for t in tests):
+            return None
+        tests = [t for t in tests if t]
+        if not tests:
+            return None
+        out.append(" and ".join(tests))
+    return " or ".join(out)
 
 
 def card_lines(entry):
@@ -136,13 +222,13 @@ def card_lines(entry):
         opt = c.get("option") or "-"
         if opt in CONTACT_OPTIONAL and str(c.get("position", "")).startswith("post"):
             opt = "*"
-        for f in c.get("fields", []):
-            names.setdefault(f["name"], field_name(f))
         kind = c["kind"]
         if c.get("condition") and "has_nondefault_values" in c["condition"] and "[" in c["condition"]:
             cond = ""  # an optional trailing card: written only when it has values
         else:
             cond = condition_text(c.get("condition"), names)
+        for f in c.get("fields", []):
+            names.setdefault(f["name"], field_name(f))
         if cond is None:
             if stop(opt):
                 continue
@@ -183,6 +269,25 @@ def card_lines(entry):
     return out
 
 
+def solid_nodes(first, count, offset):
+    return ",".join(f"N{first + k}:I:{offset + 8 * k}:8::NODE" for k in range(count))
+
+
+# Keywords pydyna does not generate, written here by hand from the LS-DYNA manual (same format).
+# *ELEMENT_SOLID (manual vol. I, *ELEMENT_SOLID): since R9 one element is two lines, EID PID (I8)
+# then N1-N10 (I8); the older one-line form EID PID N1-N8 (10 I8) is still read. LS-DYNA tells
+# them apart by the first line: nodes after PID make it the one-line form. So the node line is
+# read only when N1 of the first line is blank (0 is no node). Node ids are not followed (mesh
+# connectivity is the mesher's: model/id_links.cpp); PID is, to *PART.
+HAND_WRITTEN = {
+    "*ELEMENT_SOLID": "\n".join([
+        "",
+        "g2|-||EID:I:0:8,PID:I:8:8::PART," + solid_nodes(1, 8, 16),
+        "1|-|N1 == 0|" + solid_nodes(1, 10, 0),
+    ]),
+}
+
+
 def cxx_string(s):
     return '"' + s.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n") + '"'
 
@@ -197,7 +302,13 @@ def main():
         LINKS.clear()
         LINKS.update(e.get("links", {}))
         body = " ".join(e.get("options", [])) + "\n" + "\n".join(card_lines(e))
-        rows.append((name, body))
+        # Keyword names are case-insensitive and looked up upper-cased; pydyna spells two with
+        # lower-case letters (*MAT_115_o, *MAT_249_UDfiber).
+        rows.append((name.upper(), body))
+    for name, body in HAND_WRITTEN.items():
+        if name not in kws:
+            rows.append((name, body))
+    rows.sort()
     print("// GENERATED by scripts/gen_keyword_layouts.py from lsdyna-keyword-layouts.json; do not edit.")
     print(f"// Source: github.com/{src['repository']} at {src['commit']}, {src['path']}")
     print(f"// (pydyna's generated keyword classes). License: {src['license']}; {src['copyright']}")

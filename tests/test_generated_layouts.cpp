@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "grammar/dyna/reader.hpp"
 #include "grammar/keywords/generated_layouts.hpp"
 #include "grammar/keywords/schema.hpp"
 #include "engine/check.hpp"
@@ -152,4 +153,77 @@ TEST_CASE("generated layouts: a pydyna integer field is checked as a number and 
     for (const auto& d : r.diagnostics)
         if (d.code == "DK003") found = d.message == "'abc' in integer field DOF is not a number";
     CHECK(found);
+}
+
+namespace {
+
+bool has_finding(const engine::CheckResult& r, std::string_view code, std::string_view message) {
+    for (const auto& d : r.diagnostics)
+        if (d.code == code && d.message == message) return true;
+    return false;
+}
+
+}  // namespace
+
+TEST_CASE("generated layouts: every name of the layouts file, written on a keyword line, is known") {
+    // Through the reader: a name holding '-' or '/' (*CONSTRAINED_TIE-BREAK, *MAT_SIMPLIFIED_RUBBER/FOAM)
+    // must reach the table whole. pydyna's aliases (*MAT_SAMP_1 for *MAT_SAMP-1) are names of the file
+    // too; "*ELEMENT_SOLID_DOF (ten nodes format)" is read as *ELEMENT_SOLID_DOF and a hint.
+    std::string text = "*KEYWORD\n";
+    std::size_t names = 0;
+    for (const auto& e : keywords::generated::layouts()) {
+        text += std::string(e.name) + "\n";
+        ++names;
+    }
+    text += "*CASE_BEGIN_1\n*CASE_END_1\n*CASE_BEGIN_12\n*CASE_END_12\n";
+    const auto deck = grammar::dyna::read_buffer(text, "all.k");
+    REQUIRE(deck.blocks.size() == names + 5);
+    std::size_t unknown = 0;
+    for (std::size_t i = 1; i < deck.blocks.size(); ++i) {
+        const std::string& k = deck.blocks[i].keyword;
+        auto m = keywords::find_keyword(k);
+        const bool known = m && m->unknown_options.empty();
+        if (!known) ++unknown;
+        CHECK_MESSAGE(known, k);
+    }
+    CHECK(unknown == 0);
+    CHECK(deck.blocks[1 + 0].keyword.find(' ') == std::string::npos);
+    CHECK_FALSE(keywords::find_keyword("*CASE_BEGIN_X").has_value());
+    CHECK_FALSE(keywords::find_keyword("*CASE_BEGIN_1_2").has_value());
+}
+
+TEST_CASE("generated layouts: a condition naming two fields is decided by both") {
+    // *BOUNDARY_PRESCRIBED_MOTION: the OFFSET1/OFFSET2/LRB card follows when abs(DOF) is 9, 10 or 11
+    // or VAD is 4 (pydyna: "abs(self.dof) in [9, 10, 11] or self.vad == 4"); else the block ends.
+    const std::string head = "*KEYWORD\n*BOUNDARY_PRESCRIBED_MOTION_NODE\n";
+    const std::string offsets = "       abc\n";
+    const std::string message = "'abc' in real field OFFSET1 is not a number";
+    auto by_vad = engine::check_buffer(head + "         1         1         4         1\n" + offsets, "d.k");
+    CHECK(has_finding(by_vad, "DK003", message));
+    auto by_dof = engine::check_buffer(head + "         1       -10         2         1\n" + offsets, "d.k");
+    CHECK(has_finding(by_dof, "DK003", message));
+    auto neither = engine::check_buffer(head + "         1         1         2         1\n" + offsets, "d.k");
+    CHECK_FALSE(has_finding(neither, "DK003", message));
+    auto match = keywords::find_keyword("*BOUNDARY_PRESCRIBED_MOTION_NODE");
+    REQUIRE(match);
+    const auto& cond = match->schema->cards.at(1).present_if;
+    REQUIRE(cond.has_value());
+    CHECK(cond->field == "DOF");
+    REQUIRE(cond->or_else.size() == 1);
+    CHECK(cond->or_else[0].field == "VAD");
+}
+
+TEST_CASE("generated layouts: *ELEMENT_SOLID is read in its one-line and two-line forms") {
+    auto match = keywords::find_keyword("*ELEMENT_SOLID");
+    REQUIRE(match);
+    CHECK(keywords::repeat_group_size(*match) == 2);
+    // two-line form: the node line's third field is N3 (columns 17-24), not the first line's N1
+    auto two = engine::check_buffer("*KEYWORD\n*ELEMENT_SOLID\n       1       1\n       1       2     abc\n", "d.k");
+    CHECK(has_finding(two, "DK003", "'abc' in integer field N3 is not a number"));
+    // one-line form: columns 17-24 are N1, and the next line is the next element
+    auto one = engine::check_buffer(
+        "*KEYWORD\n*ELEMENT_SOLID\n       1       1     abc       2       3       4       5       6       7       8\n"
+        "       2       1       1       2       3       4       5       6     xyz       8\n", "d.k");
+    CHECK(has_finding(one, "DK003", "'abc' in integer field N1 is not a number"));
+    CHECK(has_finding(one, "DK003", "'xyz' in integer field N7 is not a number"));
 }

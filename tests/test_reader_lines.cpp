@@ -151,3 +151,24 @@ TEST_CASE("reader: an indented '*' line inside *COMMENT or an expression continu
     auto bare = read_buffer("*\n", "d.k");
     CHECK(count_code(bare.diagnostics, "DK001") == 1);
 }
+
+TEST_CASE("reader: '-' and '/' between letters or digits belong to the keyword name") {
+    auto deck = read_buffer("*CONSTRAINED_TIE-BREAK\n*MAT_SAMP-1 +\n*MAT_SIMPLIFIED_RUBBER/FOAM\n"
+                            "*ALE_MULTI-MATERIAL_GROUP-\n*NODE-\n*NODE -\n*PART-  hint\n*DEFINE_CURVE/\n",
+                            "d.k");
+    REQUIRE(deck.blocks.size() == 8);
+    CHECK(deck.blocks[0].keyword == "*CONSTRAINED_TIE-BREAK");
+    CHECK(deck.blocks[0].suffix == 0);
+    CHECK(deck.blocks[1].keyword == "*MAT_SAMP-1");
+    CHECK(deck.blocks[1].format == grammar::CardFormat::Long);
+    CHECK(deck.blocks[2].keyword == "*MAT_SIMPLIFIED_RUBBER/FOAM");
+    CHECK(deck.blocks[3].keyword == "*ALE_MULTI-MATERIAL_GROUP");  // a final '-' is still the suffix
+    CHECK(deck.blocks[3].suffix == '-');
+    for (std::size_t i : {4, 5, 6}) {
+        CHECK(deck.blocks[i].keyword.find('-') == std::string::npos);
+        CHECK(deck.blocks[i].suffix == '-');
+    }
+    CHECK(deck.blocks[6].arguments == "hint");
+    CHECK(deck.blocks[7].keyword == "*DEFINE_CURVE");  // a '/' not followed by a name character ends it
+    CHECK(deck.blocks[7].arguments == "/");
+}

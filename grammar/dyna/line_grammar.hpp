@@ -35,8 +35,14 @@ struct comment_line : pegtl::seq<pegtl::one<'$'>, rest_of_line> {};
 
 // '*' (blanks before it tolerated and reported), the name up to the first blank, an optional
 // format suffix (+ long, - standard, % I10) glued or after blanks, then free arguments.
+// LS-DYNA names hold '-' and '/' between letters or digits (*CONSTRAINED_TIE-BREAK, *MAT_SAMP-1,
+// *MAT_SIMPLIFIED_RUBBER/FOAM): there they join, while a '-' ending the name (`*NODE-`, `*NODE -`)
+// stays the standard-format suffix.
 struct keyword_indent : pegtl::star<inline_blank> {};
-struct keyword_name : pegtl::star<pegtl::sor<pegtl::alnum, pegtl::one<'_'>>> {};
+struct name_char : pegtl::sor<pegtl::alnum, pegtl::one<'_'>> {};
+struct name_joiner : pegtl::seq<pegtl::one<'-', '/'>, pegtl::at<name_char>> {};
+// May be empty (a bare '*'): the reader finds the '*' from where the name starts.
+struct keyword_name : pegtl::opt<name_char, pegtl::star<pegtl::sor<name_char, name_joiner>>> {};
 struct suffix_char : pegtl::one<'+', '-', '%'> {};
 struct suffix_end : pegtl::at<pegtl::sor<inline_blank, pegtl::one<'\r', '\n'>, pegtl::eof>> {};
 struct keyword_suffix : pegtl::seq<pegtl::star<pegtl::one<' '>>, suffix_char, suffix_end> {};

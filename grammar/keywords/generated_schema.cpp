@@ -59,10 +59,10 @@ FieldSpec field_of(std::string_view text) {
     return f;
 }
 
-std::optional<CardCondition> condition_of(std::string_view text) {
-    if (text.empty()) return std::nullopt;
+// One test, "FIELD OP V1;V2..." (the generator's docstring).
+std::optional<CardCondition> test_of(std::string_view text) {
     const auto parts = split(text, ' ');
-    if (parts.size() != 3) return std::nullopt;
+    if (parts.size() != 3 || parts[0].empty()) return std::nullopt;
     CardCondition c;
     c.field = parts[0];
     const std::string_view op = parts[1];
@@ -74,6 +74,38 @@ std::optional<CardCondition> condition_of(std::string_view text) {
     c.compare = op == "==" ? Compare::Equal : op == "!=" ? Compare::NotEqual : op == "<" ? Compare::Less
               : op == "<=" ? Compare::LessEqual : op == ">" ? Compare::Greater : Compare::GreaterEqual;
     return c;
+}
+
+// Tests joined by " and " (binding first) and " or ": the first clause's first test carries the rest.
+std::vector<std::string_view> split_words(std::string_view s, std::string_view sep) {
+    std::vector<std::string_view> out;
+    for (std::size_t at; (at = s.find(sep)) != std::string_view::npos; s.remove_prefix(at + sep.size()))
+        out.push_back(s.substr(0, at));
+    out.push_back(s);
+    return out;
+}
+
+std::optional<CardCondition> clause_of(std::string_view text) {
+    std::optional<CardCondition> first;
+    for (std::string_view t : split_words(text, " and ")) {
+        auto test = test_of(t);
+        if (!test) return std::nullopt;
+        if (!first) first = std::move(test);
+        else first->all_of.push_back(std::move(*test));
+    }
+    return first;
+}
+
+std::optional<CardCondition> condition_of(std::string_view text) {
+    if (text.empty()) return std::nullopt;
+    std::optional<CardCondition> first;
+    for (std::string_view clause : split_words(text, " or ")) {
+        auto c = clause_of(clause);
+        if (!c) return std::nullopt;
+        if (!first) first = std::move(c);
+        else first->or_else.push_back(std::move(*c));
+    }
+    return first;
 }
 
 bool written(const std::vector<std::string_view>& options, std::string_view o) {
@@ -143,6 +175,12 @@ std::string_view option_named(std::string_view keyword, const std::vector<std::s
     return {};
 }
 
+// *CASE_BEGIN_n and *CASE_END_n: the name ends with the case id n (manual, *CASE), no option.
+bool case_id_token(std::string_view keyword, std::string_view token, bool last) {
+    return last && (keyword == "*CASE_BEGIN" || keyword == "*CASE_END") && !token.empty() &&
+           std::all_of(token.begin(), token.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
 }  // namespace
 
 std::optional<KeywordMatch> find_generated(std::string_view key) {
@@ -156,8 +194,10 @@ std::optional<KeywordMatch> find_generated(std::string_view key) {
             for (std::size_t pos = base_end; pos < key.size() && all_known;) {
                 std::size_t end = key.find('_', pos + 1);
                 if (end == std::string_view::npos) end = key.size();
-                const std::string_view o = option_named(entry->name, options, key.substr(pos + 1, end - pos - 1));
-                if (o.empty() || written(on, o)) all_known = end == pos + 1;  // "__" is no option
+                const std::string_view token = key.substr(pos + 1, end - pos - 1);
+                const std::string_view o = option_named(entry->name, options, token);
+                if (case_id_token(entry->name, token, end == key.size())) {}
+                else if (o.empty() || written(on, o)) all_known = end == pos + 1;  // "__" is no option
                 else on.push_back(o);
                 pos = end;
             }

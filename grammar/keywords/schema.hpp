@@ -84,8 +84,22 @@ struct CardCondition {
     Compare compare = Compare::Equal;
     double value = 0.0;
     std::vector<double> any_of = {};  // non-empty: holds when the value is one of these (compare unused)
+    // Generated layouts only: conditions naming several fields (pydyna's "abs(self.dof) in [9, 10, 11]
+    // or self.vad == 4"). The whole holds when this test and every `all_of` hold, or any `or_else` holds.
+    std::vector<CardCondition> all_of = {};
+    std::vector<CardCondition> or_else = {};
 
-    bool holds(double field_value) const;
+    bool holds(double field_value) const;  // this test alone, on `field`'s value
+    // The whole condition; `value_of(name)` gives a field's value as read (0 when not read).
+    template <typename ValueOf>
+    bool holds_with(const ValueOf& value_of) const {
+        bool all = holds(value_of(field));
+        for (const CardCondition& c : all_of) all = all && c.holds_with(value_of);
+        if (all) return true;
+        for (const CardCondition& c : or_else)
+            if (c.holds_with(value_of)) return true;
+        return false;
+    }
 };
 
 struct CardSpec {
