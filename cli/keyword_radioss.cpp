@@ -5,6 +5,8 @@
 #include <cctype>
 #include <fmt/format.h>
 
+#include "grammar/radioss/cell_names.hpp"
+
 namespace sphdeck::cli {
 namespace {
 
@@ -16,18 +18,6 @@ std::string upper(std::string_view s) {
     return out;
 }
 
-std::string_view cell_type(rad::Cell cell) {
-    switch (cell) {
-        case rad::Cell::Int: return "integer";
-        case rad::Cell::Real: return "real";
-        case rad::Cell::Text:
-        case rad::Cell::Text20: return "text";
-        case rad::Cell::Line: return "line";
-        case rad::Cell::Skip:
-        case rad::Cell::Skip20: return "unused";
-    }
-    return "";
-}
 
 // The deck versions (Invers of /BEGIN) that read format `k` of the keyword (formats newest first).
 std::string versions_text(const rad::KeywordSpec& keyword, std::size_t k) {
@@ -74,7 +64,7 @@ void print_card(const rad::CardSpec& card, int version, bool engine) {
         std::string columns = engine ? std::to_string(i + 1)
                               : to_end ? fmt::format("{}-", cells[i].start + 1)
                                        : fmt::format("{}-{}", cells[i].start + 1, cells[i].start + cells[i].width);
-        rows.push_back({std::move(columns), f.name.empty() ? "-" : std::string(f.name), std::string(cell_type(f.cell)),
+        rows.push_back({std::move(columns), f.name.empty() ? "-" : std::string(f.name), std::string(rad::cell_kind_name(f.cell)),
                         std::string(f.note)});
     }
     if (engine) rows[0][0] = "value";

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <string>
 
+#include "grammar/radioss/cell_names.hpp"
 #include "grammar/keywords/schema.hpp"
 #include "grammar/value.hpp"
 #include "lsp/deck_ids.hpp"
@@ -154,16 +155,6 @@ nlohmann::json dyna_field_hover(const CheckedDeck& deck, const grammar::Block& b
     return hover_json(std::move(text), raw.sources, span);
 }
 
-std::string_view cell_name(rad::Cell cell) {
-    switch (cell) {
-        case rad::Cell::Int: return "integer";
-        case rad::Cell::Real: return "real";
-        case rad::Cell::Text:
-        case rad::Cell::Text20: return "text";
-        case rad::Cell::Line: return "line";
-        default: return "unused";
-    }
-}
 
 nlohmann::json radioss_hover(const CheckedDeck& deck, const grammar::Block& block, std::uint32_t line,
                              std::uint32_t column) {
@@ -204,7 +195,7 @@ nlohmann::json radioss_hover(const CheckedDeck& deck, const grammar::Block& bloc
         if (!v.explicit_value) span.column = cells[*index].start + 1, span.end_column = span.column + cells[*index].width;
     }
     std::string text = fmt::format("**{}** (`{}`, format {}): {}{}", v.spec->name, spec->name,
-                                   spec->format_for(card->version).since, cell_name(v.spec->cell), columns);
+                                   spec->format_for(card->version).since, rad::cell_kind_name(v.spec->cell), columns);
     if (!v.spec->note.empty()) text += fmt::format("\n\n{}", v.spec->note);
     if (!v.explicit_value) {
         text += "\n\nvalue: blank (the starter's default applies)";
