@@ -129,8 +129,8 @@ bool add_trixi_cross_check(CaseResult& result, const CaseOptions& options, std::
         result.method.push_back(fmt::format(
             "Cross-check deck `{}` (`make_dam_break_marrone.py`, H/{}): our max x against TrixiParticles' at "
             "0.2 <= T <= {}, every 0.2: {} (gated at T = 0.4, 0.8, ..., 2.0 and 2.2, tolerance {:.0f} %). Our "
-            "front rule of the experiments (particles below y = W/4 with a neighbour within 2 dx) lies at most "
-            "{:.2g} dx behind max x.",
+            "front rule of the experiments (particles below y = W/4 with a neighbour within 2 dx) stays within "
+            "{:.2g} dx of max x (more would mean a droplet alone ahead).",
             res.deck, res.per_height, last_compared_T, worst_text, 100.0 * tolerance, rule_gap / f.dx));
         std::vector<double> our_y;
         for (double x : f.max_x) our_y.push_back(x / f.H);

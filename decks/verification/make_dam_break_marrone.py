@@ -5,7 +5,7 @@ SPH code"): dam_break_marrone_40.k (H / 40, 3,200 particles; quick and full) and
 
 The problem is the 2D dam break of Marrone et al. (2011, CMAME 200, 1526) as TrixiParticles.jl runs it
 for its published reference results (trixi-framework/TrixiParticles.jl, MIT license,
-validation/dam_break_2d/validation_reference_wcsph_40.json and _80.json; the set-up is
+validation/dam_break_2d/validation_reference_{wcsph,edac}_{40,80}.json; the set-up is
 examples/fluid/dam_break_2d.jl with validation/dam_break_2d/setup_marrone_2011.jl, and the values below
 are the ones the reference files record in their "meta" block): a water column H = 0.6 m high and
 W = 2 H wide at rest against the back wall of a tank floor(5.366 H / dx) dx long, free-slip walls,
@@ -21,8 +21,9 @@ How the deck maps their model (what differs is said; verification.md section 3 g
 - Walls: theirs are 4 layers of dummy particles (Adami pressure extrapolation, no wall viscosity); ours
   are *BOUNDARY_SPH_SYMMETRY_PLANE mirrors at the same places (x = 0, y = 0 and the far wall), both free
   slip. The column's lattice starts dx/2 from the walls, as theirs.
-- Start: theirs is hydrostatic (density from the inverse EOS); a deck gives every particle of a part the
-  same density, so ours starts uncompressed (rho0 g H / (rho0 c0^2) = 0.25 % of compression to settle).
+- Start: theirs is hydrostatic (density from the inverse EOS); ours starts uncompressed (rho0 g H /
+  (rho0 c0^2) = 0.25 % of compression to settle). A deck gives one density per part: a hydrostatic start
+  needs a part and an EOS (V0) per row, which was tried and moved the front by under 0.1 % to T = 2.
 - Not in the deck: their density diffusion (Molteni & Colagrossi, delta = 0.1) and their 4th-order
   Runge-Kutta time stepping; ours has no density diffusion and integrates with leapfrog, TSSFAC 0.3.
 End time t sqrt(g / H) = 2.5: the front reaches the far wall at 2.4-2.45, after which the largest x of the
