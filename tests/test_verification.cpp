@@ -1,7 +1,7 @@
 // verify/: the exact Riemann solver against verification.md §1's table, the error norms
 // and convergence order on synthetic data with known answers (§9), wave detection on synthetic
 // profiles, the surge-front rule, the Martin & Moyce table, the verification decks passing `check`, and the
-// deck settings the Sod and Sedov cases depend on.
+// deck settings the Sod and Sedov cases depend on; the TrixiParticles cross-check table and its decks.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -11,13 +11,16 @@
 #include <vector>
 
 #include "engine/check.hpp"
+#include "refsolver/setup.hpp"
 #include "refsolver/simulation.hpp"
+#include "verify/dam_break_cross_check.hpp"
 #include "verify/koshizuka_oka.hpp"
 #include "verify/martin_moyce.hpp"
 #include "verify/norms.hpp"
 #include "verify/riemann.hpp"
 #include "verify/sod_waves.hpp"
 #include "verify/surge_front.hpp"
+#include "verify/trixi_dam_break.hpp"
 #include "verify/wave_detection.hpp"
 
 using namespace sphdeck::verify;
@@ -260,6 +263,92 @@ TEST_CASE("verification dam break: the Koshizuka & Oka time axis is video frames
     }
 }
 
+// verify/trixi_dam_break.hpp is TrixiParticles' max x of the fluid (not an edge, not a filtered front), on
+// their lattice dx/2 from the walls, before the front reaches the far wall: these facts fix how our front
+// must be measured (docs/verification.md §3, "Against another SPH code").
+TEST_CASE("verification dam break: the TrixiParticles table is max x of the particles, before the far wall") {
+    const auto& rows = trixi_dam_break_front;
+    const double W = 2.0 * trixi_H;
+    for (int n : {40, 80}) {
+        const double dx = trixi_H / n, tank = std::floor(5.366 * trixi_H / dx) * dx;
+        INFO("H/" << n);
+        for (TrixiScheme scheme : {TrixiScheme::Wcsph, TrixiScheme::Edac}) {
+            CHECK(*trixi_front(rows[0], n, scheme) == Approx(W - dx / 2).epsilon(1e-12));  // the particle, not the edge
+            for (std::size_t k = 1; k < rows.size(); ++k) {
+                CHECK(rows[k].T == Approx(0.2 * static_cast<double>(k)));
+                CHECK(*trixi_front(rows[k], n, scheme) > *trixi_front(rows[k - 1], n, scheme));
+                if (rows[k].T <= 2.2) CHECK(*trixi_front(rows[k], n, scheme) < tank - 4 * dx);  // clear of the wall
+            }
+        }
+    }
+    CHECK_FALSE(trixi_front(rows[1], 20, TrixiScheme::Wcsph));
+    for (const TrixiFrontRow& r : rows) {
+        CHECK(r.wcsph_80 >= r.wcsph_40);  // refining moves the front forward (by 0.3-1.3 %)
+        CHECK(r.wcsph_80 <= r.wcsph_40 * 1.015);
+        CHECK(r.edac_40 == Approx(r.wcsph_40).epsilon(0.005));  // two schemes of one code agree to 0.5 %
+        CHECK(r.edac_80 == Approx(r.wcsph_80).epsilon(0.005));
+    }
+}
+
+TEST_CASE("verification dam break: the comparison with TrixiParticles interpolates ours at their times") {
+    // Ours: their H/40 WCSPH front 2 % further, sampled every 0.1 in T up to T = 1.0 only.
+    std::vector<double> T, x;
+    for (std::size_t k = 0; k <= 5; ++k) {
+        const TrixiFrontRow& a = trixi_dam_break_front[k];
+        T.push_back(a.T), x.push_back(1.02 * a.wcsph_40);
+        if (k < 5) {
+            const TrixiFrontRow& b = trixi_dam_break_front[k + 1];
+            T.push_back(0.5 * (a.T + b.T)), x.push_back(1.02 * 0.5 * (a.wcsph_40 + b.wcsph_40));
+        }
+    }
+    const auto rows = compare_with_trixi(T, x, 40, TrixiScheme::Wcsph, 2.2);
+    REQUIRE(rows.size() == 5);  // T = 0.2 ... 1.0: T = 0 is left out, later rows are beyond our samples
+    for (const FrontComparison& c : rows) {
+        CHECK(c.ours / c.theirs == Approx(1.02));
+        CHECK(c.theirs * trixi_H > 2.0 * trixi_H);  // past the column's edge W = 2H
+    }
+    CHECK(rows.front().T == Approx(0.2));
+    CHECK(rows.back().theirs == Approx(1.73876 / trixi_H));
+    CHECK(compare_with_trixi(T, x, 40, TrixiScheme::Wcsph, 0.5).size() == 2);
+    CHECK(compare_with_trixi(T, x, 20, TrixiScheme::Wcsph, 2.2).empty());
+}
+
+// The cross-check decks must be TrixiParticles' model where a deck can say it (make_dam_break_marrone.py):
+// the linear EOS p = c0^2 (rho - rho0) with tension, c0 = 20 sqrt(g H), alpha = 0.01, h0 = 2 dx (support 4 dx,
+// as their Wendland C2 with h = 2 dx), their tank length and the lattice dx/2 from the walls.
+TEST_CASE("verification decks: the cross-check decks keep TrixiParticles' EOS, viscosity, h and tank") {
+    for (int n : {40, 80}) {
+        const std::filesystem::path deck = std::filesystem::path(SPHDECK_SOURCE_DIR) / "decks" / "verification" /
+                                           ("dam_break_marrone_" + std::to_string(n) + ".k");
+        INFO(deck.filename().string());
+        const sphdeck::engine::CheckResult r = sphdeck::engine::check_file(deck.string());
+        const double dx = trixi_H / n;
+        CHECK(r.model.controls.q2.value == 0.01);
+        CHECK(r.model.controls.q1.value == 0.0);
+        REQUIRE(r.model.sections.size() == 1);
+        CHECK(r.model.sections[0].sphini.value == Approx(2.0 * dx));
+        REQUIRE(r.model.equations_of_state.size() == 1);
+        CHECK(r.model.equations_of_state[0].keyword == "*EOS_LINEAR_POLYNOMIAL");
+        REQUIRE(r.model.symmetry_planes.size() == 3);
+        CHECK(r.model.symmetry_planes[2].tail[0] == Approx(std::floor(5.366 * trixi_H / dx) * dx));
+        const auto setup = sphdeck::refsolver::Simulation::create(r.model);
+        REQUIRE(setup.simulation);
+        const sphdeck::refsolver::ParticleState& s = setup.simulation->state();
+        CHECK(s.size() == static_cast<std::size_t>(2 * n * n));
+        CHECK(*std::min_element(s.x.begin(), s.x.end()) == Approx(dx / 2));
+        CHECK(*std::max_element(s.x.begin(), s.x.end()) == Approx(2 * trixi_H - dx / 2));
+        CHECK(*std::max_element(s.y.begin(), s.y.end()) == Approx(trixi_H - dx / 2));
+        CHECK(*std::min_element(s.h.begin(), s.h.end()) == Approx(2.0 * dx));
+        // p = c0^2 (rho - rho0) on both sides of rho0: tension is kept (PC far below any pressure here).
+        const auto input = sphdeck::refsolver::build_setup(r.model, {}).input;
+        REQUIRE(input);
+        REQUIRE(input->parts.size() == 1);
+        const double c0 = 20.0 * std::sqrt(trixi_g * trixi_H);
+        for (double rho : {995.0, 1005.0})
+            CHECK(input->parts[0].eos.pressure(rho, 0.0) == Approx(c0 * c0 * (rho - 1000.0)));
+    }
+}
+
 TEST_CASE("verification decks: every deck in decks/verification passes sphdeck check without errors") {
     const std::filesystem::path folder = std::filesystem::path(SPHDECK_SOURCE_DIR) / "decks" / "verification";
     std::size_t decks = 0;
@@ -274,7 +363,7 @@ TEST_CASE("verification decks: every deck in decks/verification passes sphdeck c
         CHECK(r.model.particles.size() > 0);
         CHECK(r.model.symmetry_planes.size() >= 3);
     }
-    CHECK(decks == 11);  // sod x 3, hydrostatic x 2, dam break x 2, sedov x 4
+    CHECK(decks == 13);  // sod x 3, hydrostatic x 2, dam break x 2 + cross-check x 2, sedov x 4
 }
 
 // The Sod strips expand along x only (by rho_L / rho*_L = 2.35), while DERIV 0 in 2D grows h only as

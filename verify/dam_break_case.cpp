@@ -1,13 +1,16 @@
 // The dam break (verification.md §3; decks/verification/make_dam_break.py): the surge front Z/a against
 // T = t sqrt(2 g / a), interpolated at the experimental T values from T = 1.5 (earlier the experiment lags
 // because its gate takes time to open, §3) up to the end of the run, for two experiments: Martin & Moyce
-// (1952, two column widths) and Koshizuka & Oka (1996, the 0.146 m column of the decks).
+// (1952, two column widths) and Koshizuka & Oka (1996, the 0.146 m column of the decks). Beside them a
+// numerical cross-check with no gate involved: the Marrone et al. (2011) dam break against TrixiParticles'
+// results (verify/dam_break_cross_check.cpp).
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
 #include "io/svg_plot.hpp"
 #include "verify/cases.hpp"
+#include "verify/dam_break_cross_check.hpp"
 #include "verify/deck_run.hpp"
 #include "verify/koshizuka_oka.hpp"
 #include "verify/martin_moyce.hpp"
@@ -28,7 +31,8 @@ constexpr double max_diagnostic_delay = 0.6;  // largest lag tried by the (ungat
 CaseResult run_dam_break(const CaseOptions& options) {
     CaseResult result;
     result.name = "dambreak";
-    result.title = "Dam break: surge front against Martin & Moyce (1952) and Koshizuka & Oka (1996)";
+    result.title = "Dam break: surge front against Martin & Moyce (1952) and Koshizuka & Oka (1996); "
+                   "cross-check with TrixiParticles";
     const std::string deck = options.quick ? "dam_break_mm_quick.k" : "dam_break_mm.k";
 
     // a and dx from the first observed state: the column's lattice starts dx/2 from the back wall.
@@ -120,7 +124,9 @@ CaseResult run_dam_break(const CaseOptions& options) {
     io::PlotPanel particles{fmt::format("particles at T = {:.3g}", end_T), "x/a", "y/a",
                             {{"SPH particles", px, py, io::SeriesStyle::Dots, "#4c78a8"}}, std::pair{0.0, 5.0},
                             std::pair{0.0, 2.0}};
-    const std::vector<io::PlotPanel> panels = {front, particles};
+    std::vector<io::PlotPanel> panels = {front, particles};
+    // The run of the experiments stays in the report even when a cross-check deck cannot run.
+    add_trixi_cross_check(result, options, panels);
     io::PlotOptions plot;
     plot.title = fmt::format("Dam break, a = {:g} m, {} particles", a, run.record.particles);
     result.svg = io::svg_plot(panels, plot);
