@@ -129,6 +129,33 @@ inline bool read_digits(const char*& p, const char* end, std::uint64_t& m, int& 
     return true;
 }
 
+// C's "%.8e" (d.dddddddde+dd, 14 characters after the sign): the coordinates and masses of the big
+// decks. Read in one go into the same m and decimal exponent as read_digits and the exponent loop
+// of short_real would give, so the same double follows.
+inline bool e8_form(const char* p, const char* end, std::uint64_t& m, int& exponent) {
+    if constexpr (std::endian::native != std::endian::little) return false;
+    std::uint64_t eight = 0;
+    if (end - p != 14 || !is_digit(p[0]) || p[1] != '.' || (p[10] != 'e' && p[10] != 'E') ||
+        (p[11] != '+' && p[11] != '-') || !is_digit(p[12]) || !is_digit(p[13]) || !eight_digits(p + 2, eight))
+        return false;
+    m = static_cast<std::uint64_t>(p[0] - '0') * 100000000u + eight;
+    const int e = (p[12] - '0') * 10 + (p[13] - '0');
+    exponent = -8 + (p[11] == '-' ? -e : e);
+    return true;
+}
+
+// m * 10^exponent when both are exact doubles (Clinger), the sign applied; false otherwise.
+inline bool scale_exact(std::uint64_t m, int exponent, bool negative, double& out) {
+    if (m > (std::uint64_t{1} << 53)) return false;
+    double v = static_cast<double>(m);
+    if (m != 0) {
+        if (exponent < -22 || exponent > 22) return false;
+        v = exponent < 0 ? v / exact_powers_of_ten[-exponent] : v * exact_powers_of_ten[exponent];
+    }
+    out = negative ? -v : v;
+    return true;
+}
+
 // Clinger's fast path for the C form [-]digits[.digits][e|E[+-]digits]: when the digits make an
 // integer m <= 2^53 and the decimal exponent e has |e| <= 22, m and 10^|e| are exact doubles and
 // one IEEE multiplication or division rounds m * 10^e correctly, which is the value from_chars
@@ -138,10 +165,11 @@ bool short_real(const char* p, const char* end, double& out) {
     const bool negative = *p == '-';
     if (negative) ++p;
     std::uint64_t m = 0;
+    int exponent = 0;
+    if (e8_form(p, end, m, exponent)) return scale_exact(m, exponent, negative, out);
     int count = 0;
     const char* start = p;
     if (!read_digits(p, end, m, count)) return false;
-    int exponent = 0;
     if (p < end && *p == '.') {
         ++p;
         const int before = count;
@@ -161,14 +189,8 @@ bool short_real(const char* p, const char* end, double& out) {
         }
         exponent += minus ? -e : e;
     }
-    if (p != end || m > (std::uint64_t{1} << 53)) return false;
-    double v = static_cast<double>(m);
-    if (m != 0) {
-        if (exponent < -22 || exponent > 22) return false;
-        v = exponent < 0 ? v / exact_powers_of_ten[-exponent] : v * exact_powers_of_ten[exponent];
-    }
-    out = negative ? -v : v;
-    return true;
+    if (p != end) return false;
+    return scale_exact(m, exponent, negative, out);
 }
 
 bool fast_classify(ValueToken& token, ValueShape expected) {
