@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "grammar/value.hpp"
+#include "grammar/value_fast.hpp"
 #include "model/card_decoder.hpp"
 
 namespace sphdeck::model {
