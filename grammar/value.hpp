@@ -49,12 +49,7 @@ struct IntegerValue {
 RealValue to_real(const ValueToken& token);
 IntegerValue to_integer(const ValueToken& token);
 
-// The fast paths of classify_value alone, for bulk readers that fall back to the full decoder:
-// `text` is already trimmed; true with the value when the text is a plain C integer ("-"? 1-18
-// digits) or a real that converts exactly by the short path, false for anything else (which
-// classify_value may still accept). The verdict and value are classify_value's own.
-bool plain_integer(std::string_view text, long long& value);
-bool plain_real(std::string_view text, double& value);
+// plain_integer and plain_real, the fast paths of classify_value alone: grammar/value_fast.hpp.
 
 inline RealValue parse_real(std::string_view field) { return to_real(classify_value(field)); }
 inline IntegerValue parse_integer(std::string_view field) { return to_integer(classify_value(field)); }

@@ -3,6 +3,9 @@
 namespace sphdeck::lint {
 
 void run_rules(RuleContext& context) {
+    // The preview first: its grids then never sit beside the id indexes that the rules below
+    // build and keep (the peak of memory). Its findings keep their place in the order.
+    if (context.options.geometry) context.preview = compute_rules_preview(context.model);
     check_references(context);
     check_control_sph(context);
     check_section_sph(context);
@@ -10,6 +13,7 @@ void run_rules(RuleContext& context) {
     check_sph_materials(context);
     check_isph(context);
     if (context.options.geometry) check_preview(context);
+    if (!context.options.keep_preview) context.preview.reset();
     check_radioss(context);
 }
 

@@ -154,11 +154,14 @@ void check_few_neighbours(RuleContext& c, const Preview& p) {
 
 }  // namespace
 
+std::shared_ptr<const Preview> compute_rules_preview(const model::Model& model) {
+    if (model.particles.size() == 0) return nullptr;
+    return std::make_shared<const Preview>(preproc::compute_preview(model));
+}
+
 void check_preview(RuleContext& c) {
-    if (c.model.particles.size() == 0) return;
-    auto kept = std::make_shared<Preview>(preproc::compute_preview(c.model));
-    const Preview& p = *kept;
-    if (c.options.keep_preview) c.preview = kept;
+    if (!c.preview) return;  // no particles
+    const Preview& p = *c.preview;
     check_memory(c, p);
     check_mass_spacing(c, p);
     check_coincident(c, p);

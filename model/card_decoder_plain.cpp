@@ -3,9 +3,9 @@
 // significant width, a blank required field, a value outside the fast number forms or outside
 // its field's range) is left to decode(), which reports it: findings stay those of decode().
 #include <cmath>
-#include <cstring>
 
-#include "grammar/value.hpp"
+#include "grammar/line_scan.hpp"
+#include "grammar/value_fast.hpp"
 #include "model/card_decoder.hpp"
 
 namespace sphdeck::model {
@@ -33,12 +33,10 @@ bool CardDecoder::decode_plain(const grammar::Block& block, const grammar::CardL
                                const keywords::CardSpec& card, std::vector<FieldValue>& values) {
     const Layout& layout = layout_of(card, block.format);
     if (!layout.plain) return false;
-    const std::string_view text = deck_.text(line);
     // Free format (a comma), a tab, or text past the significant width: decode() says what.
-    // (Two memchr: string_view::find_first_of calls memchr on the set once per character.)
-    if (text.size() > layout.significant || std::memchr(text.data(), ',', text.size()) ||
-        std::memchr(text.data(), '\t', text.size()))
-        return false;
+    const grammar::ScannedLine scanned = grammar::scan_line(deck_, line);
+    const std::string_view text = scanned.text;
+    if (text.size() > layout.significant || scanned.comma_or_tab) return false;
     values.resize(card.fields.size());
     for (std::size_t i = 0; i < card.fields.size(); ++i) {
         const keywords::FieldSpec& spec = card.fields[i];

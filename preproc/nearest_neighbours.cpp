@@ -169,6 +169,7 @@ NearestNeighbours nearest_neighbours_grid(std::span<const double> x, std::span<c
     const std::size_t to = cells * static_cast<std::size_t>(t + 1) / static_cast<std::size_t>(threads);
     g.for_each_cell_rows(block_rows, from, to, [&](std::size_t o, NeighbourGrid::Cell at, const auto& block) {
         const auto [first, last] = g.occupied_range(o);
+        const NeighbourGrid::BlockBounds block_bounds = g.block_bounds(at, 1);  // the cell's, not per point
         for (std::uint32_t k = first; k < last; ++k) {
             double best2 = std::numeric_limits<double>::infinity();
             std::uint32_t best = NearestNeighbours::none;
@@ -176,7 +177,8 @@ NearestNeighbours nearest_neighbours_grid(std::span<const double> x, std::span<c
             // Widen shell by shell until nothing outside the searched block can be closer; when the
             // next block would hold more cells than there are points, scan all points instead.
             for (std::uint32_t reach = 1; !g.block_covers_grid(at, reach); ++reach) {
-                const double clear = g.block_clearance(g.x()[k], g.y()[k], g.z()[k], at, reach);
+                const double clear = reach == 1 ? block_bounds.clearance(g.x()[k], g.y()[k], g.z()[k])
+                                                : g.block_clearance(g.x()[k], g.y()[k], g.z()[k], at, reach);
                 if (clear > 0 && best2 <= clear * clear) break;
                 if (g.block_cells(at, reach + 1) > static_cast<double>(n)) {
                     scan(g, k, 0, static_cast<std::uint32_t>(n), best2, best);
@@ -241,18 +243,19 @@ constexpr std::uint32_t count_reach = 1;
 #endif
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__AVX2__) && !defined(__SANITIZE_ADDRESS__) && \
     !defined(SPHDECK_NO_CLONES) && (!defined(__clang__) || __clang_major__ >= 14)
-#define SPHDECK_CLONES __attribute__((target_clones("avx2", "default")))
+#define SPHDECK_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
 #else
 #define SPHDECK_CLONES
 #endif
 
 // Symmetric counting: pairs (k, j) with j in sorted [b, e), all after k, each seen once; both
 // counts grow. `close` counts pairs within the largest tolerance (checked exactly afterwards).
+// Uniform: every point's support is support[0] (one value, no array in grid order).
 template <bool Uniform>
 [[gnu::always_inline]] inline void count_pairs(const NeighbourGrid& g, const double* support, std::uint32_t k,
                                                std::uint32_t b, std::uint32_t e, double tol2, std::uint64_t* count,
                                                std::uint64_t& within, std::uint64_t& close) {
-    const double px = g.x()[k], py = g.y()[k], pz = g.z()[k], sk = support[k];
+    const double px = g.x()[k], py = g.y()[k], pz = g.z()[k], sk = Uniform ? support[0] : support[k];
     const double *gx = g.x().data(), *gy = g.y().data(), *gz = g.z().data();
     const double uniform_r2 = sk * sk;
     std::uint64_t w = 0, c = 0;
@@ -310,7 +313,7 @@ SPHDECK_CLONES void count_cell_mixed(const NeighbourGrid& g, const double* suppo
 // write disjoint planes and go together, then runs 1, 3, 5... Counts are sums of 0/1 terms, so
 // the order of the additions changes nothing.
 template <bool Uniform>
-void count_symmetric(const NeighbourGrid& g, const std::vector<double>& support, double tol2,
+void count_symmetric(const NeighbourGrid& g, std::span<const double> support, double tol2,
                      std::vector<std::uint64_t>& count, std::vector<std::uint32_t>& close_points) {
     static constexpr NeighbourGrid::RowOffset half[] = {
         {1, 1, 0, 0}, {-1, 1, 1, 0}, {-1, 1, -1, 1}, {-1, 1, 0, 1}, {-1, 1, 1, 1}};
@@ -385,23 +388,32 @@ SPHDECK_CLONES void count_sampled(const NeighbourGrid& g, const std::vector<doub
 NeighbourCounts count_neighbours(std::span<const double> x, std::span<const double> y, std::span<const double> z,
                                  std::span<const double> support, std::span<const double> tolerance,
                                  double pair_budget) {
+    std::vector<std::uint32_t> own(x.size());  // every point its own group
+    for (std::size_t i = 0; i < own.size(); ++i) own[i] = static_cast<std::uint32_t>(i);
+    return count_neighbours(x, y, z, GroupedRadii{own, support, tolerance}, pair_budget);
+}
+
+NeighbourCounts count_neighbours(std::span<const double> x, std::span<const double> y, std::span<const double> z,
+                                 const GroupedRadii& radii, double pair_budget) {
     const std::size_t n = x.size();
     NeighbourCounts out;
     out.count.assign(n, 0);
     if (n == 0) return out;
+    const auto support_of = [&](std::size_t i) { return radii.support[radii.group[i]]; };
+    const auto tolerance_of = [&](std::size_t i) { return radii.tolerance[radii.group[i]]; };
+    // The largest values over the points (not over the groups: a group without points must not
+    // change the grid), and whether one support serves every point.
     double largest_support = 0, largest_tolerance = 0;
-    for (std::size_t i = 0; i < n; ++i)
-        largest_support = std::max(largest_support, support[i]), largest_tolerance = std::max(largest_tolerance, tolerance[i]);
+    bool uniform = true;
+    for (std::size_t i = 0; i < n; ++i) {
+        largest_support = std::max(largest_support, support_of(i));
+        largest_tolerance = std::max(largest_tolerance, tolerance_of(i));
+        uniform = uniform && support_of(i) == support_of(0);
+    }
     double cell = std::max(largest_support, largest_tolerance) / count_reach;
     if (cell <= 0) cell = estimated_spacing(x, y, z);
     const NeighbourGrid g(x, y, z, cell);
     const auto& order = g.order();
-    std::vector<double> s(n);
-    bool uniform = true;
-    for (std::size_t k = 0; k < n; ++k) {
-        s[k] = support[order[k]];
-        uniform = uniform && s[k] == s[0];
-    }
     // The distance evaluations a count takes: points per cell times points in its half-block.
     double work = 0;
     g.for_each_cell_rows(block_rows, [&](std::size_t o, NeighbourGrid::Cell, const auto& ranges) {
@@ -410,10 +422,16 @@ NeighbourCounts count_neighbours(std::span<const double> x, std::span<const doub
         for (auto [b, e] : ranges) block += e - b;
         work += 0.5 * double(last - first) * block;
     });
+    if (pair_budget <= 0) pair_budget = std::max(5.0e8, 400.0 * static_cast<double>(n));
+    const bool sampled = work > pair_budget;
+    // Supports in grid order: one value when uniform (and not sampled, which reads an array).
+    std::vector<double> s(uniform && !sampled ? 1 : n);
+    if (s.size() == 1) s[0] = support_of(0);
+    else
+        for (std::size_t k = 0; k < n; ++k) s[k] = support_of(order[k]);
     std::vector<std::uint64_t> count(n, 0);
     std::vector<std::uint32_t> close_points;
-    if (pair_budget <= 0) pair_budget = std::max(5.0e8, 400.0 * static_cast<double>(n));
-    if (work > pair_budget) {
+    if (sampled) {
         // A sampled point costs its whole block (twice its half-block): a quarter of the budget.
         out.sample_stride = static_cast<std::size_t>(std::ceil(8 * work / pair_budget));
         count_sampled(g, s, out.sample_stride, count);
@@ -422,14 +440,16 @@ NeighbourCounts count_neighbours(std::span<const double> x, std::span<const doub
     } else {
         count_symmetric<false>(g, s, largest_tolerance * largest_tolerance, count, close_points);
     }
+    s = {};
     for (std::size_t k = 0; k < n; ++k) out.count[order[k]] = static_cast<std::uint32_t>(count[k]);
+    count = {};
     // Coincident pairs: the few points with a pair inside the largest tolerance, checked exactly.
     for (std::uint32_t k : close_points) {
         const std::uint32_t i = order[k];
         g.for_each_block_range(g.cell_of(g.x()[k], g.y()[k], g.z()[k]), count_reach, [&](std::uint32_t b, std::uint32_t e) {
             for (std::uint32_t j = b; j < e; ++j) {
                 const double dx = g.x()[k] - g.x()[j], dy = g.y()[k] - g.y()[j], dz = g.z()[k] - g.z()[j];
-                const double t = std::max(tolerance[i], tolerance[order[j]]);
+                const double t = std::max(tolerance_of(i), tolerance_of(order[j]));
                 if (j != k && dx * dx + dy * dy + dz * dz <= t * t)
                     out.coincident.emplace_back(std::min(i, order[j]), std::max(i, order[j]));
             }

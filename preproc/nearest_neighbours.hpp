@@ -62,6 +62,16 @@ NeighbourCounts count_neighbours(std::span<const double> x, std::span<const doub
                                  std::span<const double> support, std::span<const double> tolerance,
                                  double pair_budget = 0);
 
+// Support and tolerance shared by groups of points (the parts of a deck): point i has
+// support[group[i]] and tolerance[group[i]]. The same counts as above without two arrays of a
+// double per point, nor a third in grid order when every point has the same support.
+struct GroupedRadii {
+    std::span<const std::uint32_t> group;        // per point
+    std::span<const double> support, tolerance;  // per group
+};
+NeighbourCounts count_neighbours(std::span<const double> x, std::span<const double> y, std::span<const double> z,
+                                 const GroupedRadii& radii, double pair_budget = 0);
+
 // The same by brute force over all pairs, for tests.
 std::vector<std::uint32_t> count_neighbours_all_pairs(std::span<const double> x, std::span<const double> y,
                                                       std::span<const double> z, std::span<const double> support);

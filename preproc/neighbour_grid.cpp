@@ -1,5 +1,6 @@
 #include "preproc/neighbour_grid.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -108,14 +109,17 @@ void NeighbourGrid::bin_hashed(std::span<const double> x, std::span<const double
 void NeighbourGrid::gather(std::span<const double> x, std::span<const double> y, std::span<const double> z,
                            const std::vector<std::uint32_t>& cell_id) {
     const std::size_t n = x.size();
-    std::vector<std::uint32_t> next(start_.begin(), start_.end() - 1);
     order_.resize(n);
     x_.resize(n), y_.resize(n), z_.resize(n);
+    // start_ serves as the cursors (no copy of a 4-byte entry per cell at the preview's peak):
+    // afterwards each entry holds the next cell's start, and one shift puts them back.
     for (std::size_t i = 0; i < n; ++i) {
-        const std::uint32_t k = next[cell_id[i]]++;
+        const std::uint32_t k = start_[cell_id[i]]++;
         order_[k] = static_cast<std::uint32_t>(i);
         x_[k] = x[i], y_[k] = y[i], z_[k] = z[i];
     }
+    std::copy_backward(start_.begin(), start_.end() - 1, start_.end());
+    start_[0] = 0;
 }
 
 NeighbourGrid::Cell NeighbourGrid::decode(std::uint64_t k) const {
@@ -158,17 +162,18 @@ double NeighbourGrid::block_cells(Cell c, std::uint32_t reach) const {
     return cells;
 }
 
-double NeighbourGrid::block_clearance(double px, double py, double pz, Cell c, std::uint32_t reach) const {
-    const double p[3] = {px, py, pz};
-    double clearance = std::numeric_limits<double>::infinity();
+NeighbourGrid::BlockBounds NeighbourGrid::block_bounds(Cell c, std::uint32_t reach) const {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    BlockBounds b{{-inf, -inf, -inf}, {inf, inf, inf}, 0.0};
     for (int a = 0; a < 3; ++a) {
         if (c[a] > reach)  // cells exist below the block
-            clearance = std::min(clearance, p[a] - (origin_[a] + (static_cast<double>(c[a]) - reach) * cell_));
+            b.lower[a] = origin_[a] + (static_cast<double>(c[a]) - reach) * cell_;
         if (c[a] + reach < n_[a] - 1)  // and above it
-            clearance = std::min(clearance, origin_[a] + (static_cast<double>(c[a]) + reach + 1) * cell_ - p[a]);
+            b.upper[a] = origin_[a] + (static_cast<double>(c[a]) + reach + 1) * cell_;
     }
     // A margin for the rounding of cell boundaries: never claim more than is certain.
-    return clearance - 1e-9 * cell_;
+    b.margin = 1e-9 * cell_;
+    return b;
 }
 
 double NeighbourGrid::crowding() const {

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <cstdint>
 #include <span>
 #include <utility>
@@ -136,7 +137,22 @@ public:
     // Distance from (px, py, pz), a point of cell c, to the outside of the block of `reach` cells
     // around c: every point binned outside the block is at least this far (a point clamped into a
     // border cell lies even further out). Infinite when the block covers the grid.
-    double block_clearance(double px, double py, double pz, Cell c, std::uint32_t reach) const;
+    double block_clearance(double px, double py, double pz, Cell c, std::uint32_t reach) const {
+        return block_bounds(c, reach).clearance(px, py, pz);
+    }
+    // The same in two steps, the first once per cell: the planes that bound the block (-inf and
+    // +inf where the grid ends), then a point's distance to them.
+    struct BlockBounds {
+        std::array<double, 3> lower, upper;
+        double margin;
+        double clearance(double px, double py, double pz) const {
+            const double p[3] = {px, py, pz};
+            double clear = std::numeric_limits<double>::infinity();
+            for (int a = 0; a < 3; ++a) clear = std::min(std::min(clear, p[a] - lower[a]), upper[a] - p[a]);
+            return clear - margin;
+        }
+    };
+    BlockBounds block_bounds(Cell c, std::uint32_t reach) const;
     bool block_covers_grid(Cell c, std::uint32_t reach) const;
     // Cells in the block of `reach` around c, clipped to the grid.
     double block_cells(Cell c, std::uint32_t reach) const;

@@ -46,10 +46,13 @@ struct PartGroups {
 
 PartGroups group_by_part(const std::vector<long long>& part) {
     PartGroups g;
-    g.ids = part;
+    // One id per run of equal parts (particles come grouped by part in decks), then sorted: not a
+    // copy of every particle's part, nor a sort of a million equal values.
+    for (std::size_t i = 0; i < part.size(); ++i)
+        if (i == 0 || part[i] != part[i - 1]) g.ids.push_back(part[i]);
     std::sort(g.ids.begin(), g.ids.end());
     g.ids.erase(std::unique(g.ids.begin(), g.ids.end()), g.ids.end());
-    g.ids.shrink_to_fit();  // a copy of every particle's part until here: 8 bytes a particle
+    g.ids.shrink_to_fit();
     g.of_particle.resize(part.size());
     g.begin.assign(g.ids.size() + 1, 0);
     long long last = 0;
@@ -105,7 +108,7 @@ void preview_part(const model::Model& m, const PartGroups& groups, std::size_t q
     const PartModel pm = resolve(m, pv.part, pv.notes);
     pv.density = pm.material ? pm.material->density.value : 0.0;
 
-    std::vector<std::uint32_t> located;  // model indices of the part's located particles
+    std::size_t count = 0;  // the part's located particles
     std::vector<double> masses, volumes;
     for (std::size_t k = groups.begin[q]; k < groups.begin[q + 1]; ++k) {
         const std::uint32_t i = groups.members[k];
@@ -114,20 +117,31 @@ void preview_part(const model::Model& m, const PartGroups& groups, std::size_t q
         pp.mass[i] = particle_mass(particles.mass[i], volume_flag, pv.density);
         pv.mass_total += pp.mass[i];
         if (!pp.located[i]) continue;
-        located.push_back(i);
+        ++count;
         masses.push_back(pp.mass[i]);
         if (mode == model::IniMode::FromMass) volumes.push_back(particle_volume(particles.mass[i], volume_flag, pv.density));
     }
-    if (located.size() < pv.particles)
-        add_note(pv.notes, fmt::format("{} particles without a *NODE left out", pv.particles - located.size()));
+    if (count < pv.particles)
+        add_note(pv.notes, fmt::format("{} particles without a *NODE left out", pv.particles - count));
     pv.mass_median = stats_of(std::move(masses)).median;
+
+    // Model indices of the located particles; none kept when they are every particle of the model
+    // in order (one part, every node found): 4 bytes a particle less at the preview's peak.
+    const bool whole = count == pp.x.size();
+    std::vector<std::uint32_t> located;
+    if (!whole) {
+        located.reserve(count);
+        for (std::size_t k = groups.begin[q]; k < groups.begin[q + 1]; ++k)
+            if (pp.located[groups.members[k]]) located.push_back(groups.members[k]);
+    }
+    const auto model_index = [&](std::size_t k) { return whole ? static_cast<std::uint32_t>(k) : located[k]; };
 
     // Positions: the preview's arrays themselves when the part is every particle, in order.
     std::vector<double> xs, ys, zs;
     std::span<const double> x = pp.x, y = pp.y, z = pp.z;
-    if (located.size() != pp.x.size()) {
-        xs.resize(located.size()), ys.resize(located.size()), zs.resize(located.size());
-        for (std::size_t k = 0; k < located.size(); ++k)
+    if (!whole) {
+        xs.resize(count), ys.resize(count), zs.resize(count);
+        for (std::size_t k = 0; k < count; ++k)
             xs[k] = pp.x[located[k]], ys[k] = pp.y[located[k]], zs[k] = pp.z[located[k]];
         x = xs, y = ys, z = zs;
     }
@@ -137,11 +151,11 @@ void preview_part(const model::Model& m, const PartGroups& groups, std::size_t q
     pv.spacing = pv.nn_distance.median;
 
     const double tolerance = 1e-9 * pv.spacing;
-    for (std::size_t k = 0; k < located.size(); ++k) {
-        const std::uint32_t i = located[k];
+    for (std::size_t k = 0; k < count; ++k) {
+        const std::uint32_t i = model_index(k);
         pp.nn_distance[i] = nn.distance[k];
         if (nn.index[k] != NearestNeighbours::none && nn.distance[k] <= tolerance) {
-            const std::uint32_t j = located[nn.index[k]];
+            const std::uint32_t j = model_index(nn.index[k]);
             out.coincident.emplace_back(std::min(i, j), std::max(i, j));
         }
     }
@@ -167,7 +181,7 @@ void preview_part(const model::Model& m, const PartGroups& groups, std::size_t q
     if (section.kernel.value == model::Kernel::Quadratic || section.kernel.value == model::Kernel::QuarticBSpline)
         add_note(pv.notes, "kernel support assumed 2h (SPHKERN 2 and 3 are not documented)");
 
-    for (const std::uint32_t i : located) pp.h[i] = pv.h0;
+    for (std::size_t k = 0; k < count; ++k) pp.h[model_index(k)] = pv.h0;
 
     const SoundSpeed c = sound_speed(m, pm.material, pm.eos);
     pv.sound_speed = c.c;
@@ -178,33 +192,55 @@ void preview_part(const model::Model& m, const PartGroups& groups, std::size_t q
     pv.dt_radioss = radioss_particle_time_step(pv.h0, c.c, tssfac);
 }
 
-// Neighbour counts of every located particle, all parts on one grid.
-void count_all_neighbours(const model::Model& m, Preview& out) {
+// Neighbour counts of every located particle, all parts on one grid. Support and tolerance are
+// the part's (per particle on Radioss decks, where h is per particle).
+void count_all_neighbours(Preview& out) {
     ParticlePreview& pp = out.particles;
-    std::vector<std::uint32_t> located;
-    for (std::size_t i = 0; i < pp.located.size(); ++i)
-        if (pp.located[i]) located.push_back(static_cast<std::uint32_t>(i));
+    const std::size_t n = pp.located.size();
+    std::vector<std::uint32_t> located;  // model indices; left empty when every particle is located
+    if (std::find(pp.located.begin(), pp.located.end(), 0) != pp.located.end())
+        for (std::size_t i = 0; i < n; ++i)
+            if (pp.located[i]) located.push_back(static_cast<std::uint32_t>(i));
+    const std::size_t m = located.empty() ? n : located.size();
+    const auto model_index = [&](std::size_t k) { return located.empty() ? k : std::size_t{located[k]}; };
     // Positions: the preview's own arrays when every particle has a node (the usual case, and
     // 24 bytes a particle less at the peak), else a copy of the located ones.
-    std::vector<double> xs, ys, zs, support(located.size()), tolerance(located.size());
+    std::vector<double> xs, ys, zs;
     std::span<const double> x = pp.x, y = pp.y, z = pp.z;
-    if (located.size() != pp.located.size()) {
-        xs.resize(located.size()), ys.resize(located.size()), zs.resize(located.size());
-        for (std::size_t k = 0; k < located.size(); ++k)
+    if (!located.empty()) {
+        xs.resize(m), ys.resize(m), zs.resize(m);
+        for (std::size_t k = 0; k < m; ++k)
             xs[k] = pp.x[located[k]], ys[k] = pp.y[located[k]], zs[k] = pp.z[located[k]];
         x = xs, y = ys, z = zs;
     }
-    for (std::size_t k = 0; k < located.size(); ++k) {
-        const PartPreview& pv = out.parts[pp.part[located[k]]];
-        support[k] = out.radioss ? 2.0 * pp.h[located[k]] : pv.support;  // Radioss: h per particle
-        tolerance[k] = 1e-9 * pv.spacing;
+    // Groups: the parts (pp.part itself when every particle is located), or every particle its
+    // own group on Radioss decks.
+    std::vector<std::uint32_t> group;
+    std::vector<double> support, tolerance;
+    if (out.radioss) {
+        group.resize(m), support.resize(m), tolerance.resize(m);
+        for (std::size_t k = 0; k < m; ++k) {
+            const std::size_t i = model_index(k);
+            group[k] = static_cast<std::uint32_t>(k);
+            support[k] = 2.0 * pp.h[i];
+            tolerance[k] = 1e-9 * out.parts[pp.part[i]].spacing;
+        }
+    } else {
+        for (const PartPreview& pv : out.parts) support.push_back(pv.support), tolerance.push_back(1e-9 * pv.spacing);
+        if (!located.empty()) {
+            group.resize(m);
+            for (std::size_t k = 0; k < m; ++k) group[k] = pp.part[located[k]];
+        }
     }
-    NeighbourCounts counts = count_neighbours(x, y, z, support, tolerance);
+    const std::span<const std::uint32_t> groups = group.empty() ? std::span<const std::uint32_t>(pp.part) : group;
+    NeighbourCounts counts = count_neighbours(x, y, z, GroupedRadii{groups, support, tolerance});
     out.neighbour_sample_stride = counts.sample_stride;
+    for (std::size_t k = 0; k < m; ++k) pp.neighbours[model_index(k)] = counts.count[k];
     std::vector<std::vector<std::uint32_t>> per_part(out.parts.size());
-    for (std::size_t k = 0; k < located.size(); ++k) {
-        pp.neighbours[located[k]] = counts.count[k];
-        per_part[pp.part[located[k]]].push_back(counts.count[k]);
+    if (out.parts.size() == 1) {
+        per_part[0] = std::move(counts.count);
+    } else {
+        for (std::size_t k = 0; k < m; ++k) per_part[pp.part[model_index(k)]].push_back(counts.count[k]);
     }
     for (std::size_t q = 0; q < out.parts.size(); ++q) {
         out.parts[q].neighbours = stats_of(std::move(per_part[q]));
@@ -213,8 +249,8 @@ void count_all_neighbours(const model::Model& m, Preview& out) {
                      fmt::format("neighbours counted for every {}th particle only (too many per particle)",
                                  counts.sample_stride));
     }
-    for (auto [a, b] : counts.coincident) out.coincident.emplace_back(located[a], located[b]);
-    (void)m;
+    for (auto [a, b] : counts.coincident)
+        out.coincident.emplace_back(static_cast<std::uint32_t>(model_index(a)), static_cast<std::uint32_t>(model_index(b)));
 }
 
 }  // namespace
@@ -263,7 +299,7 @@ Preview compute_preview(const model::Model& m, const PreviewOptions& options) {
     // built, which is the preview's peak of memory.
     groups = PartGroups{};
     if (out.radioss) radioss_count_ghosts(out);
-    count_all_neighbours(m, out);
+    count_all_neighbours(out);
     std::sort(out.coincident.begin(), out.coincident.end());
     out.coincident.erase(std::unique(out.coincident.begin(), out.coincident.end()), out.coincident.end());
     progress(1.0);
