@@ -19,8 +19,8 @@
 namespace sphdeck::refsolver {
 
 struct PairRows {
-    const PackedParticle* nb = nullptr;  // real then ghost particles
-    const double* positions = nullptr;   // x y z h of the same particles, 4 per particle
+    const PairRecord* records = nullptr;  // real then ghost particles
+    const double* positions = nullptr;    // x y z h of the same particles, 4 per particle
     const double* correction = nullptr;  // FORM 1: 6 per particle (xx yy zz xy xz yz), real then ghost
     const std::uint8_t* interacting = nullptr;
     const std::uint32_t *forward_offsets = nullptr, *forward = nullptr;  // neighbour_list.hpp
@@ -47,8 +47,9 @@ struct PairRowsPath {
     const char* name = "scalar";
 };
 
-// The widest path compiled in and supported by this CPU (and its OS), chosen once.
-PairRowsPath best_pair_rows();
+// The widest path compiled in and supported by this CPU (and its OS), chosen once; without
+// `avx512`, AVX2 at most (to compare the two on one machine).
+PairRowsPath best_pair_rows(bool avx512 = true);
 
 // Per-ISA entry points: nullptr when the unit was built without its instruction set (not x86-64).
 // Call only after checking the CPU (best_pair_rows does).

@@ -1,9 +1,12 @@
 // The body of the SIMD pair loop (pair_rows.hpp), included by each per-ISA unit after it has
 // defined, in an unnamed namespace of sphdeck::refsolver: `lanes`, the vector types V (double) and
-// M (64-bit integer) of that many lanes, vsqrt(V), gather(nb, indices, V field[12]) (the 12
-// PackedParticle fields of `lanes` particles) and gather_position(positions, indices, x, y, z, h). Everything here has internal linkage, so nothing
-// compiled with that unit's instruction set can stand in for another unit's code.
-// The arithmetic of a pair is rates.cpp's pair_terms, add_to and add_reverse, term for term.
+// M (64-bit integer) of that many lanes, vsqrt(V), gather(records, indices, V field[8]) (the 8
+// PairRecord fields of `lanes` particles), gather_position(positions, indices, x, y, z, h) and
+// compact(out, indices, M in) (stores the indices of the lanes set in `in`, in order, at `out`;
+// may write up to `lanes` entries; returns how many were set). Everything here has internal
+// linkage, so nothing compiled with that unit's instruction set can stand in for another unit's code.
+// The arithmetic of a pair is rates.cpp's pair_terms, add_to and add_reverse, term for term, except
+// that the five divisions of a pair come from one (reciprocals(), below): equal to round-off.
 #pragma once
 
 namespace sphdeck::refsolver {
@@ -26,32 +29,49 @@ struct OwnSums {
     V ax = {}, ay = {}, az = {}, drho = {}, de = {};
 };
 
+// 1/a .. 1/e of positive a .. e from one division and 12 multiplications (a vector division costs
+// about as much as 30 multiplications, and a pair needs five): the products a, ab, abc, abcd,
+// abcde, one reciprocal, then back down the chain. A few ulps each. The product of a pair's
+// factors scales as h^4 rho^3: far inside the range of a double in any consistent units.
+struct Reciprocals {
+    V a, b, c, d, e;
+};
+inline Reciprocals reciprocals(V a, V b, V c, V d, V e) {
+    const V ab = a * b, abc = ab * c, abcd = abc * d;
+    V rest = splat(1.0) / (abcd * e);  // 1 / abcde
+    Reciprocals r;
+    r.e = rest * abcd, rest *= e;  // rest = 1 / abcd
+    r.d = rest * abc, rest *= d;
+    r.c = rest * ab, rest *= c;
+    r.b = rest * a, r.a = rest * b;
+    return r;
+}
+
 // One row of particle i: its partners list[first, last) within the support (rates.cpp's
 // within_support), `lanes` at a time; with `Reverse` (real partners) the shares they receive too.
 template <int Dimension, bool Renormalise, bool Reverse>
 void row(const PairRows& p, std::size_t i, const std::uint32_t* list, std::uint32_t first, std::uint32_t last,
          OwnSums& own) {
-    const PackedParticle* nb = p.nb;
-    const PackedParticle& me = nb[i];
+    const PairRecord& me = p.records[i];
+    const double* at = p.positions + 4 * i;  // x y z h of particle i
     // Within the support: rates.cpp's within_support test, `lanes` candidates at a time from the
-    // compact positions (x y z h), so the filter reads 32 bytes per candidate instead of a packed
-    // particle's 96; branch-free (the lists hold about three times the pairs within the support).
+    // compact positions (x y z h), so the filter reads 32 bytes per candidate; branch-free (the lists hold about three times the pairs within the support),
+    // the indices kept by a compress or shuffle instruction (compact) rather than lane by lane.
     std::uint32_t* inside = p.inside;
     std::size_t n = 0;
     {
-        const V x = splat(me.x), y = splat(me.y), z = splat(me.z), h = splat(me.h), half = splat(0.5), four = splat(4.0);
+        const V x = splat(at[0]), y = splat(at[1]), z = splat(at[2]), h = splat(at[3]), half = splat(0.5), four = splat(4.0);
         std::uint32_t k = first;
         for (; k + lanes <= last; k += lanes) {
             V ox, oy, oz, oh;
             gather_position(p.positions, list + k, ox, oy, oz, oh);
             const V dx = x - ox, dy = y - oy, dz = z - oz, hij = half * (h + oh);
-            const M in = (M)(dx * dx + dy * dy + dz * dz < four * hij * hij);
-            for (int l = 0; l < lanes; ++l) inside[n] = list[k + l], n += static_cast<std::size_t>(in[l] & 1);
+            n += compact(inside + n, list + k, (M)(dx * dx + dy * dy + dz * dz < four * hij * hij));
         }
         for (; k < last; ++k) {
             const std::uint32_t j = list[k];
             const double* o = p.positions + 4 * static_cast<std::size_t>(j);
-            const double dx = me.x - o[0], dy = me.y - o[1], dz = me.z - o[2], hij = 0.5 * (me.h + o[3]);
+            const double dx = at[0] - o[0], dy = at[1] - o[1], dz = at[2] - o[2], hij = 0.5 * (at[3] + o[3]);
             inside[n] = j;
             n += static_cast<std::size_t>(!(dx * dx + dy * dy + dz * dz >= 4 * hij * hij));
         }
@@ -59,8 +79,8 @@ void row(const PairRows& p, std::size_t i, const std::uint32_t* list, std::uint3
     if (n == 0) return;
     for (std::size_t k = n; k < n + lanes; ++k) inside[k] = inside[n - 1];  // padding lanes, masked below
 
-    const V x = splat(me.x), y = splat(me.y), z = splat(me.z), vx = splat(me.vx), vy = splat(me.vy), vz = splat(me.vz);
-    const V h = splat(me.h), m = splat(me.m), rho = splat(me.rho), c = splat(me.c), por = splat(me.p_over_rho);
+    const V x = splat(at[0]), y = splat(at[1]), z = splat(at[2]), vx = splat(me.vx), vy = splat(me.vy), vz = splat(me.vz);
+    const V h = splat(at[3]), m = splat(me.m), rho = splat(me.rho), c = splat(me.c), por = splat(me.p_over_rho);
     const V volume = splat(me.volume), norm = splat(p.norm), q1 = splat(p.q1), q2 = splat(p.q2);
     const V half = splat(0.5), one = splat(1.0), zero = {};
     V lane_index = {};
@@ -68,17 +88,25 @@ void row(const PairRows& p, std::size_t i, const std::uint32_t* list, std::uint3
     [[maybe_unused]] const double* ci = Renormalise ? p.correction + 6 * i : nullptr;
 
     for (std::size_t k = 0; k < n; k += lanes) {
-        V o[12];  // x y z vx vy vz h m rho c p_over_rho volume of the partners
-        gather(nb, inside + k, o);
-        const V dx = x - o[0], dy = y - o[1], dz = z - o[2];
+        // The partners: x y z h (their lines were just read by the filter), then vx vy vz m rho c
+        // p_over_rho volume (one cache line each).
+        V ox, oy, oz, oh, o[8];
+        gather_position(p.positions, inside + k, ox, oy, oz, oh);
+        gather(p.records, inside + k, o);
+        const V dx = x - ox, dy = y - oy, dz = z - oz;
         const V r2 = dx * dx + dy * dy + dz * dz;
         // pair_terms: grad_i W_ij = F x_ij (kernel.hpp).
-        const V hij = half * (h + o[6]);
-        const V inv_h = one / hij, r = vsqrt(r2), q = r * inv_h;
+        const V hij = half * (h + oh), r = vsqrt(r2);
+        // The five divisions of the pair: 1 / h_ij, h_ij / r (the outer shell only: where r <= h_ij
+        // the factor is h_ij, so that every factor is positive, coincident particles included),
+        // the viscosity's phi and 1 / rho_ij, and momentum.hpp's 1 / (rho_i rho_j).
+        const V visc_den = r2 + splat(0.01) * hij * hij;
+        const Reciprocals inv = reciprocals(hij, select((M)(r > hij), r, hij), visc_den, rho + o[4], rho * o[4]);
+        const V inv_h = inv.a, q = r * inv_h;
         const V inv_h2 = inv_h * inv_h;
         const V scale = norm * (Dimension == 2 ? inv_h2 * inv_h2 : inv_h2 * inv_h2 * inv_h);
         const V inner = scale * (splat(-3.0) + splat(2.25) * q);
-        const V outer = -scale * splat(0.75) * (splat(2.0) - q) * (splat(2.0) - q) * (hij / r);
+        const V outer = -scale * splat(0.75) * (splat(2.0) - q) * (splat(2.0) - q) * (hij * inv.b);
         const V f = select((M)(q <= one), inner, outer);
         V gx = f * dx, gy = f * dy, gz = f * dz;
         if constexpr (Renormalise) {  // the mean of the two corrections (renormalisation.hpp)
@@ -90,25 +118,25 @@ void row(const PairRows& p, std::size_t i, const std::uint32_t* list, std::uint3
             const V tx = b[0] * gx + b[3] * gy + b[4] * gz, ty = b[3] * gx + b[1] * gy + b[5] * gz;
             gz = b[4] * gx + b[5] * gy + b[2] * gz, gx = tx, gy = ty;
         }
-        const V dvx = vx - o[3], dvy = vy - o[4], dvz = vz - o[5];
+        const V dvx = vx - o[0], dvy = vy - o[1], dvz = vz - o[2];
         const V v_dot_g = dvx * gx + dvy * gy + dvz * gz;
         const V v_dot_x = dvx * dx + dvy * dy + dvz * dz;
         // viscosity.hpp: Pi_ij, 0 where the pair separates.
-        const V phi = hij * v_dot_x / (r2 + splat(0.01) * hij * hij);
-        const V pi_all = (-q2 * (half * (c + o[9])) * phi + q1 * phi * phi) / (half * (rho + o[8]));
+        const V phi = hij * v_dot_x * inv.c;
+        const V pi_all = (-q2 * (half * (c + o[5])) * phi + q1 * phi * phi) * (splat(2.0) * inv.d);
         const V pi = select((M)(v_dot_x < zero), pi_all, zero);
         // momentum.hpp's A_ij.
-        const V a = (por * rho + o[10] * o[8]) / (rho * o[8]) + pi;
+        const V a = (por * rho + o[6] * o[4]) * inv.e + pi;
         // add_to, lanes past the row's end masked.
         const M valid = (M)(lane_index < splat(static_cast<double>(n - k)));
-        own.ax += select(valid, o[7] * a * gx, zero);
-        own.ay += select(valid, o[7] * a * gy, zero);
-        own.az += select(valid, o[7] * a * gz, zero);
-        own.drho += select(valid, o[11] * v_dot_g, zero);
-        own.de += select(valid, (o[11] * por + half * o[7] * pi) * v_dot_g, zero);
+        own.ax += select(valid, o[3] * a * gx, zero);
+        own.ay += select(valid, o[3] * a * gy, zero);
+        own.az += select(valid, o[3] * a * gz, zero);
+        own.drho += select(valid, o[7] * v_dot_g, zero);
+        own.de += select(valid, (o[7] * por + half * o[3] * pi) * v_dot_g, zero);
         if constexpr (Reverse) {  // add_reverse: g_ji = -g_ij, v_ji . g_ji = v_ij . g_ij
             const V share[5] = {m * a * gx, m * a * gy, m * a * gz, volume * v_dot_g,
-                                (volume * o[10] + half * m * pi) * v_dot_g};
+                                (volume * o[6] + half * m * pi) * v_dot_g};
             for (int s = 0; s < 5; ++s) __builtin_memcpy(p.reverse + s * p.stride + k, &share[s], sizeof(V));
         }
     }

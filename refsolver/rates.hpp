@@ -36,13 +36,16 @@ struct RateParameters {
     // The SIMD pair loop (pair_rows.hpp) when the CPU runs one and the deck is fluid-only; false:
     // the scalar loop (the reference the tests compare it with).
     bool simd = true;
+    bool avx512 = true;  // with simd: false keeps the SIMD loop at AVX2 (to compare the two)
 };
 
 
 // Work arrays of compute_rates, kept between steps so that no step allocates.
 struct RateScratch {
-    std::vector<PackedParticle> packed;  // real + ghost particles
-    std::vector<std::array<double, 4>> positions;  // SIMD path: x y z h of the same (pair_rows.hpp)
+    std::vector<PackedParticle> packed;  // real + ghost particles (scalar loop)
+    // SIMD loop (pair_rows.hpp), instead: x y z h and the rest of the same particles.
+    std::vector<std::array<double, 4>> positions;
+    std::vector<PairRecord> records;
     // Per thread, per real particle: ax ay az drho de received from pairs listed under another
     // particle (no two threads write the same entry; the sums are added in thread order).
     std::vector<std::array<double, 5>> received;

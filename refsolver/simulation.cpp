@@ -293,7 +293,7 @@ Simulation::Setup Simulation::create(const model::Model& model, const RunOptions
         impl->core_share.emplace(impl->rates.threads);
         impl->rates.threads = impl->core_share->threads();
     }
-    impl->rates.simd = options.simd;
+    impl->rates.simd = options.simd, impl->rates.avx512 = options.avx512;
     for (const PartSetup& p : impl->in.parts) impl->part_ids.push_back(p.id);
     impl->initialise();
     setup.simulation.reset(new Simulation(std::move(impl)));

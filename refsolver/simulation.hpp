@@ -41,6 +41,7 @@ struct RunOptions {
     int threads = 0;                 // OpenMP threads; 0: the OpenMP default
     bool ignore_unsupported = false; // run anyway, ignoring what cannot be honoured
     bool simd = true;                // the SIMD pair loop where the CPU has one (false: scalar, for comparison)
+    bool avx512 = true;              // with simd: false keeps it at AVX2 where AVX-512 runs (for comparison)
 };
 
 // Particle state in model order (structure of arrays).
