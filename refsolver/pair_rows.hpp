@@ -31,10 +31,8 @@ struct PairRows {
     bool renormalise = false;
     double *ax = nullptr, *ay = nullptr, *az = nullptr, *drho = nullptr, *de = nullptr;  // own sums, set
     double* received = nullptr;  // this thread's: ax ay az drho de per real particle, added to
-    // Scratch of this thread: `inside` holds the longest row plus 16, `reverse` 5 times `stride`
-    // (stride >= the longest row plus 16).
+    // Scratch of this thread: `inside` holds `stride` entries, the longest row plus 16.
     std::uint32_t* inside = nullptr;
-    double* reverse = nullptr;
     std::size_t stride = 0;
 };
 

@@ -64,6 +64,20 @@ inline std::size_t compact(std::uint32_t* out, const std::uint32_t* j, M in) {
     return static_cast<std::size_t>(__builtin_popcount(static_cast<unsigned>(mask)));
 }
 
+// The five shares of 4 partners added to their received sums: the first four of each lane as one
+// 256-bit add (a 4x4 transpose), the fifth alone. Each partner appears once in a row.
+inline void add_shares(double* received, const std::uint32_t* j, std::size_t count, const V share[5]) {
+    const __m256d t0 = _mm256_unpacklo_pd(share[0], share[1]), t1 = _mm256_unpackhi_pd(share[0], share[1]);
+    const __m256d t2 = _mm256_unpacklo_pd(share[2], share[3]), t3 = _mm256_unpackhi_pd(share[2], share[3]);
+    const __m256d lane[4] = {_mm256_permute2f128_pd(t0, t2, 0x20), _mm256_permute2f128_pd(t1, t3, 0x20),
+                             _mm256_permute2f128_pd(t0, t2, 0x31), _mm256_permute2f128_pd(t1, t3, 0x31)};
+    for (std::size_t l = 0; l < count; ++l) {
+        double* r = received + 5 * std::size_t{j[l]};
+        _mm256_storeu_pd(r, _mm256_add_pd(_mm256_loadu_pd(r), lane[l]));
+        r[4] += share[4][l];
+    }
+}
+
 }  // namespace
 }  // namespace sphdeck::refsolver
 

@@ -51,6 +51,31 @@ inline std::size_t compact(std::uint32_t* out, const std::uint32_t* j, M in) {
     return static_cast<std::size_t>(__builtin_popcount(keep));
 }
 
+// The five shares of 8 partners added to their received sums: the first four of each lane as one
+// 256-bit add (a 4x8 transpose: unpacks, then two-source permutes pairing the 128-bit halves), the
+// fifth alone. Each partner appears once in a row.
+inline void add_shares(double* received, const std::uint32_t* j, std::size_t count, const V share[5]) {
+    const __m512d t0 = _mm512_mask_unpacklo_pd(share[0], 0xFF, share[0], share[1]);  // lanes 0 2 4 6 of s0 s1
+    const __m512d t1 = _mm512_mask_unpackhi_pd(share[0], 0xFF, share[0], share[1]);  // lanes 1 3 5 7
+    const __m512d t2 = _mm512_mask_unpacklo_pd(share[2], 0xFF, share[2], share[3]);
+    const __m512d t3 = _mm512_mask_unpackhi_pd(share[2], 0xFF, share[2], share[3]);
+    const __m512i low = _mm512_set_epi64(11, 10, 3, 2, 9, 8, 1, 0), high = _mm512_set_epi64(15, 14, 7, 6, 13, 12, 5, 4);
+    const __m512d pairs[4] = {_mm512_permutex2var_pd(t0, low, t2), _mm512_permutex2var_pd(t1, low, t3),
+                              _mm512_permutex2var_pd(t0, high, t2), _mm512_permutex2var_pd(t1, high, t3)};
+    alignas(64) double lane[8][4];  // lane l's four shares; pairs[] hold lanes 0 2 | 1 3 | 4 6 | 5 7
+    constexpr int first_lane[4] = {0, 1, 4, 5};
+    for (int q = 0; q < 4; ++q) {
+        // Zero-masked extracts: the plain ones' undefined sources trip GCC 12's -Wmaybe-uninitialized.
+        _mm256_store_pd(lane[first_lane[q]], _mm512_maskz_extractf64x4_pd(0xF, pairs[q], 0));
+        _mm256_store_pd(lane[first_lane[q] + 2], _mm512_maskz_extractf64x4_pd(0xF, pairs[q], 1));
+    }
+    for (std::size_t l = 0; l < count; ++l) {
+        double* r = received + 5 * std::size_t{j[l]};
+        _mm256_storeu_pd(r, _mm256_add_pd(_mm256_loadu_pd(r), _mm256_load_pd(lane[l])));
+        r[4] += share[4][l];
+    }
+}
+
 }  // namespace
 }  // namespace sphdeck::refsolver
 

@@ -3,7 +3,8 @@
 // M (64-bit integer) of that many lanes, vsqrt(V), gather(records, indices, V field[8]) (the 8
 // PairRecord fields of `lanes` particles), gather_position(positions, indices, x, y, z, h) and
 // compact(out, indices, M in) (stores the indices of the lanes set in `in`, in order, at `out`;
-// may write up to `lanes` entries; returns how many were set). Everything here has internal
+// may write up to `lanes` entries; returns how many were set) and add_shares(received, indices,
+// count, V share[5]) (adds share[0..4] of lane l to received[5 j_l .. 5 j_l + 4], l < count). Everything here has internal
 // linkage, so nothing compiled with that unit's instruction set can stand in for another unit's code.
 // The arithmetic of a pair is rates.cpp's pair_terms, add_to and add_reverse, term for term, except
 // that the five divisions of a pair come from one (reciprocals(), below): equal to round-off.
@@ -93,20 +94,23 @@ void row(const PairRows& p, std::size_t i, const std::uint32_t* list, std::uint3
         V ox, oy, oz, oh, o[8];
         gather_position(p.positions, inside + k, ox, oy, oz, oh);
         gather(p.records, inside + k, o);
+        if (k + lanes < n)  // the next partners' records, while this batch computes
+            for (int l = 0; l < lanes; ++l) __builtin_prefetch(p.records + inside[k + lanes + static_cast<std::size_t>(l)]);
         const V dx = x - ox, dy = y - oy, dz = z - oz;
         const V r2 = dx * dx + dy * dy + dz * dz;
         // pair_terms: grad_i W_ij = F x_ij (kernel.hpp).
-        const V hij = half * (h + oh), r = vsqrt(r2);
-        // The five divisions of the pair: 1 / h_ij, h_ij / r (the outer shell only: where r <= h_ij
-        // the factor is h_ij, so that every factor is positive, coincident particles included),
-        // the viscosity's phi and 1 / rho_ij, and momentum.hpp's 1 / (rho_i rho_j).
-        const V visc_den = r2 + splat(0.01) * hij * hij;
-        const Reciprocals inv = reciprocals(hij, select((M)(r > hij), r, hij), visc_den, rho + o[4], rho * o[4]);
+        const V hij = half * (h + oh), r = vsqrt(r2), hij2 = hij * hij;
+        // The five divisions of the pair: 1 / h_ij, h_ij / r = h_ij r / r^2 (the outer shell only:
+        // where r <= h_ij the factor is h_ij^2, so that every factor is positive, coincident
+        // particles included; and r^2 rather than r, so that the division need not wait for the
+        // square root), the viscosity's phi and 1 / rho_ij, and momentum.hpp's 1 / (rho_i rho_j).
+        const V visc_den = r2 + splat(0.01) * hij2;
+        const Reciprocals inv = reciprocals(hij, select((M)(r2 > hij2), r2, hij2), visc_den, rho + o[4], rho * o[4]);
         const V inv_h = inv.a, q = r * inv_h;
         const V inv_h2 = inv_h * inv_h;
         const V scale = norm * (Dimension == 2 ? inv_h2 * inv_h2 : inv_h2 * inv_h2 * inv_h);
         const V inner = scale * (splat(-3.0) + splat(2.25) * q);
-        const V outer = -scale * splat(0.75) * (splat(2.0) - q) * (splat(2.0) - q) * (hij * inv.b);
+        const V outer = -scale * splat(0.75) * (splat(2.0) - q) * (splat(2.0) - q) * (hij * r * inv.b);
         const V f = select((M)(q <= one), inner, outer);
         V gx = f * dx, gy = f * dy, gz = f * dz;
         if constexpr (Renormalise) {  // the mean of the two corrections (renormalisation.hpp)
@@ -137,14 +141,9 @@ void row(const PairRows& p, std::size_t i, const std::uint32_t* list, std::uint3
         if constexpr (Reverse) {  // add_reverse: g_ji = -g_ij, v_ji . g_ji = v_ij . g_ij
             const V share[5] = {m * a * gx, m * a * gy, m * a * gz, volume * v_dot_g,
                                 (volume * o[6] + half * m * pi) * v_dot_g};
-            for (int s = 0; s < 5; ++s) __builtin_memcpy(p.reverse + s * p.stride + k, &share[s], sizeof(V));
+            add_shares(p.received, inside + k, n - k < lanes ? n - k : std::size_t{lanes}, share);
         }
     }
-    if constexpr (Reverse)
-        for (std::size_t k = 0; k < n; ++k) {
-            double* r = p.received + 5 * static_cast<std::size_t>(inside[k]);
-            for (int s = 0; s < 5; ++s) r[s] += p.reverse[s * p.stride + k];
-        }
 }
 
 template <int Dimension, bool Renormalise>

@@ -129,7 +129,6 @@ PairRows pair_rows_view(Particles& s, const NeighbourList& list, const RateParam
         longest = std::max({longest, list.forward_offsets[i + 1] - list.forward_offsets[i],
                             list.ghost_offsets[i + 1] - list.ghost_offsets[i]});
     v.stride = longest + 16;
-    scratch.reverse.resize(scratch.inside.size());
     v.records = scratch.records.data(), v.positions = reinterpret_cast<const double*>(scratch.positions.data());
     v.interacting = s.interacting.data();
     v.correction = Renormalise ? reinterpret_cast<const double*>(s.correction.data()) : nullptr;
@@ -177,8 +176,7 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
         if (fast.run) {
             PairRows mine = view;
             if (inside.size() < view.stride) inside.resize(view.stride);
-            if (scratch.reverse[t].size() < 5 * view.stride) scratch.reverse[t].resize(5 * view.stride);
-            mine.inside = inside.data(), mine.reverse = scratch.reverse[t].data();
+            mine.inside = inside.data();
             mine.received = received->data();  // Sums: 5 contiguous doubles per particle
             // Chunks of 256 particles dealt round-robin: the same schedule as the scalar loop's.
 #pragma omp for schedule(static, 1)

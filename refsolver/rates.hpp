@@ -50,7 +50,6 @@ struct RateScratch {
     // particle (no two threads write the same entry; the sums are added in thread order).
     std::vector<std::array<double, 5>> received;
     std::vector<std::vector<std::uint32_t>> inside;  // per thread: one particle's pairs within the support
-    std::vector<std::vector<double>> reverse;        // per thread, SIMD path: the shares a row's partners receive
     // Solid decks only: S / rho^2 (real + ghost), and per real particle the P and Q sums of
     // stress.hpp, own and (per thread) received.
     std::vector<SymmetricTensor> stress_over_rho2;
