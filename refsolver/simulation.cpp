@@ -93,7 +93,9 @@ void Simulation::Impl::update_eos() {
 
 void Simulation::Impl::update_interacting() {
     const bool global = time >= in.sph_start && time < in.sph_death;
-    for (std::size_t i = 0; i < s.real; ++i) {
+    const std::size_t n = s.real;
+#pragma omp parallel for schedule(static) num_threads(rates.threads)
+    for (std::size_t i = 0; i < n; ++i) {
         const PartSetup& part = in.parts[s.part[i]];
         s.interacting[i] = s.active[i] && global && time >= part.start && time < part.death;
     }
@@ -217,9 +219,12 @@ void Simulation::Impl::initialise() {
 
 void Simulation::Impl::check_finite() {
     bool finite = true;
-    for (std::size_t i = 0; i < s.real && finite; ++i)
-        finite = std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && std::isfinite(s.z[i]) && std::isfinite(s.vx[i]) &&
-                 std::isfinite(s.vy[i]) && std::isfinite(s.vz[i]) && std::isfinite(s.rho[i]) && std::isfinite(s.e[i]);
+    const std::size_t n = s.real;
+#pragma omp parallel for schedule(static) reduction(&& : finite) num_threads(rates.threads)
+    for (std::size_t i = 0; i < n; ++i)
+        finite = finite && std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && std::isfinite(s.z[i]) &&
+                 std::isfinite(s.vx[i]) && std::isfinite(s.vy[i]) && std::isfinite(s.vz[i]) && std::isfinite(s.rho[i]) &&
+                 std::isfinite(s.e[i]);
     if (!finite && failure.empty())
         failure = "the state became non-finite (NaN or infinity) at step " + std::to_string(steps) +
                   ": the time step is too large for this deck, or the material state left its EOS's range";
@@ -256,7 +261,7 @@ void Simulation::Impl::step() {
     }
     external_work += work;
     if (s.solid) kick_stress(s, half, true, rates.threads);
-    reflect_crossed(s, in.planes);
+    reflect_crossed(s, in.planes, rates.threads);
     time += dt;
     deactivation.apply(s);
     evaluate();
