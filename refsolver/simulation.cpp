@@ -39,6 +39,11 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 // (bench_refsolver).
 constexpr double skin_share = 0.8;
 
+bool is_finite(const Particles& s, std::size_t i) {
+    return std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && std::isfinite(s.z[i]) && std::isfinite(s.vx[i]) &&
+           std::isfinite(s.vy[i]) && std::isfinite(s.vz[i]) && std::isfinite(s.rho[i]) && std::isfinite(s.e[i]);
+}
+
 // The leapfrog of the deviatoric stress (*MAT_ELASTIC), kicked like the density: `predict` gives
 // the half-step S and S at the new time from the old rate; otherwise S = S_half + dt/2 dS_new.
 void kick_stress(Particles& s, double half, bool predict, int threads) {
@@ -79,6 +84,7 @@ struct Simulation::Impl {
     void rebuild();
     bool needs_rebuild() const;
     void check_finite();
+    void report_non_finite(bool finite);  // sets `failure` when !finite
 };
 
 void Simulation::Impl::update_eos() {
@@ -221,10 +227,11 @@ void Simulation::Impl::check_finite() {
     bool finite = true;
     const std::size_t n = s.real;
 #pragma omp parallel for schedule(static) reduction(&& : finite) num_threads(rates.threads)
-    for (std::size_t i = 0; i < n; ++i)
-        finite = finite && std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && std::isfinite(s.z[i]) &&
-                 std::isfinite(s.vx[i]) && std::isfinite(s.vy[i]) && std::isfinite(s.vz[i]) && std::isfinite(s.rho[i]) &&
-                 std::isfinite(s.e[i]);
+    for (std::size_t i = 0; i < n; ++i) finite = finite && is_finite(s, i);
+    report_non_finite(finite);
+}
+
+void Simulation::Impl::report_non_finite(bool finite) {
     if (!finite && failure.empty())
         failure = "the state became non-finite (NaN or infinity) at step " + std::to_string(steps) +
                   ": the time step is too large for this deck, or the material state left its EOS's range";
@@ -265,20 +272,29 @@ void Simulation::Impl::step() {
     time += dt;
     deactivation.apply(s);
     evaluate();
-#pragma omp parallel for schedule(static) num_threads(rates.threads)
-    for (std::size_t i = 0; i < s.real; ++i) {
-        if (!s.active[i]) continue;
-        s.vx[i] = s.vx_half[i] + half * s.ax[i], s.vy[i] = s.vy_half[i] + half * s.ay[i];
-        s.vz[i] = s.vz_half[i] + half * s.az[i];
-        s.rho[i] = s.rho_half[i] + half * s.drho[i], s.e[i] = s.e_half[i] + half * s.de[i];
-        s.h[i] = clamp_smoothing_length(s.h_half[i] + half * s.dh[i], s.h_low[i], s.h_high[i]);
+    // The last half kick, and in the same pass the next time step (time_step.hpp: the stress kick
+    // below changes none of its inputs) and the finite check: one pass over the particles, not three.
+    double smallest = std::numeric_limits<double>::infinity();
+    bool finite = true;
+#pragma omp parallel for schedule(static) reduction(min : smallest) reduction(&& : finite) num_threads(rates.threads)
+    for (std::size_t i = 0; i < n; ++i) {
+        if (s.active[i]) {
+            s.vx[i] = s.vx_half[i] + half * s.ax[i], s.vy[i] = s.vy_half[i] + half * s.ay[i];
+            s.vz[i] = s.vz_half[i] + half * s.az[i];
+            s.rho[i] = s.rho_half[i] + half * s.drho[i], s.e[i] = s.e_half[i] + half * s.de[i];
+            s.h[i] = clamp_smoothing_length(s.h_half[i] + half * s.dh[i], s.h_low[i], s.h_high[i]);
+            const double speed = std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
+            const double accel = std::sqrt(s.ax[i] * s.ax[i] + s.ay[i] * s.ay[i] + s.az[i] * s.az[i]);
+            smallest = std::min(smallest, particle_time_step(s.h[i], s.c[i], speed, accel));
+        }
+        finite = finite && is_finite(s, i);
     }
     if (s.solid) kick_stress(s, half, false, rates.threads);
     ++steps, ++since_rebuild;
     state_valid = false;
-    dt_next = stable_time_step(s, in.tssfac, rates.threads);
+    dt_next = in.tssfac * smallest;
     timings.total += seconds_since(t0);
-    check_finite();
+    report_non_finite(finite);
 }
 
 Simulation::Setup Simulation::create(const model::Model& model, const RunOptions& options) {
