@@ -31,7 +31,8 @@ struct PairRows {
     bool renormalise = false;
     double *ax = nullptr, *ay = nullptr, *az = nullptr, *drho = nullptr, *de = nullptr;  // own sums, set
     double* received = nullptr;  // this thread's: ax ay az drho de per real particle, added to
-    // Scratch of this thread: `inside` holds `stride` entries, the longest row plus 16.
+    // Scratch of this thread: `inside` holds `stride` entries, the most listed partners of a
+    // particle (forward and ghosts) plus 16.
     std::uint32_t* inside = nullptr;
     std::size_t stride = 0;
 };

@@ -48,35 +48,42 @@ inline Reciprocals reciprocals(V a, V b, V c, V d, V e) {
     return r;
 }
 
-// One row of particle i: its partners list[first, last) within the support (rates.cpp's
-// within_support), `lanes` at a time; with `Reverse` (real partners) the shares they receive too.
-template <int Dimension, bool Renormalise, bool Reverse>
-void row(const PairRows& p, std::size_t i, const std::uint32_t* list, std::uint32_t first, std::uint32_t last,
-         OwnSums& own) {
+// The partners of the particle at `at` (x y z h) in list[first, last) within the support
+// (rates.cpp's within_support test), written to `inside`; returns their count. `lanes`
+// candidates at a time from the compact positions (32 bytes per candidate), branch-free (the
+// lists hold about three times the pairs within the support), the indices kept by a compress or
+// shuffle instruction (compact) rather than lane by lane. May write `lanes` entries past the count.
+inline std::size_t within_support(const PairRows& p, const double* at, const std::uint32_t* list, std::uint32_t first,
+                                  std::uint32_t last, std::uint32_t* inside) {
+    std::size_t n = 0;
+    const V x = splat(at[0]), y = splat(at[1]), z = splat(at[2]), h = splat(at[3]), half = splat(0.5), four = splat(4.0);
+    std::uint32_t k = first;
+    for (; k + lanes <= last; k += lanes) {
+        V ox, oy, oz, oh;
+        gather_position(p.positions, list + k, ox, oy, oz, oh);
+        const V dx = x - ox, dy = y - oy, dz = z - oz, hij = half * (h + oh);
+        n += compact(inside + n, list + k, (M)(dx * dx + dy * dy + dz * dz < four * hij * hij));
+    }
+    for (; k < last; ++k) {
+        const std::uint32_t j = list[k];
+        const double* o = p.positions + 4 * static_cast<std::size_t>(j);
+        const double dx = at[0] - o[0], dy = at[1] - o[1], dz = at[2] - o[2], hij = 0.5 * (at[3] + o[3]);
+        inside[n] = j;
+        n += static_cast<std::size_t>(!(dx * dx + dy * dy + dz * dz >= 4 * hij * hij));
+    }
+    return n;
+}
+
+// The pairs of particle i within the support: its forward partners, then its ghosts, as one
+// stream of `lanes` pairs at a time (one partly filled batch per particle rather than two); the
+// forward partners receive their shares too (ghosts act on real particles only: one-sided).
+template <int Dimension, bool Renormalise>
+void row(const PairRows& p, std::size_t i, OwnSums& own) {
     const PairRecord& me = p.records[i];
     const double* at = p.positions + 4 * i;  // x y z h of particle i
-    // Within the support: rates.cpp's within_support test, `lanes` candidates at a time from the
-    // compact positions (x y z h), so the filter reads 32 bytes per candidate; branch-free (the lists hold about three times the pairs within the support),
-    // the indices kept by a compress or shuffle instruction (compact) rather than lane by lane.
     std::uint32_t* inside = p.inside;
-    std::size_t n = 0;
-    {
-        const V x = splat(at[0]), y = splat(at[1]), z = splat(at[2]), h = splat(at[3]), half = splat(0.5), four = splat(4.0);
-        std::uint32_t k = first;
-        for (; k + lanes <= last; k += lanes) {
-            V ox, oy, oz, oh;
-            gather_position(p.positions, list + k, ox, oy, oz, oh);
-            const V dx = x - ox, dy = y - oy, dz = z - oz, hij = half * (h + oh);
-            n += compact(inside + n, list + k, (M)(dx * dx + dy * dy + dz * dz < four * hij * hij));
-        }
-        for (; k < last; ++k) {
-            const std::uint32_t j = list[k];
-            const double* o = p.positions + 4 * static_cast<std::size_t>(j);
-            const double dx = at[0] - o[0], dy = at[1] - o[1], dz = at[2] - o[2], hij = 0.5 * (at[3] + o[3]);
-            inside[n] = j;
-            n += static_cast<std::size_t>(!(dx * dx + dy * dy + dz * dz >= 4 * hij * hij));
-        }
-    }
+    const std::size_t forward = within_support(p, at, p.forward, p.forward_offsets[i], p.forward_offsets[i + 1], inside);
+    const std::size_t n = forward + within_support(p, at, p.ghost, p.ghost_offsets[i], p.ghost_offsets[i + 1], inside + forward);
     if (n == 0) return;
     for (std::size_t k = n; k < n + lanes; ++k) inside[k] = inside[n - 1];  // padding lanes, masked below
 
@@ -138,10 +145,10 @@ void row(const PairRows& p, std::size_t i, const std::uint32_t* list, std::uint3
         own.az += select(valid, o[3] * a * gz, zero);
         own.drho += select(valid, o[7] * v_dot_g, zero);
         own.de += select(valid, (o[7] * por + half * o[3] * pi) * v_dot_g, zero);
-        if constexpr (Reverse) {  // add_reverse: g_ji = -g_ij, v_ji . g_ji = v_ij . g_ij
+        if (k < forward) {  // add_reverse: g_ji = -g_ij, v_ji . g_ji = v_ij . g_ij
             const V share[5] = {m * a * gx, m * a * gy, m * a * gz, volume * v_dot_g,
                                 (volume * o[6] + half * m * pi) * v_dot_g};
-            add_shares(p.received, inside + k, n - k < lanes ? n - k : std::size_t{lanes}, share);
+            add_shares(p.received, inside + k, forward - k < lanes ? forward - k : std::size_t{lanes}, share);
         }
     }
 }
@@ -151,9 +158,7 @@ void rows(const PairRows& p, std::size_t first, std::size_t last) {
     for (std::size_t i = first; i < last; ++i) {
         if (!p.interacting[i]) continue;
         OwnSums own;
-        row<Dimension, Renormalise, true>(p, i, p.forward, p.forward_offsets[i], p.forward_offsets[i + 1], own);
-        // Ghosts act on real particles only: one-sided.
-        row<Dimension, Renormalise, false>(p, i, p.ghost, p.ghost_offsets[i], p.ghost_offsets[i + 1], own);
+        row<Dimension, Renormalise>(p, i, own);
         p.ax[i] = p.body[0] - lane_sum(own.ax), p.ay[i] = p.body[1] - lane_sum(own.ay);
         p.az[i] = p.body[2] - lane_sum(own.az);
         p.drho[i] = lane_sum(own.drho), p.de[i] = lane_sum(own.de);

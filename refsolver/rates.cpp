@@ -126,8 +126,8 @@ PairRows pair_rows_view(Particles& s, const NeighbourList& list, const RateParam
     PairRows v;
     std::uint32_t longest = 0;
     for (std::size_t i = 0; i < s.real; ++i)
-        longest = std::max({longest, list.forward_offsets[i + 1] - list.forward_offsets[i],
-                            list.ghost_offsets[i + 1] - list.ghost_offsets[i]});
+        longest = std::max(longest, list.forward_offsets[i + 1] - list.forward_offsets[i] + list.ghost_offsets[i + 1] -
+                                        list.ghost_offsets[i]);
     v.stride = longest + 16;
     v.records = scratch.records.data(), v.positions = reinterpret_cast<const double*>(scratch.positions.data());
     v.interacting = s.interacting.data();
