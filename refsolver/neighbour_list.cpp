@@ -171,9 +171,12 @@ void NeighbourList::build(Particles& s, double search_radius, int threads, bool 
     if (team == 1) {
         // One chunk: it becomes the list, without a copy; the old list's storage (its full
         // capacity) is the next build's chunk.
+        // The spare gets room for a quarter more than this list at once (at the first build, outside
+        // the stepping), so that later builds neither grow it nor touch fresh pages.
         forward.swap(chunks_[0].forward), ghost.swap(chunks_[0].ghost);
         forward.resize(forward_used[0]), ghost.resize(ghost_used[0]);
-        chunks_[0].forward.resize(chunks_[0].forward.capacity()), chunks_[0].ghost.resize(chunks_[0].ghost.capacity());
+        for (auto [spare, list] : {std::pair{&chunks_[0].forward, &forward}, {&chunks_[0].ghost, &ghost}})
+            spare->resize(std::max(spare->capacity(), list->size() + list->size() / 4 + 64));
         if (full) fill_full_lists();
         else offsets.clear(), neighbours.clear();
         return;
