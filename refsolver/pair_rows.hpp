@@ -21,6 +21,10 @@ namespace sphdeck::refsolver {
 struct PairRows {
     const PairRecord* records = nullptr;  // real then ghost particles
     const double* positions = nullptr;    // x y z h of the same particles, 4 per particle
+    // The same in single precision, for the support filter, and the margin its test adds to 2 h_ij
+    // for the rounding (a few pairs just outside the support pass it; the pair terms drop them).
+    const float* positions_f = nullptr;
+    float margin = 0;
     const double* correction = nullptr;  // FORM 1: 6 per particle (xx yy zz xy xz yz), real then ghost
     const std::uint8_t* interacting = nullptr;
     const std::uint32_t *forward_offsets = nullptr, *forward = nullptr;  // neighbour_list.hpp

@@ -56,12 +56,37 @@ constexpr CompactTable compact_table() {
 }
 constexpr CompactTable compact_shuffles = compact_table();
 
-inline std::size_t compact(std::uint32_t* out, const std::uint32_t* j, M in) {
-    const int mask = _mm256_movemask_pd(reinterpret_cast<__m256d>(in));
+// The indices j[0..3] whose bit is set in `mask`, in order, at `out` (writes 4 entries).
+inline std::size_t compact_four(std::uint32_t* out, const std::uint32_t* j, int mask) {
     const __m128i indices = _mm_loadu_si128(reinterpret_cast<const __m128i*>(j));
     const __m128i order = _mm_load_si128(reinterpret_cast<const __m128i*>(compact_shuffles.shuffle[mask]));
     _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm_shuffle_epi8(indices, order));
     return static_cast<std::size_t>(__builtin_popcount(static_cast<unsigned>(mask)));
+}
+
+// The support filter in single precision: 8 lanes.
+constexpr int filter_lanes = 8;
+using VF = float __attribute__((vector_size(32)));
+using MF = int __attribute__((vector_size(32)));
+
+inline std::size_t compact_f(std::uint32_t* out, const std::uint32_t* j, MF in) {
+    const int mask = _mm256_movemask_ps(reinterpret_cast<__m256>(in));
+    const std::size_t low = compact_four(out, j, mask & 15);
+    return low + compact_four(out + low, j + 4, mask >> 4);
+}
+
+// x y z h of 8 particles (16 bytes each) as 4 vectors: particles l and l + 4 in the two halves of
+// four registers, then a 4x4 transpose in each half.
+inline void gather_position_f(const float* positions, const std::uint32_t* j, VF& x, VF& y, VF& z, VF& h) {
+    const auto row = [&](int l) {
+        return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(positions + 4 * std::size_t{j[l]})),
+                                    _mm_loadu_ps(positions + 4 * std::size_t{j[l + 4]}), 1);
+    };
+    const __m256 r0 = row(0), r1 = row(1), r2 = row(2), r3 = row(3);
+    const __m256 t0 = _mm256_unpacklo_ps(r0, r1), t1 = _mm256_unpackhi_ps(r0, r1);  // x0 x1 y0 y1, z0 z1 h0 h1
+    const __m256 t2 = _mm256_unpacklo_ps(r2, r3), t3 = _mm256_unpackhi_ps(r2, r3);
+    x = reinterpret_cast<VF>(_mm256_shuffle_ps(t0, t2, 0x44)), y = reinterpret_cast<VF>(_mm256_shuffle_ps(t0, t2, 0xEE));
+    z = reinterpret_cast<VF>(_mm256_shuffle_ps(t1, t3, 0x44)), h = reinterpret_cast<VF>(_mm256_shuffle_ps(t1, t3, 0xEE));
 }
 
 // The five shares of 4 partners added to their received sums: the first four of each lane as one

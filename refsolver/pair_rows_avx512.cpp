@@ -42,6 +42,36 @@ inline void gather_position(const double* positions, const std::uint32_t* j, V& 
     gather_two(p, 0, x, y), gather_two(p, 2, z, h);
 }
 
+// The support filter in single precision: 16 lanes.
+constexpr int filter_lanes = 16;
+using VF = float __attribute__((vector_size(64)));
+using MF = int __attribute__((vector_size(64)));
+
+inline std::size_t compact_f(std::uint32_t* out, const std::uint32_t* j, MF in) {
+    const __mmask16 keep = _mm512_test_epi32_mask(reinterpret_cast<__m512i>(in), reinterpret_cast<__m512i>(in));
+    const __m512i indices = _mm512_loadu_si512(j);
+    _mm512_mask_storeu_epi32(out, 0xFFFF, _mm512_maskz_compress_epi32(keep, indices));
+    return static_cast<std::size_t>(__builtin_popcount(keep));
+}
+
+// x y z h of 16 particles (16 bytes each) as 4 vectors: particles l, l + 4, l + 8, l + 12 in the
+// four 128-bit lanes of four registers, then a 4x4 transpose in each lane (masked forms: GCC 12).
+inline void gather_position_f(const float* positions, const std::uint32_t* j, VF& x, VF& y, VF& z, VF& h) {
+    const auto at = [&](int l) { return _mm_loadu_ps(positions + 4 * std::size_t{j[l]}); };
+    const auto row = [&](int l) {
+        __m512 r = _mm512_castps128_ps512(at(l));
+        r = _mm512_insertf32x4(r, at(l + 4), 1), r = _mm512_insertf32x4(r, at(l + 8), 2);
+        return _mm512_insertf32x4(r, at(l + 12), 3);
+    };
+    const __m512 r0 = row(0), r1 = row(1), r2 = row(2), r3 = row(3);
+    const __m512 t0 = _mm512_mask_unpacklo_ps(r0, 0xFFFF, r0, r1), t1 = _mm512_mask_unpackhi_ps(r0, 0xFFFF, r0, r1);
+    const __m512 t2 = _mm512_mask_unpacklo_ps(r2, 0xFFFF, r2, r3), t3 = _mm512_mask_unpackhi_ps(r2, 0xFFFF, r2, r3);
+    x = reinterpret_cast<VF>(_mm512_mask_shuffle_ps(t0, 0xFFFF, t0, t2, 0x44));
+    y = reinterpret_cast<VF>(_mm512_mask_shuffle_ps(t0, 0xFFFF, t0, t2, 0xEE));
+    z = reinterpret_cast<VF>(_mm512_mask_shuffle_ps(t1, 0xFFFF, t1, t3, 0x44));
+    h = reinterpret_cast<VF>(_mm512_mask_shuffle_ps(t1, 0xFFFF, t1, t3, 0xEE));
+}
+
 // The kept indices by a register compress (then one store: a compress straight to memory is slow
 // on some CPUs).
 inline std::size_t compact(std::uint32_t* out, const std::uint32_t* j, M in) {

@@ -48,23 +48,34 @@ inline Reciprocals reciprocals(V a, V b, V c, V d, V e) {
     return r;
 }
 
-// The partners of the particle at `at` (x y z h) in list[first, last) within the support
-// (rates.cpp's within_support test), written to `inside`; returns their count. `lanes`
-// candidates at a time from the compact positions (32 bytes per candidate), branch-free (the
-// lists hold about three times the pairs within the support), the indices kept by a compress or
-// shuffle instruction (compact) rather than lane by lane. May write `lanes` entries past the count.
-inline std::size_t within_support(const PairRows& p, const double* at, const std::uint32_t* list, std::uint32_t first,
+inline VF splat_f(float x) {
+    VF v = {};
+    for (int l = 0; l < filter_lanes; ++l) v[l] = x;
+    return v;
+}
+
+// The partners of particle i in list[first, last) that may lie within the support, written to
+// `inside`; returns their count. `filter_lanes` candidates at a time in single precision from
+// positions_f (16 bytes per candidate: the lists hold about three times the pairs within the
+// support, so this filter reads more than the pair terms do), with a margin for the rounding: it
+// keeps every pair within the support and a few just outside, which the pair terms drop (their
+// exact test). Branch-free; the indices kept by a compress or shuffle instruction (compact_f).
+// May write `filter_lanes` entries past the count.
+inline std::size_t within_support(const PairRows& p, std::size_t i, const std::uint32_t* list, std::uint32_t first,
                                   std::uint32_t last, std::uint32_t* inside) {
     std::size_t n = 0;
-    const V x = splat(at[0]), y = splat(at[1]), z = splat(at[2]), h = splat(at[3]), half = splat(0.5), four = splat(4.0);
+    const float* me = p.positions_f + 4 * i;
+    const VF x = splat_f(me[0]), y = splat_f(me[1]), z = splat_f(me[2]), h = splat_f(me[3]);
+    const VF margin = splat_f(p.margin), slack = splat_f(1.0f + 0x1p-18f);
     std::uint32_t k = first;
-    for (; k + lanes <= last; k += lanes) {
-        V ox, oy, oz, oh;
-        gather_position(p.positions, list + k, ox, oy, oz, oh);
-        const V dx = x - ox, dy = y - oy, dz = z - oz, hij = half * (h + oh);
-        n += compact(inside + n, list + k, (M)(dx * dx + dy * dy + dz * dz < four * hij * hij));
+    for (; k + filter_lanes <= last; k += filter_lanes) {
+        VF ox, oy, oz, oh;
+        gather_position_f(p.positions_f, list + k, ox, oy, oz, oh);
+        const VF dx = x - ox, dy = y - oy, dz = z - oz, reach = (h + oh) + margin;  // 2 h_ij + margin
+        n += compact_f(inside + n, list + k, (MF)(dx * dx + dy * dy + dz * dz < slack * reach * reach));
     }
-    for (; k < last; ++k) {
+    const double* at = p.positions + 4 * i;
+    for (; k < last; ++k) {  // the rest exactly
         const std::uint32_t j = list[k];
         const double* o = p.positions + 4 * static_cast<std::size_t>(j);
         const double dx = at[0] - o[0], dy = at[1] - o[1], dz = at[2] - o[2], hij = 0.5 * (at[3] + o[3]);
@@ -82,8 +93,8 @@ void row(const PairRows& p, std::size_t i, OwnSums& own) {
     const PairRecord& me = p.records[i];
     const double* at = p.positions + 4 * i;  // x y z h of particle i
     std::uint32_t* inside = p.inside;
-    const std::size_t forward = within_support(p, at, p.forward, p.forward_offsets[i], p.forward_offsets[i + 1], inside);
-    const std::size_t n = forward + within_support(p, at, p.ghost, p.ghost_offsets[i], p.ghost_offsets[i + 1], inside + forward);
+    const std::size_t forward = within_support(p, i, p.forward, p.forward_offsets[i], p.forward_offsets[i + 1], inside);
+    const std::size_t n = forward + within_support(p, i, p.ghost, p.ghost_offsets[i], p.ghost_offsets[i + 1], inside + forward);
     if (n == 0) return;
     for (std::size_t k = n; k < n + lanes; ++k) inside[k] = inside[n - 1];  // padding lanes, masked below
 
@@ -118,7 +129,8 @@ void row(const PairRows& p, std::size_t i, OwnSums& own) {
         const V scale = norm * (Dimension == 2 ? inv_h2 * inv_h2 : inv_h2 * inv_h2 * inv_h);
         const V inner = scale * (splat(-3.0) + splat(2.25) * q);
         const V outer = -scale * splat(0.75) * (splat(2.0) - q) * (splat(2.0) - q) * (hij * r * inv.b);
-        const V f = select((M)(q <= one), inner, outer);
+        // Outside the support (the filter's margin): no term at all (g = 0 makes every share 0).
+        const V f = select((M)(r2 < splat(4.0) * hij2), select((M)(q <= one), inner, outer), zero);
         V gx = f * dx, gy = f * dy, gz = f * dz;
         if constexpr (Renormalise) {  // the mean of the two corrections (renormalisation.hpp)
             double mean[6][lanes];  // built in memory: lane stores into vectors trip GCC 12's -Wmaybe-uninitialized

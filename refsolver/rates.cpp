@@ -130,6 +130,7 @@ PairRows pair_rows_view(Particles& s, const NeighbourList& list, const RateParam
                                         list.ghost_offsets[i]);
     v.stride = longest + 16;
     v.records = scratch.records.data(), v.positions = reinterpret_cast<const double*>(scratch.positions.data());
+    v.positions_f = reinterpret_cast<const float*>(scratch.positions_f.data()), v.margin = scratch.margin;
     v.interacting = s.interacting.data();
     v.correction = Renormalise ? reinterpret_cast<const double*>(s.correction.data()) : nullptr;
     v.forward_offsets = list.forward_offsets.data(), v.forward = list.forward.data();
@@ -268,21 +269,30 @@ void compute_rates(Particles& s, const NeighbourList& list, const RateParameters
     // The SIMD loop reads the same values from two arrays (rates.hpp), the scalar loop from one.
     const std::size_t n = s.total();
     const bool simd = parameters.simd && !parameters.solid && best_pair_rows(parameters.avx512).run;
-    if (simd) scratch.positions.resize(n), scratch.records.resize(n);
+    if (simd) scratch.positions.resize(n), scratch.positions_f.resize(n), scratch.records.resize(n);
     else scratch.packed.resize(n);
     PackedParticle* packed = scratch.packed.data();
     std::array<double, 4>* positions = scratch.positions.data();
+    std::array<float, 4>* positions_f = scratch.positions_f.data();
     PairRecord* records = scratch.records.data();
-#pragma omp parallel for schedule(static) num_threads(parameters.threads)
+    double largest = 0;  // the largest coordinate magnitude: the single-precision filter's rounding scales with it
+#pragma omp parallel for schedule(static) reduction(max : largest) num_threads(parameters.threads)
     for (std::size_t i = 0; i < n; ++i) {
         const double m = s.interacting[i] ? s.m[i] : 0.0, p_over_rho = s.p[i] / s.rho[i], volume = m / s.rho[i];
         if (simd) {
             positions[i] = {s.x[i], s.y[i], s.z[i], s.h[i]};
+            positions_f[i] = {static_cast<float>(s.x[i]), static_cast<float>(s.y[i]), static_cast<float>(s.z[i]),
+                              static_cast<float>(s.h[i])};
+            largest = std::max({largest, std::abs(s.x[i]), std::abs(s.y[i]), std::abs(s.z[i])});
             records[i] = {s.vx[i], s.vy[i], s.vz[i], m, s.rho[i], s.c[i], p_over_rho, volume};
         } else {
             packed[i] = {s.x[i], s.y[i], s.z[i], s.vx[i], s.vy[i], s.vz[i], s.h[i], m, s.rho[i], s.c[i], p_over_rho, volume};
         }
     }
+    // Rounding a coordinate to float moves it by at most 2^-24 of `largest`; a separation in single
+    // precision is then within about 4 such steps (and 2^-22 of itself) of the exact one. The margin
+    // doubles that (pair_rows_kernel.hpp adds a relative slack too).
+    scratch.margin = static_cast<float>(std::ldexp(largest, -20));
     const bool two = parameters.kernel.dimension == 2;
     if (parameters.solid) {  // *MAT_ELASTIC parts: S / rho^2 too, and the loops with the stress terms
         scratch.stress_over_rho2.resize(n);

@@ -45,6 +45,8 @@ struct RateScratch {
     std::vector<PackedParticle> packed;  // real + ghost particles (scalar loop)
     // SIMD loop (pair_rows.hpp), instead: x y z h and the rest of the same particles.
     std::vector<std::array<double, 4>> positions;
+    std::vector<std::array<float, 4>> positions_f;  // in single precision, for the support filter
+    float margin = 0;                               // PairRows::margin
     std::vector<PairRecord> records;
     // Per thread, per real particle: ax ay az drho de received from pairs listed under another
     // particle (no two threads write the same entry; the sums are added in thread order).
