@@ -47,6 +47,8 @@ constexpr int filter_lanes = 16;
 using VF = float __attribute__((vector_size(64)));
 using MF = int __attribute__((vector_size(64)));
 
+// The kept indices by a register compress, then one store (a compress straight to memory is slow
+// on some CPUs).
 inline std::size_t compact_f(std::uint32_t* out, const std::uint32_t* j, MF in) {
     const __mmask16 keep = _mm512_test_epi32_mask(reinterpret_cast<__m512i>(in), reinterpret_cast<__m512i>(in));
     const __m512i indices = _mm512_loadu_si512(j);
@@ -70,15 +72,6 @@ inline void gather_position_f(const float* positions, const std::uint32_t* j, VF
     y = reinterpret_cast<VF>(_mm512_mask_shuffle_ps(t0, 0xFFFF, t0, t2, 0xEE));
     z = reinterpret_cast<VF>(_mm512_mask_shuffle_ps(t1, 0xFFFF, t1, t3, 0x44));
     h = reinterpret_cast<VF>(_mm512_mask_shuffle_ps(t1, 0xFFFF, t1, t3, 0xEE));
-}
-
-// The kept indices by a register compress (then one store: a compress straight to memory is slow
-// on some CPUs).
-inline std::size_t compact(std::uint32_t* out, const std::uint32_t* j, M in) {
-    const __mmask8 keep = _mm512_test_epi64_mask(reinterpret_cast<__m512i>(in), reinterpret_cast<__m512i>(in));
-    const __m512i indices = _mm512_castsi256_si512(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(j)));
-    _mm512_mask_storeu_epi32(out, 0x00FF, _mm512_maskz_compress_epi32(keep, indices));
-    return static_cast<std::size_t>(__builtin_popcount(keep));
 }
 
 // The five shares of 8 partners added to their received sums: the first four of each lane as one

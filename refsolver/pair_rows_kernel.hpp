@@ -1,11 +1,15 @@
 // The body of the SIMD pair loop (pair_rows.hpp), included by each per-ISA unit after it has
-// defined, in an unnamed namespace of sphdeck::refsolver: `lanes`, the vector types V (double) and
-// M (64-bit integer) of that many lanes, vsqrt(V), gather(records, indices, V field[8]) (the 8
-// PairRecord fields of `lanes` particles), gather_position(positions, indices, x, y, z, h) and
-// compact(out, indices, M in) (stores the indices of the lanes set in `in`, in order, at `out`;
-// may write up to `lanes` entries; returns how many were set) and add_shares(received, indices,
-// count, V share[5]) (adds share[0..4] of lane l to received[5 j_l .. 5 j_l + 4], l < count). Everything here has internal
-// linkage, so nothing compiled with that unit's instruction set can stand in for another unit's code.
+// defined, in an unnamed namespace of sphdeck::refsolver:
+// - `lanes`, the vector types V (double) and M (64-bit integer) of that many lanes, vsqrt(V),
+//   gather(records, indices, V field[8]) (the 8 PairRecord fields of `lanes` particles),
+//   gather_position(positions, indices, x, y, z, h), and add_shares(received, indices, count,
+//   V share[5]) (adds share[0..4] of lane l to received[5 j_l .. 5 j_l + 4], l < count);
+// - for the support filter, `filter_lanes`, VF (float) and MF (32-bit integer) of that many lanes,
+//   gather_position_f(positions_f, indices, x, y, z, h) and compact_f(out, indices, MF in) (stores
+//   the indices of the lanes set in `in`, in order, at `out`; may write `filter_lanes` entries;
+//   returns how many were set).
+// Everything here has internal linkage, so nothing compiled with that unit's instruction set can
+// stand in for another unit's code.
 // The arithmetic of a pair is rates.cpp's pair_terms, add_to and add_reverse, term for term, except
 // that the five divisions of a pair come from one (reciprocals(), below): equal to round-off.
 #pragma once
