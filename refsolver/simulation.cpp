@@ -26,6 +26,7 @@
 #include "refsolver/setup.hpp"
 #include "refsolver/symmetry_ghosts.hpp"
 #include "refsolver/time_step.hpp"
+#include "refsolver/verlet_skin.hpp"
 
 namespace sphdeck::refsolver {
 
@@ -71,6 +72,7 @@ struct Simulation::Impl {
     double time = 0, dt = 0, dt_next = 0, external_work = 0;
     std::size_t steps = 0, since_rebuild = 0, rebuilds = 0;
     double h_max_built = 0, skin = 0;
+    bool rebuild_every_step = false;  // RunOptions::rebuild_every_step
     Timings timings;
     std::string failure;
     mutable ParticleState state;
@@ -133,18 +135,23 @@ void Simulation::Impl::rebuild() {
 //   |d_i - d_j| (d: displacement since the build; a ghost's is its source's, mirrored), which is
 //   at most the diagonal of the box bounding all displacements. The diagonal, rather than twice
 //   the largest displacement: a flow moving as a whole changes few distances, and needs few
-//   rebuilds.
+//   rebuilds. When that bound is spent, the local one of verlet_skin.hpp (the same diagonal over
+//   the two cells of build positions a pair within the support can come from): a flow that
+//   stretches changes the distances of neighbours little.
 // - A ghost that does not exist yet (its source was further than the radius from the plane): it
 //   is at least dd_i + dd_j >= dd_j from any real particle i, so it stays out of the support while
-//   no particle has moved towards a plane by more than the skin.
+//   no particle has moved towards a plane by more than the skin. Only particles now within the
+//   support of a plane can have such a ghost within the support, so only they count; the radius
+//   of the build stands for the support (if h grew past it, the first term asks for a rebuild).
 // The support is 2 h_max now, so: rebuild when 2 (h_max - h_max_built) + either bound >= skin.
 bool Simulation::Impl::needs_rebuild() const {
-    if (rebuilds == 0) return true;
+    if (rebuilds == 0 || rebuild_every_step) return true;
     if (since_rebuild + 1 < static_cast<std::size_t>(in.ncbs)) return false;  // NCBS: not more often than this
     constexpr double inf = std::numeric_limits<double>::infinity();
     double lx = inf, ly = inf, lz = inf, hx = -inf, hy = -inf, hz = -inf, towards = 0, h_max = 0;
     const std::size_t n = s.real, ghosts = s.ghosts();
     const std::vector<SymmetryPlane>& planes = in.planes;
+    const double reach = list.radius;  // of the last build: 2 h_max_built + skin
 #pragma omp parallel num_threads(rates.threads)
     {
 #pragma omp for schedule(static) reduction(min : lx, ly, lz) reduction(max : hx, hy, hz, towards, h_max) nowait
@@ -153,8 +160,10 @@ bool Simulation::Impl::needs_rebuild() const {
             const double dx = s.x[i] - s.x_built[i], dy = s.y[i] - s.y_built[i], dz = s.z[i] - s.z_built[i];
             lx = std::min(lx, dx), ly = std::min(ly, dy), lz = std::min(lz, dz);
             hx = std::max(hx, dx), hy = std::max(hy, dy), hz = std::max(hz, dz);
-            for (const SymmetryPlane& q : planes)
-                towards = std::max(towards, -(dx * q.normal[0] + dy * q.normal[1] + dz * q.normal[2]));
+            for (const SymmetryPlane& q : planes) {
+                const double dd = s.x[i] * q.normal[0] + s.y[i] * q.normal[1] + s.z[i] * q.normal[2] - q.offset;
+                if (dd < reach) towards = std::max(towards, -(dx * q.normal[0] + dy * q.normal[1] + dz * q.normal[2]));
+            }
             h_max = std::max(h_max, s.h[i]);
         }
 #pragma omp for schedule(static) reduction(min : lx, ly, lz) reduction(max : hx, hy, hz)
@@ -173,8 +182,13 @@ bool Simulation::Impl::needs_rebuild() const {
         }
     }
     const double diagonal = lx <= hx ? std::sqrt((hx - lx) * (hx - lx) + (hy - ly) * (hy - ly) + (hz - lz) * (hz - lz)) : 0.0;
-    // Written so that a NaN (a non-finite state) asks for a rebuild too.
-    return !(CubicSpline::support_factor * (h_max - h_max_built) + std::max(diagonal, towards) < skin);
+    const double grown = CubicSpline::support_factor * (h_max - h_max_built);
+    if (grown + std::max(diagonal, towards) < skin) return false;
+    // The global bound is spent: the local one (verlet_skin.hpp), which follows only the spread of
+    // displacements between neighbouring regions. Written so that a NaN (a non-finite state) asks
+    // for a rebuild too.
+    const double local = closing_bound(s, in.planes, CubicSpline::support_factor * h_max);
+    return !(grown + std::max(local, towards) < skin);
 }
 
 void Simulation::Impl::evaluate() {
@@ -315,6 +329,7 @@ Simulation::Setup Simulation::create(const model::Model& model, const RunOptions
         impl->rates.threads = impl->core_share->threads();
     }
     impl->rates.simd = options.simd, impl->rates.avx512 = options.avx512;
+    impl->rebuild_every_step = options.rebuild_every_step;
     for (const PartSetup& p : impl->in.parts) impl->part_ids.push_back(p.id);
     impl->initialise();
     setup.simulation.reset(new Simulation(std::move(impl)));

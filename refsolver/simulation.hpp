@@ -42,6 +42,7 @@ struct RunOptions {
     bool ignore_unsupported = false; // run anyway, ignoring what cannot be honoured
     bool simd = true;                // the SIMD pair loop where the CPU has one (false: scalar, for comparison)
     bool avx512 = true;              // with simd: false keeps it at AVX2 where AVX-512 runs (for comparison)
+    bool rebuild_every_step = false; // rebuild the neighbour lists at every step: the reference the skin test is checked against
 };
 
 // Particle state in model order (structure of arrays).
