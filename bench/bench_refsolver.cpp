@@ -6,7 +6,9 @@
 // real run: the block starts with the velocity of a collapsing column (by *INITIAL_VELOCITY on a
 // 10 x 10 grid of boxes), vx = U x / L, vy = -U y / L, with U = 2 sqrt(g H) the dam-break front
 // speed (Ritter), so the fastest particles move at about 1.4 U = 6.9 m/s. From rest no rebuild
-// would be needed in a benchmark-sized run, which would hide the rebuild cost.
+// would be needed in a benchmark-sized run, which would hide the rebuild cost. (Since the local
+// skin bound, refsolver/verlet_skin.hpp, this stretching flow keeps its lists through the 40 default
+// steps too: run more steps, e.g. 100, to see rebuilds.)
 // For 1 and 2 OpenMP threads, several repetitions of a few warm-up steps and then STEPS timed steps:
 //   particle updates per second = particles * steps / wall time of the steps,
 //   rebuild share = time rebuilding the lists / time of the steps (rebuilds as the skin requires),
