@@ -73,6 +73,7 @@ struct Simulation::Impl {
     std::size_t steps = 0, since_rebuild = 0, rebuilds = 0;
     double h_max_built = 0, skin = 0;
     bool rebuild_every_step = false;  // RunOptions::rebuild_every_step
+    mutable std::vector<DisplacementBox> skin_cells;  // closing_bound's scratch
     Timings timings;
     std::string failure;
     mutable ParticleState state;
@@ -187,7 +188,7 @@ bool Simulation::Impl::needs_rebuild() const {
     // The global bound is spent: the local one (verlet_skin.hpp), which follows only the spread of
     // displacements between neighbouring regions. Written so that a NaN (a non-finite state) asks
     // for a rebuild too.
-    const double local = closing_bound(s, in.planes, CubicSpline::support_factor * h_max);
+    const double local = closing_bound(s, in.planes, CubicSpline::support_factor * h_max, skin_cells);
     return !(grown + std::max(local, towards) < skin);
 }
 

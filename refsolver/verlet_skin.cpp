@@ -10,16 +10,16 @@ namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
 
-struct Box {
-    double lo[3] = {inf, inf, inf}, hi[3] = {-inf, -inf, -inf};
-    void add(const double p[3]) {
-        for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
-    }
-    bool empty() const { return !(lo[0] <= hi[0]); }
+struct Box : DisplacementBox {
+    Box() : DisplacementBox{{inf, inf, inf}, {-inf, -inf, -inf}} {}
 };
+void add(DisplacementBox& b, const double p[3]) {
+    for (int a = 0; a < 3; ++a) b.lo[a] = std::min(b.lo[a], p[a]), b.hi[a] = std::max(b.hi[a], p[a]);
+}
+bool empty(const DisplacementBox& b) { return !(b.lo[0] <= b.hi[0]); }
 
 // The diagonal of the box bounding two boxes (0 when both are empty).
-double diagonal(const Box& a, const Box& b) {
+double diagonal(const DisplacementBox& a, const DisplacementBox& b) {
     double sum = 0;
     for (int k = 0; k < 3; ++k) {
         const double extent = std::max(a.hi[k], b.hi[k]) - std::min(a.lo[k], b.lo[k]);
@@ -55,7 +55,8 @@ void for_each_point(const Particles& s, const std::vector<SymmetryPlane>& planes
 
 }  // namespace
 
-double closing_bound(const Particles& s, const std::vector<SymmetryPlane>& planes, double support) {
+double closing_bound(const Particles& s, const std::vector<SymmetryPlane>& planes, double support,
+                     std::vector<DisplacementBox>& cells) {
     double largest = 0;  // max |d|
     bool finite = true;
     Box where;  // of the build positions
@@ -63,9 +64,9 @@ double closing_bound(const Particles& s, const std::vector<SymmetryPlane>& plane
         const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
         finite = finite && std::isfinite(length);
         largest = std::max(largest, length);
-        where.add(at);
+        add(where, at);
     });
-    if (where.empty()) return 0.0;
+    if (empty(where)) return 0.0;
     if (!finite || !std::isfinite(support) || !std::isfinite(diagonal(where, where))) return inf;
     // Cells of at least support + 2 max|d| (the margin covers the rounding of the cell indices);
     // coarser when that would make too many cells.
@@ -77,22 +78,22 @@ double closing_bound(const Particles& s, const std::vector<SymmetryPlane>& plane
         if (n[0] * n[1] * n[2] <= most_cells) break;
         cell *= 2;
     }
-    std::vector<Box> cells(n[0] * n[1] * n[2]);
+    cells.assign(n[0] * n[1] * n[2], Box{});
     const auto index = [&](const double at[3], std::size_t c[3]) {
         for (int a = 0; a < 3; ++a) c[a] = std::min(n[a] - 1, static_cast<std::size_t>((at[a] - where.lo[a]) / cell));
     };
     for_each_point(s, planes, [&](const double at[3], const double d[3]) {
         std::size_t c[3];
         index(at, c);
-        cells[(c[2] * n[1] + c[1]) * n[0] + c[0]].add(d);
+        add(cells[(c[2] * n[1] + c[1]) * n[0] + c[0]], d);
     });
     // Each cell with itself and its neighbours (both orders give the same box: the forward half).
     double bound = 0;
     for (std::size_t z = 0; z < n[2]; ++z)
         for (std::size_t y = 0; y < n[1]; ++y)
             for (std::size_t x = 0; x < n[0]; ++x) {
-                const Box& here = cells[(z * n[1] + y) * n[0] + x];
-                if (here.empty()) continue;
+                const DisplacementBox& here = cells[(z * n[1] + y) * n[0] + x];
+                if (empty(here)) continue;
                 for (int dz = 0; dz <= 1; ++dz)
                     for (int dy = -1; dy <= 1; ++dy)
                         for (int dx = -1; dx <= 1; ++dx) {
@@ -102,8 +103,9 @@ double closing_bound(const Particles& s, const std::vector<SymmetryPlane>& plane
                             if (ox < 0 || oy < 0 || ox >= static_cast<long long>(n[0]) || oy >= static_cast<long long>(n[1]) ||
                                 oz >= n[2])
                                 continue;
-                            const Box& there = cells[(oz * n[1] + static_cast<std::size_t>(oy)) * n[0] + static_cast<std::size_t>(ox)];
-                            if (!there.empty()) bound = std::max(bound, diagonal(here, there));
+                            const DisplacementBox& there =
+                                cells[(oz * n[1] + static_cast<std::size_t>(oy)) * n[0] + static_cast<std::size_t>(ox)];
+                            if (!empty(there)) bound = std::max(bound, diagonal(here, there));
                         }
             }
     return bound;

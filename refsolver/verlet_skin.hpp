@@ -15,10 +15,16 @@
 
 namespace sphdeck::refsolver {
 
+// The box bounding some displacements (empty: lo > hi).
+struct DisplacementBox {
+    double lo[3], hi[3];
+};
+
 // An upper bound of |d_a - d_b| over every pair of active particles (real, or a ghost that exists;
 // a ghost's build position and displacement are its source's, mirrored) that lie within `support`
-// of each other now. Reads x, y, z and x_built, y_built, z_built. +infinity when the state is not
-// finite.
-double closing_bound(const Particles& s, const std::vector<SymmetryPlane>& planes, double support);
+// of each other now. Reads x, y, z and x_built, y_built, z_built; `cells` is scratch, kept by the
+// caller between calls (no allocation per step). +infinity when the state is not finite.
+double closing_bound(const Particles& s, const std::vector<SymmetryPlane>& planes, double support,
+                     std::vector<DisplacementBox>& cells);
 
 }  // namespace sphdeck::refsolver
