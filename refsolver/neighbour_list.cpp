@@ -15,28 +15,20 @@ namespace {
 
 using preproc::NeighbourGrid;
 
-// Candidates of a scan, in a grid's sorted order: single-precision coordinates relative to a
-// point of the domain (tested four at a time), whether each may be listed, and its index in the
-// pair arrays. Padded by 4 entries so that a block of four may run past a range's end.
-struct Candidates {
-    std::vector<float> x, y, z;
-    std::vector<std::uint8_t> usable;
-    std::vector<std::uint32_t> id;
-
-    void fill(const NeighbourGrid& grid, const std::array<double, 3>& origin, int threads,
-              const auto& usable_of, const auto& id_of) {
-        const std::size_t n = grid.size();
-        x.assign(n + 4, 0.0f), y.assign(n + 4, 0.0f), z.assign(n + 4, 0.0f);
-        usable.assign(n + 4, 0), id.assign(n + 4, 0);
+// Fills `c` with the candidates of `grid` (ScanCandidates, neighbour_list.hpp), reusing its arrays.
+void fill(ScanCandidates& c, const NeighbourGrid& grid, const std::array<double, 3>& origin, int threads,
+          const auto& usable_of, const auto& id_of) {
+    const std::size_t n = grid.size();
+    c.x.resize(n + 4), c.y.resize(n + 4), c.z.resize(n + 4), c.usable.resize(n + 4), c.id.resize(n + 4);
+    for (std::size_t q = n; q < n + 4; ++q) c.x[q] = c.y[q] = c.z[q] = 0.0f, c.usable[q] = 0, c.id[q] = 0;
 #pragma omp parallel for schedule(static) num_threads(threads)
-        for (std::size_t q = 0; q < n; ++q) {
-            x[q] = static_cast<float>(grid.x()[q] - origin[0]);
-            y[q] = static_cast<float>(grid.y()[q] - origin[1]);
-            z[q] = static_cast<float>(grid.z()[q] - origin[2]);
-            usable[q] = usable_of(q), id[q] = id_of(q);
-        }
+    for (std::size_t q = 0; q < n; ++q) {
+        c.x[q] = static_cast<float>(grid.x()[q] - origin[0]);
+        c.y[q] = static_cast<float>(grid.y()[q] - origin[1]);
+        c.z[q] = static_cast<float>(grid.z()[q] - origin[2]);
+        c.usable[q] = usable_of(q), c.id[q] = id_of(q);
     }
-};
+}
 
 using float4 = float __attribute__((vector_size(16)));
 using int4 = std::int32_t __attribute__((vector_size(16)));
@@ -45,7 +37,7 @@ using int4 = std::int32_t __attribute__((vector_size(16)));
 // time in single precision (r2 carries a margin for the rounding: the lists may hold a few pairs
 // just beyond the radius, never miss one); branch-free: every candidate is written and the count
 // advances only for a hit (a hit/miss branch would be mispredicted about one time in four).
-void scan(const Candidates& c, std::uint32_t b, std::uint32_t e, const float p[3], float r2,
+void scan(const ScanCandidates& c, std::uint32_t b, std::uint32_t e, const float p[3], float r2,
           std::vector<std::uint32_t>& out, std::size_t& used) {
     if (used + (e - b) + 4 > out.size()) out.resize(std::max(2 * out.size(), used + (e - b) + 4));
     std::uint32_t* o = out.data() + used;
@@ -98,7 +90,8 @@ void NeighbourList::build(Particles& s, double search_radius, int threads, bool 
     const NeighbourGrid ghost_grid(std::span<const double>(s.x.data() + real, ghosts),
                                    std::span<const double>(s.y.data() + real, ghosts),
                                    std::span<const double>(s.z.data() + real, ghosts), 0.5 * radius);
-    std::vector<std::uint8_t> near_plane(real, 0);
+    std::vector<std::uint8_t>& near_plane = near_plane_;
+    near_plane.assign(real, 0);
     for (std::size_t k = 0; k < ghosts; ++k) near_plane[s.ghost_source[k]] = 1;
 
     // Single-precision candidates relative to the centre of the domain; the radius gets a margin of
@@ -112,12 +105,12 @@ void NeighbourList::build(Particles& s, double search_radius, int threads, bool 
     const std::array<double, 3> centre{0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2])};
     const double half = 0.5 * std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
     const float r2 = static_cast<float>(std::pow(radius + 4e-6 * (half + radius), 2));
-    Candidates reals, images;
-    reals.fill(grid, centre, team, [&](std::size_t q) { return s.active[q]; },
-               [](std::size_t q) { return static_cast<std::uint32_t>(q); });
-    images.fill(ghost_grid, centre, team,
-                [&](std::size_t q) { return s.active[s.ghost_source[ghost_grid.order()[q]]]; },
-                [&](std::size_t q) { return static_cast<std::uint32_t>(real + ghost_grid.order()[q]); });
+    ScanCandidates &reals = reals_, &images = images_;
+    fill(reals, grid, centre, team, [&](std::size_t q) { return s.active[q]; },
+         [](std::size_t q) { return static_cast<std::uint32_t>(q); });
+    fill(images, ghost_grid, centre, team,
+         [&](std::size_t q) { return s.active[s.ghost_source[ghost_grid.order()[q]]]; },
+         [&](std::size_t q) { return static_cast<std::uint32_t>(real + ghost_grid.order()[q]); });
 
     const std::vector<std::size_t> first_cell = split_cells(grid, real, team);
     forward_offsets.assign(real + 1, 0);
@@ -175,6 +168,19 @@ void NeighbourList::build(Particles& s, double search_radius, int threads, bool 
     std::vector<std::size_t> forward_base(static_cast<std::size_t>(team) + 1, 0), ghost_base(forward_base);
     for (std::size_t t = 0; t < static_cast<std::size_t>(team); ++t)
         forward_base[t + 1] = forward_base[t] + forward_used[t], ghost_base[t + 1] = ghost_base[t] + ghost_used[t];
+    if (team == 1) {
+        // One chunk: it becomes the list, without a copy; the old list's storage (its full
+        // capacity) is the next build's chunk.
+        // The spare gets room for a quarter more than this list at once (at the first build, outside
+        // the stepping), so that later builds neither grow it nor touch fresh pages.
+        forward.swap(chunks_[0].forward), ghost.swap(chunks_[0].ghost);
+        forward.resize(forward_used[0]), ghost.resize(ghost_used[0]);
+        for (auto [spare, list] : {std::pair{&chunks_[0].forward, &forward}, {&chunks_[0].ghost, &ghost}})
+            spare->resize(std::max(spare->capacity(), list->size() + list->size() / 4 + 64));
+        if (full) fill_full_lists();
+        else offsets.clear(), neighbours.clear();
+        return;
+    }
     forward.resize(forward_base.back());
     ghost.resize(ghost_base.back());
 #pragma omp parallel num_threads(team)

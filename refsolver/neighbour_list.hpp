@@ -20,6 +20,15 @@
 
 namespace sphdeck::refsolver {
 
+// Candidates of a list build's scans, in a grid's sorted order: single-precision coordinates
+// relative to a point of the domain (tested four at a time), whether each may be listed, and its
+// index in the pair arrays. Padded by 4 entries so that a block of four may run past a range's end.
+struct ScanCandidates {
+    std::vector<float> x, y, z;
+    std::vector<std::uint8_t> usable;
+    std::vector<std::uint32_t> id;
+};
+
 struct NeighbourList {
     // Half list of real pairs: j in forward[forward_offsets[i] .. forward_offsets[i + 1]) has j > i.
     std::vector<std::uint32_t> forward_offsets, forward;
@@ -42,6 +51,9 @@ private:
         std::vector<std::uint32_t> forward, ghost;
     };
     std::vector<Chunk> chunks_;
+    // Work arrays of a build, kept too: fresh ones cost page faults and zeroing at every rebuild.
+    ScanCandidates reals_, images_;
+    std::vector<std::uint8_t> near_plane_;
     void fill_full_lists();
 };
 

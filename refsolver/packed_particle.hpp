@@ -9,4 +9,11 @@ struct PackedParticle {
     double x, y, z, vx, vy, vz, h, m, rho, c, p_over_rho, volume;  // volume = m / rho
 };
 
+// The SIMD pair loop's record of a particle (pair_rows.hpp): the same fields but x y z h, which it
+// reads from a compact array of its own (the support filter reads them first), so that a partner
+// costs one 64-byte cache line here instead of the two a 96-byte PackedParticle spans.
+struct alignas(64) PairRecord {
+    double vx, vy, vz, m, rho, c, p_over_rho, volume;
+};
+
 }  // namespace sphdeck::refsolver

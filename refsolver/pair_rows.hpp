@@ -19,8 +19,12 @@
 namespace sphdeck::refsolver {
 
 struct PairRows {
-    const PackedParticle* nb = nullptr;  // real then ghost particles
-    const double* positions = nullptr;   // x y z h of the same particles, 4 per particle
+    const PairRecord* records = nullptr;  // real then ghost particles
+    const double* positions = nullptr;    // x y z h of the same particles, 4 per particle
+    // The same in single precision, for the support filter, and the margin its test adds to 2 h_ij
+    // for the rounding (a few pairs just outside the support pass it; the pair terms drop them).
+    const float* positions_f = nullptr;
+    float margin = 0;
     const double* correction = nullptr;  // FORM 1: 6 per particle (xx yy zz xy xz yz), real then ghost
     const std::uint8_t* interacting = nullptr;
     const std::uint32_t *forward_offsets = nullptr, *forward = nullptr;  // neighbour_list.hpp
@@ -31,10 +35,9 @@ struct PairRows {
     bool renormalise = false;
     double *ax = nullptr, *ay = nullptr, *az = nullptr, *drho = nullptr, *de = nullptr;  // own sums, set
     double* received = nullptr;  // this thread's: ax ay az drho de per real particle, added to
-    // Scratch of this thread: `inside` holds the longest row plus 16, `reverse` 5 times `stride`
-    // (stride >= the longest row plus 16).
+    // Scratch of this thread: `inside` holds `stride` entries, the most listed partners of a
+    // particle (forward and ghosts) plus 16.
     std::uint32_t* inside = nullptr;
-    double* reverse = nullptr;
     std::size_t stride = 0;
 };
 
@@ -47,8 +50,9 @@ struct PairRowsPath {
     const char* name = "scalar";
 };
 
-// The widest path compiled in and supported by this CPU (and its OS), chosen once.
-PairRowsPath best_pair_rows();
+// The widest path compiled in and supported by this CPU (and its OS), chosen once; without
+// `avx512`, AVX2 at most (to compare the two on one machine).
+PairRowsPath best_pair_rows(bool avx512 = true);
 
 // Per-ISA entry points: nullptr when the unit was built without its instruction set (not x86-64).
 // Call only after checking the CPU (best_pair_rows does).

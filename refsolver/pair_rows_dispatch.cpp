@@ -4,11 +4,11 @@ namespace sphdeck::refsolver {
 
 namespace {
 
-PairRowsPath choose() {
+PairRowsPath choose(bool avx512) {
 #if defined(__x86_64__) || defined(__i386__)
     __builtin_cpu_init();
     // libgcc and compiler-rt report AVX-512 and AVX only when the OS saves their registers (XCR0).
-    if (__builtin_cpu_supports("avx512f"))
+    if (avx512 && __builtin_cpu_supports("avx512f"))
         if (PairRowsFunction f = pair_rows_avx512()) return {f, "avx512"};
     if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"))
         if (PairRowsFunction f = pair_rows_avx2()) return {f, "avx2"};
@@ -18,9 +18,9 @@ PairRowsPath choose() {
 
 }  // namespace
 
-PairRowsPath best_pair_rows() {
-    static const PairRowsPath path = choose();
-    return path;
+PairRowsPath best_pair_rows(bool avx512) {
+    static const PairRowsPath widest = choose(true), avx2 = choose(false);
+    return avx512 ? widest : avx2;
 }
 
 }  // namespace sphdeck::refsolver

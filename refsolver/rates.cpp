@@ -126,11 +126,12 @@ PairRows pair_rows_view(Particles& s, const NeighbourList& list, const RateParam
     PairRows v;
     std::uint32_t longest = 0;
     for (std::size_t i = 0; i < s.real; ++i)
-        longest = std::max({longest, list.forward_offsets[i + 1] - list.forward_offsets[i],
-                            list.ghost_offsets[i + 1] - list.ghost_offsets[i]});
+        longest = std::max(longest, list.forward_offsets[i + 1] - list.forward_offsets[i] + list.ghost_offsets[i + 1] -
+                                        list.ghost_offsets[i]);
     v.stride = longest + 16;
-    scratch.reverse.resize(scratch.inside.size());
-    v.nb = scratch.packed.data(), v.positions = reinterpret_cast<const double*>(scratch.positions.data()), v.interacting = s.interacting.data();
+    v.records = scratch.records.data(), v.positions = reinterpret_cast<const double*>(scratch.positions.data());
+    v.positions_f = reinterpret_cast<const float*>(scratch.positions_f.data()), v.margin = scratch.margin;
+    v.interacting = s.interacting.data();
     v.correction = Renormalise ? reinterpret_cast<const double*>(s.correction.data()) : nullptr;
     v.forward_offsets = list.forward_offsets.data(), v.forward = list.forward.data();
     v.ghost_offsets = list.ghost_offsets.data(), v.ghost = list.ghost.data();
@@ -163,7 +164,7 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
 
     // The SIMD rows (pair_rows.hpp) for fluid decks when the CPU runs them; the scalar loop below
     // then has nothing to do.
-    const PairRowsPath fast = !Solid && rp.simd ? best_pair_rows() : PairRowsPath{};
+    const PairRowsPath fast = !Solid && rp.simd ? best_pair_rows(rp.avx512) : PairRowsPath{};
     const PairRows view = fast.run ? pair_rows_view<Dimension, Renormalise>(s, list, rp, scratch) : PairRows{};
     const std::size_t scalar_end = fast.run ? 0 : real;
 
@@ -176,8 +177,7 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
         if (fast.run) {
             PairRows mine = view;
             if (inside.size() < view.stride) inside.resize(view.stride);
-            if (scratch.reverse[t].size() < 5 * view.stride) scratch.reverse[t].resize(5 * view.stride);
-            mine.inside = inside.data(), mine.reverse = scratch.reverse[t].data();
+            mine.inside = inside.data();
             mine.received = received->data();  // Sums: 5 contiguous doubles per particle
             // Chunks of 256 particles dealt round-robin: the same schedule as the scalar loop's.
 #pragma omp for schedule(static, 1)
@@ -266,19 +266,33 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
 
 void compute_rates(Particles& s, const NeighbourList& list, const RateParameters& parameters, RateScratch& scratch) {
     // Pack what neighbours are read for, ghosts included; p / rho and m / rho once per particle.
+    // The SIMD loop reads the same values from two arrays (rates.hpp), the scalar loop from one.
     const std::size_t n = s.total();
-    scratch.packed.resize(n);
+    const bool simd = parameters.simd && !parameters.solid && best_pair_rows(parameters.avx512).run;
+    if (simd) scratch.positions.resize(n), scratch.positions_f.resize(n), scratch.records.resize(n);
+    else scratch.packed.resize(n);
     PackedParticle* packed = scratch.packed.data();
-    const bool simd = parameters.simd && !parameters.solid && best_pair_rows().run;
-    if (simd) scratch.positions.resize(n);
     std::array<double, 4>* positions = scratch.positions.data();
-#pragma omp parallel for schedule(static) num_threads(parameters.threads)
+    std::array<float, 4>* positions_f = scratch.positions_f.data();
+    PairRecord* records = scratch.records.data();
+    double largest = 0;  // the largest coordinate magnitude: the single-precision filter's rounding scales with it
+#pragma omp parallel for schedule(static) reduction(max : largest) num_threads(parameters.threads)
     for (std::size_t i = 0; i < n; ++i) {
-        const double m = s.interacting[i] ? s.m[i] : 0.0;
-        packed[i] = {s.x[i], s.y[i], s.z[i], s.vx[i], s.vy[i], s.vz[i], s.h[i], m,
-                     s.rho[i], s.c[i], s.p[i] / s.rho[i], m / s.rho[i]};
-        if (simd) positions[i] = {s.x[i], s.y[i], s.z[i], s.h[i]};
+        const double m = s.interacting[i] ? s.m[i] : 0.0, p_over_rho = s.p[i] / s.rho[i], volume = m / s.rho[i];
+        if (simd) {
+            positions[i] = {s.x[i], s.y[i], s.z[i], s.h[i]};
+            positions_f[i] = {static_cast<float>(s.x[i]), static_cast<float>(s.y[i]), static_cast<float>(s.z[i]),
+                              static_cast<float>(s.h[i])};
+            largest = std::max({largest, std::abs(s.x[i]), std::abs(s.y[i]), std::abs(s.z[i])});
+            records[i] = {s.vx[i], s.vy[i], s.vz[i], m, s.rho[i], s.c[i], p_over_rho, volume};
+        } else {
+            packed[i] = {s.x[i], s.y[i], s.z[i], s.vx[i], s.vy[i], s.vz[i], s.h[i], m, s.rho[i], s.c[i], p_over_rho, volume};
+        }
     }
+    // Rounding a coordinate to float moves it by at most 2^-24 of `largest`; a separation in single
+    // precision is then within about 4 such steps (and 2^-22 of itself) of the exact one. The margin
+    // doubles that (pair_rows_kernel.hpp adds a relative slack too).
+    scratch.margin = static_cast<float>(std::ldexp(largest, -20));
     const bool two = parameters.kernel.dimension == 2;
     if (parameters.solid) {  // *MAT_ELASTIC parts: S / rho^2 too, and the loops with the stress terms
         scratch.stress_over_rho2.resize(n);

@@ -36,18 +36,22 @@ struct RateParameters {
     // The SIMD pair loop (pair_rows.hpp) when the CPU runs one and the deck is fluid-only; false:
     // the scalar loop (the reference the tests compare it with).
     bool simd = true;
+    bool avx512 = true;  // with simd: false keeps the SIMD loop at AVX2 (to compare the two)
 };
 
 
 // Work arrays of compute_rates, kept between steps so that no step allocates.
 struct RateScratch {
-    std::vector<PackedParticle> packed;  // real + ghost particles
-    std::vector<std::array<double, 4>> positions;  // SIMD path: x y z h of the same (pair_rows.hpp)
+    std::vector<PackedParticle> packed;  // real + ghost particles (scalar loop)
+    // SIMD loop (pair_rows.hpp), instead: x y z h and the rest of the same particles.
+    std::vector<std::array<double, 4>> positions;
+    std::vector<std::array<float, 4>> positions_f;  // in single precision, for the support filter
+    float margin = 0;                               // PairRows::margin
+    std::vector<PairRecord> records;
     // Per thread, per real particle: ax ay az drho de received from pairs listed under another
     // particle (no two threads write the same entry; the sums are added in thread order).
     std::vector<std::array<double, 5>> received;
     std::vector<std::vector<std::uint32_t>> inside;  // per thread: one particle's pairs within the support
-    std::vector<std::vector<double>> reverse;        // per thread, SIMD path: the shares a row's partners receive
     // Solid decks only: S / rho^2 (real + ghost), and per real particle the P and Q sums of
     // stress.hpp, own and (per thread) received.
     std::vector<SymmetricTensor> stress_over_rho2;

@@ -26,6 +26,7 @@
 #include "refsolver/setup.hpp"
 #include "refsolver/symmetry_ghosts.hpp"
 #include "refsolver/time_step.hpp"
+#include "refsolver/verlet_skin.hpp"
 
 namespace sphdeck::refsolver {
 
@@ -38,6 +39,11 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 // rebuild costs most of a step: 0.8 h halves the rebuilds of 0.5 h for about 3 % more per step
 // (bench_refsolver).
 constexpr double skin_share = 0.8;
+
+bool is_finite(const Particles& s, std::size_t i) {
+    return std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && std::isfinite(s.z[i]) && std::isfinite(s.vx[i]) &&
+           std::isfinite(s.vy[i]) && std::isfinite(s.vz[i]) && std::isfinite(s.rho[i]) && std::isfinite(s.e[i]);
+}
 
 // The leapfrog of the deviatoric stress (*MAT_ELASTIC), kicked like the density: `predict` gives
 // the half-step S and S at the new time from the old rate; otherwise S = S_half + dt/2 dS_new.
@@ -66,6 +72,8 @@ struct Simulation::Impl {
     double time = 0, dt = 0, dt_next = 0, external_work = 0;
     std::size_t steps = 0, since_rebuild = 0, rebuilds = 0;
     double h_max_built = 0, skin = 0;
+    bool rebuild_every_step = false;  // RunOptions::rebuild_every_step
+    mutable std::vector<DisplacementBox> skin_cells;  // closing_bound's scratch
     Timings timings;
     std::string failure;
     mutable ParticleState state;
@@ -79,6 +87,7 @@ struct Simulation::Impl {
     void rebuild();
     bool needs_rebuild() const;
     void check_finite();
+    void report_non_finite(bool finite);  // sets `failure` when !finite
 };
 
 void Simulation::Impl::update_eos() {
@@ -93,7 +102,9 @@ void Simulation::Impl::update_eos() {
 
 void Simulation::Impl::update_interacting() {
     const bool global = time >= in.sph_start && time < in.sph_death;
-    for (std::size_t i = 0; i < s.real; ++i) {
+    const std::size_t n = s.real;
+#pragma omp parallel for schedule(static) num_threads(rates.threads)
+    for (std::size_t i = 0; i < n; ++i) {
         const PartSetup& part = in.parts[s.part[i]];
         s.interacting[i] = s.active[i] && global && time >= part.start && time < part.death;
     }
@@ -125,18 +136,23 @@ void Simulation::Impl::rebuild() {
 //   |d_i - d_j| (d: displacement since the build; a ghost's is its source's, mirrored), which is
 //   at most the diagonal of the box bounding all displacements. The diagonal, rather than twice
 //   the largest displacement: a flow moving as a whole changes few distances, and needs few
-//   rebuilds.
+//   rebuilds. When that bound is spent, the local one of verlet_skin.hpp (the same diagonal over
+//   the two cells of build positions a pair within the support can come from): a flow that
+//   stretches changes the distances of neighbours little.
 // - A ghost that does not exist yet (its source was further than the radius from the plane): it
 //   is at least dd_i + dd_j >= dd_j from any real particle i, so it stays out of the support while
-//   no particle has moved towards a plane by more than the skin.
+//   no particle has moved towards a plane by more than the skin. Only particles now within the
+//   support of a plane can have such a ghost within the support, so only they count; the radius
+//   of the build stands for the support (if h grew past it, the first term asks for a rebuild).
 // The support is 2 h_max now, so: rebuild when 2 (h_max - h_max_built) + either bound >= skin.
 bool Simulation::Impl::needs_rebuild() const {
-    if (rebuilds == 0) return true;
+    if (rebuilds == 0 || rebuild_every_step) return true;
     if (since_rebuild + 1 < static_cast<std::size_t>(in.ncbs)) return false;  // NCBS: not more often than this
     constexpr double inf = std::numeric_limits<double>::infinity();
     double lx = inf, ly = inf, lz = inf, hx = -inf, hy = -inf, hz = -inf, towards = 0, h_max = 0;
     const std::size_t n = s.real, ghosts = s.ghosts();
     const std::vector<SymmetryPlane>& planes = in.planes;
+    const double reach = list.radius;  // of the last build: 2 h_max_built + skin
 #pragma omp parallel num_threads(rates.threads)
     {
 #pragma omp for schedule(static) reduction(min : lx, ly, lz) reduction(max : hx, hy, hz, towards, h_max) nowait
@@ -145,8 +161,10 @@ bool Simulation::Impl::needs_rebuild() const {
             const double dx = s.x[i] - s.x_built[i], dy = s.y[i] - s.y_built[i], dz = s.z[i] - s.z_built[i];
             lx = std::min(lx, dx), ly = std::min(ly, dy), lz = std::min(lz, dz);
             hx = std::max(hx, dx), hy = std::max(hy, dy), hz = std::max(hz, dz);
-            for (const SymmetryPlane& q : planes)
-                towards = std::max(towards, -(dx * q.normal[0] + dy * q.normal[1] + dz * q.normal[2]));
+            for (const SymmetryPlane& q : planes) {
+                const double dd = s.x[i] * q.normal[0] + s.y[i] * q.normal[1] + s.z[i] * q.normal[2] - q.offset;
+                if (dd < reach) towards = std::max(towards, -(dx * q.normal[0] + dy * q.normal[1] + dz * q.normal[2]));
+            }
             h_max = std::max(h_max, s.h[i]);
         }
 #pragma omp for schedule(static) reduction(min : lx, ly, lz) reduction(max : hx, hy, hz)
@@ -165,8 +183,13 @@ bool Simulation::Impl::needs_rebuild() const {
         }
     }
     const double diagonal = lx <= hx ? std::sqrt((hx - lx) * (hx - lx) + (hy - ly) * (hy - ly) + (hz - lz) * (hz - lz)) : 0.0;
-    // Written so that a NaN (a non-finite state) asks for a rebuild too.
-    return !(CubicSpline::support_factor * (h_max - h_max_built) + std::max(diagonal, towards) < skin);
+    const double grown = CubicSpline::support_factor * (h_max - h_max_built);
+    if (grown + std::max(diagonal, towards) < skin) return false;
+    // The global bound is spent: the local one (verlet_skin.hpp), which follows only the spread of
+    // displacements between neighbouring regions. Written so that a NaN (a non-finite state) asks
+    // for a rebuild too.
+    const double local = closing_bound(s, in.planes, CubicSpline::support_factor * h_max, skin_cells);
+    return !(grown + std::max(local, towards) < skin);
 }
 
 void Simulation::Impl::evaluate() {
@@ -217,9 +240,13 @@ void Simulation::Impl::initialise() {
 
 void Simulation::Impl::check_finite() {
     bool finite = true;
-    for (std::size_t i = 0; i < s.real && finite; ++i)
-        finite = std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && std::isfinite(s.z[i]) && std::isfinite(s.vx[i]) &&
-                 std::isfinite(s.vy[i]) && std::isfinite(s.vz[i]) && std::isfinite(s.rho[i]) && std::isfinite(s.e[i]);
+    const std::size_t n = s.real;
+#pragma omp parallel for schedule(static) reduction(&& : finite) num_threads(rates.threads)
+    for (std::size_t i = 0; i < n; ++i) finite = finite && is_finite(s, i);
+    report_non_finite(finite);
+}
+
+void Simulation::Impl::report_non_finite(bool finite) {
     if (!finite && failure.empty())
         failure = "the state became non-finite (NaN or infinity) at step " + std::to_string(steps) +
                   ": the time step is too large for this deck, or the material state left its EOS's range";
@@ -256,24 +283,33 @@ void Simulation::Impl::step() {
     }
     external_work += work;
     if (s.solid) kick_stress(s, half, true, rates.threads);
-    reflect_crossed(s, in.planes);
+    reflect_crossed(s, in.planes, rates.threads);
     time += dt;
     deactivation.apply(s);
     evaluate();
-#pragma omp parallel for schedule(static) num_threads(rates.threads)
-    for (std::size_t i = 0; i < s.real; ++i) {
-        if (!s.active[i]) continue;
-        s.vx[i] = s.vx_half[i] + half * s.ax[i], s.vy[i] = s.vy_half[i] + half * s.ay[i];
-        s.vz[i] = s.vz_half[i] + half * s.az[i];
-        s.rho[i] = s.rho_half[i] + half * s.drho[i], s.e[i] = s.e_half[i] + half * s.de[i];
-        s.h[i] = clamp_smoothing_length(s.h_half[i] + half * s.dh[i], s.h_low[i], s.h_high[i]);
+    // The last half kick, and in the same pass the next time step (time_step.hpp: the stress kick
+    // below changes none of its inputs) and the finite check: one pass over the particles, not three.
+    double smallest = std::numeric_limits<double>::infinity();
+    bool finite = true;
+#pragma omp parallel for schedule(static) reduction(min : smallest) reduction(&& : finite) num_threads(rates.threads)
+    for (std::size_t i = 0; i < n; ++i) {
+        if (s.active[i]) {
+            s.vx[i] = s.vx_half[i] + half * s.ax[i], s.vy[i] = s.vy_half[i] + half * s.ay[i];
+            s.vz[i] = s.vz_half[i] + half * s.az[i];
+            s.rho[i] = s.rho_half[i] + half * s.drho[i], s.e[i] = s.e_half[i] + half * s.de[i];
+            s.h[i] = clamp_smoothing_length(s.h_half[i] + half * s.dh[i], s.h_low[i], s.h_high[i]);
+            const double speed = std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
+            const double accel = std::sqrt(s.ax[i] * s.ax[i] + s.ay[i] * s.ay[i] + s.az[i] * s.az[i]);
+            smallest = std::min(smallest, particle_time_step(s.h[i], s.c[i], speed, accel));
+        }
+        finite = finite && is_finite(s, i);
     }
     if (s.solid) kick_stress(s, half, false, rates.threads);
     ++steps, ++since_rebuild;
     state_valid = false;
-    dt_next = stable_time_step(s, in.tssfac, rates.threads);
+    dt_next = in.tssfac * smallest;
     timings.total += seconds_since(t0);
-    check_finite();
+    report_non_finite(finite);
 }
 
 Simulation::Setup Simulation::create(const model::Model& model, const RunOptions& options) {
@@ -293,7 +329,8 @@ Simulation::Setup Simulation::create(const model::Model& model, const RunOptions
         impl->core_share.emplace(impl->rates.threads);
         impl->rates.threads = impl->core_share->threads();
     }
-    impl->rates.simd = options.simd;
+    impl->rates.simd = options.simd, impl->rates.avx512 = options.avx512;
+    impl->rebuild_every_step = options.rebuild_every_step;
     for (const PartSetup& p : impl->in.parts) impl->part_ids.push_back(p.id);
     impl->initialise();
     setup.simulation.reset(new Simulation(std::move(impl)));

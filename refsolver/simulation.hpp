@@ -41,6 +41,8 @@ struct RunOptions {
     int threads = 0;                 // OpenMP threads; 0: the OpenMP default
     bool ignore_unsupported = false; // run anyway, ignoring what cannot be honoured
     bool simd = true;                // the SIMD pair loop where the CPU has one (false: scalar, for comparison)
+    bool avx512 = true;              // with simd: false keeps it at AVX2 where AVX-512 runs (for comparison)
+    bool rebuild_every_step = false; // rebuild the neighbour lists at every step: the reference the skin test is checked against
 };
 
 // Particle state in model order (structure of arrays).

@@ -84,10 +84,14 @@ void update_ghosts(Particles& s, const std::vector<SymmetryPlane>& planes, int t
     }
 }
 
-std::size_t reflect_crossed(Particles& s, const std::vector<SymmetryPlane>& planes) {
+std::size_t reflect_crossed(Particles& s, const std::vector<SymmetryPlane>& planes, int threads) {
     std::size_t put_back = 0;
-    for (const SymmetryPlane& q : planes) {
-        for (std::size_t i = 0; i < s.real; ++i) {
+    const std::size_t n = s.real;
+    // Particle by particle, the planes in order (what happens to a particle depends on its own
+    // state only): one pass over the particles rather than one per plane.
+#pragma omp parallel for schedule(static) reduction(+ : put_back) num_threads(threads > 0 ? threads : 1)
+    for (std::size_t i = 0; i < n; ++i) {
+        for (const SymmetryPlane& q : planes) {
             const double dd = s.x[i] * q.normal[0] + s.y[i] * q.normal[1] + s.z[i] * q.normal[2] - q.offset;
             if (!(dd < 0)) continue;
             mirror_point(q, s.x[i], s.y[i], s.z[i]);

@@ -35,6 +35,6 @@ void build_ghosts(Particles& s, const std::vector<SymmetryPlane>& planes, double
 void update_ghosts(Particles& s, const std::vector<SymmetryPlane>& planes, int threads = 1);
 // Puts real particles found behind a plane back into the body, reversing the normal velocity
 // (both the current and the half-step one). Returns how many were put back.
-std::size_t reflect_crossed(Particles& s, const std::vector<SymmetryPlane>& planes);
+std::size_t reflect_crossed(Particles& s, const std::vector<SymmetryPlane>& planes, int threads = 1);
 
 }  // namespace sphdeck::refsolver

@@ -13,8 +13,7 @@ double stable_time_step(const Particles& s, double tssfac, int threads) {
         if (!s.active[i]) continue;
         const double speed = std::sqrt(s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
         const double accel = std::sqrt(s.ax[i] * s.ax[i] + s.ay[i] * s.ay[i] + s.az[i] * s.az[i]);
-        if (s.c[i] + speed > 0) smallest = std::min(smallest, s.h[i] / (s.c[i] + speed));
-        if (accel > 0) smallest = std::min(smallest, std::sqrt(s.h[i] / accel));
+        smallest = std::min(smallest, particle_time_step(s.h[i], s.c[i], speed, accel));
     }
     return tssfac * smallest;
 }

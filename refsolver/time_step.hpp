@@ -7,11 +7,21 @@
 //   dt = TSSFAC * min_i min(h_i / (c_i + |v_i|), sqrt(h_i / |a_i|)).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "refsolver/particles.hpp"
 
 namespace sphdeck::refsolver {
+
+// One particle's bound before TSSFAC, from its h, c, |v| and |a|; +infinity when it bounds nothing.
+inline double particle_time_step(double h, double c, double speed, double accel) {
+    double bound = std::numeric_limits<double>::infinity();
+    if (c + speed > 0) bound = std::min(bound, h / (c + speed));
+    if (accel > 0) bound = std::min(bound, std::sqrt(h / accel));
+    return bound;
+}
 
 // +infinity when no active particle bounds the step.
 double stable_time_step(const Particles& s, double tssfac, int threads);
