@@ -21,12 +21,28 @@ struct Note {
     std::string message;
 };
 
+// One text replacement: the columns of `span` (one line, end_column exclusive as in every Span) become
+// `replacement`. An empty span (column == end_column) inserts.
+struct TextEdit {
+    grammar::Span span;
+    std::string replacement;
+};
+
+// A mechanical mend carried by a finding. Safe: the solver then reads the values the author evidently
+// meant, with no judgement (a value moved back into its field). Unsafe: a judgement (a did-you-mean name).
+struct Fix {
+    std::string description;  // "realign the line to the fields of *CONTROL_SPH"
+    bool safe = false;
+    std::vector<TextEdit> edits;
+};
+
 struct Diagnostic {
     std::string code;  // rule code, e.g. "DK010"
     Severity severity = Severity::Error;
     std::string message;  // short lower-case fragment naming the value found and what was expected
     grammar::Span span;   // primary location; invalid for deck-wide findings
     std::vector<Note> notes;
+    std::vector<Fix> fixes = {};  // mends the finding offers, most likely first; empty when none is mechanical
 };
 
 struct Counts {
