@@ -2,6 +2,7 @@
 
 #include "grammar/read_deck.hpp"
 #include "preproc/preview.hpp"
+#include "lint/fold_causes.hpp"
 #include "lint/suppressions.hpp"
 #include "model/model_builder.hpp"
 #include "model/radioss_decoder.hpp"
@@ -18,6 +19,7 @@ CheckResult finish(grammar::RawDeck deck, const CheckOptions& options) {
     lint::RuleContext context(result.model, result.deck, options.rules, result.diagnostics);
     lint::run_rules(context);
     result.preview = std::move(context.preview);
+    lint::fold_into_causes(result.deck, result.diagnostics);
     diag::sort_by_location(result.diagnostics);
     // What the deck's own comments and the configuration say about the findings: every consumer
     // (the CLI, the deck tests, an editor) sees the same list.

@@ -68,6 +68,10 @@ constexpr RuleInfo kRows[] = {
      "non-blank data lines before the first keyword line are ignored"},
     {"DK028", "bad-suppression", Warning, "0.1.0", "reader",
      "a \"$ sphdeck:\" comment that cannot be understood: unknown action, rule or syntax"},
+    {"DK029", "shifted-line", Error, "0.1.0", "reader",
+     "a line whose values all sit the same few columns off their fields: the cause of its cut or glued values"},
+    {"DK030", "field-width", Error, "0.1.0", "reader",
+     "a block written in other field widths than the keyword reads (8 for 10, standard for long)"},
 
     // RAD: OpenRadioss SPH options (/SPHBCS, SOL2SPH, /PROP/SPH, /SPHCEL, /SPHGLO, /DT).
     {"RAD001", "missing-starter-header", Error, "0.1.0", "reader",

@@ -10,7 +10,7 @@
 #include "lsp/deck_lookup.hpp"
 #include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
-#include "lsp/realign.hpp"
+#include "grammar/realign.hpp"
 #include "lsp/uri.hpp"
 
 namespace sphdeck::lsp {
@@ -104,7 +104,7 @@ std::optional<nlohmann::json> realign(const Request& r, std::uint32_t line0, con
     auto card = dyna_card_at(raw, *block, *line);
     if (!card) return std::nullopt;
     const std::string_view text = raw.text(*line);
-    auto fixed = realign_card(text, *card->card, block->format);
+    auto fixed = grammar::realign_card(text, *card->card, block->format);
     if (!fixed) return std::nullopt;
     return action("Realign the values of this card into their columns", diagnostic, r.uri,
                   text_edit(line0, 0, line0, utf16_offset(text, static_cast<std::uint32_t>(text.size())), display_text(*fixed)),

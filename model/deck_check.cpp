@@ -10,6 +10,7 @@
 
 #include "model/case_blocks.hpp"
 #include "model/particle_ranges.hpp"
+#include "model/shift_diagnosis.hpp"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -58,6 +59,7 @@ public:
         : deck_(deck), out_(out), decoder_(deck, out), visit_(visit), bulk_(bulk) {}
 
     void walk(const grammar::Block& block, const keywords::KeywordMatch& match, DeckSummary& summary) {
+        suspects_.clear();
         std::vector<const CardSpec*> cards = keywords::cards_for(match);
         if (bulk_ && bulk_->wants(match) && cards.size() == 1 && cards[0]->repeat == CardRepeat::Repeated &&
             !cards[0]->present_if && block.line_count >= bulk_min_lines)
@@ -79,7 +81,9 @@ public:
                 }
             }
             const CardSpec& card = *cards[next];
+            const std::size_t found_before = out_.size();
             decoder_.decode(block, *l, card, values_);
+            note_suspect(block, *l, card, out_.size() > found_before);
             std::optional<diag::Diagnostic> refused;
             if (particles) refused = take_range(values_);
             if (card.repeat != CardRepeat::Repeated) remember(values_);  // conditions look at header cards
@@ -91,7 +95,32 @@ public:
         report_missing(block, cards, next);
     }
 
+    // The lines the shift diagnosis looks at (model/shift_diagnosis.hpp), filled by walk().
+    const std::vector<SuspectLine>& suspects() const { return suspects_; }
+
 private:
+    // A line that made a finding, or the first line of a card under a `$#` header (one a block for
+    // repeated cards: the header check reads back over the line above).
+    void note_suspect(const grammar::Block& block, const grammar::CardLine& line, const CardSpec& card, bool found) {
+        if (suspects_.size() >= max_suspect_lines) return;
+        if (!suspects_.empty() && suspects_.back().line == &line) return;
+        const bool first_of_card = card.repeat != CardRepeat::Repeated || &line == deck_.begin_lines(block);
+        if (found || (first_of_card && !header_above(deck_, line).empty())) suspects_.push_back({&line, &card});
+    }
+
+    // The bulk path: the lines of the first findings (the lines of a block are in file order).
+    void note_bulk_suspects(const grammar::Block& block, const CardSpec& card, std::size_t from) {
+        const grammar::CardLine* begin = deck_.begin_lines(block);
+        const grammar::CardLine* end = deck_.end_lines(block);
+        for (std::size_t i = from; i < out_.size() && suspects_.size() < max_suspect_lines; ++i) {
+            const grammar::Span& at = out_[i].span;
+            if (!suspects_.empty() && suspects_.back().line->line == at.line) continue;
+            const grammar::CardLine* l = std::lower_bound(
+                begin, end, at.line, [](const grammar::CardLine& c, std::uint32_t n) { return c.line < n; });
+            if (l != end && l->line == at.line && l->file == at.file) suspects_.push_back({l, &card});
+        }
+    }
+
     // A refused NEND range is reported and its NEND marked unusable, so that neither the model
     // nor the particle count expands it.
     std::optional<diag::Diagnostic> take_range(std::vector<FieldValue>& values) {
@@ -185,8 +214,10 @@ private:
         }
         bulk_->end(block);
         summary.particles += std::accumulate(counted.begin(), counted.end(), std::size_t{0});
+        const std::size_t merged_from = out_.size();
         for (auto& part : found) out_.insert(out_.end(), std::make_move_iterator(part.begin()),
                                              std::make_move_iterator(part.end()));
+        note_bulk_suspects(block, card, merged_from);
     }
 
     // The text of lines [from, to) of one block is decoded: a mapped file's pages go back, so that
@@ -230,6 +261,7 @@ private:
     RangeBudget ranges_{deck_};
     std::vector<FieldValue> values_;
     std::map<std::string, double> earlier_;
+    std::vector<SuspectLine> suspects_;
 };
 
 // A keyword that may appear once, where it appeared and in which case ("": every case).
@@ -286,6 +318,7 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
         if (skip_cards(block.keyword) || match->schema->free_text) continue;
         const std::size_t before = out.size();
         walker.walk(block, *match, summary);
+        diagnose_shifts(deck, block, walker.suspects(), out, before);
         collapse_block_floods(out, before, block.keyword);
     }
     for (const auto& [name, u] : unknown) {

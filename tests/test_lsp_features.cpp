@@ -11,7 +11,7 @@
 #include "engine/check.hpp"
 #include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
-#include "lsp/realign.hpp"
+#include "grammar/realign.hpp"
 #include "lsp/uri.hpp"
 
 using namespace sphdeck;
@@ -334,12 +334,12 @@ TEST_CASE("lsp realign: only when the result is certain") {
     keywords::CardSpec card{.fields = {{.name = "A", .column = 1, .width = 10, .type = keywords::FieldType::Real},
                                        {.name = "B", .column = 11, .width = 10, .type = keywords::FieldType::Real}}};
     using grammar::CardFormat;
-    CHECK(lsp::realign_card("      1.0E-3      2.5", card, CardFormat::Standard) == "    1.0E-3       2.5");
-    CHECK_FALSE(lsp::realign_card("       1.0       2.0", card, CardFormat::Standard));  // nothing strays
-    CHECK_FALSE(lsp::realign_card("   1.23456789012", card, CardFormat::Standard));      // wider than its field
-    CHECK_FALSE(lsp::realign_card("       1.0E-3", card, CardFormat::Standard));  // 3 and 3 columns: a tie
-    CHECK_FALSE(lsp::realign_card("      1.0,2.0", card, CardFormat::Standard));  // free format
-    CHECK_FALSE(lsp::realign_card("   1.0 2.0  3.0", card, CardFormat::Standard));  // two values for one field
+    CHECK(grammar::realign_card("      1.0E-3      2.5", card, CardFormat::Standard) == "    1.0E-3       2.5");
+    CHECK_FALSE(grammar::realign_card("       1.0       2.0", card, CardFormat::Standard));  // nothing strays
+    CHECK_FALSE(grammar::realign_card("   1.23456789012", card, CardFormat::Standard));      // wider than its field
+    CHECK_FALSE(grammar::realign_card("       1.0E-3", card, CardFormat::Standard));  // 3 and 3 columns: a tie
+    CHECK_FALSE(grammar::realign_card("      1.0,2.0", card, CardFormat::Standard));  // free format
+    CHECK_FALSE(grammar::realign_card("   1.0 2.0  3.0", card, CardFormat::Standard));  // two values for one field
 }
 
 TEST_CASE("lsp features on an OpenRadioss deck: header hover, field hover, /PART -> /PROP, /MAT") {

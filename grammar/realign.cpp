@@ -1,35 +1,12 @@
-#include "lsp/realign.hpp"
+#include "grammar/realign.hpp"
 
 #include <vector>
 
 #include "grammar/fields.hpp"
-#include "grammar/value.hpp"
+#include "grammar/line_tokens.hpp"
 
-namespace sphdeck::lsp {
-namespace {
-
+namespace sphdeck::grammar {
 using keywords::FieldType;
-
-struct Token {
-    std::size_t begin = 0, end = 0;  // 0-based [begin, end)
-    std::size_t slot = 0;
-};
-
-bool reads_as(std::string_view token, FieldType type) {
-    const grammar::ValueToken value =
-        grammar::classify_value(token, type == FieldType::Real ? grammar::ValueShape::Real : grammar::ValueShape::Integer);
-    if (value.shape == grammar::ValueShape::Parameter) return true;
-    switch (type) {
-        case FieldType::Real: return grammar::to_real(value).status == grammar::NumberStatus::Ok;
-        case FieldType::Integer: return grammar::to_integer(value).status == grammar::NumberStatus::Ok;
-        case FieldType::Label:
-        case FieldType::Text: return true;
-        case FieldType::Unused: return false;
-    }
-    return false;
-}
-
-}  // namespace
 
 std::optional<std::string> realign_card(std::string_view text, const keywords::CardSpec& card,
                                         grammar::CardFormat format) {
@@ -37,20 +14,10 @@ std::optional<std::string> realign_card(std::string_view text, const keywords::C
     if (!card.fields.empty() && card.fields[0].type == FieldType::Text && card.fields[0].width >= 70)
         return std::nullopt;  // a title: its blanks are part of the text
     const auto slots = keywords::layout(card, format);
-    std::vector<Token> tokens;
-    for (std::size_t i = 0; i < text.size();) {
-        if (text[i] == ' ') {
-            ++i;
-            continue;
-        }
-        Token t{i, i, 0};
-        while (t.end < text.size() && text[t.end] != ' ') ++t.end;
-        i = t.end;
-        tokens.push_back(t);
-    }
+    std::vector<LineToken> tokens = line_tokens(text);
     std::vector<bool> taken(slots.size(), false);
     bool strays = false;
-    for (Token& t : tokens) {
+    for (LineToken& t : tokens) {
         std::size_t best = slots.size(), best_overlap = 0;
         bool tie = false;
         for (std::size_t s = 0; s < slots.size() && s < card.fields.size(); ++s) {
@@ -74,7 +41,7 @@ std::optional<std::string> realign_card(std::string_view text, const keywords::C
     }
     if (!strays) return std::nullopt;
     std::string out;
-    for (const Token& t : tokens) {
+    for (const LineToken& t : tokens) {
         const auto& slot = slots[t.slot];
         const std::size_t length = t.end - t.begin;
         const bool inside = t.begin >= slot.start && t.end <= slot.start + slot.width;
@@ -86,4 +53,4 @@ std::optional<std::string> realign_card(std::string_view text, const keywords::C
     return out;
 }
 
-}  // namespace sphdeck::lsp
+}  // namespace sphdeck::grammar

@@ -12,10 +12,10 @@
 
 #include "grammar/keywords/schema.hpp"
 
-namespace sphdeck::lsp {
+namespace sphdeck::grammar {
 
 // The realigned line, or nullopt when nothing strays or the fix is not certain.
 std::optional<std::string> realign_card(std::string_view text, const keywords::CardSpec& card,
                                         grammar::CardFormat format);
 
-}  // namespace sphdeck::lsp
+}  // namespace sphdeck::grammar

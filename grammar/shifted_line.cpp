@@ -1,0 +1,181 @@
+#include "grammar/shifted_line.hpp"
+
+#include <algorithm>
+
+namespace sphdeck::grammar {
+namespace {
+
+using keywords::FieldType;
+
+constexpr int max_shift = 4;  // "a few columns": a blank typed or deleted, not a rewritten line
+
+bool text_card(const keywords::CardSpec& card) {
+    return !card.fields.empty() && card.fields[0].type == FieldType::Text && card.fields[0].width >= 70;
+}
+
+bool cuttable(std::string_view text, const keywords::CardSpec& card) {
+    return text.find('\t') == std::string_view::npos && !is_free_format(text) && !text_card(card);
+}
+
+std::size_t slot_end(const FixedField& f) { return std::size_t{f.start} + f.width; }
+
+// Every token, moved `shift` left, ends at its field's end (or, unless `right_only`, starts at its start).
+bool aligned(const std::vector<LineToken>& tokens, std::span<const FixedField> slots, int shift, bool right_only) {
+    return std::all_of(tokens.begin(), tokens.end(), [&](const LineToken& t) {
+        const auto b = static_cast<std::ptrdiff_t>(t.begin) - shift, e = static_cast<std::ptrdiff_t>(t.end) - shift;
+        const FixedField& s = slots[t.slot];
+        return e == static_cast<std::ptrdiff_t>(slot_end(s)) || (!right_only && b == static_cast<std::ptrdiff_t>(s.start));
+    });
+}
+
+// A `$#` header whose names all end at field ends: the deck's writer right-aligns to the fields.
+bool header_aligned(std::string_view header, std::span<const FixedField> slots, std::size_t fields) {
+    if (header.size() < 2 || header[0] != '$' || header[1] != '#') return false;
+    std::string names(header);
+    names[0] = names[1] = ' ';
+    const auto tokens = line_tokens(names);
+    if (tokens.size() < 2) return false;
+    return std::all_of(tokens.begin(), tokens.end(), [&](const LineToken& t) {
+        for (std::size_t s = 0; s < slots.size() && s < fields; ++s)
+            if (slot_end(slots[s]) == t.end) return true;
+        return false;
+    });
+}
+
+std::string_view field_text(std::string_view text, const FixedField& f) {
+    if (f.start >= text.size()) return {};
+    return trim_blanks(text.substr(f.start, f.width));
+}
+
+bool same_reading(std::string_view a, std::string_view b, std::span<const FixedField> slots) {
+    for (const FixedField& f : slots)
+        if (field_text(a, f) != field_text(b, f)) return false;
+    const std::size_t end = slots.empty() ? 0 : slot_end(slots.back());
+    return trim_blanks(a.size() > end ? a.substr(end) : std::string_view{}) ==
+           trim_blanks(b.size() > end ? b.substr(end) : std::string_view{});
+}
+
+std::string shifted(std::string_view text, int columns) {
+    std::string out = columns > 0 ? std::string(text.substr(static_cast<std::size_t>(columns)))
+                                  : std::string(static_cast<std::size_t>(-columns), ' ') + std::string(text);
+    while (!out.empty() && out.back() == ' ') out.pop_back();
+    return out;
+}
+
+bool same_slots(std::span<const FixedField> a, std::span<const FixedField> b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                      [](const FixedField& x, const FixedField& y) { return x.start == y.start && x.width == y.width; });
+}
+
+// Standard widths with every 10-column field written in 8 (offsets follow).
+std::vector<FixedField> narrowed_to_8(std::span<const FixedField> standard) {
+    std::vector<FixedField> out;
+    std::uint32_t at = 0, prev_end = 0;
+    for (const FixedField& f : standard) {
+        at += f.start > prev_end ? f.start - prev_end : 0;  // a gap keeps its width
+        const std::uint32_t w = f.width == 10 ? 8 : f.width;
+        out.push_back({at, w});
+        at += w;
+        prev_end = f.start + f.width;
+    }
+    return out;
+}
+
+}  // namespace
+
+bool place_tokens(std::string_view text, std::vector<LineToken>& tokens, std::span<const FixedField> slots,
+                  const keywords::CardSpec& card, int shift) {
+    const std::size_t fields = std::min(slots.size(), card.fields.size());
+    std::vector<bool> taken(fields, false);
+    for (LineToken& t : tokens) {
+        const auto b = static_cast<std::ptrdiff_t>(t.begin) - shift, e = static_cast<std::ptrdiff_t>(t.end) - shift;
+        if (b < 0) return false;
+        std::size_t s = 0;
+        while (s < fields && !(static_cast<std::ptrdiff_t>(slots[s].start) <= b && e <= static_cast<std::ptrdiff_t>(slot_end(slots[s])))) ++s;
+        if (s == fields || taken[s] || card.fields[s].type == FieldType::Unused) return false;
+        if (!reads_as(text.substr(t.begin, t.end - t.begin), card.fields[s].type)) return false;
+        taken[s] = true;
+        t.slot = s;
+    }
+    return true;
+}
+
+std::optional<LineShift> find_shift(std::string_view text, std::string_view header, std::span<const FixedField> slots,
+                                    const keywords::CardSpec& card) {
+    if (!cuttable(text, card)) return std::nullopt;
+    std::vector<LineToken> tokens = line_tokens(text);
+    if (tokens.size() < 2) return std::nullopt;  // one value shows no consistent shift
+    const bool by_header = header_aligned(header, slots, card.fields.size());
+    const bool clean = place_tokens(text, tokens, slots, card, 0);
+    if (clean && (!by_header || aligned(tokens, slots, 0, true))) return std::nullopt;
+    std::optional<LineShift> found;
+    for (int n = -max_shift; n <= max_shift; ++n) {
+        if (n == 0 || !place_tokens(text, tokens, slots, card, n)) continue;
+        const bool header_says = by_header && aligned(tokens, slots, n, true);
+        const bool straddles_say = !clean && aligned(tokens, slots, n, false);
+        if (!header_says && !straddles_say) continue;
+        if (found) return std::nullopt;  // two readings: not certain
+        found = LineShift{n, false, header_says, shifted(text, n)};
+    }
+    if (found) found->changes_reading = !same_reading(text, found->realigned, slots);
+    return found;
+}
+
+bool reads_aligned(std::string_view text, std::span<const FixedField> slots, const keywords::CardSpec& card) {
+    std::vector<LineToken> tokens = line_tokens(text);
+    return place_tokens(text, tokens, slots, card, 0) && aligned(tokens, slots, 0, false);
+}
+
+std::optional<WrittenWidths> find_written_widths(std::string_view text, const keywords::CardSpec& card,
+                                                 CardFormat format) {
+    if (!cuttable(text, card)) return std::nullopt;
+    std::vector<LineToken> tokens = line_tokens(text);
+    if (tokens.size() < 2) return std::nullopt;
+    const std::vector<FixedField> read = keywords::layout(card, format);
+    if (place_tokens(text, tokens, read, card, 0)) return std::nullopt;
+    std::vector<std::vector<FixedField>> candidates;
+    const std::vector<FixedField> standard = keywords::layout(card, CardFormat::Standard);
+    for (CardFormat f : {CardFormat::Standard, CardFormat::I10, CardFormat::Long})
+        candidates.push_back(f == CardFormat::Standard ? standard : keywords::layout(card, f));
+    candidates.push_back(narrowed_to_8(standard));
+    std::optional<WrittenWidths> found;
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+        const auto& c = candidates[i];
+        if (same_slots(c, read)) continue;
+        bool seen = false;
+        for (std::size_t j = 0; j < i; ++j) seen = seen || same_slots(candidates[j], c);
+        if (seen || !place_tokens(text, tokens, c, card, 0) || !aligned(tokens, c, 0, false)) continue;
+        if (found) return std::nullopt;
+        found = WrittenWidths{c, describe_widths(c)};
+    }
+    return found;
+}
+
+std::optional<std::string> rewrite_fields(std::string_view text, std::span<const FixedField> from,
+                                          std::span<const FixedField> to, const keywords::CardSpec& card) {
+    if (!cuttable(text, card)) return std::nullopt;
+    std::vector<LineToken> tokens = line_tokens(text);
+    if (!place_tokens(text, tokens, from, card, 0)) return std::nullopt;
+    std::string out;
+    for (const LineToken& t : tokens) {
+        if (t.slot >= to.size()) return std::nullopt;
+        const std::size_t length = t.end - t.begin;
+        const FixedField& slot = to[t.slot];
+        if (length > slot.width) return std::nullopt;
+        const std::size_t at = card.fields[t.slot].type == FieldType::Text ? slot.start : slot_end(slot) - length;
+        if (out.size() < at + length) out.resize(at + length, ' ');
+        out.replace(at, length, text.substr(t.begin, length));
+    }
+    return out;
+}
+
+std::string describe_widths(std::span<const FixedField> slots) {
+    std::vector<std::uint32_t> widths;
+    for (const FixedField& f : slots)
+        if (std::find(widths.begin(), widths.end(), f.width) == widths.end()) widths.push_back(f.width);
+    std::string out;
+    for (std::uint32_t w : widths) out += (out.empty() ? "" : "/") + std::to_string(w);
+    return out + "-column fields";
+}
+
+}  // namespace sphdeck::grammar

@@ -1,0 +1,62 @@
+// Why a fixed-format line reads wrong when its values are fine: the whole line sits a few columns off
+// its fields (a blank typed or deleted at its start), or the block was written in other field widths
+// (8-column fields where the keyword reads 10, standard where it reads long). Decided only when the
+// realigned reading is certain; the realigned text keeps every value character for character.
+// Called only on lines that already produced a finding or sit under a `$#` header, never on the bulk path.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "grammar/fields.hpp"
+#include "grammar/keywords/schema.hpp"
+#include "grammar/line_tokens.hpp"
+
+namespace sphdeck::grammar {
+
+// Gives every token of `text`, moved `shift` columns left, the field that holds it whole. False when a
+// token straddles two fields, lies outside the card's fields or in an unused one, two tokens share a
+// field, or a value does not read as its field's type.
+bool place_tokens(std::string_view text, std::vector<LineToken>& tokens, std::span<const FixedField> slots,
+                  const keywords::CardSpec& card, int shift);
+
+struct LineShift {
+    int columns = 0;               // > 0: the values sit right of their fields
+    bool changes_reading = false;  // a value is cut, glued or read in another field as written
+    bool from_header = false;      // decided by the `$#` header above the line
+    std::string realigned;         // the line with every value moved back into its field
+};
+
+// The shift of a line of `card` (fields at `slots`) by at most 4 columns, or nullopt. Evidence: every
+// value ends (or starts) exactly `columns` past its field's end (start) while read as is some value
+// straddles a boundary; or `header` (the `$#` comment line above, empty when none) names the fields
+// right-aligned to their ends and the values all end `columns` past them.
+std::optional<LineShift> find_shift(std::string_view text, std::string_view header, std::span<const FixedField> slots,
+                                    const keywords::CardSpec& card);
+
+struct WrittenWidths {
+    std::vector<FixedField> slots;  // where the values were written
+    std::string described;          // "8-column fields", "8/16-column fields"
+};
+
+// Field widths a line was evidently written in instead of `format`'s: the card's layout in another
+// format, or standard widths with every 10-column field written in 8. Every value must sit whole and
+// aligned in its field there, while read in `format` some value straddles.
+std::optional<WrittenWidths> find_written_widths(std::string_view text, const keywords::CardSpec& card,
+                                                 CardFormat format);
+
+// True when `text` reads cleanly in the fields at `slots` with every value aligned to its field.
+bool reads_aligned(std::string_view text, std::span<const FixedField> slots, const keywords::CardSpec& card);
+
+// `text` with each value moved from its field at `from` to the same field at `to` (right-aligned, text
+// left-aligned); nullopt when a value does not fit or does not sit whole in one field of `from`.
+std::optional<std::string> rewrite_fields(std::string_view text, std::span<const FixedField> from,
+                                          std::span<const FixedField> to, const keywords::CardSpec& card);
+
+// "8-column fields" or "8/16-column fields": the widths of `slots` in order, each once.
+std::string describe_widths(std::span<const FixedField> slots);
+
+}  // namespace sphdeck::grammar

@@ -1,0 +1,194 @@
+#include "model/shift_diagnosis.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "grammar/fields.hpp"
+#include "grammar/shifted_line.hpp"
+
+namespace sphdeck::model {
+namespace {
+
+constexpr std::size_t max_width_notes = 10;       // a block's folded findings shown as notes
+constexpr std::size_t max_fix_lines = 100000;     // past this a block's rewrite is left to a script
+constexpr std::size_t max_header_distance = 512;  // longest `$#` line looked back over
+
+grammar::Span line_span(const grammar::RawDeck& deck, const grammar::CardLine& line, bool from_first_value) {
+    const std::string_view text = deck.text(line);
+    std::size_t first = 0;
+    if (from_first_value)
+        while (first < text.size() && text[first] == ' ') ++first;
+    if (first == text.size()) first = 0;
+    return grammar::Span{line.file, line.line, static_cast<std::uint32_t>(first + 1),
+                         static_cast<std::uint32_t>(std::max<std::size_t>(text.size(), first + 1) + 1)};
+}
+
+diag::TextEdit whole_line_edit(const grammar::RawDeck& deck, const grammar::CardLine& line, std::string text) {
+    const auto length = static_cast<std::uint32_t>(deck.text(line).size());
+    return diag::TextEdit{grammar::Span{line.file, line.line, 1, length + 1}, std::move(text)};
+}
+
+std::string card_name(const keywords::CardSpec& card) {
+    std::string name(card.name.empty() ? "card" : card.name);
+    if (!name.empty()) name[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(name[0])));
+    return name;
+}
+
+std::string_view field_text(std::string_view text, const grammar::FixedField& f) {
+    return f.start >= text.size() ? std::string_view{} : grammar::trim_blanks(text.substr(f.start, f.width));
+}
+
+// "as written BOXID holds '15' and IDIM '0'; moved back, BOXID holds '150'": the fields that change.
+std::string reading_note(std::string_view written, std::string_view meant, std::span<const grammar::FixedField> slots,
+                         const keywords::CardSpec& card) {
+    std::string before, after;
+    std::size_t shown = 0;
+    for (std::size_t i = 0; i < slots.size() && i < card.fields.size() && shown < 4; ++i) {
+        const std::string_view a = field_text(written, slots[i]), b = field_text(meant, slots[i]);
+        if (a == b) continue;
+        ++shown;
+        before += fmt::format("{}{} '{}'", before.empty() ? "" : ", ", card.fields[i].name, a);
+        after += fmt::format("{}{} '{}'", after.empty() ? "" : ", ", card.fields[i].name, b);
+    }
+    if (before.empty()) return {};
+    return fmt::format("as written the fields read {}; with the values in their fields: {}", before, after);
+}
+
+std::optional<diag::Diagnostic> shifted_line(const grammar::RawDeck& deck, const grammar::Block& block,
+                                             const SuspectLine& s) {
+    const std::string_view text = deck.text(*s.line);
+    const auto slots = keywords::layout(*s.card, block.format);
+    auto shift = grammar::find_shift(text, header_above(deck, *s.line), slots, *s.card);
+    if (!shift) return std::nullopt;
+    const int n = std::abs(shift->columns);
+    const char* side = shift->columns > 0 ? "right" : "left";
+    diag::Diagnostic d{"DK029", shift->changes_reading ? diag::Severity::Error : diag::Severity::Warning,
+                       fmt::format("line shifted {} column{} {} of the fields of {} {}", n, n == 1 ? "" : "s", side,
+                                   block.keyword, card_name(*s.card)),
+                       line_span(deck, *s.line, true), {}};
+    if (auto note = reading_note(text, shift->realigned, slots, *s.card); !note.empty())
+        d.notes.push_back({grammar::Span{}, std::move(note)});
+    if (shift->from_header)
+        d.notes.push_back({grammar::Span{}, "the `$#` header above names the fields at their columns"});
+    d.fixes.push_back(diag::Fix{fmt::format("move the values {} column{} {} into their fields", n, n == 1 ? "" : "s",
+                                            shift->columns > 0 ? "left" : "right"),
+                                true, {whole_line_edit(deck, *s.line, std::move(shift->realigned))}});
+    return d;
+}
+
+// Every line of the block written in `written` and not read cleanly as is, rewritten at `read`.
+std::vector<diag::TextEdit> rewrite_block(const grammar::RawDeck& deck, const grammar::Block& block,
+                                             const keywords::CardSpec& card,
+                                             std::span<const grammar::FixedField> written,
+                                             std::span<const grammar::FixedField> read) {
+    std::vector<diag::TextEdit> edits;
+    if (block.line_count > max_fix_lines) return edits;
+    for (const grammar::CardLine* l = deck.begin_lines(block); l != deck.end_lines(block); ++l) {
+        const std::string_view text = deck.text(*l);
+        if (!grammar::reads_aligned(text, written, card) || grammar::reads_aligned(text, read, card)) continue;
+        if (auto rewritten = grammar::rewrite_fields(text, written, read, card))
+            edits.push_back(whole_line_edit(deck, *l, std::move(*rewritten)));
+    }
+    return edits;
+}
+
+std::optional<diag::Diagnostic> wrong_widths(const grammar::RawDeck& deck, const grammar::Block& block,
+                                             std::span<const SuspectLine> suspects) {
+    constexpr std::size_t tried = 8;
+    for (std::size_t i = 0; i < suspects.size() && i < tried; ++i) {
+        const SuspectLine& s = suspects[i];
+        auto written = grammar::find_written_widths(deck.text(*s.line), *s.card, block.format);
+        if (!written) continue;
+        // The other lines of the same card must agree: a width is a property of the block.
+        for (const SuspectLine& other : suspects)
+            if (other.card == s.card && !grammar::reads_aligned(deck.text(*other.line), written->slots, *s.card))
+                return std::nullopt;
+        const auto read = keywords::layout(*s.card, block.format);
+        const grammar::CardLine& first = deck.lines[block.first_line];
+        diag::Diagnostic d{"DK030", diag::Severity::Error,
+                           fmt::format("{} lines written in {} where {} reads {}", block.keyword, written->described,
+                                       block.keyword, grammar::describe_widths(read)),
+                           line_span(deck, first, true), {}};
+        if (block.format != grammar::CardFormat::Standard)
+            d.notes.push_back({block.span, fmt::format("the block is in {} format", grammar::to_string(block.format))});
+        auto edits = rewrite_block(deck, block, *s.card, written->slots, read);
+        if (!edits.empty())
+            d.fixes.push_back(diag::Fix{fmt::format("rewrite {} line(s) of the block in {}", edits.size(),
+                                                    grammar::describe_widths(read)),
+                                        true, std::move(edits)});
+        return d;
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::string_view header_above(const grammar::RawDeck& deck, const grammar::CardLine& line) {
+    const std::string_view file = deck.sources.file(line.file).text;
+    if (line.offset < 3 || line.offset > file.size() || file[line.offset - 1] != '\n') return {};
+    std::size_t end = line.offset - 1;  // the '\n' ending the line above
+    const std::size_t floor = end > max_header_distance ? end - max_header_distance : 0;
+    std::size_t begin = end;
+    while (begin > floor && file[begin - 1] != '\n') --begin;
+    if (begin > 0 && file[begin - 1] != '\n') return {};  // longer than any header
+    if (end > begin && file[end - 1] == '\r') --end;
+    const std::string_view above = file.substr(begin, end - begin);
+    return above.size() >= 2 && above[0] == '$' && above[1] == '#' ? above : std::string_view{};
+}
+
+bool follows_from_shift(std::string_view code) {
+    static constexpr std::string_view codes[] = {"DK002", "DK003", "DK004", "DK005", "DK006", "DK007", "DK008"};
+    return std::find(std::begin(codes), std::end(codes), code) != std::end(codes);
+}
+
+void fold_into(diag::Diagnostic& cause, diag::Diagnostic&& d) {
+    cause.notes.push_back({d.span, fmt::format("{} [{}]", d.message, d.code)});
+}
+
+void diagnose_shifts(const grammar::RawDeck& deck, const grammar::Block& block, std::span<const SuspectLine> suspects,
+                     std::vector<diag::Diagnostic>& out, std::size_t from) {
+    if (suspects.empty()) return;
+    std::vector<diag::Diagnostic> causes;
+    const bool widths = [&] {
+        auto d = wrong_widths(deck, block, suspects);
+        if (d) causes.push_back(std::move(*d));
+        return d.has_value();
+    }();
+    if (!widths)
+        for (const SuspectLine& s : suspects)
+            if (auto d = shifted_line(deck, block, s)) causes.push_back(std::move(*d));
+    if (causes.empty()) return;
+
+    const grammar::CardLine& first = deck.lines[block.first_line];
+    const grammar::CardLine& last = deck.lines[block.first_line + block.line_count - 1];
+    std::size_t hidden = 0;
+    std::vector<diag::Diagnostic> kept;
+    for (std::size_t i = from; i < out.size(); ++i) {
+        diag::Diagnostic& d = out[i];
+        if (!follows_from_shift(d.code) || d.span.file != first.file) {
+            kept.push_back(std::move(d));
+            continue;
+        }
+        if (widths && d.span.line >= first.line && d.span.line <= last.line) {
+            if (causes[0].notes.size() < max_width_notes) fold_into(causes[0], std::move(d));
+            else ++hidden;
+            continue;
+        }
+        auto cause = std::find_if(causes.begin(), causes.end(),
+                                  [&](const diag::Diagnostic& c) { return c.span.line == d.span.line; });
+        if (!widths && cause != causes.end()) fold_into(*cause, std::move(d));
+        else kept.push_back(std::move(d));
+    }
+    if (hidden > 0)
+        causes[0].notes.push_back(
+            {grammar::Span{}, fmt::format("and {} more finding(s) on the lines of this block", hidden)});
+    out.erase(out.begin() + static_cast<std::ptrdiff_t>(from), out.end());
+    for (auto& d : kept) out.push_back(std::move(d));
+    for (auto& d : causes) out.push_back(std::move(d));
+}
+
+}  // namespace sphdeck::model

@@ -1,0 +1,40 @@
+// The cause behind a block's reading findings when it is one: a line shifted a few columns off its
+// fields (DK029) or a block written in other field widths (DK030). Runs once per block on the lines
+// that produced a finding or sit under a `$#` header (a few, never every line of a bulk block); the
+// findings that follow from the cause on those lines become notes of the one finding that names it.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "diag/diagnostic.hpp"
+#include "grammar/keywords/schema.hpp"
+#include "grammar/raw_deck.hpp"
+
+namespace sphdeck::model {
+
+struct SuspectLine {
+    const grammar::CardLine* line = nullptr;
+    const keywords::CardSpec* card = nullptr;
+};
+
+// At most this many lines of a block are looked at.
+inline constexpr std::size_t max_suspect_lines = 64;
+
+// The `$#` comment line right above `line` (LS-PrePost's and pydyna's field names), or empty.
+std::string_view header_above(const grammar::RawDeck& deck, const grammar::CardLine& line);
+
+// Diagnoses `block` from its suspect lines; its findings are out[from, end), and stay there unless
+// folded into a cause.
+void diagnose_shifts(const grammar::RawDeck& deck, const grammar::Block& block, std::span<const SuspectLine> suspects,
+                     std::vector<diag::Diagnostic>& out, std::size_t from);
+
+// The reading findings a shift or a wrong width explains (DK002-DK008): folded into the cause.
+bool follows_from_shift(std::string_view code);
+
+// Moves `d` into `cause` as a note "message [CODE]" at its span.
+void fold_into(diag::Diagnostic& cause, diag::Diagnostic&& d);
+
+}  // namespace sphdeck::model
