@@ -110,8 +110,8 @@ std::optional<diag::Diagnostic> wrong_widths(const grammar::RawDeck& deck, const
         const auto read = keywords::layout(*s.card, block.format);
         const grammar::CardLine& first = deck.lines[block.first_line];
         diag::Diagnostic d{"DK030", diag::Severity::Error,
-                           fmt::format("{} lines written in {} where {} reads {}", block.keyword, written->described,
-                                       block.keyword, grammar::describe_widths(read)),
+                           fmt::format("lines written in {} where {} reads {}", written->described, block.keyword,
+                                       grammar::describe_widths(read)),
                            line_span(deck, first, true), {}};
         if (block.format != grammar::CardFormat::Standard)
             d.notes.push_back({block.span, fmt::format("the block is in {} format", grammar::to_string(block.format))});
