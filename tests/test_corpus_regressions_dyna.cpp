@@ -186,8 +186,8 @@ TEST_CASE("corpus: a word too long for a number field is one finding (DK003), a 
 
 TEST_CASE("corpus: a number glued across a field boundary says so in a note on its DK003") {
     auto r = engine::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n     1.0E-3\n*DEFINE_CURVE\n         1\n"
-                                "       9.99990000E+03      0.00000000E+00\n*END\n",
-                                "d.k");
+                                "       9.99990000E+03     0.00000000E+00\n*END\n",
+                                "d.k");  // O1 in its field: no whole-line shift (that is DK029)
     REQUIRE(count_code(r.diagnostics, "DK003") == 2);
     std::vector<std::string> notes;
     for (const auto& d : r.diagnostics)
