@@ -13,9 +13,10 @@ bool text_card(const keywords::CardSpec& card) {
     return !card.fields.empty() && card.fields[0].type == FieldType::Text && card.fields[0].width >= 70;
 }
 
-bool cuttable(std::string_view text, const keywords::CardSpec& card) {
-    return text.find('\t') == std::string_view::npos && !is_free_format(text) && !text_card(card);
+bool cuttable(std::string_view text) {
+    return text.find('\t') == std::string_view::npos && !is_free_format(text);
 }
+bool cuttable(std::string_view text, const keywords::CardSpec& card) { return cuttable(text) && !text_card(card); }
 
 std::size_t slot_end(const FixedField& f) { return std::size_t{f.start} + f.width; }
 
@@ -83,17 +84,23 @@ std::vector<FixedField> narrowed_to_8(std::span<const FixedField> standard) {
 
 }  // namespace
 
+std::vector<FieldType> field_types(const keywords::CardSpec& card) {
+    std::vector<FieldType> types;
+    for (const auto& f : card.fields) types.push_back(f.type);
+    return types;
+}
+
 bool place_tokens(std::string_view text, std::vector<LineToken>& tokens, std::span<const FixedField> slots,
-                  const keywords::CardSpec& card, int shift) {
-    const std::size_t fields = std::min(slots.size(), card.fields.size());
+                  std::span<const FieldType> types, int shift) {
+    const std::size_t fields = std::min(slots.size(), types.size());
     std::vector<bool> taken(fields, false);
     for (LineToken& t : tokens) {
         const auto b = static_cast<std::ptrdiff_t>(t.begin) - shift, e = static_cast<std::ptrdiff_t>(t.end) - shift;
         if (b < 0) return false;
         std::size_t s = 0;
         while (s < fields && !(static_cast<std::ptrdiff_t>(slots[s].start) <= b && e <= static_cast<std::ptrdiff_t>(slot_end(slots[s])))) ++s;
-        if (s == fields || taken[s] || card.fields[s].type == FieldType::Unused) return false;
-        if (!reads_as(text.substr(t.begin, t.end - t.begin), card.fields[s].type)) return false;
+        if (s == fields || taken[s] || types[s] == FieldType::Unused) return false;
+        if (!reads_as(text.substr(t.begin, t.end - t.begin), types[s])) return false;
         taken[s] = true;
         t.slot = s;
     }
@@ -102,15 +109,22 @@ bool place_tokens(std::string_view text, std::vector<LineToken>& tokens, std::sp
 
 std::optional<LineShift> find_shift(std::string_view text, std::string_view header, std::span<const FixedField> slots,
                                     const keywords::CardSpec& card) {
-    if (!cuttable(text, card)) return std::nullopt;
+    if (text_card(card)) return std::nullopt;
+    const auto types = field_types(card);
+    return find_shift(text, header, slots, types);
+}
+
+std::optional<LineShift> find_shift(std::string_view text, std::string_view header, std::span<const FixedField> slots,
+                                    std::span<const FieldType> types) {
+    if (!cuttable(text)) return std::nullopt;
     std::vector<LineToken> tokens = line_tokens(text);
     if (tokens.size() < 2) return std::nullopt;  // one value shows no consistent shift
-    const bool by_header = header_aligned(header, slots, card.fields.size());
-    const bool clean = place_tokens(text, tokens, slots, card, 0);
+    const bool by_header = header_aligned(header, slots, types.size());
+    const bool clean = place_tokens(text, tokens, slots, types, 0);
     if (clean && (!by_header || aligned(tokens, slots, 0, true))) return std::nullopt;
     std::optional<LineShift> found;
     for (int n = -max_shift; n <= max_shift; ++n) {
-        if (n == 0 || !place_tokens(text, tokens, slots, card, n)) continue;
+        if (n == 0 || !place_tokens(text, tokens, slots, types, n)) continue;
         const bool header_says = by_header && aligned(tokens, slots, n, true);
         const bool straddles_say = !clean && aligned(tokens, slots, n, false);
         if (!header_says && !straddles_say) continue;
@@ -123,7 +137,7 @@ std::optional<LineShift> find_shift(std::string_view text, std::string_view head
 
 bool reads_aligned(std::string_view text, std::span<const FixedField> slots, const keywords::CardSpec& card) {
     std::vector<LineToken> tokens = line_tokens(text);
-    return place_tokens(text, tokens, slots, card, 0) && aligned(tokens, slots, 0, false);
+    return place_tokens(text, tokens, slots, field_types(card), 0) && aligned(tokens, slots, 0, false);
 }
 
 std::optional<WrittenWidths> find_written_widths(std::string_view text, const keywords::CardSpec& card,
@@ -132,7 +146,8 @@ std::optional<WrittenWidths> find_written_widths(std::string_view text, const ke
     std::vector<LineToken> tokens = line_tokens(text);
     if (tokens.size() < 2) return std::nullopt;
     const std::vector<FixedField> read = keywords::layout(card, format);
-    if (place_tokens(text, tokens, read, card, 0)) return std::nullopt;
+    const auto types = field_types(card);
+    if (place_tokens(text, tokens, read, types, 0)) return std::nullopt;
     std::vector<std::vector<FixedField>> candidates;
     const std::vector<FixedField> standard = keywords::layout(card, CardFormat::Standard);
     for (CardFormat f : {CardFormat::Standard, CardFormat::I10, CardFormat::Long})
@@ -144,7 +159,7 @@ std::optional<WrittenWidths> find_written_widths(std::string_view text, const ke
         if (same_slots(c, read)) continue;
         bool seen = false;
         for (std::size_t j = 0; j < i; ++j) seen = seen || same_slots(candidates[j], c);
-        if (seen || !place_tokens(text, tokens, c, card, 0) || !aligned(tokens, c, 0, false)) continue;
+        if (seen || !place_tokens(text, tokens, c, types, 0) || !aligned(tokens, c, 0, false)) continue;
         if (found) return std::nullopt;
         found = WrittenWidths{c, describe_widths(c)};
     }
@@ -155,7 +170,7 @@ std::optional<std::string> rewrite_fields(std::string_view text, std::span<const
                                           std::span<const FixedField> to, const keywords::CardSpec& card) {
     if (!cuttable(text, card)) return std::nullopt;
     std::vector<LineToken> tokens = line_tokens(text);
-    if (!place_tokens(text, tokens, from, card, 0)) return std::nullopt;
+    if (!place_tokens(text, tokens, from, field_types(card), 0)) return std::nullopt;
     std::string out;
     for (const LineToken& t : tokens) {
         if (t.slot >= to.size()) return std::nullopt;

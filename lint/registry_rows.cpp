@@ -124,6 +124,8 @@ constexpr RuleInfo kRows[] = {
      "/PROP/SPH Order outside -1, 0, 1 (the engine ignores it)"},
     {"RAD029", "radioss-2d", Error, "0.1.0", "reference",
      "a 2D SPH model: Radioss SPH is 3D only"},
+    {"RAD030", "straddling-value", Error, "0.1.0", "reader",
+     "a number written across the end of its cell: the starter keeps the part inside and reads the rest elsewhere"},
 
     // REF: references between definitions (ids of nodes, parts, sections, materials, sets).
     {"REF001", "undefined-node", Error, "0.1.0", "references",

@@ -8,6 +8,7 @@
 #include "grammar/value.hpp"
 #include "model/card_decoder.hpp"  // the integer range both decoders enforce
 #include "model/radioss_parameters.hpp"
+#include "model/radioss_straddles.hpp"
 
 namespace sphdeck::model {
 
@@ -77,6 +78,7 @@ const std::vector<grammar::FixedField>& RadiossCardDecoder::layout_of(const gram
 void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const grammar::radioss::CardSpec& card,
                                       int version, std::vector<RadiossValue>& values, std::string_view newer,
                                       bool trailing_checked) {
+    const std::size_t found_before = out_.size();
     const std::vector<grammar::FixedField>& positions = layout_of(card, version);
     const std::uint32_t end = positions.empty() ? 0 : positions.back().start + std::min(positions.back().width, 1u << 20);
     const bool text_card = !card.fields.empty() && card.fields.front().cell == Cell::Line;
@@ -122,6 +124,10 @@ void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const gramm
         if (v.spec->cell == Cell::Skip || v.spec->cell == Cell::Skip20) continue;
         read_value(v, fields_[i].text, !cut.free_format);
     }
+    if (!text_card && !cut.free_format && !cut.has_tab)
+        diagnose_radioss_line(deck_, line, card, positions,
+                              block_ < deck_.blocks.size() ? std::string_view(deck_.blocks[block_].keyword) : "its card",
+                              out_, found_before);
 }
 
 // Engine data lines are read by Fortran list-directed input: tokens separated by blanks or commas.

@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -140,4 +141,37 @@ TEST_CASE("DK030: one finding for the block, its fix rewrites every line in the 
                    "         1         0         1         1         1         0         0         0\n"
                    "         2         0         1         0         1         0         0         0\n*END\n");
     CHECK(engine::check_buffer(fixed, "d.k").diagnostics.empty());
+}
+
+TEST_CASE("OpenRadioss: a /PROP line one column right is one DK029; its fix gives the deck as written before") {
+    std::ifstream in(std::string(SPHDECK_SOURCE_DIR) + "/decks/tests/rad/DK029_prop_fires.rad");
+    REQUIRE(in);
+    std::stringstream whole;
+    whole << in.rdbuf();
+    const std::string text = whole.str();
+    auto r = engine::check_buffer(text, "prop_0000.rad", {}, grammar::DeckFormat::Radioss);
+    const diag::Diagnostic* d = only(r, "DK029");
+    REQUIRE(d);
+    CHECK(count_code(r.diagnostics, "RAD025") == 0);  // notes of the DK029
+    REQUIRE(d->fixes.size() == 1);
+    const std::string fixed = apply(text, d->fixes[0]);
+    CHECK(fixed.find("\n              8.0E-6                 2.0                 1.0") != std::string::npos);
+    auto again = engine::check_buffer(fixed, "prop_0000.rad", {}, grammar::DeckFormat::Radioss);
+    CHECK(diag::count(again.diagnostics).errors == 0);
+    CHECK(count_code(again.diagnostics, "DK029") == 0);
+}
+
+TEST_CASE("OpenRadioss: a value across a cell boundary says what the starter keeps and where the rest goes") {
+    std::ifstream in(std::string(SPHDECK_SOURCE_DIR) + "/decks/tests/rad/RAD030_fires.rad");
+    REQUIRE(in);
+    std::stringstream whole;
+    whole << in.rdbuf();
+    auto r = engine::check_buffer(whole.str(), "straddle_0000.rad", {}, grammar::DeckFormat::Radioss);
+    const diag::Diagnostic* d = only(r, "RAD030");
+    REQUIRE(d);
+    CHECK(d->message == "'2.4' straddles the end of cell h (columns 11-30): the starter reads h as '2.' and '4' is "
+                        "read as the start of Xi_Stab (columns 31-50)");
+    CHECK(count_code(r.diagnostics, "RAD025") == 0);
+    REQUIRE(d->notes.size() == 1);
+    CHECK(d->notes[0].message.ends_with("[RAD025]"));
 }

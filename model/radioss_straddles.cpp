@@ -1,0 +1,141 @@
+#include "model/radioss_straddles.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+
+#include <fmt/format.h>
+
+#include "grammar/shifted_line.hpp"
+#include "grammar/value.hpp"
+#include "model/shift_diagnosis.hpp"
+
+namespace sphdeck::model {
+namespace {
+
+using grammar::radioss::Cell;
+using keywords::FieldType;
+
+bool numeric(Cell c) { return c == Cell::Int || c == Cell::Real; }
+bool blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+FieldType type_of(Cell c) {
+    switch (c) {
+        case Cell::Int: return FieldType::Integer;
+        case Cell::Real: return FieldType::Real;
+        case Cell::Skip:
+        case Cell::Skip20: return FieldType::Unused;
+        default: return FieldType::Text;
+    }
+}
+
+// A number glued across the end of cell `cell`: the boundary's two sides are not blank and the run
+// of characters around it reads as one number. Values packed against each other are not one: a cell
+// filled from its first column, or a next value that ends at its cell's end (machine-written decks
+// write ids and full-width reals touching, "      10621.52587890625000E-05").
+struct Straddle {
+    std::size_t cell = 0;
+    std::size_t begin = 0, boundary = 0, end = 0;  // 0-based columns of the run
+};
+
+std::vector<Straddle> straddles(std::string_view text, const grammar::radioss::CardSpec& card,
+                                std::span<const grammar::FixedField> positions) {
+    std::vector<Straddle> out;
+    for (std::size_t i = 0; i < positions.size() && i < card.fields.size(); ++i) {
+        const std::size_t b = std::size_t{positions[i].start} + positions[i].width;
+        if (b == 0 || b >= text.size() || blank(text[b - 1]) || blank(text[b])) continue;
+        if (!numeric(card.fields[i].cell)) continue;
+        if (i + 1 < positions.size() && positions[i + 1].start != b) continue;  // not adjacent
+        std::size_t s = b, e = b;
+        while (s > 0 && !blank(text[s - 1])) --s;
+        while (e < text.size() && !blank(text[e])) ++e;
+        const bool packed = s == positions[i].start ||
+                            (i + 1 < positions.size() && e == std::size_t{positions[i + 1].start} + positions[i + 1].width);
+        if (packed || grammar::parse_real(text.substr(s, e - s)).status != grammar::NumberStatus::Ok) continue;
+        out.push_back({i, s, b, e});
+    }
+    return out;
+}
+
+std::string cell_columns(const grammar::FixedField& f) { return fmt::format("columns {}-{}", f.start + 1, f.start + f.width); }
+
+diag::Diagnostic straddle_finding(const grammar::CardLine& line, std::string_view text,
+                                  const grammar::radioss::CardSpec& card,
+                                  std::span<const grammar::FixedField> positions, const Straddle& s) {
+    const auto& here = card.fields[s.cell];
+    const std::string_view whole = text.substr(s.begin, s.end - s.begin);
+    const std::string_view kept = text.substr(s.begin, s.boundary - s.begin);
+    const std::string_view lost = text.substr(s.boundary, s.end - s.boundary);
+    std::string where;
+    if (s.cell + 1 >= card.fields.size() || s.cell + 1 >= positions.size())
+        where = fmt::format("'{}' past the last cell is not read", lost);
+    else if (!numeric(card.fields[s.cell + 1].cell) && type_of(card.fields[s.cell + 1].cell) == FieldType::Unused)
+        where = fmt::format("'{}' falls in an unused cell and is lost", lost);
+    else
+        where = fmt::format("'{}' is read as the start of {} ({})", lost, card.fields[s.cell + 1].name,
+                            cell_columns(positions[s.cell + 1]));
+    return diag::Diagnostic{
+        "RAD030", diag::Severity::Error,
+        fmt::format("'{}' straddles the end of cell {} ({}): the starter reads {} as '{}' and {}", whole, here.name,
+                    cell_columns(positions[s.cell]), here.name, kept, where),
+        grammar::Span{line.file, line.line, static_cast<std::uint32_t>(s.begin + 1),
+                      static_cast<std::uint32_t>(s.end + 1)},
+        {}};
+}
+
+bool within(const diag::Diagnostic& d, const grammar::CardLine& line, std::size_t begin, std::size_t end) {
+    return d.span.file == line.file && d.span.line == line.line && d.span.column >= 1 &&
+           d.span.column - 1 >= begin && d.span.column - 1 < end;
+}
+
+// Moves the findings of out[from, end) that `take` accepts into notes of `cause`, then appends it.
+template <class Take>
+void fold_and_add(std::vector<diag::Diagnostic>& out, std::size_t from, diag::Diagnostic cause, Take take) {
+    std::vector<diag::Diagnostic> kept;
+    for (std::size_t i = from; i < out.size(); ++i) {
+        if (take(out[i])) fold_into(cause, std::move(out[i]));
+        else kept.push_back(std::move(out[i]));
+    }
+    out.erase(out.begin() + static_cast<std::ptrdiff_t>(from), out.end());
+    for (auto& d : kept) out.push_back(std::move(d));
+    out.push_back(std::move(cause));
+}
+
+}  // namespace
+
+void diagnose_radioss_line(const grammar::RawDeck& deck, const grammar::CardLine& line,
+                           const grammar::radioss::CardSpec& card, std::span<const grammar::FixedField> positions,
+                           std::string_view keyword, std::vector<diag::Diagnostic>& out, std::size_t from) {
+    const std::string_view text = deck.text(line);
+    auto glued = straddles(text, card, positions);
+    if (glued.empty() && out.size() == from) return;
+    std::vector<FieldType> types;
+    for (const auto& f : card.fields) types.push_back(type_of(f.cell));
+    if (auto shift = grammar::find_shift(text, {}, positions, types)) {
+        const int n = std::abs(shift->columns);
+        diag::Diagnostic d{"DK029", shift->changes_reading ? diag::Severity::Error : diag::Severity::Warning,
+                           fmt::format("line shifted {} column{} {} of the cells of {}", n, n == 1 ? "" : "s",
+                                       shift->columns > 0 ? "right" : "left", keyword),
+                           grammar::Span{line.file, line.line,
+                                         static_cast<std::uint32_t>(text.find_first_not_of(' ') + 1),
+                                         static_cast<std::uint32_t>(text.size() + 1)},
+                           {}};
+        d.fixes.push_back(diag::Fix{fmt::format("move the values {} column{} {} into their cells", n,
+                                                n == 1 ? "" : "s", shift->columns > 0 ? "left" : "right"),
+                                    true,
+                                    {diag::TextEdit{grammar::Span{line.file, line.line, 1,
+                                                                  static_cast<std::uint32_t>(text.size() + 1)},
+                                                    std::move(shift->realigned)}}});
+        fold_and_add(out, from, std::move(d), [](const diag::Diagnostic&) { return true; });
+        return;
+    }
+    for (const Straddle& s : glued) {
+        const std::size_t begin = positions[s.cell].start;
+        const std::size_t end = s.cell + 1 < positions.size()
+                                    ? std::size_t{positions[s.cell + 1].start} + positions[s.cell + 1].width
+                                    : text.size() + 1;
+        fold_and_add(out, from, straddle_finding(line, text, card, positions, s),
+                     [&](const diag::Diagnostic& d) { return d.code != "RAD030" && within(d, line, begin, end); });
+    }
+}
+
+}  // namespace sphdeck::model

@@ -1,0 +1,25 @@
+// OpenRadioss fixed cells read by their columns: a value written across a cell boundary is cut there
+// (RAD030 says which part the starter keeps and where the rest goes), and a whole line moved a few
+// columns off its cells is one DK029 with the realigned line as its fix. The findings of the line that
+// follow (RAD025 in the next cell, not a number...) become notes of that one finding.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "diag/diagnostic.hpp"
+#include "grammar/fields.hpp"
+#include "grammar/radioss/cards.hpp"
+#include "grammar/raw_deck.hpp"
+
+namespace sphdeck::model {
+
+// Looks at `line` (fixed format, cut at `positions`) after its values were read, with the line's
+// findings at out[from, end). Cheap when nothing is glued across a boundary and nothing was found.
+void diagnose_radioss_line(const grammar::RawDeck& deck, const grammar::CardLine& line,
+                           const grammar::radioss::CardSpec& card, std::span<const grammar::FixedField> positions,
+                           std::string_view keyword, std::vector<diag::Diagnostic>& out, std::size_t from);
+
+}  // namespace sphdeck::model
