@@ -146,7 +146,11 @@ bool follows_from_shift(std::string_view code) {
 }
 
 void fold_into(diag::Diagnostic& cause, diag::Diagnostic&& d) {
-    cause.notes.push_back({d.span, fmt::format("{} [{}]", d.message, d.code)});
+    // On the cause's own line a code frame would show the same line again: the column says where.
+    if (d.span.valid() && d.span.file == cause.span.file && d.span.line == cause.span.line)
+        cause.notes.push_back({grammar::Span{}, fmt::format("column {}: {} [{}]", d.span.column, d.message, d.code)});
+    else
+        cause.notes.push_back({d.span, fmt::format("{} [{}]", d.message, d.code)});
 }
 
 void diagnose_shifts(const grammar::RawDeck& deck, const grammar::Block& block, std::span<const SuspectLine> suspects,

@@ -34,7 +34,8 @@ void diagnose_shifts(const grammar::RawDeck& deck, const grammar::Block& block, 
 // The reading findings a shift or a wrong width explains (DK002-DK008): folded into the cause.
 bool follows_from_shift(std::string_view code);
 
-// Moves `d` into `cause` as a note "message [CODE]" at its span.
+// Moves `d` into `cause` as a note "message [CODE]" at its span ("column N: message [CODE]" without a
+// span when it is on the cause's line).
 void fold_into(diag::Diagnostic& cause, diag::Diagnostic&& d);
 
 }  // namespace sphdeck::model
