@@ -1,16 +1,18 @@
 // textDocument/codeAction: for each sphdeck diagnostic of the request's context, suppress its rule
 // for the card (or block) or for the file with the existing comment directives
 // (lint/suppressions.hpp: `$ sphdeck: disable=CODE`, `disable-file=`; `#` in Radioss decks), and
-// realign values that stray over their columns where that fix is certain (lsp/realign.hpp).
+// realign values that stray over their columns where that fix is certain (grammar/realign.hpp), and the
+// mends a finding carries itself (DK029, DK030).
+#include <cctype>
 #include <fmt/format.h>
 #include <string>
 
+#include "grammar/realign.hpp"
 #include "lint/registry.hpp"
 #include "lint/suppressions.hpp"
 #include "lsp/deck_lookup.hpp"
 #include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
-#include "grammar/realign.hpp"
 #include "lsp/uri.hpp"
 
 namespace sphdeck::lsp {
@@ -111,6 +113,35 @@ std::optional<nlohmann::json> realign(const Request& r, std::uint32_t line0, con
                   true);
 }
 
+// The mends the finding itself carries (diag::Fix: DK029's realigned line, DK030's rewritten block), for
+// the finding of `code` that starts on this line of this file.
+void carried_fixes(const Request& r, const std::string& code, std::uint32_t line0, const nlohmann::json& diagnostic,
+                   nlohmann::json& out) {
+    const auto& sources = r.deck.result.deck.sources;
+    for (const diag::Diagnostic& found : r.deck.result.diagnostics) {
+        if (found.code != code || found.span.file != r.file || found.span.line != line0 + 1) continue;
+        for (const diag::Fix& fix : found.fixes) {
+            nlohmann::json edits = nlohmann::json::array();
+            for (const diag::TextEdit& e : fix.edits) {
+                if (e.span.file != r.file || e.span.line == 0) continue;
+                const std::string_view text = sources.line_text(e.span.file, e.span.line);
+                edits.push_back(text_edit(e.span.line - 1, utf16_offset(text, e.span.column - 1), e.span.line - 1,
+                                          utf16_offset(text, e.span.end_column - 1), display_text(e.replacement)));
+            }
+            if (edits.empty()) continue;
+            std::string title = fix.description;
+            if (!title.empty()) title[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(title[0])));
+            nlohmann::json a = {{"title", std::move(title)},
+                                {"kind", "quickfix"},
+                                {"diagnostics", nlohmann::json::array({diagnostic})},
+                                {"edit", {{"changes", {{r.uri, std::move(edits)}}}}}};
+            if (fix.safe) a["isPreferred"] = true;
+            out.push_back(std::move(a));
+        }
+        return;
+    }
+}
+
 }  // namespace
 
 nlohmann::json code_actions(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json& params) {
@@ -135,6 +166,7 @@ nlohmann::json code_actions(const CheckedDeck& deck, grammar::FileId file, const
         const std::string code = d["code"].get<std::string>();
         if (code == "DK002" || code == "DK003")
             if (auto fix = realign(r, start.line, d)) out.push_back(std::move(*fix));
+        carried_fixes(r, code, start.line, d, out);
         const lint::RuleInfo* rule = lint::find_rule(code);
         if (!rule || rule->code != code) continue;  // a directive names rules the registry knows
         out.push_back(card_suppression(r, code, start.line, d));

@@ -330,6 +330,27 @@ TEST_CASE("lsp code actions: suppression comments and the realignment of a value
           "*KEYWORD\n$ sphdeck: disable=DK002,DK004\n*CONTROL_TERMINATION\n      1.0E-3\n*END\n");
 }
 
+TEST_CASE("lsp code actions: a finding's own fix (DK029: the shifted line moved back)") {
+    const std::string text = "*KEYWORD\n*CONTROL_TERMINATION\n       1.0E-3         0       0.0\n*END\n";
+    const auto deck = check(text);
+    REQUIRE(count_code(deck, "DK029") == 1);
+    nlohmann::json diagnostic;
+    for (const auto& d : published(deck))
+        if (d["code"] == "DK029") diagnostic = d;
+    auto actions = ask(deck, "textDocument/codeAction",
+                       {{"textDocument", {{"uri", "file:///tmp/main.k"}}},
+                        {"range", diagnostic["range"]},
+                        {"context", {{"diagnostics", {diagnostic}}}}});
+    REQUIRE(actions.size() == 3);  // the fix, then the two suppressions
+    CHECK(actions[0]["title"] == "Move the values 3 columns left into their fields");
+    CHECK(actions[0]["isPreferred"] == true);
+    const std::string edited = apply(text, actions[0]["edit"]["changes"]["file:///tmp/main.k"]);
+    CHECK(edited == "*KEYWORD\n*CONTROL_TERMINATION\n    1.0E-3         0       0.0\n*END\n");
+    auto fixed = check(edited);
+    CHECK(fixed.result.diagnostics.empty());
+    CHECK(fixed.result.model.controls.endtim.value == doctest::Approx(1.0e-3));
+}
+
 TEST_CASE("lsp realign: only when the result is certain") {
     keywords::CardSpec card{.fields = {{.name = "A", .column = 1, .width = 10, .type = keywords::FieldType::Real},
                                        {.name = "B", .column = 11, .width = 10, .type = keywords::FieldType::Real}}};
