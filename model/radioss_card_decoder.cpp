@@ -124,8 +124,9 @@ void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const gramm
         if (v.spec->cell == Cell::Skip || v.spec->cell == Cell::Skip20) continue;
         read_value(v, fields_[i].text, !cut.free_format);
     }
-    if (!text_card && !cut.free_format && !cut.has_tab)
-        diagnose_radioss_line(deck_, line, card, positions,
+    if (!text_card && !cut.free_format && !cut.has_tab &&
+        (out_.size() > found_before || glued_across_cells(text, positions)))
+        diagnose_radioss_line(line, text, card, positions,
                               block_ < deck_.blocks.size() ? std::string_view(deck_.blocks[block_].keyword) : "its card",
                               out_, found_before);
 }

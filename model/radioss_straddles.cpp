@@ -102,10 +102,9 @@ void fold_and_add(std::vector<diag::Diagnostic>& out, std::size_t from, diag::Di
 
 }  // namespace
 
-void diagnose_radioss_line(const grammar::RawDeck& deck, const grammar::CardLine& line,
+void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
                            const grammar::radioss::CardSpec& card, std::span<const grammar::FixedField> positions,
                            std::string_view keyword, std::vector<diag::Diagnostic>& out, std::size_t from) {
-    const std::string_view text = deck.text(line);
     auto glued = straddles(text, card, positions);
     if (glued.empty() && out.size() == from) return;
     std::vector<FieldType> types;

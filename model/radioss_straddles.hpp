@@ -16,9 +16,20 @@
 
 namespace sphdeck::model {
 
-// Looks at `line` (fixed format, cut at `positions`) after its values were read, with the line's
+// True when two non-blank characters touch across the end of a cell: the only lines besides those
+// with findings that diagnose_radioss_line looks at (inline: it runs on every fixed line).
+inline bool glued_across_cells(std::string_view text, std::span<const grammar::FixedField> positions) {
+    for (const grammar::FixedField& f : positions) {
+        const std::size_t b = std::size_t{f.start} + f.width;
+        if (b >= text.size()) return false;
+        if (b > 0 && text[b - 1] != ' ' && text[b] != ' ') return true;
+    }
+    return false;
+}
+
+// Looks at `line` (its `text`, fixed format, cut at `positions`) after its values were read, with the line's
 // findings at out[from, end). Cheap when nothing is glued across a boundary and nothing was found.
-void diagnose_radioss_line(const grammar::RawDeck& deck, const grammar::CardLine& line,
+void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
                            const grammar::radioss::CardSpec& card, std::span<const grammar::FixedField> positions,
                            std::string_view keyword, std::vector<diag::Diagnostic>& out, std::size_t from);
 
