@@ -1,6 +1,8 @@
 #include "lint/fold_causes.hpp"
 
 #include <algorithm>
+#include <cstdlib>
+#include <tuple>
 #include <optional>
 
 #include "model/shift_diagnosis.hpp"
@@ -23,6 +25,18 @@ std::optional<std::pair<std::uint32_t, std::uint32_t>> block_lines(const grammar
             return std::pair{first.line, deck.lines[b.first_line + b.line_count - 1].line};
     }
     return std::nullopt;
+}
+
+// Remarks first (how the line reads, the header), then the folded findings of the line by column, then
+// those of other lines in order.
+void sort_notes(std::vector<diag::Note>& notes) {
+    auto key = [](const diag::Note& n) {
+        if (n.span.valid()) return std::tuple{2, n.span.line, n.span.column};
+        if (n.message.rfind("column ", 0) == 0)
+            return std::tuple{1, 0u, static_cast<std::uint32_t>(std::strtoul(n.message.c_str() + 7, nullptr, 10))};
+        return std::tuple{0, 0u, 0u};
+    };
+    std::stable_sort(notes.begin(), notes.end(), [&](const diag::Note& a, const diag::Note& b) { return key(a) < key(b); });
 }
 
 }  // namespace
@@ -49,6 +63,7 @@ void fold_into_causes(const grammar::RawDeck& deck, std::vector<diag::Diagnostic
         model::fold_into(diagnostics[cause->index], std::move(d));
         folded[i] = true;
     }
+    for (const Cause& c : causes) sort_notes(diagnostics[c.index].notes);
     std::size_t kept = 0;
     for (std::size_t i = 0; i < diagnostics.size(); ++i)
         if (!folded[i]) {
