@@ -124,7 +124,8 @@ void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
                                     {diag::TextEdit{grammar::Span{line.file, line.line, 1,
                                                                   static_cast<std::uint32_t>(text.size() + 1)},
                                                     std::move(shift->realigned)}}});
-        fold_and_add(out, from, std::move(d), [](const diag::Diagnostic&) { return true; });
+        const bool explains = d.severity == diag::Severity::Error;  // a shift that changes no value explains nothing
+        fold_and_add(out, from, std::move(d), [&](const diag::Diagnostic&) { return explains; });
         return;
     }
     for (const Straddle& s : glued) {

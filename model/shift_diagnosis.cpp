@@ -182,8 +182,10 @@ void diagnose_shifts(const grammar::RawDeck& deck, const grammar::Block& block, 
             else ++hidden;
             continue;
         }
-        auto cause = std::find_if(causes.begin(), causes.end(),
-                                  [&](const diag::Diagnostic& c) { return c.span.line == d.span.line; });
+        // A shift that changes nothing read (a warning) explains none of the line's findings.
+        auto cause = std::find_if(causes.begin(), causes.end(), [&](const diag::Diagnostic& c) {
+            return c.span.line == d.span.line && c.severity == diag::Severity::Error;
+        });
         if (!widths && cause != causes.end()) fold_into(*cause, std::move(d));
         else kept.push_back(std::move(d));
     }

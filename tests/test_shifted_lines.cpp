@@ -175,3 +175,12 @@ TEST_CASE("OpenRadioss: a value across a cell boundary says what the starter kee
     REQUIRE(d->notes.size() == 1);
     CHECK(d->notes[0].message.ends_with("[RAD025]"));
 }
+
+TEST_CASE("DK029 warning: a shift that changes no value read folds none of the line's findings") {
+    const std::string text = deck_head + "       1         0   1.0e+20         5       150        15       0.0   1.0e+15\n*END\n";
+    auto r = engine::check_buffer(text, "d.k");
+    const diag::Diagnostic* d = only(r, "DK029");
+    REQUIRE(d);
+    CHECK(d->severity == diag::Severity::Warning);
+    CHECK(count_code(r.diagnostics, "DK007") == 1);  // IDIM 5: its own error, not the shift's
+}
