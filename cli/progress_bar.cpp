@@ -31,7 +31,7 @@ void ProgressBar::update(double fraction) {
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     if (elapsed < show_after || elapsed - last_draw_ < redraw_every) return;
     last_draw_ = elapsed;
-    draw(std::clamp(fraction, 0.0, 1.0), elapsed);
+    draw(fraction >= 0.0 ? std::min(fraction, 1.0) : 0.0, elapsed);  // NaN (0/0) draws as 0: clamp keeps NaN
 }
 
 void ProgressBar::draw(double fraction, double elapsed) {

@@ -140,6 +140,10 @@ Bins make_bins(std::span<const double> values, bool integer_bins, std::size_t ma
         integers = integers && v == std::floor(v);
     }
     if (n == 0) return bins;
+    if (!std::isfinite(mx - mn)) {  // a span beyond a double (-1e308 to 1e308): no bin width holds it
+        bins.skipped += n;
+        return bins;
+    }
     integers = integers && integer_bins;
     std::size_t count = 0;
     if (integers && mx - mn + 1 <= static_cast<double>(max_bins)) {
@@ -157,7 +161,10 @@ Bins make_bins(std::span<const double> values, bool integer_bins, std::size_t ma
         bins.width = nice_step((mx - mn) / target, integers);
         for (;;) {
             bins.lo = std::floor(mn / bins.width) * bins.width - (integers ? 0.5 : 0.0);
-            count = static_cast<std::size_t>(std::floor((mx - bins.lo) / bins.width)) + 1;
+            // Compared as a double first: a count beyond size_t cannot be converted (issue 32).
+            const double along = std::floor((mx - bins.lo) / bins.width);
+            count = along >= 0 && along < static_cast<double>(max_bins) ? static_cast<std::size_t>(along) + 1
+                                                                        : max_bins + 1;
             if (count <= max_bins) break;
             bins.width = nice_step(bins.width * 1.01, integers);
         }
@@ -166,7 +173,7 @@ Bins make_bins(std::span<const double> values, bool integer_bins, std::size_t ma
     for (double v : values) {
         if (!std::isfinite(v)) continue;
         const double k = std::floor((v - bins.lo) / bins.width);
-        const std::size_t i = k < 0 ? 0 : std::min(static_cast<std::size_t>(k), count - 1);
+        const std::size_t i = !(k > 0) ? 0 : k >= static_cast<double>(count - 1) ? count - 1 : static_cast<std::size_t>(k);
         ++bins.counts[i];
     }
     return bins;

@@ -2,10 +2,12 @@
 // (the same data `sphdeck keyword` prints) and the deck's decoded values.
 #include <cmath>
 #include <fmt/format.h>
+#include <optional>
 #include <string>
 
 #include "grammar/radioss/cell_names.hpp"
 #include "grammar/keywords/schema.hpp"
+#include "grammar/number_cast.hpp"
 #include "grammar/value.hpp"
 #include "lsp/deck_ids.hpp"
 #include "lsp/deck_lookup.hpp"
@@ -54,8 +56,9 @@ std::string effective_value(const model::FieldValue& v) {
     if (f.zero_is_default && f.default_value && v.number == *f.default_value &&
         grammar::parse_real(v.text).status == grammar::NumberStatus::Ok && grammar::parse_real(v.text).value == 0.0)
         return fmt::format("{} (default: 0 means the default)", value);
-    if (const auto* choice = f.choice(static_cast<long long>(v.number)); choice && v.number == std::trunc(v.number))
-        value += fmt::format(": {}", choice->meaning);
+    // No conversion of a value outside long long (1e20 in FORM: undefined behaviour, issue 32).
+    if (const std::optional<long long> n = grammar::to_integer<long long>(v.number); n && v.number == std::trunc(v.number))
+        if (const auto* choice = f.choice(*n)) value += fmt::format(": {}", choice->meaning);
     return value;
 }
 

@@ -4,7 +4,9 @@
 #include <cctype>
 #include <cmath>
 #include <fmt/format.h>
+#include <optional>
 
+#include "grammar/number_cast.hpp"
 #include "grammar/value.hpp"
 
 namespace sphdeck::model {
@@ -264,7 +266,9 @@ void CardDecoder::check_text(const keywords::FieldSpec& spec, FieldValue& v) {
 
 void CardDecoder::check_range(const keywords::FieldSpec& spec, const FieldValue& v) {
     if (!spec.choices.empty()) {
-        if (v.number != std::trunc(v.number) || !spec.choice(static_cast<long long>(v.number))) {
+        // Out of range for an integer is simply not one of the choices (no conversion: issue 32).
+        const std::optional<long long> as_integer = grammar::to_integer<long long>(v.number);
+        if (v.number != std::trunc(v.number) || !as_integer || !spec.choice(*as_integer)) {
             std::string allowed;
             for (const auto& c : spec.choices) allowed += (allowed.empty() ? "" : ", ") + std::to_string(c.value);
             report("DK007", diag::Severity::Error,

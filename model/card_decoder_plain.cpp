@@ -3,8 +3,10 @@
 // significant width, a blank required field, a value outside the fast number forms or outside
 // its field's range) is left to decode(), which reports it: findings stay those of decode().
 #include <cmath>
+#include <optional>
 
 #include "grammar/line_scan.hpp"
+#include "grammar/number_cast.hpp"
 #include "grammar/value_fast.hpp"
 #include "model/card_decoder.hpp"
 
@@ -24,7 +26,10 @@ std::string_view trim_spaces(std::string_view s, std::size_t& offset) {
 
 // What decode_number checks after the value: an integer beyond 2^53, choices and ranges.
 bool in_range(const keywords::FieldSpec& spec, double number) {
-    if (!spec.choices.empty()) return number == std::trunc(number) && spec.choice(static_cast<long long>(number));
+    if (!spec.choices.empty()) {
+        const std::optional<long long> as_integer = grammar::to_integer<long long>(number);
+        return number == std::trunc(number) && as_integer && spec.choice(*as_integer);
+    }
     return !(spec.min && number < *spec.min) && !(spec.max && number > *spec.max);
 }
 }  // namespace

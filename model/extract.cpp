@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 #include <limits>
+#include <optional>
 #include <type_traits>
 
 #include "grammar/fields.hpp"
+#include "grammar/number_cast.hpp"
 #include "grammar/value.hpp"
 
 namespace sphdeck::model {
@@ -13,9 +15,7 @@ namespace {
 // Whether `number` converts to T without undefined behaviour (integers: finite and in range).
 template <typename T>
 bool fits(double number) {
-    if constexpr (std::is_integral_v<T>)
-        return number >= static_cast<double>(std::numeric_limits<T>::min()) &&
-               number < 2.0 * static_cast<double>(std::numeric_limits<T>::max() / 2 + 1);  // max + 1, exact
+    if constexpr (std::is_integral_v<T>) return grammar::fits_integer<T>(number);
     return true;
 }
 
@@ -42,7 +42,7 @@ Id id_of(const FieldRecord& f) {
     if (!f.explicit_value) return {};
     grammar::ValueToken t = grammar::classify_value(f.text);
     if (f.valid && (t.shape == grammar::ValueShape::Integer || t.shape == grammar::ValueShape::Real))
-        return std::to_string(static_cast<long long>(f.number));
+        if (const std::optional<long long> n = grammar::to_integer<long long>(f.number)) return std::to_string(*n);
     return normalise_id(f.text);
 }
 
@@ -164,20 +164,26 @@ std::vector<long long> set_members(const KeywordRecord& r, std::size_t limit, bo
         // Member rows only: not the title (_TITLE) nor the SID header card.
         if (row.empty() || row.front().name == "TITLE" || row.front().name == "SID") continue;
         if (generate) {  // B1BEG B1END ... pairs of ranges
-            for (std::size_t k = 0; k + 1 < row.size(); k += 2)
-                if (row[k].explicit_value && row[k + 1].explicit_value)
-                    for (auto id = static_cast<long long>(row[k].number); id <= static_cast<long long>(row[k + 1].number);
-                         ++id) {
-                        if (id == 0) continue;
+            for (std::size_t k = 0; k + 1 < row.size(); k += 2) {
+                // A bound that is no integer (1e20: DK007 on its field) makes no range.
+                const auto first = grammar::to_integer<long long>(row[k].number);
+                const auto last = grammar::to_integer<long long>(row[k + 1].number);
+                if (!row[k].explicit_value || !row[k + 1].explicit_value || !first || !last) continue;
+                for (long long id = *first; id <= *last; ++id) {
+                    if (id != 0) {
                         if (members.size() >= limit) {
                             truncated = true;
                             return members;
                         }
                         members.push_back(id);
                     }
+                    if (id == *last) break;  // no ++ past LLONG_MAX
+                }
+            }
         } else {
             for (const auto& f : row)
-                if (f.explicit_value && f.valid && f.number != 0) members.push_back(static_cast<long long>(f.number));
+                if (f.explicit_value && f.valid && f.number != 0)
+                    if (const auto id = grammar::to_integer<long long>(f.number)) members.push_back(*id);
         }
     }
     return members;

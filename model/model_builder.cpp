@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "grammar/number_cast.hpp"
 #include "model/extract.hpp"
 #include "model/particle_ranges.hpp"
 
@@ -26,7 +27,7 @@ ModelBuilder::ModelBuilder(const grammar::RawDeck& deck) : deck_(deck) {
 void ModelBuilder::add_node(const std::vector<FieldValue>& v) {
     if (v.size() < 4 || !v[0].valid) return;  // a node without a usable id is already reported
     Nodes& n = model_.nodes;
-    n.id.push_back(static_cast<long long>(v[0].number));
+    n.id.push_back(grammar::saturating_integer<long long>(v[0].number));
     n.x.push_back(v[1].number);
     n.y.push_back(v[2].number);
     n.z.push_back(v[3].number);
@@ -36,11 +37,11 @@ void ModelBuilder::add_particles(const grammar::Block& block, const std::vector<
                                  const grammar::CardLine& line) {
     if (v.size() < 3 || !v[0].valid) return;
     Particles& p = model_.particles;
-    const long long first = static_cast<long long>(v[0].number);
+    const long long first = grammar::saturating_integer<long long>(v[0].number);
     // NEND > NID generates NID..NEND with the same part and mass (lsdyna-sph-cards.md §3); the
     // syntax pass has refused ranges the deck's nodes cannot hold.
     const long long last = first + static_cast<long long>(range_extra(v));
-    const long long part = v[1].valid ? static_cast<long long>(v[1].number) : -1;
+    const long long part = v[1].valid ? grammar::saturating_integer<long long>(v[1].number) : -1;
     const bool volume = block.keyword.find("_VOLUME") != std::string::npos;
     const auto index = static_cast<std::uint32_t>(&line - deck_.lines.data());
     for (long long id = first; id <= last; ++id) {
@@ -121,14 +122,14 @@ void ModelBuilder::Bulk::line(const grammar::Block&, std::size_t index, int thre
     if (!particles_) {
         if (v.size() < 4 || !v[0].valid) return irregular.push_back({index, 0, true});  // as add_node
         Nodes& n = owner_.model_.nodes;
-        n.id[slot] = static_cast<long long>(v[0].number);
+        n.id[slot] = grammar::saturating_integer<long long>(v[0].number);
         n.x[slot] = v[1].number, n.y[slot] = v[2].number, n.z[slot] = v[3].number;
         return;
     }
     if (v.size() < 3 || !v[0].valid) return irregular.push_back({index, 0, true});  // as add_particles
     Particles& p = owner_.model_.particles;
-    p.node[slot] = static_cast<long long>(v[0].number);
-    p.part[slot] = v[1].valid ? static_cast<long long>(v[1].number) : -1;
+    p.node[slot] = grammar::saturating_integer<long long>(v[0].number);
+    p.part[slot] = v[1].valid ? grammar::saturating_integer<long long>(v[1].number) : -1;
     p.mass[slot] = v[2].valid ? v[2].number : 0.0;
     p.volume[slot] = volume_;
     p.line[slot] = static_cast<std::uint32_t>(&line - owner_.deck_.lines.data());

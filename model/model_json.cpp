@@ -3,6 +3,7 @@
 #include <map>
 #include <optional>
 
+#include "grammar/number_cast.hpp"
 #include "model/id_index.hpp"
 
 namespace sphdeck::model {
@@ -20,7 +21,7 @@ json value_of(const FieldRecord& f) {
             [[fallthrough]];
         case FieldType::Integer:
             if (!f.valid) return nullptr;
-            return static_cast<long long>(f.number);
+            return grammar::saturating_integer<long long>(f.number);
         case FieldType::Real: return f.valid ? json(f.number) : json(nullptr);
         case FieldType::Unused: return nullptr;
     }

@@ -3,7 +3,9 @@
 #include <cctype>
 #include <cmath>
 #include <fmt/format.h>
+#include <type_traits>
 
+#include "grammar/number_cast.hpp"
 #include "grammar/value.hpp"
 #include "model/radioss_builder.hpp"
 
@@ -34,7 +36,10 @@ StarterValue<T> RadiossBuilder::starter(std::string_view name, const RadiossBloc
     if (const RadiossValue* v = value(name)) {
         s.span = v->span;
         s.explicit_value = v->explicit_value;
-        if (v->valid) s.written = static_cast<T>(v->number);
+        if (v->valid) {
+            if constexpr (std::is_integral_v<T>) s.written = grammar::saturating_integer<T>(v->number);
+            else s.written = static_cast<T>(v->number);
+        }
     }
     s.value = s.written;
     return s;
@@ -145,7 +150,7 @@ void RadiossBuilder::end_begin(const RadiossBlock&) {
 void RadiossBuilder::add_node(const std::vector<RadiossValue>& v) {
     if (v.size() < 4 || !v[0].valid) return;
     Nodes& n = model_.nodes;
-    n.id.push_back(static_cast<long long>(v[0].number));
+    n.id.push_back(grammar::saturating_integer<long long>(v[0].number));
     n.x.push_back(v[1].number);
     n.y.push_back(v[2].number);
     n.z.push_back(v[3].number);
@@ -178,7 +183,7 @@ void RadiossBuilder::add_element(const RadiossBlock& b, std::size_t card, std::u
                                                                              : facts_.penta6;
     if (name == "/TETRA10") {
         if (card == 0) {  // the id line; its nodes follow on the next line
-            pending_tetra10_.assign(1, v.empty() || !v[0].valid ? 0 : static_cast<long long>(v[0].number));
+            pending_tetra10_.assign(1, v.empty() || !v[0].valid ? 0 : grammar::saturating_integer<long long>(v[0].number));
             pending_tetra10_line_ = line;
             return;
         }
@@ -187,22 +192,22 @@ void RadiossBuilder::add_element(const RadiossBlock& b, std::size_t card, std::u
         s.line.push_back(pending_tetra10_line_);
         pending_tetra10_.clear();
         for (std::size_t k = 0; k < 10; ++k)
-            s.nodes.push_back(k < v.size() && v[k].valid ? static_cast<long long>(v[k].number) : 0);
+            s.nodes.push_back(k < v.size() && v[k].valid ? grammar::saturating_integer<long long>(v[k].number) : 0);
         s.part.push_back(*block_id_);
         return;
     }
     if (v.empty() || !v[0].valid) return;
-    s.id.push_back(static_cast<long long>(v[0].number));
+    s.id.push_back(grammar::saturating_integer<long long>(v[0].number));
     s.part.push_back(*block_id_);
     s.line.push_back(line);
     for (int k = 1; k <= s.nodes_per_element; ++k)
-        s.nodes.push_back(static_cast<std::size_t>(k) < v.size() && v[k].valid ? static_cast<long long>(v[k].number)
+        s.nodes.push_back(static_cast<std::size_t>(k) < v.size() && v[k].valid ? grammar::saturating_integer<long long>(v[k].number)
                                                                                  : 0);
 }
 
 void RadiossBuilder::add_group_members(const std::vector<RadiossValue>& v) {
     for (const RadiossValue& x : v)
-        if (x.valid && x.number != 0) pending_members_.push_back(static_cast<long long>(x.number));
+        if (x.valid && x.number != 0) pending_members_.push_back(grammar::saturating_integer<long long>(x.number));
 }
 
 void RadiossBuilder::end_group(const RadiossBlock& b) {
@@ -255,7 +260,7 @@ void RadiossBuilder::end_frame(const RadiossBlock& b) {
     } else if (name == "/FRAME/MOV" || name == "/SKEW/MOV") {
         for (int k = 0; k < 3; ++k) {
             const RadiossValue* v = value(fmt::format("node_ID{}", k + 1));
-            f.nodes[k] = v && v->valid ? static_cast<long long>(v->number) : 0;
+            f.nodes[k] = v && v->valid ? grammar::saturating_integer<long long>(v->number) : 0;
         }
         // hm_read_frm.F / hm_read_skw.F: the last X, Y or Z letter of the Dir cell; X by default.
         if (const RadiossValue* dir = value("Dir"))

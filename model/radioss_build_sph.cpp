@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <map>
 
+#include "grammar/number_cast.hpp"
 #include "grammar/value.hpp"
 #include "model/radioss_builder.hpp"
 
@@ -44,7 +45,7 @@ int radioss_law(std::string_view name) {
 void RadiossBuilder::add_particle(const RadiossBlock&, std::uint32_t line, const std::vector<RadiossValue>& v) {
     if (!block_id_ || v.size() < 3 || !v[0].valid) return;
     Particles& p = model_.particles;
-    p.node.push_back(static_cast<long long>(v[0].number));
+    p.node.push_back(grammar::saturating_integer<long long>(v[0].number));
     p.part.push_back(*block_id_);
     p.mass.push_back(v[2].valid ? v[2].number : 0.0);  // resolved in finish: the property mp may apply
     p.volume.push_back(0);
@@ -194,10 +195,10 @@ void RadiossBuilder::add_initial_state(const RadiossBlock& b, std::size_t card, 
     if (card == 0) {
         if (v.empty()) return;
         RadiossInitialState s;  // kept when the id is unreadable (reported), so its cards stay with it
-        s.cell = static_cast<long long>(num(0));
+        s.cell = grammar::saturating_integer<long long>(num(0));
         s.span = v[0].span;
         s.line = line;
-        s.nvar = static_cast<long long>(num(1));
+        s.nvar = grammar::saturating_integer<long long>(num(1));
         states.push_back(s);
         return;
     }

@@ -3,6 +3,7 @@
 #include <map>
 #include <string>
 
+#include "grammar/number_cast.hpp"
 #include "model/model_json.hpp"
 
 namespace sphdeck::model {
@@ -16,7 +17,7 @@ using json = nlohmann::ordered_json;
 json value_of(const RadiossField& f) {
     if (!f.valid) return f.explicit_value ? json(f.text) : json(nullptr);
     if (!f.number) return f.text;
-    if (f.integer) return static_cast<long long>(f.value);
+    if (f.integer) return grammar::saturating_integer<long long>(f.value);
     return f.value;
 }
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "grammar/number_cast.hpp"
+
 namespace sphdeck::preproc {
 namespace {
 
@@ -22,7 +24,7 @@ long long count(const model::KeywordRecord& r, std::string_view field) {
 MeshBox read_box(const model::KeywordRecord& r) {
     MeshBox b;
     b.span = r.span;
-    b.part = static_cast<long long>(number(r, "IPID"));
+    b.part = grammar::saturating_integer<long long>(number(r, "IPID"));
     b.nx = count(r, "NX"), b.ny = count(r, "NY"), b.nz = count(r, "NZ");
     b.x0 = number(r, "XMIN"), b.y0 = number(r, "YMIN"), b.z0 = number(r, "ZMIN");
     const double lx = number(r, "XLEN"), ly = number(r, "YLEN"), lz = number(r, "ZLEN");

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "grammar/number_cast.hpp"
 #include "preproc/preview.hpp"
 #include "preproc/smoothing_length.hpp"
 
@@ -22,6 +23,12 @@ const model::FieldRecord* record_field(const model::KeywordRecord* r, std::strin
 double record_number(const model::KeywordRecord* r, std::string_view name, double fallback) {
     const model::FieldRecord* f = record_field(r, name);
     return f ? f->number : fallback;
+}
+
+long long record_integer(const model::KeywordRecord* r, std::string_view name, long long fallback) {
+    const model::FieldRecord* f = record_field(r, name);
+    const std::optional<long long> n = f ? grammar::to_integer<long long>(f->number) : std::nullopt;
+    return n ? *n : fallback;
 }
 
 // In setup_controls.cpp and setup_velocities.cpp.

@@ -59,6 +59,8 @@ std::vector<Unsupported> unsupported_features(const model::Model& model);
 
 // Reading fields of a keyword record (setup helpers).
 double record_number(const model::KeywordRecord* r, std::string_view name, double fallback = 0.0);
+// An integer field (an id, a count) as an integer: `fallback` when absent, invalid or beyond long long.
+long long record_integer(const model::KeywordRecord* r, std::string_view name, long long fallback = 0);
 const model::FieldRecord* record_field(const model::KeywordRecord* r, std::string_view name);
 const model::KeywordRecord* model_record(const model::Model& m, std::optional<std::size_t> index);
 

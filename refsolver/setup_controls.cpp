@@ -22,7 +22,7 @@ bool keyword_is(const model::KeywordRecord& r, std::string_view name) {
 
 const model::KeywordRecord* find_curve(const model::Model& m, long long lcid) {
     for (const model::KeywordRecord& r : m.records)
-        if (keyword_is(r, "*DEFINE_CURVE") && static_cast<long long>(record_number(&r, "LCID", -1)) == lcid) return &r;
+        if (keyword_is(r, "*DEFINE_CURVE") && record_integer(&r, "LCID", -1) == lcid) return &r;
     return nullptr;
 }
 
@@ -58,7 +58,7 @@ void setup_loads(const model::Model& m, SolverInput& in, std::vector<Unsupported
             note(out, fmt::format("{} LCIDDR {}: there is no dynamic relaxation phase; the curve is not used",
                                   r.keyword, record_number(&r, "LCIDDR")),
                  record_field(&r, "LCIDDR")->span, false);
-        const long long lcid = static_cast<long long>(record_number(&r, "LCID"));
+        const long long lcid = record_integer(&r, "LCID");
         const model::KeywordRecord* curve = find_curve(m, lcid);
         if (!curve) {
             const model::FieldRecord* f = record_field(&r, "LCID");
@@ -115,7 +115,7 @@ void setup_controls(const model::Model& m, const RunOptions& options, SolverInpu
     in.sph_death = sph.dt.value > 0 ? sph.dt.value : 1e20;
     in.maxv = sph.maxv.value;
     for (const model::KeywordRecord& r : m.records)
-        if (keyword_is(r, "*CONTROL_TERMINATION")) in.end_cycle = static_cast<long long>(record_number(&r, "ENDCYC"));
+        if (keyword_is(r, "*CONTROL_TERMINATION")) in.end_cycle = record_integer(&r, "ENDCYC");
     if (!(in.end_time > 0))
         note(out, fmt::format("end time {} is not positive: give *CONTROL_TERMINATION ENDTIM or --end-time",
                               in.end_time),

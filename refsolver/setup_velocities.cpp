@@ -14,8 +14,10 @@
 #include <cmath>
 #include <fmt/format.h>
 #include <string_view>
+#include <optional>
 #include <unordered_map>
 
+#include "grammar/number_cast.hpp"
 #include "refsolver/setup.hpp"
 
 namespace sphdeck::refsolver {
@@ -144,10 +146,10 @@ private:
                  span_of(r, "ICID"));
         for (const char* name : {"VXR", "VYR", "VZR"})
             if (record_number(&r, name) != 0) rotational_note(r, *record_field(&r, name));
-        const auto nsid = static_cast<long long>(record_number(&r, "NSID"));
-        const auto nsidex = static_cast<long long>(record_number(&r, "NSIDEX"));
-        const double boxid = record_number(&r, "BOXID");
-        const model::Box* box = boxid != 0 ? m_.box(std::to_string(static_cast<long long>(boxid))) : nullptr;
+        const auto nsid = record_integer(&r, "NSID");
+        const auto nsidex = record_integer(&r, "NSIDEX");
+        const long long boxid = record_integer(&r, "BOXID");
+        const model::Box* box = boxid != 0 ? m_.box(std::to_string(boxid)) : nullptr;
         const Vec3 v{record_number(&r, "VX"), record_number(&r, "VY"), record_number(&r, "VZ")};
         const Vec3 ve{record_number(&r, "VXE"), record_number(&r, "VYE"), record_number(&r, "VZE")};
         ++record_;
@@ -189,18 +191,20 @@ private:
                                    "time 0",
                                    r.keyword, record_number(&r, "PHASE")),
                  span_of(r, "PHASE"));
-        const auto id = static_cast<long long>(record_number(&r, "ID"));
-        const auto styp = static_cast<long long>(record_number(&r, "STYP", 1));
+        const auto id = record_integer(&r, "ID");
+        const auto styp = record_integer(&r, "STYP", 1);
         const double omega = record_number(&r, "OMEGA");
         const Vec3 v{record_number(&r, "VX"), record_number(&r, "VY"), record_number(&r, "VZ")};
         Vec3 c{record_number(&r, "XC"), record_number(&r, "YC"), record_number(&r, "ZC")};
         Vec3 n{record_number(&r, "NX"), record_number(&r, "NY"), record_number(&r, "NZ")};
         if (omega != 0 && n[0] == -999) {
-            const auto a = index_.node_position(static_cast<long long>(n[1]));
-            const auto b = index_.node_position(static_cast<long long>(n[2]));
+            // NY and NZ are real fields holding node ids here: 1e20 names no node, and is not converted.
+            const auto node_a = grammar::to_integer<long long>(n[1]), node_b = grammar::to_integer<long long>(n[2]);
+            const auto a = node_a ? index_.node_position(*node_a) : std::nullopt;
+            const auto b = node_b ? index_.node_position(*node_b) : std::nullopt;
             if (!a || !b) {
                 note(out_, fmt::format("{}: the axis nodes {} and {} (NX -999) are not both defined", r.keyword,
-                                       static_cast<long long>(n[1]), static_cast<long long>(n[2])),
+                                       n[1], n[2]),
                      span_of(r, "NY"), true, true);
                 return;
             }
@@ -263,7 +267,7 @@ private:
                 if (number(name) != 0) rotational_note(r, *field(name));
             const Vec3 v{number("VX"), number("VY"), number("VZ")};
             bool found = false;
-            index_.for_node(static_cast<long long>(number("NID")), [&](std::uint32_t i) {
+            index_.for_node(grammar::saturating_integer<long long>(number("NID")), [&](std::uint32_t i) {
                 set(i, v);
                 found = true;
             });

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <set>
 
+#include "grammar/number_cast.hpp"
 #include "refsolver/setup.hpp"
 
 namespace sphdeck::refsolver {
@@ -102,7 +103,7 @@ void hourglass_items(const model::Model& m, std::vector<Unsupported>& out) {
         for (const model::KeywordRecord& r : m.records) {
             if (!r.schema || r.schema->name != "*HOURGLASS") continue;
             const model::FieldRecord* id = record_field(&r, "HGID");
-            if (!id || model::normalise_id(fmt::format("{}", static_cast<long long>(id->number))) != part.hourglass.value)
+            if (!id || model::normalise_id(fmt::format("{}", grammar::saturating_integer<long long>(id->number))) != part.hourglass.value)
                 continue;
             const double q1 = record_number(&r, "Q1", m.controls.q1.value), q2 = record_number(&r, "Q2", m.controls.q2.value);
             if (q1 != m.controls.q1.value || q2 != m.controls.q2.value)

@@ -74,8 +74,15 @@ double closing_bound(const Particles& s, const std::vector<SymmetryPlane>& plane
     std::size_t n[3];
     constexpr std::size_t most_cells = std::size_t{1} << 22;
     for (;;) {
-        for (int a = 0; a < 3; ++a) n[a] = static_cast<std::size_t>((where.hi[a] - where.lo[a]) / cell) + 1;
-        if (n[0] * n[1] * n[2] <= most_cells) break;
+        double total = 1;
+        for (int a = 0; a < 3; ++a) {
+            // Capped before the conversion: a tiny support over a wide box is +inf cells, which no
+            // integer holds (issue 32); the product in double cannot wrap.
+            const double along = std::min((where.hi[a] - where.lo[a]) / cell, static_cast<double>(most_cells));
+            n[a] = static_cast<std::size_t>(along) + 1;
+            total *= static_cast<double>(n[a]);
+        }
+        if (total <= static_cast<double>(most_cells)) break;
         cell *= 2;
     }
     cells.assign(n[0] * n[1] * n[2], Box{});

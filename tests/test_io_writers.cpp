@@ -277,6 +277,21 @@ TEST_CASE("io: vtp rejects arrays of the wrong length and unwritable paths") {
                     std::runtime_error);
 }
 
+TEST_CASE("io: histogram bins of extreme values convert no double out of range (issue 32)") {
+    // Values 1e300 apart with a few tiny ones: the first bin width gives more bins than size_t holds.
+    const std::vector<double> wide{1e-300, 2e-300, 1e300};
+    const io::Bins w = io::make_bins(wide, false, 24);
+    std::size_t total = 0;
+    for (std::size_t c : w.counts) total += c;
+    CHECK(total == 3);
+    CHECK(w.counts.size() <= 24);
+    // A span beyond a double: nothing binned, every value counted as skipped, and no endless widening.
+    const std::vector<double> beyond{-1e308, 1e308};
+    const io::Bins b = io::make_bins(beyond, false, 24);
+    CHECK(b.counts.empty());
+    CHECK(b.skipped == 2);
+}
+
 TEST_CASE("io: histogram bins have round edges and cover every finite value") {
     const std::vector<double> values{1.0, 1.05, 1.2, 1.21, 1.5, 2.0, NAN, INFINITY};
     const io::Bins b = io::make_bins(values, false, 24);

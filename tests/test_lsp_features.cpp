@@ -157,6 +157,19 @@ TEST_CASE("lsp hover: a field's name, columns, default, allowed values and effec
     CHECK(text.find("value: 0 (default: left blank)") != std::string::npos);
 }
 
+TEST_CASE("lsp hover: a value beyond any integer in a field with allowed values (issue 32)") {
+    // FORM written as 1e20: the hover names the value without converting it to an integer (that
+    // conversion is undefined behaviour; the sanitizer build of this test catches it).
+    std::string deck_text = kDeck;
+    const std::string form_one = "         0         1\n";
+    deck_text.replace(deck_text.find(form_one), form_one.size(), "         0    1.0e20\n");
+    const auto deck = check(deck_text);
+    const At card = find(deck_text, "    1.0e20");
+    const std::string text = hover_text(deck, {card.line, card.character + 5});
+    CHECK(text.find("**FORM**") != std::string::npos);
+    CHECK(text.find("allowed values") != std::string::npos);
+}
+
 TEST_CASE("lsp hover: keywords, ids and parameters") {
     const auto deck = check(kDeck);
     const At section = find(kDeck, "*SECTION_SPH");

@@ -111,6 +111,17 @@ TEST_CASE("refsolver initial velocity: undefined sets, parts and axes stop the r
     }
 }
 
+TEST_CASE("refsolver initial velocity: axis nodes written beyond any integer (NX -999, NY 1e20; issue 32)") {
+    // NY and NZ are real fields that hold node ids here: 1e20 names no node and is never converted to
+    // an integer (undefined behaviour; the sanitizer build of this test catches it). The run stops.
+    TestDeck deck = two_particles("*SET_NODE_LIST\n5\n1,2\n*INITIAL_VELOCITY_GENERATION\n5,3,2\n0,0,0,-999,1e20,3\n");
+    refsolver::RunOptions options;
+    options.ignore_unsupported = true;
+    const refsolver::Simulation::Setup setup = solver_for(deck, options);
+    CHECK_FALSE(setup.simulation);
+    CHECK(unsupported_text(setup).find("the axis nodes 1e+20 and 3 (NX -999) are not both defined") != std::string::npos);
+}
+
 TEST_CASE("refsolver initial velocity: one *SET_NODE_LIST + *INITIAL_VELOCITY per particle") {
     // The set-up cost case of issue 18 (bench/make_velocity_sets_deck.py at full size): each
     // particle gets its own set's velocity, also the ones whose sets come in another order.
