@@ -20,11 +20,6 @@ void report(RawDeck& deck, const char* code, diag::Severity s, std::string messa
     deck.diagnostics.push_back(diag::Diagnostic{code, s, std::move(message), span, {}});
 }
 
-void report_case_mismatch(RawDeck& deck, std::string_view written, const Parameter& p, Span span) {
-    report(deck, "DK024", diag::Severity::Warning,
-           "'&" + std::string(written) + "' matches parameter '" + p.name + "' only when case is ignored", span);
-}
-
 // The name field: its first non-blank character is the type letter (R, I or C, any case),
 // the name follows, glued or after blanks ("RSHLTHK" == "R  SHLTHK").
 bool split_type_and_name(std::string_view field, ParameterType& type, std::string_view& name) {
@@ -87,7 +82,6 @@ bool value_of(Context& c, const Field& field, ParameterType type, Parameter& p) 
                    field.span);
             return false;
         }
-        if (found.case_mismatch) report_case_mismatch(c.deck, token.name, *found.parameter, field.span);
         p.number = token.negated ? -found.parameter->number : found.parameter->number;
     } else {
         RealValue v = to_real(token);
@@ -144,21 +138,27 @@ void read_expressions(Context& c) {
     const CardLine* end = c.deck.end_lines(c.block);
     for (const CardLine* l = begin; l != end;) {
         std::string_view text = c.deck.text(*l);
-        std::size_t name_width = c.block.format == CardFormat::Long ? 20 : 10;
+        const std::size_t fixed_width = c.block.format == CardFormat::Long ? 20 : 10;
+        // Free format: a comma in the name field ends the name there ("Rf_r, 2-f_f"), and the
+        // expression is the rest of the line (commas inside it belong to it: max(a,b)).
+        const std::size_t comma = text.substr(0, std::min(text.size(), fixed_width)).find(',');
+        const bool free_format = comma != std::string_view::npos;
+        const std::size_t name_width = free_format ? comma : fixed_width;
+        const std::size_t expression_start = free_format ? comma + 1 : fixed_width;
         std::string_view name_field = text.substr(0, std::min(text.size(), name_width));
         const CardLine* first = l++;
         if (is_blank(name_field)) continue;
-        std::string expression(text.size() > name_width ? text.substr(name_width) : std::string_view{});
+        std::string expression(text.size() > expression_start ? text.substr(expression_start) : std::string_view{});
         while (l != end) {
             std::string_view next = c.deck.text(*l);
-            if (!is_blank(next.substr(0, std::min(next.size(), name_width))) || is_blank(next)) break;
+            if (!is_blank(next.substr(0, std::min(next.size(), fixed_width))) || is_blank(next)) break;
             expression += ' ';
-            expression += next.substr(std::min(next.size(), name_width));
+            expression += next.substr(std::min(next.size(), fixed_width));
             ++l;
         }
         Span name_span{first->file, first->line, 1, static_cast<std::uint32_t>(name_field.size() + 1)};
-        Span expression_span{first->file, first->line, static_cast<std::uint32_t>(name_width + 1),
-                             static_cast<std::uint32_t>(std::max(text.size(), name_width + 1) + 1)};
+        Span expression_span{first->file, first->line, static_cast<std::uint32_t>(expression_start + 1),
+                             static_cast<std::uint32_t>(std::max(text.size(), expression_start + 1) + 1)};
         ParameterType type;
         std::string_view name;
         if (!split_type_and_name(name_field, type, name)) {
@@ -170,7 +170,6 @@ void read_expressions(Context& c) {
         auto lookup = [&](std::string_view ref) -> std::optional<double> {
             auto found = c.deck.parameters.find(ref, first->file, c.deck.parameters.epoch());
             if (!found.parameter || found.parameter->type == ParameterType::Character) return std::nullopt;
-            if (found.case_mismatch) report_case_mismatch(c.deck, ref, *found.parameter, expression_span);
             return found.parameter->number;
         };
         if (std::string_view tab_at = text; tab_at.find('\t') != std::string_view::npos)
@@ -181,8 +180,8 @@ void read_expressions(Context& c) {
         if (!r.ok()) {
             const char* code = r.error == ExpressionError::UndefinedParameter ? "DK012" : "DK015";
             Span where = expression_span;
-            if (first == l - 1 && r.offset + name_width < text.size()) {  // single line: point at the token
-                where.column = static_cast<std::uint32_t>(name_width + r.offset + 1);
+            if (first == l - 1 && r.offset + expression_start < text.size()) {  // single line: point at the token
+                where.column = static_cast<std::uint32_t>(expression_start + r.offset + 1);
                 where.end_column = static_cast<std::uint32_t>(where.column + std::max<std::size_t>(r.length, 1));
             }
             report(c.deck, code, diag::Severity::Error, "in expression of '" + std::string(name) + "': " + r.message,
