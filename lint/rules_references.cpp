@@ -203,10 +203,14 @@ void check_set_references(RuleContext& c) {
         auto need = [&](std::string_view field, bool part_kind, std::string_view why) {
             const model::FieldRecord* f = r.field(field);
             if (!f || !f->explicit_value || !f->valid || f->number == 0) return;
-            Id id = model::normalise_id(f->text);
-            if (!(part_kind ? c.part_set(id) : c.node_set(id)))
-                c.report("REF008", f->span,
-                         fmt::format("{} {} is not defined{}", part_kind ? "part set" : "node set", id, why));
+            // The number read (a &name stands for its value), as the generated keywords' REF008 reads it.
+            const auto number = static_cast<long long>(f->number);
+            Id id = std::to_string(number);
+            if (part_kind ? c.part_set(id) : c.node_set(id)) return;
+            // Sets sphdeck does not expand (*SET_NODE_GENERAL, _ADD, _BOX...) define the id too.
+            if (deck_may_define(c.deck, part_kind ? "SET_PART" : "SET_NODE", number)) return;
+            c.report("REF008", f->span,
+                     fmt::format("{} {} is not defined{}", part_kind ? "part set" : "node set", id, why));
         };
         auto number = [&](std::string_view field, double fallback) {
             const model::FieldRecord* f = r.field(field);
