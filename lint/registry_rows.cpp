@@ -70,7 +70,7 @@ constexpr RuleInfo kRows[] = {
      "a \"$ sphdeck:\" comment that cannot be understood: unknown action, rule or syntax"},
 
     // RAD: OpenRadioss SPH options (/SPHBCS, SOL2SPH, /PROP/SPH, /SPHCEL, /SPHGLO, /DT).
-    {"RAD001", "missing-starter-header", Warning, "0.1.0", "reader",
+    {"RAD001", "missing-starter-header", Error, "0.1.0", "reader",
      "the first line of a starter deck is neither #RADIOSS STARTER nor another comment"},
     {"RAD002", "sphbcs-type", Error, "0.1.0", "SPHBCS",
      "/SPHBCS type neither SLIDE nor TIED"},

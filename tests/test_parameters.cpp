@@ -122,6 +122,8 @@ TEST_CASE("parameters: case-only matches inside *PARAMETER cards resolve, tabs t
                             "d.k");
     CHECK(count_code(deck.diagnostics, "DK024") == 0);
     CHECK(count_code(deck.diagnostics, "DK012") == 0);
-    auto tabs = read_buffer("*PARAMETER\nR tend\t   0.002\n", "d.k");
+    // A tab that moves the value into the next field when expanded to column 9 (issue 26, class J).
+    auto tabs = read_buffer("*PARAMETER\nR tend\t        0.002\n", "d.k");
     CHECK(count_code(tabs.diagnostics, "DK016") == 1);
+    CHECK(count_code(read_buffer("*PARAMETER\nR tend\t   0.002\n", "d.k").diagnostics, "DK016") == 0);
 }

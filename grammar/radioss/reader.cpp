@@ -80,7 +80,7 @@ void check_first_line(RawDeck& deck, FileId main) {
     std::string found = first.empty() ? std::string("an empty line")
                                       : "'" + std::string(first.substr(0, std::min<std::size_t>(first.size(), 40))) +
                                             (first.size() > 40 ? "...'" : "'");
-    deck.diagnostics.push_back({"RAD001", diag::Severity::Warning,
+    deck.diagnostics.push_back({"RAD001", diag::Severity::Error,
                                 "first line is " + found + "; a starter deck begins with the comment line #RADIOSS STARTER",
                                 Span{main, 1, 1, width + 1}, {}});
 }
