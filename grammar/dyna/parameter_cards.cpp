@@ -2,6 +2,8 @@
 
 #include <cctype>
 #include <cmath>
+#include <map>
+#include <tuple>
 
 #include "grammar/dyna/expression.hpp"
 #include "grammar/fields.hpp"
@@ -215,6 +217,65 @@ void read_duplication(Context& c) {
 }
 
 }  // namespace
+
+void group_redefinitions(RawDeck& deck) {
+    constexpr std::string_view prefix = "parameter '", again = "' is defined again";
+    constexpr std::size_t listed_notes = 3, listed_names = 8;  // the count says the rest
+    auto& all = deck.diagnostics;
+    struct Group {
+        std::size_t first;
+        std::vector<std::string> names;
+    };
+    std::map<std::tuple<FileId, std::string>, Group> groups;  // file, what the redefinition does
+    std::vector<bool> drop(all.size(), false);
+    std::vector<std::size_t> merged_into(all.size(), 0);
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        const diag::Diagnostic& d = all[i];
+        if (d.code != "DK014" || d.severity != diag::Severity::Warning || d.message.rfind(prefix, 0) != 0) continue;
+        const std::size_t end = d.message.find(again);
+        if (end == std::string::npos) continue;
+        std::string name = d.message.substr(prefix.size(), end - prefix.size());
+        auto [it, fresh] = groups.try_emplace({d.span.file, d.message.substr(end + again.size())}, Group{i, {}});
+        it->second.names.push_back(std::move(name));
+        if (fresh) continue;
+        drop[i] = true;
+        merged_into[i] = it->second.first;
+        diag::Diagnostic& first = all[it->second.first];
+        if (it->second.names.size() <= listed_notes + 1)
+            first.notes.push_back({d.span, "'" + it->second.names.back() + "' is defined again here"});
+    }
+    for (auto& [key, group] : groups) {
+        diag::Diagnostic& first = all[group.first];
+        if (group.names.size() > 1) {
+            std::string names;
+            for (std::size_t k = 0; k < group.names.size() && k < listed_names; ++k)
+                names += (k ? ", " : "") + group.names[k];
+            first.message += "; " + std::to_string(group.names.size()) + " parameters of this file are defined again (" +
+                             names + (group.names.size() > listed_names ? ", ..." : "") + ")";
+        }
+        first.notes.push_back({Span{}, "*PARAMETER_DUPLICATION 4 (replace) or 5 (keep the first) redefines silently "
+                                       "where it is meant (defaults in an include overridden by the deck)"});
+    }
+    // A DK024 (names differing by case) on the line of a DK014 joins it: one finding per line.
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        if (all[i].code != "DK024" || drop[i]) continue;
+        for (std::size_t j = 0; j < all.size(); ++j)
+            if (j != i && all[j].code == "DK014" && all[j].span.file == all[i].span.file &&
+                all[j].span.line == all[i].span.line) {
+                const std::size_t into = drop[j] ? merged_into[j] : j;
+                all[into].notes.push_back({all[i].span, all[i].message});
+                drop[i] = true;
+                break;
+            }
+    }
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < all.size(); ++i)
+        if (!drop[i]) {
+            if (kept != i) all[kept] = std::move(all[i]);
+            ++kept;
+        }
+    all.resize(kept);
+}
 
 void define_parameters(RawDeck& deck, const Block& block) {
     const std::string& k = block.keyword;
