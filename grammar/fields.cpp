@@ -45,6 +45,67 @@ Span column_span(const CardLine& line, std::size_t begin, std::size_t end) {
     return Span{line.file, line.line, static_cast<std::uint32_t>(begin + 1), static_cast<std::uint32_t>(end + 1)};
 }
 
+std::string_view trimmed_cell(std::string_view text, const FixedField& f) {
+    if (f.start >= text.size()) return {};
+    std::string_view cell = text.substr(f.start, f.width);
+    while (!cell.empty() && (cell.front() == ' ' || cell.front() == '\t')) cell.remove_prefix(1);
+    while (!cell.empty() && (cell.back() == ' ' || cell.back() == '\t' || cell.back() == '\r')) cell.remove_suffix(1);
+    return cell;
+}
+
+// Whether a tab makes the line ambiguous: read with each tab as one column (the solver) and with
+// tabs expanded to the next multiple of 8 (an editor), some field holds another value, or a value
+// moves past the last field. A tab before a value that stays in its cell either way ("\t1.0" in a
+// 10-column field) shifts nothing.
+bool tab_moves_a_value(std::string_view text, std::span<const FixedField> positions) {
+    thread_local std::string expanded;
+    expanded.clear();
+    for (char c : text) {
+        if (c != '\t') {
+            expanded += c;
+            continue;
+        }
+        expanded.append(8 - expanded.size() % 8, ' ');
+    }
+    std::uint32_t last_end = 0;
+    for (const FixedField& f : positions) {
+        if (trimmed_cell(text, f) != trimmed_cell(expanded, f)) return true;
+        last_end = std::max(last_end, f.start + std::min<std::uint32_t>(f.width, 1u << 30));
+    }
+    const FixedField rest{last_end, 1u << 30};
+    return trimmed_cell(text, rest) != trimmed_cell(expanded, rest);
+}
+
+bool blank_char(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+// Tabs only before the first value ("\t   1.0e-3   2.0").
+bool only_leading_tabs(std::string_view text) {
+    std::size_t first = 0;
+    while (first < text.size() && blank_char(text[first])) ++first;
+    return text.find('\t', first) == std::string_view::npos;
+}
+
+// Read with each tab as one column (as the solver reads it), every value lies inside one field and
+// no field holds two values: the line reads as its author laid it out, whatever an editor shows.
+bool values_in_their_cells(std::string_view text, std::span<const FixedField> positions) {
+    std::size_t previous_cell = positions.size();
+    for (std::size_t i = 0; i < text.size();) {
+        if (blank_char(text[i])) {
+            ++i;
+            continue;
+        }
+        const std::size_t begin = i;
+        while (i < text.size() && !blank_char(text[i])) ++i;
+        std::size_t cell = positions.size();
+        for (std::size_t k = 0; k < positions.size(); ++k)
+            if (begin >= positions[k].start && begin - positions[k].start < positions[k].width) cell = k;
+        if (cell == positions.size()) return false;  // in a gap or past the fields
+        if (i - positions[cell].start > positions[cell].width || cell == previous_cell) return false;
+        previous_cell = cell;
+    }
+    return true;
+}
+
 }  // namespace
 
 std::string_view to_string(CardFormat f) {
@@ -127,7 +188,8 @@ CutReport cut_fields(std::string_view text, const CardLine& line, std::span<cons
     // Only a tab before a value shifts columns; tabs after the last value are trailing blanks.
     std::size_t end = text.size();
     while (end > 0 && (text[end - 1] == ' ' || text[end - 1] == '\t' || text[end - 1] == '\r')) --end;
-    report.has_tab = end > 0 && std::memchr(text.data(), '\t', end) != nullptr;
+    report.has_tab = end > 0 && std::memchr(text.data(), '\t', end) != nullptr && tab_moves_a_value(text, positions) &&
+                     !(only_leading_tabs(text.substr(0, end)) && values_in_their_cells(text.substr(0, end), positions));
     for (const FixedField& f : positions) {
         std::string_view field = f.start < text.size() ? text.substr(f.start, f.width) : std::string_view{};
         out.push_back({field, column_span(line, f.start, f.start + f.width)});

@@ -59,7 +59,7 @@ constexpr RuleInfo kRows[] = {
     {"DK023", "nend-wide-column", Warning, "0.1.0", "reader",
      "*ELEMENT_SPH NEND written in columns 41-42 (sources disagree on its width)"},
     {"DK024", "parameter-case", Warning, "0.1.0", "reader",
-     "a parameter reference matches its definition only ignoring case, or two definitions differ only by case"},
+     "two parameter definitions differ only by case"},
     {"DK025", "include-path-long", Error, "0.1.0", "reader",
      "an include file name longer than 236 characters"},
     {"DK026", "unused-suppression", Info, "0.1.0", "reader",
@@ -75,7 +75,7 @@ constexpr RuleInfo kRows[] = {
 
     // RAD: OpenRadioss SPH options (/SPHBCS, SOL2SPH, /PROP/SPH, /SPHCEL, /SPHGLO, /DT).
     {"RAD001", "missing-starter-header", Error, "0.1.0", "reader",
-     "the first line is not #RADIOSS STARTER"},
+     "the first line of a starter deck is neither #RADIOSS STARTER nor another comment"},
     {"RAD002", "sphbcs-type", Error, "0.1.0", "SPHBCS",
      "/SPHBCS type neither SLIDE nor TIED"},
     {"RAD003", "sphbcs-ilev", Error, "0.1.0", "SPHBCS",

@@ -1,6 +1,8 @@
 // REF001-REF009: references between definitions (particle → node, part → section, material,
 // EOS; sets; boxes), duplicate ids and unused definitions.
+#include <algorithm>
 #include <fmt/format.h>
+#include <tuple>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -178,22 +180,76 @@ std::string missing_reference(const model::Part& part, std::string_view field, s
     return fmt::format("part {} names {} {}, which no {} defines", part.id, what, id, keyword);
 }
 
+// One cause, one finding (issue 26, item 3): the parts that name one missing id are reported once,
+// at the first of them in the files' order, with their count and the next places as notes.
+struct Naming {
+    const model::Part* part;
+    grammar::Span place;
+    std::string message;  // as the finding would read at this part
+};
+
+class MissingIds {
+public:
+    void add(std::string_view code, const Id& id, const model::Part& part, grammar::Span place, std::string message) {
+        auto [it, fresh] = index_.try_emplace({std::string(code), id}, missing_.size());
+        if (fresh) missing_.push_back({std::string(code), id, {}});
+        missing_[it->second].namings.push_back({&part, place, std::move(message)});
+    }
+
+    void report(RuleContext& c) {
+        constexpr std::size_t listed_notes = 3, listed_ids = 5;  // the count says the rest
+        for (Missing& m : missing_) {
+            // The model may hold *PART_ variants apart from *PART: order by place.
+            std::stable_sort(m.namings.begin(), m.namings.end(), [](const Naming& a, const Naming& b) {
+                return std::tie(a.place.file, a.place.line, a.place.column) <
+                       std::tie(b.place.file, b.place.line, b.place.column);
+            });
+            const std::vector<Naming>& n = m.namings;
+            std::string message = n.front().message;
+            if (n.size() > 1) {
+                std::string ids;
+                for (std::size_t k = 0; k < n.size() && k < listed_ids; ++k) ids += (k ? ", " : "") + n[k].part->id;
+                message += fmt::format("; {} parts {} ({}{})", n.size(), m.id == "0" ? "have none" : "name it", ids,
+                                       n.size() > listed_ids ? ", ..." : "");
+            }
+            diag::Diagnostic& d = c.report(m.code, n.front().place, std::move(message));
+            for (std::size_t k = 1; k < n.size() && k <= listed_notes; ++k)
+                d.notes.push_back({n[k].place, fmt::format("part {} {} too", n[k].part->id,
+                                                           m.id == "0" ? "has none" : "names it")});
+        }
+    }
+
+private:
+    struct Missing {
+        std::string code;
+        Id id;
+        std::vector<Naming> namings;
+    };
+    std::vector<Missing> missing_;
+    std::map<std::pair<std::string, Id>, std::size_t> index_;
+};
+
 void check_part_references(RuleContext& c, std::set<Id>& used_sections, std::set<Id>& used_materials,
                            std::set<Id>& used_eos) {
+    MissingIds missing;
     for (const model::Part& part : c.model.parts) {
         const auto& s = part.section;
         if (s.explicit_value && !c.model.section(s.value))
-            c.report("REF003", s.span, missing_reference(part, words(c).section_field, "section", s.value, words(c).section));
+            missing.add("REF003", s.value, part, s.span,
+                        missing_reference(part, words(c).section_field, "section", s.value, words(c).section));
         used_sections.insert(s.value);
         const auto& m = part.material;
         if (m.explicit_value && !c.model.material(m.value) && !(m.value == "0" && needs_no_structural_material(c, part)))
-            c.report("REF004", m.span, missing_reference(part, words(c).material_field, "material", m.value, words(c).material));
+            missing.add("REF004", m.value, part, m.span,
+                        missing_reference(part, words(c).material_field, "material", m.value, words(c).material));
         used_materials.insert(m.value);
         const auto& e = part.eos;
         if (!e.value.empty() && !c.model.eos(e.value))
-            c.report("REF005", e.span, fmt::format("part {} names EOS {}, which no {} defines", part.id, e.value, words(c).eos));
+            missing.add("REF005", e.value, part, e.span,
+                        fmt::format("part {} names EOS {}, which no {} defines", part.id, e.value, words(c).eos));
         used_eos.insert(e.value);
     }
+    missing.report(c);
 }
 
 // Set references: the keyword, the field holding the set id, and when it is a set.
@@ -203,10 +259,14 @@ void check_set_references(RuleContext& c) {
         auto need = [&](std::string_view field, bool part_kind, std::string_view why) {
             const model::FieldRecord* f = r.field(field);
             if (!f || !f->explicit_value || !f->valid || f->number == 0) return;
-            Id id = model::normalise_id(f->text);
-            if (!(part_kind ? c.part_set(id) : c.node_set(id)))
-                c.report("REF008", f->span,
-                         fmt::format("{} {} is not defined{}", part_kind ? "part set" : "node set", id, why));
+            // The number read (a &name stands for its value), as the generated keywords' REF008 reads it.
+            const auto number = static_cast<long long>(f->number);
+            Id id = std::to_string(number);
+            if (part_kind ? c.part_set(id) : c.node_set(id)) return;
+            // Sets sphdeck does not expand (*SET_NODE_GENERAL, _ADD, _BOX...) define the id too.
+            if (deck_may_define(c.deck, part_kind ? "SET_PART" : "SET_NODE", number)) return;
+            c.report("REF008", f->span,
+                     fmt::format("{} {} is not defined{}", part_kind ? "part set" : "node set", id, why));
         };
         auto number = [&](std::string_view field, double fallback) {
             const model::FieldRecord* f = r.field(field);

@@ -112,6 +112,11 @@ KindWords words_for(std::string_view kind) {
 
 }  // namespace
 
+bool deck_may_define(const grammar::RawDeck& deck, std::string_view kind, long long id) {
+    const Definitions d = definitions_of(deck, kind);
+    return d.unreadable || d.ids.count(id) > 0;
+}
+
 void check_followed_references(RuleContext& c, std::set<model::Id>& boxes) {
     const auto& references = c.model.id_references;
     if (references.empty() || ids_offset(c.deck)) return;

@@ -12,4 +12,9 @@ namespace sphdeck::lint {
 // (REF007 says which boxes no keyword names). Run only when no include is missing.
 void check_followed_references(RuleContext& c, std::set<model::Id>& boxes);
 
+// Whether a keyword of the deck defines id `id` of `kind` ("SET_NODE", "SET_PART"...), read from
+// the first field of its first card whatever the keyword's form (*SET_NODE_GENERAL, _ADD, _LIST...),
+// or the kind has a definition whose id is not a number (a label, &name): it may be that one.
+bool deck_may_define(const grammar::RawDeck& deck, std::string_view kind, long long id);
+
 }  // namespace sphdeck::lint

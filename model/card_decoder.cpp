@@ -149,7 +149,7 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
         switch (spec.type) {
             case FieldType::Unused: break;
             case FieldType::Text:
-                check_text(spec, v);
+                check_text(block, spec, v);
                 break;
             case FieldType::Label:
                 // An id: a number, or since 971 R7.1 an alphanumeric label (lsdyna-format.md §10).
@@ -184,12 +184,19 @@ void CardDecoder::decode_number(const grammar::Block& block, const keywords::Fie
             report("DK012", diag::Severity::Error, fmt::format("undefined parameter '{}'", token.name), v.span);
             return;
         }
-        if (found.case_mismatch)
-            report("DK024", diag::Severity::Warning,
-                   fmt::format("'&{}' matches parameter '{}' only when case is ignored", token.name,
-                               found.parameter->name),
-                   v.span);
+        // A reference differing from its definition only by case resolves silently: LS-DYNA reads
+        // names case-insensitively (an R13.1.1 run resolved &TEnd to tEnd without a word).
         using grammar::ParameterType;
+        if (found.parameter->type == ParameterType::Character && spec.type == FieldType::Label) {
+            // A label field takes a character parameter: its text is the label (or the number) named.
+            v.text = found.parameter->text;  // the deck's parameter table outlives the decoding
+            const grammar::ValueToken label = grammar::classify_value(v.text);
+            const grammar::IntegerValue n = grammar::to_integer(label);
+            if (label.shape == grammar::ValueShape::Integer && n.status == NumberStatus::Ok)
+                v.number = static_cast<double>(n.value);
+            v.valid = true;
+            return;
+        }
         if (found.parameter->type == ParameterType::Character ||
             (integer && found.parameter->type == ParameterType::Real)) {
             report("DK013", diag::Severity::Error,
@@ -244,7 +251,7 @@ void CardDecoder::decode_number(const grammar::Block& block, const keywords::Fie
     if (!spec.choices.empty() || spec.min || spec.max) check_range(spec, v);
 }
 
-void CardDecoder::check_text(const keywords::FieldSpec& spec, FieldValue& v) {
+void CardDecoder::check_text(const grammar::Block& block, const keywords::FieldSpec& spec, FieldValue& v) {
     v.valid = true;
     if (!v.explicit_value) {
         if (spec.required)
@@ -252,15 +259,24 @@ void CardDecoder::check_text(const keywords::FieldSpec& spec, FieldValue& v) {
         return;
     }
     if (spec.text_choices.empty()) return;
+    // A parameter may stand in any field: a character parameter's text is the word chosen; another
+    // &name (a number, or a name sphdeck cannot resolve) is not judged against the words.
+    std::string_view text = v.text;
+    if (const grammar::ValueToken token = grammar::classify_value(v.text);
+        token.shape == grammar::ValueShape::Parameter) {
+        auto found = deck_.parameters.find(token.name, v.span.file, block.parameter_epoch);
+        if (!found.parameter || found.parameter->type != grammar::ParameterType::Character) return;
+        text = found.parameter->text;
+    }
     for (std::string_view choice : spec.text_choices)
-        if (choice.size() == v.text.size() &&
-            std::equal(choice.begin(), choice.end(), v.text.begin(),
+        if (choice.size() == text.size() &&
+            std::equal(choice.begin(), choice.end(), text.begin(),
                        [](char a, char b) { return std::toupper(static_cast<unsigned char>(a)) ==
                                                    std::toupper(static_cast<unsigned char>(b)); }))
             return;
     std::string allowed;
     for (std::string_view c : spec.text_choices) allowed += (allowed.empty() ? "" : ", ") + std::string(c);
-    report("DK007", diag::Severity::Error, fmt::format("{} = '{}' is not one of {}", spec.name, shown(v.text), allowed),
+    report("DK007", diag::Severity::Error, fmt::format("{} = '{}' is not one of {}", spec.name, shown(text), allowed),
            v.span);
 }
 

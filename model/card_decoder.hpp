@@ -59,7 +59,7 @@ private:
                       std::vector<FieldValue>& values);
     void decode_number(const grammar::Block& block, const keywords::FieldSpec& spec, const grammar::ValueToken& token,
                        FieldValue& v);
-    void check_text(const keywords::FieldSpec& spec, FieldValue& v);
+    void check_text(const grammar::Block& block, const keywords::FieldSpec& spec, FieldValue& v);
     void check_range(const keywords::FieldSpec& spec, const FieldValue& v);
     void report(const char* code, diag::Severity s, std::string message, grammar::Span span);
 

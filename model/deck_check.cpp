@@ -8,6 +8,7 @@
 #include <numeric>
 #include <string>
 
+#include "grammar/value.hpp"
 #include "model/case_blocks.hpp"
 #include "model/particle_ranges.hpp"
 #include "model/shift_diagnosis.hpp"
@@ -33,6 +34,15 @@ int available_threads() {
 #endif
 }
 
+// Whether NEND reads the same 8 wide (columns 33-40, a blank read as 0) as 10 wide (33-42): then
+// the readers that disagree on its width agree on this line (LS-PrePost writes a `0` in column 42).
+bool same_nend_both_widths(std::string_view text, const FieldValue& nend) {
+    if (!nend.valid || text.size() <= 32) return false;
+    const grammar::IntegerValue narrow = grammar::parse_integer(text.substr(32, 8));
+    if (narrow.status == grammar::NumberStatus::Blank) return nend.number == 0;
+    return narrow.status == grammar::NumberStatus::Ok && static_cast<double>(narrow.value) == nend.number;
+}
+
 // Particles one *ELEMENT_SPH card stands for (its range already checked), and the NEND width
 // warning (DK023).
 std::size_t count_particles(const grammar::RawDeck& deck, const grammar::CardLine& line, grammar::CardFormat format,
@@ -43,7 +53,8 @@ std::size_t count_particles(const grammar::RawDeck& deck, const grammar::CardLin
     // 41-42 makes NEND written, so the line is looked at again only then (this runs once per particle).
     if (format != grammar::CardFormat::Standard || values.size() < 4 || !values[3].explicit_value) return n;
     std::string_view text = deck.text(line);
-    if (text.size() > 40 && !grammar::is_blank(text.substr(40, 2)) && !grammar::is_free_format(text))
+    if (text.size() > 40 && !grammar::is_blank(text.substr(40, 2)) && !grammar::is_free_format(text) &&
+        !same_nend_both_widths(text, values[3]))
         out.push_back({"DK023", diag::Severity::Warning,
                        "NEND reaches columns 41-42; some readers stop NEND at column 40", values[3].span, {}});
     return n;

@@ -9,6 +9,16 @@
 namespace sphdeck::model {
 
 namespace {
+// The text a record keeps for a field: as written, except that a &name in an id field (an integer
+// or label field: SECID, MID, NSID...) stands for the id it resolved to, so the rules that match
+// ids by text see the id the solver reads (issue 26, class A).
+std::string record_text(const FieldValue& v) {
+    const bool id_field = v.spec->type == keywords::FieldType::Integer || v.spec->type == keywords::FieldType::Label;
+    const bool reference = !v.text.empty() && (v.text[0] == '&' || (v.text.size() > 1 && v.text[0] == '-' && v.text[1] == '&'));
+    if (id_field && reference && v.valid) return std::to_string(static_cast<long long>(v.number));
+    return std::string(v.text);
+}
+
 // One block's lines are known before its cards are decoded: grow the arrays once, not by doubling.
 void reserve_more(Nodes& n, std::size_t more) {
     const std::size_t size = n.id.size() + more;
@@ -88,8 +98,8 @@ void ModelBuilder::on_card(const grammar::Block& block, const keywords::KeywordM
     row.reserve(values.size());
     for (const FieldValue& v : values) {
         if (v.spec->type == keywords::FieldType::Unused) continue;
-        row.push_back(FieldRecord{v.spec->name, v.spec->type, v.number, std::string(v.text), v.explicit_value,
-                                  v.valid, v.span});
+        row.push_back(FieldRecord{v.spec->name, v.spec->type, v.number, record_text(v), v.explicit_value, v.valid,
+                                  v.span});
     }
     model_.records.back().rows.push_back(std::move(row));
 }

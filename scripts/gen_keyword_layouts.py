@@ -288,6 +288,23 @@ HAND_WRITTEN = {
 }
 
 
+# *ELEMENT_SHELL_{THICKNESS,BETA,MCID}...: the THIC5-THIC8 card belongs to 8-node shells only, whose
+# mid-side nodes N5-N8 (pydyna: "Mid side nodal point 5") are given; a 4-node shell is two lines
+# (OpenRadioss' Keyword971 shell.cfg reads *ELEMENT_SHELL_THICKNESS as the node card and the
+# THIC1-4/BETA card, nothing more). pydyna reads the card always, so 4-node shells drift out of step.
+EIGHT_NODE_CARD = "N5 != 0 or N6 != 0 or N7 != 0 or N8 != 0"
+
+
+def eight_node_thickness(lines):
+    out = []
+    for line in lines:
+        rep, opt, cond, fields = line.split("|", 3)
+        if fields.startswith("THIC5:") and cond == "":
+            cond = EIGHT_NODE_CARD
+        out.append("|".join([rep, opt, cond, fields]))
+    return out
+
+
 def cxx_string(s):
     return '"' + s.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n") + '"'
 
@@ -301,7 +318,10 @@ def main():
         e = kws[name]
         LINKS.clear()
         LINKS.update(e.get("links", {}))
-        body = " ".join(e.get("options", [])) + "\n" + "\n".join(card_lines(e))
+        lines = card_lines(e)
+        if name.upper().startswith("*ELEMENT_SHELL"):
+            lines = eight_node_thickness(lines)
+        body = " ".join(e.get("options", [])) + "\n" + "\n".join(lines)
         # Keyword names are case-insensitive and looked up upper-cased; pydyna spells two with
         # lower-case letters (*MAT_115_o, *MAT_249_UDfiber).
         rows.append((name.upper(), body))

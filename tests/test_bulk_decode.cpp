@@ -150,7 +150,7 @@ TEST_CASE("bulk decode: lines the lean path must leave to the full decoder") {
     std::string text = "*KEYWORD\n*PARAMETER\nR XX      2.5\n*NODE\n";
     const char* odd_nodes[] = {
         "      11,1.0,2.0,3.0",                                               // free format
-        "      12\t1.0             2.0             3.0",                       // tab
+        "      12\t       1.0             2.0             3.0",                // tab moving X when expanded
         "      13            &XX             2.0             3.0",             // parameter
         "",                                                                    // blank line: NID required
         "      15             1.0             2.0             3.0       0       0        junk past 80",  // DK006

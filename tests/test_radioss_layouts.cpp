@@ -135,7 +135,8 @@ TEST_CASE("radioss layouts: a one-file deck (engine input, /END/ENGINE, starter 
     auto r = check("# RADIOSS\n/RUN/run/1\n20.0\n/TFILE\n0.05\n/END/ENGINE\n/BEGIN\nrun\n      2022\n/END\n");
     CHECK(count_code(r.diagnostics, "RAD001") == 0);
     CHECK(count_code(r.diagnostics, "DK001") == 0);  // /RUN and /TFILE are read as engine keywords
-    CHECK(count_code(check("# RADIOSS\n/BEGIN\nrun\n      2022\n/END\n").diagnostics, "RAD001") == 1);
+    CHECK(count_code(check("# RADIOSS\n/BEGIN\nrun\n      2022\n/END\n").diagnostics, "RAD001") == 0);
+    CHECK(count_code(check("/BEGIN\nrun\n      2022\n/END\n").diagnostics, "RAD001") == 1);
 }
 
 TEST_CASE("radioss layouts: /FRAME/MOV puts its Dir axis along N1N2 (hm_read_frm.F)") {

@@ -70,10 +70,13 @@ TEST_CASE("radioss: CRLF, a BOM, no final newline, trailing blank lines of a blo
     CHECK(d.diagnostics.empty());
 }
 
-TEST_CASE("radioss: RAD001 when the first line is not #RADIOSS STARTER") {
-    auto d = read_buffer("# my deck\n#RADIOSS STARTER\n/BEGIN\n", "run_0000.rad");
+TEST_CASE("radioss: RAD001 when the first line is not a comment") {
+    auto d = read_buffer("/BEGIN\nrun\n", "run_0000.rad");
     REQUIRE(count_code(d.diagnostics, "RAD001") == 1);
     CHECK(find_code(d.diagnostics, "RAD001")->span.line == 1);
+    // Any comment may come first: the starter's reader takes it as a comment (issue 26, class I).
+    CHECK(count_code(read_buffer("# my deck\n#RADIOSS STARTER\n/BEGIN\n", "run_0000.rad").diagnostics, "RAD001") == 0);
+    CHECK(count_code(read_buffer("# RADIOSS \n/BEGIN\n", "run_0000.rad").diagnostics, "RAD001") == 0);
     CHECK(count_code(read_buffer("", "run_0000.rad").diagnostics, "RAD001") == 1);
     CHECK(count_code(read_buffer("#RADIOSS STARTER   \n", "run_0000.rad").diagnostics, "RAD001") == 0);
     CHECK(count_code(read_buffer("/RUN/run/1\n", "run_0001.rad").diagnostics, "RAD001") == 0);  // an engine deck
@@ -390,8 +393,10 @@ TEST_CASE("radioss: bad values are reported at their cells") {
     CHECK(find_code(r.diagnostics, "DK003")->span.column == 26);
     CHECK(count_code(r.diagnostics, "DK004") == 1);
     CHECK(r.model.nodes.id == std::vector<long long>{2});
-    auto tab = check(deck("/NODE\n         1\t1.0\n"));
+    // A tab that moves X into Y's cell when expanded to column 17 (one that moves nothing is silent).
+    auto tab = check(deck("/NODE\n         1\t               1.0\n"));
     CHECK(count_code(tab.diagnostics, "DK016") == 1);
+    CHECK(count_code(check(deck("/NODE\n         1\t1.0\n")).diagnostics, "DK016") == 0);
 }
 
 TEST_CASE("radioss: RAD025 two numbers glued in one fixed cell, the first one kept") {

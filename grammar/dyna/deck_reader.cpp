@@ -169,6 +169,10 @@ void DeckReader::close_block() {
         handle_include(block, false);
     } else if (k == "*INCLUDE_TRANSFORM") {
         handle_include(block, true);
+    } else if (k == "*RVE_ANALYSIS_FEM") {
+        // Its first card names the RVE mesh file (nodes, elements, parts, sets), which LS-DYNA
+        // reads into the model: read like an include, so the ids the deck names there are known.
+        handle_include(block, true);
     } else if (k == "*INCLUDE_PATH") {
         handle_include_path(block, false);
     } else if (k == "*INCLUDE_PATH_RELATIVE") {

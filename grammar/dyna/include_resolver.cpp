@@ -1,5 +1,7 @@
 #include "grammar/dyna/include_resolver.hpp"
 
+#include <algorithm>
+
 namespace sphdeck::grammar::dyna {
 namespace fs = std::filesystem;
 
@@ -18,9 +20,15 @@ std::vector<Candidate> candidates(const std::string& name, const IncludeSearch& 
     for (const auto& dir : search.include_paths) list.push_back({dir / given, "include path"});
     return list;
 }
-}  // namespace
 
-std::optional<ResolvedInclude> resolve_include(const std::string& name, const IncludeSearch& search) {
+// A name written with Windows separators (`other\define.k`): the decks were run on Windows as
+// written, where a backslash separates folders. Tried with / when the name as written is not found.
+std::string with_forward_slashes(std::string name) {
+    std::replace(name.begin(), name.end(), '\\', '/');
+    return name;
+}
+
+std::optional<ResolvedInclude> resolve_as_written(const std::string& name, const IncludeSearch& search) {
     const auto list = candidates(name, search);
     for (const auto& c : list) {
         if (grammar::is_regular_file(c.path, search.overlay)) return ResolvedInclude{c.path, c.why};
@@ -31,6 +39,15 @@ std::optional<ResolvedInclude> resolve_include(const std::string& name, const In
         if (file_exists(c.path, search.overlay)) return ResolvedInclude{c.path, c.why};
     }
     return std::nullopt;
+}
+}  // namespace
+
+std::optional<ResolvedInclude> resolve_include(const std::string& name, const IncludeSearch& search) {
+    if (auto found = resolve_as_written(name, search)) return found;
+    if (name.find('\\') == std::string::npos) return std::nullopt;
+    auto found = resolve_as_written(with_forward_slashes(name), search);
+    if (found) found->matched_by += " ('\\' read as '/')";
+    return found;
 }
 
 std::optional<std::string> include_budget_problem(const fs::path& path, std::size_t files, std::size_t bytes,
@@ -48,6 +65,8 @@ std::optional<std::string> include_budget_problem(const fs::path& path, std::siz
 std::vector<fs::path> include_candidates(const std::string& name, const IncludeSearch& search) {
     std::vector<fs::path> out;
     for (const auto& c : candidates(name, search)) out.push_back(c.path);
+    if (name.find('\\') != std::string::npos)
+        for (const auto& c : candidates(with_forward_slashes(name), search)) out.push_back(c.path);
     return out;
 }
 

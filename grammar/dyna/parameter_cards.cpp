@@ -2,6 +2,8 @@
 
 #include <cctype>
 #include <cmath>
+#include <map>
+#include <tuple>
 
 #include "grammar/dyna/expression.hpp"
 #include "grammar/fields.hpp"
@@ -18,11 +20,6 @@ struct Context {
 
 void report(RawDeck& deck, const char* code, diag::Severity s, std::string message, Span span) {
     deck.diagnostics.push_back(diag::Diagnostic{code, s, std::move(message), span, {}});
-}
-
-void report_case_mismatch(RawDeck& deck, std::string_view written, const Parameter& p, Span span) {
-    report(deck, "DK024", diag::Severity::Warning,
-           "'&" + std::string(written) + "' matches parameter '" + p.name + "' only when case is ignored", span);
 }
 
 // The name field: its first non-blank character is the type letter (R, I or C, any case),
@@ -87,7 +84,6 @@ bool value_of(Context& c, const Field& field, ParameterType type, Parameter& p) 
                    field.span);
             return false;
         }
-        if (found.case_mismatch) report_case_mismatch(c.deck, token.name, *found.parameter, field.span);
         p.number = token.negated ? -found.parameter->number : found.parameter->number;
     } else {
         RealValue v = to_real(token);
@@ -144,21 +140,27 @@ void read_expressions(Context& c) {
     const CardLine* end = c.deck.end_lines(c.block);
     for (const CardLine* l = begin; l != end;) {
         std::string_view text = c.deck.text(*l);
-        std::size_t name_width = c.block.format == CardFormat::Long ? 20 : 10;
+        const std::size_t fixed_width = c.block.format == CardFormat::Long ? 20 : 10;
+        // Free format: a comma in the name field ends the name there ("Rf_r, 2-f_f"), and the
+        // expression is the rest of the line (commas inside it belong to it: max(a,b)).
+        const std::size_t comma = text.substr(0, std::min(text.size(), fixed_width)).find(',');
+        const bool free_format = comma != std::string_view::npos;
+        const std::size_t name_width = free_format ? comma : fixed_width;
+        const std::size_t expression_start = free_format ? comma + 1 : fixed_width;
         std::string_view name_field = text.substr(0, std::min(text.size(), name_width));
         const CardLine* first = l++;
         if (is_blank(name_field)) continue;
-        std::string expression(text.size() > name_width ? text.substr(name_width) : std::string_view{});
+        std::string expression(text.size() > expression_start ? text.substr(expression_start) : std::string_view{});
         while (l != end) {
             std::string_view next = c.deck.text(*l);
-            if (!is_blank(next.substr(0, std::min(next.size(), name_width))) || is_blank(next)) break;
+            if (!is_blank(next.substr(0, std::min(next.size(), fixed_width))) || is_blank(next)) break;
             expression += ' ';
-            expression += next.substr(std::min(next.size(), name_width));
+            expression += next.substr(std::min(next.size(), fixed_width));
             ++l;
         }
         Span name_span{first->file, first->line, 1, static_cast<std::uint32_t>(name_field.size() + 1)};
-        Span expression_span{first->file, first->line, static_cast<std::uint32_t>(name_width + 1),
-                             static_cast<std::uint32_t>(std::max(text.size(), name_width + 1) + 1)};
+        Span expression_span{first->file, first->line, static_cast<std::uint32_t>(expression_start + 1),
+                             static_cast<std::uint32_t>(std::max(text.size(), expression_start + 1) + 1)};
         ParameterType type;
         std::string_view name;
         if (!split_type_and_name(name_field, type, name)) {
@@ -170,7 +172,6 @@ void read_expressions(Context& c) {
         auto lookup = [&](std::string_view ref) -> std::optional<double> {
             auto found = c.deck.parameters.find(ref, first->file, c.deck.parameters.epoch());
             if (!found.parameter || found.parameter->type == ParameterType::Character) return std::nullopt;
-            if (found.case_mismatch) report_case_mismatch(c.deck, ref, *found.parameter, expression_span);
             return found.parameter->number;
         };
         if (std::string_view tab_at = text; tab_at.find('\t') != std::string_view::npos)
@@ -181,8 +182,8 @@ void read_expressions(Context& c) {
         if (!r.ok()) {
             const char* code = r.error == ExpressionError::UndefinedParameter ? "DK012" : "DK015";
             Span where = expression_span;
-            if (first == l - 1 && r.offset + name_width < text.size()) {  // single line: point at the token
-                where.column = static_cast<std::uint32_t>(name_width + r.offset + 1);
+            if (first == l - 1 && r.offset + expression_start < text.size()) {  // single line: point at the token
+                where.column = static_cast<std::uint32_t>(expression_start + r.offset + 1);
                 where.end_column = static_cast<std::uint32_t>(where.column + std::max<std::size_t>(r.length, 1));
             }
             report(c.deck, code, diag::Severity::Error, "in expression of '" + std::string(name) + "': " + r.message,
@@ -216,6 +217,65 @@ void read_duplication(Context& c) {
 }
 
 }  // namespace
+
+void group_redefinitions(RawDeck& deck) {
+    constexpr std::string_view prefix = "parameter '", again = "' is defined again";
+    constexpr std::size_t listed_notes = 3, listed_names = 8;  // the count says the rest
+    auto& all = deck.diagnostics;
+    struct Group {
+        std::size_t first;
+        std::vector<std::string> names;
+    };
+    std::map<std::tuple<FileId, std::string>, Group> groups;  // file, what the redefinition does
+    std::vector<bool> drop(all.size(), false);
+    std::vector<std::size_t> merged_into(all.size(), 0);
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        const diag::Diagnostic& d = all[i];
+        if (d.code != "DK014" || d.severity != diag::Severity::Warning || d.message.rfind(prefix, 0) != 0) continue;
+        const std::size_t end = d.message.find(again);
+        if (end == std::string::npos) continue;
+        std::string name = d.message.substr(prefix.size(), end - prefix.size());
+        auto [it, fresh] = groups.try_emplace({d.span.file, d.message.substr(end + again.size())}, Group{i, {}});
+        it->second.names.push_back(std::move(name));
+        if (fresh) continue;
+        drop[i] = true;
+        merged_into[i] = it->second.first;
+        diag::Diagnostic& first = all[it->second.first];
+        if (it->second.names.size() <= listed_notes + 1)
+            first.notes.push_back({d.span, "'" + it->second.names.back() + "' is defined again here"});
+    }
+    for (auto& [key, group] : groups) {
+        diag::Diagnostic& first = all[group.first];
+        if (group.names.size() > 1) {
+            std::string names;
+            for (std::size_t k = 0; k < group.names.size() && k < listed_names; ++k)
+                names += (k ? ", " : "") + group.names[k];
+            first.message += "; " + std::to_string(group.names.size()) + " parameters of this file are defined again (" +
+                             names + (group.names.size() > listed_names ? ", ..." : "") + ")";
+        }
+        first.notes.push_back({Span{}, "*PARAMETER_DUPLICATION 4 (replace) or 5 (keep the first) redefines silently "
+                                       "where it is meant (defaults in an include overridden by the deck)"});
+    }
+    // A DK024 (names differing by case) on the line of a DK014 joins it: one finding per line.
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        if (all[i].code != "DK024" || drop[i]) continue;
+        for (std::size_t j = 0; j < all.size(); ++j)
+            if (j != i && all[j].code == "DK014" && all[j].span.file == all[i].span.file &&
+                all[j].span.line == all[i].span.line) {
+                const std::size_t into = drop[j] ? merged_into[j] : j;
+                all[into].notes.push_back({all[i].span, all[i].message});
+                drop[i] = true;
+                break;
+            }
+    }
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < all.size(); ++i)
+        if (!drop[i]) {
+            if (kept != i) all[kept] = std::move(all[i]);
+            ++kept;
+        }
+    all.resize(kept);
+}
 
 void define_parameters(RawDeck& deck, const Block& block) {
     const std::string& k = block.keyword;

@@ -1,5 +1,7 @@
 #include "grammar/dyna/reader.hpp"
 
+#include "grammar/dyna/parameter_cards.hpp"
+
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
@@ -88,6 +90,7 @@ RawDeck read_main(SourceFile main, const std::filesystem::path& directory, const
     DeckReader reader(deck, options);
     reader.set_main_directory(directory);
     reader.read(id, CardFormat::Standard);
+    group_redefinitions(deck);
     return deck;
 }
 

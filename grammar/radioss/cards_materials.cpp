@@ -62,10 +62,23 @@ void add_material_keywords(std::vector<KeywordSpec>& out) {
                       {{2018, {density(), opaque()}},
                        {0, {density(), skipped_line(), once({R("C0"), R("C1"), R("C2"), R("C3")}), opaque()}}}));
 
-    // Laws whose first card is no density: /MAT/GAS/<MASS|MOLE|PREDEF>/id (mat_gas.cfg: a gas
-    // name or a molar mass) and LAW51 (mat_law51.cfg: Iflag and material ids from format 120).
+    // Laws whose first card is no density, each read by its own first card (a scan of the first
+    // CARD after the title in every MAT/*.cfg of hm_cfg_files/config/CFG, latest format of each):
+    // /MAT/GAS/<MASS|MOLE|PREDEF>/id (mat_gas.cfg: a gas name or a molar mass), LAW51
+    // (mat_law51.cfg: Iflag and material ids from format 120), LAW151 (mat_law151.cfg: material ids
+    // and volume fractions), LAW20 (matl20_bimat.cfg: the two material ids), LAW37
+    // (matl37_biphas.cfg: Psh, then the liquid's and the gas's cards) and PLAS_PREDEF
+    // (mat_plas_predef.cfg: `%20s` the name of a predefined material, STEEL, HSS, UHSS, AA5182,
+    // AA6082-T6, PA6GF30 or PPT40, whose density and moduli the reader assigns).
     out.push_back(law("/MAT/GAS", {}, "gas of a monitored volume (not checked)", {{0, {opaque()}}}));
     out.push_back(law("/MAT/LAW51", {"/MAT/MULTIMAT"}, "multi-material ALE law (not checked)", {{0, {opaque()}}}));
+    out.push_back(law("/MAT/LAW151", {"/MAT/MULTIFLUID"}, "multi-fluid law (not checked)", {{0, {opaque()}}}));
+    out.push_back(law("/MAT/LAW20", {"/MAT/BIMAT"}, "bi-material law of two material ids (not checked)",
+                      {{0, {opaque()}}}));
+    out.push_back(law("/MAT/LAW37", {"/MAT/BIPHAS"}, "liquid-gas law: Psh, then the phases' cards (not checked)",
+                      {{0, {once({R("Psh")}), opaque()}}}));
+    out.push_back(law("/MAT/PLAS_PREDEF", {}, "predefined elastic-plastic material named by its first card",
+                      {{0, {once({T20("Material_Name")}), opaque()}}}));
 }
 
 }  // namespace sphdeck::grammar::radioss::detail

@@ -63,20 +63,25 @@ bool ends_with(std::string_view s, std::string_view suffix) {
     return s.size() >= suffix.size() && s.substr(s.size() - suffix.size()) == suffix;
 }
 
-// RAD001: a starter deck must begin with #RADIOSS STARTER (reader message 100201).
+// RAD001: a starter deck whose first line is not a comment. The starter asks for no header: its
+// reader takes a line with '#' or '$' in column 1 as a comment (reader/source/cfgio/MODEL_IO/
+// meci_syntax_infos.cpp), and no code of reader/ or starter/ emits message 100201 ("mandatory first
+// card #RADIOSS STARTER missing"), which msg_hw_radioss_reader.txt still defines. So `# RADIOSS`
+// (QA onefile_rad/CRA2AV4_0000.rad, accepted) or any comment may come first; a deck that starts
+// with data or a keyword lacks the conventional #RADIOSS STARTER line that every writer puts there.
 void check_first_line(RawDeck& deck, FileId main) {
     const SourceFile& f = deck.sources.file(main);
     std::string_view text = f.text;
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
     std::string_view first = text.substr(0, text.find('\n'));
     while (!first.empty() && (first.back() == '\r' || first.back() == ' ' || first.back() == '\t')) first.remove_suffix(1);
-    if (first.substr(0, 16) == "#RADIOSS STARTER") return;
+    if (!first.empty() && (first.front() == '#' || first.front() == '$')) return;
     const auto width = static_cast<std::uint32_t>(std::max<std::size_t>(first.size(), 1));
     std::string found = first.empty() ? std::string("an empty line")
                                       : "'" + std::string(first.substr(0, std::min<std::size_t>(first.size(), 40))) +
                                             (first.size() > 40 ? "...'" : "'");
     deck.diagnostics.push_back({"RAD001", diag::Severity::Error,
-                                "first line is " + found + "; a starter deck must begin with #RADIOSS STARTER",
+                                "first line is " + found + "; a starter deck begins with the comment line #RADIOSS STARTER",
                                 Span{main, 1, 1, width + 1}, {}});
 }
 
