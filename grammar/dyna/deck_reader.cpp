@@ -136,7 +136,10 @@ void DeckReader::on_keyword(const char* begin, const char* end, const KeywordLin
     if (star > 0)
         report("DK020", diag::Severity::Warning, "keyword line does not start in column 1", block.span);
     if (parts.name.empty())
-        report("DK001", diag::Severity::Info, "keyword line without a keyword name", block.span);
+        report("DK001", diag::Severity::Error,
+               "keyword line without a keyword name: LS-DYNA reads a '*' in column 1 as a keyword; write '$' for a "
+               "comment",
+               block.span);
     for (char c : parts.name) {
         if (std::islower(static_cast<unsigned char>(c))) {
             report("DK021", diag::Severity::Info, "keyword '" + block.keyword + "' written in lower case", block.span);
