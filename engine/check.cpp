@@ -3,6 +3,7 @@
 #include "grammar/read_deck.hpp"
 #include "preproc/preview.hpp"
 #include "lint/suppressions.hpp"
+#include "lint/typo_consequences.hpp"
 #include "model/model_builder.hpp"
 #include "model/radioss_decoder.hpp"
 
@@ -17,6 +18,7 @@ CheckResult finish(grammar::RawDeck deck, const CheckOptions& options) {
                        : model::build_model(result.deck, result.diagnostics, &result.summary);
     lint::RuleContext context(result.model, result.deck, options.rules, result.diagnostics);
     lint::run_rules(context);
+    lint::point_to_misspelt_keywords(result.diagnostics);
     result.preview = std::move(context.preview);
     diag::sort_by_location(result.diagnostics);
     // What the deck's own comments and the configuration say about the findings: every consumer

@@ -10,6 +10,23 @@ namespace {
 // Distinct misspelt names a deck gets suggestions for: each costs a pass over every known name,
 // and a deck of thousands of made-up names (a fuzzer's) must stay fast.
 constexpr std::size_t max_suggested_names = 64;
+// The keyword without trailing _TITLE / _ID tokens, when that is a keyword the tables know as a
+// whole and something was removed: LS-DYNA gives many keywords a title or id card that pydyna's
+// layouts leave out (*CONSTRAINED_LAGRANGE_IN_SOLID_TITLE), so the name may well be valid.
+std::optional<std::string> known_without_title(std::string name) {
+    bool removed = false;
+    while (true) {
+        if (name.ends_with("_TITLE")) name.resize(name.size() - 6);
+        else if (name.ends_with("_ID")) name.resize(name.size() - 3);
+        else break;
+        removed = true;
+    }
+    if (!removed) return std::nullopt;
+    if (keywords::is_known_without_layout(name)) return name;
+    auto match = keywords::find_keyword(name);
+    if (match && match->unknown_options.empty()) return name;
+    return std::nullopt;
+}
 }  // namespace
 
 const std::optional<std::string>& UnknownKeywords::suggestion(const std::string& keyword) {
@@ -25,6 +42,14 @@ void UnknownKeywords::add(const grammar::RawDeck& deck, const grammar::Block& bl
     if (keywords::is_known_without_layout(block.keyword)) {
         auto& u = unchecked_[block.keyword];
         if (u.count++ == 0) u.first = block.span;
+        return;
+    }
+    if (auto base = known_without_title(block.keyword)) {
+        out.push_back({"DK001", diag::Severity::Warning,
+                       fmt::format("{} is {} with an option sphdeck's tables do not give it ({}): its cards are "
+                                   "not checked, and LS-DYNA stops here if it does not accept the option either",
+                                   block.keyword, *base, block.keyword.substr(base->size() + 1)),
+                       block.span, {}});
         return;
     }
     const std::optional<std::string>& better = suggestion(block.keyword);

@@ -29,7 +29,10 @@ CardFormat format_of_suffix(char suffix, CardFormat inherited) {
 }  // namespace
 
 DeckReader::DeckReader(RawDeck& deck, const ReaderOptions& options) : deck_(deck), options_(options) {
-    for (const auto& p : options.include_paths) include_paths_.emplace_back(p);
+    for (const auto& p : options.include_paths) {
+        include_paths_.emplace_back(p);
+        include_path_origins_.emplace_back("-I or include-paths");
+    }
 }
 
 Span DeckReader::span_of(const char* begin, const char*, std::size_t column_begin, std::size_t column_end) const {

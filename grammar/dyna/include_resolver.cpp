@@ -1,5 +1,7 @@
 #include "grammar/dyna/include_resolver.hpp"
 
+#include <algorithm>
+
 namespace sphdeck::grammar::dyna {
 namespace fs = std::filesystem;
 
@@ -15,7 +17,9 @@ std::vector<Candidate> candidates(const std::string& name, const IncludeSearch& 
     std::vector<Candidate> list;
     list.push_back({search.including_directory / given, "including file's folder"});
     list.push_back({search.main_directory / given, "main deck's folder"});
-    for (const auto& dir : search.include_paths) list.push_back({dir / given, "include path"});
+    for (std::size_t i = 0; i < search.include_paths.size(); ++i)
+        list.push_back({search.include_paths[i] / given,
+                        i < search.include_path_origins.size() ? search.include_path_origins[i].c_str() : "include path"});
     return list;
 }
 }  // namespace
@@ -45,9 +49,15 @@ std::optional<std::string> include_budget_problem(const fs::path& path, std::siz
     return std::nullopt;
 }
 
-std::vector<fs::path> include_candidates(const std::string& name, const IncludeSearch& search) {
-    std::vector<fs::path> out;
-    for (const auto& c : candidates(name, search)) out.push_back(c.path);
+std::vector<IncludeTry> include_tries(const std::string& name, const IncludeSearch& search) {
+    std::vector<IncludeTry> out;
+    for (const auto& c : candidates(name, search)) {
+        const fs::path normal = c.path.lexically_normal();
+        auto same = std::find_if(out.begin(), out.end(), [&](const IncludeTry& t) { return t.path == normal; });
+        if (same == out.end()) out.push_back({normal, {c.why}});
+        else if (std::find(same->rules.begin(), same->rules.end(), c.why) == same->rules.end())
+            same->rules.push_back(c.why);
+    }
     return out;
 }
 
