@@ -92,7 +92,8 @@ bool before(const Candidate& a, const Candidate& b) {
     if (a.distance != b.distance) return a.distance < b.distance;
     if (a.tier != b.tier) return a.tier < b.tier;
     if (a.text.size() != b.text.size()) return a.text.size() < b.text.size();
-    return a.text < b.text;
+    if (a.text != b.text) return a.text < b.text;
+    return a.known->name < b.known->name;  // the same suggestion from a base name and from base + option
 }
 
 // Every known name close to `key`: compared as a whole, and with as many leading tokens of `key` as
@@ -132,8 +133,11 @@ std::vector<std::string_view> similar_keywords(std::string_view name, std::size_
     std::vector<std::string_view> out;
     std::vector<std::string_view> bases;
     const std::string key = key_of(name);
-    for (const Candidate& c : candidates_for(key)) {
+    const std::vector<Candidate> candidates = candidates_for(key);
+    for (const Candidate& c : candidates) {
         if (out.size() >= max) break;
+        // Names farther than the best by more than a swap are noise beside it.
+        if (c.distance > candidates.front().distance + 1) break;
         // One name per keyword, the stored spelling (the views outlive the call).
         if (std::find(bases.begin(), bases.end(), c.known->base) != bases.end()) continue;
         bases.push_back(c.known->base);
