@@ -1,6 +1,7 @@
 #include "cli/unknown_option.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <fmt/format.h>
 
 #include "grammar/similar_names.hpp"
@@ -12,17 +13,16 @@ namespace {
 // Whether `token` ("--name", "--name=value", "-x", "-xVALUE") names an option of `app`.
 bool known_option(const CLI::App& app, std::string_view token, std::vector<std::string>& spellings) {
     bool known = false;
+    const bool long_form = token.starts_with("--");
+    const std::string_view long_name = long_form ? token.substr(2, token.find('=') - 2) : std::string_view{};
     for (const CLI::Option* o : app.get_options()) {
         for (const std::string& l : o->get_lnames()) {
             spellings.push_back("--" + l);
-            const std::string_view name = token.substr(2, token.find('=') == std::string_view::npos
-                                                              ? std::string_view::npos
-                                                              : token.find('=') - 2);
-            if (token.starts_with("--") && name == l) known = true;
+            if (long_form && long_name == l) known = true;
         }
         for (const std::string& s : o->get_snames()) {
             spellings.push_back("-" + s);
-            if (!token.starts_with("--") && token.size() >= 2 && token.substr(1, s.size()) == s) known = true;
+            if (!long_form && token.substr(1, s.size()) == s) known = true;  // "-I", "-Idir"
         }
     }
     return known;
