@@ -131,6 +131,16 @@ TEST_CASE("suggestions: a missing include lists each path once, its rule, -I and
     }
     CHECK(tried == 1);  // the deck's folder is the including file's: one path, tried once
     CHECK(hint);
+
+    // A deck named relative to the working folder, and an OpenRadioss #include: the same suggestion.
+    test::Run run = test::run_sphdeck(dir, "check --format concise main.k");
+    CHECK(run.out.find("main.k:3:1: error: include file 'mesh_v2.k' not found; did you mean 'mesh_v3.k'?") !=
+          std::string::npos);
+    dir.write("run_0000.rad", "#RADIOSS STARTER\n/BEGIN\nrun\n      2022         0\n"
+                              "                  kg                  mm                  ms\n"
+                              "                  kg                  mm                  ms\n#include mesh_v2.k\n/END\n");
+    run = test::run_sphdeck(dir, "check --format concise run_0000.rad");
+    CHECK(run.out.find("include file 'mesh_v2.k' not found; did you mean 'mesh_v3.k'?") != std::string::npos);
 }
 
 TEST_CASE("suggestions: an unknown command-line option names the closest one, exit 2") {

@@ -35,7 +35,7 @@ std::string similar_file(const std::string& name, const std::vector<IncludeTry>&
     if (file.empty()) return {};
     std::vector<fs::path> folders;
     for (const IncludeTry& t : tries) {
-        const fs::path folder = t.path.parent_path();
+        const fs::path folder = t.path.has_parent_path() ? t.path.parent_path() : fs::path(".");
         if (std::find(folders.begin(), folders.end(), folder) == folders.end()) folders.push_back(folder);
     }
     for (const fs::path& folder : folders) {
