@@ -20,9 +20,12 @@ void point_to_misspelt_keywords(std::vector<diag::Diagnostic>& diagnostics) {
         const std::string& suggested = d.fixes[0].edits[0].replacement;
         auto match = keywords::find_keyword(suggested);
         if (!match || match->schema->generated) continue;  // a keyword the model does not read changes nothing there
-        causes.push_back({d.span, fmt::format("this may follow from the unknown keyword here (did you mean {}?): "
-                                              "its block was not read",
-                                              match->schema->name)});
+        // The fix's description names the keyword as read: "replace *PRAT with *PART".
+        std::string_view written = d.fixes[0].description;
+        if (written.starts_with("replace ")) written = written.substr(8, written.find(" with ") - 8);
+        causes.push_back({d.span, fmt::format("this may follow from the unknown keyword {} (did you mean {}?): its "
+                                              "block was not read",
+                                              written, match->schema->name)});
         if (causes.size() == 3) break;
     }
     if (causes.empty()) return;
