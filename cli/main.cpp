@@ -6,6 +6,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/suggest.hpp"
+#include "cli/unknown_option.hpp"
 
 namespace {
 
@@ -47,6 +48,13 @@ int main(int argc, char** argv) {
             std::string hint = did_you_mean(argv[1], names);
             fmt::print(stderr, "sphdeck: unknown command '{}'{}\nrun 'sphdeck --help' for the list\n", argv[1], hint);
             return exit_usage;
+        }
+        // (An ExtrasError thrown by a subcommand carries the subcommand's name, not its kind.)
+        if (dynamic_cast<const CLI::ExtrasError*>(&e) || e.get_name() == "RequiredError") {
+            if (auto message = unknown_option_message(app, argc, argv)) {
+                fmt::print(stderr, "{}\n", *message);
+                return exit_usage;
+            }
         }
         int code = app.exit(e);
         return code == 0 ? exit_clean : exit_usage;

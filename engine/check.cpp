@@ -4,6 +4,7 @@
 #include "preproc/preview.hpp"
 #include "lint/fold_causes.hpp"
 #include "lint/suppressions.hpp"
+#include "lint/typo_consequences.hpp"
 #include "model/model_builder.hpp"
 #include "model/radioss_decoder.hpp"
 
@@ -18,6 +19,7 @@ CheckResult finish(grammar::RawDeck deck, const CheckOptions& options) {
                        : model::build_model(result.deck, result.diagnostics, &result.summary);
     lint::RuleContext context(result.model, result.deck, options.rules, result.diagnostics);
     lint::run_rules(context);
+    lint::point_to_misspelt_keywords(result.diagnostics);
     result.preview = std::move(context.preview);
     lint::fold_into_causes(result.deck, result.diagnostics);
     diag::sort_by_location(result.diagnostics);

@@ -1,5 +1,6 @@
 #include "grammar/parameters.hpp"
 
+#include <algorithm>
 #include <cctype>
 
 namespace sphdeck::grammar {
@@ -43,6 +44,15 @@ ParameterMatch ParameterTable::find(std::string_view name, FileId file, std::uin
         if (!loose.parameter) loose = {&p, true};
     }
     return loose;
+}
+
+std::vector<std::string> ParameterTable::visible_names(FileId file, std::uint32_t epoch) const {
+    std::vector<std::string> out;
+    for (std::uint32_t i = 0; i < epoch && i < definitions_.size(); ++i) {
+        const Parameter& p = definitions_[i];
+        if (visible(p, file) && std::find(out.begin(), out.end(), p.name) == out.end()) out.push_back(p.name);
+    }
+    return out;
 }
 
 const Parameter* ParameterTable::find_existing(std::string_view name, FileId file) const {

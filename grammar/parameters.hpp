@@ -57,6 +57,9 @@ public:
 
     const std::vector<Parameter>& definitions() const { return definitions_; }
 
+    // The names a block of `file` read at `epoch` can use, each once, for "did you mean".
+    std::vector<std::string> visible_names(FileId file, std::uint32_t epoch) const;
+
     Duplication duplication = Duplication::WarnKeepFirst;
 
 private:

@@ -12,8 +12,9 @@ constexpr RuleInfo kRows[] = {
     // code, name, severity, since, source,
     //  summary
     // DK: deck syntax and card values, found by the readers and the schemas.
-    {"DK001", "unknown-keyword", Info, "0.1.0", "schema",
-     "keyword unknown to the schema: kept as opaque text and counted, never an error"},
+    {"DK001", "unknown-keyword", Error, "0.1.0", "schema",
+     "a keyword name LS-DYNA does not know (a typo: LS-DYNA stops there), with the closest known name; "
+     "a warning or info where the name may be valid"},
     {"DK002", "bad-integer", Error, "0.1.0", "reader",
      "text in an integer field that is not an integer (after parameter substitution)"},
     {"DK003", "bad-real", Error, "0.1.0", "reader",

@@ -114,9 +114,8 @@ nlohmann::json dyna_keyword_hover(const CheckedDeck& deck, const grammar::Block&
     const auto& sources = deck.result.deck.sources;
     auto match = keywords::find_keyword(block.keyword);
     if (!match || !match->unknown_options.empty()) {
-        std::string text = fmt::format("`{}`: unknown keyword, kept as is", block.keyword);
-        const auto similar = keywords::similar_keywords(block.keyword, 1);
-        if (!similar.empty()) text += fmt::format("; did you mean `{}`?", similar.front());
+        std::string text = fmt::format("`{}`: unknown keyword (LS-DYNA stops at it), not checked", block.keyword);
+        if (auto better = keywords::suggest_keyword(block.keyword)) text += fmt::format("; did you mean `{}`?", *better);
         return hover_json(std::move(text), sources, block.span);
     }
     const auto& schema = *match->schema;

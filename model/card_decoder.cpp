@@ -1,4 +1,5 @@
 #include "model/card_decoder.hpp"
+#include "grammar/undefined_parameter.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -160,14 +161,15 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
                 [[fallthrough]];
             case FieldType::Integer:
             case FieldType::Real:
-                decode_number(block, spec, token, v);
+                decode_number(block, spec, token, fields_[i], cut.free_format ? 0 : positions_[i].width, v);
                 break;
         }
     }
 }
 
 void CardDecoder::decode_number(const grammar::Block& block, const keywords::FieldSpec& spec,
-                                const grammar::ValueToken& token, FieldValue& v) {
+                                const grammar::ValueToken& token, const grammar::Field& field,
+                                std::uint32_t fixed_width, FieldValue& v) {
     const bool integer = spec.type != FieldType::Real;
     if (token.shape == grammar::ValueShape::Blank) {
         if (spec.default_value) {
@@ -181,7 +183,9 @@ void CardDecoder::decode_number(const grammar::Block& block, const keywords::Fie
     if (token.shape == grammar::ValueShape::Parameter) {
         auto found = deck_.parameters.find(token.name, v.span.file, block.parameter_epoch);
         if (!found.parameter) {
-            report("DK012", diag::Severity::Error, fmt::format("undefined parameter '{}'", token.name), v.span);
+            out_.push_back(grammar::undefined_parameter(
+                deck_.parameters, grammar::reference_in_field(token, field.text, field.span, fixed_width), v.span,
+                v.span.file, block.parameter_epoch));
             return;
         }
         // A reference differing from its definition only by case resolves silently: LS-DYNA reads

@@ -57,8 +57,10 @@ public:
 private:
     bool decode_plain(const grammar::Block& block, const grammar::CardLine& line, const keywords::CardSpec& card,
                       std::vector<FieldValue>& values);
+    // `field`: the text the value was cut from; `fixed_width`: its width in a fixed-format line, 0 in
+    // free format (a parameter name that fills a fixed field may have been cut by it).
     void decode_number(const grammar::Block& block, const keywords::FieldSpec& spec, const grammar::ValueToken& token,
-                       FieldValue& v);
+                       const grammar::Field& field, std::uint32_t fixed_width, FieldValue& v);
     void check_text(const grammar::Block& block, const keywords::FieldSpec& spec, FieldValue& v);
     void check_range(const keywords::FieldSpec& spec, const FieldValue& v);
     void report(const char* code, diag::Severity s, std::string message, grammar::Span span);

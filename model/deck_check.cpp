@@ -12,6 +12,7 @@
 #include "model/case_blocks.hpp"
 #include "model/particle_ranges.hpp"
 #include "model/shift_diagnosis.hpp"
+#include "model/unknown_keywords.hpp"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -299,11 +300,7 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
                        BulkVisitor* bulk) {
     DeckSummary summary;
     BlockWalker walker(deck, out, visit, bulk);
-    struct Unknown {
-        grammar::Span first;
-        std::size_t count = 0;
-    };
-    std::map<std::string, Unknown> unknown;
+    UnknownKeywords unknown;
     std::map<const keywords::KeywordSchema*, std::vector<CaseSpan>> seen_unique;
     std::string current_case;  // inside *CASE_BEGIN_n ... *CASE_END_n: "n"; else empty (every case)
     for (const grammar::Block& block : deck.blocks) {
@@ -311,8 +308,7 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
         track_case(block.keyword, current_case);
         auto match = keywords::find_keyword(block.keyword);
         if (!match || !match->unknown_options.empty()) {
-            auto& u = unknown[block.keyword];
-            if (u.count++ == 0) u.first = block.span;
+            unknown.add(deck, block, out);
             ++summary.unknown_keywords;
             continue;
         }
@@ -332,14 +328,7 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
         diagnose_shifts(deck, block, walker.suspects(), out, before);
         collapse_block_floods(out, before, block.keyword);
     }
-    for (const auto& [name, u] : unknown) {
-        std::string message = fmt::format("unknown keyword {} kept as is", name);
-        if (u.count > 1) message += fmt::format(" ({} blocks)", u.count);
-        diag::Diagnostic d{"DK001", diag::Severity::Info, message, u.first, {}};
-        auto similar = keywords::similar_keywords(name);
-        if (!similar.empty()) d.notes.push_back({grammar::Span{}, fmt::format("did you mean {}?", similar.front())});
-        out.push_back(std::move(d));
-    }
+    unknown.finish(out);
     return summary;
 }
 

@@ -113,7 +113,9 @@ TEST_CASE("registry: every catalogue rule is present with its name, severity and
         CHECK(rule->code == cell[1]);
         CHECK(rule->name == cell[2]);
         const std::string& sev = cell[3];
-        if (sev.find("DFLAG") == std::string::npos) {
+        // Deliberate departures from the catalogue, each with the issue that decided it.
+        const bool departs = cell[1] == "DK001";  // issue 25: an unknown LS-DYNA keyword is an error
+        if (sev.find("DFLAG") == std::string::npos && !departs) {
             auto expected = sev.find("error") != std::string::npos  ? diag::Severity::Error
                             : sev.find("warn") != std::string::npos ? diag::Severity::Warning
                                                                     : diag::Severity::Info;

@@ -29,7 +29,10 @@ CardFormat format_of_suffix(char suffix, CardFormat inherited) {
 }  // namespace
 
 DeckReader::DeckReader(RawDeck& deck, const ReaderOptions& options) : deck_(deck), options_(options) {
-    for (const auto& p : options.include_paths) include_paths_.emplace_back(p);
+    for (const auto& p : options.include_paths) {
+        include_paths_.emplace_back(p);
+        include_path_origins_.emplace_back("-I or include-paths");
+    }
 }
 
 Span DeckReader::span_of(const char* begin, const char*, std::size_t column_begin, std::size_t column_end) const {
@@ -136,7 +139,10 @@ void DeckReader::on_keyword(const char* begin, const char* end, const KeywordLin
     if (star > 0)
         report("DK020", diag::Severity::Warning, "keyword line does not start in column 1", block.span);
     if (parts.name.empty())
-        report("DK001", diag::Severity::Info, "keyword line without a keyword name", block.span);
+        report("DK001", diag::Severity::Error,
+               "keyword line without a keyword name: LS-DYNA reads a '*' in column 1 as a keyword; write '$' for a "
+               "comment",
+               block.span);
     for (char c : parts.name) {
         if (std::islower(static_cast<unsigned char>(c))) {
             report("DK021", diag::Severity::Info, "keyword '" + block.keyword + "' written in lower case", block.span);

@@ -76,6 +76,7 @@ private:
     std::vector<std::filesystem::path> canonical_paths_;  // per FileId, for cycle detection
     std::filesystem::path main_directory_;
     std::vector<std::filesystem::path> include_paths_;
+    std::vector<std::string> include_path_origins_;  // per include path: the option or card that gave it
 };
 
 }  // namespace sphdeck::grammar::dyna

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "grammar/dyna/deck_reader.hpp"
+#include "grammar/dyna/include_not_found.hpp"
 #include "grammar/dyna/keyword_arguments.hpp"
 
 namespace sphdeck::grammar::dyna {
@@ -71,6 +72,8 @@ void DeckReader::handle_include_path(const Block& block, bool relative) {
     for (auto& [name, span] : file_names(block, SIZE_MAX)) {
         std::filesystem::path dir(name);
         include_paths_.push_back(relative || dir.is_relative() ? main_directory_ / dir : dir);
+        include_path_origins_.push_back(block.keyword + " at line " + std::to_string(span.line) + " of " +
+                                        deck_.sources.file(span.file).display_name);
     }
 }
 
@@ -89,16 +92,12 @@ void DeckReader::open_include(const std::string& name, Span where, char suffix) 
                where);
         return;
     }
-    IncludeSearch search{std::filesystem::path(parent_source.path).parent_path(), main_directory_, include_paths_, options_.overlay};
+    IncludeSearch search{std::filesystem::path(parent_source.path).parent_path(), main_directory_, include_paths_,
+                         options_.overlay, include_path_origins_};
     auto resolved = resolve_include(name, search);
     if (!resolved) {
-        diag::Diagnostic d{"DK010", diag::Severity::Error, "include file '" + name + "' not found", where, {}};
-        for (const auto& c : include_candidates(name, search)) d.notes.push_back({Span{}, "tried " + c.string()});
-        // The lint rules see no definition of the file: they leave references unchecked (REF001-REF005,
-        // REF007, REF008) rather than report every id it would have defined.
-        d.notes.push_back({Span{}, "references to nodes, parts, sections, materials and sets are not checked "
-                                   "while it is missing"});
-        deck_.diagnostics.push_back(std::move(d));
+        const bool continued = where.end_column - where.column != name.size();  // over several lines (" +")
+        deck_.diagnostics.push_back(include_not_found(name, where, search, continued, false));
         return;
     }
     std::error_code ec;

@@ -17,7 +17,9 @@ std::vector<Candidate> candidates(const std::string& name, const IncludeSearch& 
     std::vector<Candidate> list;
     list.push_back({search.including_directory / given, "including file's folder"});
     list.push_back({search.main_directory / given, "main deck's folder"});
-    for (const auto& dir : search.include_paths) list.push_back({dir / given, "include path"});
+    for (std::size_t i = 0; i < search.include_paths.size(); ++i)
+        list.push_back({search.include_paths[i] / given,
+                        i < search.include_path_origins.size() ? search.include_path_origins[i].c_str() : "include path"});
     return list;
 }
 
@@ -62,11 +64,19 @@ std::optional<std::string> include_budget_problem(const fs::path& path, std::siz
     return std::nullopt;
 }
 
-std::vector<fs::path> include_candidates(const std::string& name, const IncludeSearch& search) {
-    std::vector<fs::path> out;
-    for (const auto& c : candidates(name, search)) out.push_back(c.path);
+std::vector<IncludeTry> include_tries(const std::string& name, const IncludeSearch& search) {
+    std::vector<IncludeTry> out;
+    const auto add = [&](const Candidate& c, std::string rule) {
+        const fs::path normal = c.path.lexically_normal();
+        auto same = std::find_if(out.begin(), out.end(), [&](const IncludeTry& t) { return t.path == normal; });
+        if (same == out.end()) out.push_back({normal, {std::move(rule)}});
+        else if (std::find(same->rules.begin(), same->rules.end(), rule) == same->rules.end())
+            same->rules.push_back(std::move(rule));
+    };
+    for (const auto& c : candidates(name, search)) add(c, c.why);
     if (name.find('\\') != std::string::npos)
-        for (const auto& c : candidates(with_forward_slashes(name), search)) out.push_back(c.path);
+        for (const auto& c : candidates(with_forward_slashes(name), search))
+            add(c, std::string(c.why) + ", '\\' read as '/'");
     return out;
 }
 

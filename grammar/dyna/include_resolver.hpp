@@ -14,8 +14,11 @@ namespace sphdeck::grammar::dyna {
 struct IncludeSearch {
     std::filesystem::path including_directory;  // folder of the file with the *INCLUDE
     std::filesystem::path main_directory;       // folder of the main deck
-    std::vector<std::filesystem::path> include_paths;  // *INCLUDE_PATH(_RELATIVE) entries, then --include-path
+    std::vector<std::filesystem::path> include_paths;  // --include-path (-I) entries, then *INCLUDE_PATH(_RELATIVE)
     const FileOverlay* overlay = nullptr;  // in-memory texts that count as files
+    // Where each include path came from ("-I or include-paths", "*INCLUDE_PATH at line 4"), for the
+    // not-found report; may be shorter than include_paths (the rest: "include path").
+    std::vector<std::string> include_path_origins = {};
 };
 
 struct ResolvedInclude {
@@ -33,7 +36,12 @@ std::optional<ResolvedInclude> resolve_include(const std::string& name, const In
 std::optional<std::string> include_budget_problem(const std::filesystem::path& path, std::size_t files,
                                                   std::size_t bytes, std::size_t max_files, std::size_t max_bytes);
 
-// Every directory tried, for the "not found" note.
-std::vector<std::filesystem::path> include_candidates(const std::string& name, const IncludeSearch& search);
+// Every path tried, once each in search order, with the search rules that led to it ("including
+// file's folder", "main deck's folder", an include path's origin), for the "not found" report.
+struct IncludeTry {
+    std::filesystem::path path;
+    std::vector<std::string> rules;
+};
+std::vector<IncludeTry> include_tries(const std::string& name, const IncludeSearch& search);
 
 }  // namespace sphdeck::grammar::dyna

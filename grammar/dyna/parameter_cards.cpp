@@ -7,6 +7,7 @@
 
 #include "grammar/dyna/expression.hpp"
 #include "grammar/fields.hpp"
+#include "grammar/undefined_parameter.hpp"
 #include "grammar/value.hpp"
 
 namespace sphdeck::grammar::dyna {
@@ -79,7 +80,13 @@ bool value_of(Context& c, const Field& field, ParameterType type, Parameter& p) 
     ValueToken token = classify_value(field.text);
     if (token.shape == ValueShape::Parameter) {
         auto found = c.deck.parameters.find(token.name, field.span.file, c.deck.parameters.epoch());
-        if (!found.parameter || found.parameter->type == ParameterType::Character) {
+        if (!found.parameter) {
+            c.deck.diagnostics.push_back(undefined_parameter(c.deck.parameters,
+                                                             reference_in_field(token, field.text, field.span, 0),
+                                                             field.span, field.span.file, c.deck.parameters.epoch()));
+            return false;
+        }
+        if (found.parameter->type == ParameterType::Character) {
             report(c.deck, "DK012", diag::Severity::Error, "undefined parameter '" + std::string(token.name) + "'",
                    field.span);
             return false;

@@ -72,35 +72,6 @@ std::string normalized_key(std::string_view full_name, std::string_view* core) {
     return key;
 }
 
-// Edit distance with adjacent transpositions (optimal string alignment).
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-    const std::size_t n = a.size(), m = b.size();
-    std::vector<std::size_t> prev2(m + 1), prev(m + 1), cur(m + 1);
-    for (std::size_t j = 0; j <= m; ++j) prev[j] = j;
-    for (std::size_t i = 1; i <= n; ++i) {
-        cur[0] = i;
-        for (std::size_t j = 1; j <= m; ++j) {
-            const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
-            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + cost});
-            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
-                cur[j] = std::min(cur[j], prev2[j - 2] + 1);
-        }
-        std::swap(prev2, prev);
-        std::swap(prev, cur);
-    }
-    return prev[m];
-}
-
-// The first `tokens` '_'-separated tokens of `s`.
-std::string_view first_tokens(std::string_view s, std::size_t tokens) {
-    std::size_t pos = 0;
-    for (std::size_t t = 0; t < tokens; ++t) {
-        pos = s.find('_', pos == 0 ? 0 : pos + 1);
-        if (pos == std::string_view::npos) return s;
-    }
-    return s.substr(0, pos);
-}
-
 std::optional<KeywordMatch> find_hand_written(const std::string& key, std::string_view core);
 
 }  // namespace
@@ -168,45 +139,6 @@ std::optional<KeywordMatch> find_hand_written(const std::string& key, std::strin
 }
 
 }  // namespace
-
-std::vector<std::string_view> similar_keywords(std::string_view name, std::size_t max) {
-    const std::string key = normalized_key(name, nullptr);
-    struct Candidate {
-        std::size_t distance;
-        std::string_view name;
-        const KeywordSchema* schema;
-    };
-    std::vector<Candidate> candidates;
-    for (const auto& [known, schema] : registry().names) {
-        const std::size_t tokens = static_cast<std::size_t>(std::count(known.begin(), known.end(), '_')) + 1;
-        const std::size_t limit = std::max<std::size_t>(2, known.size() / 4);
-        // Compare with the whole name and with as many leading tokens as the known name has,
-        // so that options (*SECTON_SPH_TITLE) do not hide a close base name. Names whose lengths
-        // differ by more than the limit are farther than it (each edit changes the length by at
-        // most one): skipping them spares most of the distances, for every unknown keyword.
-        const std::string_view head = first_tokens(key, tokens);
-        std::size_t d = limit + 1;
-        for (const std::string_view written : {head, std::string_view(key)}) {
-            const std::size_t length_gap = written.size() > known.size() ? written.size() - known.size()
-                                                                           : known.size() - written.size();
-            if (length_gap <= limit) d = std::min(d, edit_distance(written, known));
-            if (head.size() == key.size()) break;  // the same text: one distance is enough
-        }
-        if (d <= limit) candidates.push_back({d, known, schema});
-    }
-    std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
-        return a.distance != b.distance ? a.distance < b.distance : a.name < b.name;
-    });
-    std::vector<std::string_view> out;
-    std::vector<const KeywordSchema*> seen;
-    for (const Candidate& c : candidates) {
-        if (out.size() >= max) break;
-        if (std::find(seen.begin(), seen.end(), c.schema) != seen.end()) continue;
-        seen.push_back(c.schema);
-        out.push_back(c.name);
-    }
-    return out;
-}
 
 std::vector<const CardSpec*> cards_for(const KeywordMatch& match) {
     std::vector<const CardSpec*> cards;

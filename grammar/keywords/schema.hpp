@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -186,9 +187,23 @@ std::optional<KeywordMatch> find_keyword(std::string_view full_name);
 // Every schema, in table order (grouped by family).
 std::span<const KeywordSchema> all_keywords();
 
-// Up to `max` known keyword names (canonical or alias spelling) closest to `name` by edit
-// distance (with transpositions), best first, for "did you mean". Empty when nothing is close.
+// Up to `max` known keyword names (canonical or alias spelling, hand-written or generated, with or
+// without one option) closest to `name` by typing distance (grammar/similar_names.hpp), one per
+// keyword, best first, for "did you mean". Empty when nothing is close.
 std::vector<std::string_view> similar_keywords(std::string_view name, std::size_t max = 3);
+
+// The known keyword `name` most likely stands for, upper case with '*': the author's option tokens are
+// kept when the typo is in the base name (*SECTON_SPH_TITLE -> *SECTION_SPH_TITLE), and the
+// suggestion is always a name the tables know as a whole. nullopt when nothing is close.
+std::optional<std::string> suggest_keyword(std::string_view name);
+
+// `suggestion` written as the author wrote `written_name`: all lower case stays lower case.
+std::string keyword_replacement(std::string_view written_name, std::string_view suggestion);
+
+// LS-DYNA keywords without a layout in either table (grammar/keywords/known_without_layout.cpp, with
+// the manual's word for each): real, so never unknown; their cards are not checked. Sorted.
+std::span<const std::string_view> known_without_layout();
+bool is_known_without_layout(std::string_view upper_name);
 
 // The card sequence of a matched keyword in reading order: option cards_before (title, id),
 // then the base cards (less those an option replaces), then option cards_after.

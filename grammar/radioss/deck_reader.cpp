@@ -2,6 +2,7 @@
 // join the open block, #include reads a file in place, #enddata ends a file, /END the deck.
 #include "grammar/radioss/deck_reader.hpp"
 
+#include "grammar/dyna/include_not_found.hpp"
 #include "grammar/dyna/include_resolver.hpp"
 #include "grammar/parameters.hpp"
 #include "grammar/fields.hpp"
@@ -162,16 +163,11 @@ void DeckReader::on_include(const char* begin, const char* end, std::string_view
     }
     const SourceFile& parent = deck_.sources.file(f.id);
     std::vector<std::filesystem::path> paths(options_.include_paths.begin(), options_.include_paths.end());
-    dyna::IncludeSearch search{std::filesystem::path(parent.path).parent_path(), main_directory_, paths, options_.overlay};
+    dyna::IncludeSearch search{std::filesystem::path(parent.path).parent_path(), main_directory_, paths, options_.overlay,
+                               std::vector<std::string>(paths.size(), "-I or include-paths")};
     auto resolved = dyna::resolve_include(file_name, search);
     if (!resolved) {
-        diag::Diagnostic d{"DK010", diag::Severity::Error, "include file '" + file_name + "' not found", where, {}};
-        for (const auto& c : dyna::include_candidates(file_name, search)) d.notes.push_back({Span{}, "tried " + c.string()});
-        // The lint rules see no definition of the file: they leave references unchecked (REF001-REF005,
-        // REF007, REF008) rather than report every id it would have defined.
-        d.notes.push_back({Span{}, "references to nodes, parts, sections, materials and sets are not checked "
-                                   "while it is missing"});
-        deck_.diagnostics.push_back(std::move(d));
+        deck_.diagnostics.push_back(dyna::include_not_found(file_name, where, search, false, true));
         return;
     }
     std::error_code ec;

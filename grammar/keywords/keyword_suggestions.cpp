@@ -1,0 +1,172 @@
+// "Did you mean" for keyword names: every name the tables know (hand-written schemas and their
+// aliases, pydyna's generated layouts, the keywords known without a layout), each also with each of
+// its options, compared with what was written by typing distance (grammar/similar_names.hpp).
+#include <algorithm>
+#include <cctype>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "grammar/keywords/generated_layouts.hpp"
+#include "grammar/keywords/schema.hpp"
+#include "grammar/similar_names.hpp"
+
+namespace sphdeck::keywords {
+
+namespace {
+
+struct KnownName {
+    std::string name;          // upper case with '*', options joined with '_'
+    std::string_view base;     // the keyword it belongs to (its canonical name)
+    int tier;                  // 0 hand-written, 1 generated, 2 known without layout: ties go to the first
+    std::size_t tokens;        // '_'-separated tokens in `name`
+};
+
+std::size_t token_count(std::string_view s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '_')) + 1; }
+
+void add(std::vector<KnownName>& out, std::string name, std::string_view base, int tier) {
+    const std::size_t tokens = token_count(name);
+    out.push_back({std::move(name), base, tier, tokens});
+}
+
+std::vector<KnownName> build_names() {
+    std::vector<KnownName> out;
+    for (const KeywordSchema& k : all_keywords()) {
+        for (std::string_view spelling : [&] {
+                 std::vector<std::string_view> s{k.name};
+                 s.insert(s.end(), k.aliases.begin(), k.aliases.end());
+                 return s;
+             }()) {
+            add(out, std::string(spelling), k.name, 0);
+            for (const OptionSpec& o : k.options) add(out, std::string(spelling) + "_" + std::string(o.suffix), k.name, 0);
+        }
+    }
+    for (const generated::LayoutEntry& e : generated::layouts()) {
+        add(out, std::string(e.name), e.name, 1);
+        std::string_view options = e.body.substr(0, e.body.find('\n'));
+        while (!options.empty()) {
+            const std::size_t end = std::min(options.find(' '), options.size());
+            if (end > 0) add(out, std::string(e.name) + "_" + std::string(options.substr(0, end)), e.name, 1);
+            options.remove_prefix(std::min(end + 1, options.size()));
+        }
+    }
+    for (std::string_view n : known_without_layout()) add(out, std::string(n), n, 2);
+    return out;
+}
+
+const std::vector<KnownName>& known_names() {
+    static const std::vector<KnownName> names = build_names();
+    return names;
+}
+
+// "*" + upper-cased name proper: blanks, arguments and a glued format suffix removed.
+std::string key_of(std::string_view written) {
+    while (!written.empty() && (written.front() == ' ' || written.front() == '\t')) written.remove_prefix(1);
+    written = written.substr(0, std::min(written.find_first_of(" \t\r\n"), written.size()));
+    if (!written.empty() && (written.back() == '+' || written.back() == '-' || written.back() == '%'))
+        written.remove_suffix(1);
+    if (!written.empty() && written.front() == '*') written.remove_prefix(1);
+    std::string key(1, '*');
+    for (char c : written) key.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
+    return key;
+}
+
+// The first `tokens` '_'-separated tokens of `s`.
+std::string_view head_of(std::string_view s, std::size_t tokens) {
+    std::size_t pos = 0;
+    for (std::size_t t = 0; t < tokens; ++t) {
+        pos = s.find('_', t == 0 ? 0 : pos + 1);
+        if (pos == std::string_view::npos) return s;
+    }
+    return s.substr(0, pos);
+}
+
+struct Candidate {
+    std::size_t distance;
+    int tier;
+    std::string text;  // the suggestion: a known name, or a known base name with the written options
+    const KnownName* known;
+};
+
+bool before(const Candidate& a, const Candidate& b) {
+    if (a.distance != b.distance) return a.distance < b.distance;
+    if (a.tier != b.tier) return a.tier < b.tier;
+    if (a.text.size() != b.text.size()) return a.text.size() < b.text.size();
+    if (a.text != b.text) return a.text < b.text;
+    return a.known->name < b.known->name;  // the same suggestion from a base name and from base + option
+}
+
+// Every known name close to `key`: compared as a whole, and with as many leading tokens of `key` as
+// it has, the rest of `key` (the author's options) kept in the suggestion (*SECTON_SPH_TITLE).
+std::vector<Candidate> candidates_for(const std::string& key) {
+    std::vector<Candidate> out;
+    const auto distance_within = [](std::string_view written, const KnownName& known) -> std::optional<std::size_t> {
+        const std::size_t limit = grammar::close_enough(known.name);
+        const std::size_t gap = written.size() > known.name.size() ? written.size() - known.name.size()
+                                                                   : known.name.size() - written.size();
+        if (2 * gap > limit) return std::nullopt;  // each insertion or deletion costs 2
+        const std::size_t d = grammar::typing_distance(written, known.name);
+        if (d > limit) return std::nullopt;
+        return d;
+    };
+    for (const KnownName& known : known_names()) {
+        if (auto d = distance_within(key, known); d && *d > 0) out.push_back({*d, known.tier, known.name, &known});
+        const std::string_view head = head_of(key, known.tokens);
+        if (head.size() == key.size()) continue;
+        if (auto d = distance_within(head, known); d && *d > 0)
+            out.push_back({*d, known.tier, known.name + key.substr(head.size()), &known});
+    }
+    std::sort(out.begin(), out.end(), before);
+    return out;
+}
+
+// A name the tables know as a whole: every option token is an option of its keyword.
+bool known_as_written(const std::string& name) {
+    if (is_known_without_layout(name)) return true;
+    auto match = find_keyword(name);
+    return match && match->unknown_options.empty();
+}
+
+}  // namespace
+
+std::vector<std::string_view> similar_keywords(std::string_view name, std::size_t max) {
+    std::vector<std::string_view> out;
+    std::vector<std::string_view> bases;
+    const std::string key = key_of(name);
+    const std::vector<Candidate> candidates = candidates_for(key);
+    for (const Candidate& c : candidates) {
+        if (out.size() >= max) break;
+        // Names farther than the best by more than a swap are noise beside it.
+        if (c.distance > candidates.front().distance + 1) break;
+        // One name per keyword, the stored spelling (the views outlive the call).
+        if (std::find(bases.begin(), bases.end(), c.known->base) != bases.end()) continue;
+        bases.push_back(c.known->base);
+        out.push_back(c.known->name);
+    }
+    return out;
+}
+
+std::optional<std::string> suggest_keyword(std::string_view name) {
+    const std::string key = key_of(name);
+    if (key.size() < 2) return std::nullopt;
+    std::size_t checked = 0;
+    for (const Candidate& c : candidates_for(key)) {
+        if (++checked > 50) break;  // the closest few decide; the rest are farther anyway
+        if (known_as_written(c.text)) return c.text;
+    }
+    return std::nullopt;
+}
+
+std::string keyword_replacement(std::string_view written_name, std::string_view suggestion) {
+    // The author's '*' and case: all lower case stays lower case, anything else is written upper case.
+    std::string_view core = written_name;
+    if (!core.empty() && core.front() == '*') core.remove_prefix(1);
+    const bool lower = std::none_of(core.begin(), core.end(), [](char c) { return std::isupper(static_cast<unsigned char>(c)); }) &&
+                       std::any_of(core.begin(), core.end(), [](char c) { return std::islower(static_cast<unsigned char>(c)); });
+    std::string out(suggestion);
+    if (lower)
+        for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+}
+
+}  // namespace sphdeck::keywords

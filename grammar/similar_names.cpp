@@ -1,0 +1,61 @@
+#include "grammar/similar_names.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+namespace sphdeck::grammar {
+
+namespace {
+char folded(char c, bool fold_case) {
+    return fold_case ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : c;
+}
+}  // namespace
+
+std::size_t typing_distance(std::string_view a, std::string_view b, bool fold_case) {
+    // Optimal string alignment with weights: three rows suffice.
+    const std::size_t n = a.size(), m = b.size();
+    std::vector<std::size_t> prev2(m + 1), prev(m + 1), cur(m + 1);
+    for (std::size_t j = 0; j <= m; ++j) prev[j] = 2 * j;
+    for (std::size_t i = 1; i <= n; ++i) {
+        cur[0] = 2 * i;
+        const char ai = folded(a[i - 1], fold_case);
+        for (std::size_t j = 1; j <= m; ++j) {
+            const char bj = folded(b[j - 1], fold_case);
+            const std::size_t cost = ai == bj ? 0 : 2;
+            cur[j] = std::min({prev[j] + 2, cur[j - 1] + 2, prev[j - 1] + cost});
+            if (i > 1 && j > 1 && ai == folded(b[j - 2], fold_case) && folded(a[i - 2], fold_case) == bj && ai != bj)
+                cur[j] = std::min(cur[j], prev2[j - 2] + 1);
+        }
+        std::swap(prev2, prev);
+        std::swap(prev, cur);
+    }
+    return prev[m];
+}
+
+std::size_t close_enough(std::string_view known) {
+    const std::size_t edits = known.size() <= 4 ? 1 : std::max<std::size_t>(2, known.size() / 4);
+    return 2 * edits;
+}
+
+std::vector<std::string> closest_names(std::string_view typed, std::span<const std::string> candidates,
+                                       std::size_t max, bool fold_case) {
+    std::vector<std::pair<std::size_t, const std::string*>> found;
+    for (const std::string& c : candidates) {
+        const std::size_t limit = close_enough(c);
+        const std::size_t gap = typed.size() > c.size() ? typed.size() - c.size() : c.size() - typed.size();
+        if (2 * gap > limit) continue;  // each insertion or deletion costs 2
+        const std::size_t d = typing_distance(typed, c, fold_case);
+        if (d <= limit && d > 0) found.emplace_back(d, &c);
+    }
+    std::sort(found.begin(), found.end(), [](const auto& x, const auto& y) {
+        return x.first != y.first ? x.first < y.first : *x.second < *y.second;
+    });
+    std::vector<std::string> out;
+    for (const auto& [d, name] : found) {
+        if (out.size() >= max) break;
+        if (std::find(out.begin(), out.end(), *name) == out.end()) out.push_back(*name);
+    }
+    return out;
+}
+
+}  // namespace sphdeck::grammar

@@ -1,0 +1,34 @@
+// DK001 for LS-DYNA decks: a keyword name neither table knows is an error at its line (LS-DYNA stops
+// at a keyword it does not know), with the closest known name as an unsafe fix; a keyword LS-DYNA
+// has but no table describes (keywords::known_without_layout) is an info, once per name.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "diag/diagnostic.hpp"
+#include "grammar/raw_deck.hpp"
+
+namespace sphdeck::model {
+
+class UnknownKeywords {
+public:
+    // One block whose keyword no table matched.
+    void add(const grammar::RawDeck& deck, const grammar::Block& block, std::vector<diag::Diagnostic>& out);
+    // The infos for keywords known without a layout, once per name, with their block counts.
+    void finish(std::vector<diag::Diagnostic>& out) const;
+
+private:
+    const std::optional<std::string>& suggestion(const std::string& keyword);
+
+    struct Unchecked {
+        grammar::Span first;
+        std::size_t count = 0;
+    };
+    std::map<std::string, Unchecked> unchecked_;
+    std::map<std::string, std::optional<std::string>> suggestions_;  // per name: suggested once
+};
+
+}  // namespace sphdeck::model
