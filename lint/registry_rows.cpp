@@ -238,8 +238,9 @@ constexpr RuleInfo kRows[] = {
      "material density 0, blank or negative: RO of an SPH or solid part's material, or any Radioss /MAT RHO_I"},
     {"SPH120", "no-control-sph", Warning, "0.1.0", "CONTROL_SPH",
      "an SPH deck without *CONTROL_SPH: LS-DYNA's defaults apply (3D, FORM 0, INI 0...)"},
-    {"SPH121", "planar-particles-in-3d", Warning, "0.1.0", "IDIM",
-     "every particle in one plane while the run is 3D (IDIM 3, blank or no *CONTROL_SPH): a 2D model without IDIM 2"},
+    {"SPH121", "planar-particles-in-3d", Error, "0.1.0", "IDIM",
+     "every particle in one plane of a run 3D by default (no *CONTROL_SPH, IDIM blank): a 2D model without IDIM 2; "
+     "warning with IDIM 3 written"},
 };
 
 }  // namespace

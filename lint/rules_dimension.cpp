@@ -63,7 +63,11 @@ void check_planar_3d(RuleContext& c) {
     const std::string expected = flat == 2 ? "IDIM 2 (plane strain) or -2 (axisymmetric) in *CONTROL_SPH"
                                            : "IDIM 2 with the model in the x-y plane (z = 0)";
     const grammar::Span where = sph.present ? sph.idim.span : c.particle_span(first);
-    auto& d = c.report("SPH121", where,
+    // IDIM 3 written: the author said 3D, and a sheet one particle thick is a legal 3D model (warning).
+    // 3D by default only (no *CONTROL_SPH, IDIM blank): nothing but the default says 3D while the
+    // particles say 2D (error).
+    const bool said_3d = sph.present && sph.idim.explicit_value && sph.idim.value == model::Dimension::ThreeD;
+    auto& d = c.report("SPH121", said_3d ? diag::Severity::Warning : diag::Severity::Error, where,
                        fmt::format("all {} particles lie in the plane {} = {:g} in {}: a 2D model without IDIM 2? "
                                    "expected {}, or particles spread in {}",
                                    count, axis, at, run, expected, axis));
