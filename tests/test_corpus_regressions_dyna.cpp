@@ -185,6 +185,33 @@ TEST_CASE("flood guard: past the safety bound per code and block, the rest are d
     CHECK(out[5].code == "DK002");
 }
 
+TEST_CASE("flood guard: trimmed while a block is walked, and across threads' ranges, the same as at once") {
+    auto findings = [](std::uint32_t first, std::uint32_t last) {
+        std::vector<diag::Diagnostic> v;
+        for (std::uint32_t line = first; line <= last; ++line)
+            v.push_back({"DK003", diag::Severity::Error, "bad", {0, line, 1, 2}, {}});
+        return v;
+    };
+    // Two "threads": lines 1-10 and 11-20, each trimmed as it goes, then merged in line order.
+    std::vector<diag::Diagnostic> a, b;
+    model::FloodBound bound_a(0, 4), bound_b(0, 4);
+    for (auto& d : findings(1, 10)) a.push_back(d), bound_a.trim(a);
+    for (auto& d : findings(11, 20)) b.push_back(d), bound_b.trim(b);
+    CHECK(a.size() == 4);  // never more than the bound held at once
+    CHECK(bound_a.dropped() == 6);
+    std::vector<diag::Diagnostic> out = a;
+    out.insert(out.end(), b.begin(), b.end());
+    model::FloodBound block(0, 4);
+    block.merge(bound_a);
+    block.merge(bound_b);
+    block.annotate(out, 0, "*NODE");
+    REQUIRE(out.size() == 4);
+    CHECK(block.dropped() == 16);
+    CHECK(out[3].message ==
+          "bad (and 16 more DK003 finding(s) on the lines of this *NODE block, dropped: at most 4 of one code per "
+          "block are kept; lines 5, 6, 7, 8, 9, ...)");
+}
+
 TEST_CASE("corpus: a word too long for a number field is one finding (DK003), a number too long is DK005") {
     auto word = engine::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n0.002,0,0.0,<PAB_TTF-1.1>\n*END\n", "d.k");
     CHECK(count_code(word.diagnostics, "DK003") == 1);
