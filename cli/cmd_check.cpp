@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "cli/commands.hpp"
+#include "cli/text_folding.hpp"
 #include "diag/render_github.hpp"
 #include "diag/render_json.hpp"
 #include "diag/render_sarif.hpp"
@@ -31,25 +32,14 @@ struct CheckArgs {
     CLI::Option* select_option = nullptr;  // to tell "--select" absent from empty
 };
 
-// Prints a deck's diagnostics as text; past `max_per_code` of one code, the rest are counted, not shown.
+// Prints a deck's diagnostics as text, folded for reading (cli/text_folding.hpp).
 void print_text(const engine::CheckResult& r, const CheckArgs& args, bool colour) {
-    std::map<std::string, std::size_t> shown, hidden;
     diag::RenderOptions options{colour};
-    for (const diag::Diagnostic& d : r.diagnostics) {
-        if (args.max_per_code > 0 && shown[d.code] >= args.max_per_code) {
-            ++hidden[d.code];
-            continue;
-        }
-        ++shown[d.code];
-        if (args.format == "concise") {
-            fmt::print("{}", diag::render_concise(d, r.deck.sources));
-        } else {
-            fmt::print("{}\n", diag::render_full(d, r.deck.sources, options));
-        }
+    for (const TextItem& item : fold_for_text(r.diagnostics, r.deck, args.max_per_code)) {
+        if (!item.finding) fmt::print("{}{}", item.line, args.format == "concise" ? "" : "\n");
+        else if (args.format == "concise") fmt::print("{}", diag::render_concise(*item.finding, r.deck.sources));
+        else fmt::print("{}\n", diag::render_full(*item.finding, r.deck.sources, options));
     }
-    for (const auto& [code, n] : hidden)
-        fmt::print("{}: {} more {} finding(s) not shown (--max-per-code 0 shows all)\n",
-                   r.deck.sources.file(0).display_name, n, code);
 }
 
 lint::ConfigOverrides overrides_of(const CheckArgs& args) {
@@ -185,7 +175,8 @@ std::function<int()> setup_check(CLI::App& app) {
                    "extra folder searched for *INCLUDE files, after the deck's own folders")
         ->allow_extra_args(false);  // `-I dir deck.k`: the deck stays a deck
     app.add_option("--max-per-code", args->max_per_code,
-                   "show at most N findings of one rule per deck in text formats (0: all)")
+                   "text formats: show at most N findings of one rule per deck and fold more than 5 of one rule "
+                   "on one block's lines (0: all, unfolded); json, sarif and github carry every finding")
         ->capture_default_str();
     args->select_option = app.add_option("--select", args->select,
                                          "check only these rules: codes, names or prefixes such as SPH "

@@ -256,7 +256,14 @@ void print_radioss(const preproc::Preview& p) {
     for (long long id : g.unknown_planes) fmt::print("/SPHBCS {}: plane unknown (frame or Dir): left out\n", id);
 }
 
-void print_text(const SmoothArgs& args, const preproc::Preview& p) {
+// Where the header's dimension and INI come from: --ini, the deck's *CONTROL_SPH, or LS-DYNA's
+// defaults when the deck has none (SPH120).
+std::string_view settings_source(const SmoothArgs& args, bool control_sph) {
+    if (args.ini) return ", forced by --ini";
+    return control_sph ? ", from *CONTROL_SPH" : ", default: no *CONTROL_SPH";
+}
+
+void print_text(const SmoothArgs& args, const preproc::Preview& p, bool control_sph) {
     const model::IniMode mode = p.parts.empty() ? model::IniMode::BucketSort : p.parts.front().ini;
     if (p.radioss)  // no INI: h as the OpenRadioss starter computes it
         fmt::print("{}: {} particles in {} part(s), {}D, OpenRadioss deck (h0: the starter's rule, spinih.F)\n\n",
@@ -264,7 +271,7 @@ void print_text(const SmoothArgs& args, const preproc::Preview& p) {
     else
         fmt::print("{}: {} particles in {} part(s), {}D, INI {} ({}{})\n\n", args.deck, p.particles.x.size(),
                    p.parts.size(), p.dimension, static_cast<int>(mode), ini_name(mode),
-                   args.ini ? ", forced by --ini" : ", from *CONTROL_SPH");
+                   settings_source(args, control_sph));
     std::vector<std::vector<std::string>> rows = {
         {"part", "particles", "mass", "spacing", "h0", "h_min", "h_max", "neighbours", "dt", "ini"}};
     for (const preproc::PartPreview& pv : p.parts) {
@@ -336,7 +343,7 @@ int run_smooth(const SmoothArgs& args) {
         out["mesh_boxes"] = mesh_boxes_json(r, boxes);
         fmt::print("{}\n", out.dump(2));
     } else {
-        print_text(args, preview);
+        print_text(args, preview, model.controls.sph.present);
         print_mesh_boxes(r, boxes);
     }
     std::fflush(stdout);

@@ -30,6 +30,25 @@ json include_chain(const grammar::Span& span, const grammar::SourceMap& sources)
     return chain;
 }
 
+// The finding's mends: each edit replaces the columns [column, end_column) of one line (equal
+// columns insert), as TextEdit says.
+json fixes_of(const Diagnostic& d, const grammar::SourceMap& sources) {
+    json fixes = json::array();
+    for (const Fix& fix : d.fixes) {
+        json edits = json::array();
+        for (const TextEdit& edit : fix.edits) {
+            const bool located = detail::has_location(edit.span, sources);
+            edits.push_back({{"file", located ? json(detail::file_name(sources.file(edit.span.file))) : json(nullptr)},
+                             {"line", located ? edit.span.line : 0},
+                             {"column", located ? edit.span.column : 0},
+                             {"end_column", located ? std::max(edit.span.end_column, edit.span.column) : 0},
+                             {"replacement", edit.replacement}});
+        }
+        fixes.push_back({{"description", fix.description}, {"safe", fix.safe}, {"edits", std::move(edits)}});
+    }
+    return fixes;
+}
+
 class JsonReport final : public Report {
 public:
     explicit JsonReport(const RuleCatalog& rules) : rules_(rules) {}
@@ -49,6 +68,7 @@ public:
                 notes.push_back(std::move(n));
             }
             item["notes"] = std::move(notes);
+            item["fixes"] = fixes_of(d, sources);
             item["include_chain"] = include_chain(d.span, sources);
             item["url"] = rule ? json(rule->url) : json(nullptr);
             diagnostics_.push_back(std::move(item));

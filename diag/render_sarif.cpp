@@ -46,20 +46,54 @@ json rule_descriptor(const RuleMeta& rule) {
             {"defaultConfiguration", {{"level", level(rule.severity)}}}};
 }
 
+json artifact_location(const grammar::SourceFile& file) {
+    bool relative = false;
+    json artifact = {{"uri", sarif_uri(file, relative)}};
+    if (relative) artifact["uriBaseId"] = kSrcRoot;
+    return artifact;
+}
+
 // Deck-wide findings have no span: they point at the first line of the main deck, because code
 // scanning drops results without a location.
 json physical_location(const grammar::Span& span, const grammar::SourceMap& sources) {
     const bool located = detail::has_location(span, sources);
-    const grammar::SourceFile& file = sources.file(located ? span.file : 0);
-    bool relative = false;
-    json artifact = {{"uri", sarif_uri(file, relative)}};
-    if (relative) artifact["uriBaseId"] = kSrcRoot;
+    const json artifact = artifact_location(sources.file(located ? span.file : 0));
     json region = {{"startLine", located ? span.line : 1}};
     if (located) {
         region["startColumn"] = span.column;
         region["endColumn"] = std::max(span.end_column, span.column + 1);
     }
     return {{"physicalLocation", {{"artifactLocation", artifact}, {"region", region}}}};
+}
+
+// SARIF fixes (§3.55): one artifactChange per file, each edit a replacement of a one-line region
+// (a zero-length region inserts). Edits without a location cannot be expressed and are left out.
+json fixes_of(const Diagnostic& d, const grammar::SourceMap& sources) {
+    json fixes = json::array();
+    for (const Fix& fix : d.fixes) {
+        json changes = json::array();
+        std::vector<grammar::FileId> files;
+        for (const TextEdit& edit : fix.edits) {
+            if (!detail::has_location(edit.span, sources)) continue;
+            json replacement = {
+                {"deletedRegion",
+                 {{"startLine", edit.span.line},
+                  {"startColumn", edit.span.column},
+                  {"endColumn", std::max(edit.span.end_column, edit.span.column)}}},
+                {"insertedContent", {{"text", edit.replacement}}}};
+            std::size_t k = 0;
+            while (k < files.size() && files[k] != edit.span.file) ++k;
+            if (k == files.size()) {
+                files.push_back(edit.span.file);
+                changes.push_back({{"artifactLocation", artifact_location(sources.file(edit.span.file))},
+                                   {"replacements", json::array()}});
+            }
+            changes[k]["replacements"].push_back(std::move(replacement));
+        }
+        if (changes.empty()) continue;  // the schema wants at least one artifactChange
+        fixes.push_back({{"description", {{"text", fix.description}}}, {"artifactChanges", std::move(changes)}});
+    }
+    return fixes;
 }
 
 class SarifReport final : public Report {
@@ -86,6 +120,7 @@ public:
             result["message"] = {{"text", text}};
             if (sources.size() > 0) result["locations"] = json::array({physical_location(d.span, sources)});
             if (!related.empty()) result["relatedLocations"] = std::move(related);
+            if (json fixes = fixes_of(d, sources); !fixes.empty()) result["fixes"] = std::move(fixes);
             results_.push_back(std::move(result));
         }
     }

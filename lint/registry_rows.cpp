@@ -241,6 +241,13 @@ constexpr RuleInfo kRows[] = {
      "*EOS_MURNAGHAN with c0 = sqrt(gamma k0 / rho0) below 10 times the largest initial speed"},
     {"SPH118", "few-neighbours", Warning, "0.1.0", "preview",
      "estimated neighbours per particle below 20 in 3D or 8 in 2D"},
+    {"SPH119", "density-not-positive", Error, "0.1.0", "materials",
+     "material density 0, blank or negative: RO of an SPH or solid part's material, or any Radioss /MAT RHO_I"},
+    {"SPH120", "no-control-sph", Warning, "0.1.0", "CONTROL_SPH",
+     "an SPH deck without *CONTROL_SPH: LS-DYNA's defaults apply (3D, FORM 0, INI 0...)"},
+    {"SPH121", "planar-particles-in-3d", Error, "0.1.0", "IDIM",
+     "every particle in one plane of a run 3D by default (no *CONTROL_SPH, IDIM blank): a 2D model without IDIM 2; "
+     "warning with IDIM 3 written"},
 };
 
 }  // namespace

@@ -12,6 +12,8 @@ void run_rules(RuleContext& context) {
     if (!context.model.radioss) check_sph_particles(context);  // *ELEMENT_SPH masses; Radioss cells: RAD026
     check_sph_materials(context);
     check_isph(context);
+    check_densities(context);
+    check_sph_dimension(context);
     if (context.options.geometry) check_preview(context);
     if (!context.options.keep_preview) context.preview.reset();
     check_radioss(context);

@@ -13,6 +13,8 @@ void check_section_sph(RuleContext& c);    // rules_section_sph.cpp: SPH081, SPH
 void check_sph_particles(RuleContext& c);  // rules_particles.cpp: SPH110-SPH112
 void check_sph_materials(RuleContext& c);  // rules_materials.cpp: SPH116-SPH117
 void check_isph(RuleContext& c);           // rules_isph.cpp: SPH014
+void check_densities(RuleContext& c);      // rules_density.cpp: SPH119
+void check_sph_dimension(RuleContext& c);  // rules_dimension.cpp: SPH120-SPH121
 // The geometry rules' preview (null without particles), computed before the other rules run;
 // check_preview reads it from RuleContext::preview.
 std::shared_ptr<const preproc::Preview> compute_rules_preview(const model::Model& model);

@@ -27,9 +27,11 @@ std::string number_text(double v) { return fmt::format("{:g}", v); }
 // "       9.99990000E+03" in a 20-column field leaves "3" at the start of the next field (the value
 // before runs on into this one, and is itself read as 9.9999). Said only when the glued run of
 // characters is a number.
-std::string run_on_note(const grammar::SourceMap& sources, const grammar::Span& at, std::string_view token) {
+// `text` is the card line being decoded: SourceMap::line_text would index lines lazily, which
+// the threads of the bulk decoding must not do at once (a data race, seen as a crash).
+std::string run_on_note(std::string_view text, const grammar::Span& at, std::string_view token) {
     if (!at.valid() || at.column < 1 || at.end_column <= at.column) return {};
-    std::string_view text = sources.line_text(at.file, at.line);
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.remove_suffix(1);
     auto glued = [](char c) { return c != ' ' && c != '\t' && c != ','; };
     const std::size_t begin = at.column - 1, end = at.end_column - 1;  // 0-based [begin, end)
     if (end < text.size() && end > 0 && glued(text[end]) && glued(text[end - 1])) {
@@ -96,6 +98,7 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
     const Layout& layout = layout_of(card, block.format);
     const auto& positions_ = layout.positions;
     std::string_view text = deck_.text(line);
+    line_text_ = text;
     grammar::CutReport cut = grammar::cut_fields(text, line, positions_, layout.significant, fields_, !layout.text_card);
 
     if (cut.has_tab) {
@@ -225,7 +228,7 @@ void CardDecoder::decode_number(const grammar::Block& block, const keywords::Fie
         } else {
             report("DK002", diag::Severity::Error,
                    fmt::format("'{}' in integer field {} is not an integer", shown(token.text), spec.name), v.span);
-            if (auto note = run_on_note(deck_.sources, v.span, token.text); !note.empty())
+            if (auto note = run_on_note(line_text_, v.span, token.text); !note.empty())
                 out_.back().notes.push_back({grammar::Span{}, std::move(note)});
             return;
         }
@@ -236,7 +239,7 @@ void CardDecoder::decode_number(const grammar::Block& block, const keywords::Fie
                    fmt::format("'{}' in {} field {} is not a number", shown(token.text),
                                spec.pydyna_integer ? "integer" : "real", spec.name),
                    v.span);
-            if (auto note = run_on_note(deck_.sources, v.span, token.text); !note.empty())
+            if (auto note = run_on_note(line_text_, v.span, token.text); !note.empty())
                 out_.back().notes.push_back({grammar::Span{}, std::move(note)});
             return;
         }

@@ -65,6 +65,8 @@ private:
     void check_range(const keywords::FieldSpec& spec, const FieldValue& v);
     void report(const char* code, diag::Severity s, std::string message, grammar::Span span);
 
+    std::string_view line_text_;  // the line decode() works on, for the notes that quote it
+
     // Widened positions of a card in a format, computed once: decoding runs per line.
     struct Layout {
         const keywords::CardSpec* card = nullptr;

@@ -70,18 +70,21 @@ public:
                 BulkVisitor* bulk)
         : deck_(deck), out_(out), decoder_(deck, out), visit_(visit), bulk_(bulk) {}
 
-    void walk(const grammar::Block& block, const keywords::KeywordMatch& match, DeckSummary& summary) {
+    void walk(const grammar::Block& block, const keywords::KeywordMatch& match, DeckSummary& summary,
+              FloodBound& bound) {
         suspects_.clear();
         std::vector<const CardSpec*> cards = keywords::cards_for(match);
         if (bulk_ && bulk_->wants(match) && cards.size() == 1 && cards[0]->repeat == CardRepeat::Repeated &&
             !cards[0]->present_if && block.line_count >= bulk_min_lines)
-            return walk_in_parallel(block, *cards[0], summary);
+            return walk_in_parallel(block, *cards[0], summary, bound);
         std::size_t group = keywords::repeat_group_size(match);
         std::size_t group_start = cards.size() - group;
         earlier_.clear();
         std::size_t next = 0;
         const bool particles = block.keyword.rfind("*ELEMENT_SPH", 0) == 0;
+        std::size_t walked = 0;
         for (const grammar::CardLine* l = deck_.begin_lines(block); l != deck_.end_lines(block); ++l) {
+            if (++walked % trim_lines == 0) bound.trim(out_);
             while (next < cards.size() && !applies(*cards[next])) ++next;
             if (next < cards.size() && cards[next]->unknown_layout) return;  // generated layout ends here
             if (next >= cards.size()) {
@@ -161,11 +164,13 @@ private:
 
     // Every line of `block` is one `card`: contiguous ranges of lines go to the threads, and their
     // findings are appended range after range, so the order is the same as on one thread.
-    void walk_in_parallel(const grammar::Block& block, const CardSpec& card, DeckSummary& summary) {
+    void walk_in_parallel(const grammar::Block& block, const CardSpec& card, DeckSummary& summary,
+                          FloodBound& bound) {
         const std::size_t n = block.line_count;
         const int threads = available_threads();
         const bool particles = block.keyword.rfind("*ELEMENT_SPH", 0) == 0;
         std::vector<std::vector<diag::Diagnostic>> found(static_cast<std::size_t>(threads));
+        std::vector<FloodBound> bounds(static_cast<std::size_t>(threads), FloodBound(0));
         std::vector<std::size_t> counted(static_cast<std::size_t>(threads), 0);
         const grammar::CardLine* lines = deck_.begin_lines(block);
         // Ranges longer than the deck's nodes are refused on the threads; the deck's running
@@ -192,8 +197,10 @@ private:
             std::vector<FieldValue> values;
             std::size_t count = 0;
             std::size_t released = first;  // lines whose text went back (a mapped file's pages)
+            FloodBound& trimmed = bounds[static_cast<std::size_t>(t)];
             for (std::size_t i = first; i < last; ++i) {
                 if (i - released == release_lines) release_text(lines[released], lines[i]), released = i;
+                if ((i - first + 1) % trim_lines == 0) trimmed.trim(out);
                 decoder.decode_bulk(block, lines[i], card, values);
                 std::optional<std::string> refused;
                 if (particles) {
@@ -207,7 +214,9 @@ private:
                 if (refused) out.push_back(range_error(values[3].span, *refused));
             }
             counted[static_cast<std::size_t>(t)] = count;
+            trimmed.trim(out);
         }
+        for (const FloodBound& b : bounds) bound.merge(b);
         for (std::size_t t = 0; t < ranges.size(); ++t) {
             bool refused = false;
             for (const Range& r : ranges[t])
@@ -235,6 +244,9 @@ private:
     // The text of lines [from, to) of one block is decoded: a mapped file's pages go back, so that
     // decoding keeps the model, not the deck, resident (grammar/source_text.hpp).
     static constexpr std::size_t release_lines = 65536;
+    // Lines between two trims of the findings past the flood bound (model/flood_guard.hpp): the
+    // findings of a block of broken lines never grow far past the bound while it is walked.
+    static constexpr std::size_t trim_lines = 4096;
     void release_text(const grammar::CardLine& from, const grammar::CardLine& to) const {
         if (from.file == to.file) deck_.sources.file(from.file).text.release(from.offset, to.offset);
     }
@@ -324,9 +336,10 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
         }
         if (skip_cards(block.keyword) || match->schema->free_text) continue;
         const std::size_t before = out.size();
-        walker.walk(block, *match, summary);
+        FloodBound bound(before);
+        walker.walk(block, *match, summary, bound);
         diagnose_shifts(deck, block, walker.suspects(), out, before);
-        collapse_block_floods(out, before, block.keyword);
+        bound.annotate(out, before, block.keyword);
     }
     unknown.finish(out);
     return summary;

@@ -1,11 +1,13 @@
 #include "model/extract.hpp"
 
+#include <algorithm>
 #include <fmt/format.h>
 #include <limits>
 #include <optional>
 #include <type_traits>
 
 #include "grammar/fields.hpp"
+#include "grammar/keywords/schema.hpp"
 #include "grammar/number_cast.hpp"
 #include "grammar/value.hpp"
 
@@ -196,7 +198,9 @@ void extract_record(const KeywordRecord& r, std::size_t index, Model& m) {
     if (name == "*PART") return extract_parts(r, m.parts);
     if (is_material_keyword(name)) {
         Setting<Id> id = id_setting(r, "MID");
-        m.materials.push_back({id.value, std::string(name), id.span, setting<double>(r, "RO", 0.0), index});
+        const FieldRecord* ro = r.field("RO");  // text that is no number is DK003's, not a density of 0
+        m.materials.push_back({id.value, std::string(name), id.span, setting<double>(r, "RO", 0.0), index,
+                               ro && (ro->valid || !ro->explicit_value)});
         return;
     }
     if (starts_with(name, "*EOS_")) {
@@ -251,6 +255,61 @@ bool raw_first_id(const grammar::RawDeck& deck, const grammar::Block& block, Id&
     return !id.empty();
 }
 
+// RO of a material read from its generated layout: the field named RO on the first data card (MID,
+// RO, ...), in the block's format. Keywords the tables do not know: RO in columns 11-20 (most
+// materials), enough for mass and sound-speed checks but not for SPH119 (has_density stays false).
+Material raw_material(const grammar::RawDeck& deck, const grammar::Block& b, const Id& id, grammar::Span span) {
+    Material mat{id, b.keyword, span, {}, std::nullopt, false};
+    const grammar::CardLine* line = deck.begin_lines(b) + (b.keyword.find("_TITLE") != std::string::npos);
+    if (line >= deck.end_lines(b)) return mat;
+    const std::string_view text = deck.text(*line);
+    const std::optional<keywords::KeywordMatch> known = keywords::find_keyword(b.keyword);
+    if (!known || known->schema->cards.empty()) {
+        grammar::RealValue ro = grammar::parse_real(text.size() > 10 ? text.substr(10, 10) : "");
+        if (ro.status == grammar::NumberStatus::Ok) mat.density = {ro.value, true, span};
+        return mat;
+    }
+    // The MID card: generated layouts list the title card (of _TITLE) first.
+    const auto& cards = known->schema->cards;
+    auto mid_card = std::find_if(cards.begin(), cards.end(), [](const keywords::CardSpec& c) { return c.field("MID"); });
+    if (mid_card == cards.end()) return mat;
+    const keywords::CardSpec& card = *mid_card;
+    std::size_t k = 0;
+    while (k < card.fields.size() && card.fields[k].name != "RO") ++k;
+    if (k == card.fields.size()) return mat;  // a spring, a seatbelt: no density on this layout
+    mat.has_density = true;
+    std::uint32_t start = 0, width = 0;
+    if (grammar::is_free_format(text)) {
+        std::size_t from = 0;
+        for (std::size_t n = 0; n < k && from != std::string_view::npos; ++n) {
+            from = text.find(',', from);
+            if (from != std::string_view::npos) ++from;
+        }
+        if (from == std::string_view::npos) from = text.size();
+        const std::size_t end = std::min(text.find(',', from), text.size());
+        start = static_cast<std::uint32_t>(from), width = static_cast<std::uint32_t>(end - from);
+    } else {
+        const std::vector<keywords::FieldSlot> slots = keywords::layout(card, b.format);
+        if (k < slots.size()) start = slots[k].start, width = slots[k].width;
+    }
+    const std::string_view field = start < text.size() ? text.substr(start, width) : std::string_view{};
+    mat.density.span = grammar::Span{line->file, line->line, start + 1, start + std::max<std::uint32_t>(width, 1) + 1};
+    const grammar::ValueToken token = grammar::classify_value(field);
+    if (token.shape == grammar::ValueShape::Parameter) {  // &rho: its value, when defined (else DK012)
+        const grammar::ParameterMatch found = deck.parameters.find(token.name, line->file, b.parameter_epoch);
+        if (!found.parameter || found.parameter->type == grammar::ParameterType::Character) {
+            mat.has_density = false;
+            return mat;
+        }
+        mat.density = {token.negated ? -found.parameter->number : found.parameter->number, true, mat.density.span};
+        return mat;
+    }
+    const grammar::RealValue ro = grammar::to_real(token);
+    if (ro.status == grammar::NumberStatus::Ok) mat.density = {ro.value, true, mat.density.span};
+    else if (token.shape != grammar::ValueShape::Blank) mat.has_density = false;  // DK003 says what is wrong
+    return mat;
+}
+
 // *PART_CONTACT, *PART_INERTIA and other variants the schema lacks: their first two cards are
 // *PART's heading and data card (PID SECID MID EOSID HGID), then cards of their own follow. We read
 // the first part of the block; variants with several parts per block are rare.
@@ -274,6 +333,7 @@ void extract_part_variant(const grammar::RawDeck& deck, const grammar::Block& b,
     p.id = pid.value;
     p.span = pid.span;
     p.heading = std::string(deck.text(first[0]));
+    p.inertia = starts_with(b.keyword, "*PART_INERTIA");
     field(1, p.section);
     field(2, p.material);
     field(3, p.eos);
@@ -308,15 +368,7 @@ void extract_unknown_definitions(const grammar::RawDeck& deck, Model& m) {
             s.span = span;
             m.sections.push_back(std::move(s));
         } else if (material) {
-            Material mat{id, b.keyword, span, {}, std::nullopt};
-            // Most materials put RO in columns 11-20; enough for mass and sound-speed checks.
-            const grammar::CardLine* line = deck.begin_lines(b) + (b.keyword.find("_TITLE") != std::string::npos);
-            if (line < deck.end_lines(b)) {
-                std::string_view text = deck.text(*line);
-                grammar::RealValue ro = grammar::parse_real(text.size() > 10 ? text.substr(10, 10) : "");
-                if (ro.status == grammar::NumberStatus::Ok) mat.density = {ro.value, true, span};
-            }
-            m.materials.push_back(std::move(mat));
+            m.materials.push_back(raw_material(deck, b, id, span));
         } else {
             m.equations_of_state.push_back({id, b.keyword, span, std::nullopt});
         }

@@ -98,6 +98,7 @@ struct Part {
     std::string heading;
     grammar::Span span;  // the PID field
     Setting<Id> section, material, eos, hourglass, thermal_material;
+    bool inertia = false;  // *PART_INERTIA: mass and inertia given, not taken from the density
 };
 
 struct Material {
@@ -106,6 +107,9 @@ struct Material {
     grammar::Span span;
     Setting<double> density;
     std::optional<std::size_t> record;  // index into Model::records, when the schema knows it
+    // The layout has a density the solver requires (RO; Radioss RHO_I of a law the starter checks):
+    // false for *MAT_ springs without RO, /MAT/VOID, the multi-material laws (SPH119).
+    bool has_density = false;
 };
 
 struct Eos {

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <fmt/format.h>
 #include <map>
+#include <set>
 
 #include "grammar/number_cast.hpp"
 #include "grammar/value.hpp"
@@ -160,6 +161,10 @@ void RadiossBuilder::end_material(const RadiossBlock& b) {
     mat.keyword = m.keyword;
     mat.span = b.arg_spans[id_arg];
     mat.density = setting_of(rho);
+    // The starter requires RHO_I > 0 of every law but these (hm_read_mat.F90, message 683 'DENSITY').
+    static const std::set<std::string_view> no_density_check = {
+        "VOID", "LAW0", "BIMAT", "LAW20", "MULTIMAT", "LAW51", "SPR_GENE", "LAW108", "MULTIFLUID", "LAW151", "GAS"};
+    mat.has_density = value("RHO_I") != nullptr && !no_density_check.count(b.args[0]);
     model_.materials.push_back(std::move(mat));
     facts_.materials.push_back(std::move(m));
 }

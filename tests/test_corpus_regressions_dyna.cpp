@@ -5,6 +5,7 @@
 #include <string>
 
 #include "engine/check.hpp"
+#include "model/flood_guard.hpp"
 #include "test_support.hpp"
 
 using namespace sphdeck;
@@ -161,19 +162,54 @@ TEST_CASE("corpus: a title longer than 80 columns is not DK006; a data card is")
     CHECK(count_code(card.diagnostics, "DK006") == 1);
 }
 
-TEST_CASE("corpus: a mistake repeated on every line of a block is five findings and one that counts the rest") {
+TEST_CASE("corpus: a mistake repeated on every line of a block is a finding per line (text folds them)") {
     std::string deck = "*KEYWORD\n*NODE\n";
     for (int i = 1; i <= 3000; ++i) deck += std::to_string(i) + "," + std::to_string(i) + ".0,0.0,0.0\n";
     deck += "*ELEMENT_SPH\n";
     for (int i = 1; i <= 3000; ++i) deck += std::to_string(i) + ",1,mass\n";
     auto r = engine::check_buffer(deck, "d.k");
-    CHECK(count_code(r.diagnostics, "DK003") == 6);
-    std::size_t summaries = 0;
-    for (const auto& d : r.diagnostics)
-        if (d.code == "DK003" && d.message.find("(and 2994 more DK003 finding(s) on the lines of this *ELEMENT_SPH "
-                                                "block: lines ") != std::string::npos)
-            ++summaries;
-    CHECK(summaries == 1);
+    CHECK(count_code(r.diagnostics, "DK003") == 3000);  // every format carries them (issue 25 item 5)
+    for (const auto& d : r.diagnostics) CHECK(d.message.find("(and ") == std::string::npos);
+}
+
+TEST_CASE("flood guard: past the safety bound per code and block, the rest are dropped and counted") {
+    std::vector<diag::Diagnostic> out(1, {"DK001", diag::Severity::Info, "before", {}, {}});
+    for (std::uint32_t line = 1; line <= 12; ++line) out.push_back({"DK003", diag::Severity::Error, "bad", {0, line, 1, 2}, {}});
+    out.push_back({"DK002", diag::Severity::Error, "other", {0, 13, 1, 2}, {}});
+    model::collapse_block_floods(out, 1, "*NODE", 4);
+    REQUIRE(out.size() == 1 + 4 + 1);
+    CHECK(out[0].message == "before");  // findings before `from` stay as they are
+    CHECK(out[4].message ==
+          "bad (and 8 more DK003 finding(s) on the lines of this *NODE block, dropped: at most 4 of one code per "
+          "block are kept; lines 5, 6, 7, 8, 9, ...)");
+    CHECK(out[5].code == "DK002");
+}
+
+TEST_CASE("flood guard: trimmed while a block is walked, and across threads' ranges, the same as at once") {
+    auto findings = [](std::uint32_t first, std::uint32_t last) {
+        std::vector<diag::Diagnostic> v;
+        for (std::uint32_t line = first; line <= last; ++line)
+            v.push_back({"DK003", diag::Severity::Error, "bad", {0, line, 1, 2}, {}});
+        return v;
+    };
+    // Two "threads": lines 1-10 and 11-20, each trimmed as it goes, then merged in line order.
+    std::vector<diag::Diagnostic> a, b;
+    model::FloodBound bound_a(0, 4), bound_b(0, 4);
+    for (auto& d : findings(1, 10)) a.push_back(d), bound_a.trim(a);
+    for (auto& d : findings(11, 20)) b.push_back(d), bound_b.trim(b);
+    CHECK(a.size() == 4);  // never more than the bound held at once
+    CHECK(bound_a.dropped() == 6);
+    std::vector<diag::Diagnostic> out = a;
+    out.insert(out.end(), b.begin(), b.end());
+    model::FloodBound block(0, 4);
+    block.merge(bound_a);
+    block.merge(bound_b);
+    block.annotate(out, 0, "*NODE");
+    REQUIRE(out.size() == 4);
+    CHECK(block.dropped() == 16);
+    CHECK(out[3].message ==
+          "bad (and 16 more DK003 finding(s) on the lines of this *NODE block, dropped: at most 4 of one code per "
+          "block are kept; lines 5, 6, 7, 8, 9, ...)");
 }
 
 TEST_CASE("corpus: a word too long for a number field is one finding (DK003), a number too long is DK005") {

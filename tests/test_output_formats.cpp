@@ -2,6 +2,7 @@
 // and its exit codes.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -30,7 +31,49 @@ json json_of(const engine::CheckResult& r, const diag::RunSummary& summary = {})
     return json::parse(report->finish(summary));
 }
 
+// A synthetic finding's fixes: a safe realignment (a replacement and an insertion on line 4) and an
+// unsafe did-you-mean on line 2.
+diag::Diagnostic with_fix(diag::Diagnostic d) {
+    d.fixes.push_back({"move the value back into its field", true,
+                       {{grammar::Span{0, 4, 1, 4}, "1.0"}, {grammar::Span{0, 4, 11, 11}, "   "}}});
+    d.fixes.push_back({"did you mean *CONTROL_TERMINATION?", false, {{grammar::Span{0, 2, 2, 8}, "CONTROL"}}});
+    return d;
+}
+
 }  // namespace
+
+TEST_CASE("output: json and sarif carry a finding's fixes") {
+    engine::CheckResult r = engine::check_buffer(kBadReal, "main.k");
+    REQUIRE(r.diagnostics.size() == 1);
+    r.diagnostics[0] = with_fix(r.diagnostics[0]);
+    const json doc = json_of(r);
+    const json& fixes = doc["diagnostics"][0]["fixes"];
+    REQUIRE(fixes.size() == 2);
+    CHECK(fixes[0]["description"] == "move the value back into its field");
+    CHECK(fixes[0]["safe"] == true);
+    CHECK(fixes[0]["edits"][0] ==
+          json({{"file", "main.k"}, {"line", 4}, {"column", 1}, {"end_column", 4}, {"replacement", "1.0"}}));
+    CHECK(fixes[0]["edits"][1]["column"] == 11);
+    CHECK(fixes[0]["edits"][1]["end_column"] == 11);  // an insertion
+    CHECK(fixes[1]["safe"] == false);
+    CHECK(fixes[1]["edits"][0]["replacement"] == "CONTROL");
+
+    auto report = diag::make_sarif_report(lint::rule_catalog());
+    report->add(r.deck.sources, r.diagnostics);
+    const json log = json::parse(report->finish({}));
+    const json& sarif = log["runs"][0]["results"][0]["fixes"];
+    REQUIRE(sarif.size() == 2);
+    CHECK(sarif[0]["description"]["text"] == "move the value back into its field");
+    const json& change = sarif[0]["artifactChanges"][0];
+    CHECK(change["artifactLocation"]["uri"] == "main.k");
+    REQUIRE(change["replacements"].size() == 2);
+    CHECK(change["replacements"][0]["deletedRegion"] == json({{"startLine", 4}, {"startColumn", 1}, {"endColumn", 4}}));
+    CHECK(change["replacements"][0]["insertedContent"]["text"] == "1.0");
+    CHECK(change["replacements"][1]["deletedRegion"]["endColumn"] == 11);
+
+    engine::CheckResult plain = engine::check_buffer(kBadReal, "main.k");
+    CHECK(json_of(plain)["diagnostics"][0]["fixes"] == json::array());  // always present in JSON
+}
 
 TEST_CASE("output: json carries code, name, location, notes and summary") {
     engine::CheckResult r = engine::check_buffer(kBadReal, "main.k");
@@ -143,6 +186,7 @@ TEST_CASE("output: sarif validates against the SARIF 2.1.0 schema") {
     const std::string main = dir.write("main.k", "units\n*KEYWORD\n*INCLUDE\ninc/part.k\n*INCLUDE\nmissing.k\n*END\n");
     engine::CheckResult r = engine::check_file(main);
     r.diagnostics.push_back({"XX999", diag::Severity::Info, "unregistered", grammar::Span{}, {}});
+    r.diagnostics.push_back(with_fix({"DK003", diag::Severity::Error, "fixable", grammar::Span{0, 2, 1, 6}, {}}));
     auto report = diag::make_sarif_report(lint::rule_catalog());
     report->add(r.deck.sources, r.diagnostics);
     const std::string log = dir.write("out.sarif", report->finish({}));
@@ -210,4 +254,39 @@ TEST_CASE("output: streams and exit codes of the binary") {
     CHECK(github.err.starts_with("checked 1 file(s)"));
     const test::Run full = test::run_sphdeck(dir, "check" + only + "bad.k");
     CHECK(full.out.find("checked 1 file(s)") != std::string::npos);
+}
+
+TEST_CASE("output: every format carries every finding; text folds, every summary counts all") {
+    test::TempDir dir;
+    std::string deck = "*KEYWORD\n*NODE\n";
+    for (int i = 1; i <= 30; ++i) deck += std::to_string(i) + ",abc,0.0,0.0\n";  // DK003 on 30 lines of one block
+    deck += "*END\n";
+    dir.write("flood.k", deck);
+    const std::string only = " --no-config --select DK003 ";
+    const test::Run js = test::run_sphdeck(dir, "check" + only + "--format json flood.k");
+    INFO(js.err);
+    const json doc = json::parse(js.out);
+    CHECK(doc["diagnostics"].size() == 30);
+    CHECK(doc["summary"]["errors"] == 30);
+    CHECK(js.err.find("30 error(s)") != std::string::npos);
+    const json sarif = json::parse(test::run_sphdeck(dir, "check" + only + "--format sarif flood.k").out);
+    CHECK(sarif["runs"][0]["results"].size() == 30);
+    const test::Run gh = test::run_sphdeck(dir, "check" + only + "--format github flood.k");
+    CHECK(std::count(gh.out.begin(), gh.out.end(), '\n') == 30);
+
+    // Text: five findings, then one line for the other 25 of the block; the summary counts all 30.
+    const test::Run concise = test::run_sphdeck(dir, "check" + only + "--format concise flood.k");
+    INFO(concise.out);
+    std::size_t shown = 0;
+    for (std::size_t at = concise.out.find("[DK003]"); at != std::string::npos; at = concise.out.find("[DK003]", at + 1))
+        ++shown;
+    CHECK(shown == 5);
+    CHECK(concise.out.find("flood.k:8:3: 25 more DK003 finding(s) on the lines of this *NODE block: lines 8, 9, 10, "
+                           "11, 12, ... (--max-per-code 0 shows all)") != std::string::npos);
+    CHECK(concise.err.find("30 error(s)") != std::string::npos);
+    const test::Run all = test::run_sphdeck(dir, "check" + only + "--format concise --max-per-code 0 flood.k");
+    CHECK(std::count(all.out.begin(), all.out.end(), '\n') == 30);
+    const test::Run full = test::run_sphdeck(dir, "check" + only + "flood.k");
+    CHECK(full.out.find("30 error(s)") != std::string::npos);
+    CHECK(full.out.find("25 more DK003 finding(s)") != std::string::npos);
 }

@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "run_sphdeck.hpp"
@@ -53,6 +54,22 @@ TEST_CASE("smooth command: the table has one aligned row per part with h0 and it
     CHECK(contains(r.out, "3200 particles in 1 part(s), 2D, INI 0 (bucket sort, from *CONTROL_SPH)"));
     CHECK(contains(r.out, "part  particles  mass  spacing     h0   h_min  h_max  neighbours         dt  ini"));
     CHECK(contains(r.out, "   1       3200   720    0.015  0.018  0.0036  0.036     7/20/20"));
+}
+
+TEST_CASE("smooth command: without *CONTROL_SPH the header says the defaults apply, not where they come from") {
+    std::ifstream in(demo, std::ios::binary);
+    std::string text(std::istreambuf_iterator<char>(in), {});
+    const std::size_t at = text.find("*CONTROL_SPH\n");
+    REQUIRE(at != std::string::npos);
+    const std::size_t next = text.find("\n*", at + 1);
+    REQUIRE(next != std::string::npos);
+    text.erase(at, next + 1 - at);  // the keyword and its cards
+    TempDir dir;
+    const std::string deck = dir.write("no_control.k", text);
+    const Run r = run_sphdeck(dir, "smooth '" + deck + "'");
+    INFO(r.out, r.err);
+    CHECK(contains(r.out, "3200 particles in 1 part(s), 3D, INI 0 (bucket sort, default: no *CONTROL_SPH)"));
+    CHECK_FALSE(contains(r.out, "from *CONTROL_SPH"));
 }
 
 TEST_CASE("smooth command: --format json gives particles, per-part h0 and statistics") {
