@@ -144,13 +144,20 @@ def dump(sphdeck, path, include_dir):
     return report, problem
 
 
+def _blank_is_zero(value):
+    return 0 if value is None or (isinstance(value, (int, float)) and not isinstance(value, bool) and value == 0) \
+        else value
+
+
 def dump_values(report):
     """What the deck reads, without where: every keyword's field values, node and particle counts."""
     if report is None:
         return None
     out = []
     for k in report.get("keywords", []):
-        out.append((k["name"], tuple((n, json.dumps(f["value"]), f["explicit"]) for n, f in k["fields"].items())))
+        # Values only: a blank read as its default and the default typed out read the same, and a blank
+        # without a default (null: OpenRadioss reads blank cells as 0) the same as 0.
+        out.append((k["name"], tuple((n, json.dumps(_blank_is_zero(f["value"]))) for n, f in k["fields"].items())))
     out.append(json.dumps(report.get("unknown_keywords"), sort_keys=True))
     out.append(json.dumps(report.get("nodes"), sort_keys=True))
     out.append(json.dumps(report.get("particles"), sort_keys=True))

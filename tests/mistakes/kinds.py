@@ -214,7 +214,11 @@ def width_8(host, rng):
                 break
             lines[n - 1] = "".join(c.rjust(8) for c in cells) + ((" " + rest) if rest else "")
         if ok and data:
-            yield Plant("width-8", lines, [data[0]], f"{b.name} block at line {b.line} ({len(data)} lines)",
+            # The block's first data line (a set's SID card, not rewritten) or the first rewritten line
+            # whose reading changes (an *ELEMENT_SPH line 8 wide reads the same until MASS is long).
+            first = next((n for n in data if grid_fields(lines[n - 1], grid) != grid_fields(host.deck.lines[n - 1], grid)),
+                         data[0])
+            yield Plant("width-8", lines, {b.data[0], first}, f"{b.name} block at line {b.line} ({len(data)} lines)",
                         "grid", data, grid)
 
 
