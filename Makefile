@@ -4,7 +4,7 @@ BUILD_ASAN ?= build-asan
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build demo test test-asan corpus bench verify clean
+.PHONY: all deps build demo test test-asan corpus mistakes bench verify clean
 
 all: build
 
@@ -28,6 +28,11 @@ test: build
 # error and warning compared with the argued baseline tests/corpus/baseline.tsv.
 corpus: build
 	python3 tests/corpus/run_corpus.py --sphdeck $(BUILD)/sphdeck
+
+# The seeded-mistakes test: typical mistakes planted into the shipped and corpus decks, the rate per kind
+# (tests/mistakes/README.md); also a ctest entry.
+mistakes: build
+	python3 tests/mistakes/run_mistakes.py --sphdeck $(BUILD)/sphdeck --verbose
 
 # The test suite again under AddressSanitizer and UndefinedBehaviorSanitizer (CI runs it too).
 test-asan: deps
