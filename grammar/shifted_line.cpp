@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "grammar/value.hpp"
+
 namespace sphdeck::grammar {
 namespace {
 
@@ -132,6 +134,46 @@ std::optional<LineShift> find_shift(std::string_view text, std::string_view head
         found = LineShift{n, false, header_says, shifted(text, n)};
     }
     if (found) found->changes_reading = !same_reading(text, found->realigned, slots);
+    return found;
+}
+
+std::optional<Straddle> find_straddle(std::string_view text, std::span<const FixedField> slots,
+                                      const keywords::CardSpec& card) {
+    if (!cuttable(text, card)) return std::nullopt;
+    const auto types = field_types(card);
+    const std::size_t fields = std::min(slots.size(), types.size());
+    std::vector<LineToken> tokens = line_tokens(text);
+    std::vector<bool> taken(fields, false);
+    std::optional<Straddle> found;
+    for (LineToken& t : tokens) {
+        std::size_t s = 0;
+        while (s < fields && !(slots[s].start <= t.begin && t.begin < slot_end(slots[s]))) ++s;
+        if (s == fields || taken[s]) return std::nullopt;
+        taken[s] = true;
+        t.slot = s;
+        if (t.end <= slot_end(slots[s])) continue;
+        // Runs across the end of field s: one value, pushed right, short enough for its field.
+        if (found || s + 1 >= fields || slots[s + 1].start != slot_end(slots[s])) return std::nullopt;
+        if (t.begin == slots[s].start || t.end >= slot_end(slots[s + 1]) || t.end - t.begin > slots[s].width)
+            return std::nullopt;
+        const bool number_field = types[s] == FieldType::Integer || types[s] == FieldType::Real ||
+                                  types[s] == FieldType::Label;
+        if (!number_field || types[s + 1] == FieldType::Text || taken[s + 1]) return std::nullopt;
+        const std::string_view whole = text.substr(t.begin, t.end - t.begin);
+        if (parse_real(whole).status != NumberStatus::Ok || !reads_as(whole, types[s])) return std::nullopt;
+        taken[s + 1] = true;
+        found = Straddle{s, t.begin, t.end, t.end - slot_end(slots[s]), std::nullopt};
+    }
+    if (!found) return std::nullopt;
+    // The fix moves the whole line: only when it has the blanks to lose and no value changes field.
+    const int n = static_cast<int>(found->overrun);
+    if (text.find_first_not_of(' ') >= found->overrun) {
+        std::vector<LineToken> moved = tokens;
+        if (place_tokens(text, moved, slots, types, n) &&
+            std::equal(moved.begin(), moved.end(), tokens.begin(),
+                       [](const LineToken& a, const LineToken& b) { return a.slot == b.slot; }))
+            found->realigned = shifted(text, n);
+    }
     return found;
 }
 

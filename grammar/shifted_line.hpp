@@ -55,6 +55,35 @@ struct WrittenWidths {
 std::optional<WrittenWidths> find_written_widths(std::string_view text, const keywords::CardSpec& card,
                                                  CardFormat format);
 
+// One value written across the end of its field: a right-aligned value pushed a column or a few
+// right, `     0.002` typed `      0.002` (read as 0.00 and 2, silently). The run of characters reads as
+// one number of the left field's type and fits in it; blanks stand before it inside the left field (a
+// value from the field's first column is left-aligned, not pushed), its right part does not fill the
+// next field (values packed full width touch legitimately), and every other value sits whole in a
+// field of its own.
+struct Straddle {
+    std::size_t field = 0;                 // the field it runs across the end of
+    std::size_t begin = 0, end = 0;        // 0-based [begin, end) of the value
+    std::size_t overrun = 0;               // columns past the field's end
+    std::optional<std::string> realigned;  // the line moved `overrun` left, when every value keeps its field
+};
+std::optional<Straddle> find_straddle(std::string_view text, std::span<const FixedField> slots,
+                                      const keywords::CardSpec& card);
+
+// The cheap test that makes a line worth find_straddle (it runs on every line the serial walk decodes):
+// two non-blank characters touch across a field end, the left field starts with a blank and the next
+// field does not end with a value.
+inline bool may_straddle(std::string_view text, std::span<const FixedField> slots) {
+    for (std::size_t i = 0; i + 1 < slots.size(); ++i) {
+        const std::size_t b = std::size_t{slots[i].start} + slots[i].width;
+        if (b >= text.size()) return false;
+        if (text[b - 1] == ' ' || text[b] == ' ' || text[slots[i].start] != ' ' || slots[i + 1].start != b) continue;
+        const std::size_t next_end = b + slots[i + 1].width;
+        if (next_end > text.size() || text[next_end - 1] == ' ') return true;
+    }
+    return false;
+}
+
 // True when `text` reads cleanly in the fields at `slots` with every value aligned to its field.
 bool reads_aligned(std::string_view text, std::span<const FixedField> slots, const keywords::CardSpec& card);
 

@@ -73,6 +73,8 @@ constexpr RuleInfo kRows[] = {
      "a line whose values all sit the same few columns off their fields: the cause of its cut or glued values"},
     {"DK030", "field-width", Error, "0.1.0", "reader",
      "a block written in other field widths than the keyword reads (8 for 10, standard for long)"},
+    {"DK031", "decimal-comma", Warning, "0.1.0", "reader",
+     "a comma between two digits in a padded fixed-format line: a decimal comma makes the line free format"},
 
     // RAD: OpenRadioss SPH options (/SPHBCS, SOL2SPH, /PROP/SPH, /SPHCEL, /SPHGLO, /DT).
     {"RAD001", "missing-starter-header", Error, "0.1.0", "reader",

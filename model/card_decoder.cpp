@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "grammar/number_cast.hpp"
+#include "grammar/shifted_line.hpp"
 #include "grammar/value.hpp"
 
 namespace sphdeck::model {
@@ -100,6 +101,7 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
     std::string_view text = deck_.text(line);
     line_text_ = text;
     grammar::CutReport cut = grammar::cut_fields(text, line, positions_, layout.significant, fields_, !layout.text_card);
+    glued_ = !cut.free_format && !layout.text_card && grammar::may_straddle(text, positions_);
 
     if (cut.has_tab) {
         std::size_t tab = text.find('\t');
@@ -168,6 +170,46 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
                 break;
         }
     }
+    if (cut.free_format) check_decimal_comma(card, line, values);
+}
+
+// `     0,002` for `     0.002`: a comma makes the whole line free format (LS-DYNA reads ENDTIM 0 and
+// ENDCYC 2). Said when a comma sits between two digits and the line starts with the blanks of a
+// fixed-format field (a free-format line is written from its first column, or with a blank after
+// each comma). Runs on free-format lines only.
+void CardDecoder::check_decimal_comma(const keywords::CardSpec& card, const grammar::CardLine& line,
+                                      const std::vector<FieldValue>& values) {
+    const std::string_view text = line_text_;
+    const std::size_t first = text.find(',');
+    if (first == std::string_view::npos || first < 2 || text[0] != ' ' || text[1] != ' ') return;
+    auto digit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
+    std::size_t comma = first;
+    while (comma != std::string_view::npos &&
+           !(comma > 0 && comma + 1 < text.size() && digit(text[comma - 1]) && digit(text[comma + 1])))
+        comma = text.find(',', comma + 1);
+    if (comma == std::string_view::npos) return;
+    auto separator = [](char c) { return c == ' ' || c == ',' || c == '\t'; };
+    std::size_t from = comma, to = comma + 1;
+    while (from > 0 && !separator(text[from - 1])) --from;
+    while (to < text.size() && !separator(text[to])) ++to;
+    std::string reading;
+    std::size_t shown_fields = 0;
+    for (std::size_t i = 0; i < values.size() && i < card.fields.size() && shown_fields < 4; ++i) {
+        const FieldValue& v = values[i];
+        if (!v.explicit_value || card.fields[i].type == FieldType::Unused) continue;
+        const grammar::RealValue r = grammar::parse_real(v.text);
+        reading += fmt::format("{}{} {}", reading.empty() ? "" : ", ", card.fields[i].name,
+                               r.status == NumberStatus::Ok ? number_text(r.value) : shown(v.text));
+        ++shown_fields;
+    }
+    const std::string meant = std::string(text.substr(from, comma - from)) + "." +
+                              std::string(text.substr(comma + 1, to - comma - 1));
+    report("DK031", diag::Severity::Warning,
+           fmt::format("a comma inside a fixed-format field: LS-DYNA reads this line as free format{}; a decimal "
+                       "comma? write {}",
+                       reading.empty() ? "" : " (" + reading + ")", shown(meant)),
+           grammar::Span{line.file, line.line, static_cast<std::uint32_t>(from + 1),
+                         static_cast<std::uint32_t>(to + 1)});
 }
 
 void CardDecoder::decode_number(const grammar::Block& block, const keywords::FieldSpec& spec,

@@ -49,6 +49,10 @@ public:
     // The bulk path of *NODE and *ELEMENT_SPH lines: a plain fixed-format line (standard widths,
     // numbers in their columns, nothing to report) is decoded straight from its columns; any
     // other line goes through decode(). `values` come out as decode() would fill them.
+    // Whether the line decode() read last may hold a value pushed across a field end
+    // (grammar::may_straddle): a line for the shift diagnosis although nothing was reported.
+    bool glued() const { return glued_; }
+
     void decode_bulk(const grammar::Block& block, const grammar::CardLine& line, const keywords::CardSpec& card,
                      std::vector<FieldValue>& values) {
         if (!decode_plain(block, line, card, values)) decode(block, line, card, values);
@@ -61,11 +65,14 @@ private:
     // free format (a parameter name that fills a fixed field may have been cut by it).
     void decode_number(const grammar::Block& block, const keywords::FieldSpec& spec, const grammar::ValueToken& token,
                        const grammar::Field& field, std::uint32_t fixed_width, FieldValue& v);
+    void check_decimal_comma(const keywords::CardSpec& card, const grammar::CardLine& line,
+                             const std::vector<FieldValue>& values);
     void check_text(const grammar::Block& block, const keywords::FieldSpec& spec, FieldValue& v);
     void check_range(const keywords::FieldSpec& spec, const FieldValue& v);
     void report(const char* code, diag::Severity s, std::string message, grammar::Span span);
 
-    std::string_view line_text_;  // the line decode() works on, for the notes that quote it
+    std::string_view line_text_;
+    bool glued_ = false;  // the line decode() works on, for the notes that quote it
 
     // Widened positions of a card in a format, computed once: decoding runs per line.
     struct Layout {

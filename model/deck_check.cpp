@@ -98,7 +98,7 @@ public:
             const CardSpec& card = *cards[next];
             const std::size_t found_before = out_.size();
             decoder_.decode(block, *l, card, values_);
-            note_suspect(block, *l, card, out_.size() > found_before);
+            note_suspect(block, *l, card, out_.size() > found_before || decoder_.glued());
             std::optional<diag::Diagnostic> refused;
             if (particles) refused = take_range(values_);
             if (card.repeat != CardRepeat::Repeated) remember(values_);  // conditions look at header cards

@@ -58,12 +58,49 @@ std::string reading_note(std::string_view written, std::string_view meant, std::
     return fmt::format("as written the fields read {}; with the values in their fields: {}", before, after);
 }
 
+// One value pushed across the end of its field (grammar::find_straddle): the solver reads its two
+// parts in two fields, silently when both are numbers.
+std::optional<diag::Diagnostic> straddling_value(const grammar::RawDeck& deck, const grammar::Block& block,
+                                                 const SuspectLine& s, std::string_view text,
+                                                 std::span<const grammar::FixedField> slots) {
+    auto found = grammar::find_straddle(text, slots, *s.card);
+    if (!found) return std::nullopt;
+    const grammar::FixedField& left = slots[found->field];
+    const std::size_t boundary = std::size_t{left.start} + left.width;
+    const std::string_view whole = text.substr(found->begin, found->end - found->begin);
+    const std::string_view kept = text.substr(found->begin, boundary - found->begin);
+    const std::string_view lost = text.substr(boundary, found->end - boundary);
+    const auto& here = s.card->fields[found->field];
+    const auto& next = s.card->fields[found->field + 1];
+    const std::string reading =
+        next.type == keywords::FieldType::Unused
+            ? fmt::format("read as {} {}; '{}' falls in an unused field and is lost", here.name, kept, lost)
+            : fmt::format("read as {} {} and {} {}", here.name, kept, next.name, lost);
+    diag::Diagnostic d{"DK029", diag::Severity::Error,
+                       fmt::format("'{}' runs across the end of {} (columns {}-{}) of {} {}: {}", whole, here.name,
+                                   left.start + 1, boundary, block.keyword, card_name(*s.card), reading),
+                       grammar::Span{s.line->file, s.line->line, static_cast<std::uint32_t>(found->begin + 1),
+                                     static_cast<std::uint32_t>(found->end + 1)},
+                       {}};
+    const std::size_t n = found->overrun;
+    if (found->realigned)
+        d.fixes.push_back(diag::Fix{fmt::format("move the line {} column{} left: '{}' then ends at column {}, the "
+                                                "end of {}",
+                                                n, n == 1 ? "" : "s", whole, boundary, here.name),
+                                    true, {whole_line_edit(deck, *s.line, std::move(*found->realigned))}});
+    else
+        d.notes.push_back({grammar::Span{}, fmt::format("moved {} column{} left, '{}' would end at column {}, the "
+                                                        "end of {}",
+                                                        n, n == 1 ? "" : "s", whole, boundary, here.name)});
+    return d;
+}
+
 std::optional<diag::Diagnostic> shifted_line(const grammar::RawDeck& deck, const grammar::Block& block,
                                              const SuspectLine& s) {
     const std::string_view text = deck.text(*s.line);
     const auto slots = keywords::layout(*s.card, block.format);
     auto shift = grammar::find_shift(text, header_above(deck, *s.line), slots, *s.card);
-    if (!shift) return std::nullopt;
+    if (!shift) return straddling_value(deck, block, s, text, slots);
     const int n = std::abs(shift->columns);
     const char* side = shift->columns > 0 ? "right" : "left";
     diag::Diagnostic d{"DK029", shift->changes_reading ? diag::Severity::Error : diag::Severity::Warning,
