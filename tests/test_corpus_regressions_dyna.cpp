@@ -221,14 +221,15 @@ TEST_CASE("corpus: a word too long for a number field is one finding (DK003), a 
 }
 
 TEST_CASE("corpus: a number glued across a field boundary says so in a note on its DK003") {
-    auto r = engine::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n     1.0E-3\n*DEFINE_CURVE\n         1\n"
+    auto r = engine::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n1.000000E-3\n*DEFINE_CURVE\n         1\n"
                                 "       9.99990000E+03     0.00000000E+00\n*END\n",
-                                "d.k");  // O1 in its field: no whole-line shift (that is DK029)
+                                "d.k");  // O1 in its field: no whole-line shift (that is DK029); ENDTIM
+                                          // from column 1, too long: not one value pushed across (DK029 too)
     REQUIRE(count_code(r.diagnostics, "DK003") == 2);
     std::vector<std::string> notes;
     for (const auto& d : r.diagnostics)
         if (d.code == "DK003") notes.push_back(d.notes.empty() ? "" : d.notes.front().message);
-    CHECK(notes[0] == "'1.0E-3' runs on past column 10, so the field holds only '1.0E-'");
+    CHECK(notes[0] == "'1.000000E-3' runs on past column 10, so the field holds only '1.000000E-'");
     CHECK(notes[1] == "'9.99990000E+03' of the field before runs on into this one at column 21: the field before "
                       "holds only '9.99990000E+0'");
     auto word = engine::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n     abcdefghij\n*END\n", "d.k");

@@ -283,13 +283,14 @@ TEST_CASE("lsp outline and folding: one symbol and one range per keyword block, 
 }
 
 TEST_CASE("lsp code actions: suppression comments and the realignment of a value over its columns") {
-    // ENDTIM "1.0E-3" starts in column 7 of its 10 columns: the field holds "1.0E" (DK003).
+    // ENDTIM "1.0E-3" starts in column 7 of its 10 columns: the field holds "1.0E" and ENDCYC "-3", one
+    // value pushed across its field's end (DK029, the DK003 folded into it), whose fix moves the line back.
     const std::string text = "*KEYWORD\n*CONTROL_TERMINATION\n      1.0E-3\n*END\n";
     const auto deck = check(text);
-    REQUIRE(count_code(deck, "DK003") == 1);
+    REQUIRE(count_code(deck, "DK029") == 1);
     nlohmann::json diagnostic;
     for (const auto& d : published(deck))
-        if (d["code"] == "DK003") diagnostic = d;
+        if (d["code"] == "DK029") diagnostic = d;
     auto actions = ask(deck, "textDocument/codeAction",
                        {{"textDocument", {{"uri", "file:///tmp/main.k"}}},
                         {"range", diagnostic["range"]},
@@ -297,27 +298,27 @@ TEST_CASE("lsp code actions: suppression comments and the realignment of a value
     REQUIRE(actions.size() == 3);
     for (const auto& a : actions) {
         CHECK(a["kind"] == "quickfix");
-        CHECK(a["diagnostics"][0]["code"] == "DK003");
+        CHECK(a["diagnostics"][0]["code"] == "DK029");
         REQUIRE(a["edit"]["changes"].contains("file:///tmp/main.k"));
     }
     auto edited = [&](std::size_t i) { return apply(text, actions[i]["edit"]["changes"]["file:///tmp/main.k"]); };
 
-    CHECK(actions[0]["title"] == "Realign the values of this card into their columns");
+    CHECK(actions[0]["title"] == "Move the line 2 columns left: '1.0E-3' then ends at column 10, the end of ENDTIM");
     CHECK(edited(0) == "*KEYWORD\n*CONTROL_TERMINATION\n    1.0E-3\n*END\n");
     auto fixed = check(edited(0));
-    CHECK(count_code(fixed, "DK003") == 0);
+    CHECK(count_code(fixed, "DK029") == 0);
     CHECK(fixed.result.model.controls.endtim.value == doctest::Approx(1.0e-3));
 
-    CHECK(actions[1]["title"] == "Suppress DK003 for this card");
-    CHECK(edited(1) == "*KEYWORD\n*CONTROL_TERMINATION\n$ sphdeck: disable=DK003\n      1.0E-3\n*END\n");
+    CHECK(actions[1]["title"] == "Suppress DK029 for this card");
+    CHECK(edited(1) == "*KEYWORD\n*CONTROL_TERMINATION\n$ sphdeck: disable=DK029\n      1.0E-3\n*END\n");
     auto silenced = check(edited(1));
-    CHECK(count_code(silenced, "DK003") == 0);
+    CHECK(count_code(silenced, "DK029") == 0);
     CHECK(count_code(silenced, "DK026") == 0);
 
-    CHECK(actions[2]["title"] == "Suppress DK003 in this file");
-    CHECK(edited(2) == "$ sphdeck: disable-file=DK003\n" + text);
+    CHECK(actions[2]["title"] == "Suppress DK029 in this file");
+    CHECK(edited(2) == "$ sphdeck: disable-file=DK029\n" + text);
     silenced = check(edited(2));
-    CHECK(count_code(silenced, "DK003") == 0);
+    CHECK(count_code(silenced, "DK029") == 0);
     CHECK(count_code(silenced, "DK026") == 0);
 
     // A second code joins the file's directive instead of adding a line.
