@@ -136,6 +136,9 @@ std::vector<diag::TextEdit> rewrite_block(const grammar::RawDeck& deck, const gr
 std::optional<diag::Diagnostic> wrong_widths(const grammar::RawDeck& deck, const grammar::Block& block,
                                              std::span<const SuspectLine> suspects) {
     constexpr std::size_t tried = 8;
+    // A width is a property of the block: most of its lines misread. One line off among lines that
+    // read cleanly is that line's own shift (DK029 on it), not the block's widths at its first line.
+    if (suspects.size() < max_suspect_lines && 2 * suspects.size() <= block.line_count) return std::nullopt;
     for (std::size_t i = 0; i < suspects.size() && i < tried; ++i) {
         const SuspectLine& s = suspects[i];
         auto written = grammar::find_written_widths(deck.text(*s.line), *s.card, block.format);
