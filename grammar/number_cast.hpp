@@ -23,7 +23,7 @@ constexpr bool fits_integer(double number) {
 
 // The number truncated to T when it fits, nothing otherwise.
 template <typename T>
-constexpr std::optional<T> to_integer(double number) {
+constexpr std::optional<T> checked_integer(double number) {
     if (!fits_integer<T>(number)) return std::nullopt;
     return static_cast<T>(number);
 }

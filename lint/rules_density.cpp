@@ -28,7 +28,10 @@ void check_lsdyna_densities(RuleContext& c) {
     std::set<const model::Material*> reported;
     for (const model::Part& part : m.parts) {
         const model::Section* section = m.section(part.section.value);
-        const bool solid = section && starts_with(section->keyword, "*SECTION_SOLID");
+        // Solids: *SECTION_SOLID, and the 2D solids of *SECTION_SHELL (ELFORM 12 plane stress, 13 plane
+        // strain, 14 and 15 axisymmetric: their element mass is RO times the area swept).
+        const bool solid = section && (starts_with(section->keyword, "*SECTION_SOLID") ||
+                                       (section->shell_form >= 12 && section->shell_form <= 15));
         if (!sph.count(&part) && !solid) continue;
         const model::Material* mat = m.material(part.material.value);
         if (!mat || !mat->has_density || mat->density.value > 0 || reported.count(mat)) continue;

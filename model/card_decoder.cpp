@@ -332,7 +332,7 @@ void CardDecoder::check_text(const grammar::Block& block, const keywords::FieldS
 void CardDecoder::check_range(const keywords::FieldSpec& spec, const FieldValue& v) {
     if (!spec.choices.empty()) {
         // Out of range for an integer is simply not one of the choices (no conversion: issue 32).
-        const std::optional<long long> as_integer = grammar::to_integer<long long>(v.number);
+        const std::optional<long long> as_integer = grammar::checked_integer<long long>(v.number);
         if (v.number != std::trunc(v.number) || !as_integer || !spec.choice(*as_integer)) {
             std::string allowed;
             for (const auto& c : spec.choices) allowed += (allowed.empty() ? "" : ", ") + std::to_string(c.value);

@@ -27,7 +27,7 @@ std::string_view trim_spaces(std::string_view s, std::size_t& offset) {
 // What decode_number checks after the value: an integer beyond 2^53, choices and ranges.
 bool in_range(const keywords::FieldSpec& spec, double number) {
     if (!spec.choices.empty()) {
-        const std::optional<long long> as_integer = grammar::to_integer<long long>(number);
+        const std::optional<long long> as_integer = grammar::checked_integer<long long>(number);
         return number == std::trunc(number) && as_integer && spec.choice(*as_integer);
     }
     return !(spec.min && number < *spec.min) && !(spec.max && number > *spec.max);

@@ -44,7 +44,7 @@ Id id_of(const FieldRecord& f) {
     if (!f.explicit_value) return {};
     grammar::ValueToken t = grammar::classify_value(f.text);
     if (f.valid && (t.shape == grammar::ValueShape::Integer || t.shape == grammar::ValueShape::Real))
-        if (const std::optional<long long> n = grammar::to_integer<long long>(f.number)) return std::to_string(*n);
+        if (const std::optional<long long> n = grammar::checked_integer<long long>(f.number)) return std::to_string(*n);
     return normalise_id(f.text);
 }
 
@@ -168,8 +168,8 @@ std::vector<long long> set_members(const KeywordRecord& r, std::size_t limit, bo
         if (generate) {  // B1BEG B1END ... pairs of ranges
             for (std::size_t k = 0; k + 1 < row.size(); k += 2) {
                 // A bound that is no integer (1e20: DK007 on its field) makes no range.
-                const auto first = grammar::to_integer<long long>(row[k].number);
-                const auto last = grammar::to_integer<long long>(row[k + 1].number);
+                const auto first = grammar::checked_integer<long long>(row[k].number);
+                const auto last = grammar::checked_integer<long long>(row[k + 1].number);
                 if (!row[k].explicit_value || !row[k + 1].explicit_value || !first || !last) continue;
                 for (long long id = *first; id <= *last; ++id) {
                     if (id != 0) {
@@ -185,7 +185,7 @@ std::vector<long long> set_members(const KeywordRecord& r, std::size_t limit, bo
         } else {
             for (const auto& f : row)
                 if (f.explicit_value && f.valid && f.number != 0)
-                    if (const auto id = grammar::to_integer<long long>(f.number)) members.push_back(*id);
+                    if (const auto id = grammar::checked_integer<long long>(f.number)) members.push_back(*id);
         }
     }
     return members;
@@ -253,6 +253,25 @@ bool raw_first_id(const grammar::RawDeck& deck, const grammar::Block& block, Id&
     id = normalise_id(field);
     span = grammar::Span{line->file, line->line, 1, static_cast<std::uint32_t>(field.size() + 1)};
     return !id.empty();
+}
+
+// The second field of the first data card as an integer (*SECTION_SHELL ELFORM), 0 when it is not one.
+long long raw_second_integer(const grammar::RawDeck& deck, const grammar::Block& block) {
+    const grammar::CardLine* line = deck.begin_lines(block);
+    if (block.keyword.find("_TITLE") != std::string::npos) ++line;
+    if (line >= deck.end_lines(block)) return 0;
+    const std::string_view text = deck.text(*line);
+    std::string_view field;
+    if (grammar::is_free_format(text)) {
+        const std::size_t comma = text.find(',');
+        field = text.substr(comma + 1);
+        field = field.substr(0, field.find(','));
+    } else {
+        const std::size_t width = block.format == grammar::CardFormat::Long ? 20 : 10;
+        if (text.size() > width) field = text.substr(width, std::min(text.size() - width, width));
+    }
+    const grammar::IntegerValue n = grammar::parse_integer(grammar::trim_blanks(field));
+    return n.status == grammar::NumberStatus::Ok ? n.value : 0;
 }
 
 // RO of a material read from its generated layout: the field named RO on the first data card (MID,
@@ -366,6 +385,7 @@ void extract_unknown_definitions(const grammar::RawDeck& deck, Model& m) {
             s.id = id;
             s.keyword = b.keyword;
             s.span = span;
+            if (starts_with(b.keyword, "*SECTION_SHELL")) s.shell_form = raw_second_integer(deck, b);
             m.sections.push_back(std::move(s));
         } else if (material) {
             m.materials.push_back(raw_material(deck, b, id, span));

@@ -91,6 +91,7 @@ struct Section {
     grammar::Span span;   // the SECID field
     Setting<double> cslh{1.2}, hmin{0.2}, hmax{2.0}, sphini{0.0}, death{1.0e20}, start{0.0};
     Setting<Kernel> kernel{Kernel::CubicSpline};
+    long long shell_form = 0;  // *SECTION_SHELL ELFORM as written (12-15: 2D solids), 0 when not read
 };
 
 struct Part {

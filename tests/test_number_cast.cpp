@@ -32,11 +32,11 @@ TEST_CASE("number cast: a double fits an integer type when it truncates into the
     CHECK_FALSE(fits_integer<std::uint32_t>(4294967296.0));
 }
 
-TEST_CASE("number cast: to_integer and saturating_integer") {
-    CHECK(to_integer<long long>(42.9) == 42);
-    CHECK(to_integer<long long>(-42.9) == -42);
-    CHECK_FALSE(to_integer<long long>(1e20).has_value());
-    CHECK_FALSE(to_integer<int>(NAN).has_value());
+TEST_CASE("number cast: checked_integer and saturating_integer") {
+    CHECK(checked_integer<long long>(42.9) == 42);
+    CHECK(checked_integer<long long>(-42.9) == -42);
+    CHECK_FALSE(checked_integer<long long>(1e20).has_value());
+    CHECK_FALSE(checked_integer<int>(NAN).has_value());
     CHECK(saturating_integer<long long>(1e20) == std::numeric_limits<long long>::max());
     CHECK(saturating_integer<long long>(-1e20) == std::numeric_limits<long long>::min());
     CHECK(saturating_integer<long long>(-INFINITY) == std::numeric_limits<long long>::min());
