@@ -57,7 +57,7 @@ std::string effective_value(const model::FieldValue& v) {
         grammar::parse_real(v.text).status == grammar::NumberStatus::Ok && grammar::parse_real(v.text).value == 0.0)
         return fmt::format("{} (default: 0 means the default)", value);
     // No conversion of a value outside long long (1e20 in FORM: undefined behaviour, issue 32).
-    if (const std::optional<long long> n = grammar::to_integer<long long>(v.number); n && v.number == std::trunc(v.number))
+    if (const std::optional<long long> n = grammar::checked_integer<long long>(v.number); n && v.number == std::trunc(v.number))
         if (const auto* choice = f.choice(*n)) value += fmt::format(": {}", choice->meaning);
     return value;
 }

@@ -27,7 +27,7 @@ double record_number(const model::KeywordRecord* r, std::string_view name, doubl
 
 long long record_integer(const model::KeywordRecord* r, std::string_view name, long long fallback) {
     const model::FieldRecord* f = record_field(r, name);
-    const std::optional<long long> n = f ? grammar::to_integer<long long>(f->number) : std::nullopt;
+    const std::optional<long long> n = f ? grammar::checked_integer<long long>(f->number) : std::nullopt;
     return n ? *n : fallback;
 }
 

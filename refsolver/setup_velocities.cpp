@@ -199,7 +199,7 @@ private:
         Vec3 n{record_number(&r, "NX"), record_number(&r, "NY"), record_number(&r, "NZ")};
         if (omega != 0 && n[0] == -999) {
             // NY and NZ are real fields holding node ids here: 1e20 names no node, and is not converted.
-            const auto node_a = grammar::to_integer<long long>(n[1]), node_b = grammar::to_integer<long long>(n[2]);
+            const auto node_a = grammar::checked_integer<long long>(n[1]), node_b = grammar::checked_integer<long long>(n[2]);
             const auto a = node_a ? index_.node_position(*node_a) : std::nullopt;
             const auto b = node_b ? index_.node_position(*node_b) : std::nullopt;
             if (!a || !b) {
