@@ -255,48 +255,29 @@ bool raw_first_id(const grammar::RawDeck& deck, const grammar::Block& block, Id&
     return !id.empty();
 }
 
-// The second field of the first data card as an integer (*SECTION_SHELL ELFORM), 0 when it is not one.
-long long raw_second_integer(const grammar::RawDeck& deck, const grammar::Block& block) {
-    const grammar::CardLine* line = deck.begin_lines(block);
-    if (block.keyword.find("_TITLE") != std::string::npos) ++line;
-    if (line >= deck.end_lines(block)) return 0;
-    const std::string_view text = deck.text(*line);
-    std::string_view field;
-    if (grammar::is_free_format(text)) {
-        const std::size_t comma = text.find(',');
-        field = text.substr(comma + 1);
-        field = field.substr(0, field.find(','));
-    } else {
-        const std::size_t width = block.format == grammar::CardFormat::Long ? 20 : 10;
-        if (text.size() > width) field = text.substr(width, std::min(text.size() - width, width));
-    }
-    const grammar::IntegerValue n = grammar::parse_integer(grammar::trim_blanks(field));
-    return n.status == grammar::NumberStatus::Ok ? n.value : 0;
-}
-
-// RO of a material read from its generated layout: the field named RO on the first data card (MID,
-// RO, ...), in the block's format. Keywords the tables do not know: RO in columns 11-20 (most
-// materials), enough for mass and sound-speed checks but not for SPH119 (has_density stays false).
-Material raw_material(const grammar::RawDeck& deck, const grammar::Block& b, const Id& id, grammar::Span span) {
-    Material mat{id, b.keyword, span, {}, std::nullopt, false};
+// A field of a generated-layout block read straight from its first data line (after the title
+// line of _TITLE): the first card of the keyword's layout that has `id_field`, the slot of `name` on it
+// in the block's format (or the name-th comma field of a free-format line). Nothing when the tables do
+// not know the keyword or the card has no such field.
+struct RawField {
+    std::string_view text;
+    grammar::Span span;
+    const grammar::CardLine* line = nullptr;
+};
+std::optional<RawField> raw_field(const grammar::RawDeck& deck, const grammar::Block& b, std::string_view id_field,
+                                  std::string_view name) {
     const grammar::CardLine* line = deck.begin_lines(b) + (b.keyword.find("_TITLE") != std::string::npos);
-    if (line >= deck.end_lines(b)) return mat;
-    const std::string_view text = deck.text(*line);
+    if (line >= deck.end_lines(b)) return std::nullopt;
     const std::optional<keywords::KeywordMatch> known = keywords::find_keyword(b.keyword);
-    if (!known || known->schema->cards.empty()) {
-        grammar::RealValue ro = grammar::parse_real(text.size() > 10 ? text.substr(10, 10) : "");
-        if (ro.status == grammar::NumberStatus::Ok) mat.density = {ro.value, true, span};
-        return mat;
-    }
-    // The MID card: generated layouts list the title card (of _TITLE) first.
+    if (!known) return std::nullopt;
+    // Generated layouts list the title card (of _TITLE) first: the card with the id is the data card.
     const auto& cards = known->schema->cards;
-    auto mid_card = std::find_if(cards.begin(), cards.end(), [](const keywords::CardSpec& c) { return c.field("MID"); });
-    if (mid_card == cards.end()) return mat;
-    const keywords::CardSpec& card = *mid_card;
+    auto card = std::find_if(cards.begin(), cards.end(), [&](const keywords::CardSpec& c) { return c.field(id_field); });
+    if (card == cards.end()) return std::nullopt;
     std::size_t k = 0;
-    while (k < card.fields.size() && card.fields[k].name != "RO") ++k;
-    if (k == card.fields.size()) return mat;  // a spring, a seatbelt: no density on this layout
-    mat.has_density = true;
+    while (k < card->fields.size() && card->fields[k].name != name) ++k;
+    if (k == card->fields.size()) return std::nullopt;
+    const std::string_view text = deck.text(*line);
     std::uint32_t start = 0, width = 0;
     if (grammar::is_free_format(text)) {
         std::size_t from = 0;
@@ -308,14 +289,45 @@ Material raw_material(const grammar::RawDeck& deck, const grammar::Block& b, con
         const std::size_t end = std::min(text.find(',', from), text.size());
         start = static_cast<std::uint32_t>(from), width = static_cast<std::uint32_t>(end - from);
     } else {
-        const std::vector<keywords::FieldSlot> slots = keywords::layout(card, b.format);
+        const std::vector<keywords::FieldSlot> slots = keywords::layout(*card, b.format);
         if (k < slots.size()) start = slots[k].start, width = slots[k].width;
     }
-    const std::string_view field = start < text.size() ? text.substr(start, width) : std::string_view{};
-    mat.density.span = grammar::Span{line->file, line->line, start + 1, start + std::max<std::uint32_t>(width, 1) + 1};
-    const grammar::ValueToken token = grammar::classify_value(field);
+    RawField f;
+    f.text = start < text.size() ? text.substr(start, width) : std::string_view{};
+    f.span = grammar::Span{line->file, line->line, start + 1, start + std::max<std::uint32_t>(width, 1) + 1};
+    f.line = line;
+    return f;
+}
+
+// *SECTION_SHELL ELFORM as written, 0 when absent or not a plain integer.
+long long raw_shell_form(const grammar::RawDeck& deck, const grammar::Block& b) {
+    const std::optional<RawField> f = raw_field(deck, b, "SECID", "ELFORM");
+    if (!f) return 0;
+    const grammar::IntegerValue n = grammar::parse_integer(f->text);
+    return n.status == grammar::NumberStatus::Ok ? n.value : 0;
+}
+
+// RO of a material read from its generated layout: the field named RO on the first data card (MID,
+// RO, ...), in the block's format. Keywords the tables do not know: RO in columns 11-20 (most
+// materials), enough for mass and sound-speed checks but not for SPH119 (has_density stays false).
+Material raw_material(const grammar::RawDeck& deck, const grammar::Block& b, const Id& id, grammar::Span span) {
+    Material mat{id, b.keyword, span, {}, std::nullopt, false};
+    const grammar::CardLine* line = deck.begin_lines(b) + (b.keyword.find("_TITLE") != std::string::npos);
+    if (line >= deck.end_lines(b)) return mat;
+    const std::optional<keywords::KeywordMatch> known = keywords::find_keyword(b.keyword);
+    if (!known || known->schema->cards.empty()) {
+        const std::string_view text = deck.text(*line);
+        grammar::RealValue ro = grammar::parse_real(text.size() > 10 ? text.substr(10, 10) : "");
+        if (ro.status == grammar::NumberStatus::Ok) mat.density = {ro.value, true, span};
+        return mat;
+    }
+    const std::optional<RawField> field = raw_field(deck, b, "MID", "RO");
+    if (!field) return mat;  // a spring, a seatbelt: no density on this layout
+    mat.has_density = true;
+    mat.density.span = field->span;
+    const grammar::ValueToken token = grammar::classify_value(field->text);
     if (token.shape == grammar::ValueShape::Parameter) {  // &rho: its value, when defined (else DK012)
-        const grammar::ParameterMatch found = deck.parameters.find(token.name, line->file, b.parameter_epoch);
+        const grammar::ParameterMatch found = deck.parameters.find(token.name, field->line->file, b.parameter_epoch);
         if (!found.parameter || found.parameter->type == grammar::ParameterType::Character) {
             mat.has_density = false;
             return mat;
@@ -385,7 +397,7 @@ void extract_unknown_definitions(const grammar::RawDeck& deck, Model& m) {
             s.id = id;
             s.keyword = b.keyword;
             s.span = span;
-            if (starts_with(b.keyword, "*SECTION_SHELL")) s.shell_form = raw_second_integer(deck, b);
+            if (starts_with(b.keyword, "*SECTION_SHELL")) s.shell_form = raw_shell_form(deck, b);
             m.sections.push_back(std::move(s));
         } else if (material) {
             m.materials.push_back(raw_material(deck, b, id, span));
