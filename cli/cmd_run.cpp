@@ -31,6 +31,7 @@ struct RunArgs {
     std::optional<double> end_time;
     int threads = 0;
     bool ignore_unsupported = false, quiet = false;
+    double progress_every = 5.0;  // seconds between progress lines off a terminal
     std::vector<std::string> include_paths;
 };
 
@@ -196,7 +197,7 @@ int run_deck(const RunArgs& args) {
         snapshots.write(sim);
     }
     ProgressBar bar("run", !args.quiet && ProgressBar::stderr_is_terminal());
-    ProgressLog log(!args.quiet && !ProgressBar::stderr_is_terminal());
+    ProgressLog log(!args.quiet && !ProgressBar::stderr_is_terminal(), args.progress_every);
     const auto t0 = std::chrono::steady_clock::now();
     sim.run([&](const refsolver::Simulation& s) {
         history.add(s.totals());
@@ -235,6 +236,10 @@ std::function<int()> setup_run(CLI::App& app) {
     app.add_flag("--ignore-unsupported", args->ignore_unsupported,
                  "run even when the deck uses what the solver does not honour (it is left out)");
     app.add_flag("--quiet", args->quiet, "print only the summary and errors, no progress bar");
+    app.add_option("--progress-every", args->progress_every,
+                   "seconds between progress lines when stderr is no terminal (a CI log)")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
     app.add_option("-I,--include-path", args->include_paths, "extra folder searched for *INCLUDE files")
         ->allow_extra_args(false);
     return [args] { return run_deck(*args); };

@@ -13,7 +13,7 @@ ProgressLog::ProgressLog(bool enabled, double every_seconds)
 void ProgressLog::update(std::size_t step, double time, double end_time, double dt, std::size_t particles) {
     if (!enabled_) return;
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    if (elapsed - last_ < every_) return;
+    if (elapsed - last_ < every_ || (last_ == 0.0 && elapsed < every_)) return;
     last_ = elapsed;
     const double fraction = end_time > 0 ? std::min(1.0, time / end_time) : 1.0;
     std::string left = "unknown";
