@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 
 #include "grammar/radioss/cell_names.hpp"
+#include "grammar/radioss/generated_layouts.hpp"
+#include "grammar/radioss/keyword_lookup.hpp"
 
 namespace sphdeck::cli {
 namespace {
@@ -42,7 +44,7 @@ std::string card_notes(const rad::KeywordSpec& keyword, const rad::FormatSpec& f
         return fmt::format("LIST: {} values in all, {} a line, as field {} of the group's first card says; no "
                            "line for 0",
                            card.count, card.fields.size(), card.count);
-    if (card.repeat == rad::Repeat::Once && card.present_if)
+    if (card.repeat == rad::Repeat::Once && (card.present_if || !card.when.empty()))
         return fmt::format("once, only when {}; an absent card takes every default", card.condition);
     if (card.repeat == rad::Repeat::Once) return keyword.engine ? "once" : "once; an absent card takes every default";
     if (card.fields.size() == 1 && card.fields[0].cell == rad::Cell::Line && card.fields[0].name == "text")
@@ -83,7 +85,14 @@ void print_card(const rad::CardSpec& card, int version, bool engine) {
 
 const rad::KeywordSpec* find_radioss_keyword(std::string_view name) {
     if (name.empty() || name.front() != '/') return nullptr;
-    return rad::find_keyword(upper(name));
+    // The hand-written table, unless a generated layout names more of the header (a family's
+    // catch-all such as /PROP does not describe /PROP/SHELL).
+    const std::string header = upper(name);
+    std::size_t hand_segments = 0, generated_segments = 0;
+    const rad::KeywordSpec* hand = rad::find_keyword(header, &hand_segments);
+    const rad::KeywordSpec* made = rad::find_generated(header, &generated_segments);
+    if (made && (!hand || generated_segments > hand_segments)) return made;
+    return hand;
 }
 
 void print_radioss_keyword(const rad::KeywordSpec& keyword) {
@@ -126,27 +135,20 @@ std::vector<std::pair<std::string, std::string>> radioss_list_rows() {
                                        k.decoded ? "" : ", kept as is", k.summary);
         rows.emplace_back(std::move(names), std::move(what));
     }
+    for (const rad::KeywordSpec& k : rad::generated::keywords()) {
+        std::size_t segments = 0;
+        const rad::KeywordSpec* hand = rad::find_keyword(k.name, &segments);
+        if (hand && hand->name == k.name) continue;  // the hand-written table's row says it
+        rows.emplace_back(std::string(k.name), fmt::format("[radioss {}, from the CFG files]",
+                                                           k.engine ? "engine" : "starter"));
+    }
     std::sort(rows.begin(), rows.end());
     return rows;
 }
 
 std::string radioss_suggestion(std::string_view name) {
-    const std::string wanted = upper(name);
-    std::string_view best;
-    std::size_t best_distance = 3;
-    for (const rad::KeywordSpec& k : rad::all_keywords()) {
-        const std::string_view n = k.name;
-        std::vector<std::size_t> prev(n.size() + 1), cur(n.size() + 1);
-        for (std::size_t j = 0; j <= n.size(); ++j) prev[j] = j;
-        for (std::size_t i = 1; i <= wanted.size(); ++i) {
-            cur[0] = i;
-            for (std::size_t j = 1; j <= n.size(); ++j)
-                cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (wanted[i - 1] == n[j - 1] ? 0 : 1)});
-            std::swap(prev, cur);
-        }
-        if (prev[n.size()] < best_distance) best_distance = prev[n.size()], best = n;
-    }
-    return best.empty() ? "" : fmt::format("; did you mean {}?", best);
+    const auto best = rad::suggest_keyword(upper(name));
+    return best ? fmt::format("; did you mean {}?", *best) : "";
 }
 
 }  // namespace sphdeck::cli

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "grammar/radioss/cards.hpp"
+#include "grammar/radioss/keyword_lookup.hpp"
 #include "grammar/radioss/reader.hpp"
 #include "grammar/value.hpp"
 #include "model/radioss_builder.hpp"
@@ -30,40 +31,12 @@ bool is_number(std::string_view s) {
 std::string keyword_name(std::string_view header) {
     std::string name;
     for (std::string_view s : rad::path_segments(header)) {
+        s = trim(s);
         if (is_number(s)) break;
         name += '/';
         name += s;
     }
     return name.empty() ? std::string(header) : name;
-}
-
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-    std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        cur[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j)
-            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
-        std::swap(prev, cur);
-    }
-    return prev[b.size()];
-}
-
-std::optional<std::string_view> similar_keyword(std::string_view name) {
-    std::optional<std::string_view> best;
-    std::size_t best_distance = 3;
-    const auto consider = [&](std::string_view n) {
-        // A length gap is a lower bound of the distance: most names need no distance at all.
-        const std::size_t gap = n.size() > name.size() ? n.size() - name.size() : name.size() - n.size();
-        if (gap >= best_distance) return;
-        const std::size_t d = edit_distance(name, n);
-        if (d < best_distance) best_distance = d, best = n;
-    };
-    for (const rad::KeywordSpec& k : rad::all_keywords()) {
-        consider(k.name);
-        for (std::string_view alias : k.aliases) consider(alias);
-    }
-    return best;
 }
 
 // The header path's segments after the keyword prefix, with their columns.
@@ -107,14 +80,6 @@ public:
             decoder_.set_block(static_cast<std::size_t>(&block - deck_.blocks.data()));
             walk(block);
         }
-        for (const auto& [name, u] : unknown_) {
-            std::string message = fmt::format("unknown keyword {} kept as is", name);
-            if (u.second > 1) message += fmt::format(" ({} blocks)", u.second);
-            diag::Diagnostic d{"DK001", diag::Severity::Info, message, u.first, {}};
-            if (auto similar = similar_keyword(name))
-                d.notes.push_back({grammar::Span{}, fmt::format("did you mean {}?", *similar)});
-            out_.push_back(std::move(d));
-        }
     }
 
     Model finish() { return builder_.finish(); }
@@ -127,6 +92,31 @@ public:
     }
 
 private:
+    // DK001: a header neither the starter's CFG files nor sphdeck's tables know, at its line, with
+    // the closest known name as an unsafe fix.
+    void report_unknown(const grammar::Block& block, bool engine) {
+        const std::string name = keyword_name(block.keyword);
+        auto& u = unknown_[name];
+        if (u.second++ == 0) u.first = block.span;
+        auto cached = suggestions_.find(name);
+        if (cached == suggestions_.end())
+            cached = suggestions_.emplace(name, suggestions_.size() < 64 ? rad::suggest_keyword(name)
+                                                                         : std::nullopt).first;
+        const std::optional<std::string>& better = cached->second;
+        std::string message = fmt::format("unknown keyword {}: {}", name,
+                                          engine ? "the engine stops at a keyword it does not know"
+                                                 : "no keyword of the starter's CFG files has this name");
+        if (better) message += fmt::format("; did you mean {}?", *better);
+        diag::Diagnostic d{"DK001", diag::Severity::Error, std::move(message), block.span, {}};
+        d.notes.push_back({grammar::Span{}, "sphdeck reads the deck without this block: its cards are not checked"});
+        if (better) {
+            grammar::Span at = block.span;
+            at.end_column = at.column + static_cast<std::uint32_t>(name.size());
+            d.fixes.push_back({fmt::format("replace {} with {}", name, *better), false, {{at, *better}}});
+        }
+        out_.push_back(std::move(d));
+    }
+
     // One-file decks: the blocks of a main file before its /END/ENGINE are the engine input.
     void mark_engine_sections() {
         engine_block_.assign(deck_.blocks.size(), false);
@@ -143,13 +133,24 @@ private:
         const std::size_t index = static_cast<std::size_t>(&block - deck_.blocks.data());
         const bool engine =
             (block.span.file < engine_.size() && engine_[block.span.file]) || engine_block_[index];
-        std::size_t prefix = 0;
-        const rad::KeywordSpec* spec = rad::find_keyword(block.keyword, &prefix);
-        if (!spec) {
-            auto& u = unknown_[keyword_name(block.keyword)];
-            if (u.second++ == 0) u.first = block.span;
-            return;
+        const rad::KeywordLookup found = rad::lookup_keyword(block.keyword);
+        std::size_t prefix = found.prefix_segments;
+        const rad::KeywordSpec* spec = found.spec;
+        // The engine reads any header its REDKEY0 knows (the first five characters of the first
+        // segment); the layouts of its keywords are sphdeck's own or none.
+        if (engine && rad::is_engine_key(block.keyword) && (!spec || !spec->engine)) return;
+        if (!found.known && !(spec && spec->engine)) {
+            if (!engine && rad::is_engine_key(block.keyword)) {
+                out_.push_back({"DK001", diag::Severity::Info,
+                                fmt::format("{} is an engine keyword: the starter ignores it; it belongs in the "
+                                            "engine deck <run>_0001.rad",
+                                            keyword_name(block.keyword)),
+                                block.span, {}});
+                return;
+            }
+            report_unknown(block, engine);
         }
+        if (!spec) return;  // known by name, nothing to read (/SUBMODEL, /ENDSUB)
         if (spec->engine != engine) {
             out_.push_back({"DK001", diag::Severity::Info,
                             spec->engine ? fmt::format("{} is an engine keyword: the starter ignores it; it belongs "
@@ -184,10 +185,10 @@ private:
                 ++line;
             }
         }
-        builder_.begin(b);
+        if (!spec->generated) builder_.begin(b);
         if (reading_) reading_->records.push_back({block.keyword, spec->name, b.title, block.span, b.format, {}, 0});
         walk_cards(b, format, line, end);
-        builder_.end(b);
+        if (!spec->generated) builder_.end(b);
     }
 
     void walk_cards(const RadiossBlock& b, const rad::FormatSpec& format, const grammar::CardLine* line,
@@ -204,7 +205,8 @@ private:
             }
             decoder_.decode(*line, cards[next.index], b.version, b.engine, values_, newer, b.spec->trailing_checked);
             sequence.advance(next.index, values_);
-            builder_.card(b, next.index, static_cast<std::uint32_t>(line - deck_.lines.data()), values_);
+            if (!b.spec->generated)
+                builder_.card(b, next.index, static_cast<std::uint32_t>(line - deck_.lines.data()), values_);
             if (reading_) record(next.index < sequence.first_repeated());
         }
     }
@@ -252,6 +254,7 @@ private:
     std::vector<bool> engine_block_;  // per block: before /END/ENGINE in a one-file deck
     RadiossReading* reading_ = nullptr;
     std::map<std::string, std::pair<grammar::Span, std::size_t>> unknown_;
+    std::map<std::string, std::optional<std::string>> suggestions_;  // per unknown name
 };
 
 }  // namespace

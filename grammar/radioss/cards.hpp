@@ -61,6 +61,9 @@ struct CardSpec {
     // A card read once only when this holds (nullptr: always); `condition` says it in words.
     CardCondition present_if = nullptr;
     std::string_view condition = {};
+    // A generated card's condition as data ("Ifail!0&Itype=1", generated::condition_holds);
+    // empty: none. `condition` says the same for `sphdeck keyword`.
+    std::string_view when = {};
 
     const FieldSpec* field(std::string_view name) const;
     std::size_t index(std::string_view name) const;  // fields.size() when absent
@@ -85,6 +88,7 @@ struct KeywordSpec {
     std::string_view family = {};
     std::string_view summary = {};
     std::string_view source = {};            // where the layout comes from (CFG files of the starter)
+    bool generated = false;                  // from generated/radioss_layouts.cpp, not written by hand
     std::vector<FormatSpec> formats = {};    // newest first
 
     // The format a deck of version `version` reads: the newest one not above it (the reader's
