@@ -85,14 +85,12 @@ void print_card(const rad::CardSpec& card, int version, bool engine) {
 
 const rad::KeywordSpec* find_radioss_keyword(std::string_view name) {
     if (name.empty() || name.front() != '/') return nullptr;
-    // The hand-written table, unless a generated layout names more of the header (a family's
-    // catch-all such as /PROP does not describe /PROP/SHELL).
+    // The table the reader checks the cards with: hand-written, or generated where no hand-written
+    // table names the keyword (a family table such as /PROP does not describe /PROP/SHELL).
     const std::string header = upper(name);
-    std::size_t hand_segments = 0, generated_segments = 0;
-    const rad::KeywordSpec* hand = rad::find_keyword(header, &hand_segments);
-    const rad::KeywordSpec* made = rad::find_generated(header, &generated_segments);
-    if (made && (!hand || generated_segments > hand_segments)) return made;
-    return hand;
+    const rad::KeywordLookup found = rad::lookup_keyword(header);
+    if (found.cards) return found.cards;
+    return rad::find_generated(header);
 }
 
 void print_radioss_keyword(const rad::KeywordSpec& keyword) {

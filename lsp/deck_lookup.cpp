@@ -189,7 +189,7 @@ const rad::KeywordSpec* radioss_keyword(const grammar::Block& block, std::size_t
     // The table the reader walks (model/radioss_decoder.cpp): hand-written or generated.
     const rad::KeywordLookup found = rad::lookup_keyword(block.keyword);
     if (prefix) *prefix = found.prefix_segments;
-    return found.spec;
+    return found.cards;
 }
 
 bool radioss_engine_block(const grammar::RawDeck& deck, const grammar::Block& block) {

@@ -179,7 +179,14 @@ void RadiossCardDecoder::read_value(RadiossValue& v, std::string_view field, boo
         std::string_view head = token.substr(0, gap), rest = trim(token.substr(gap));
         std::string_view second = rest.substr(0, rest.find_first_of(" \t"));
         grammar::RealValue a = grammar::parse_real(head), b = grammar::parse_real(second);
-        if (a.status == NumberStatus::Ok && b.status == NumberStatus::Ok) {
+        // Two equal numbers ("0000      .000000000", a zero written across a cell boundary): the
+        // value read is the one meant, whichever it was.
+        const bool same = a.status == NumberStatus::Ok && b.status == NumberStatus::Ok && a.value == b.value &&
+                          trim(rest.substr(second.size())).empty();
+        if (same) {
+            token = head;
+            v.text = head;
+        } else if (a.status == NumberStatus::Ok && b.status == NumberStatus::Ok) {
             report("RAD025", diag::Severity::Error,
                    fmt::format("two numbers in the {}-column field {}: '{}'; the starter keeps {} and drops {}",
                                cell_columns, v.spec->name, shown(token), head, second),

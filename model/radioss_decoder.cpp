@@ -136,11 +136,12 @@ private:
         const rad::KeywordLookup found = rad::lookup_keyword(block.keyword);
         std::size_t prefix = found.prefix_segments;
         const rad::KeywordSpec* spec = found.spec;
+        const rad::KeywordSpec* cards = found.cards ? found.cards : spec;
         // The engine reads any header its REDKEY0 knows (the first five characters of the first
         // segment); the layouts of its keywords are sphdeck's own or none.
         if (engine && rad::is_engine_key(block.keyword) && (!spec || !spec->engine)) return;
         if (!found.known && !(spec && spec->engine)) {
-            if (!engine && rad::is_engine_key(block.keyword)) {
+            if (!engine && rad::is_engine_only_key(block.keyword)) {
                 out_.push_back({"DK001", diag::Severity::Info,
                                 fmt::format("{} is an engine keyword: the starter ignores it; it belongs in the "
                                             "engine deck <run>_0001.rad",
@@ -172,11 +173,11 @@ private:
         b.engine = engine;
         b.version = version_;
         split_arguments(block, prefix, b);
-        const rad::FormatSpec& format = spec->format_for(engine ? rad::latest_version : version_);
+        const rad::FormatSpec& format = cards->format_for(engine ? rad::latest_version : version_);
         b.format = format.since;
         const grammar::CardLine* line = deck_.begin_lines(block);
         const grammar::CardLine* end = deck_.end_lines(block);
-        if (spec->title && !engine) {
+        if (cards->title && !engine) {
             if (rad::is_v4(version_)) {
                 // V4: the title is the rest of the header path (/PROP/TYPE34/7/title).
                 for (std::size_t k = 1; k < b.written.size(); ++k) b.title += (k > 1 ? "/" : "") + b.written[k];
@@ -187,25 +188,28 @@ private:
         }
         if (!spec->generated) builder_.begin(b);
         if (reading_) reading_->records.push_back({block.keyword, spec->name, b.title, block.span, b.format, {}, 0});
-        walk_cards(b, format, line, end);
+        walk_cards(b, *cards, format, line, end);
         if (!spec->generated) builder_.end(b);
     }
 
-    void walk_cards(const RadiossBlock& b, const rad::FormatSpec& format, const grammar::CardLine* line,
-                    const grammar::CardLine* end) {
+    // `table`: the keyword whose cards the lines are (b.spec, or the generated layout of a family
+    // table's keyword); the builder sees the values only when they are b.spec's own.
+    void walk_cards(const RadiossBlock& b, const rad::KeywordSpec& table, const rad::FormatSpec& format,
+                    const grammar::CardLine* line, const grammar::CardLine* end) {
         const auto& cards = format.cards;
         RadiossCardSequence sequence(cards);
-        const std::string newer = newer_format(*b.spec, format);
+        const std::string newer = newer_format(table, format);
+        const bool to_builder = &table == b.spec && !table.generated;
         for (; line != end; ++line) {
             const auto next = sequence.next(deck_.text(*line));
             if (next.step == RadiossCardSequence::Step::Blank) continue;
             if (next.step == RadiossCardSequence::Step::Past) {
-                report_extra(b, format, *line, static_cast<std::size_t>(end - line), newer);
+                report_extra(table, b.version, format, *line, static_cast<std::size_t>(end - line), newer);
                 return;
             }
-            decoder_.decode(*line, cards[next.index], b.version, b.engine, values_, newer, b.spec->trailing_checked);
+            decoder_.decode(*line, cards[next.index], b.version, b.engine, values_, newer, table.trailing_checked);
             sequence.advance(next.index, values_);
-            if (!b.spec->generated)
+            if (to_builder)
                 builder_.card(b, next.index, static_cast<std::uint32_t>(line - deck_.lines.data()), values_);
             if (reading_) record(next.index < sequence.first_repeated());
         }
@@ -234,11 +238,11 @@ private:
         return fmt::format("{} reads more fields from format {}", spec.name, newest.since);
     }
 
-    void report_extra(const RadiossBlock& b, const rad::FormatSpec& format, const grammar::CardLine& line,
-                      std::size_t extra, const std::string& newer) {
-        std::string message = fmt::format("{} takes {} card(s) in format {}; {} more line(s) ignored", b.spec->name,
+    void report_extra(const rad::KeywordSpec& table, int version, const rad::FormatSpec& format,
+                      const grammar::CardLine& line, std::size_t extra, const std::string& newer) {
+        std::string message = fmt::format("{} takes {} card(s) in format {}; {} more line(s) ignored", table.name,
                                           format.cards.size(), format.since, extra);
-        if (!newer.empty()) message += fmt::format(" ({}; the deck's Invers is {})", newer, b.version);
+        if (!newer.empty()) message += fmt::format(" ({}; the deck's Invers is {})", newer, version);
         out_.push_back({"DK009", diag::Severity::Warning, std::move(message),
                         grammar::Span{line.file, line.line, 1, std::max<std::uint32_t>(deck_.length(line), 1) + 1}, {}});
     }

@@ -51,6 +51,13 @@ std::vector<Straddle> straddles(std::string_view text, const grammar::radioss::C
         const bool packed = s == positions[i].start ||
                             (i + 1 < positions.size() && e == std::size_t{positions[i + 1].start} + positions[i + 1].width);
         if (packed || grammar::parse_real(text.substr(s, e - s)).status != grammar::NumberStatus::Ok) continue;
+        // A zero across the boundary ('.000000000' read as '.00000' and '0000') changes no value.
+        const grammar::RealValue whole = grammar::parse_real(text.substr(s, e - s));
+        const grammar::RealValue kept = grammar::parse_real(text.substr(s, b - s));
+        const grammar::RealValue lost = grammar::parse_real(text.substr(b, e - b));
+        if (whole.value == 0.0 && kept.status == grammar::NumberStatus::Ok && kept.value == 0.0 &&
+            lost.status == grammar::NumberStatus::Ok && lost.value == 0.0)
+            continue;
         out.push_back({i, s, b, e});
     }
     return out;

@@ -483,7 +483,8 @@ def header_names(stmt, compared, user_names):
     variables = [a[0] if len(a) == 1 else '?' for a in stmt.args[1:]]
     if not fmt.startswith('/'):
         return []
-    names, k, has_id = [''], 0, False
+    names, k, has_id, shared = [''], 0, False, False
+    wildcard = []
     segments = fmt[1:].rstrip('/').split('/')
     if '' in segments:
         return []
@@ -491,7 +492,7 @@ def header_names(stmt, compared, user_names):
         m = re.fullmatch(r'%(-?)(\d*)(s|d)', segment)
         if not m:
             if '%' in segment:
-                break
+                return []  # a prefix match inside a segment (/MAT/PLAS_%5s): other HEADERs name it
             names = [n + '/' + segment for n in names]
             continue
         var = variables[k] if k < len(variables) else '?'
@@ -501,14 +502,26 @@ def header_names(stmt, compared, user_names):
             break
         if m.group(2):  # a prefix match: the names the hierarchy gives the file
             if not user_names:
-                break
+                return []  # the export branch's HEADERs name the keyword
             names = [n + '/' + u for n in names for u in sorted(user_names)]
             break
         values = sorted(v for v in compared.get(var, ()) if re.fullmatch(r'[A-Z0-9_\-+]+', v))
+        if not values and user_names:
+            # The names the hierarchy gives the file, below this header's literal path
+            # (USER_NAMES of /FAIL/JOHNSON: FAIL_JOHNSON, JOHNSON).
+            path = '_'.join(n for n in names[0].split('/') if n)
+            values = sorted({u[len(path) + 1:] if u.startswith(path + '_') else u for u in user_names
+                             if '_' not in (u[len(path) + 1:] if u.startswith(path + '_') else u)})
+            values = [v for v in values if v]
         if not values:
+            wildcard.append(True)
+            # The deck's own segment: when literal segments follow it, several files share the
+            # name (/PARAMETER/%s/REAL/%d), so the name says nothing of the layout.
+            later = segments[segments.index(segment) + 1:]
+            shared = any('%' not in later_segment for later_segment in later)
             break
         names = [n + '/' + v for n in names for v in values]
-    return [(n, has_id) for n in names if n]
+    return [(n, has_id, shared, bool(wildcard)) for n in names if n]
 
 
 def hierarchy_user_names(cfg):
@@ -523,13 +536,13 @@ def hierarchy_user_names(cfg):
                              text, re.S):
             for u in m.group(2).split(','):
                 u = u.strip()
-                if re.fullmatch(r'[A-Z0-9_\-]+', u):
+                if re.fullmatch(r'[A-Z0-9_\-+]+', u):
                     out[m.group(1)].add(u)
         for m in re.finditer(r'USER_NAMES\s*=\s*\(([^)]*)\)\s*;(?:(?!HIERARCHY|USER_NAMES).)*?FILE\s*=\s*"([^"]+)"',
                              text, re.S):
             for u in m.group(1).split(','):
                 u = u.strip()
-                if re.fullmatch(r'[A-Z0-9_\-]+', u):
+                if re.fullmatch(r'[A-Z0-9_\-+]+', u):
                     out[m.group(2)].add(u)
     return out
 
@@ -577,10 +590,12 @@ def main():
                     if not lin.cards or lin.subobjects:
                         lin.stop()
                     known = sum(1 for c in lin.cards if c[0] != 'x')
-                    for name, has_id in names:
+                    for name, has_id, shared, wild in names:
                         first = name.split('/')[1]
                         engine = engine_first_segment(first) and (engine_file or f.startswith(('anim_', 'state_')))
-                        e = table.setdefault(name, {'engine': engine, 'id': False, 'formats': {}})
+                        e = table.setdefault(name, {'engine': engine, 'id': False, 'formats': {}, 'shared': False})
+                        e['shared'] = e['shared'] or shared
+                        e['wild'] = e.get('wild', False) or wild
                         e['id'] = e['id'] or has_id
                         e['engine'] = e['engine'] and engine
                         old = e['formats'].get(version)
@@ -598,9 +613,11 @@ def main():
     out.write('namespace {\nusing namespace std::string_view_literals;\nconstexpr LayoutEntry kLayouts[] = {\n')
     for name in sorted(table):
         e = table[name]
-        lines = ['k' + ('e' if e['engine'] else '') + ('i' if e['id'] else '')]
+        lines = ['k' + ('e' if e['engine'] else '') + ('i' if e['id'] else '') + ('w' if e.get('wild') else '')]
         for version in sorted(e['formats'], reverse=True):
             _, title, cards = e['formats'][version]
+            if e['shared']:
+                title, cards = False, [('x', '', [])]
             lines.append(f"v{version}|{'t' if title else ''}|" + ';'.join(encode_card(c) for c in cards))
         body = '\\n'.join(lines).replace('"', '\\"')
         out.write(f'    {{"{name}"sv, "{body}"sv}},\n')

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <string>
+#include <vector>
 
 #include "grammar/radioss/generated_layouts.hpp"
 #include "grammar/fields.hpp"
@@ -48,6 +50,14 @@ bool has_generated_below(std::string_view prefix) {
 
 KeywordLookup lookup_raw(std::string_view header);
 
+// A table whose every format keeps every line as text (a family's catch-all: /PROP, /GRNOD).
+bool keeps_text_only(const KeywordSpec& k) {
+    for (const FormatSpec& f : k.formats)
+        for (const CardSpec& c : f.cards)
+            if (c.fields.size() != 1 || c.fields[0].cell != Cell::Line || c.repeat != Repeat::Repeated) return false;
+    return true;
+}
+
 // The starter's reader takes the longest name that begins the header, character by character,
 // once the first segment is whole (SolverInputInfo::GetKeywordSolverInfoFromHeaderLine in
 // OpenRadioss reader/source/cfgio): /TH/SHELL reads as /TH/SHEL, /TH/BRICK as /TH/BRIC.
@@ -93,6 +103,7 @@ KeywordLookup lookup_keyword(std::string_view header) {
         out = lookup_raw(plain);
         const KeywordLookup raw = lookup_raw(header);
         out.spec = raw.spec;
+        out.cards = raw.cards;
         out.prefix_segments = raw.prefix_segments;
         return out;
     }
@@ -129,9 +140,33 @@ KeywordLookup lookup_raw(std::string_view header) {
         out.spec = made;
         out.prefix_segments = generated_segments;
     }
+    out.cards = out.spec;
+    if (out.spec == hand && hand && made && generated_segments > hand_segments && keeps_text_only(*hand))
+        out.cards = made;
     return out;
 }
 }  // namespace
+
+bool is_engine_only_key(std::string_view header) {
+    if (!is_engine_key(header)) return false;
+    static const std::vector<std::string> starter_firsts = [] {
+        std::vector<std::string> out;
+        const auto first = [](std::string_view name) {
+            const auto segments = path_segments(name);
+            return segments.empty() ? std::string() : std::string(segments.front());
+        };
+        for (const KeywordSpec& k : generated::keywords())
+            if (!k.engine) out.push_back(first(k.name));
+        for (const KeywordSpec& k : all_keywords())
+            if (!k.engine) out.push_back(first(k.name));
+        std::sort(out.begin(), out.end());
+        out.erase(std::unique(out.begin(), out.end()), out.end());
+        return out;
+    }();
+    const auto segments = path_segments(header);
+    return !segments.empty() &&
+           !std::binary_search(starter_firsts.begin(), starter_firsts.end(), std::string(segments.front()));
+}
 
 bool is_engine_key(std::string_view header) {
     if (header.size() < 2 || header[0] != '/') return false;
