@@ -179,10 +179,10 @@ void RadiossCardDecoder::read_value(RadiossValue& v, std::string_view field, boo
         std::string_view head = token.substr(0, gap), rest = trim(token.substr(gap));
         std::string_view second = rest.substr(0, rest.find_first_of(" \t"));
         grammar::RealValue a = grammar::parse_real(head), b = grammar::parse_real(second);
-        // Two equal numbers ("0000      .000000000", a zero written across a cell boundary): the
-        // value read is the one meant, whichever it was.
-        const bool same = a.status == NumberStatus::Ok && b.status == NumberStatus::Ok && a.value == b.value &&
-                          trim(rest.substr(second.size())).empty();
+        // The tail of a zero written across the cell's start ("0000      .000000000" after
+        // ".00000"; model/radioss_straddles.cpp) and an equal number: the value read is the one meant.
+        const bool same = offset == 0 && a.status == NumberStatus::Ok && b.status == NumberStatus::Ok &&
+                          a.value == 0.0 && b.value == 0.0 && trim(rest.substr(second.size())).empty();
         if (same) {
             token = head;
             v.text = head;
