@@ -128,11 +128,36 @@ private:
         }
     }
 
+    // The ids a starter header defines for the REF rules of generated cards: the integer segments
+    // after the name, by the kind of id its family is.
+    void note_header_ids(const grammar::Block& block) {
+        const auto segments = rad::path_segments(block.keyword);
+        if (segments.empty()) return;
+        const std::string_view first = trim(segments.front());
+        RadiossFacts& facts = builder_.facts();
+        if (first == "SUBMODEL") facts.submodels = true;
+        const char kind = first.rfind("FUNCT", 0) == 0 || first.rfind("TABLE", 0) == 0 || first == "MOVE_FUNCT" ? 'F'
+                          : first == "SENSOR"                                  ? 'S'
+                          : first == "SKEW" || first == "FRAME"                ? 'Y'
+                          : first == "GRNOD"                                   ? 'G'
+                          : first == "SURF"                                    ? 'U'
+                          : first == "MAT"                                     ? 'M'
+                          : first == "PROP"                                    ? 'P'
+                          : first == "PART"                                    ? 'C'
+                                                                               : 0;
+        if (!kind) return;
+        for (std::size_t k = 1; k < segments.size(); ++k) {
+            const grammar::IntegerValue v = grammar::parse_integer(trim(segments[k]));
+            if (v.status == grammar::NumberStatus::Ok) facts.header_ids[kind].insert(v.value);
+        }
+    }
+
     void walk(const grammar::Block& block) {
         if (block.keyword == "/END" || block.keyword == "/END/ENGINE") return;
         const std::size_t index = static_cast<std::size_t>(&block - deck_.blocks.data());
         const bool engine =
             (block.span.file < engine_.size() && engine_[block.span.file]) || engine_block_[index];
+        if (!engine) note_header_ids(block);
         const rad::KeywordLookup found = rad::lookup_keyword(block.keyword);
         std::size_t prefix = found.prefix_segments;
         const rad::KeywordSpec* spec = found.spec;
@@ -200,6 +225,9 @@ private:
         RadiossCardSequence sequence(cards);
         const std::string newer = newer_format(table, format);
         const bool to_builder = &table == b.spec && !table.generated;
+        // A generated layout's older formats often end before columns decks of that version still
+        // fill, silently for the starter: their trailing text is reported past the line's width only.
+        const std::uint32_t quiet_until = table.generated && !newer.empty() ? rad::line_width(b.version) : 0;
         for (; line != end; ++line) {
             const auto next = sequence.next(deck_.text(*line));
             if (next.step == RadiossCardSequence::Step::Blank) continue;
@@ -207,12 +235,25 @@ private:
                 report_extra(table, b.version, format, *line, static_cast<std::size_t>(end - line), newer);
                 return;
             }
-            decoder_.decode(*line, cards[next.index], b.version, b.engine, values_, newer, table.trailing_checked);
+            decoder_.set_shift_check(table.generated && cards[next.index].repeat == rad::Repeat::Once);
+            decoder_.decode(*line, cards[next.index], b.version, b.engine, values_, newer, table.trailing_checked,
+                            quiet_until);
+            decoder_.set_shift_check(false);
             sequence.advance(next.index, values_);
+            if (!b.engine) note_id_uses(table);
             if (to_builder)
                 builder_.card(b, next.index, static_cast<std::uint32_t>(line - deck_.lines.data()), values_);
             if (reading_) record(next.index < sequence.first_repeated());
         }
+    }
+
+    // Ids the cells of a generated card name (FieldSpec::link), for the REF rules; 0 and negative
+    // values name nothing.
+    void note_id_uses(const rad::KeywordSpec& table) {
+        for (const RadiossValue& v : values_)
+            if (v.spec && v.spec->link && v.valid && v.explicit_value && v.number > 0)
+                builder_.facts().id_uses.push_back({v.spec->link, static_cast<long long>(v.number), v.span,
+                                                    std::string(v.spec->name), std::string(table.name)});
     }
 
     void record(bool single_card) {

@@ -138,3 +138,33 @@ TEST_CASE("radioss generated: sphdeck keyword finds a generated layout where no 
     CHECK(rad::lookup_keyword("/PROP/SHELL/3").spec->name == "/PROP");
     CHECK(rad::lookup_keyword("/PROP/SHELL/3").known);
 }
+
+TEST_CASE("radioss generated: ids the CFG marks as references are followed (REF008, REF009)") {
+    const std::string nodes = "/NODE\n" + i10("1") + "                 0.0                 0.0                 0.0\n";
+    const std::string wall = "/RWALL/PLANE/1\nwall\n" + i10("0") + i10("0") + i10("5") + i10("99") + "\n" +
+                             std::string(20, ' ') + "\n" + std::string(19, ' ') + "0\n" + std::string(19, ' ') + "1\n";
+    auto r = check(deck(nodes + "/GRNOD/NODE/5\nnodes\n" + i10("1") + "\n" + wall));
+    REQUIRE(count_code(r.diagnostics, "REF008") == 1);
+    const diag::Diagnostic* d = find_code(r.diagnostics, "REF008");
+    CHECK(d->message.find("excludeNodeSet_ID 99 of /RWALL/PLANE") != std::string::npos);
+    CHECK(d->span.line == 12);
+    // Defined: silent; a //SUBMODEL offsets ids, so nothing is judged.
+    auto ok = check(deck(nodes + "/GRNOD/NODE/5\nnodes\n" + i10("1") + "\n/GRNOD/NODE/99\nmore\n" + i10("1") + "\n" + wall));
+    CHECK(count_code(ok.diagnostics, "REF008") == 0);
+    auto sub = check(deck(nodes + "//SUBMODEL/1\nsub\n" + wall + "//ENDSUB\n"));
+    CHECK(count_code(sub.diagnostics, "REF008") == 0);
+}
+
+TEST_CASE("radioss generated: a generated card's line shifted under its # header is DK029") {
+    // /PROP/SHELL card 3 (format 2018) one column right: every value read in the next cell.
+    const std::string prop = "/PROP/SHELL/2\nShell\n" + i10("4") + i10("4") + "\n" + std::string(20, ' ') + "\n" +
+                             "#        N   Istrain               Thick              Ashear              Ithick     Iplas\n" +
+                             " " + i10("1") + i10("1") + std::string(19, ' ') + "3" + std::string(19, ' ') + "0" +
+                             std::string(19, ' ') + "1" + i10("0") + "\n";
+    auto r = check(deck(prop, 2019));
+    const diag::Diagnostic* d = find_code(r.diagnostics, "DK029");
+    REQUIRE(d);
+    CHECK(d->span.line == 10);
+    REQUIRE(d->fixes.size() == 1);
+    CHECK(d->fixes[0].safe);
+}

@@ -34,6 +34,10 @@ struct FieldSpec {
     // What a blank or 0 means and which values the starter takes, as its reader decides them
     // (shown by `sphdeck keyword`; the decoding itself lives in model/).
     std::string_view note = {};
+    // The kind of id the cell names, from the CFG's ATTRIBUTES (generated layouts only): 'F' a
+    // function or table, 'S' a sensor, 'Y' a skew or frame, 'G' a node group, 'U' a surface, 'M' a
+    // material, 'P' a property, 'C' a part; 0 none.
+    char link = 0;
 };
 
 enum class Repeat : std::uint8_t {

@@ -35,6 +35,7 @@ FieldSpec field_of(std::string_view text) {
     if (parts.size() < 3) return {"", Cell::Skip, 10};
     f.name = parts[0];
     f.width = static_cast<std::uint32_t>(to_int(parts[2]));
+    if (parts.size() > 3 && !parts[3].empty()) f.link = parts[3][0];
     switch (parts[1].empty() ? 'B' : parts[1][0]) {
         case 'I': f.cell = Cell::Int; break;
         case 'R': f.cell = Cell::Real; break;
@@ -91,9 +92,9 @@ KeywordSpec keyword_of(const LayoutEntry& e) {
     k.generated = true;
     k.source = "CFG files of the OpenRadioss starter (grammar/radioss/generated/radioss_layouts.cpp)";
     k.summary = "generated from the starter's CFG files";
-    // The CFG formats of older versions often end before columns decks of that version still fill
-    // (the starter reads them silently): text past the last field is not reported.
-    k.trailing_checked = false;
+    // Text past a card's last field is reported in the newest format only (model/radioss_decoder.cpp):
+    // the CFG formats of older versions often end before columns decks of that version still fill.
+    k.trailing_checked = true;
     const auto lines = split(e.body, '\n');
     k.engine = !lines.empty() && lines[0].find('e') != std::string_view::npos;
     std::vector<bool> titles;
