@@ -38,6 +38,21 @@ int columns_version(const rad::KeywordSpec& keyword, std::size_t k) {
     return k > 0 && keyword.formats[k - 1].since <= 51 ? 44 : 51;
 }
 
+// What a generated cell's id names (FieldSpec::link).
+std::string link_note(char link) {
+    switch (link) {
+        case 'F': return "id of a /FUNCT or /TABLE";
+        case 'S': return "id of a /SENSOR";
+        case 'Y': return "id of a /SKEW or /FRAME";
+        case 'G': return "id of a /GRNOD";
+        case 'U': return "id of a /SURF";
+        case 'M': return "id of a /MAT";
+        case 'P': return "id of a /PROP";
+        case 'C': return "id of a /PART";
+    }
+    return {};
+}
+
 std::string card_notes(const rad::KeywordSpec& keyword, const rad::FormatSpec& format, std::size_t i) {
     const rad::CardSpec& card = format.cards[i];
     if (!card.count.empty())
@@ -67,7 +82,7 @@ void print_card(const rad::CardSpec& card, int version, bool engine) {
                               : to_end ? fmt::format("{}-", cells[i].start + 1)
                                        : fmt::format("{}-{}", cells[i].start + 1, cells[i].start + cells[i].width);
         rows.push_back({std::move(columns), f.name.empty() ? "-" : std::string(f.name), std::string(rad::cell_kind_name(f.cell)),
-                        std::string(f.note)});
+                        f.link ? link_note(f.link) : std::string(f.note)});
     }
     if (engine) rows[0][0] = "value";
     std::array<std::size_t, 3> width{};
