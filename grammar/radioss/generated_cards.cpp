@@ -1,7 +1,10 @@
 // Turns the generated CFG layouts (generated/radioss_layouts.cpp) into KeywordSpecs, once: every
 // name is known, and the cards the generator followed are checked; the rest of a block ('x') is
 // kept as text, unchecked.
+#include <algorithm>
 #include <charconv>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -130,6 +133,24 @@ bool compare(double value, std::string_view op, double number) {
 }
 
 }  // namespace
+
+bool is_engine_entry(const LayoutEntry& entry) {
+    const std::string_view flags = entry.body.substr(0, entry.body.find('\n'));
+    return flags.find('e') != std::string_view::npos;
+}
+
+const KeywordSpec* keyword_named(std::string_view name) {
+    const auto all = layouts();
+    auto it = std::lower_bound(all.begin(), all.end(), name,
+                               [](const LayoutEntry& e, std::string_view n) { return e.name < n; });
+    if (it == all.end() || it->name != name) return nullptr;
+    static std::mutex guard;
+    static std::vector<std::unique_ptr<KeywordSpec>> built(all.size());
+    const std::lock_guard<std::mutex> lock(guard);
+    auto& slot = built[static_cast<std::size_t>(it - all.begin())];
+    if (!slot) slot = std::make_unique<KeywordSpec>(keyword_of(*it));
+    return slot.get();
+}
 
 std::span<const KeywordSpec> keywords() {
     static const std::vector<KeywordSpec> all = [] {

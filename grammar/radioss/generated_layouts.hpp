@@ -19,10 +19,17 @@ struct LayoutEntry {
 // Every generated entry, sorted by name.
 std::span<const LayoutEntry> layouts();
 
-// Every generated keyword as a KeywordSpec (sorted by name; `source` says "CFG"): formats newest
+// Every generated keyword as a KeywordSpec (sorted by name; `generated` set): formats newest
 // first, each ending in an unchecked card where the generator could not follow the CFG, and an
-// unchecked format below the oldest one (deck versions no CFG format reads).
+// unchecked format below the oldest one (deck versions no CFG format reads). Builds them all.
 std::span<const KeywordSpec> keywords();
+
+// The generated keyword of exactly this name, built at its first use only (a check reads a few
+// dozen of the 1,629); nullptr when no entry has the name.
+const KeywordSpec* keyword_named(std::string_view name);
+
+// Whether an entry is an engine keyword (its flags line), without building it.
+bool is_engine_entry(const LayoutEntry& entry);
 
 // Whether a generated card read once is present, by its condition ("Ifail!0&Itype=1": fields of
 // earlier cards compared with numbers); true for a card without one.

@@ -32,19 +32,14 @@ std::size_t count_segments(std::string_view prefix) {
     return static_cast<std::size_t>(std::count(prefix.begin(), prefix.end(), '/'));
 }
 
-const KeywordSpec* generated_named(std::string_view name) {
-    const auto all = generated::keywords();
-    auto it = std::lower_bound(all.begin(), all.end(), name,
-                               [](const KeywordSpec& k, std::string_view n) { return k.name < n; });
-    return it != all.end() && it->name == name ? &*it : nullptr;
-}
+const KeywordSpec* generated_named(std::string_view name) { return generated::keyword_named(name); }
 
 // A generated name that starts with `prefix` + '/': the hand-written `prefix` is then a family.
 bool has_generated_below(std::string_view prefix) {
     const std::string below = std::string(prefix) + '/';
-    const auto all = generated::keywords();
+    const auto all = generated::layouts();
     auto it = std::lower_bound(all.begin(), all.end(), std::string_view(below),
-                               [](const KeywordSpec& k, std::string_view n) { return k.name < n; });
+                               [](const generated::LayoutEntry& k, std::string_view n) { return k.name < n; });
     return it != all.end() && it->name.substr(0, below.size()) == below;
 }
 
@@ -155,8 +150,8 @@ bool is_engine_only_key(std::string_view header) {
             const auto segments = path_segments(name);
             return segments.empty() ? std::string() : std::string(segments.front());
         };
-        for (const KeywordSpec& k : generated::keywords())
-            if (!k.engine) out.push_back(first(k.name));
+        for (const generated::LayoutEntry& k : generated::layouts())
+            if (!generated::is_engine_entry(k)) out.push_back(first(k.name));
         for (const KeywordSpec& k : all_keywords())
             if (!k.engine) out.push_back(first(k.name));
         std::sort(out.begin(), out.end());
@@ -180,7 +175,7 @@ bool is_engine_key(std::string_view header) {
 std::optional<std::string> suggest_keyword(std::string_view name) {
     static const std::vector<std::string> names = [] {
         std::vector<std::string> out;
-        for (const KeywordSpec& k : generated::keywords()) out.emplace_back(k.name);
+        for (const generated::LayoutEntry& k : generated::layouts()) out.emplace_back(k.name);
         for (const KeywordSpec& k : all_keywords()) {
             if (!has_generated_below(k.name) || generated_named(k.name)) out.emplace_back(k.name);
             for (std::string_view alias : k.aliases) out.emplace_back(alias);
