@@ -7,6 +7,7 @@
 #include "grammar/fields.hpp"
 #include "grammar/value.hpp"
 #include "model/card_decoder.hpp"  // the integer range both decoders enforce
+#include "model/decimal_comma.hpp"
 #include "model/radioss_parameters.hpp"
 #include "model/radioss_straddles.hpp"
 
@@ -124,11 +125,29 @@ void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const gramm
         if (v.spec->cell == Cell::Skip || v.spec->cell == Cell::Skip20) continue;
         read_value(v, fields_[i].text, !cut.free_format);
     }
+    if (cut.free_format && !text_card) check_decimal_comma(line, text, values);
     if (!text_card && !cut.free_format && !cut.has_tab &&
         (out_.size() > found_before || glued_across_cells(text, positions)))
         diagnose_radioss_line(line, text, card, positions,
                               block_ < deck_.blocks.size() ? std::string_view(deck_.blocks[block_].keyword) : "its card",
                               out_, found_before);
+}
+
+// `  1,0E-6` for `  1.0E-6`: the starter reads a line with a comma as free format, the number cut in
+// two (the same mistake as in LS-DYNA, model/decimal_comma.hpp).
+void RadiossCardDecoder::check_decimal_comma(const grammar::CardLine& line, std::string_view text,
+                                             const std::vector<RadiossValue>& values) {
+    const auto comma = find_decimal_comma(text);
+    if (!comma) return;
+    std::string reading;
+    std::size_t shown_fields = 0;
+    for (const RadiossValue& v : values) {
+        if (shown_fields == 4) break;
+        if (!v.explicit_value || !v.spec || !numeric(v.spec->cell)) continue;
+        reading += fmt::format("{}{} {}", reading.empty() ? "" : ", ", v.spec->name, shown(v.text));
+        ++shown_fields;
+    }
+    out_.push_back(decimal_comma_finding(*comma, line, "the starter", reading));
 }
 
 // Engine data lines are read by Fortran list-directed input: tokens separated by blanks or commas.

@@ -48,6 +48,8 @@ private:
     void decode_tokens(const grammar::CardLine& line, const grammar::radioss::CardSpec& card,
                        std::vector<RadiossValue>& values);
     void read_value(RadiossValue& v, std::string_view field, bool fixed);
+    void check_decimal_comma(const grammar::CardLine& line, std::string_view text,
+                             const std::vector<RadiossValue>& values);
     void report(const char* code, diag::Severity s, std::string message, grammar::Span span);
 
     // Column positions of a card in a version, computed once: decoding runs per line.
