@@ -10,6 +10,7 @@
 #include "model/decimal_comma.hpp"
 #include "model/radioss_parameters.hpp"
 #include "model/radioss_straddles.hpp"
+#include "model/shift_diagnosis.hpp"
 
 namespace sphdeck::model {
 
@@ -126,11 +127,14 @@ void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const gramm
         read_value(v, fields_[i].text, !cut.free_format);
     }
     if (cut.free_format && !text_card) check_decimal_comma(line, text, values);
-    if (!text_card && !cut.free_format && !cut.has_tab &&
-        (out_.size() > found_before || glued_across_cells(text, positions)))
-        diagnose_radioss_line(line, text, card, positions,
-                              block_ < deck_.blocks.size() ? std::string_view(deck_.blocks[block_].keyword) : "its card",
-                              out_, found_before);
+    if (!text_card && !cut.free_format && !cut.has_tab) {
+        const std::string_view header = header_above(deck_, line, "#");
+        if (out_.size() > found_before || glued_across_cells(text, positions) || !header.empty())
+            diagnose_radioss_line(
+                line, text, card, positions,
+                block_ < deck_.blocks.size() ? std::string_view(deck_.blocks[block_].keyword) : "its card", header,
+                out_, found_before);
+    }
 }
 
 // `  1,0E-6` for `  1.0E-6`: the starter reads a line with a comma as free format, the number cut in

@@ -104,12 +104,18 @@ void fold_and_add(std::vector<diag::Diagnostic>& out, std::size_t from, diag::Di
 
 void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
                            const grammar::radioss::CardSpec& card, std::span<const grammar::FixedField> positions,
-                           std::string_view keyword, std::vector<diag::Diagnostic>& out, std::size_t from) {
+                           std::string_view keyword, std::string_view header, std::vector<diag::Diagnostic>& out,
+                           std::size_t from) {
     auto glued = straddles(text, card, positions);
-    if (glued.empty() && out.size() == from) return;
+    const bool suspect = !glued.empty() || out.size() > from;
+    if (!suspect && header.empty()) return;
     std::vector<FieldType> types;
     for (const auto& f : card.fields) types.push_back(type_of(f.cell));
-    if (auto shift = grammar::find_shift(text, {}, positions, types)) {
+    auto shift = grammar::find_shift(text, header, positions, types);
+    // On the header's word alone, only a shift that changes what is read: a value written a few columns
+    // inside its cell is read the same.
+    if (shift && !suspect && !shift->changes_reading) return;
+    if (shift) {
         const int n = std::abs(shift->columns);
         diag::Diagnostic d{"DK029", shift->changes_reading ? diag::Severity::Error : diag::Severity::Warning,
                            fmt::format("line shifted {} column{} {} of the cells of {}", n, n == 1 ? "" : "s",
@@ -118,6 +124,8 @@ void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
                                          static_cast<std::uint32_t>(text.find_first_not_of(' ') + 1),
                                          static_cast<std::uint32_t>(text.size() + 1)},
                            {}};
+        if (shift->from_header)
+            d.notes.push_back({grammar::Span{}, "the `#` comment above names the cells at their columns"});
         d.fixes.push_back(diag::Fix{fmt::format("move the values {} column{} {} into their cells", n,
                                                 n == 1 ? "" : "s", shift->columns > 0 ? "left" : "right"),
                                     true,

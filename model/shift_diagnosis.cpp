@@ -167,7 +167,7 @@ std::optional<diag::Diagnostic> wrong_widths(const grammar::RawDeck& deck, const
 
 }  // namespace
 
-std::string_view header_above(const grammar::RawDeck& deck, const grammar::CardLine& line) {
+std::string_view header_above(const grammar::RawDeck& deck, const grammar::CardLine& line, std::string_view marker) {
     const std::string_view file = deck.sources.file(line.file).text;
     if (line.offset < 3 || line.offset > file.size() || file[line.offset - 1] != '\n') return {};
     std::size_t end = line.offset - 1;  // the '\n' ending the line above
@@ -177,7 +177,7 @@ std::string_view header_above(const grammar::RawDeck& deck, const grammar::CardL
     if (begin > 0 && file[begin - 1] != '\n') return {};  // longer than any header
     if (end > begin && file[end - 1] == '\r') --end;
     const std::string_view above = file.substr(begin, end - begin);
-    return above.size() >= 2 && above[0] == '$' && above[1] == '#' ? above : std::string_view{};
+    return above.substr(0, marker.size()) == marker ? above : std::string_view{};
 }
 
 bool follows_from_shift(std::string_view code) {

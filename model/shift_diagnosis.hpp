@@ -23,8 +23,10 @@ struct SuspectLine {
 // At most this many lines of a block are looked at.
 inline constexpr std::size_t max_suspect_lines = 64;
 
-// The `$#` comment line right above `line` (LS-PrePost's and pydyna's field names), or empty.
-std::string_view header_above(const grammar::RawDeck& deck, const grammar::CardLine& line);
+// The comment line right above `line` that starts with `marker`, or empty: `$#` in LS-DYNA (LS-PrePost's
+// and pydyna's field names), `#` in OpenRadioss (HyperMesh's and the QA decks' cell names).
+std::string_view header_above(const grammar::RawDeck& deck, const grammar::CardLine& line,
+                              std::string_view marker = "$#");
 
 // Diagnoses `block` from its suspect lines; its findings are out[from, end), and stay there unless
 // folded into a cause.
