@@ -26,9 +26,10 @@ const std::map<std::string, std::set<std::string>> kAllowed = {
     {"lint", {"preproc", "model", "grammar", "diag"}},
     {"refsolver", {"preproc", "model", "grammar", "diag"}},
     {"engine", {"lint", "preproc", "model", "grammar", "diag"}},
-    {"lsp", {"engine", "lint", "preproc", "model", "grammar", "diag"}},
+    {"edit", {"engine", "lint", "preproc", "model", "grammar", "diag"}},
+    {"lsp", {"edit", "engine", "lint", "preproc", "model", "grammar", "diag"}},
     {"verify", {"engine", "refsolver", "lint", "preproc", "model", "grammar", "diag", "io"}},
-    {"cli", {"lsp", "verify", "engine", "refsolver", "lint", "preproc", "model", "grammar", "diag", "io"}},
+    {"cli", {"lsp", "edit", "verify", "engine", "refsolver", "lint", "preproc", "model", "grammar", "diag", "io"}},
 };
 
 // The narrow seams: (part, included header) pairs allowed although the part is not, and single
