@@ -103,6 +103,11 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
     line_text_ = text;
     grammar::CutReport cut = grammar::cut_fields(text, line, positions_, layout.significant, fields_, !layout.text_card);
     glued_ = !cut.free_format && !layout.text_card && grammar::may_straddle(text, positions_);
+    const std::size_t fields_end = positions_.empty() ? 0 : positions_.back().start + positions_.back().width;
+    past_fields_ = !cut.free_format && !layout.text_card && layout.significant > fields_end &&
+                   text.size() > fields_end &&
+                   text.substr(fields_end, layout.significant - fields_end).find_first_not_of(" \r") !=
+                       std::string_view::npos;
 
     if (cut.has_tab) {
         std::size_t tab = text.find('\t');

@@ -98,7 +98,8 @@ public:
             const CardSpec& card = *cards[next];
             const std::size_t found_before = out_.size();
             decoder_.decode(block, *l, card, values_);
-            note_suspect(block, *l, card, out_.size() > found_before || decoder_.glued());
+            note_suspect(block, *l, card,
+                         out_.size() > found_before || decoder_.glued() || decoder_.text_past_fields());
             std::optional<diag::Diagnostic> refused;
             if (particles) refused = take_range(values_);
             if (card.repeat != CardRepeat::Repeated) remember(values_);  // conditions look at header cards
