@@ -9,7 +9,7 @@ keeps the first few candidates whose mistake is real.
 """
 import re
 
-from decks import bulk_grid, grid_fields, is_number_text, tokens, SET_LIST_GRID, DYNA_GRIDS
+from decks import bulk_grid, grid_fields, grid_reading, is_number_text, tokens, SET_LIST_GRID, DYNA_GRIDS
 
 
 class Plant:
@@ -216,7 +216,7 @@ def width_8(host, rng):
         if ok and data:
             # The block's first data line (a set's SID card, not rewritten) or the first rewritten line
             # whose reading changes (an *ELEMENT_SPH line 8 wide reads the same until MASS is long).
-            first = next((n for n in data if grid_fields(lines[n - 1], grid) != grid_fields(host.deck.lines[n - 1], grid)),
+            first = next((n for n in data if grid_reading(lines[n - 1], grid) != grid_reading(host.deck.lines[n - 1], grid)),
                          data[0])
             yield Plant("width-8", lines, {b.data[0], first}, f"{b.name} block at line {b.line} ({len(data)} lines)",
                         "grid", data, grid)
@@ -274,6 +274,8 @@ def _unused_id(host, rng):
 
 def missing_id(host, rng):
     """An id that does not exist: a part's section, material or EOS, a particle's part, a set."""
+    if any(code == "DK010" for _, _, code, _, _ in host.found):
+        return  # an include is missing: it may define any id, so references are not checked (DK010 says so)
     cands = []
     for n, fields in host.fields.items():
         b = host.deck.block_of(n)

@@ -119,7 +119,7 @@ def evaluate(sphdeck, host, plant, where):
         if report is not None and dk.dump_values(report) == host.values:
             return None
     elif plant.change == "grid":
-        if all(dk.grid_fields(host.deck.lines[n - 1], plant.grid) == dk.grid_fields(plant.lines[n - 1], plant.grid)
+        if all(dk.grid_reading(host.deck.lines[n - 1], plant.grid) == dk.grid_reading(plant.lines[n - 1], plant.grid)
                for n in plant.grid_lines):
             return None
     found, problem = dk.check(sphdeck, path, include)
