@@ -180,6 +180,31 @@ std::string_view header_above(const grammar::RawDeck& deck, const grammar::CardL
     return above.substr(0, marker.size()) == marker ? above : std::string_view{};
 }
 
+diag::Diagnostic lone_value_finding(const grammar::RawDeck& deck, const grammar::Block& block,
+                                    const grammar::CardLine& line, const keywords::CardSpec& card,
+                                    const grammar::LoneShift& shift, std::span<const grammar::FixedField> slots) {
+    const std::string_view text = deck.text(line);
+    const std::string_view value = text.substr(shift.begin, shift.end - shift.begin);
+    const auto& meant = card.fields[shift.meant];
+    const auto& read = card.fields[shift.read];
+    const grammar::FixedField& f = slots[shift.meant];
+    const int n = shift.columns;
+    diag::Diagnostic d{"DK029", diag::Severity::Error,
+                       fmt::format("line shifted {} column{} right of the fields of {} {}: '{}' ends {} column{} past "
+                                   "the end of {} (columns {}-{}) and is read as {}",
+                                   n, n == 1 ? "" : "s", block.keyword, card_name(card), value, n, n == 1 ? "" : "s",
+                                   meant.name, f.start + 1, f.start + f.width, read.name),
+                       line_span(deck, line, true), {}};
+    d.notes.push_back({grammar::Span{}, fmt::format("{} is read blank; the deck's other numbers end at their "
+                                                    "fields' ends",
+                                                    meant.name)});
+    if (shift.realigned)
+        d.fixes.push_back(diag::Fix{fmt::format("move '{}' {} column{} left into {}", value, n, n == 1 ? "" : "s",
+                                                meant.name),
+                                    false, {whole_line_edit(deck, line, *shift.realigned)}});
+    return d;
+}
+
 bool follows_from_shift(std::string_view code) {
     static constexpr std::string_view codes[] = {"DK002", "DK003", "DK004", "DK005", "DK006", "DK007", "DK008"};
     return std::find(std::begin(codes), std::end(codes), code) != std::end(codes);

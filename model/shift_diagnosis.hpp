@@ -11,6 +11,7 @@
 
 #include "diag/diagnostic.hpp"
 #include "grammar/keywords/schema.hpp"
+#include "grammar/lone_value_shift.hpp"
 #include "grammar/raw_deck.hpp"
 
 namespace sphdeck::model {
@@ -32,6 +33,12 @@ std::string_view header_above(const grammar::RawDeck& deck, const grammar::CardL
 // folded into a cause.
 void diagnose_shifts(const grammar::RawDeck& deck, const grammar::Block& block, std::span<const SuspectLine> suspects,
                      std::vector<diag::Diagnostic>& out, std::size_t from);
+
+// DK029 for a line of one value pushed into the next field (grammar/lone_value_shift.hpp), the deck's
+// numbers all right-aligned otherwise. Its fix is not safe: the evidence is the deck's habit.
+diag::Diagnostic lone_value_finding(const grammar::RawDeck& deck, const grammar::Block& block,
+                                    const grammar::CardLine& line, const keywords::CardSpec& card,
+                                    const grammar::LoneShift& shift, std::span<const grammar::FixedField> slots);
 
 // The reading findings a shift or a wrong width explains (DK002-DK008): folded into the cause.
 bool follows_from_shift(std::string_view code);
