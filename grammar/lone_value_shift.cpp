@@ -1,6 +1,10 @@
 #include "grammar/lone_value_shift.hpp"
 
+#include <algorithm>
+#include <vector>
+
 #include "grammar/line_tokens.hpp"
+#include "grammar/shifted_line.hpp"
 #include "grammar/value.hpp"
 
 namespace sphdeck::grammar {
@@ -36,26 +40,35 @@ void tally_alignment(std::string_view text, std::span<const FixedField> slots, s
 
 std::optional<LoneShift> find_lone_shift(std::string_view text, std::span<const FixedField> slots,
                                          std::span<const FieldType> types) {
+    constexpr std::size_t max_values = 8;
     if (text.find('\t') != std::string_view::npos || is_free_format(text)) return std::nullopt;
-    const auto tokens = line_tokens(text);
-    if (tokens.size() != 1) return std::nullopt;
-    const LineToken& t = tokens.front();
+    const std::vector<LineToken> tokens = line_tokens(text);
+    if (tokens.empty() || tokens.size() > max_values) return std::nullopt;
     const std::size_t fields = std::min(slots.size(), types.size());
-    const std::size_t k = field_of(t.begin, t.end, slots, fields);
-    if (k == 0 || k == fields || t.end == slot_end(slots[k])) return std::nullopt;
-    const FixedField& before = slots[k - 1];
-    if (slot_end(before) != slots[k].start || !number_field(types[k - 1]) || !number_field(types[k])) return std::nullopt;
-    const std::size_t past = t.end - slot_end(before);
-    if (past < 1 || past > max_shift || t.end - t.begin > before.width) return std::nullopt;
-    const std::string_view value = text.substr(t.begin, t.end - t.begin);
-    if (!reads_as(value, types[k - 1])) return std::nullopt;
-    LoneShift out{static_cast<int>(past), k - 1, k, t.begin, t.end, std::nullopt};
-    if (t.begin >= past) {
-        std::string moved(text.substr(past));
-        while (!moved.empty() && moved.back() == ' ') moved.pop_back();
-        out.realigned = std::move(moved);
+    // As written: every value whole in a number field, none at its field's end.
+    for (const LineToken& t : tokens) {
+        const std::size_t k = field_of(t.begin, t.end, slots, fields);
+        if (k == fields || !number_field(types[k]) || t.end == slot_end(slots[k])) return std::nullopt;
     }
-    return out;
+    std::optional<LoneShift> found;
+    for (std::size_t n = 1; n <= max_shift; ++n) {
+        std::vector<LineToken> moved = tokens;
+        if (!place_tokens(text, moved, slots, types, static_cast<int>(n))) continue;
+        const bool at_ends = std::all_of(moved.begin(), moved.end(), [&](const LineToken& t) {
+            return number_field(types[t.slot]) && t.end - n == slot_end(slots[t.slot]);
+        });
+        if (!at_ends) continue;
+        if (found) return std::nullopt;  // two readings: not certain
+        const LineToken& first = moved.front();
+        found = LoneShift{static_cast<int>(n), first.slot, field_of(first.begin, first.end, slots, fields),
+                          first.begin, first.end, tokens.size(), std::nullopt};
+    }
+    if (found && tokens.front().begin >= static_cast<std::size_t>(found->columns)) {
+        std::string moved(text.substr(static_cast<std::size_t>(found->columns)));
+        while (!moved.empty() && moved.back() == ' ') moved.pop_back();
+        found->realigned = std::move(moved);
+    }
+    return found;
 }
 
 }  // namespace sphdeck::grammar

@@ -1,4 +1,4 @@
-// A line of one short value pushed a few columns right, wholly into the next field (`       1.0` typed
+// A line of short values pushed a few columns right, each wholly into the next field (`       1.0` typed
 // `          1.0`: ENDTIM blank, ENDCYC 1.0). Nothing straddles and nothing is refused, so the line alone
 // cannot tell it from a value written left in its field; the deck can: when every other number of the
 // deck ends at its field's end (LS-PrePost, pydyna and most hand-written decks right-align), a lone value
@@ -31,12 +31,14 @@ struct LoneShift {
     int columns = 0;         // > 0: right of the field it was meant for
     std::size_t meant = 0;   // that field
     std::size_t read = 0;    // the field it is read in
-    std::size_t begin = 0, end = 0;  // 0-based [begin, end) of the value
+    std::size_t begin = 0, end = 0;  // 0-based [begin, end) of the (first) value
+    std::size_t values = 1;          // on the line
     std::optional<std::string> realigned;  // the line moved `columns` left, when it has the blanks
 };
 
-// The one value of `text`, when it sits in field k >= 1 without ending at its end, ends 1 to 4 columns
-// past the end of field k-1 (adjacent, blank as written, a field whose type reads it and wide enough).
+// The values of `text` (one to eight), when none ends at its field's end and, moved `columns` (1 to 4)
+// left, each ends at the end of a number field whose type reads it: a right-aligned line pushed so far
+// right that nothing straddles (short values). `meant` and `read` are those of the first value.
 std::optional<LoneShift> find_lone_shift(std::string_view text, std::span<const FixedField> slots,
                                          std::span<const keywords::FieldType> types);
 

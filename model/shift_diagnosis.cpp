@@ -189,18 +189,24 @@ diag::Diagnostic lone_value_finding(const grammar::RawDeck& deck, const grammar:
     const auto& read = card.fields[shift.read];
     const grammar::FixedField& f = slots[shift.meant];
     const int n = shift.columns;
-    diag::Diagnostic d{"DK029", diag::Severity::Error,
-                       fmt::format("line shifted {} column{} right of the fields of {} {}: '{}' ends {} column{} past "
-                                   "the end of {} (columns {}-{}) and is read as {}",
-                                   n, n == 1 ? "" : "s", block.keyword, card_name(card), value, n, n == 1 ? "" : "s",
-                                   meant.name, f.start + 1, f.start + f.width, read.name),
-                       line_span(deck, line, true), {}};
-    d.notes.push_back({grammar::Span{}, fmt::format("{} is read blank; the deck's other numbers end at their "
-                                                    "fields' ends",
-                                                    meant.name)});
+    const std::string head = fmt::format("line shifted {} column{} right of the fields of {} {}", n, n == 1 ? "" : "s",
+                                         block.keyword, card_name(card));
+    const std::string what =
+        shift.values == 1
+            ? fmt::format("'{}' ends {} column{} past the end of {} (columns {}-{}) and is read as {}", value, n,
+                          n == 1 ? "" : "s", meant.name, f.start + 1, f.start + f.width, read.name)
+            : fmt::format("its {} values end {} column{} past the ends of their fields ('{}' is read as {}, not {})",
+                          shift.values, n, n == 1 ? "" : "s", value, read.name, meant.name);
+    diag::Diagnostic d{"DK029", diag::Severity::Error, fmt::format("{}: {}", head, what), line_span(deck, line, true),
+                       {}};
+    if (auto note = reading_note(text, shift.realigned.value_or(std::string{}), slots, card);
+        shift.realigned && !note.empty())
+        d.notes.push_back({grammar::Span{}, std::move(note)});
+    d.notes.push_back({grammar::Span{}, "nothing straddles a field end; the deck's other numbers end at their fields' "
+                                        "ends (right-aligned), these do not"});
     if (shift.realigned)
-        d.fixes.push_back(diag::Fix{fmt::format("move '{}' {} column{} left into {}", value, n, n == 1 ? "" : "s",
-                                                meant.name),
+        d.fixes.push_back(diag::Fix{fmt::format("move the values {} column{} left into their fields", n,
+                                                n == 1 ? "" : "s"),
                                     false, {whole_line_edit(deck, line, *shift.realigned)}});
     return d;
 }
