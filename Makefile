@@ -4,7 +4,7 @@ BUILD_ASAN ?= build-asan
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build demo test test-asan corpus mistakes bench verify clean
+.PHONY: all deps build build-cli demo test test-asan corpus mistakes bench verify clean
 
 all: build
 
@@ -17,8 +17,12 @@ $(BUILD)/CMakeCache.txt:
 build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
 
+# Only the command-line program: what the demo runs (the test binary and benchmarks take most of a build).
+build-cli: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS) --target sphdeck
+
 # check on a deck with typical mistakes (its findings are the point), then the smoothing-length preview.
-demo: build
+demo: build-cli
 	bash decks/demo/run_demo.sh $(BUILD)/sphdeck
 
 test: build

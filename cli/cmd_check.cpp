@@ -15,6 +15,7 @@
 #include "diag/render_text.hpp"
 #include "engine/check.hpp"
 #include "engine/config_file.hpp"
+#include "engine/include_context.hpp"
 #include "lint/rule_catalog.hpp"
 
 namespace sphdeck::cli {
@@ -29,6 +30,7 @@ struct CheckArgs {
     std::string solver, fail_on, config_file;
     bool no_config = false;
     bool no_geometry = false;
+    bool alone = false;  // no search for the decks that include a named file
     CLI::Option* select_option = nullptr;  // to tell "--select" absent from empty
 };
 
@@ -107,6 +109,29 @@ void add_totals(const engine::CheckResult& r, diag::RunSummary& totals) {
     totals.counts.infos += c.infos;
 }
 
+// A named file checked as part of the decks around it that include it (engine/include_context.hpp):
+// each result then holds only the file's findings. A file no deck includes is checked on its own.
+std::vector<engine::CheckResult> check_named_file(const std::string& path, const engine::CheckOptions& options,
+                                                  const CheckArgs& args) {
+    if (!args.alone) {
+        engine::IncludeContext context = engine::check_in_context(path, engine::Documents{}, options);
+        if (!context.decks.empty()) {
+            std::string mains;
+            for (std::size_t k = 0; k < context.decks.size(); ++k) {
+                mains += fmt::format("{}{}", k == 0 ? "" : ", ", context.decks[k].deck.sources.file(0).display_name);
+                context.decks[k].diagnostics = std::move(context.findings[k]);
+            }
+            std::fflush(stdout);
+            fmt::print(args.format == "full" || args.format == "concise" ? stdout : stderr,
+                       "{}: checked as included by {}\n", path, mains);
+            return std::move(context.decks);
+        }
+    }
+    std::vector<engine::CheckResult> alone;
+    alone.push_back(engine::check_file(path, options));
+    return alone;
+}
+
 int run_check(const CheckArgs& args) {
     auto start = std::chrono::steady_clock::now();
     auto configs = resolve_configs(args);
@@ -120,23 +145,25 @@ int run_check(const CheckArgs& args) {
     bool failed = false;
     for (std::size_t i = 0; i < args.decks.size(); ++i) {
         const lint::Config& config = (*configs)[i];
-        engine::CheckResult r;
+        std::vector<engine::CheckResult> checked;
         try {
-            r = engine::check_file(args.decks[i], options_for(config, args));
+            checked = check_named_file(args.decks[i], options_for(config, args), args);
         } catch (const std::exception& e) {
             fmt::print(stderr, "sphdeck: error: {}\n", e.what());
             totals.complete = false;
             continue;
         }
-        if (report) {
-            report->add(r.deck.sources, r.diagnostics);
-        } else if (args.format == "github") {
-            for (const diag::Diagnostic& d : r.diagnostics) fmt::print("{}", diag::render_github(d, r.deck.sources));
-        } else {
-            print_text(r, args, colour);
+        for (const engine::CheckResult& r : checked) {
+            if (report) {
+                report->add(r.deck.sources, r.diagnostics);
+            } else if (args.format == "github") {
+                for (const diag::Diagnostic& d : r.diagnostics) fmt::print("{}", diag::render_github(d, r.deck.sources));
+            } else {
+                print_text(r, args, colour);
+            }
+            failed = failed || lint::fails(config, r.diagnostics);
+            add_totals(r, totals);
         }
-        failed = failed || lint::fails(config, r.diagnostics);
-        add_totals(r, totals);
     }
     totals.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (report) fmt::print("{}", report->finish(totals));
@@ -199,6 +226,8 @@ std::function<int()> setup_check(CLI::App& app) {
     app.add_flag("--no-geometry", args->no_geometry,
                  "skip the rules that need particle neighbours (SPH090, SPH113-SPH118): a quick syntax and "
                  "settings check of very large decks");
+    app.add_flag("--alone", args->alone,
+                 "check each file on its own, not as part of the decks around it that include it");
     return [args] { return run_check(*args); };
 }
 
