@@ -1,5 +1,8 @@
 #include "engine/check.hpp"
 
+#include <functional>
+
+#include "engine/mended_consequences.hpp"
 #include "grammar/read_deck.hpp"
 #include "preproc/preview.hpp"
 #include "lint/fold_causes.hpp"
@@ -11,7 +14,9 @@
 
 namespace sphdeck::engine {
 namespace {
-CheckResult finish(grammar::RawDeck deck, const CheckOptions& options) {
+
+// read → model → rules, the findings of each line's cause folded into it.
+CheckResult analyse(grammar::RawDeck deck, const CheckOptions& options) {
     CheckResult result;
     result.deck = std::move(deck);
     result.diagnostics = result.deck.diagnostics;
@@ -23,6 +28,22 @@ CheckResult finish(grammar::RawDeck deck, const CheckOptions& options) {
     lint::point_to_misspelt_keywords(result.diagnostics);
     result.preview = std::move(context.preview);
     lint::fold_into_causes(result.deck, result.diagnostics);
+    return result;
+}
+
+// `reread` reads the deck again with mended files laid over it (engine/mended_consequences.hpp).
+// `original`: the deck as first read (a buffer's text is its first file).
+using Reread = std::function<grammar::RawDeck(const grammar::dyna::ReaderOptions&, const grammar::RawDeck& original)>;
+
+CheckResult finish(grammar::RawDeck deck, const CheckOptions& options, const Reread& reread) {
+    CheckResult result = analyse(std::move(deck), options);
+    fold_mended_consequences(result.deck, result.diagnostics, options.reader.overlay,
+                             [&](const grammar::FileOverlay& mended) {
+                                 CheckOptions again = options;
+                                 again.reader.overlay = &mended;
+                                 again.rules.keep_preview = false;
+                                 return analyse(reread(again.reader, result.deck), again).diagnostics;
+                             });
     diag::sort_by_location(result.diagnostics);
     // What the deck's own comments and the configuration say about the findings: every consumer
     // (the CLI, the deck tests, an editor) sees the same list.
@@ -41,16 +62,27 @@ CheckResult finish(grammar::RawDeck deck, const CheckOptions& options) {
 CheckResult check_deck(const std::string& path, const Documents& documents, const CheckOptions& options) {
     CheckOptions with_documents = options;
     if (!documents.empty()) with_documents.reader.overlay = &documents;
-    return finish(grammar::read_deck(path, with_documents.reader), with_documents);
+    return check_file(path, with_documents);
 }
 
 CheckResult check_file(const std::string& path, const CheckOptions& options) {
-    return finish(grammar::read_deck(path, options.reader), options);
+    return finish(grammar::read_deck(path, options.reader), options,
+                  [&](const grammar::dyna::ReaderOptions& reader, const grammar::RawDeck&) {
+                      return grammar::read_deck(path, reader);
+                  });
 }
 
 CheckResult check_buffer(std::string text, const std::string& name, const CheckOptions& options,
                          std::optional<grammar::DeckFormat> format, const std::string& base_directory) {
-    return finish(grammar::read_deck_buffer(std::move(text), name, base_directory, options.reader, format), options);
+    grammar::RawDeck deck = grammar::read_deck_buffer(std::move(text), name, base_directory, options.reader, format);
+    return finish(std::move(deck), options,
+                  [&](const grammar::dyna::ReaderOptions& reader, const grammar::RawDeck& original) {
+                      // The buffer is the deck's first file: read again from its mended text, or from it.
+                      const grammar::SourceFile& main = original.sources.file(0);
+                      const std::string* mended = reader.overlay ? reader.overlay->find(main.path) : nullptr;
+                      std::string again = mended ? *mended : std::string(std::string_view(main.text));
+                      return grammar::read_deck_buffer(std::move(again), name, base_directory, reader, format);
+                  });
 }
 
 }  // namespace sphdeck::engine

@@ -31,11 +31,13 @@ bool aligned(const std::vector<LineToken>& tokens, std::span<const FixedField> s
     });
 }
 
-// A `$#` header whose names all end at field ends: the deck's writer right-aligns to the fields.
+// A `$#` (OpenRadioss: `#`) header whose names all end at field ends: the deck's writer right-aligns
+// to the fields.
 bool header_aligned(std::string_view header, std::span<const FixedField> slots, std::size_t fields) {
-    if (header.size() < 2 || header[0] != '$' || header[1] != '#') return false;
+    const std::size_t marker = header.substr(0, 2) == "$#" ? 2 : header.substr(0, 1) == "#" ? 1 : 0;
+    if (marker == 0) return false;
     std::string names(header);
-    names[0] = names[1] = ' ';
+    for (std::size_t i = 0; i < marker; ++i) names[i] = ' ';
     const auto tokens = line_tokens(names);
     if (tokens.size() < 2) return false;
     return std::all_of(tokens.begin(), tokens.end(), [&](const LineToken& t) {

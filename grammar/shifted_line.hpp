@@ -36,7 +36,7 @@ struct LineShift {
 
 // The shift of a line of `card` (fields at `slots`) by at most 4 columns, or nullopt. Evidence: every
 // value ends (or starts) exactly `columns` past its field's end (start) while read as is some value
-// straddles a boundary; or `header` (the `$#` comment line above, empty when none) names the fields
+// straddles a boundary; or `header` (the `$#` comment line above, OpenRadioss `#`, empty when none) names the fields
 // right-aligned to their ends and the values all end `columns` past them.
 // A card that starts with a long text field (a title) is never looked at: its blanks are text.
 std::optional<LineShift> find_shift(std::string_view text, std::string_view header, std::span<const FixedField> slots,

@@ -246,7 +246,7 @@ constexpr RuleInfo kRows[] = {
     {"SPH118", "few-neighbours", Warning, "0.1.0", "preview",
      "estimated neighbours per particle below 20 in 3D or 8 in 2D"},
     {"SPH119", "density-not-positive", Error, "0.1.0", "materials",
-     "material density 0, blank or negative: RO of an SPH or solid part's material, or any Radioss /MAT RHO_I"},
+     "material density 0, blank or negative: RO of an SPH, solid or shell part's material, or any Radioss /MAT RHO_I"},
     {"SPH120", "no-control-sph", Warning, "0.1.0", "CONTROL_SPH",
      "an SPH deck without *CONTROL_SPH: LS-DYNA's defaults apply (3D, FORM 0, INI 0...)"},
     {"SPH121", "planar-particles-in-3d", Error, "0.1.0", "IDIM",

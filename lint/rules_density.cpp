@@ -1,5 +1,5 @@
 // SPH119: a material density the solver rejects. LS-DYNA: RO <= 0 (or blank) of a material that
-// an SPH or solid part uses, since their mass comes from it. OpenRadioss: RHO_I <= 0 of any /MAT
+// an SPH, solid or shell part uses, since their mass and time step come from it. OpenRadioss: RHO_I <= 0 of any /MAT
 // whose law the starter checks (hm_read_mat.F90, message 683), used or not.
 #include <fmt/format.h>
 
@@ -19,6 +19,18 @@ std::string written(const model::Material& m, std::string_view name) {
     return fmt::format("{} {:g}", name, m.density.value);
 }
 
+// The elements whose mass and time step come from RO (element mass RO times volume, sound speed from
+// the stiffness over RO): solids, the 2D solids of *SECTION_SHELL (ELFORM 12 plane stress, 13 plane
+// strain, 14 and 15 axisymmetric), shells, thick shells. Empty for the others: beams (discrete beams
+// and spot welds may take their mass from elsewhere), springs, seatbelts.
+std::string_view element_kind(const model::Section& section) {
+    if (starts_with(section.keyword, "*SECTION_SOLID")) return "solid";
+    if (starts_with(section.keyword, "*SECTION_SHELL"))
+        return section.shell_form >= 12 && section.shell_form <= 15 ? "solid" : "shell";
+    if (starts_with(section.keyword, "*SECTION_TSHELL")) return "thick shell";
+    return {};
+}
+
 bool rigid(const model::Material& m) { return m.keyword == "*MAT_RIGID" || m.keyword == "*MAT_020"; }
 
 void check_lsdyna_densities(RuleContext& c) {
@@ -28,16 +40,12 @@ void check_lsdyna_densities(RuleContext& c) {
     std::set<const model::Material*> reported;
     for (const model::Part& part : m.parts) {
         const model::Section* section = m.section(part.section.value);
-        // Solids: *SECTION_SOLID, and the 2D solids of *SECTION_SHELL (ELFORM 12 plane stress, 13 plane
-        // strain, 14 and 15 axisymmetric: their element mass is RO times the area swept).
-        const bool solid = section && (starts_with(section->keyword, "*SECTION_SOLID") ||
-                                       (section->shell_form >= 12 && section->shell_form <= 15));
-        if (!sph.count(&part) && !solid) continue;
+        const std::string_view kind = sph.count(&part) ? "SPH" : section ? element_kind(*section) : "";
+        if (kind.empty()) continue;
         const model::Material* mat = m.material(part.material.value);
         if (!mat || !mat->has_density || mat->density.value > 0 || reported.count(mat)) continue;
         if (rigid(*mat) && part.inertia) continue;  // *PART_INERTIA gives the mass itself
         reported.insert(mat);
-        const std::string_view kind = sph.count(&part) ? "SPH" : "solid";
         auto& d = c.report("SPH119", mat->density.span,
                            fmt::format("{} of {} {} used by {} part {}: its {} have no mass; expected a density > 0",
                                        written(*mat, "RO"), mat->keyword, mat->id, kind, part.id,

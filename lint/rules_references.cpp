@@ -10,6 +10,7 @@
 #include "lint/particle_groups.hpp"
 #include "lint/rules.hpp"
 #include "lint/rules_references_links.hpp"
+#include "lint/rules_thermal_duplicates.hpp"
 #include "model/case_blocks.hpp"
 #include "model/id_index.hpp"
 #include "model/radioss_decoder.hpp"
@@ -349,6 +350,7 @@ void check_references(RuleContext& c) {
     check_duplicates(c, cases, c.model.materials, "material");
     check_duplicates(c, cases, c.model.equations_of_state, "EOS");
     check_duplicates(c, cases, c.model.boxes, "box");
+    check_thermal_material_duplicates(c, cases);
     if (!complete) return;
     std::set<Id> sections, materials, eos;
     check_part_references(c, sections, materials, eos);

@@ -10,6 +10,7 @@
 #include "grammar/number_cast.hpp"
 #include "grammar/shifted_line.hpp"
 #include "grammar/value.hpp"
+#include "model/decimal_comma.hpp"
 
 namespace sphdeck::model {
 
@@ -102,6 +103,11 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
     line_text_ = text;
     grammar::CutReport cut = grammar::cut_fields(text, line, positions_, layout.significant, fields_, !layout.text_card);
     glued_ = !cut.free_format && !layout.text_card && grammar::may_straddle(text, positions_);
+    const std::size_t fields_end = positions_.empty() ? 0 : positions_.back().start + positions_.back().width;
+    past_fields_ = !cut.free_format && !layout.text_card && layout.significant > fields_end &&
+                   text.size() > fields_end &&
+                   text.substr(fields_end, layout.significant - fields_end).find_first_not_of(" \r") !=
+                       std::string_view::npos;
 
     if (cut.has_tab) {
         std::size_t tab = text.find('\t');
@@ -179,19 +185,8 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
 // each comma). Runs on free-format lines only.
 void CardDecoder::check_decimal_comma(const keywords::CardSpec& card, const grammar::CardLine& line,
                                       const std::vector<FieldValue>& values) {
-    const std::string_view text = line_text_;
-    const std::size_t first = text.find(',');
-    if (first == std::string_view::npos || first < 2 || text[0] != ' ' || text[1] != ' ') return;
-    auto digit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
-    std::size_t comma = first;
-    while (comma != std::string_view::npos &&
-           !(comma > 0 && comma + 1 < text.size() && digit(text[comma - 1]) && digit(text[comma + 1])))
-        comma = text.find(',', comma + 1);
-    if (comma == std::string_view::npos) return;
-    auto separator = [](char c) { return c == ' ' || c == ',' || c == '\t'; };
-    std::size_t from = comma, to = comma + 1;
-    while (from > 0 && !separator(text[from - 1])) --from;
-    while (to < text.size() && !separator(text[to])) ++to;
+    const auto comma = find_decimal_comma(line_text_);
+    if (!comma) return;
     std::string reading;
     std::size_t shown_fields = 0;
     for (std::size_t i = 0; i < values.size() && i < card.fields.size() && shown_fields < 4; ++i) {
@@ -202,14 +197,7 @@ void CardDecoder::check_decimal_comma(const keywords::CardSpec& card, const gram
                                r.status == NumberStatus::Ok ? number_text(r.value) : shown(v.text));
         ++shown_fields;
     }
-    const std::string meant = std::string(text.substr(from, comma - from)) + "." +
-                              std::string(text.substr(comma + 1, to - comma - 1));
-    report("DK031", diag::Severity::Warning,
-           fmt::format("a comma inside a fixed-format field: LS-DYNA reads this line as free format{}; a decimal "
-                       "comma? write {}",
-                       reading.empty() ? "" : " (" + reading + ")", shown(meant)),
-           grammar::Span{line.file, line.line, static_cast<std::uint32_t>(from + 1),
-                         static_cast<std::uint32_t>(to + 1)});
+    out_.push_back(decimal_comma_finding(*comma, line, "LS-DYNA", reading));
 }
 
 void CardDecoder::decode_number(const grammar::Block& block, const keywords::FieldSpec& spec,

@@ -52,6 +52,9 @@ public:
     // Whether the line decode() read last may hold a value pushed across a field end
     // (grammar::may_straddle): a line for the shift diagnosis although nothing was reported.
     bool glued() const { return glued_; }
+    // The line decode() last read holds text between its last field and the card's last significant
+    // column: read by no field, silently (a line shifted right pushes its last value there).
+    bool text_past_fields() const { return past_fields_; }
 
     void decode_bulk(const grammar::Block& block, const grammar::CardLine& line, const keywords::CardSpec& card,
                      std::vector<FieldValue>& values) {
@@ -72,7 +75,8 @@ private:
     void report(const char* code, diag::Severity s, std::string message, grammar::Span span);
 
     std::string_view line_text_;
-    bool glued_ = false;  // the line decode() works on, for the notes that quote it
+    bool glued_ = false;
+    bool past_fields_ = false;  // the line decode() works on, for the notes that quote it
 
     // Widened positions of a card in a format, computed once: decoding runs per line.
     struct Layout {

@@ -8,6 +8,8 @@
 #include <numeric>
 #include <string>
 
+#include "grammar/lone_value_shift.hpp"
+#include "grammar/shifted_line.hpp"
 #include "grammar/value.hpp"
 #include "model/case_blocks.hpp"
 #include "model/particle_ranges.hpp"
@@ -23,6 +25,7 @@ namespace {
 
 using keywords::CardRepeat;
 using keywords::CardSpec;
+using keywords::FieldType;
 
 // Below this many lines a block is decoded on the calling thread: starting threads costs more.
 constexpr std::size_t bulk_min_lines = 8192;
@@ -98,7 +101,9 @@ public:
             const CardSpec& card = *cards[next];
             const std::size_t found_before = out_.size();
             decoder_.decode(block, *l, card, values_);
-            note_suspect(block, *l, card, out_.size() > found_before || decoder_.glued());
+            note_alignment(block, *l, card, out_.size() > found_before);
+            note_suspect(block, *l, card,
+                         out_.size() > found_before || decoder_.glued() || decoder_.text_past_fields());
             std::optional<diag::Diagnostic> refused;
             if (particles) refused = take_range(values_);
             if (card.repeat != CardRepeat::Repeated) remember(values_);  // conditions look at header cards
@@ -113,7 +118,48 @@ public:
     // The lines the shift diagnosis looks at (model/shift_diagnosis.hpp), filled by walk().
     const std::vector<SuspectLine>& suspects() const { return suspects_; }
 
+    // DK029 for the lines of one value pushed into the next field, when (all but 1% of) the other numbers
+    // the walk saw end at their field's end (grammar/lone_value_shift.hpp). Called once, after the last block.
+    void report_lone_shifts() {
+        constexpr std::uint64_t min_aligned = 4;  // a deck with fewer numbers shows no habit
+        // A stray left-aligned number or two in a deck of hundreds is no habit of writing left.
+        if (alignment_.right < min_aligned || alignment_.other * 100 > alignment_.right) return;
+        for (const LoneCandidate& c : lone_)
+            out_.push_back(lone_value_finding(deck_, *c.block, *c.line, *c.card, c.shift, layout_of(*c.card, c.block->format)));
+    }
+
 private:
+    struct LoneCandidate {
+        const grammar::Block* block = nullptr;
+        const grammar::CardLine* line = nullptr;
+        const CardSpec* card = nullptr;
+        grammar::LoneShift shift;
+    };
+    static constexpr std::size_t max_lone_candidates = 64;
+
+    std::span<const grammar::FixedField> layout_of(const CardSpec& card, grammar::CardFormat format) {
+        if (layout_card_ != &card || layout_format_ != format) {
+            layout_card_ = &card, layout_format_ = format;
+            layout_slots_ = keywords::layout(card, format);
+            layout_types_ = grammar::field_types(card);
+        }
+        return layout_slots_;
+    }
+
+    // Tallies how the line's numbers sit in their fields, or keeps it as a lone shifted value.
+    void note_alignment(const grammar::Block& block, const grammar::CardLine& line, const CardSpec& card, bool found) {
+        if (card.fields.empty() || (card.fields[0].type == FieldType::Text && card.fields[0].width >= 70)) return;
+        const std::string_view text = deck_.text(line);
+        const auto slots = layout_of(card, block.format);
+        (void)found;  // a lone value read as an integer written as a real (DK004) is still lone
+        if (lone_.size() < max_lone_candidates)
+            if (auto lone = grammar::find_lone_shift(text, slots, layout_types_)) {
+                lone_.push_back({&block, &line, &card, std::move(*lone)});
+                return;
+            }
+        if (!grammar::is_free_format(text)) grammar::tally_alignment(text, slots, layout_types_, alignment_);
+    }
+
     // A line that made a finding, or the first line of a card under a `$#` header (one a block for
     // repeated cards: the header check reads back over the line above).
     void note_suspect(const grammar::Block& block, const grammar::CardLine& line, const CardSpec& card, bool found) {
@@ -286,6 +332,12 @@ private:
     std::vector<FieldValue> values_;
     std::map<std::string, double> earlier_;
     std::vector<SuspectLine> suspects_;
+    grammar::AlignmentTally alignment_;
+    std::vector<LoneCandidate> lone_;
+    const CardSpec* layout_card_ = nullptr;
+    grammar::CardFormat layout_format_ = grammar::CardFormat::Standard;
+    std::vector<grammar::FixedField> layout_slots_;
+    std::vector<FieldType> layout_types_;
 };
 
 // A keyword that may appear once, where it appeared and in which case ("": every case).
@@ -355,6 +407,7 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
         diagnose_shifts(deck, block, walker.suspects(), out, before);
         bound.annotate(out, before, block.keyword);
     }
+    walker.report_lone_shifts();
     unknown.finish(out);
     return summary;
 }

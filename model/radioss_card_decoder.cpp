@@ -7,8 +7,10 @@
 #include "grammar/fields.hpp"
 #include "grammar/value.hpp"
 #include "model/card_decoder.hpp"  // the integer range both decoders enforce
+#include "model/decimal_comma.hpp"
 #include "model/radioss_parameters.hpp"
 #include "model/radioss_straddles.hpp"
+#include "model/shift_diagnosis.hpp"
 
 namespace sphdeck::model {
 
@@ -75,21 +77,6 @@ const std::vector<grammar::FixedField>& RadiossCardDecoder::layout_of(const gram
     return layouts_.back().positions;
 }
 
-namespace {
-// The line right above `line` in its file when it is a `#` comment (a CFG COMMENT naming the
-// fields), else empty.
-std::string_view comment_above(const grammar::RawDeck& deck, const grammar::CardLine& line) {
-    const std::string_view file = deck.sources.file(line.file).text;
-    if (line.offset < 2 || line.offset > file.size() || file[line.offset - 1] != '\n') return {};
-    std::size_t end = line.offset - 1, begin = end;
-    while (begin > 0 && file[begin - 1] != '\n' && end - begin < 256) --begin;
-    if (begin > 0 && file[begin - 1] != '\n') return {};
-    if (end > begin && file[end - 1] == '\r') --end;
-    const std::string_view above = file.substr(begin, end - begin);
-    return !above.empty() && above[0] == '#' ? above : std::string_view{};
-}
-}  // namespace
-
 void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const grammar::radioss::CardSpec& card,
                                       int version, std::vector<RadiossValue>& values, std::string_view newer,
                                       bool trailing_checked, std::uint32_t quiet_until) {
@@ -139,12 +126,32 @@ void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const gramm
         if (v.spec->cell == Cell::Skip || v.spec->cell == Cell::Skip20) continue;
         read_value(v, fields_[i].text, !cut.free_format);
     }
-    const std::string_view header = shift_check_ ? comment_above(deck_, line) : std::string_view{};
-    if (!text_card && !cut.free_format && !cut.has_tab &&
-        (out_.size() > found_before || glued_across_cells(text, positions) || !header.empty()))
-        diagnose_radioss_line(line, text, card, positions,
-                              block_ < deck_.blocks.size() ? std::string_view(deck_.blocks[block_].keyword) : "its card",
-                              out_, found_before, header);
+    if (cut.free_format && !text_card) check_decimal_comma(line, text, values);
+    if (!text_card && !cut.free_format && !cut.has_tab) {
+        const std::string_view header = header_above(deck_, line, "#");
+        if (out_.size() > found_before || glued_across_cells(text, positions) || !header.empty())
+            diagnose_radioss_line(
+                line, text, card, positions,
+                block_ < deck_.blocks.size() ? std::string_view(deck_.blocks[block_].keyword) : "its card", header,
+                out_, found_before);
+    }
+}
+
+// `  1,0E-6` for `  1.0E-6`: the starter reads a line with a comma as free format, the number cut in
+// two (the same mistake as in LS-DYNA, model/decimal_comma.hpp).
+void RadiossCardDecoder::check_decimal_comma(const grammar::CardLine& line, std::string_view text,
+                                             const std::vector<RadiossValue>& values) {
+    const auto comma = find_decimal_comma(text);
+    if (!comma) return;
+    std::string reading;
+    std::size_t shown_fields = 0;
+    for (const RadiossValue& v : values) {
+        if (shown_fields == 4) break;
+        if (!v.explicit_value || !v.spec || !numeric(v.spec->cell)) continue;
+        reading += fmt::format("{}{} {}", reading.empty() ? "" : ", ", v.spec->name, shown(v.text));
+        ++shown_fields;
+    }
+    out_.push_back(decimal_comma_finding(*comma, line, "the starter", reading));
 }
 
 // Engine data lines are read by Fortran list-directed input: tokens separated by blanks or commas.

@@ -36,7 +36,6 @@ public:
     void set_block(std::size_t block) { block_ = block; }
     // The next lines are cards of a generated layout read once: under a `#` comment line (the
     // field names of the CFG's COMMENT), a line is looked at for a shift even without a finding.
-    void set_shift_check(bool on) { shift_check_ = on; }
 
     // Decodes `line` against `card`. `version` sets the cell widths; `list_directed` reads engine
     // lines (tokens separated by blanks or commas); `newer` names a newer format that reads more
@@ -55,6 +54,8 @@ private:
     void decode_tokens(const grammar::CardLine& line, const grammar::radioss::CardSpec& card,
                        std::vector<RadiossValue>& values);
     void read_value(RadiossValue& v, std::string_view field, bool fixed);
+    void check_decimal_comma(const grammar::CardLine& line, std::string_view text,
+                             const std::vector<RadiossValue>& values);
     void report(const char* code, diag::Severity s, std::string message, grammar::Span span);
 
     // Column positions of a card in a version, computed once: decoding runs per line.
@@ -64,7 +65,6 @@ private:
     std::vector<diag::Diagnostic>& out_;
     const RadiossParameters* parameters_ = nullptr;
     std::size_t block_ = 0;
-    bool shift_check_ = false;
     std::vector<grammar::Field> fields_;
     struct Layout {
         const grammar::radioss::CardSpec* card = nullptr;

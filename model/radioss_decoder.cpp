@@ -235,10 +235,8 @@ private:
                 report_extra(table, b.version, format, *line, static_cast<std::size_t>(end - line), newer);
                 return;
             }
-            decoder_.set_shift_check(table.generated && cards[next.index].repeat == rad::Repeat::Once);
             decoder_.decode(*line, cards[next.index], b.version, b.engine, values_, newer, table.trailing_checked,
                             quiet_until);
-            decoder_.set_shift_check(false);
             sequence.advance(next.index, values_);
             if (!b.engine) note_id_uses(table);
             if (to_builder)

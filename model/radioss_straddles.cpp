@@ -112,23 +112,21 @@ void fold_and_add(std::vector<diag::Diagnostic>& out, std::size_t from, diag::Di
 
 void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
                            const grammar::radioss::CardSpec& card, std::span<const grammar::FixedField> positions,
-                           std::string_view keyword, std::vector<diag::Diagnostic>& out, std::size_t from,
-                           std::string_view header) {
+                           std::string_view keyword, std::string_view header, std::vector<diag::Diagnostic>& out,
+                           std::size_t from) {
     auto glued = straddles(text, card, positions);
-    if (glued.empty() && out.size() == from && header.empty()) return;
+    const bool suspect = !glued.empty() || out.size() > from;
+    if (!suspect && header.empty()) return;
     std::vector<FieldType> types;
     for (const auto& f : card.fields) types.push_back(type_of(f.cell));
-    // A `#` header of the field names reads as LS-DYNA's `$#` one (same columns).
-    std::string names;
-    if (header.size() >= 2 && header[0] == '#' && header[1] == ' ') names = "$#" + std::string(header.substr(2));
     // Under a header, values past the card's last field (a newer format's, or text the starter
     // ignores) are no evidence either way: the line is judged up to a few columns past the card.
     std::string_view probe = text;
-    if (!names.empty() && !positions.empty()) {
+    if (!header.empty() && !positions.empty()) {
         const std::size_t limit = std::size_t{positions.back().start} + positions.back().width + 4;
         if (probe.size() > limit) probe = probe.substr(0, limit);
     }
-    auto shift = grammar::find_shift(probe, names, positions, types);
+    auto shift = grammar::find_shift(probe, header, positions, types);
     if (shift && probe.size() != text.size()) {
         // The fix moves the whole line, its tail included.
         const int n = shift->columns;
@@ -141,6 +139,9 @@ void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
             shift->realigned = std::move(moved);
         }
     }
+    // On the header's word alone, only a shift that changes what is read: a value written a few columns
+    // inside its cell is read the same.
+    if (shift && !suspect && !shift->changes_reading) return;
     if (shift) {
         const int n = std::abs(shift->columns);
         diag::Diagnostic d{"DK029", shift->changes_reading ? diag::Severity::Error : diag::Severity::Warning,
@@ -150,6 +151,8 @@ void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
                                          static_cast<std::uint32_t>(text.find_first_not_of(' ') + 1),
                                          static_cast<std::uint32_t>(text.size() + 1)},
                            {}};
+        if (shift->from_header)
+            d.notes.push_back({grammar::Span{}, "the `#` comment above names the cells at their columns"});
         d.fixes.push_back(diag::Fix{fmt::format("move the values {} column{} {} into their cells", n,
                                                 n == 1 ? "" : "s", shift->columns > 0 ? "left" : "right"),
                                     true,

@@ -167,7 +167,7 @@ std::optional<diag::Diagnostic> wrong_widths(const grammar::RawDeck& deck, const
 
 }  // namespace
 
-std::string_view header_above(const grammar::RawDeck& deck, const grammar::CardLine& line) {
+std::string_view header_above(const grammar::RawDeck& deck, const grammar::CardLine& line, std::string_view marker) {
     const std::string_view file = deck.sources.file(line.file).text;
     if (line.offset < 3 || line.offset > file.size() || file[line.offset - 1] != '\n') return {};
     std::size_t end = line.offset - 1;  // the '\n' ending the line above
@@ -177,7 +177,38 @@ std::string_view header_above(const grammar::RawDeck& deck, const grammar::CardL
     if (begin > 0 && file[begin - 1] != '\n') return {};  // longer than any header
     if (end > begin && file[end - 1] == '\r') --end;
     const std::string_view above = file.substr(begin, end - begin);
-    return above.size() >= 2 && above[0] == '$' && above[1] == '#' ? above : std::string_view{};
+    return above.substr(0, marker.size()) == marker ? above : std::string_view{};
+}
+
+diag::Diagnostic lone_value_finding(const grammar::RawDeck& deck, const grammar::Block& block,
+                                    const grammar::CardLine& line, const keywords::CardSpec& card,
+                                    const grammar::LoneShift& shift, std::span<const grammar::FixedField> slots) {
+    const std::string_view text = deck.text(line);
+    const std::string_view value = text.substr(shift.begin, shift.end - shift.begin);
+    const auto& meant = card.fields[shift.meant];
+    const auto& read = card.fields[shift.read];
+    const grammar::FixedField& f = slots[shift.meant];
+    const int n = shift.columns;
+    const std::string head = fmt::format("line shifted {} column{} right of the fields of {} {}", n, n == 1 ? "" : "s",
+                                         block.keyword, card_name(card));
+    const std::string what =
+        shift.values == 1
+            ? fmt::format("'{}' ends {} column{} past the end of {} (columns {}-{}) and is read as {}", value, n,
+                          n == 1 ? "" : "s", meant.name, f.start + 1, f.start + f.width, read.name)
+            : fmt::format("its {} values end {} column{} past the ends of their fields ('{}' is read as {}, not {})",
+                          shift.values, n, n == 1 ? "" : "s", value, read.name, meant.name);
+    diag::Diagnostic d{"DK029", diag::Severity::Error, fmt::format("{}: {}", head, what), line_span(deck, line, true),
+                       {}};
+    if (auto note = reading_note(text, shift.realigned.value_or(std::string{}), slots, card);
+        shift.realigned && !note.empty())
+        d.notes.push_back({grammar::Span{}, std::move(note)});
+    d.notes.push_back({grammar::Span{}, "nothing straddles a field end; the deck's other numbers end at their fields' "
+                                        "ends (right-aligned), these do not"});
+    if (shift.realigned)
+        d.fixes.push_back(diag::Fix{fmt::format("move the values {} column{} left into their fields", n,
+                                                n == 1 ? "" : "s"),
+                                    false, {whole_line_edit(deck, line, *shift.realigned)}});
+    return d;
 }
 
 bool follows_from_shift(std::string_view code) {

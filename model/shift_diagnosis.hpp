@@ -11,6 +11,7 @@
 
 #include "diag/diagnostic.hpp"
 #include "grammar/keywords/schema.hpp"
+#include "grammar/lone_value_shift.hpp"
 #include "grammar/raw_deck.hpp"
 
 namespace sphdeck::model {
@@ -23,13 +24,21 @@ struct SuspectLine {
 // At most this many lines of a block are looked at.
 inline constexpr std::size_t max_suspect_lines = 64;
 
-// The `$#` comment line right above `line` (LS-PrePost's and pydyna's field names), or empty.
-std::string_view header_above(const grammar::RawDeck& deck, const grammar::CardLine& line);
+// The comment line right above `line` that starts with `marker`, or empty: `$#` in LS-DYNA (LS-PrePost's
+// and pydyna's field names), `#` in OpenRadioss (HyperMesh's and the QA decks' cell names).
+std::string_view header_above(const grammar::RawDeck& deck, const grammar::CardLine& line,
+                              std::string_view marker = "$#");
 
 // Diagnoses `block` from its suspect lines; its findings are out[from, end), and stay there unless
 // folded into a cause.
 void diagnose_shifts(const grammar::RawDeck& deck, const grammar::Block& block, std::span<const SuspectLine> suspects,
                      std::vector<diag::Diagnostic>& out, std::size_t from);
+
+// DK029 for a line of one value pushed into the next field (grammar/lone_value_shift.hpp), the deck's
+// numbers all right-aligned otherwise. Its fix is not safe: the evidence is the deck's habit.
+diag::Diagnostic lone_value_finding(const grammar::RawDeck& deck, const grammar::Block& block,
+                                    const grammar::CardLine& line, const keywords::CardSpec& card,
+                                    const grammar::LoneShift& shift, std::span<const grammar::FixedField> slots);
 
 // The reading findings a shift or a wrong width explains (DK002-DK008): folded into the cause.
 bool follows_from_shift(std::string_view code);

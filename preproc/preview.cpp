@@ -197,17 +197,22 @@ void preview_part(const model::Model& m, const PartGroups& groups, std::size_t q
 void count_all_neighbours(Preview& out) {
     ParticlePreview& pp = out.particles;
     const std::size_t n = pp.located.size();
-    std::vector<std::uint32_t> located;  // model indices; left empty when every particle is located
-    if (std::find(pp.located.begin(), pp.located.end(), 0) != pp.located.end())
+    // model indices of the located particles; left empty when every particle is located. None located
+    // (no *NODE read: a misspelt keyword, a missing include) counts nothing: the particles would all
+    // stand at the origin, one cell of n^2 pairs.
+    const bool all_located = std::find(pp.located.begin(), pp.located.end(), 0) == pp.located.end();
+    std::vector<std::uint32_t> located;
+    if (!all_located)
         for (std::size_t i = 0; i < n; ++i)
             if (pp.located[i]) located.push_back(static_cast<std::uint32_t>(i));
-    const std::size_t m = located.empty() ? n : located.size();
-    const auto model_index = [&](std::size_t k) { return located.empty() ? k : std::size_t{located[k]}; };
+    if (!all_located && located.empty()) return;
+    const std::size_t m = all_located ? n : located.size();
+    const auto model_index = [&](std::size_t k) { return all_located ? k : std::size_t{located[k]}; };
     // Positions: the preview's own arrays when every particle has a node (the usual case, and
     // 24 bytes a particle less at the peak), else a copy of the located ones.
     std::vector<double> xs, ys, zs;
     std::span<const double> x = pp.x, y = pp.y, z = pp.z;
-    if (!located.empty()) {
+    if (!all_located) {
         xs.resize(m), ys.resize(m), zs.resize(m);
         for (std::size_t k = 0; k < m; ++k)
             xs[k] = pp.x[located[k]], ys[k] = pp.y[located[k]], zs[k] = pp.z[located[k]];
@@ -227,7 +232,7 @@ void count_all_neighbours(Preview& out) {
         }
     } else {
         for (const PartPreview& pv : out.parts) support.push_back(pv.support), tolerance.push_back(1e-9 * pv.spacing);
-        if (!located.empty()) {
+        if (!all_located) {
             group.resize(m);
             for (std::size_t k = 0; k < m; ++k) group[k] = pp.part[located[k]];
         }

@@ -95,6 +95,15 @@ def grid_fields(text, widths):
     return tuple(out)
 
 
+def grid_reading(text, widths):
+    """What a bulk line means: its fields, or for the id lines of a *SET_..._LIST the ids it lists
+    (a set's members do not depend on the field they sit in: an id moved one field on is the same set)."""
+    fields = grid_fields(text, widths)
+    if widths is SET_LIST_GRID:
+        return tuple(sorted(f for f in fields[:-1] if f)), fields[-1]
+    return fields
+
+
 def bulk_grid(deck, block, n):
     """The grid of a data line of a bulk block, or None when this module does not know it."""
     if deck.fmt != "dyna" or deck.long_format or block.suffix:

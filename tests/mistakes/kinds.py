@@ -9,7 +9,7 @@ keeps the first few candidates whose mistake is real.
 """
 import re
 
-from decks import bulk_grid, grid_fields, is_number_text, tokens, SET_LIST_GRID, DYNA_GRIDS
+from decks import bulk_grid, grid_fields, grid_reading, is_number_text, tokens, SET_LIST_GRID, DYNA_GRIDS
 
 
 class Plant:
@@ -216,7 +216,7 @@ def width_8(host, rng):
         if ok and data:
             # The block's first data line (a set's SID card, not rewritten) or the first rewritten line
             # whose reading changes (an *ELEMENT_SPH line 8 wide reads the same until MASS is long).
-            first = next((n for n in data if grid_fields(lines[n - 1], grid) != grid_fields(host.deck.lines[n - 1], grid)),
+            first = next((n for n in data if grid_reading(lines[n - 1], grid) != grid_reading(host.deck.lines[n - 1], grid)),
                          data[0])
             yield Plant("width-8", lines, {b.data[0], first}, f"{b.name} block at line {b.line} ({len(data)} lines)",
                         "grid", data, grid)
@@ -274,6 +274,8 @@ def _unused_id(host, rng):
 
 def missing_id(host, rng):
     """An id that does not exist: a part's section, material or EOS, a particle's part, a set."""
+    if any(code == "DK010" for _, _, code, _, _ in host.found):
+        return  # an include is missing: it may define any id, so references are not checked (DK010 says so)
     cands = []
     for n, fields in host.fields.items():
         b = host.deck.block_of(n)
@@ -463,6 +465,23 @@ def radioss_shift(host, rng):
                     f"{host.deck.block_of(n).name} line {n}", "dump")
 
 
+def tab_in_line(host, rng):
+    """A tab typed in a fixed-format line: the blanks before a value replaced by one tab (an editor's Tab
+    key where the field's columns were meant). Most such tabs change nothing read (the value stays in
+    its field, the solver counting a tab as one column): those are dropped as no-ops."""
+    lines = [(b, n) for b, n in data_lines_with_fields(host) if "," not in host.deck.lines[n - 1]]
+    rng.shuffle(lines)
+    for b, n in lines:
+        text = host.deck.lines[n - 1]
+        words = tokens(text)
+        gaps = [(words[i - 1][1], words[i][0]) for i in range(1, len(words)) if words[i][0] - words[i - 1][1] >= 2]
+        if not gaps:
+            continue
+        s, e = rng.choice(gaps)
+        yield Plant("tab-in-line", replaced(host.deck.lines, n, text[:s] + "\t" + text[e:]), [n],
+                    f"{b.name} line {n}: tab at column {s + 1}", "dump")
+
+
 def duplicated_block(host, rng):
     """A *PART / *SECTION_SPH / *MAT_ block (OpenRadioss /PART, /PROP, /MAT) copied and pasted with its id unchanged."""
     prefixes = ("*PART", "*SECTION_SPH", "*MAT_") if host.deck.fmt == "dyna" else ("/PART/", "/PROP/", "/MAT/")
@@ -480,7 +499,7 @@ def duplicated_block(host, rng):
 
 KINDS = [keyword_typo, shift_right_1, shift_right_3, shift_left_2, width_8, letter_o, decimal_comma,
          missing_id, zero_density, no_control_sph, parameter_typo, radioss_straddle, radioss_shift,
-         duplicated_block]
+         duplicated_block, tab_in_line]
 KIND_NAMES = ["keyword-typo", "shift-right-1", "shift-right-3", "shift-left-2", "width-8", "letter-O",
               "decimal-comma", "missing-id", "zero-density", "no-control-sph", "parameter-typo",
-              "radioss-straddle", "radioss-shift", "duplicated-block"]
+              "radioss-straddle", "radioss-shift", "duplicated-block", "tab-in-line"]

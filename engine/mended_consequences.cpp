@@ -1,0 +1,87 @@
+#include "engine/mended_consequences.hpp"
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <string>
+#include <tuple>
+
+#include "edit/apply_edits.hpp"
+#include "model/shift_diagnosis.hpp"
+
+namespace sphdeck::engine {
+namespace {
+
+bool is_cause(const diag::Diagnostic& d) {
+    const bool shift = d.code == "DK029" && d.severity == diag::Severity::Error;
+    return (shift || d.code == "DK030") && !d.fixes.empty() && d.fixes.front().safe &&
+           !d.fixes.front().edits.empty();
+}
+
+using Place = std::tuple<std::string, grammar::FileId, std::uint32_t, std::uint32_t>;
+Place place_of(const diag::Diagnostic& d) { return {d.code, d.span.file, d.span.line, d.span.column}; }
+
+// The deck's files with the cause's fix applied, over the caller's documents.
+grammar::FileOverlay mended_files(const grammar::RawDeck& deck, const diag::Fix& fix,
+                                  const grammar::FileOverlay* documents) {
+    grammar::FileOverlay mended = documents ? *documents : grammar::FileOverlay{};
+    std::map<grammar::FileId, std::vector<diag::TextEdit>> by_file;
+    for (const diag::TextEdit& e : fix.edits)
+        if (e.span.valid()) by_file[e.span.file].push_back(e);
+    for (const auto& [file, edits] : by_file) {
+        const grammar::SourceFile& source = deck.sources.file(file);
+        mended.set(source.path, edit::apply_edits(std::string_view(source.text), edits).text);
+    }
+    return mended;
+}
+
+// The lines a cause stands for: its own line, or (DK030) the lines its fix rewrites.
+bool on_cause_lines(const diag::Diagnostic& d, const std::vector<const diag::Diagnostic*>& causes) {
+    return std::any_of(causes.begin(), causes.end(), [&](const diag::Diagnostic* c) {
+        if (c->span.file == d.span.file && c->span.line == d.span.line) return true;
+        const auto& edits = c->fixes.front().edits;
+        return std::any_of(edits.begin(), edits.end(), [&](const diag::TextEdit& e) {
+            return e.span.file == d.span.file && e.span.line == d.span.line;
+        });
+    });
+}
+
+}  // namespace
+
+void fold_mended_consequences(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& diagnostics,
+                              const grammar::FileOverlay* documents, const RecheckMended& recheck) {
+    std::vector<std::size_t> cause_at;
+    for (std::size_t i = 0; i < diagnostics.size(); ++i)
+        if (is_cause(diagnostics[i])) cause_at.push_back(i);
+    if (cause_at.empty() || cause_at.size() > max_mended_causes || deck.lines.size() > max_mended_deck_lines) return;
+    std::vector<const diag::Diagnostic*> causes;
+    for (std::size_t i : cause_at) causes.push_back(&diagnostics[i]);
+    std::vector<std::size_t> candidates;
+    for (std::size_t i = 0; i < diagnostics.size(); ++i) {
+        const diag::Diagnostic& d = diagnostics[i];
+        if (d.code == "DK029" || d.code == "DK030" || on_cause_lines(d, causes)) continue;
+        candidates.push_back(i);
+    }
+    if (candidates.empty()) return;
+
+    std::vector<int> folded_into(diagnostics.size(), -1);
+    for (std::size_t k = 0; k < cause_at.size(); ++k) {
+        std::multiset<Place> after;
+        for (const diag::Diagnostic& d : recheck(mended_files(deck, diagnostics[cause_at[k]].fixes.front(), documents)))
+            after.insert(place_of(d));
+        for (std::size_t i : candidates)
+            if (folded_into[i] < 0 && after.count(place_of(diagnostics[i])) == 0)
+                folded_into[i] = static_cast<int>(cause_at[k]);
+    }
+    for (std::size_t i : candidates)
+        if (folded_into[i] >= 0) model::fold_into(diagnostics[static_cast<std::size_t>(folded_into[i])], std::move(diagnostics[i]));
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < diagnostics.size(); ++i)
+        if (folded_into[i] < 0) {
+            if (kept != i) diagnostics[kept] = std::move(diagnostics[i]);
+            ++kept;
+        }
+    diagnostics.resize(kept);
+}
+
+}  // namespace sphdeck::engine

@@ -1,0 +1,74 @@
+#include "grammar/lone_value_shift.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include "grammar/line_tokens.hpp"
+#include "grammar/shifted_line.hpp"
+#include "grammar/value.hpp"
+
+namespace sphdeck::grammar {
+namespace {
+
+using keywords::FieldType;
+
+constexpr std::size_t max_shift = 4;  // "a few columns", as grammar/shifted_line.cpp
+
+std::size_t slot_end(const FixedField& f) { return std::size_t{f.start} + f.width; }
+
+bool number_field(FieldType t) { return t == FieldType::Integer || t == FieldType::Real; }
+
+// The field holding [begin, end) whole, or `fields` when none does.
+std::size_t field_of(std::size_t begin, std::size_t end, std::span<const FixedField> slots, std::size_t fields) {
+    for (std::size_t s = 0; s < fields; ++s)
+        if (slots[s].start <= begin && end <= slot_end(slots[s])) return s;
+    return fields;
+}
+
+}  // namespace
+
+void tally_alignment(std::string_view text, std::span<const FixedField> slots, std::span<const FieldType> types,
+                     AlignmentTally& tally) {
+    const std::size_t fields = std::min(slots.size(), types.size());
+    for (const LineToken& t : line_tokens(text)) {
+        const std::size_t s = field_of(t.begin, t.end, slots, fields);
+        if (s == fields || !number_field(types[s])) continue;
+        if (t.end == slot_end(slots[s])) ++tally.right;
+        else ++tally.other;
+    }
+}
+
+std::optional<LoneShift> find_lone_shift(std::string_view text, std::span<const FixedField> slots,
+                                         std::span<const FieldType> types) {
+    constexpr std::size_t max_values = 8;
+    if (text.find('\t') != std::string_view::npos || is_free_format(text)) return std::nullopt;
+    const std::vector<LineToken> tokens = line_tokens(text);
+    if (tokens.empty() || tokens.size() > max_values) return std::nullopt;
+    const std::size_t fields = std::min(slots.size(), types.size());
+    // As written: every value whole in a number field, none at its field's end.
+    for (const LineToken& t : tokens) {
+        const std::size_t k = field_of(t.begin, t.end, slots, fields);
+        if (k == fields || !number_field(types[k]) || t.end == slot_end(slots[k])) return std::nullopt;
+    }
+    std::optional<LoneShift> found;
+    for (std::size_t n = 1; n <= max_shift; ++n) {
+        std::vector<LineToken> moved = tokens;
+        if (!place_tokens(text, moved, slots, types, static_cast<int>(n))) continue;
+        const bool at_ends = std::all_of(moved.begin(), moved.end(), [&](const LineToken& t) {
+            return number_field(types[t.slot]) && t.end - n == slot_end(slots[t.slot]);
+        });
+        if (!at_ends) continue;
+        if (found) return std::nullopt;  // two readings: not certain
+        const LineToken& first = moved.front();
+        found = LoneShift{static_cast<int>(n), first.slot, field_of(first.begin, first.end, slots, fields),
+                          first.begin, first.end, tokens.size(), std::nullopt};
+    }
+    if (found && tokens.front().begin >= static_cast<std::size_t>(found->columns)) {
+        std::string moved(text.substr(static_cast<std::size_t>(found->columns)));
+        while (!moved.empty() && moved.back() == ' ') moved.pop_back();
+        found->realigned = std::move(moved);
+    }
+    return found;
+}
+
+}  // namespace sphdeck::grammar

@@ -1,0 +1,58 @@
+#include "lint/rules_thermal_duplicates.hpp"
+
+#include <charconv>
+#include <map>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "grammar/fields.hpp"
+
+namespace sphdeck::lint {
+namespace {
+
+struct ThermalId {
+    long long id = 0;
+    grammar::Span span;  // the id as written
+};
+
+// TMID: the first field of the first card (after the title line of _TITLE); nullopt when it is not a
+// plain integer (a parameter, free format: left alone).
+std::optional<ThermalId> thermal_id(const grammar::RawDeck& deck, const grammar::Block& b) {
+    const grammar::CardLine* line = deck.begin_lines(b) + (b.keyword.find("_TITLE") != std::string::npos);
+    if (line >= deck.end_lines(b)) return std::nullopt;
+    const std::string_view text = deck.text(*line);
+    if (grammar::is_free_format(text)) return std::nullopt;
+    const std::size_t width = b.format == grammar::CardFormat::Long ? 20 : 10;
+    const std::string_view field = text.substr(0, std::min(text.size(), width));
+    const std::size_t begin = field.find_first_not_of(' ');
+    if (begin == std::string_view::npos) return std::nullopt;
+    const std::size_t end = field.find_last_not_of(" \r") + 1;
+    long long id = 0;
+    auto [stop, ec] = std::from_chars(field.data() + begin, field.data() + end, id);
+    if (ec != std::errc() || stop != field.data() + end) return std::nullopt;
+    return ThermalId{id, grammar::Span{line->file, line->line, static_cast<std::uint32_t>(begin + 1),
+                                       static_cast<std::uint32_t>(end + 1)}};
+}
+
+}  // namespace
+
+void check_thermal_material_duplicates(RuleContext& c, const model::CaseBlocks& cases) {
+    std::map<long long, std::vector<grammar::Span>> seen;
+    for (const grammar::Block& b : c.deck.blocks) {
+        if (b.keyword.rfind("*MAT_THERMAL_", 0) != 0) continue;
+        const auto tmid = thermal_id(c.deck, b);
+        if (!tmid) continue;
+        auto& earlier = seen[tmid->id];
+        const std::string_view in_case = cases.case_of(tmid->span);
+        for (const grammar::Span& first : earlier) {
+            if (!model::same_run(cases.case_of(first), in_case)) continue;
+            c.report("REF006", tmid->span, fmt::format("thermal material {} is defined twice", tmid->id))
+                .notes.push_back({first, "first defined here"});
+            break;
+        }
+        earlier.push_back(tmid->span);
+    }
+}
+
+}  // namespace sphdeck::lint

@@ -1,0 +1,48 @@
+#include "model/decimal_comma.hpp"
+
+#include <cctype>
+
+#include <fmt/format.h>
+
+namespace sphdeck::model {
+namespace {
+
+bool digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
+bool separator(char c) { return c == ' ' || c == ',' || c == '\t'; }
+
+std::string shown(std::string_view text) {
+    constexpr std::size_t limit = 40;
+    return text.size() > limit ? std::string(text.substr(0, limit)) + "..." : std::string(text);
+}
+
+}  // namespace
+
+std::optional<DecimalComma> find_decimal_comma(std::string_view text) {
+    const std::size_t first = text.find(',');
+    if (first == std::string_view::npos || first < 2 || text[0] != ' ' || text[1] != ' ') return std::nullopt;
+    std::size_t comma = first;
+    while (comma != std::string_view::npos &&
+           !(comma > 0 && comma + 1 < text.size() && digit(text[comma - 1]) && digit(text[comma + 1])))
+        comma = text.find(',', comma + 1);
+    if (comma == std::string_view::npos) return std::nullopt;
+    std::size_t from = comma, to = comma + 1;
+    while (from > 0 && !separator(text[from - 1])) --from;
+    while (to < text.size() && !separator(text[to])) ++to;
+    return DecimalComma{from, to,
+                        std::string(text.substr(from, comma - from)) + "." +
+                            std::string(text.substr(comma + 1, to - comma - 1))};
+}
+
+diag::Diagnostic decimal_comma_finding(const DecimalComma& comma, const grammar::CardLine& line,
+                                       std::string_view solver, std::string_view reading) {
+    return diag::Diagnostic{
+        "DK031", diag::Severity::Warning,
+        fmt::format("a comma inside a fixed-format field: {} reads this line as free format{}; a decimal comma? "
+                    "write {}",
+                    solver, reading.empty() ? "" : fmt::format(" ({})", reading), shown(comma.meant)),
+        grammar::Span{line.file, line.line, static_cast<std::uint32_t>(comma.begin + 1),
+                      static_cast<std::uint32_t>(comma.end + 1)},
+        {}};
+}
+
+}  // namespace sphdeck::model

@@ -1,0 +1,29 @@
+// A decimal comma typed for a decimal point (`0,002` for `0.002`) in a fixed-format line. Both
+// solvers read a line holding a comma as free format (the comma separates values), so the number is
+// cut in two and every later value moves one field on, silently. One finder for both decoders (DK031).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "diag/diagnostic.hpp"
+#include "grammar/raw_deck.hpp"
+
+namespace sphdeck::model {
+
+struct DecimalComma {
+    std::size_t begin = 0, end = 0;  // 0-based [begin, end) of the word holding the comma
+    std::string meant;               // the word with a point for the comma
+};
+
+// A comma between two digits on a line that starts with two blanks (a fixed-format field's padding:
+// a genuine free-format line is written from its first column, or with a blank after each comma).
+std::optional<DecimalComma> find_decimal_comma(std::string_view text);
+
+// DK031 at the word: "... `solver` reads this line as free format (`reading`); a decimal comma? write X".
+// `reading`: the first fields as read, "ENDTIM 0, ENDCYC 2" (empty: none shown).
+diag::Diagnostic decimal_comma_finding(const DecimalComma& comma, const grammar::CardLine& line,
+                                       std::string_view solver, std::string_view reading);
+
+}  // namespace sphdeck::model
