@@ -22,7 +22,7 @@ inline constexpr std::array<std::string_view, 8> kTokenTypes = {"keyword",  "com
                                                                  "real",     "variable",   "enumMember", "parameter"};
 // Modifier bits: declaration (an id or parameter defined here), oddField (the 2nd, 4th... field of
 // its card), header (a `$#` column-header comment), include (an include file name).
-enum TokenModifier : std::uint32_t { kDeclaration = 1, kOddField = 2, kHeader = 4, kInclude = 8 };
+inline constexpr std::uint32_t kDeclaration = 1, kOddField = 2, kHeader = 4, kInclude = 8;
 inline constexpr std::array<std::string_view, 4> kTokenModifiers = {"declaration", "oddField", "header", "include"};
 
 struct SemanticToken {

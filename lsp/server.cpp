@@ -215,8 +215,8 @@ void Server::handle_notification(const std::string& method, const nlohmann::json
             if (understood)
                 for (const nlohmann::json& change : *changes) workspace_.changed_on_disk(string_member(change, "uri"));
         } else if (method == "workspace/didChangeConfiguration") {
-            if (const nlohmann::json* settings = inlay_settings_in(params.value("settings", nlohmann::json())))
-                inlay_settings_ = *settings;
+            const nlohmann::json options = params.value("settings", nlohmann::json());
+            if (const nlohmann::json* settings = inlay_settings_in(options)) inlay_settings_ = *settings;
         } else if (method == "initialized" && watch_dynamically_) {
             // Include files change on disk too (another editor, a generator): ask to hear of it.
             const nlohmann::json watcher = {{"globPattern", "**/*.{k,key,dyn,inc,rad,k.inc,dat}"}};
@@ -246,8 +246,8 @@ nlohmann::json Server::initialize(const nlohmann::json& params) {
     if (roots.empty())
         if (auto path = string_member(params, "rootPath"); !path.empty()) roots.emplace_back(path);
     workspace_.set_roots(std::move(roots));
-    if (const nlohmann::json* settings = inlay_settings_in(params.value("initializationOptions", nlohmann::json())))
-        inlay_settings_ = *settings;
+    const nlohmann::json options = params.value("initializationOptions", nlohmann::json());
+    if (const nlohmann::json* settings = inlay_settings_in(options)) inlay_settings_ = *settings;
     if (const nlohmann::json* capabilities = member(params, "capabilities"))
         if (const nlohmann::json* ws = member(*capabilities, "workspace"))
             if (const nlohmann::json* watched = member(*ws, "didChangeWatchedFiles"))

@@ -187,7 +187,7 @@ local expected_tokens = {
   { 3, 1, "keyword" },  -- *CONTROL_TERMINATION
   { 4, 3, "comment", "header" },  -- the $# line
   { 5, 7, "real" },  -- ENDTIM 0.002
-  { 5, 12, "number", "oddField" },  -- ENDCYC, the second field
+  { 5, 15, "number", "oddField" },  -- ENDCYC 10000O (unreadable, still an integer field), the second field
 }
 for _, e in ipairs(expected_tokens) do
   local t = token_at(e[1], e[2])
