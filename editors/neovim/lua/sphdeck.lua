@@ -134,6 +134,9 @@ end
 -- types such as @lsp.type.keyword itself): sphdeck's own type `real`, and the modifiers. `default`:
 -- a colour scheme or the user's own setting wins.
 function M.default_highlights()
+  if vim.fn.has("nvim-0.9") == 0 then
+    return -- no semantic tokens before 0.9 (and 0.7 refuses '@' in group names)
+  end
   local function set(group, spec)
     spec.default = true
     pcall(vim.api.nvim_set_hl, 0, group, spec)
