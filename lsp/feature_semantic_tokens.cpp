@@ -71,7 +71,10 @@ nlohmann::json semantic_tokens_range(const CheckedDeck& deck, grammar::FileId fi
         !parse_position(params["range"].value("start", nlohmann::json()), start) ||
         !parse_position(params["range"].value("end", nlohmann::json()), end) || file >= sources.size())
         return nullptr;
-    nlohmann::json out = encode(sources, file, semantic_tokens(deck, file, {start.line + 1, end.line + 1}));
+    // A range as long as a full request of a big file is capped the same way (editors ask for a screenful).
+    TokenOptions options;
+    if (end.line >= start.line && end.line - start.line > kFullRequestLines) options.max_block_lines = kBigBlock;
+    nlohmann::json out = encode(sources, file, semantic_tokens(deck, file, {start.line + 1, end.line + 1}, options));
     out.erase("resultId");
     return out;
 }

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "engine/check.hpp"
 #include "lsp/features.hpp"
 #include "lsp/semantic_tokens.hpp"
@@ -298,4 +300,69 @@ TEST_CASE("lsp server: tokens legend, inlay hint settings from initializationOpt
     workspace.flush();
     CHECK(bad_real(include_uri));
     fs::remove_all(dir);
+}
+
+TEST_CASE("lsp semantic tokens and inlay hints on every test deck: ordered, on the line, range equals full") {
+    namespace fs = std::filesystem;
+    std::size_t decks = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(fs::path(SPHDECK_SOURCE_DIR) / "decks" / "tests")) {
+        const auto ext = entry.path().extension();
+        if (!entry.is_regular_file() || (ext != ".k" && ext != ".rad")) continue;
+        lsp::CheckedDeck deck;
+        deck.main = entry.path();
+        try {
+            deck.result = engine::check_file(entry.path().string());
+        } catch (const std::exception&) {
+            continue;
+        }
+        ++decks;
+        const auto& sources = deck.result.deck.sources;
+        for (grammar::FileId file = 0; file < sources.size(); ++file) {
+            INFO(entry.path().string() << " file " << file);
+            const std::uint32_t lines = sources.line_count(file);
+            const auto full = lsp::answer_feature("textDocument/semanticTokens/full", deck, file, nlohmann::json::object());
+            const auto whole = lsp::answer_feature("textDocument/semanticTokens/range", deck, file, {{"range", range(0, lines)}});
+            REQUIRE(full.result.contains("data"));
+            CHECK(full.result["data"] == whole.result["data"]);
+            const auto tokens = decode(full.result);
+            for (std::size_t i = 0; i < tokens.size(); ++i) {
+                const auto& t = tokens[i];
+                CHECK(t.length > 0);
+                CHECK(t.line < lines);
+                CHECK(t.character + t.length <= sources.line_text(file, t.line + 1).size());  // ASCII decks
+                if (i > 0 && tokens[i - 1].line == t.line) CHECK(tokens[i - 1].character + tokens[i - 1].length <= t.character);
+            }
+            const auto hints = lsp::answer_feature("textDocument/inlayHint", deck, file,
+                                                   {{"range", range(0, lines)}, {"settings", {{"bulkBlocks", true}}}});
+            REQUIRE(hints.result.is_array());
+            for (const auto& h : hints.result) {
+                const auto line = h["position"]["line"].get<std::uint32_t>();
+                CHECK(line < lines);
+                CHECK(h["position"]["character"].get<std::size_t>() <= sources.line_text(file, line + 1).size());
+            }
+        }
+    }
+    CHECK(decks > 100);
+}
+
+TEST_CASE("lsp semantic tokens: a range inside a big *NODE block equals those lines of the full answer") {
+    std::string text = "*KEYWORD\n*NODE\n";
+    for (int n = 1; n <= 700; ++n) text += fmt::format("{:8d}{:16.3f}{:16.3f}{:16.3f}\n", n, n * 0.01, 0.5, 0.0);
+    text += "*END\n";
+    const auto deck = check(text);
+    const auto full = decode(ask(deck, "textDocument/semanticTokens/full", nlohmann::json::object()));
+    const auto part = decode(ask(deck, "textDocument/semanticTokens/range", {{"range", range(400, 409)}}));
+    std::vector<Token> expected;
+    for (const auto& t : full)
+        if (t.line >= 400 && t.line <= 409) expected.push_back(t);
+    REQUIRE(part.size() == expected.size());
+    REQUIRE(part.size() == 40);  // NID, X, Y, Z on each of 10 lines
+    for (std::size_t i = 0; i < part.size(); ++i) {
+        CHECK(part[i].line == expected[i].line);
+        CHECK(part[i].character == expected[i].character);
+        CHECK(part[i].type == expected[i].type);
+        CHECK(part[i].modifiers == expected[i].modifiers);
+    }
+    CHECK(part[0].type == "variable");
+    CHECK(part[1].type == "real");
 }
