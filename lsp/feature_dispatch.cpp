@@ -41,7 +41,7 @@ nlohmann::json folding_of(const CheckedDeck& deck, grammar::FileId file, const n
 }
 
 // One row a feature.
-constexpr std::array<FeatureRow, 11> kFeatures{{
+constexpr std::array<FeatureRow, 12> kFeatures{{
     {"textDocument/hover", "hoverProvider", at_position<hover>},
     {"textDocument/definition", "definitionProvider", at_position<definition>},
     {"textDocument/references", "referencesProvider", references_of},
@@ -53,6 +53,7 @@ constexpr std::array<FeatureRow, 11> kFeatures{{
     {"textDocument/semanticTokens/full/delta", "semanticTokensProvider", semantic_tokens_delta},
     {"textDocument/semanticTokens/range", "semanticTokensProvider", semantic_tokens_range},
     {"textDocument/inlayHint", "inlayHintProvider", inlay_hints},
+    {"textDocument/signatureHelp", "signatureHelpProvider", at_position<signature_help>},
 }};
 }  // namespace
 
@@ -69,6 +70,8 @@ nlohmann::json feature_capabilities() {
     // Completion is asked for on these characters too (a keyword after '*', a value after ',').
     capabilities["completionProvider"] = {{"triggerCharacters", {"*", ","}}, {"resolveProvider", false}};
     capabilities["codeActionProvider"] = {{"codeActionKinds", {"quickfix"}}};
+    // Typing a card line: blanks align a value, commas separate free-format ones.
+    capabilities["signatureHelpProvider"] = {{"triggerCharacters", {" ", ","}}};
     capabilities["semanticTokensProvider"] = {
         {"legend", semantic_tokens_legend()}, {"range", true}, {"full", {{"delta", true}}}};
     return capabilities;

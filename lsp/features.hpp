@@ -58,6 +58,11 @@ nlohmann::json semantic_tokens_legend();
 // the server): enable, bulkBlocks (default false), defaults, parameterValues. InlayHint[].
 nlohmann::json inlay_hints(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json& params);
 
+// textDocument/signatureHelp on a card line: the card's fields as one signature, the field under
+// the cursor (blank part included; on a line being typed, the card it will be read as) active.
+// SignatureHelp or null.
+nlohmann::json signature_help(const CheckedDeck& deck, grammar::FileId file, TextPosition position);
+
 // The feature requests by method name, for the server: it finds the deck and the file that a
 // request's textDocument names, then asks here. `handled` is false for a method no feature answers
 // (the server then says MethodNotFound). The table is lsp/feature_dispatch.cpp: one row a feature.

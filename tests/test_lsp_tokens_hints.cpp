@@ -366,3 +366,25 @@ TEST_CASE("lsp semantic tokens: a range inside a big *NODE block equals those li
     CHECK(part[0].type == "variable");
     CHECK(part[1].type == "real");
 }
+
+TEST_CASE("lsp signature help: the card's fields, the one under the cursor active (blank part included)") {
+    const auto deck = check(kDeck);
+    const std::uint32_t card = line_of(kDeck, "         1         0   1.0e+20");
+    auto help = ask(deck, "textDocument/signatureHelp", {{"position", {{"line", card}, {"character", 53}}}});
+    REQUIRE(help.is_object());
+    const auto& sig = help["signatures"][0];
+    CHECK(sig["label"].get<std::string>().rfind("*CONTROL_SPH", 0) == 0);
+    REQUIRE(help.contains("activeParameter"));
+    const auto active = help["activeParameter"].get<std::size_t>();
+    const auto span = sig["parameters"][active]["label"];
+    CHECK(sig["label"].get<std::string>().substr(span[0].get<std::size_t>(),
+                                                 span[1].get<std::size_t>() - span[0].get<std::size_t>()) == "FORM");
+    // Free format: the field after the commas typed so far.
+    const std::string typing = "*KEYWORD\n*SECTION_SPH\n         3,\n*END\n";
+    const auto typed = check(typing);
+    help = ask(typed, "textDocument/signatureHelp", {{"position", {{"line", 2}, {"character", 11}}}});
+    REQUIRE(help.is_object());
+    CHECK(help["activeParameter"] == 1);  // after the comma: CSLH
+    CHECK(ask(deck, "textDocument/signatureHelp", {{"position", {{"line", line_of(kDeck, "$#    ncbs")}, {"character", 3}}}})
+              .is_null());
+}
