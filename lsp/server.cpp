@@ -219,7 +219,7 @@ void Server::handle_notification(const std::string& method, const nlohmann::json
             if (const nlohmann::json* settings = inlay_settings_in(options)) inlay_settings_ = *settings;
         } else if (method == "initialized" && watch_dynamically_) {
             // Include files change on disk too (another editor, a generator): ask to hear of it.
-            const nlohmann::json watcher = {{"globPattern", "**/*.{k,key,dyn,inc,rad,k.inc,dat}"}};
+            const nlohmann::json watcher = {{"globPattern", "**/*.{k,key,dyn,inc,rad}"}};
             send({{"jsonrpc", "2.0"},
                   {"id", "sphdeck-watch-includes"},
                   {"method", "client/registerCapability"},
