@@ -281,6 +281,16 @@ TEST_CASE("lsp server: tokens legend, inlay hint settings from initializationOpt
         registered |= m.value("method", "") == "client/registerCapability";
     CHECK(registered);
 
+    // The include's file name is coloured as one.
+    lsp::CheckedDeck on_disk;
+    on_disk.main = dir / "main.k";
+    on_disk.result = engine::check_file((dir / "main.k").string());
+    const auto tokens = decode(ask(on_disk, "textDocument/semanticTokens/full", nlohmann::json::object()));
+    const Token* name = token_at(tokens, 2, 0);
+    REQUIRE(name);
+    CHECK(name->type == "string");
+    CHECK(name->length == 9);
+    CHECK((name->modifiers & lsp::kInclude) != 0);
     // The include is broken on disk while the deck is open: the watcher's notice re-checks it.
     std::vector<nlohmann::json> published;
     lsp::Workspace workspace([&](const nlohmann::json& params) { published.push_back(params); });
