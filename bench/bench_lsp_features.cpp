@@ -1,5 +1,6 @@
 // bench_lsp_features: how long the editor server's request features take on a checked deck
-// (hover, definition, references, completion, outline, folding), medians of several runs.
+// (hover, definition, references, completion, outline, folding, semantic tokens, inlay hints),
+// medians of several runs.
 //
 //   bench_lsp_features DECK [RUNS]      (RUNS defaults to 5)
 //
@@ -68,6 +69,14 @@ int main(int argc, char** argv) {
         return nlohmann::json{{"position", {{"line", line}, {"character", character}}},
                               {"context", {{"includeDeclaration", true}}}};
     };
+    auto lines = [](std::uint32_t first, std::uint32_t last) {
+        return nlohmann::json{{"range", {{"start", {{"line", first}, {"character", 0}}}, {"end", {{"line", last}, {"character", 0}}}}}};
+    };
+    auto bulk = [&](std::uint32_t first, std::uint32_t last) {
+        nlohmann::json params = lines(first, last);
+        params["settings"] = {{"bulkBlocks", true}};
+        return params;
+    };
     struct Request {
         const char* what;
         const char* method;
@@ -84,6 +93,13 @@ int main(int argc, char** argv) {
         {"completion, the part's SECID", "textDocument/completion", at(part_card, 19)},
         {"documentSymbol", "textDocument/documentSymbol", nlohmann::json::object()},
         {"foldingRange", "textDocument/foldingRange", nlohmann::json::object()},
+        // Issue 29: a screenful (60 lines) mid particles, the head of the deck, the whole file (capped).
+        {"semanticTokens/range, 60 lines mid particles", "textDocument/semanticTokens/range", lines(middle, middle + 60)},
+        {"semanticTokens/range, first 200 lines", "textDocument/semanticTokens/range", lines(0, 200)},
+        {"semanticTokens/full (capped: bulk values left out)", "textDocument/semanticTokens/full", nlohmann::json::object()},
+        {"inlayHint, 60 lines mid particles (off there)", "textDocument/inlayHint", lines(middle, middle + 60)},
+        {"inlayHint, 60 lines mid particles, bulkBlocks", "textDocument/inlayHint", bulk(middle, middle + 60)},
+        {"inlayHint, first 200 lines", "textDocument/inlayHint", lines(0, 200)},
     };
     std::printf("%-45s %10s  %s\n", "request", "median ms", "answer");
     for (const auto& r : requests) {
@@ -91,6 +107,7 @@ int main(int argc, char** argv) {
         const double ms = median_ms(runs, [&] { result = sphdeck::lsp::answer_feature(r.method, deck, 0, r.params).result; });
         std::string answer = result.is_array() ? std::to_string(result.size()) + " items"
                              : result.is_null() ? "null"
+                             : result.contains("data") ? std::to_string(result["data"].size() / 5) + " tokens"
                                                 : "object";
         std::printf("%-45s %10.2f  %s\n", r.what, ms, answer.c_str());
         if (std::getenv("BENCH_SHOW")) std::printf("%s\n", result.dump().substr(0, 600).c_str());

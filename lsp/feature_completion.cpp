@@ -163,9 +163,15 @@ nlohmann::json field_items(const CheckedDeck& deck, const grammar::Block& block,
     if (!index) return list(nlohmann::json::array(), false);
     const keywords::FieldSpec& field = card->fields[*index];
     nlohmann::json items = nlohmann::json::array();
-    for (const auto& c : field.choices)
-        items.push_back(item(std::to_string(c.value), kEnumMember, std::string(c.meaning), edit,
-                             c.since.empty() ? std::string() : fmt::format("since {}", c.since)));
+    for (const auto& c : field.choices) {
+        auto choice = item(std::to_string(c.value), kEnumMember, std::string(c.meaning), edit,
+                           fmt::format("{} = {}: {}{}", field.name, c.value, c.meaning,
+                                       c.since.empty() ? std::string() : fmt::format(" (since {})", c.since)));
+        // The meaning beside the value in the list itself, in the manual's order.
+        choice["labelDetails"] = {{"description", display_text(c.meaning)}};
+        choice["sortText"] = fmt::format("{:05}", items.size());
+        items.push_back(std::move(choice));
+    }
     for (auto word : field.text_choices) items.push_back(item(std::string(word), kValue, std::string(field.name), edit));
     if (auto role = dyna_id_role(match->schema->name, field); role && !role->defines)
         id_items(deck, role->kind, edit, items);

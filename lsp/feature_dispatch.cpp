@@ -41,7 +41,7 @@ nlohmann::json folding_of(const CheckedDeck& deck, grammar::FileId file, const n
 }
 
 // One row a feature.
-constexpr std::array<FeatureRow, 7> kFeatures{{
+constexpr std::array<FeatureRow, 12> kFeatures{{
     {"textDocument/hover", "hoverProvider", at_position<hover>},
     {"textDocument/definition", "definitionProvider", at_position<definition>},
     {"textDocument/references", "referencesProvider", references_of},
@@ -49,6 +49,11 @@ constexpr std::array<FeatureRow, 7> kFeatures{{
     {"textDocument/documentSymbol", "documentSymbolProvider", symbols_of},
     {"textDocument/foldingRange", "foldingRangeProvider", folding_of},
     {"textDocument/codeAction", "codeActionProvider", code_actions},
+    {"textDocument/semanticTokens/full", "semanticTokensProvider", semantic_tokens_full},
+    {"textDocument/semanticTokens/full/delta", "semanticTokensProvider", semantic_tokens_delta},
+    {"textDocument/semanticTokens/range", "semanticTokensProvider", semantic_tokens_range},
+    {"textDocument/inlayHint", "inlayHintProvider", inlay_hints},
+    {"textDocument/signatureHelp", "signatureHelpProvider", at_position<signature_help>},
 }};
 }  // namespace
 
@@ -65,6 +70,10 @@ nlohmann::json feature_capabilities() {
     // Completion is asked for on these characters too (a keyword after '*', a value after ',').
     capabilities["completionProvider"] = {{"triggerCharacters", {"*", ","}}, {"resolveProvider", false}};
     capabilities["codeActionProvider"] = {{"codeActionKinds", {"quickfix"}}};
+    // Typing a card line: blanks align a value, commas separate free-format ones.
+    capabilities["signatureHelpProvider"] = {{"triggerCharacters", {" ", ","}}};
+    capabilities["semanticTokensProvider"] = {
+        {"legend", semantic_tokens_legend()}, {"range", true}, {"full", {{"delta", true}}}};
     return capabilities;
 }
 

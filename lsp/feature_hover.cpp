@@ -13,6 +13,7 @@
 #include "lsp/deck_lookup.hpp"
 #include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
+#include "lsp/field_at_column.hpp"
 #include "model/radioss_decoder.hpp"
 
 namespace sphdeck::lsp {
@@ -135,7 +136,7 @@ nlohmann::json dyna_field_hover(const CheckedDeck& deck, const grammar::Block& b
     const auto& raw = deck.result.deck;
     auto card = dyna_card_at(raw, block, line);
     if (!card) return nullptr;
-    auto index = dyna_field_at(*card->card, block.format, card->values, column);
+    auto index = dyna_field_at_column(*card->card, block.format, card->values, raw.text(line), column);
     if (!index) return nullptr;
     const model::FieldValue& v = card->values[*index];
     const FieldSpec& f = *v.spec;
@@ -186,7 +187,7 @@ nlohmann::json radioss_hover(const CheckedDeck& deck, const grammar::Block& bloc
         grammar::Span span{card_line->file, card_line->line, 1, raw.length(*card_line) + 1};
         return hover_json(fmt::format("title of `{}`", spec->name), raw.sources, span);
     }
-    auto index = radioss_field_at(*card, raw.text(*card_line), column);
+    auto index = radioss_field_at_column(*card, raw.text(*card_line), column);
     if (!index) return nullptr;
     const model::RadiossValue& v = card->values[*index];
     grammar::Span span = v.span;

@@ -44,6 +44,25 @@ nlohmann::json folding_ranges(const CheckedDeck& deck, grammar::FileId file);
 // whole params object: textDocument, range, context). CodeAction[] with WorkspaceEdits on `uri`.
 nlohmann::json code_actions(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json& params);
 
+// textDocument/semanticTokens/full, /full/delta (answered with the whole set unless nothing
+// changed) and /range: SemanticTokens ({"resultId", "data"}) by the legend of
+// semantic_tokens_legend() (lsp/semantic_tokens.hpp). A full request on a file over 100,000 lines
+// leaves out the values of blocks over 1,000 lines; a range request colours everything it covers.
+nlohmann::json semantic_tokens_full(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json& params);
+nlohmann::json semantic_tokens_delta(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json& params);
+nlohmann::json semantic_tokens_range(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json& params);
+nlohmann::json semantic_tokens_legend();
+
+// textDocument/inlayHint for params.range: field names beside values, defaults of blank fields,
+// values of `&name` references. params["settings"] (the client's "inlayHints" settings, added by
+// the server): enable, bulkBlocks (default false), defaults, parameterValues. InlayHint[].
+nlohmann::json inlay_hints(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json& params);
+
+// textDocument/signatureHelp on a card line: the card's fields as one signature, the field under
+// the cursor (blank part included; on a line being typed, the card it will be read as) active.
+// SignatureHelp or null.
+nlohmann::json signature_help(const CheckedDeck& deck, grammar::FileId file, TextPosition position);
+
 // The feature requests by method name, for the server: it finds the deck and the file that a
 // request's textDocument names, then asks here. `handled` is false for a method no feature answers
 // (the server then says MethodNotFound). The table is lsp/feature_dispatch.cpp: one row a feature.

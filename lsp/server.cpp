@@ -19,10 +19,21 @@ struct RpcError {
 };
 
 // The document requests the features answer; with no deck reading the file their answer is null.
-constexpr std::array<std::string_view, 7> kDocumentFeatures = {
+constexpr std::array<std::string_view, 12> kDocumentFeatures = {
     "textDocument/hover",          "textDocument/definition",   "textDocument/references",
     "textDocument/completion",     "textDocument/documentSymbol", "textDocument/foldingRange",
-    "textDocument/codeAction"};
+    "textDocument/codeAction",     "textDocument/semanticTokens/full", "textDocument/semanticTokens/full/delta",
+    "textDocument/semanticTokens/range", "textDocument/inlayHint", "textDocument/signatureHelp"};
+
+// The "inlayHints" object of initializationOptions or of didChangeConfiguration's settings, also
+// under a "sphdeck" section; null when there is none.
+const nlohmann::json* inlay_settings_in(const nlohmann::json& options) {
+    if (!options.is_object()) return nullptr;
+    if (auto section = options.find("sphdeck"); section != options.end() && section->is_object())
+        return inlay_settings_in(*section);
+    auto hints = options.find("inlayHints");
+    return hints != options.end() && hints->is_object() ? &*hints : nullptr;
+}
 
 bool valid_id(const nlohmann::json& id) { return id.is_number_integer() || id.is_string(); }
 
@@ -198,6 +209,25 @@ void Server::handle_notification(const std::string& method, const nlohmann::json
                                                                          : std::nullopt);
         } else if (method == "textDocument/didClose") {
             understood = workspace_.close(uri);
+        } else if (method == "workspace/didChangeWatchedFiles") {
+            const nlohmann::json* changes = member(params, "changes");
+            understood = changes && changes->is_array();
+            if (understood)
+                for (const nlohmann::json& change : *changes) workspace_.changed_on_disk(string_member(change, "uri"));
+        } else if (method == "workspace/didChangeConfiguration") {
+            const nlohmann::json options = params.value("settings", nlohmann::json());
+            if (const nlohmann::json* settings = inlay_settings_in(options)) inlay_settings_ = *settings;
+        } else if (method == "initialized" && watch_dynamically_) {
+            // Include files change on disk too (another editor, a generator): ask to hear of it.
+            const nlohmann::json watcher = {{"globPattern", "**/*.{k,key,dyn,inc,rad}"}};
+            send({{"jsonrpc", "2.0"},
+                  {"id", "sphdeck-watch-includes"},
+                  {"method", "client/registerCapability"},
+                  {"params",
+                   {{"registrations",
+                     {{{"id", "sphdeck-watch-includes"},
+                       {"method", "workspace/didChangeWatchedFiles"},
+                       {"registerOptions", {{"watchers", {watcher}}}}}}}}}});
         }
         // initialized, $/cancelRequest (read ahead), $/setTrace and the rest: nothing to do.
         if (!understood) log(method + ": malformed parameters or a document that is not open, ignored");
@@ -216,6 +246,13 @@ nlohmann::json Server::initialize(const nlohmann::json& params) {
     if (roots.empty())
         if (auto path = string_member(params, "rootPath"); !path.empty()) roots.emplace_back(path);
     workspace_.set_roots(std::move(roots));
+    const nlohmann::json options = params.value("initializationOptions", nlohmann::json());
+    if (const nlohmann::json* settings = inlay_settings_in(options)) inlay_settings_ = *settings;
+    if (const nlohmann::json* capabilities = member(params, "capabilities"))
+        if (const nlohmann::json* ws = member(*capabilities, "workspace"))
+            if (const nlohmann::json* watched = member(*ws, "didChangeWatchedFiles"))
+                if (const nlohmann::json* dynamic = member(*watched, "dynamicRegistration"))
+                    watch_dynamically_ = dynamic->is_boolean() && dynamic->get<bool>();
 
     nlohmann::json capabilities = feature_capabilities();
     capabilities["positionEncoding"] = "utf-16";
@@ -232,6 +269,12 @@ nlohmann::json Server::document_request(const std::string& method, const nlohman
     const std::filesystem::path path = path_from_uri(uri);
     const auto located = path.empty() ? std::nullopt : workspace_.locate(path);
     if (located) {
+        if (method == "textDocument/inlayHint" && params.is_object()) {
+            nlohmann::json with_settings = params;
+            with_settings["settings"] = inlay_settings_;
+            FeatureAnswer answer = answer_feature(method, *located->deck, located->file, with_settings);
+            if (answer.handled) return std::move(answer.result);
+        }
         FeatureAnswer answer = answer_feature(method, *located->deck, located->file, params);
         if (answer.handled) return std::move(answer.result);
     } else if (feature) {

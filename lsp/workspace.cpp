@@ -61,6 +61,13 @@ bool Workspace::save(const std::string& uri, const std::optional<std::string>& t
     return true;
 }
 
+bool Workspace::changed_on_disk(const std::string& uri) {
+    const fs::path path = path_from_uri(uri);
+    if (path.empty()) return false;
+    dirty_.insert(engine::Documents::key(path));  // an open buffer still has the say over the disk
+    return true;
+}
+
 bool Workspace::close(const std::string& uri) {
     const fs::path path = path_from_uri(uri);
     if (path.empty()) return false;

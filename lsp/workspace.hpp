@@ -39,6 +39,9 @@ public:
     bool change(const std::string& uri, std::int64_t version, const nlohmann::json& content_changes);
     bool save(const std::string& uri, const std::optional<std::string>& text);
     bool close(const std::string& uri);
+    // workspace/didChangeWatchedFiles: a file changed, appeared or went away on disk; the decks that
+    // read it (or looked for it) are checked again on the next flush. False for a URI that is no file.
+    bool changed_on_disk(const std::string& uri);
 
     // Re-checks the decks that changed since the last flush and publishes; nothing when nothing changed.
     void flush();

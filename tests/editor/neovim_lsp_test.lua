@@ -1,5 +1,6 @@
 -- The editor test of issue 16: Debian's Neovim, headless, with editors/neovim/lua/sphdeck.lua, talks
--- to `sphdeck lsp`: open a deck with a known finding, wait for its diagnostic, hover a field, fix the
+-- to `sphdeck lsp`: open a deck with a known finding, wait for its diagnostic, hover a field, ask
+-- for semantic tokens and inlay hints (issue 29), fix the
 -- finding with an edit, wait for the diagnostic to go, shut the server down.
 --   SPHDECK=build/sphdeck nvim --headless --clean -u tests/editor/neovim_lsp_test.lua
 -- (tests/editor/run_neovim_test.sh sets it up.) Exit 0 on success; otherwise a printed reason and
@@ -144,6 +145,70 @@ if not text:find("0.002", 1, true) then
   fail("hover on ENDTIM does not give its value 0.002:\n" .. text)
 end
 say("hover: " .. text:gsub("\n", " | "))
+
+-- 2b. Semantic tokens and inlay hints (issue 29), asked for directly: Neovim 0.9+ asks for the tokens
+-- by itself, Debian's 0.7 does not, so the test sends the requests and reads the answers.
+local function ask(method, request_params)
+  local answers, ask_err = vim.lsp.buf_request_sync(buf, method, request_params, math.min(5000, remaining_ms()))
+  if not answers then
+    fail("no answer to " .. method .. ": " .. tostring(ask_err))
+  end
+  local answer = answers[client_id]
+  if not answer or answer.error or not answer.result then
+    fail(method .. " answered " .. vim.inspect(answer))
+  end
+  return answer.result
+end
+local provider = vim.lsp.get_client_by_id(client_id).server_capabilities.semanticTokensProvider
+if not provider or not provider.legend then
+  fail("the server announces no semantic tokens legend")
+end
+local legend = provider.legend
+local tokens = ask("textDocument/semanticTokens/full", { textDocument = params.textDocument }).data
+local decoded, line, start = {}, 0, 0
+for i = 1, #tokens, 5 do
+  if tokens[i] ~= 0 then start = 0 end
+  line = line + tokens[i]
+  start = start + tokens[i + 1]
+  local mods = {}
+  for bit, name in ipairs(legend.tokenModifiers) do
+    if math.floor(tokens[i + 4] / 2 ^ (bit - 1)) % 2 == 1 then mods[name] = true end
+  end
+  table.insert(decoded, { line = line, start = start, length = tokens[i + 2],
+                          type = legend.tokenTypes[tokens[i + 3] + 1], mods = mods })
+end
+local function token_at(l, c)
+  for _, t in ipairs(decoded) do
+    if t.line == l and c >= t.start and c < t.start + t.length then return t end
+  end
+  return nil
+end
+local expected_tokens = {
+  { 3, 1, "keyword" },  -- *CONTROL_TERMINATION
+  { 4, 3, "comment", "header" },  -- the $# line
+  { 5, 7, "real" },  -- ENDTIM 0.002
+  { 5, 15, "number", "oddField" },  -- ENDCYC 10000O (unreadable, still an integer field), the second field
+}
+for _, e in ipairs(expected_tokens) do
+  local t = token_at(e[1], e[2])
+  if not t or t.type ~= e[3] or (e[4] and not t.mods[e[4]]) then
+    fail(("semantic token at %d:%d is %s, expected %s %s"):format(e[1], e[2], vim.inspect(t), e[3], e[4] or ""))
+  end
+end
+say(("semantic tokens: %d, keyword, header comment, real and odd-field number where expected"):format(#decoded))
+local hints = ask("textDocument/inlayHint", {
+  textDocument = params.textDocument,
+  range = { start = { line = 0, character = 0 }, ["end"] = { line = 6, character = 0 } },
+})
+local labels = {}
+for _, h in ipairs(hints) do
+  local label = type(h.label) == "string" and h.label or h.label[1].value
+  labels[h.position.line .. ":" .. label] = true
+end
+if not labels["5:ENDTIM:"] or not labels["5:ENDCYC:"] then
+  fail("inlay hints do not name ENDTIM and ENDCYC on line 6: " .. vim.inspect(hints))
+end
+say(("inlay hints: %d, ENDTIM and ENDCYC named"):format(#hints))
 
 -- 3. Fix ENDCYC (a zero, not the letter O): Neovim sends didChange; the diagnostic must go.
 vim.api.nvim_buf_set_lines(buf, 5, 6, false, { "     0.002     10000" })

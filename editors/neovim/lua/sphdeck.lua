@@ -110,6 +110,10 @@ function M.attach(bufnr, opts)
     on_attach = function(client, attached)
       -- completion with <C-x><C-o> (Neovim 0.7 does not set it by itself)
       vim.bo[attached].omnifunc = "v:lua.vim.lsp.omnifunc"
+      -- field names beside values (Neovim 0.10+); `inlay_hints = false` leaves them off
+      if opts.inlay_hints ~= false and vim.lsp.inlay_hint and vim.lsp.inlay_hint.enable then
+        pcall(vim.lsp.inlay_hint.enable, true, { bufnr = attached })
+      end
       if opts.on_attach then
         opts.on_attach(client, attached)
       end
@@ -117,6 +121,8 @@ function M.attach(bufnr, opts)
     on_exit = opts.on_exit,
     capabilities = opts.capabilities,
     settings = opts.settings,
+    -- {inlayHints = {bulkBlocks = true}} shows hints in *NODE / *ELEMENT_SPH blocks too
+    init_options = opts.init_options,
   }
   if vim.lsp.start then
     return vim.lsp.start(config, { bufnr = bufnr })
@@ -124,9 +130,28 @@ function M.attach(bufnr, opts)
   return attach_07(bufnr, config)
 end
 
+-- Colours for what the server's semantic tokens add to Neovim's defaults (0.9+ links the standard
+-- types such as @lsp.type.keyword itself): sphdeck's own type `real`, and the modifiers. `default`:
+-- a colour scheme or the user's own setting wins.
+function M.default_highlights()
+  if vim.fn.has("nvim-0.9") == 0 then
+    return -- no semantic tokens before 0.9 (and 0.7 refuses '@' in group names)
+  end
+  local function set(group, spec)
+    spec.default = true
+    pcall(vim.api.nvim_set_hl, 0, group, spec)
+  end
+  set("@lsp.type.real", { link = "Float" })
+  set("@lsp.type.enumMember", { link = "Constant" })
+  set("@lsp.mod.header", { link = "SpecialComment" })
+  set("@lsp.mod.include", { link = "Include" })
+  set("@lsp.mod.oddField", { italic = true }) -- every other field of a card: a value in the wrong columns shows
+end
+
 function M.setup(opts)
   M.options = opts or {}
   detect_filetypes()
+  M.default_highlights()
   vim.api.nvim_create_autocmd("FileType", {
     group = vim.api.nvim_create_augroup("sphdeck_lsp", { clear = true }),
     pattern = M.filetypes,

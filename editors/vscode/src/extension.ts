@@ -1,6 +1,6 @@
 // Starts `sphdeck lsp` (the sphdeck language server, over stdio) for LS-DYNA and OpenRadioss decks.
 // Everything the editor shows (diagnostics, hover, definitions, completion, outline, folding, code
-// actions) comes from the server; this file only starts, restarts and stops it.
+// actions, colours by semantic tokens, inlay hints) comes from the server; this file only starts, restarts and stops it.
 import * as vscode from "vscode";
 import {
   LanguageClient,
@@ -22,7 +22,10 @@ function serverOptions(): ServerOptions {
 }
 
 function clientOptions(): LanguageClientOptions {
+  const inlayHints = vscode.workspace.getConfiguration("sphdeck").get<object>("inlayHints", {});
   return {
+    // Inlay hint settings (bulkBlocks, defaults, parameterValues): at start, then on every change.
+    initializationOptions: { inlayHints },
     // .inc files belong to either dialect: the server tells them apart by their content.
     documentSelector: [
       { scheme: "file", language: "lsdyna" },
@@ -32,6 +35,7 @@ function clientOptions(): LanguageClientOptions {
       { scheme: "untitled", language: "openradioss" },
     ],
     synchronize: {
+      configurationSection: "sphdeck",
       // The project's configuration and the files decks include, edited outside the editor.
       fileEvents: vscode.workspace.createFileSystemWatcher("**/{sphdeck.toml,*.k,*.key,*.dyn,*.inc,*.rad}"),
     },
