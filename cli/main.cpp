@@ -16,6 +16,7 @@ const std::vector<sphdeck::cli::Command>& commands() {
         {"rule", "explain one rule: what it checks, why, how to fix it, an example", sphdeck::cli::setup_rule},
         {"rules", "list every rule (--format markdown: docs/rules.md)", sphdeck::cli::setup_rules},
         {"keyword", "print a keyword's cards: columns, types, defaults, allowed values", sphdeck::cli::setup_keyword},
+        {"format", "rewrite decks in a canonical column layout without changing a value (--check, --diff)", sphdeck::cli::setup_format},
         {"dump", "print the decoded deck model (--format json)", sphdeck::cli::setup_dump},
         {"smooth", "preview smoothing lengths, neighbours and time step per part (table, json, csv, vtk, svg)", sphdeck::cli::setup_smooth},
         {"sol2sph", "generate the particles SOL2SPH parts of a Radioss deck will release (vtp, csv)", sphdeck::cli::setup_sol2sph},

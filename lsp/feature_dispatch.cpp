@@ -41,7 +41,7 @@ nlohmann::json folding_of(const CheckedDeck& deck, grammar::FileId file, const n
 }
 
 // One row a feature.
-constexpr std::array<FeatureRow, 7> kFeatures{{
+constexpr std::array<FeatureRow, 9> kFeatures{{
     {"textDocument/hover", "hoverProvider", at_position<hover>},
     {"textDocument/definition", "definitionProvider", at_position<definition>},
     {"textDocument/references", "referencesProvider", references_of},
@@ -49,6 +49,8 @@ constexpr std::array<FeatureRow, 7> kFeatures{{
     {"textDocument/documentSymbol", "documentSymbolProvider", symbols_of},
     {"textDocument/foldingRange", "foldingRangeProvider", folding_of},
     {"textDocument/codeAction", "codeActionProvider", code_actions},
+    {"textDocument/formatting", "documentFormattingProvider", formatting},
+    {"textDocument/rangeFormatting", "documentRangeFormattingProvider", range_formatting},
 }};
 }  // namespace
 

@@ -3,7 +3,7 @@
 // there is nothing to say). The server (lsp/server.*) finds the deck and the file a request is
 // about, then calls these; they never read a file or write to the client.
 // One file per feature: lsp/feature_hover.cpp, feature_definition.cpp, feature_completion.cpp,
-// feature_symbols.cpp, feature_folding.cpp, feature_code_actions.cpp.
+// feature_symbols.cpp, feature_folding.cpp, feature_code_actions.cpp, feature_formatting.cpp.
 #pragma once
 
 #include <string_view>
@@ -43,6 +43,11 @@ nlohmann::json folding_ranges(const CheckedDeck& deck, grammar::FileId file);
 // textDocument/codeAction for the diagnostics of the request's context (`params` is the request's
 // whole params object: textDocument, range, context). CodeAction[] with WorkspaceEdits on `uri`.
 nlohmann::json code_actions(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json& params);
+
+// textDocument/formatting: the edits `sphdeck format` makes to the file (lsp/feature_formatting.cpp),
+// TextEdit[]; textDocument/rangeFormatting: those on the lines of params.range.
+nlohmann::json formatting(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json& params);
+nlohmann::json range_formatting(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json& params);
 
 // The feature requests by method name, for the server: it finds the deck and the file that a
 // request's textDocument names, then asks here. `handled` is false for a method no feature answers

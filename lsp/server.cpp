@@ -19,10 +19,10 @@ struct RpcError {
 };
 
 // The document requests the features answer; with no deck reading the file their answer is null.
-constexpr std::array<std::string_view, 7> kDocumentFeatures = {
+constexpr std::array<std::string_view, 9> kDocumentFeatures = {
     "textDocument/hover",          "textDocument/definition",   "textDocument/references",
     "textDocument/completion",     "textDocument/documentSymbol", "textDocument/foldingRange",
-    "textDocument/codeAction"};
+    "textDocument/codeAction",     "textDocument/formatting",   "textDocument/rangeFormatting"};
 
 bool valid_id(const nlohmann::json& id) { return id.is_number_integer() || id.is_string(); }
 

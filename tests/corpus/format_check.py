@@ -1,0 +1,153 @@
+"""The corpus check's proof that `sphdeck format` changes no value (issue 27 item 3), called by run_corpus.py.
+
+The corpus is copied to a temporary folder; there every deck is formatted (its own file, then with
+--includes its included files), and for every deck
+  - `sphdeck dump` of the formatted deck equals the original's in every value (positions aside: the
+    keys line, column, end_column and file are dropped),
+  - the formatted deck has no finding (code, severity, file, line) the original did not have,
+  - formatting again changes nothing (`format --check --includes` exits 0).
+It reports how many decks and include files format changed, and the lines changed by kind.
+"""
+import collections
+import concurrent.futures
+import filecmp
+import json
+import os
+import re
+import shutil
+import subprocess
+import tempfile
+
+TIMEOUT_S = 60
+POSITION_KEYS = {"line", "column", "end_column", "file"}
+
+
+def run(cmd):
+    try:
+        return subprocess.run(cmd, capture_output=True, timeout=TIMEOUT_S)
+    except subprocess.TimeoutExpired:
+        return None
+
+
+def without_positions(value):
+    if isinstance(value, dict):
+        return {k: without_positions(v) for k, v in value.items() if k not in POSITION_KEYS}
+    if isinstance(value, list):
+        return [without_positions(v) for v in value]
+    return value
+
+
+def dump(sphdeck, deck):
+    done = run([sphdeck, "dump", deck])
+    if done is None or done.returncode != 0:
+        return None
+    return without_positions(json.loads(done.stdout))
+
+
+def findings(sphdeck, deck, root):
+    done = run([sphdeck, "check", "--format", "json", "--no-config", deck])
+    if done is None or done.returncode not in (0, 1):
+        return None
+    found = collections.Counter()
+    for d in json.loads(done.stdout)["diagnostics"]:
+        name = os.path.relpath(d["file"], root) if d["file"] and os.path.isabs(d["file"]) else d["file"]
+        found[(d["code"], d["severity"], name, d["line"])] += 1
+    return found
+
+
+def first_difference(a, b, path="$"):
+    """Where two dumps differ first, for the failure message."""
+    if type(a) is not type(b):
+        return path
+    if isinstance(a, dict):
+        for k in list(a) + [k for k in b if k not in a]:
+            if k not in a or k not in b:
+                return f"{path}.{k}"
+            where = first_difference(a[k], b[k], f"{path}.{k}")
+            if where:
+                return where
+        return None
+    if isinstance(a, list):
+        if len(a) != len(b):
+            return f"{path} (length {len(a)} vs {len(b)})"
+        for i, (x, y) in enumerate(zip(a, b)):
+            where = first_difference(x, y, f"{path}[{i}]")
+            if where:
+                return where
+        return None
+    return None if a == b else f"{path}: {a!r} vs {b!r}"
+
+
+CHANGE = re.compile(r"(\d+) ([a-z ]+?)(?:,|\))")
+
+
+def format_main(sphdeck, deck):
+    """Formats the deck's own file; the lines changed by kind (from the summary line)."""
+    done = run([sphdeck, "format", deck])
+    if done is None or done.returncode != 0:
+        return None
+    summary = done.stderr.decode("utf-8", "replace")
+    kinds = collections.Counter()
+    if "(lines: " in summary:
+        for n, kind in CHANGE.findall(summary.split("(lines: ", 1)[1]):
+            kinds[kind] += int(n)
+    kept = re.search(r"(\d+) card lines? left as written", summary)
+    if kept:
+        kinds["left as written"] += int(kept.group(1))
+    return kinds
+
+
+def check_formatting(sphdeck, corpus, decks, jobs):
+    """(failures, summary lines)."""
+    failures = []
+    with tempfile.TemporaryDirectory(prefix="sphdeck-format-") as tmp:
+        copy = os.path.join(tmp, "corpus")
+        shutil.copytree(corpus, copy, symlinks=True)
+        pool = concurrent.futures.ThreadPoolExecutor(max_workers=max(1, jobs))
+        original = os.path.abspath(corpus)
+        before = dict(zip(decks, pool.map(
+            lambda d: (dump(sphdeck, os.path.join(original, d)), findings(sphdeck, os.path.join(original, d), original)),
+            decks)))
+        kinds_of = dict(zip(decks, pool.map(lambda d: format_main(sphdeck, os.path.join(copy, d)), decks)))
+        included = list(pool.map(lambda d: run([sphdeck, "format", "--includes", os.path.join(copy, d)]), decks))
+        after = dict(zip(decks, pool.map(
+            lambda d: (dump(sphdeck, os.path.join(copy, d)), findings(sphdeck, os.path.join(copy, d), copy)), decks)))
+        again = dict(zip(decks, pool.map(
+            lambda d: run([sphdeck, "format", "--check", "--includes", os.path.join(copy, d)]), decks)))
+        pool.shutdown()
+
+        kinds = collections.Counter()
+        for deck in decks:
+            if kinds_of[deck] is None:
+                failures.append(f"format: {deck}: format failed")
+                continue
+            kinds.update(kinds_of[deck])
+        for deck, done in zip(decks, included):
+            if done is None or done.returncode != 0:
+                failures.append(f"format: {deck}: format --includes failed")
+        for deck in decks:
+            (dump_before, found_before), (dump_after, found_after) = before[deck], after[deck]
+            if dump_before is not None and dump_after != dump_before:
+                where = first_difference(dump_before, dump_after) if dump_after is not None else "dump failed"
+                failures.append(f"format: {deck}: a value changed: {where}")
+            if found_before is not None and found_after is not None:
+                new = found_after - found_before
+                if new:
+                    (code, severity, name, line), _ = sorted(new.items())[0]
+                    failures.append(f"format: {deck}: new finding {code} ({severity}) at {name}:{line}")
+            done = again[deck]
+            if done is None or done.returncode != 0:
+                failures.append(f"format: {deck}: formatting twice changes the deck (not idempotent)")
+
+        changed_decks = sum(1 for d in decks if not filecmp.cmp(os.path.join(original, d), os.path.join(copy, d),
+                                                                shallow=False))
+        changed_files = 0
+        for root, _, files in os.walk(copy):
+            for name in files:
+                path = os.path.join(root, name)
+                source = os.path.join(original, os.path.relpath(path, copy))
+                if os.path.isfile(source) and not filecmp.cmp(source, path, shallow=False):
+                    changed_files += 1
+    summary = [f"  format: {changed_decks} of {len(decks)} decks changed, {changed_files} files with --includes; "
+               "lines: " + (", ".join(f"{n} {k}" for k, n in sorted(kinds.items())) or "none")]
+    return failures, summary
