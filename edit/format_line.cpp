@@ -69,13 +69,13 @@ LineLayout layout_fixed_line(std::string_view text, std::span<const FixedField> 
         if (value.empty()) continue;
         if (kinds[i] == CellKind::Unused) return doubt("text in an unused field");
         if (kinds[i] != CellKind::Text && has_blank(value)) return doubt("a blank inside a value");
-        // Two runs of characters touching across a field boundary may be one value cut in two.
+        // Two runs of characters touching across a field boundary may be one value cut in two, unless the
+        // right one fills its whole field (values packed full width touch legitimately: "160.0-1.5E-05").
         if (i + 1 < n && slots[i + 1].start == f.start + f.width && f.start + f.width < text.size()) {
             const std::string_view next = cell_of(text, slots[i + 1]);
             const bool touch = !blank(text[f.start + f.width - 1]) && !next.empty() && !blank(next.front());
-            const bool both_full = cell.size() == f.width && !has_blank(cell) && next.size() == slots[i + 1].width &&
-                                   !has_blank(next);
-            if (touch && !both_full) return doubt("a value across a field boundary");
+            const bool next_full = next.size() == slots[i + 1].width && !has_blank(next);
+            if (touch && !next_full) return doubt("a value across a field boundary");
         }
     }
     for (std::size_t i = 0; i < n; ++i) {

@@ -44,11 +44,14 @@ TEST_CASE("format line: numbers right-aligned, blanks stay blank, text kept") {
     CHECK(edit::layout_fixed_line("  1.0 2   ", slots, kinds, out).verdict == edit::LineVerdict::Doubt);
     CHECK(edit::layout_fixed_line(std::string(40, ' ') + "x", slots, kinds, out).verdict == edit::LineVerdict::Doubt);
     CHECK(edit::layout_fixed_line("\t1.0", slots, kinds, out).verdict == edit::LineVerdict::Doubt);
-    // Full fields that touch are two values (dense decks are written so).
+    // A value that fills its field may touch the one before (dense decks are written so).
     laid = edit::layout_fixed_line("1234567890123456789", slots, kinds, out);
     CHECK(laid.verdict == edit::LineVerdict::Doubt);  // the second is not full: one value cut in two?
     laid = edit::layout_fixed_line("12345678901234567890", slots, kinds, out);
     CHECK(laid.verdict == edit::LineVerdict::Same);
+    laid = edit::layout_fixed_line("1.0       -1.2345e-5", slots, kinds, out);
+    CHECK(laid.verdict == edit::LineVerdict::Changed);
+    CHECK(out == "       1.0-1.2345e-5");
     // A parameter reference moves like a number and keeps its text.
     laid = edit::layout_fixed_line("&ro", slots, kinds, out);
     CHECK(out == "       &ro");
