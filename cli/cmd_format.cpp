@@ -58,7 +58,7 @@ bool format_one(const std::string& deck, const FormatArgs& args, Totals& totals)
     options.rules.geometry = false;  // the layout needs the reading's findings, not the particles' geometry
     const engine::CheckResult r = engine::check_file(deck, options);
     const auto files = edit::files_to_format(r.deck, args.options.includes);
-    const edit::FormatResult formatted = edit::format_deck(r.deck, r.diagnostics, files, args.options);
+    edit::FormatResult formatted = edit::format_deck(r.deck, r.diagnostics, files, args.options);
     for (std::size_t k = 0; k < totals.changes.size(); ++k) totals.changes[k] += formatted.changes[k];
     totals.kept += formatted.kept;
     if (args.verbose)
@@ -66,25 +66,27 @@ bool format_one(const std::string& deck, const FormatArgs& args, Totals& totals)
             fmt::print(stderr, "{}:{}: left as written: {}\n", r.deck.sources.file(kept.file).display_name, kept.line,
                        kept.reason);
 
+    // The edits come in file order, one per changed line (a line's new text always differs from its old):
+    // a file with an edit changes, and --check and --diff need not apply them.
     bool any = false;
+    auto at = formatted.edits.begin();
     for (grammar::FileId id : files) {
         ++totals.files;
-        std::vector<diag::TextEdit> edits;
-        for (const auto& e : formatted.edits)
-            if (e.span.file == id) edits.push_back(e);
-        if (edits.empty()) continue;
+        while (at != formatted.edits.end() && at->span.file < id) ++at;
+        auto end = at;
+        while (end != formatted.edits.end() && end->span.file == id) ++end;
+        if (end == at) continue;
+        const std::vector<diag::TextEdit> edits(std::make_move_iterator(at), std::make_move_iterator(end));
+        at = end;
         const grammar::SourceFile& file = r.deck.sources.file(id);
-        const std::string_view text = file.text;
-        std::string after = edit::apply_edits(text, edits).text;
-        if (after == text) continue;
         any = true;
         ++totals.changed;
         if (args.diff)
-            fmt::print("{}", edit::unified_diff(file.display_name, text, edits));
+            fmt::print("{}", edit::unified_diff(file.display_name, file.text, edits));
         else if (args.check)
             fmt::print("would reformat {}\n", file.display_name);
         else
-            write_file(file.path, after);
+            write_file(file.path, edit::apply_edits(file.text, edits).text);
     }
     return any;
 }

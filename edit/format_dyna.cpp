@@ -163,6 +163,10 @@ void format_repeated(const FormatScope& scope, const grammar::CardLine* from, co
         for (std::size_t i = begin; i < end; ++i)
             format_card_line(scope, from[i], scope.deck.text(from[i]), columns.slots, columns.kinds,
                              columns.free_allowed, buffer, parts[t]);
+        // As the reader does after the model is built: the mapped pages read go back (peak memory).
+        if (begin < end)
+            scope.deck.sources.file(from[begin].file)
+                .text.release(from[begin].offset, from[end - 1].offset + scope.deck.text(from[end - 1]).size());
     }
     for (auto& p : parts) out.append(std::move(p));
 }

@@ -55,6 +55,31 @@ def findings(sphdeck, deck, root):
     return found
 
 
+def findings_by_block(sphdeck, deck, root):
+    """Findings by (code, severity, file, n-th keyword line of the file): `$#` lines added move lines."""
+    done = run([sphdeck, "check", "--format", "json", "--no-config", deck])
+    if done is None or done.returncode not in (0, 1):
+        return None
+    keyword_lines = {}
+    found = collections.Counter()
+    for d in json.loads(done.stdout)["diagnostics"]:
+        path = d["file"]
+        name = os.path.relpath(path, root) if path and os.path.isabs(path) else path
+        block = None
+        if path:
+            full = path if os.path.isabs(path) or os.path.exists(path) else os.path.join(os.path.dirname(deck), path)
+            if full not in keyword_lines:
+                try:
+                    with open(full, "rb") as f:
+                        keyword_lines[full] = [i + 1 for i, l in enumerate(f.read().split(b"\n"))
+                                               if l[:1] in (b"*", b"/")]
+                except OSError:
+                    keyword_lines[full] = []
+            block = sum(1 for k in keyword_lines[full] if k <= d["line"])
+        found[(d["code"], d["severity"], name, block)] += 1
+    return found
+
+
 def first_difference(a, b, path="$"):
     """Where two dumps differ first, for the failure message."""
     if type(a) is not type(b):
@@ -108,12 +133,22 @@ def check_formatting(sphdeck, corpus, decks, jobs):
         before = dict(zip(decks, pool.map(
             lambda d: (dump(sphdeck, os.path.join(original, d)), findings(sphdeck, os.path.join(original, d), original)),
             decks)))
+        before_by_block = dict(zip(decks, pool.map(
+            lambda d: findings_by_block(sphdeck, os.path.join(original, d), original), decks)))
         kinds_of = dict(zip(decks, pool.map(lambda d: format_main(sphdeck, os.path.join(copy, d)), decks)))
         included = list(pool.map(lambda d: run([sphdeck, "format", "--includes", os.path.join(copy, d)]), decks))
         after = dict(zip(decks, pool.map(
             lambda d: (dump(sphdeck, os.path.join(copy, d)), findings(sphdeck, os.path.join(copy, d), copy)), decks)))
         again = dict(zip(decks, pool.map(
             lambda d: run([sphdeck, "format", "--check", "--includes", os.path.join(copy, d)]), decks)))
+        # The options that add lines and rewrite free ones, on the formatted copy: the same three proofs.
+        extra = ["--headers", "--to", "fixed", "--includes"]
+        extra_done = list(pool.map(lambda d: run([sphdeck, "format", *extra, os.path.join(copy, d)]), decks))
+        extra_after = dict(zip(decks, pool.map(
+            lambda d: (dump(sphdeck, os.path.join(copy, d)), findings_by_block(sphdeck, os.path.join(copy, d), copy)),
+            decks)))
+        extra_again = dict(zip(decks, pool.map(
+            lambda d: run([sphdeck, "format", "--check", *extra, os.path.join(copy, d)]), decks)))
         pool.shutdown()
 
         kinds = collections.Counter()
@@ -138,6 +173,23 @@ def check_formatting(sphdeck, corpus, decks, jobs):
             done = again[deck]
             if done is None or done.returncode != 0:
                 failures.append(f"format: {deck}: formatting twice changes the deck (not idempotent)")
+
+        for deck, done in zip(decks, extra_done):
+            dump_before, found_before = before[deck][0], before_by_block[deck]
+            dump_after, found_after = extra_after[deck]
+            if done is None or done.returncode != 0:
+                failures.append(f"format: {deck}: format {' '.join(extra)} failed")
+            if dump_before is not None and dump_after != dump_before:
+                where = first_difference(dump_before, dump_after) if dump_after is not None else "dump failed"
+                failures.append(f"format {' '.join(extra)}: {deck}: a value changed: {where}")
+            if found_before is not None and found_after is not None:
+                new = found_after - found_before
+                if new:
+                    (code, severity, name, block), _ = sorted(new.items())[0]
+                    failures.append(f"format {' '.join(extra)}: {deck}: new finding {code} ({severity}) in {name} "
+                                    f"block {block}")
+            if extra_again[deck] is None or extra_again[deck].returncode != 0:
+                failures.append(f"format {' '.join(extra)}: {deck}: formatting twice changes the deck")
 
         changed_decks = sum(1 for d in decks if not filecmp.cmp(os.path.join(original, d), os.path.join(copy, d),
                                                                 shallow=False))

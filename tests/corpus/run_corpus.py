@@ -14,6 +14,9 @@ Decks: every *.k, *.key, *.dyn file (LS-DYNA) and every *_0000.rad file (OpenRad
 below the corpus folder. Where an OpenRadioss deck has the starter's listing beside it
 (../reference/NAME_0000.out), the listing's error count is read: errors on decks the starter accepted
 are counted apart in the summary.
+
+Then format_check.py proves on every deck that `sphdeck format` changes no value (dump equal, no new finding,
+a second run changes nothing); --no-format-check skips it.
 """
 import argparse
 import collections
