@@ -23,7 +23,8 @@ void LineChanges::append(LineChanges&& other) {
 
 CardLineState format_card_line(const FormatScope& scope, const grammar::CardLine& line, std::string_view text,
                                std::span<const grammar::FixedField> slots, std::span<const CellKind> kinds,
-                               bool free_allowed, std::string& buffer, LineChanges& out) {
+                               bool free_allowed, std::string& buffer, LineChanges& out, bool no_comma_or_tab) {
+    if (no_comma_or_tab && already_laid_out(text, slots, kinds)) return CardLineState::Fixed;
     if (grammar::is_blank(text)) return CardLineState::Blank;  // a blank card: every default, kept as written
     if (!free_allowed) return CardLineState::Fixed;  // titles, headings, file names: their text as written
     if (const std::string_view* code = scope.doubt(line.file, line.line)) {

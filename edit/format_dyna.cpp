@@ -6,6 +6,7 @@
 
 #include "edit/format_sink.hpp"
 #include "grammar/keywords/schema.hpp"
+#include "grammar/line_scan.hpp"
 #include "model/card_decoder.hpp"
 
 namespace sphdeck::edit::detail {
@@ -108,16 +109,61 @@ std::optional<keywords::KeywordMatch> decodable_match(const grammar::Block& bloc
     return match;
 }
 
+// Finds keyword lines by walking forward from the last card line seen in their file, so a deck of two
+// million lines is not indexed (SourceMap::line_text would index every line up to *END, touching every
+// page of the deck again).
+class KeywordLines {
+public:
+    explicit KeywordLines(const grammar::RawDeck& deck) : deck_(deck) {}
+    // The text of `line` of `file` (without "\r\n").
+    std::string_view at(grammar::FileId file, std::uint32_t line) {
+        const std::string_view text = deck_.sources.file(file).text;
+        Cursor& c = cursors_[file];
+        if (c.line > line) c = {};
+        while (c.line < line && c.offset < text.size()) {
+            const std::size_t nl = text.find('\n', c.offset);
+            if (nl == std::string_view::npos) return {};
+            c = {c.line + 1, nl + 1};
+        }
+        std::size_t end = std::min(text.find('\n', c.offset), text.size());
+        if (end > c.offset && text[end - 1] == '\r') --end;
+        return c.line == line ? text.substr(c.offset, end - c.offset) : std::string_view{};
+    }
+    // A card line seen: later keyword lines of its file are found from here.
+    void seen(const grammar::CardLine& l) {
+        Cursor& c = cursors_[l.file];
+        if (l.line >= c.line) c = {l.line, l.offset};
+    }
+
+private:
+    struct Cursor {
+        std::uint32_t line = 1;
+        std::size_t offset = 0;
+    };
+    const grammar::RawDeck& deck_;
+    std::map<grammar::FileId, Cursor> cursors_;
+};
+
 // The keyword name upper case (LS-DYNA reads it in any case).
-void keyword_case(const FormatScope& scope, const grammar::Block& block, LineChanges& out) {
+void keyword_case(const grammar::Block& block, KeywordLines& lines, LineChanges& out) {
     const grammar::Span& s = block.span;
-    const std::string_view line = scope.deck.sources.line_text(s.file, s.line);
+    const std::string_view line = lines.at(s.file, s.line);
     if (s.end_column > line.size() + 1 || s.column == 0) return;
     std::string upper(line);
     bool changed = false;
     for (std::size_t i = s.column - 1; i < s.end_column - 1; ++i)
         if (upper[i] >= 'a' && upper[i] <= 'z') upper[i] = static_cast<char>(upper[i] - 'a' + 'A'), changed = true;
     if (changed) out.change(s.file, s.line, line, std::move(upper), FormatChange::KeywordCase);
+}
+
+// The line before a card line (a `$#` header?); empty on the file's first line.
+std::string_view line_before(const grammar::RawDeck& deck, const grammar::CardLine& line) {
+    const std::string_view text = deck.sources.file(line.file).text;
+    if (line.offset == 0) return {};
+    std::size_t end = line.offset - 1;  // its '\n'
+    const std::size_t begin = end == 0 ? 0 : text.rfind('\n', end - 1) + 1;  // npos + 1 == 0
+    if (end > begin && text[end - 1] == '\r') --end;
+    return text.substr(begin, end - begin);
 }
 
 // The line break of the file after `line`'s text ("\r\n" where the file has it).
@@ -132,7 +178,7 @@ std::string_view line_break(const grammar::RawDeck& deck, const grammar::CardLin
 void header_above(const FormatScope& scope, const grammar::CardLine& line, std::string_view text,
                   const std::string& header, LineChanges& out) {
     if (line.line > 1) {
-        const std::string_view above = scope.deck.sources.line_text(line.file, line.line - 1);
+        const std::string_view above = line_before(scope.deck, line);
         if (is_field_header(above)) {
             if (above != header) out.change(line.file, line.line - 1, above, header, FormatChange::Header);
             return;
@@ -160,13 +206,18 @@ void format_repeated(const FormatScope& scope, const grammar::CardLine* from, co
         const std::size_t team = static_cast<std::size_t>(omp_get_num_threads());
         const std::size_t begin = n * t / team, end = n * (t + 1) / team;
         std::string buffer;
-        for (std::size_t i = begin; i < end; ++i)
-            format_card_line(scope, from[i], scope.deck.text(from[i]), columns.slots, columns.kinds,
-                             columns.free_allowed, buffer, parts[t]);
-        // As the reader does after the model is built: the mapped pages read go back (peak memory).
-        if (begin < end)
-            scope.deck.sources.file(from[begin].file)
-                .text.release(from[begin].offset, from[end - 1].offset + scope.deck.text(from[end - 1]).size());
+        const grammar::SourceText& source = scope.deck.sources.file(from->file).text;
+        std::size_t released = begin;
+        for (std::size_t i = begin; i < end; ++i) {
+            const grammar::ScannedLine line = grammar::scan_line(scope.deck, from[i]);
+            format_card_line(scope, from[i], line.text, columns.slots, columns.kinds, columns.free_allowed, buffer,
+                             parts[t], !line.comma_or_tab);
+            // As the reader does once the model is built: mapped pages read go back (peak memory).
+            if (i + 1 - released == 16384 || i + 1 == end) {
+                source.release(from[released].offset, from[i].offset + line.text.size());
+                released = i + 1;
+            }
+        }
     }
     for (auto& p : parts) out.append(std::move(p));
 }
@@ -209,11 +260,13 @@ void format_block(const FormatScope& scope, const grammar::Block& block, ColumnC
 
 void format_dyna(const FormatScope& scope, LineChanges& out) {
     ColumnCache columns;
+    KeywordLines keyword_lines(scope.deck);
     for (const grammar::Block& block : scope.deck.blocks) {
         if (block.keyword.empty() || block.keyword[0] != '*') continue;
         if (!scope.formats(block.span.file)) continue;
-        keyword_case(scope, block, out);
+        keyword_case(block, keyword_lines, out);
         format_block(scope, block, columns, out);
+        if (block.line_count > 0) keyword_lines.seen(*(scope.deck.end_lines(block) - 1));
     }
 }
 

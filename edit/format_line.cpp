@@ -91,6 +91,27 @@ LineLayout layout_fixed_line(std::string_view text, std::span<const FixedField> 
     return {out == text ? LineVerdict::Same : LineVerdict::Changed, {}};
 }
 
+bool already_laid_out(std::string_view text, std::span<const FixedField> slots, std::span<const CellKind> kinds) {
+    if (text.empty() || blank(text.back())) return false;
+    std::size_t at = 0;
+    const std::size_t n = std::min(slots.size(), kinds.size());
+    for (std::size_t i = 0; i < n && at < text.size(); ++i) {
+        const FixedField& f = slots[i];
+        for (; at < f.start && at < text.size(); ++at)
+            if (!blank(text[at])) return false;  // between fields, or fields out of order
+        if (at >= text.size()) break;
+        const std::string_view cell = text.substr(f.start, f.width);
+        at = f.start + cell.size();
+        std::size_t first = 0;
+        while (first < cell.size() && blank(cell[first])) ++first;
+        if (first == cell.size()) continue;
+        if (kinds[i] != CellKind::Number && !(kinds[i] == CellKind::Label && integer_text(cell.substr(first))))
+            return false;
+        if (cell.size() != f.width || has_blank(cell.substr(first))) return false;
+    }
+    return at >= text.size();
+}
+
 LineLayout free_to_fixed(std::string_view text, std::span<const FixedField> slots, std::span<const CellKind> kinds,
                          std::string& out) {
     out.clear();

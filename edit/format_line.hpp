@@ -35,6 +35,12 @@ struct LineLayout {
 LineLayout layout_fixed_line(std::string_view text, std::span<const grammar::FixedField> slots,
                              std::span<const CellKind> kinds, std::string& out);
 
+// The cheap test the bulk lines (*NODE, *ELEMENT_SPH) take first: `text` (known to hold no tab and no
+// comma) is laid out already, numbers only: every number ends on its field's last column with no blank
+// inside, nothing lies outside the fields or in an unused one, no trailing blank. Such a line is Same.
+bool already_laid_out(std::string_view text, std::span<const grammar::FixedField> slots,
+                      std::span<const CellKind> kinds);
+
 // A free-format (comma) line rewritten in fixed columns (`--to fixed`): every value must fit its field.
 LineLayout free_to_fixed(std::string_view text, std::span<const grammar::FixedField> slots,
                          std::span<const CellKind> kinds, std::string& out);

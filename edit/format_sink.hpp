@@ -64,11 +64,13 @@ struct LineChanges {
 };
 
 // How a card line of `text` lays out, given its kinds and slots; records the change or the doubt.
-// `free_allowed`: the card has a field that is not text (a comma in a title is text).
+// `free_allowed`: the card has a field that is not text (a comma in a title is text); `no_comma_or_tab`:
+// the caller scanned the line (grammar::scan_line), so a line laid out already is passed at once.
 enum class CardLineState { Blank, Kept, Free, Fixed };
 CardLineState format_card_line(const FormatScope& scope, const grammar::CardLine& line, std::string_view text,
-                      std::span<const grammar::FixedField> slots, std::span<const CellKind> kinds,
-                      bool free_allowed, std::string& buffer, LineChanges& out);
+                               std::span<const grammar::FixedField> slots, std::span<const CellKind> kinds,
+                               bool free_allowed, std::string& buffer, LineChanges& out,
+                               bool no_comma_or_tab = false);
 
 void format_dyna(const FormatScope& scope, LineChanges& out);
 void format_radioss(const FormatScope& scope, LineChanges& out);

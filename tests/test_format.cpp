@@ -57,6 +57,25 @@ TEST_CASE("format line: numbers right-aligned, blanks stay blank, text kept") {
     CHECK(out == "       &ro");
 }
 
+TEST_CASE("format line: the bulk lines' quick test agrees with the layout") {
+    const std::vector<grammar::FixedField> slots{{0, 8}, {8, 16}, {24, 16}};
+    using K = edit::CellKind;
+    const std::vector<K> kinds{K::Number, K::Number, K::Number};
+    std::string out;
+    for (const std::string line : {"       1  1.00000000e-01 -2.00000000e+00", "       1  1.00000000e-01",
+                                   "       1                  -2.00000000e+00", "1         1.00000000e-01",
+                                   "       1  1.00000000e-01 ", "       1 1.0 2", "       1  1.00000000e-01 x",
+                                   "       1-1.00000000e-01"}) {
+        CAPTURE(line);
+        const bool quick = edit::already_laid_out(line, slots, kinds);
+        const auto laid = edit::layout_fixed_line(line, slots, kinds, out);
+        if (quick) CHECK(laid.verdict == edit::LineVerdict::Same);
+        if (laid.verdict == edit::LineVerdict::Changed) CHECK_FALSE(quick);
+    }
+    CHECK(edit::already_laid_out("       1  1.00000000e-01 -2.00000000e+00", slots, kinds));
+    CHECK_FALSE(edit::already_laid_out("1         1.00000000e-01", slots, kinds));
+}
+
 TEST_CASE("format: a deck's cards in their columns, keyword names upper case, comments kept") {
     const std::string deck =
         "*keyword\n"
