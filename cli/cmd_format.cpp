@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
+#include <unistd.h>
 
 #include "cli/commands.hpp"
 #include "edit/apply_edits.hpp"
@@ -31,7 +32,7 @@ struct Totals {
 // Writes `text` over `path` through a temporary file renamed into place (the deck may be mapped).
 void write_file(const std::string& path, const std::string& text) {
     namespace fs = std::filesystem;
-    const std::string temporary = path + ".sphdeck-format";
+    const std::string temporary = path + ".sphdeck-format-" + std::to_string(::getpid());  // one per process
     {
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
         out.write(text.data(), static_cast<std::streamsize>(text.size()));

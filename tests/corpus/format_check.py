@@ -37,11 +37,36 @@ def without_positions(value):
     return value
 
 
+CARD_POSITION = re.compile(rb',"file":\d+,"line":\d+')
+
+
+class Dump:
+    """`dump --cards` with positions left out: the model part parsed, the card lines (some million values
+    on the biggest decks) compared as text with their file and line cut out, parsed only to name a
+    difference."""
+
+    def __init__(self, stdout):
+        model, cards = stdout.rsplit(b',"cards":', 1)
+        self.model = without_positions(json.loads(model + b"}"))
+        self.model.pop("card_files", None)
+        self.cards = CARD_POSITION.sub(b"", cards)
+
+    def __eq__(self, other):
+        return isinstance(other, Dump) and self.model == other.model and self.cards == other.cards
+
+    def difference(self, other):
+        where = first_difference(self.model, other.model)
+        if where:
+            return where
+        return first_difference(json.loads(self.cards.rstrip()[:-1]), json.loads(other.cards.rstrip()[:-1]), "$.cards")
+
+
 def dump(sphdeck, deck):
-    done = run([sphdeck, "dump", deck])
+    """The model dump and every card line's values (`dump --cards`), positions left out."""
+    done = run([sphdeck, "dump", "--cards", deck])
     if done is None or done.returncode != 0:
         return None
-    return without_positions(json.loads(done.stdout))
+    return Dump(done.stdout)
 
 
 def findings(sphdeck, deck, root):
@@ -55,8 +80,9 @@ def findings(sphdeck, deck, root):
     return found
 
 
-def findings_by_block(sphdeck, deck, root):
-    """Findings by (code, severity, file, n-th keyword line of the file): `$#` lines added move lines."""
+def findings_by_block(sphdeck, deck, root, by_line=None):
+    """Findings by (code, severity, file, n-th keyword line of the file): `$#` lines added move lines.
+    `by_line` (a Counter), when given, also receives them by (code, severity, file, line)."""
     done = run([sphdeck, "check", "--format", "json", "--no-config", deck])
     if done is None or done.returncode not in (0, 1):
         return None
@@ -77,6 +103,8 @@ def findings_by_block(sphdeck, deck, root):
                     keyword_lines[full] = []
             block = sum(1 for k in keyword_lines[full] if k <= d["line"])
         found[(d["code"], d["severity"], name, block)] += 1
+        if by_line is not None:
+            by_line[(d["code"], d["severity"], name, d["line"])] += 1
     return found
 
 
@@ -92,7 +120,7 @@ def first_difference(a, b, path="$"):
             if where:
                 return where
         return None
-    if isinstance(a, list):
+    if isinstance(a, (list, tuple)):
         if len(a) != len(b):
             return f"{path} (length {len(a)} vs {len(b)})"
         for i, (x, y) in enumerate(zip(a, b)):
@@ -130,11 +158,14 @@ def check_formatting(sphdeck, corpus, decks, jobs):
         shutil.copytree(corpus, copy, symlinks=True)
         pool = concurrent.futures.ThreadPoolExecutor(max_workers=max(1, jobs))
         original = os.path.abspath(corpus)
-        before = dict(zip(decks, pool.map(
-            lambda d: (dump(sphdeck, os.path.join(original, d)), findings(sphdeck, os.path.join(original, d), original)),
-            decks)))
-        before_by_block = dict(zip(decks, pool.map(
-            lambda d: findings_by_block(sphdeck, os.path.join(original, d), original), decks)))
+        def read_original(deck):
+            by_line = collections.Counter()
+            by_block = findings_by_block(sphdeck, os.path.join(original, deck), original, by_line)
+            return (dump(sphdeck, os.path.join(original, deck)), by_line if by_block is not None else None), by_block
+
+        both = dict(zip(decks, pool.map(read_original, decks)))
+        before = {d: both[d][0] for d in decks}
+        before_by_block = {d: both[d][1] for d in decks}
         kinds_of = dict(zip(decks, pool.map(lambda d: format_main(sphdeck, os.path.join(copy, d)), decks)))
         included = list(pool.map(lambda d: run([sphdeck, "format", "--includes", os.path.join(copy, d)]), decks))
         after = dict(zip(decks, pool.map(
@@ -163,7 +194,7 @@ def check_formatting(sphdeck, corpus, decks, jobs):
         for deck in decks:
             (dump_before, found_before), (dump_after, found_after) = before[deck], after[deck]
             if dump_before is not None and dump_after != dump_before:
-                where = first_difference(dump_before, dump_after) if dump_after is not None else "dump failed"
+                where = dump_before.difference(dump_after) if dump_after is not None else "dump failed"
                 failures.append(f"format: {deck}: a value changed: {where}")
             if found_before is not None and found_after is not None:
                 new = found_after - found_before
@@ -180,7 +211,7 @@ def check_formatting(sphdeck, corpus, decks, jobs):
             if done is None or done.returncode != 0:
                 failures.append(f"format: {deck}: format {' '.join(extra)} failed")
             if dump_before is not None and dump_after != dump_before:
-                where = first_difference(dump_before, dump_after) if dump_after is not None else "dump failed"
+                where = dump_before.difference(dump_after) if dump_after is not None else "dump failed"
                 failures.append(f"format {' '.join(extra)}: {deck}: a value changed: {where}")
             if found_before is not None and found_after is not None:
                 new = found_after - found_before
