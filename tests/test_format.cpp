@@ -168,3 +168,26 @@ TEST_CASE("format: CRLF line ends, titles and *INCLUDE names kept") {
     const std::string out = format_text(deck);
     CHECK(out == "*KEYWORD\r\n*TITLE\r\n  my   title   \r\n*CONTROL_TERMINATION\r\n       1.0\r\n*END\r\n");
 }
+
+TEST_CASE("format: OpenRadioss cards in the starter's cells, headers, titles and comments kept") {
+    const std::string deck =
+        "#RADIOSS STARTER\n"
+        "/BEGIN\n"
+        "run\n"
+        "      2026         0\n"
+        "                  kg                  mm                  ms\n"
+        "                  kg                  mm                  ms\n"
+        "/NODE\n"
+        "#  node_ID                  Xc\n"
+        "1         0.5                 1.0       \n"
+        "         2                 0.5                 1.0\n"
+        "/END\n";
+    const engine::CheckResult r = engine::check_buffer(deck, "run_0000.rad", {}, grammar::DeckFormat::Radioss);
+    const edit::FormatResult formatted = edit::format_deck(r.deck, r.diagnostics, {0}, {});
+    const std::string out = edit::apply_edits(deck, formatted.edits).text;
+    CHECK(out.find("#  node_ID                  Xc\n         1                 0.5                 1.0\n         2") !=
+          std::string::npos);
+    CHECK(out.substr(0, 60) == deck.substr(0, 60));  // /BEGIN's cards: text cells and the version as written
+    const engine::CheckResult again = engine::check_buffer(out, "run_0000.rad", {}, grammar::DeckFormat::Radioss);
+    CHECK(edit::format_deck(again.deck, again.diagnostics, {0}, {}).edits.empty());
+}
