@@ -70,14 +70,21 @@ bool format_one(const std::string& deck, const FormatArgs& args, Totals& totals)
     // The edits come in file order, one per changed line (a line's new text always differs from its old):
     // a file with an edit changes, and --check and --diff need not apply them.
     bool any = false;
-    auto at = formatted.edits.begin();
+    auto& all = formatted.edits;
+    std::size_t at = 0;
+    const std::size_t count = all.size();
     for (grammar::FileId id : files) {
         ++totals.files;
-        while (at != formatted.edits.end() && at->span.file < id) ++at;
-        auto end = at;
-        while (end != formatted.edits.end() && end->span.file == id) ++end;
+        while (at < count && all[at].span.file < id) ++at;
+        std::size_t end = at;
+        while (end < count && all[end].span.file == id) ++end;
         if (end == at) continue;
-        const std::vector<diag::TextEdit> edits(std::make_move_iterator(at), std::make_move_iterator(end));
+        std::vector<diag::TextEdit> edits;
+        if (at == 0 && end == count)
+            edits = std::move(all);  // one file: no copy (a 1M-particle deck may change every line)
+        else
+            edits.assign(std::make_move_iterator(all.begin() + static_cast<std::ptrdiff_t>(at)),
+                         std::make_move_iterator(all.begin() + static_cast<std::ptrdiff_t>(end)));
         at = end;
         const grammar::SourceFile& file = r.deck.sources.file(id);
         any = true;

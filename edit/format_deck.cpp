@@ -10,11 +10,14 @@ namespace sphdeck::edit {
 namespace detail {
 
 void LineChanges::append(LineChanges&& other) {
-    if (changes.empty())
+    if (changes.empty()) {
         changes = std::move(other.changes);
-    else
+    } else {
+        changes.reserve(changes.size() + other.changes.size());
         changes.insert(changes.end(), std::make_move_iterator(other.changes.begin()),
                        std::make_move_iterator(other.changes.end()));
+        other.changes = {};
+    }
     for (std::size_t k = 0; k < counts.size(); ++k) counts[k] += other.counts[k];
     for (auto& k : other.kept)
         if (kept.size() < 1000) kept.push_back(std::move(k));
@@ -116,13 +119,14 @@ FormatResult format_deck(const grammar::RawDeck& deck, const std::vector<diag::D
     else
         detail::format_dyna(scope, changes);
 
-    std::stable_sort(changes.changes.begin(), changes.changes.end(), [](const auto& a, const auto& b) {
-        return a.file != b.file ? a.file < b.file : a.line < b.line;
-    });
+    // Keyword lines, headers and card lines come from different passes: in file and line order.
+    const auto before = [](const diag::TextEdit& a, const diag::TextEdit& b) {
+        return a.span.file != b.span.file ? a.span.file < b.span.file : a.span.line < b.span.line;
+    };
+    if (!std::is_sorted(changes.changes.begin(), changes.changes.end(), before))  // includes interleave files
+        std::stable_sort(changes.changes.begin(), changes.changes.end(), before);
     FormatResult result;
-    result.edits.reserve(changes.changes.size());
-    for (auto& c : changes.changes)
-        result.edits.push_back({grammar::Span{c.file, c.line, 1, c.length + 1}, std::move(c.text)});
+    result.edits = std::move(changes.changes);
     result.changes = changes.counts;
     result.kept = changes.kept_count;
     result.kept_lines = std::move(changes.kept);

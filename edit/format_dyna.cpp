@@ -185,8 +185,8 @@ void header_above(const FormatScope& scope, const grammar::CardLine& line, std::
         }
     }
     const std::string_view eol = line_break(scope.deck, line, text.size());
-    if (!out.changes.empty() && out.changes.back().file == line.file && out.changes.back().line == line.line) {
-        out.changes.back().text.insert(0, header + std::string(eol));
+    if (!out.changes.empty() && out.changes.back().span.file == line.file && out.changes.back().span.line == line.line) {
+        out.changes.back().replacement.insert(0, header + std::string(eol));
         ++out.counts[static_cast<std::size_t>(FormatChange::Header)];
         return;
     }

@@ -40,20 +40,14 @@ bool is_field_header(std::string_view text);  // a `$#` comment line
 
 // Line changes of one pass (or one thread of it), merged into the result in line order.
 struct LineChanges {
-    struct Change {
-        grammar::FileId file;
-        std::uint32_t line;
-        std::uint32_t length;  // of the text replaced (the whole line's content)
-        std::string text;
-    };
-    std::vector<Change> changes;
+    std::vector<diag::TextEdit> changes;  // one whole line each (columns 1 to its length + 1)
     std::array<std::size_t, format_change_kinds> counts{};
     std::vector<KeptLine> kept;
     std::size_t kept_count = 0;
 
     void change(grammar::FileId file, std::uint32_t line, std::string_view old_text, std::string text,
                 FormatChange kind) {
-        changes.push_back({file, line, static_cast<std::uint32_t>(old_text.size()), std::move(text)});
+        changes.push_back({grammar::Span{file, line, 1, static_cast<std::uint32_t>(old_text.size()) + 1}, std::move(text)});
         ++counts[static_cast<std::size_t>(kind)];
     }
     void keep(grammar::FileId file, std::uint32_t line, std::string_view why) {
