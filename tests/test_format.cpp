@@ -191,3 +191,17 @@ TEST_CASE("format: OpenRadioss cards in the starter's cells, headers, titles and
     const engine::CheckResult again = engine::check_buffer(out, "run_0000.rad", {}, grammar::DeckFormat::Radioss);
     CHECK(edit::format_deck(again.deck, again.diagnostics, {0}, {}).edits.empty());
 }
+
+TEST_CASE("format: *ELEMENT_SPH NEND ends in column 40, where every reader takes it (DK023)") {
+    const std::string deck =
+        "*KEYWORD\n"
+        "*ELEMENT_SPH\n"
+        "101     1       2.7e-06         102\n"
+        "     103       1         2.7e-06       110\n"  // columns 41-42 (DK023): as written
+        "*END\n";
+    edit::FormatResult result;
+    const std::string out = format_text(deck, {}, &result);
+    CHECK(out.find("\n     101       1         2.7e-06     102\n") != std::string::npos);
+    CHECK(out.find("\n     103       1         2.7e-06       110\n") != std::string::npos);
+    CHECK(result.kept == 1);
+}

@@ -7,6 +7,9 @@ The corpus is copied to a temporary folder; there every deck is formatted (its o
   - the formatted deck has no finding (code, severity, file, line) the original did not have,
   - formatting again changes nothing (`format --check --includes` exits 0).
 It reports how many decks and include files format changed, and the lines changed by kind.
+
+Run alone on another folder (ctest `format-check-test-decks` runs it on decks/tests, decks wrong on purpose):
+    tests/corpus/format_check.py --sphdeck build/sphdeck --decks decks/tests
 """
 import collections
 import concurrent.futures
@@ -172,6 +175,16 @@ def check_formatting(sphdeck, corpus, decks, jobs):
             lambda d: (dump(sphdeck, os.path.join(copy, d)), findings(sphdeck, os.path.join(copy, d), copy)), decks)))
         again = dict(zip(decks, pool.map(
             lambda d: run([sphdeck, "format", "--check", "--includes", os.path.join(copy, d)]), decks)))
+        # What the default format changed (before the options below add their lines).
+        changed_decks = sum(1 for d in decks if not filecmp.cmp(os.path.join(original, d), os.path.join(copy, d),
+                                                                shallow=False))
+        changed_files = 0
+        for root, _, files in os.walk(copy):
+            for name in files:
+                path = os.path.join(root, name)
+                source = os.path.join(original, os.path.relpath(path, copy))
+                if os.path.isfile(source) and not filecmp.cmp(source, path, shallow=False):
+                    changed_files += 1
         # The options that add lines and rewrite free ones, on the formatted copy: the same three proofs.
         extra = ["--headers", "--to", "fixed", "--includes"]
         extra_done = list(pool.map(lambda d: run([sphdeck, "format", *extra, os.path.join(copy, d)]), decks))
@@ -222,15 +235,28 @@ def check_formatting(sphdeck, corpus, decks, jobs):
             if extra_again[deck] is None or extra_again[deck].returncode != 0:
                 failures.append(f"format {' '.join(extra)}: {deck}: formatting twice changes the deck")
 
-        changed_decks = sum(1 for d in decks if not filecmp.cmp(os.path.join(original, d), os.path.join(copy, d),
-                                                                shallow=False))
-        changed_files = 0
-        for root, _, files in os.walk(copy):
-            for name in files:
-                path = os.path.join(root, name)
-                source = os.path.join(original, os.path.relpath(path, copy))
-                if os.path.isfile(source) and not filecmp.cmp(source, path, shallow=False):
-                    changed_files += 1
     summary = [f"  format: {changed_decks} of {len(decks)} decks changed, {changed_files} files with --includes; "
                "lines: " + (", ".join(f"{n} {k}" for k, n in sorted(kinds.items())) or "none")]
     return failures, summary
+
+
+def main():
+    import argparse
+    import sys
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import run_corpus
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--sphdeck", required=True)
+    parser.add_argument("--decks", required=True, help="folder of decks (as the corpus check finds them)")
+    parser.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
+    args = parser.parse_args()
+    decks, _ = run_corpus.find_decks(args.decks)
+    failures, summary = check_formatting(args.sphdeck, args.decks, decks, args.jobs)
+    print(f"format check: {len(decks)} decks under {args.decks}")
+    for line in summary + ["FAIL " + f for f in failures]:
+        print(line)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
