@@ -2,11 +2,15 @@
 // line (stdout for the full text format, stderr otherwise so stdout stays machine-readable).
 #include <chrono>
 #include <cstdio>
+#include <iostream>
+#include <iterator>
 #include <fmt/format.h>
 #include <map>
 #include <memory>
 #include <unistd.h>
 
+#include "cli/check_inputs.hpp"
+#include "cli/check_statistics.hpp"
 #include "cli/commands.hpp"
 #include "cli/text_folding.hpp"
 #include "diag/render_github.hpp"
@@ -15,6 +19,7 @@
 #include "diag/render_text.hpp"
 #include "engine/check.hpp"
 #include "engine/config_file.hpp"
+#include "engine/include_context.hpp"
 #include "lint/rule_catalog.hpp"
 
 namespace sphdeck::cli {
@@ -29,6 +34,11 @@ struct CheckArgs {
     std::string solver, fail_on, config_file;
     bool no_config = false;
     bool no_geometry = false;
+    bool alone = false;  // no search for the decks that include a named file
+    std::vector<std::string> exclude;
+    std::string stdin_filename;
+    bool statistics = false, exit_zero = false;
+    std::string output_file;
     CLI::Option* select_option = nullptr;  // to tell "--select" absent from empty
 };
 
@@ -55,11 +65,14 @@ lint::ConfigOverrides overrides_of(const CheckArgs& args) {
 
 // Every deck's settings, resolved before any deck is read: a bad sphdeck.toml stops the run
 // (exit 2) instead of leaving a half-written report. Each config file is read once.
-std::optional<std::vector<lint::Config>> resolve_configs(const CheckArgs& args) {
+std::optional<std::vector<lint::Config>> resolve_configs(const CheckArgs& args, const std::vector<CheckInput>& inputs) {
     const lint::ConfigOverrides overrides = overrides_of(args);
     std::map<std::string, lint::Config> loaded;
     std::vector<lint::Config> out;
-    for (const std::string& deck : args.decks) {
+    for (const CheckInput& input : inputs) {
+        // Standard input is configured as the file it stands for, or as a deck in the working folder.
+        const std::string deck =
+            input.path != "-" ? input.path : (args.stdin_filename.empty() ? "stdin.k" : args.stdin_filename);
         std::string path;
         if (!args.no_config && !args.config_file.empty()) {
             path = args.config_file;
@@ -107,9 +120,52 @@ void add_totals(const engine::CheckResult& r, diag::RunSummary& totals) {
     totals.counts.infos += c.infos;
 }
 
+// A named file checked as part of the decks around it that include it (engine/include_context.hpp):
+// each result then holds only the file's findings. A file no deck includes is checked on its own.
+std::vector<engine::CheckResult> check_named_file(const CheckInput& input, const engine::CheckOptions& options,
+                                                  const CheckArgs& args) {
+    const std::string& path = input.path;
+    std::vector<engine::CheckResult> alone;
+    if (path == "-") {  // standard input: named and resolved as --stdin-filename says
+        const std::string name = args.stdin_filename.empty() ? "<stdin>" : args.stdin_filename;
+        std::string text(std::istreambuf_iterator<char>(std::cin), {});
+        const std::string folder = args.stdin_filename.empty() ? "." : std::filesystem::path(name).parent_path().string();
+        alone.push_back(engine::check_buffer(std::move(text), name, options, std::nullopt, folder.empty() ? "." : folder));
+        return alone;
+    }
+    // A deck found in a folder is checked alone: the decks of the folder that include it were dropped
+    // from the list or are checked themselves (check_inputs.hpp).
+    if (!args.alone && !input.found_in_folder) {
+        engine::IncludeContext context = engine::check_in_context(path, engine::Documents{}, options);
+        if (!context.decks.empty()) {
+            std::string mains;
+            for (std::size_t k = 0; k < context.decks.size(); ++k) {
+                mains += fmt::format("{}{}", k == 0 ? "" : ", ", context.decks[k].deck.sources.file(0).display_name);
+                context.decks[k].diagnostics = std::move(context.findings[k]);
+            }
+            std::fflush(stdout);
+            fmt::print(args.format == "full" || args.format == "concise" ? stdout : stderr,
+                       "{}: checked as included by {}\n", path, mains);
+            return std::move(context.decks);
+        }
+    }
+    alone.push_back(engine::check_file(path, options));
+    return alone;
+}
+
 int run_check(const CheckArgs& args) {
     auto start = std::chrono::steady_clock::now();
-    auto configs = resolve_configs(args);
+    const ExpandedInputs expanded = expand_inputs(args.decks, args.exclude);
+    if (expanded.error) {
+        fmt::print(stderr, "sphdeck: error: {}\n", *expanded.error);
+        return exit_usage;
+    }
+    const std::vector<CheckInput> inputs = drop_included(expanded.inputs);
+    if (!args.output_file.empty() && !std::freopen(args.output_file.c_str(), "w", stdout)) {
+        fmt::print(stderr, "sphdeck: error: cannot write '{}'\n", args.output_file);
+        return exit_usage;
+    }
+    auto configs = resolve_configs(args, inputs);
     if (!configs) return exit_usage;
     std::unique_ptr<diag::Report> report;
     if (args.format == "json") report = diag::make_json_report(lint::rule_catalog());
@@ -117,40 +173,47 @@ int run_check(const CheckArgs& args) {
     const bool colour = args.format == "full" && diag::colour_wanted(STDOUT_FILENO);
 
     diag::RunSummary totals;
+    FindingStatistics statistics;
     bool failed = false;
-    for (std::size_t i = 0; i < args.decks.size(); ++i) {
+    const bool text_format = args.format == "full" || args.format == "concise";
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
         const lint::Config& config = (*configs)[i];
-        engine::CheckResult r;
+        std::vector<engine::CheckResult> checked;
         try {
-            r = engine::check_file(args.decks[i], options_for(config, args));
+            checked = check_named_file(inputs[i], options_for(config, args), args);
         } catch (const std::exception& e) {
             fmt::print(stderr, "sphdeck: error: {}\n", e.what());
             totals.complete = false;
             continue;
         }
-        if (report) {
-            report->add(r.deck.sources, r.diagnostics);
-        } else if (args.format == "github") {
-            for (const diag::Diagnostic& d : r.diagnostics) fmt::print("{}", diag::render_github(d, r.deck.sources));
-        } else {
-            print_text(r, args, colour);
+        for (const engine::CheckResult& r : checked) {
+            if (report) {
+                report->add(r.deck.sources, r.diagnostics);
+            } else if (args.format == "github") {
+                for (const diag::Diagnostic& d : r.diagnostics) fmt::print("{}", diag::render_github(d, r.deck.sources));
+            } else {
+                print_text(r, args, colour);
+            }
+            failed = failed || lint::fails(config, r.diagnostics);
+            add_totals(r, totals);
+            statistics.add(inputs[i].path, r.diagnostics);
         }
-        failed = failed || lint::fails(config, r.diagnostics);
-        add_totals(r, totals);
+        if (text_format && inputs.size() > 1) fmt::print("{}\n", statistics.file_summary(inputs[i].path));
     }
+    if (args.statistics) fmt::print(text_format ? stdout : stderr, "{}", statistics.table(lint::rule_catalog()));
     totals.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (report) fmt::print("{}", report->finish(totals));
     std::fflush(stdout);
     // When no deck could be read, its error message is the last word, not a summary of nothing.
     const bool nothing_read = !totals.complete && totals.files == 0;
     if (!nothing_read)
-        fmt::print(args.format == "full" ? stdout : stderr,
+        fmt::print(args.format == "full" && args.output_file.empty() ? stdout : stderr,
                    "checked {} file(s): {} keywords, {} cards, {} particles; {} error(s), {} warning(s), {} info(s) "
                    "in {:.2f} s\n",
                    totals.files, totals.keywords, totals.cards, totals.particles, totals.counts.errors,
                    totals.counts.warnings, totals.counts.infos, totals.seconds);
     if (!totals.complete) return exit_usage;
-    return failed ? exit_findings : exit_clean;
+    return failed && !args.exit_zero ? exit_findings : exit_clean;
 }
 
 // Rejects unknown codes on the command line, with the registry's suggestions.
@@ -167,7 +230,17 @@ CLI::Validator rule_selector() {
 
 std::function<int()> setup_check(CLI::App& app) {
     auto args = std::make_shared<CheckArgs>();
-    app.add_option("decks", args->decks, "LS-DYNA keyword decks (.k, .key, .dyn)")->required();
+    app.add_option("decks", args->decks,
+                   "decks (LS-DYNA .k .key .dyn .inc, OpenRadioss _0000.rad), folders searched for them, or - "
+                   "for standard input")
+        ->required();
+    app.add_option("--exclude", args->exclude, "skip files found in folders that match these globs")
+        ->allow_extra_args(false);
+    app.add_option("--stdin-filename", args->stdin_filename,
+                   "the name of the deck read from standard input (-): for messages and include resolution");
+    app.add_flag("--statistics", args->statistics, "print the number of findings per rule and per file");
+    app.add_flag("--exit-zero", args->exit_zero, "exit 0 even when findings would make it 1 (2 stays 2)");
+    app.add_option("--output-file,-o", args->output_file, "write the report to this file instead of stdout");
     app.add_option("--format", args->format, "output format (json, sarif and github carry every finding)")
         ->check(CLI::IsMember({"full", "concise", "json", "sarif", "github"}))
         ->capture_default_str();
@@ -199,6 +272,8 @@ std::function<int()> setup_check(CLI::App& app) {
     app.add_flag("--no-geometry", args->no_geometry,
                  "skip the rules that need particle neighbours (SPH090, SPH113-SPH118): a quick syntax and "
                  "settings check of very large decks");
+    app.add_flag("--alone", args->alone,
+                 "check each file on its own, not as part of the decks around it that include it");
     return [args] { return run_check(*args); };
 }
 
