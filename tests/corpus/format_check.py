@@ -78,7 +78,7 @@ def findings(sphdeck, deck, root):
         return None
     found = collections.Counter()
     for d in json.loads(done.stdout)["diagnostics"]:
-        name = os.path.relpath(d["file"], root) if d["file"] and os.path.isabs(d["file"]) else d["file"]
+        name = os.path.relpath(os.path.abspath(d["file"]), root) if d["file"] else None
         found[(d["code"], d["severity"], name, d["line"])] += 1
     return found
 
@@ -93,10 +93,10 @@ def findings_by_block(sphdeck, deck, root, by_line=None):
     found = collections.Counter()
     for d in json.loads(done.stdout)["diagnostics"]:
         path = d["file"]
-        name = os.path.relpath(path, root) if path and os.path.isabs(path) else path
+        name = os.path.relpath(os.path.abspath(path), root) if path else None
         block = None
         if path:
-            full = path if os.path.isabs(path) or os.path.exists(path) else os.path.join(os.path.dirname(deck), path)
+            full = os.path.abspath(path)  # findings name files as given or from the working folder
             if full not in keyword_lines:
                 try:
                     with open(full, "rb") as f:
