@@ -16,6 +16,7 @@ const std::vector<sphdeck::cli::Command>& commands() {
         {"rule", "explain one rule: what it checks, why, how to fix it, an example", sphdeck::cli::setup_rule},
         {"rules", "list every rule (--format markdown: docs/rules.md)", sphdeck::cli::setup_rules},
         {"keyword", "print a keyword's cards: columns, types, defaults, allowed values", sphdeck::cli::setup_keyword},
+        {"format", "rewrite decks in a canonical column layout without changing a value (--check, --diff)", sphdeck::cli::setup_format},
         {"dump", "print the decoded deck model (--format json)", sphdeck::cli::setup_dump},
         {"diff", "what the solver reads differently in two decks (exit 1 when they differ)", sphdeck::cli::setup_diff},
         {"smooth", "preview smoothing lengths, neighbours and time step per part (table, json, csv, vtk, svg)", sphdeck::cli::setup_smooth},

@@ -41,7 +41,7 @@ nlohmann::json folding_of(const CheckedDeck& deck, grammar::FileId file, const n
 }
 
 // One row a feature.
-constexpr std::array<FeatureRow, 12> kFeatures{{
+constexpr std::array<FeatureRow, 14> kFeatures{{
     {"textDocument/hover", "hoverProvider", at_position<hover>},
     {"textDocument/definition", "definitionProvider", at_position<definition>},
     {"textDocument/references", "referencesProvider", references_of},
@@ -54,6 +54,8 @@ constexpr std::array<FeatureRow, 12> kFeatures{{
     {"textDocument/semanticTokens/range", "semanticTokensProvider", semantic_tokens_range},
     {"textDocument/inlayHint", "inlayHintProvider", inlay_hints},
     {"textDocument/signatureHelp", "signatureHelpProvider", at_position<signature_help>},
+    {"textDocument/formatting", "documentFormattingProvider", formatting},
+    {"textDocument/rangeFormatting", "documentRangeFormattingProvider", range_formatting},
 }};
 }  // namespace
 

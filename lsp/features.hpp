@@ -3,7 +3,7 @@
 // there is nothing to say). The server (lsp/server.*) finds the deck and the file a request is
 // about, then calls these; they never read a file or write to the client.
 // One file per feature: lsp/feature_hover.cpp, feature_definition.cpp, feature_completion.cpp,
-// feature_symbols.cpp, feature_folding.cpp, feature_code_actions.cpp.
+// feature_symbols.cpp, feature_folding.cpp, feature_code_actions.cpp, feature_formatting.cpp.
 #pragma once
 
 #include <string_view>
@@ -62,6 +62,11 @@ nlohmann::json inlay_hints(const CheckedDeck& deck, grammar::FileId file, const 
 // the cursor (blank part included; on a line being typed, the card it will be read as) active.
 // SignatureHelp or null.
 nlohmann::json signature_help(const CheckedDeck& deck, grammar::FileId file, TextPosition position);
+
+// textDocument/formatting: the edits `sphdeck format` makes to the file (lsp/feature_formatting.cpp),
+// TextEdit[]; textDocument/rangeFormatting: those on the lines of params.range.
+nlohmann::json formatting(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json& params);
+nlohmann::json range_formatting(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json& params);
 
 // The feature requests by method name, for the server: it finds the deck and the file that a
 // request's textDocument names, then asks here. `handled` is false for a method no feature answers

@@ -19,11 +19,12 @@ struct RpcError {
 };
 
 // The document requests the features answer; with no deck reading the file their answer is null.
-constexpr std::array<std::string_view, 12> kDocumentFeatures = {
+constexpr std::array<std::string_view, 14> kDocumentFeatures = {
     "textDocument/hover",          "textDocument/definition",   "textDocument/references",
     "textDocument/completion",     "textDocument/documentSymbol", "textDocument/foldingRange",
     "textDocument/codeAction",     "textDocument/semanticTokens/full", "textDocument/semanticTokens/full/delta",
-    "textDocument/semanticTokens/range", "textDocument/inlayHint", "textDocument/signatureHelp"};
+    "textDocument/semanticTokens/range", "textDocument/inlayHint", "textDocument/signatureHelp",
+    "textDocument/formatting",     "textDocument/rangeFormatting"};
 
 // The "inlayHints" object of initializationOptions or of didChangeConfiguration's settings, also
 // under a "sphdeck" section; null when there is none.

@@ -14,6 +14,9 @@ Decks: every *.k, *.key, *.dyn file (LS-DYNA) and every *_0000.rad file (OpenRad
 below the corpus folder. Where an OpenRadioss deck has the starter's listing beside it
 (../reference/NAME_0000.out), the listing's error count is read: errors on decks the starter accepted
 are counted apart in the summary.
+
+Then format_check.py proves on every deck that `sphdeck format` changes no value (dump equal, no new finding,
+a second run changes nothing); --no-format-check skips it.
 """
 import argparse
 import collections
@@ -24,6 +27,8 @@ import re
 import subprocess
 import sys
 import time
+
+import format_check
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 PROJECT = os.path.dirname(os.path.dirname(HERE))
@@ -123,6 +128,8 @@ def main():
     parser.add_argument("--write-baseline", metavar="FILE", help="write the current findings as a baseline")
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
     parser.add_argument("--verbose", action="store_true", help="list every deck's findings")
+    parser.add_argument("--no-format-check", action="store_true",
+                        help="skip the proof that `sphdeck format` changes no value (tests/corpus/format_check.py)")
     parser.add_argument("--skip-missing", action="store_true",
                         help="exit 77 (skipped, for ctest) when the corpus folder is not there")
     args = parser.parse_args()
@@ -190,6 +197,13 @@ def main():
         if codes:
             print(f"  {severity}s: " + ", ".join(f"{c} {n}" for c, n in codes))
     print(f"  baseline: {len(baseline)} rows, {sum(r[0] for r in baseline.values())} findings")
+    if not args.no_format_check:
+        format_start = time.monotonic()
+        format_failures, format_summary = format_check.check_formatting(args.sphdeck, corpus, decks, args.jobs)
+        failures += format_failures
+        for line in format_summary:
+            print(line)
+        print(f"  format check: {time.monotonic() - format_start:.1f} s")
     for failure in failures:
         print("FAIL " + failure)
     passed = 0 if failures else 1

@@ -1,0 +1,144 @@
+// sphdeck format DECK...: rewrite decks in their canonical layout (edit/format_deck.hpp), in place, or
+// tell whether they would change (--check, for CI and pre-commit), or print the diff (--diff). The deck
+// is read and checked first: the findings of the deck syntax say which lines to leave as written.
+#include <filesystem>
+#include <fmt/format.h>
+#include <fstream>
+#include <unistd.h>
+
+#include "cli/commands.hpp"
+#include "edit/apply_edits.hpp"
+#include "edit/format_deck.hpp"
+#include "edit/unified_diff.hpp"
+#include "engine/check.hpp"
+#include "engine/config_file.hpp"
+
+namespace sphdeck::cli {
+namespace {
+
+struct FormatArgs {
+    std::vector<std::string> decks;
+    bool check = false, diff = false, verbose = false;
+    std::string to;
+    edit::FormatOptions options;
+    std::vector<std::string> include_paths;
+};
+
+struct Totals {
+    std::size_t files = 0, changed = 0, kept = 0;
+    std::array<std::size_t, edit::format_change_kinds> changes{};
+};
+
+// Writes `text` over `path` through a temporary file renamed into place (the deck may be mapped).
+void write_file(const std::string& path, const std::string& text) {
+    namespace fs = std::filesystem;
+    const std::string temporary = path + ".sphdeck-format-" + std::to_string(::getpid());  // one per process
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        out.write(text.data(), static_cast<std::streamsize>(text.size()));
+        if (!out) throw std::runtime_error("cannot write " + temporary);
+    }
+    std::error_code ignored;
+    fs::permissions(temporary, fs::status(path).permissions(), ignored);
+    fs::rename(temporary, path);
+}
+
+std::vector<std::string> include_paths_for(const std::string& deck, const FormatArgs& args) {
+    std::vector<std::string> paths = args.include_paths;
+    if (auto found = engine::find_config(deck)) {
+        lint::Config config;
+        if (!engine::load_config(found->string(), config)) paths.insert(paths.end(), config.include_paths.begin(), config.include_paths.end());
+    }
+    return paths;
+}
+
+// Formats one deck (and its includes when asked); true when a file changed or would change.
+bool format_one(const std::string& deck, const FormatArgs& args, Totals& totals) {
+    engine::CheckOptions options;
+    options.reader.include_paths = include_paths_for(deck, args);
+    options.rules.geometry = false;  // the layout needs the reading's findings, not the particles' geometry
+    const engine::CheckResult r = engine::check_file(deck, options);
+    const auto files = edit::files_to_format(r.deck, args.options.includes);
+    edit::FormatResult formatted = edit::format_deck(r.deck, r.diagnostics, files, args.options);
+    for (std::size_t k = 0; k < totals.changes.size(); ++k) totals.changes[k] += formatted.changes[k];
+    totals.kept += formatted.kept;
+    if (args.verbose)
+        for (const auto& kept : formatted.kept_lines)
+            fmt::print(stderr, "{}:{}: left as written: {}\n", r.deck.sources.file(kept.file).display_name, kept.line,
+                       kept.reason);
+
+    // The edits come in file order, one per changed line (a line's new text always differs from its old):
+    // a file with an edit changes, and --check and --diff need not apply them.
+    bool any = false;
+    auto& all = formatted.edits;
+    std::size_t at = 0;
+    const std::size_t count = all.size();
+    for (grammar::FileId id : files) {
+        ++totals.files;
+        while (at < count && all[at].span.file < id) ++at;
+        std::size_t end = at;
+        while (end < count && all[end].span.file == id) ++end;
+        if (end == at) continue;
+        std::vector<diag::TextEdit> edits;
+        if (at == 0 && end == count)
+            edits = std::move(all);  // one file: no copy (a 1M-particle deck may change every line)
+        else
+            edits.assign(std::make_move_iterator(all.begin() + static_cast<std::ptrdiff_t>(at)),
+                         std::make_move_iterator(all.begin() + static_cast<std::ptrdiff_t>(end)));
+        at = end;
+        const grammar::SourceFile& file = r.deck.sources.file(id);
+        any = true;
+        ++totals.changed;
+        if (args.diff)
+            fmt::print("{}", edit::unified_diff(file.display_name, file.text, edits));
+        else if (args.check)
+            fmt::print("would reformat {}\n", file.display_name);
+        else
+            write_file(file.path, edit::apply_edits(file.text, edits).text);
+    }
+    return any;
+}
+
+int run_format(FormatArgs& args) {
+    args.options.to_fixed = args.to == "fixed";
+    Totals totals;
+    bool changed = false;
+    for (const std::string& deck : args.decks) {
+        try {
+            changed = format_one(deck, args, totals) || changed;
+        } catch (const std::exception& e) {
+            fmt::print(stderr, "error: {}\n", e.what());
+            return exit_usage;
+        }
+    }
+    std::string how;
+    for (std::size_t k = 0; k < totals.changes.size(); ++k)
+        if (totals.changes[k] > 0)
+            how += fmt::format("{}{} {}", how.empty() ? "" : ", ", totals.changes[k],
+                               edit::to_string(static_cast<edit::FormatChange>(k)));
+    const char* verb = args.check || args.diff ? "would reformat" : "reformatted";
+    fmt::print(stderr, "{} {} of {} file{}{}{}\n", verb, totals.changed, totals.files, totals.files == 1 ? "" : "s",
+               how.empty() ? "" : " (lines: " + how + ")",
+               totals.kept == 0 ? ""
+                                : fmt::format("; {} card line{} left as written{}", totals.kept,
+                                              totals.kept == 1 ? "" : "s", args.verbose ? "" : " (--verbose lists them)"));
+    return args.check && changed ? exit_findings : exit_clean;
+}
+
+}  // namespace
+
+std::function<int()> setup_format(CLI::App& app) {
+    auto args = std::make_shared<FormatArgs>();
+    app.add_option("decks", args->decks, "LS-DYNA keyword decks or OpenRadioss starter decks")->required();
+    app.add_flag("--check", args->check, "write nothing; exit 1 when a file would change (CI, pre-commit)");
+    app.add_flag("--diff", args->diff, "write nothing; print a unified diff of the changes");
+    app.add_flag("--includes", args->options.includes, "format the included files too (else only the named decks)");
+    app.add_flag("--headers", args->options.headers, "write a `$#` line naming the fields above each card");
+    app.add_option("--to", args->to, "rewrite free (comma) lines in fixed columns when every value fits")
+        ->check(CLI::IsMember({"fixed"}));
+    app.add_flag("-v,--verbose", args->verbose, "list the card lines left as written and why");
+    app.add_option("-I,--include-path", args->include_paths, "extra folder searched for *INCLUDE files");
+    return [args] { return run_format(*args); };
+}
+
+}  // namespace sphdeck::cli

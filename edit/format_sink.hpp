@@ -1,0 +1,72 @@
+// Internal to edit/format_*: where the LS-DYNA and OpenRadioss formatters put their line changes, and
+// the lines they must leave alone.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include "edit/format_deck.hpp"
+#include "edit/format_line.hpp"
+#include "grammar/raw_deck.hpp"
+
+namespace sphdeck::edit::detail {
+
+inline std::uint64_t line_key(grammar::FileId file, std::uint32_t line) {
+    return (std::uint64_t{file} << 32) | line;
+}
+
+struct FormatScope {
+    const grammar::RawDeck& deck;
+    const FormatOptions& options;
+    std::unordered_set<grammar::FileId> files;  // the files formatted
+    std::unordered_map<std::uint64_t, std::string_view> doubtful;  // line key -> the finding's code
+
+    bool formats(grammar::FileId file) const { return files.count(file) != 0; }
+    const std::string_view* doubt(grammar::FileId file, std::uint32_t line) const {
+        auto it = doubtful.find(line_key(file, line));
+        return it == doubtful.end() ? nullptr : &it->second;
+    }
+};
+
+// The `$#` line naming `card`'s fields over their columns at `slots`, as LS-PrePost writes it.
+std::string field_header(std::span<const std::string_view> names, std::span<const grammar::FixedField> slots);
+bool is_field_header(std::string_view text);  // a `$#` comment line
+
+// Line changes of one pass (or one thread of it), merged into the result in line order.
+struct LineChanges {
+    std::vector<diag::TextEdit> changes;  // one whole line each (columns 1 to its length + 1)
+    std::array<std::size_t, format_change_kinds> counts{};
+    std::vector<KeptLine> kept;
+    std::size_t kept_count = 0;
+
+    void change(grammar::FileId file, std::uint32_t line, std::string_view old_text, std::string text,
+                FormatChange kind) {
+        changes.push_back({grammar::Span{file, line, 1, static_cast<std::uint32_t>(old_text.size()) + 1}, std::move(text)});
+        ++counts[static_cast<std::size_t>(kind)];
+    }
+    void keep(grammar::FileId file, std::uint32_t line, std::string_view why) {
+        if (kept.size() < 1000) kept.push_back({file, line, std::string(why)});
+        ++kept_count;
+    }
+    void append(LineChanges&& other);
+};
+
+// How a card line of `text` lays out, given its kinds and slots; records the change or the doubt.
+// `free_allowed`: the card has a field that is not text (a comma in a title is text); `no_comma_or_tab`:
+// the caller scanned the line (grammar::scan_line), so a line laid out already is passed at once.
+enum class CardLineState { Blank, Kept, Free, Fixed };
+CardLineState format_card_line(const FormatScope& scope, const grammar::CardLine& line, std::string_view text,
+                               std::span<const grammar::FixedField> slots, std::span<const CellKind> kinds,
+                               bool free_allowed, std::string& buffer, LineChanges& out,
+                               bool no_comma_or_tab = false);
+
+void format_dyna(const FormatScope& scope, LineChanges& out);
+void format_radioss(const FormatScope& scope, LineChanges& out);
+
+}  // namespace sphdeck::edit::detail
