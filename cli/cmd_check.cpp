@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "cli/commands.hpp"
+#include "cli/fix_output.hpp"
 #include "cli/text_folding.hpp"
 #include "diag/render_github.hpp"
 #include "diag/render_json.hpp"
@@ -15,6 +16,7 @@
 #include "diag/render_text.hpp"
 #include "engine/check.hpp"
 #include "engine/config_file.hpp"
+#include "edit/fix_session.hpp"
 #include "lint/rule_catalog.hpp"
 
 namespace sphdeck::cli {
@@ -29,6 +31,7 @@ struct CheckArgs {
     std::string solver, fail_on, config_file;
     bool no_config = false;
     bool no_geometry = false;
+    bool fix = false, unsafe_fixes = false, diff = false;
     CLI::Option* select_option = nullptr;  // to tell "--select" absent from empty
 };
 
@@ -107,7 +110,37 @@ void add_totals(const engine::CheckResult& r, diag::RunSummary& totals) {
     totals.counts.infos += c.infos;
 }
 
+// What --fix and --diff did over all decks.
+struct FixTotals {
+    std::size_t fixed = 0, remaining = 0, files = 0;
+    bool write_failed = false;
+};
+
+// --fix: mends the deck and its includes (edit::fix_deck) and writes the files that changed; --diff
+// prints their diff instead and writes nothing. Returns the check of the fixed texts.
+engine::CheckResult fix_deck(const std::string& deck, engine::Documents& documents,
+                             const engine::CheckOptions& options, const CheckArgs& args, FixTotals& totals) {
+    const edit::FixLevel level = args.unsafe_fixes ? edit::FixLevel::Unsafe : edit::FixLevel::Safe;
+    edit::FixOutcome outcome = edit::fix_deck(deck, documents, options, level);
+    totals.fixed += outcome.fixed;
+    totals.remaining += outcome.remaining.diagnostics.size();
+    totals.files += outcome.files.size();
+    for (const edit::FixedFile& file : outcome.files) {
+        if (args.diff) {
+            fmt::print("{}", fixed_file_diff(file));
+        } else if (std::string error = write_fixed_file(file); !error.empty()) {
+            fmt::print(stderr, "sphdeck: error: {}\n", error);
+            totals.write_failed = true;
+        }
+    }
+    return std::move(outcome.remaining);
+}
+
 int run_check(const CheckArgs& args) {
+    if (args.unsafe_fixes && !args.fix && !args.diff) {
+        fmt::print(stderr, "sphdeck: error: --unsafe-fixes widens --fix or --diff; give one of them\n");
+        return exit_usage;
+    }
     auto start = std::chrono::steady_clock::now();
     auto configs = resolve_configs(args);
     if (!configs) return exit_usage;
@@ -117,18 +150,24 @@ int run_check(const CheckArgs& args) {
     const bool colour = args.format == "full" && diag::colour_wanted(STDOUT_FILENO);
 
     diag::RunSummary totals;
+    FixTotals fix_totals;
+    engine::Documents fixed_texts;  // the texts --fix and --diff mended, seen by the next decks
+    const bool fixing = args.fix || args.diff;
     bool failed = false;
     for (std::size_t i = 0; i < args.decks.size(); ++i) {
         const lint::Config& config = (*configs)[i];
         engine::CheckResult r;
         try {
-            r = engine::check_file(args.decks[i], options_for(config, args));
+            r = fixing ? fix_deck(args.decks[i], fixed_texts, options_for(config, args), args, fix_totals)
+                       : engine::check_file(args.decks[i], options_for(config, args));
         } catch (const std::exception& e) {
             fmt::print(stderr, "sphdeck: error: {}\n", e.what());
             totals.complete = false;
             continue;
         }
-        if (report) {
+        if (args.diff) {
+            // stdout holds the diff only, as with `diff -u`
+        } else if (report) {
             report->add(r.deck.sources, r.diagnostics);
         } else if (args.format == "github") {
             for (const diag::Diagnostic& d : r.diagnostics) fmt::print("{}", diag::render_github(d, r.deck.sources));
@@ -143,13 +182,19 @@ int run_check(const CheckArgs& args) {
     std::fflush(stdout);
     // When no deck could be read, its error message is the last word, not a summary of nothing.
     const bool nothing_read = !totals.complete && totals.files == 0;
+    std::string fixes;  // ruff's "(2 fixed, 1 remaining)"
+    if (fixing)
+        fixes = args.diff ? fmt::format("; would fix {}, {} remaining", fix_totals.fixed, fix_totals.remaining)
+                          : fmt::format("; {} fixed, {} remaining", fix_totals.fixed, fix_totals.remaining);
     if (!nothing_read)
-        fmt::print(args.format == "full" ? stdout : stderr,
+        fmt::print(args.format == "full" && !args.diff ? stdout : stderr,
                    "checked {} file(s): {} keywords, {} cards, {} particles; {} error(s), {} warning(s), {} info(s) "
-                   "in {:.2f} s\n",
+                   "in {:.2f} s{}\n",
                    totals.files, totals.keywords, totals.cards, totals.particles, totals.counts.errors,
-                   totals.counts.warnings, totals.counts.infos, totals.seconds);
-    if (!totals.complete) return exit_usage;
+                   totals.counts.warnings, totals.counts.infos, totals.seconds, fixes);
+    if (!totals.complete || fix_totals.write_failed) return exit_usage;
+    // --diff exits 1 when a file would change, as ruff's does; otherwise the remaining findings decide.
+    if (args.diff && fix_totals.files > 0) return exit_findings;
     return failed ? exit_findings : exit_clean;
 }
 
@@ -199,6 +244,13 @@ std::function<int()> setup_check(CLI::App& app) {
     app.add_flag("--no-geometry", args->no_geometry,
                  "skip the rules that need particle neighbours (SPH090, SPH113-SPH118): a quick syntax and "
                  "settings check of very large decks");
+    app.add_flag("--fix", args->fix,
+                 "apply the safe fixes the findings carry to the deck and its include files, in place; the "
+                 "summary and exit code then report the findings that remain");
+    app.add_flag("--unsafe-fixes", args->unsafe_fixes,
+                 "with --fix or --diff: apply the unsafe fixes too (a judgement, such as a did-you-mean name)");
+    app.add_flag("--diff", args->diff,
+                 "print the unified diff --fix would make and write nothing (exit 1 when a file would change)");
     return [args] { return run_check(*args); };
 }
 

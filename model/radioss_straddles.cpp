@@ -73,13 +73,25 @@ diag::Diagnostic straddle_finding(const grammar::CardLine& line, std::string_vie
     else
         where = fmt::format("'{}' is read as the start of {} ({})", lost, card.fields[s.cell + 1].name,
                             cell_columns(positions[s.cell + 1]));
-    return diag::Diagnostic{
+    diag::Diagnostic d{
         "RAD030", diag::Severity::Error,
         fmt::format("'{}' straddles the end of cell {} ({}): the starter reads {} as '{}' and {}", whole, here.name,
                     cell_columns(positions[s.cell]), here.name, kept, where),
         grammar::Span{line.file, line.line, static_cast<std::uint32_t>(s.begin + 1),
                       static_cast<std::uint32_t>(s.end + 1)},
         {}};
+    // Safe fix: the number moved left by the columns it overruns, to end at its cell's end, when blanks
+    // of its own cell stand before it: it is then read whole in its cell and nothing else moves.
+    const std::size_t overrun = s.end - s.boundary;
+    if (s.begin >= positions[s.cell].start + overrun &&
+        text.substr(s.begin - overrun, overrun).find_first_not_of(' ') == std::string_view::npos)
+        d.fixes.push_back({fmt::format("move '{}' {} column{} left, to end at column {}, the end of {}", whole,
+                                       overrun, overrun == 1 ? "" : "s", s.boundary, here.name),
+                           true,
+                           {{grammar::Span{line.file, line.line, static_cast<std::uint32_t>(s.begin - overrun + 1),
+                                           static_cast<std::uint32_t>(s.end + 1)},
+                             std::string(whole) + std::string(overrun, ' ')}}});
+    return d;
 }
 
 bool within(const diag::Diagnostic& d, const grammar::CardLine& line, std::size_t begin, std::size_t end) {
