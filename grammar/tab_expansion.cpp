@@ -6,7 +6,8 @@ namespace sphdeck::grammar {
 namespace {
 
 // The field of each blank-separated value of `text`, in order, or nullopt when a value lies across a
-// field boundary, in a gap or past the last field, or two values share a field.
+// field boundary, in a gap or past the last field, two values share a field, or a value is neither
+// right- nor left-aligned in its field.
 std::optional<std::vector<std::size_t>> fields_of_values(std::string_view text, std::span<const FixedField> positions) {
     std::vector<std::size_t> out;
     for (std::size_t i = 0; i < text.size();) {
@@ -20,6 +21,9 @@ std::optional<std::vector<std::size_t>> fields_of_values(std::string_view text, 
         for (std::size_t k = 0; k < positions.size(); ++k)
             if (begin >= positions[k].start && begin - positions[k].start < positions[k].width) field = k;
         if (field == positions.size() || i - positions[field].start > positions[field].width) return std::nullopt;
+        // Laid out on purpose: the value starts at its field's start or ends at its end.
+        if (begin != positions[field].start && i != std::size_t{positions[field].start} + positions[field].width)
+            return std::nullopt;
         if (!out.empty() && out.back() == field) return std::nullopt;
         out.push_back(field);
     }

@@ -1,6 +1,7 @@
 // DK016's fix: the tabs of a fixed-format line replaced by the blanks an editor shows in their place,
 // when that layout is certain: with tab stops every 8 columns each value lies whole inside a field of
-// its own, and tab stops every 4 columns show no other such layout. The solver counts a tab as one
+// its own, right-aligned to its end (or left-aligned to its start), and tab stops every 4 columns show
+// no other such layout. The solver counts a tab as one
 // column; the author placed the values by what the editor showed, which is what the blanks keep.
 #pragma once
 

@@ -139,8 +139,12 @@ TEST_CASE("fix: DK016's tab expanded only when the layout it shows is certain") 
     CHECK(grammar::expand_tabs_if_certain("     0.002\t\t1.0e-3", fields) == "     0.002              1.0e-3");
     // At stops of 8 "500000" crosses the end of field 1.
     CHECK_FALSE(grammar::expand_tabs_if_certain("     0.002\t500000", fields));
-    // At stops of 8 field 1, at stops of 4 field 0: which was meant is a guess.
-    CHECK_FALSE(grammar::expand_tabs_if_certain("\t  1.0", fields));
+    // A value neither right- nor left-aligned in its field at stops of 8: not laid out on purpose.
+    CHECK_FALSE(grammar::expand_tabs_if_certain("\t   1.0", fields));
+    // At stops of 8 the start of field 2, at stops of 4 the start of field 1: which was meant is a guess.
+    const std::vector<grammar::FixedField> narrow = {{0, 4}, {4, 4}, {8, 4}, {12, 4}};
+    CHECK_FALSE(grammar::expand_tabs_if_certain("\t1.0", narrow));
+    CHECK(grammar::expand_tabs_if_certain("\t  1.0", fields) == "          1.0");
 }
 
 TEST_CASE("fix: check --fix writes the mended files, --diff prints and writes nothing") {
