@@ -123,6 +123,8 @@ def main():
     parser.add_argument("--write-baseline", metavar="FILE", help="write the current findings as a baseline")
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
     parser.add_argument("--verbose", action="store_true", help="list every deck's findings")
+    parser.add_argument("--no-fix-check", action="store_true",
+                        help="leave out the check of `check --fix` on the decks (tests/corpus/fix_check.py)")
     parser.add_argument("--skip-missing", action="store_true",
                         help="exit 77 (skipped, for ctest) when the corpus folder is not there")
     args = parser.parse_args()
@@ -190,6 +192,9 @@ def main():
         if codes:
             print(f"  {severity}s: " + ", ".join(f"{c} {n}" for c, n in codes))
     print(f"  baseline: {len(baseline)} rows, {sum(r[0] for r in baseline.values())} findings")
+    if not args.no_fix_check:
+        import fix_check  # tests/corpus/fix_check.py: no value changes except those a fix names
+        failures += fix_check.check_fixes(os.path.abspath(args.sphdeck), corpus, decks, args.jobs)
     for failure in failures:
         print("FAIL " + failure)
     passed = 0 if failures else 1
