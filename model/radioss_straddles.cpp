@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -112,6 +113,30 @@ void fold_and_add(std::vector<diag::Diagnostic>& out, std::size_t from, diag::Di
     out.push_back(std::move(cause));
 }
 
+// One value typed across a cell boundary while every other value of the line ends at its cell's end
+// (right-aligned, as written): the line is not shifted, only that value moved (RAD030), whatever a
+// shift of the whole line would also explain.
+bool one_value_moved(std::string_view text, const std::vector<Straddle>& glued,
+                     std::span<const grammar::FixedField> positions) {
+    if (glued.size() != 1) return false;
+    std::size_t others = 0;
+    for (std::size_t i = 0; i < text.size();) {
+        if (blank(text[i])) {
+            ++i;
+            continue;
+        }
+        const std::size_t begin = i;
+        while (i < text.size() && !blank(text[i])) ++i;
+        if (begin == glued[0].begin) continue;
+        const bool at_cell_end = std::any_of(positions.begin(), positions.end(), [&](const grammar::FixedField& f) {
+            return std::size_t{f.start} + f.width == i && begin >= f.start;
+        });
+        if (!at_cell_end) return false;
+        ++others;
+    }
+    return others > 0;
+}
+
 }  // namespace
 
 void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
@@ -121,7 +146,9 @@ void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
     if (glued.empty() && out.size() == from) return;
     std::vector<FieldType> types;
     for (const auto& f : card.fields) types.push_back(type_of(f.cell));
-    if (auto shift = grammar::find_shift(text, {}, positions, types)) {
+    std::optional<grammar::LineShift> shift;
+    if (!one_value_moved(text, glued, positions)) shift = grammar::find_shift(text, {}, positions, types);
+    if (shift) {
         const int n = std::abs(shift->columns);
         diag::Diagnostic d{"DK029", shift->changes_reading ? diag::Severity::Error : diag::Severity::Warning,
                            fmt::format("line shifted {} column{} {} of the cells of {}", n, n == 1 ? "" : "s",
