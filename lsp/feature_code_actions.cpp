@@ -12,12 +12,14 @@
 #include "edit/fix_choice.hpp"
 #include "lint/registry.hpp"
 #include "lint/suppressions.hpp"
-#include "lsp/deck_lookup.hpp"
+#include "engine/position_index.hpp"
 #include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
 #include "lsp/uri.hpp"
 
 namespace sphdeck::lsp {
+
+using namespace engine;  // the position index: engine/position_index.hpp, engine/id_index.hpp
 namespace {
 
 // Lines at the top of a file searched for a `disable-file=` directive to extend.
