@@ -14,9 +14,10 @@
 #include "diag/render_json.hpp"
 #include "diag/render_sarif.hpp"
 #include "diag/render_text.hpp"
+#include "edit/fix_session.hpp"
 #include "engine/check.hpp"
 #include "engine/config_file.hpp"
-#include "edit/fix_session.hpp"
+#include "engine/include_context.hpp"
 #include "lint/rule_catalog.hpp"
 
 namespace sphdeck::cli {
@@ -31,6 +32,7 @@ struct CheckArgs {
     std::string solver, fail_on, config_file;
     bool no_config = false;
     bool no_geometry = false;
+    bool alone = false;  // no search for the decks that include a named file
     bool fix = false, unsafe_fixes = false, diff = false;
     CLI::Option* select_option = nullptr;  // to tell "--select" absent from empty
 };
@@ -110,18 +112,41 @@ void add_totals(const engine::CheckResult& r, diag::RunSummary& totals) {
     totals.counts.infos += c.infos;
 }
 
+// A named file checked as part of the decks around it that include it (engine/include_context.hpp):
+// each result then holds only the file's findings. A file no deck includes is checked on its own.
+std::vector<engine::CheckResult> check_named_file(const std::string& path, const engine::CheckOptions& options,
+                                                  const CheckArgs& args) {
+    if (!args.alone) {
+        engine::IncludeContext context = engine::check_in_context(path, engine::Documents{}, options);
+        if (!context.decks.empty()) {
+            std::string mains;
+            for (std::size_t k = 0; k < context.decks.size(); ++k) {
+                mains += fmt::format("{}{}", k == 0 ? "" : ", ", context.decks[k].deck.sources.file(0).display_name);
+                context.decks[k].diagnostics = std::move(context.findings[k]);
+            }
+            std::fflush(stdout);
+            fmt::print(args.format == "full" || args.format == "concise" ? stdout : stderr,
+                       "{}: checked as included by {}\n", path, mains);
+            return std::move(context.decks);
+        }
+    }
+    std::vector<engine::CheckResult> alone;
+    alone.push_back(engine::check_file(path, options));
+    return alone;
+}
+
 // What --fix and --diff did over all decks.
 struct FixTotals {
     std::size_t fixed = 0, remaining = 0, files = 0;
     bool write_failed = false;
 };
 
-// --fix: mends the deck and its includes (edit::fix_deck) and writes the files that changed; --diff
-// prints their diff instead and writes nothing. Returns the check of the fixed texts.
-engine::CheckResult fix_deck(const std::string& deck, engine::Documents& documents,
+// --fix: mends the deck read from `path` and its includes (edit::fix_deck) and writes the files that
+// changed; --diff prints their diff instead and writes nothing. Returns the check of the fixed texts.
+engine::CheckResult fix_deck(const std::string& path, engine::Documents& documents,
                              const engine::CheckOptions& options, const CheckArgs& args, FixTotals& totals) {
     const edit::FixLevel level = args.unsafe_fixes ? edit::FixLevel::Unsafe : edit::FixLevel::Safe;
-    edit::FixOutcome outcome = edit::fix_deck(deck, documents, options, level);
+    edit::FixOutcome outcome = edit::fix_deck(path, documents, options, level);
     totals.fixed += outcome.fixed;
     totals.remaining += outcome.remaining.diagnostics.size();
     totals.files += outcome.files.size();
@@ -156,26 +181,31 @@ int run_check(const CheckArgs& args) {
     bool failed = false;
     for (std::size_t i = 0; i < args.decks.size(); ++i) {
         const lint::Config& config = (*configs)[i];
-        engine::CheckResult r;
+        std::vector<engine::CheckResult> checked;
         try {
-            r = fixing ? fix_deck(args.decks[i], fixed_texts, options_for(config, args), args, fix_totals)
-                       : engine::check_file(args.decks[i], options_for(config, args));
+            // --fix mends each named file as the deck read from it, with its includes (name the main
+            // deck to mend an include in its context).
+            const engine::CheckOptions options = options_for(config, args);
+            if (fixing) checked.push_back(fix_deck(args.decks[i], fixed_texts, options, args, fix_totals));
+            else checked = check_named_file(args.decks[i], options, args);
         } catch (const std::exception& e) {
             fmt::print(stderr, "sphdeck: error: {}\n", e.what());
             totals.complete = false;
             continue;
         }
-        if (args.diff) {
-            // stdout holds the diff only, as with `diff -u`
-        } else if (report) {
-            report->add(r.deck.sources, r.diagnostics);
-        } else if (args.format == "github") {
-            for (const diag::Diagnostic& d : r.diagnostics) fmt::print("{}", diag::render_github(d, r.deck.sources));
-        } else {
-            print_text(r, args, colour);
+        for (const engine::CheckResult& r : checked) {
+            if (args.diff) {
+                // stdout holds the diff only, as with `diff -u`
+            } else if (report) {
+                report->add(r.deck.sources, r.diagnostics);
+            } else if (args.format == "github") {
+                for (const diag::Diagnostic& d : r.diagnostics) fmt::print("{}", diag::render_github(d, r.deck.sources));
+            } else {
+                print_text(r, args, colour);
+            }
+            failed = failed || lint::fails(config, r.diagnostics);
+            add_totals(r, totals);
         }
-        failed = failed || lint::fails(config, r.diagnostics);
-        add_totals(r, totals);
     }
     totals.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (report) fmt::print("{}", report->finish(totals));
@@ -244,6 +274,8 @@ std::function<int()> setup_check(CLI::App& app) {
     app.add_flag("--no-geometry", args->no_geometry,
                  "skip the rules that need particle neighbours (SPH090, SPH113-SPH118): a quick syntax and "
                  "settings check of very large decks");
+    app.add_flag("--alone", args->alone,
+                 "check each file on its own, not as part of the decks around it that include it");
     app.add_flag("--fix", args->fix,
                  "apply the safe fixes the findings carry to the deck and its include files, in place; the "
                  "summary and exit code then report the findings that remain");

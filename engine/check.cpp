@@ -3,6 +3,7 @@
 #include "grammar/read_deck.hpp"
 #include "preproc/preview.hpp"
 #include "lint/fold_causes.hpp"
+#include "lint/fragment_ids.hpp"
 #include "lint/suppressions.hpp"
 #include "lint/typo_consequences.hpp"
 #include "model/model_builder.hpp"
@@ -27,6 +28,11 @@ CheckResult finish(grammar::RawDeck deck, const CheckOptions& options) {
     // (the CLI, the deck tests, an editor) sees the same list.
     lint::apply_suppressions(result.deck.sources, result.diagnostics, grammar::format_of(result.deck));
     lint::apply_rule_settings(options.config, result.diagnostics);
+    // After the settings: an ignored REF003 is not counted; the summary obeys them in its turn.
+    if (lint::is_include_fragment(result.deck)) {
+        lint::summarize_fragment_ids(result.deck, result.diagnostics);
+        lint::apply_rule_settings(options.config, result.diagnostics);
+    }
     result.includes = include_graph(result.deck.sources);
     return result;
 }

@@ -122,10 +122,14 @@ std::optional<ConfigError> parse_config(std::string_view text, const std::string
             std::vector<std::string> paths;
             problem = read_strings(path, name, node, paths);
             for (const std::string& p : paths) out.include_paths.push_back((folder / p).lexically_normal().string());
+        } else if (name == "roots") {
+            std::vector<std::string> paths;
+            problem = read_strings(path, name, node, paths);
+            for (const std::string& p : paths) out.roots.push_back((folder / p).lexically_normal().string());
         } else {
             problem = error_at(path, key.source(),
                                "unknown key '" + std::string(name) +
-                                   "'; expected select, ignore, severity, solver, fail-on or include-paths");
+                                   "'; expected select, ignore, severity, solver, fail-on, include-paths or roots");
         }
         if (problem) return problem;
     }

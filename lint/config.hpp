@@ -28,6 +28,9 @@ struct Config {
     std::optional<std::string> solver;  // "smp" or "mpp"; unset when the run type is not known
     std::optional<FailOn> fail_on;      // unset: error
     std::vector<std::string> include_paths;  // made absolute against the config file's folder
+    // The main decks, or folders of them, in which an include file checked on its own is looked for
+    // (engine/include_context.hpp); made absolute like include_paths. Empty: the folders around the file.
+    std::vector<std::string> roots;
 };
 
 // A configuration problem, positioned in the file where possible (line 0: no position).

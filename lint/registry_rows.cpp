@@ -160,6 +160,8 @@ constexpr RuleInfo kRows[] = {
      "a node, part, segment, solid, beam or discrete set id that is not defined"},
     {"REF009", "undefined-id", Error, "0.1.0", "references",
      "a curve, box, vector, coordinate system, transformation or hourglass id that no keyword defines"},
+    {"REF010", "ids-defined-elsewhere", Info, "0.1.0", "references",
+     "an include fragment checked on its own names ids its including deck defines: one note, not an error each"},
 
     // SPH: LS-DYNA SPH controls, sections and particles (*CONTROL_SPH manual page and friends).
     {"SPH010", "form12-requires-mpp", Error, "0.1.0", "CONTROL_SPH R2e",

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <exception>
 
+#include "engine/include_context.hpp"
 #include "lsp/deck_settings.hpp"
 #include "lsp/text_change.hpp"
 #include "lsp/uri.hpp"
@@ -80,6 +81,7 @@ bool Workspace::reads(const Deck& deck, const fs::path& key) const { return deck
 Workspace::Deck Workspace::check(const fs::path& main) const {
     Deck out;
     out.checked.main = main;
+    out.opened_as = main;
     const DeckSettings settings = settings_for(main, roots_);
     try {
         out.checked.result = engine::check_deck(main.string(), documents_, settings.options);
@@ -103,6 +105,37 @@ Workspace::Deck Workspace::check(const fs::path& main) const {
     return out;
 }
 
+std::optional<Workspace::Deck> Workspace::check_in_context(const fs::path& include, const fs::path& known_main) const {
+    const DeckSettings settings = settings_for(include, roots_);
+    if (settings.error) return std::nullopt;  // checked on its own, which reports the bad settings
+    engine::CheckResult result;
+    bool found = false;
+    // The deck found last time first: re-searching the folders at every edit of the include costs more.
+    if (!known_main.empty()) {
+        try {
+            result = engine::check_deck(known_main.string(), documents_, settings.options);
+            found = result.includes.depends_on(include);
+        } catch (const std::exception&) {
+        }
+    }
+    if (!found) {
+        engine::IncludeContext context = engine::check_in_context(include, documents_, settings.options);
+        if (context.decks.empty()) return std::nullopt;
+        result = std::move(context.decks.front());
+    }
+    Deck out;
+    out.opened_as = include;
+    out.checked.main = result.includes.main;
+    out.checked.result = std::move(result);
+    auto findings = findings_by_file(out.checked.result, [this](const fs::path& key, const std::string& path) {
+        return uri_of(key, path);
+    });
+    const auto own = findings.find(include);
+    out.findings[include] = own != findings.end() ? std::move(own->second) : FileFindings{};
+    if (out.findings[include].path.empty()) out.findings[include].path = include.string();
+    return out;
+}
+
 void Workspace::flush() {
     if (dirty_.empty()) return;
     std::set<fs::path> affected;
@@ -113,9 +146,17 @@ void Workspace::flush() {
     std::vector<Deck> kept;
     for (Deck& deck : decks_) {
         note(deck);
-        if (!open_.count(deck.checked.main)) continue;
-        if (std::any_of(dirty_.begin(), dirty_.end(), [&](const fs::path& key) { return reads(deck, key); })) {
-            deck = check(deck.checked.main);
+        if (!open_.count(deck.opened_as)) continue;
+        if (std::any_of(dirty_.begin(), dirty_.end(), [&](const fs::path& key) {
+                return reads(deck, key) || deck.checked.result.includes.depends_on(key);
+            })) {
+            if (deck.opened_as == deck.checked.main) {
+                deck = check(deck.checked.main);
+            } else if (auto again = check_in_context(deck.opened_as, deck.checked.main)) {
+                deck = std::move(*again);
+            } else {
+                continue;  // no deck includes it any more: checked on its own below
+            }
             note(deck);
         }
         kept.push_back(std::move(deck));
@@ -130,7 +171,8 @@ void Workspace::flush() {
         if (std::any_of(decks_.begin(), decks_.end(), [&](const Deck& deck) { return reads(deck, key); })) continue;
         const std::string* text = documents_.find(key);
         if (!text || !is_deck(key, *text)) continue;
-        decks_.push_back(check(key));
+        auto in_context = check_in_context(key);
+        decks_.push_back(in_context ? std::move(*in_context) : check(key));
         note(decks_.back());
     }
     // A deck that another deck includes is checked as part of it (the first of a cycle stays).

@@ -1,7 +1,8 @@
 // The editor's open documents and the decks they make up. Open buffers lie over the disk
 // (engine::Documents), so a deck reads its edited includes as the editor holds them. An open file
 // that is a deck is checked as one, unless an open deck includes it: then that deck's check covers
-// it. Changes are collected and re-checked on flush(), which publishes the diagnostics of every
+// it; an open file no open deck reads is checked as part of a deck on disk that includes it, if there is
+// one (`sphdeck check` does the same). Changes are collected and re-checked on flush(), which publishes the diagnostics of every
 // file a re-checked deck read (an empty list for a clean file and for a file no deck reads any more).
 #pragma once
 
@@ -64,10 +65,17 @@ private:
     };
     struct Deck {
         CheckedDeck checked;
-        std::map<std::filesystem::path, FileFindings> findings;  // every file it read
+        std::map<std::filesystem::path, FileFindings> findings;  // every file it read (or the one below)
+        // The open file the deck is checked for: its main file, or an open include no open deck reads,
+        // checked as part of a deck on disk that includes it (then `findings` holds that file only).
+        std::filesystem::path opened_as;
     };
 
     Deck check(const std::filesystem::path& main) const;
+    // An open include checked as part of the deck around it that includes it (engine/include_context),
+    // `known_main` first when given; nullopt when no deck does. Only the include's findings are kept.
+    std::optional<Deck> check_in_context(const std::filesystem::path& include,
+                                         const std::filesystem::path& known_main = {}) const;
     std::string uri_of(const std::filesystem::path& key, const std::string& path) const;
     bool reads(const Deck& deck, const std::filesystem::path& key) const;
     void publish(const std::set<std::filesystem::path>& files);

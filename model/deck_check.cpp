@@ -300,6 +300,24 @@ const CaseSpan* first_in_run(const std::vector<CaseSpan>& seen, const std::strin
     return nullptr;
 }
 
+// DK018. Two copies in one file are an error: one of them is a slip. A copy in another file (an include
+// that overrides the main deck's settings, or the reverse) is a warning naming the copy that takes effect:
+// LS-DYNA reads a deck in order and each *CONTROL card it reads sets the options again, so the copy read
+// last wins (the manual does not say so in words; sphdeck's model reads them the same way, model/extract.cpp).
+diag::Diagnostic duplicate_control(const grammar::RawDeck& deck, const keywords::KeywordSchema& schema,
+                                   const grammar::Span& again, const grammar::Span& first) {
+    if (again.file == first.file)
+        return {"DK018", diag::Severity::Error, fmt::format("{} appears more than once", schema.name), again,
+                {{first, "first defined here"}}};
+    const auto& first_file = deck.sources.file(first.file).display_name;
+    return {"DK018", diag::Severity::Warning,
+            fmt::format("{} appears again, after the copy in {}: this copy, read last, is the one that takes effect",
+                        schema.name, first_file),
+            again,
+            {{first, fmt::format("{} set here first; every value of it is replaced by the copy read later",
+                                 schema.name)}}};
+}
+
 bool skip_cards(const std::string& keyword) {
     // Read by the reader itself (includes, parameters) or free text.
     return keyword == "*COMMENT" || keyword.rfind("*INCLUDE", 0) == 0 || keyword.rfind("*PARAMETER", 0) == 0 ||
@@ -327,11 +345,7 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
         // Only *CONTROL_ keywords: every include file legitimately starts with its own *KEYWORD.
         if (match->schema->unique && match->schema->name.rfind("*CONTROL_", 0) == 0) {
             auto& seen = seen_unique[match->schema];
-            if (const CaseSpan* first = first_in_run(seen, current_case)) {
-                out.push_back({"DK018", diag::Severity::Error,
-                               fmt::format("{} appears more than once", match->schema->name), block.span,
-                               {{first->span, "first defined here"}}});
-            }
+            if (const CaseSpan* first = first_in_run(seen, current_case)) out.push_back(duplicate_control(deck, *match->schema, block.span, first->span));
             seen.push_back({current_case, block.span});
         }
         if (skip_cards(block.keyword) || match->schema->free_text) continue;

@@ -181,9 +181,10 @@ TEST_CASE("lsp workspace: an edited include re-checks the deck that reads it, bu
     const std::string inc_path = dir.write("parts.inc", fine_inc);
     const std::string main_uri = lsp::uri_from_path(main_path), inc_uri = lsp::uri_from_path(inc_path);
     Recorder r;
-    REQUIRE(r.workspace.open(inc_uri, fine_inc, 1));  // opened first: a deck of its own for now
+    REQUIRE(r.workspace.open(inc_uri, fine_inc, 1));  // opened first: checked as part of main.k on disk
     r.workspace.flush();
-    CHECK(r.workspace.deck_mains().size() == 1);
+    REQUIRE(r.workspace.deck_mains().size() == 1);
+    CHECK(r.workspace.deck_mains()[0] == engine::Documents::key(main_path));
     REQUIRE(r.workspace.open(main_uri, main_deck + "", 1));
     r.workspace.flush();
     // The include is checked as part of the main deck, not on its own.
@@ -213,12 +214,21 @@ TEST_CASE("lsp workspace: an edited include re-checks the deck that reads it, bu
     CHECK(located->deck->main == engine::Documents::key(main_path));
     CHECK(located->deck->result.deck.sources.file(located->file).text == "$ nothing here\n");
 
-    // The main deck closes: the include, still open, is a deck of its own again.
+    // The main deck closes: the include, still open, is checked as part of main.k as the disk holds it
+    // (without the edit's *CONTROL_TERMINATION), and main.k's own list goes.
     REQUIRE(r.workspace.close(main_uri));
     r.workspace.flush();
     REQUIRE(r.workspace.deck_mains().size() == 1);
-    CHECK(r.workspace.deck_mains()[0] == engine::Documents::key(inc_path));
+    CHECK(r.workspace.deck_mains()[0] == engine::Documents::key(main_path));
     CHECK(r.last(main_uri)["diagnostics"].empty());
+    CHECK(r.last(inc_uri)["diagnostics"].empty());
+
+    // With no deck on disk that includes it, it is a deck of its own.
+    std::filesystem::remove(main_path);
+    REQUIRE(r.workspace.save(inc_uri, std::nullopt));
+    r.workspace.flush();
+    REQUIRE(r.workspace.deck_mains().size() == 1);
+    CHECK(r.workspace.deck_mains()[0] == engine::Documents::key(inc_path));
 }
 
 TEST_CASE("lsp workspace: an include dropped from the deck gets an empty list; sphdeck.toml is honoured") {
