@@ -110,7 +110,7 @@ def main():
     parser.add_argument("--kinds", help="comma-separated kinds (default: the safe and unsafe fix kinds)")
     parser.add_argument("--seed", default="27")
     parser.add_argument("--per-deck", type=int, default=2)
-    parser.add_argument("--hosts", type=int, default=12, help="decks per kind and source (default 12)")
+    parser.add_argument("--hosts", type=int, default=8, help="decks per kind and source (default 8)")
     parser.add_argument("--min-rate", type=float, default=100.0, help="required rate of the safe-fix kinds")
     parser.add_argument("--jobs", type=int, default=min(4, (os.cpu_count() or 2) * 2))
     parser.add_argument("--verbose", action="store_true")
@@ -139,28 +139,27 @@ def main():
     scratch = tempfile.mkdtemp(prefix="sphdeck-fix-check-")
     try:
         with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
-            # Hosts are prepared lazily, per kind, so a run over few kinds reads few decks.
-            prepared = {}
-
-            def ready(index, host):
-                if index not in prepared:
-                    prepared[index] = rm.prepare(sphdeck, host, scratch, index, known)
-                return prepared[index]
-
+            # Candidate hosts per kind and source (a few more than needed: some are unusable), prepared
+            # in parallel once each.
+            candidates = {}
+            for kind, _ in kinds:
+                radioss_kind = kind.__name__.startswith("radioss")
+                for source in ("shipped", "corpus"):
+                    pool_hosts = [(i, h) for i, h in enumerate(hosts) if h.source == source
+                                  and (h.fmt == "radioss") == radioss_kind]
+                    random.Random(f"{args.seed}:{kind.__name__}:{source}").shuffle(pool_hosts)
+                    candidates[(kind, source)] = pool_hosts[:3 * args.hosts]
+            wanted = {i: h for picks in candidates.values() for i, h in picks}
+            ready = dict(zip(wanted, pool.map(lambda ih: rm.prepare(sphdeck, ih[1], scratch, ih[0], known),
+                                              wanted.items())))
             jobs = []
             for kind, unsafe in kinds:
                 for source in ("shipped", "corpus"):
-                    pool_hosts = [(i, h) for i, h in enumerate(hosts) if h.source == source]
-                    random.Random(f"{args.seed}:{kind.__name__}:{source}").shuffle(pool_hosts)
                     picked = []
-                    for i, h in pool_hosts:
+                    for i, _ in candidates[(kind, source)]:
+                        h = ready[i]
                         if len(picked) >= args.hosts:
                             break
-                        if h.fmt == "radioss" and not kind.__name__.startswith("radioss"):
-                            continue
-                        if h.fmt == "dyna" and kind.__name__.startswith("radioss"):
-                            continue
-                        h = ready(i, h)
                         if h.problem or (h.source == "shipped" and any(f[3] == "error" for f in h.found)):
                             continue
                         probe = kind(h, random.Random(0))
