@@ -4,12 +4,15 @@ BUILD_ASAN ?= build-asan
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build demo test test-asan corpus mistakes bench verify clean
+.PHONY: all deps deps-build build build-cli demo test test-asan corpus mistakes bench verify clean
 
 all: build
 
 deps:
 	bash scripts/install-deps.sh
+
+deps-build:
+	bash scripts/install-deps.sh --build
 
 $(BUILD)/CMakeCache.txt:
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
@@ -17,8 +20,12 @@ $(BUILD)/CMakeCache.txt:
 build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
 
+# Only the command-line program: what the demo runs (the test binary and benchmarks take most of a build).
+build-cli: deps-build $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS) --target sphdeck
+
 # check on a deck with typical mistakes (its findings are the point), then the smoothing-length preview.
-demo: build
+demo: build-cli
 	bash decks/demo/run_demo.sh $(BUILD)/sphdeck
 
 test: build

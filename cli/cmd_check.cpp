@@ -2,11 +2,15 @@
 // line (stdout for the full text format, stderr otherwise so stdout stays machine-readable).
 #include <chrono>
 #include <cstdio>
+#include <iostream>
+#include <iterator>
 #include <fmt/format.h>
 #include <map>
 #include <memory>
 #include <unistd.h>
 
+#include "cli/check_inputs.hpp"
+#include "cli/check_statistics.hpp"
 #include "cli/commands.hpp"
 #include "cli/fix_output.hpp"
 #include "cli/text_folding.hpp"
@@ -34,6 +38,10 @@ struct CheckArgs {
     bool no_geometry = false;
     bool alone = false;  // no search for the decks that include a named file
     bool fix = false, unsafe_fixes = false, diff = false;
+    std::vector<std::string> exclude;
+    std::string stdin_filename;
+    bool statistics = false, exit_zero = false;
+    std::string output_file;
     CLI::Option* select_option = nullptr;  // to tell "--select" absent from empty
 };
 
@@ -60,11 +68,14 @@ lint::ConfigOverrides overrides_of(const CheckArgs& args) {
 
 // Every deck's settings, resolved before any deck is read: a bad sphdeck.toml stops the run
 // (exit 2) instead of leaving a half-written report. Each config file is read once.
-std::optional<std::vector<lint::Config>> resolve_configs(const CheckArgs& args) {
+std::optional<std::vector<lint::Config>> resolve_configs(const CheckArgs& args, const std::vector<CheckInput>& inputs) {
     const lint::ConfigOverrides overrides = overrides_of(args);
     std::map<std::string, lint::Config> loaded;
     std::vector<lint::Config> out;
-    for (const std::string& deck : args.decks) {
+    for (const CheckInput& input : inputs) {
+        // Standard input is configured as the file it stands for, or as a deck in the working folder.
+        const std::string deck =
+            input.path != "-" ? input.path : (args.stdin_filename.empty() ? "stdin.k" : args.stdin_filename);
         std::string path;
         if (!args.no_config && !args.config_file.empty()) {
             path = args.config_file;
@@ -114,9 +125,20 @@ void add_totals(const engine::CheckResult& r, diag::RunSummary& totals) {
 
 // A named file checked as part of the decks around it that include it (engine/include_context.hpp):
 // each result then holds only the file's findings. A file no deck includes is checked on its own.
-std::vector<engine::CheckResult> check_named_file(const std::string& path, const engine::CheckOptions& options,
+std::vector<engine::CheckResult> check_named_file(const CheckInput& input, const engine::CheckOptions& options,
                                                   const CheckArgs& args) {
-    if (!args.alone) {
+    const std::string& path = input.path;
+    std::vector<engine::CheckResult> alone;
+    if (path == "-") {  // standard input: named and resolved as --stdin-filename says
+        const std::string name = args.stdin_filename.empty() ? "<stdin>" : args.stdin_filename;
+        std::string text(std::istreambuf_iterator<char>(std::cin), {});
+        const std::string folder = args.stdin_filename.empty() ? "." : std::filesystem::path(name).parent_path().string();
+        alone.push_back(engine::check_buffer(std::move(text), name, options, std::nullopt, folder.empty() ? "." : folder));
+        return alone;
+    }
+    // A deck found in a folder is checked alone: the decks of the folder that include it were dropped
+    // from the list or are checked themselves (check_inputs.hpp).
+    if (!args.alone && !input.found_in_folder) {
         engine::IncludeContext context = engine::check_in_context(path, engine::Documents{}, options);
         if (!context.decks.empty()) {
             std::string mains;
@@ -130,7 +152,6 @@ std::vector<engine::CheckResult> check_named_file(const std::string& path, const
             return std::move(context.decks);
         }
     }
-    std::vector<engine::CheckResult> alone;
     alone.push_back(engine::check_file(path, options));
     return alone;
 }
@@ -145,6 +166,7 @@ struct FixTotals {
 // changed; --diff prints their diff instead and writes nothing. Returns the check of the fixed texts.
 engine::CheckResult fix_deck(const std::string& path, engine::Documents& documents,
                              const engine::CheckOptions& options, const CheckArgs& args, FixTotals& totals) {
+    if (path == "-") throw std::runtime_error("--fix and --diff mend files, not standard input");
     const edit::FixLevel level = args.unsafe_fixes ? edit::FixLevel::Unsafe : edit::FixLevel::Safe;
     edit::FixOutcome outcome = edit::fix_deck(path, documents, options, level);
     totals.fixed += outcome.fixed;
@@ -167,7 +189,17 @@ int run_check(const CheckArgs& args) {
         return exit_usage;
     }
     auto start = std::chrono::steady_clock::now();
-    auto configs = resolve_configs(args);
+    const ExpandedInputs expanded = expand_inputs(args.decks, args.exclude);
+    if (expanded.error) {
+        fmt::print(stderr, "sphdeck: error: {}\n", *expanded.error);
+        return exit_usage;
+    }
+    const std::vector<CheckInput> inputs = drop_included(expanded.inputs);
+    if (!args.output_file.empty() && !std::freopen(args.output_file.c_str(), "w", stdout)) {
+        fmt::print(stderr, "sphdeck: error: cannot write '{}'\n", args.output_file);
+        return exit_usage;
+    }
+    auto configs = resolve_configs(args, inputs);
     if (!configs) return exit_usage;
     std::unique_ptr<diag::Report> report;
     if (args.format == "json") report = diag::make_json_report(lint::rule_catalog());
@@ -175,19 +207,21 @@ int run_check(const CheckArgs& args) {
     const bool colour = args.format == "full" && diag::colour_wanted(STDOUT_FILENO);
 
     diag::RunSummary totals;
+    FindingStatistics statistics;
     FixTotals fix_totals;
     engine::Documents fixed_texts;  // the texts --fix and --diff mended, seen by the next decks
     const bool fixing = args.fix || args.diff;
     bool failed = false;
-    for (std::size_t i = 0; i < args.decks.size(); ++i) {
+    const bool text_format = args.format == "full" || args.format == "concise";
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
         const lint::Config& config = (*configs)[i];
         std::vector<engine::CheckResult> checked;
         try {
-            // --fix mends each named file as the deck read from it, with its includes (name the main
-            // deck to mend an include in its context).
+            // --fix mends each deck as the deck read from its file, with its includes (name the main deck
+            // to mend an include in its context).
             const engine::CheckOptions options = options_for(config, args);
-            if (fixing) checked.push_back(fix_deck(args.decks[i], fixed_texts, options, args, fix_totals));
-            else checked = check_named_file(args.decks[i], options, args);
+            if (fixing) checked.push_back(fix_deck(inputs[i].path, fixed_texts, options, args, fix_totals));
+            else checked = check_named_file(inputs[i], options, args);
         } catch (const std::exception& e) {
             fmt::print(stderr, "sphdeck: error: {}\n", e.what());
             totals.complete = false;
@@ -205,8 +239,11 @@ int run_check(const CheckArgs& args) {
             }
             failed = failed || lint::fails(config, r.diagnostics);
             add_totals(r, totals);
+            statistics.add(inputs[i].path, r.diagnostics);
         }
+        if (text_format && inputs.size() > 1 && !args.diff) fmt::print("{}\n", statistics.file_summary(inputs[i].path));
     }
+    if (args.statistics) fmt::print(text_format ? stdout : stderr, "{}", statistics.table(lint::rule_catalog()));
     totals.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (report) fmt::print("{}", report->finish(totals));
     std::fflush(stdout);
@@ -217,12 +254,13 @@ int run_check(const CheckArgs& args) {
         fixes = args.diff ? fmt::format("; would fix {}, {} remaining", fix_totals.fixed, fix_totals.remaining)
                           : fmt::format("; {} fixed, {} remaining", fix_totals.fixed, fix_totals.remaining);
     if (!nothing_read)
-        fmt::print(args.format == "full" && !args.diff ? stdout : stderr,
+        fmt::print(args.format == "full" && args.output_file.empty() && !args.diff ? stdout : stderr,
                    "checked {} file(s): {} keywords, {} cards, {} particles; {} error(s), {} warning(s), {} info(s) "
                    "in {:.2f} s{}\n",
                    totals.files, totals.keywords, totals.cards, totals.particles, totals.counts.errors,
                    totals.counts.warnings, totals.counts.infos, totals.seconds, fixes);
     if (!totals.complete || fix_totals.write_failed) return exit_usage;
+    if (args.exit_zero) return exit_clean;
     // --diff exits 1 when a file would change, as ruff's does; otherwise the remaining findings decide.
     if (args.diff && fix_totals.files > 0) return exit_findings;
     return failed ? exit_findings : exit_clean;
@@ -242,7 +280,17 @@ CLI::Validator rule_selector() {
 
 std::function<int()> setup_check(CLI::App& app) {
     auto args = std::make_shared<CheckArgs>();
-    app.add_option("decks", args->decks, "LS-DYNA keyword decks (.k, .key, .dyn)")->required();
+    app.add_option("decks", args->decks,
+                   "decks (LS-DYNA .k .key .dyn .inc, OpenRadioss _0000.rad), folders searched for them, or - "
+                   "for standard input")
+        ->required();
+    app.add_option("--exclude", args->exclude, "skip files found in folders that match these globs")
+        ->allow_extra_args(false);
+    app.add_option("--stdin-filename", args->stdin_filename,
+                   "the name of the deck read from standard input (-): for messages and include resolution");
+    app.add_flag("--statistics", args->statistics, "print the number of findings per rule and per file");
+    app.add_flag("--exit-zero", args->exit_zero, "exit 0 even when findings would make it 1 (2 stays 2)");
+    app.add_option("--output-file,-o", args->output_file, "write the report to this file instead of stdout");
     app.add_option("--format", args->format, "output format (json, sarif and github carry every finding)")
         ->check(CLI::IsMember({"full", "concise", "json", "sarif", "github"}))
         ->capture_default_str();

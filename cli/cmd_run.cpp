@@ -13,11 +13,13 @@
 
 #include "cli/commands.hpp"
 #include "cli/progress_bar.hpp"
+#include "cli/progress_log.hpp"
 #include "diag/render_text.hpp"
 #include "io/csv_writer.hpp"
 #include "io/pvd_writer.hpp"
 #include "io/vtp_writer.hpp"
 #include "engine/check.hpp"
+#include "grammar/read_deck.hpp"
 #include "refsolver/simulation.hpp"
 
 namespace sphdeck::cli {
@@ -29,6 +31,7 @@ struct RunArgs {
     std::optional<double> end_time;
     int threads = 0;
     bool ignore_unsupported = false, quiet = false;
+    double progress_every = 5.0;  // seconds between progress lines off a terminal
     std::vector<std::string> include_paths;
 };
 
@@ -127,8 +130,9 @@ void print_summary(const refsolver::Simulation& sim, const refsolver::Totals& st
     fmt::print("neighbour rebuilds: {} ({:.1f}% of the wall time of the steps)\n", sim.neighbour_rebuilds(),
                timing.total > 0 ? 100.0 * timing.neighbours / timing.total : 0.0);
     fmt::print("active particles: {} of {}\n", end.active, particles);
-    fmt::print("mass: start {:.17g}, end {:.17g}{}\n", start.mass, end.mass,
-               start.active == end.active ? " (unchanged: particle masses are constant; the last digits follow the summation order)" : " (particles deactivated)");
+    // Ten digits: the sums' last digits follow the summation order, not the physics.
+    fmt::print("mass: start {:.10g}, end {:.10g}{}\n", start.mass, end.mass,
+               start.active == end.active ? " (unchanged: particle masses are constant)" : " (particles deactivated)");
     fmt::print("momentum: start {}, end {}\n", vec3(start.momentum), vec3(end.momentum));
     fmt::print("energy: kinetic {:.6g} -> {:.6g}, internal {:.6g} -> {:.6g}, total {:.6g} -> {:.6g}\n", start.kinetic,
                end.kinetic, start.internal, end.internal, start.total, end.total);
@@ -145,6 +149,13 @@ int run_deck(const RunArgs& args) {
     engine::CheckOptions options;
     options.reader.include_paths = args.include_paths;
     const engine::CheckResult r = engine::check_file(args.deck, options);
+    if (grammar::format_of(r.deck) == grammar::DeckFormat::Radioss) {
+        fmt::print(stderr,
+                   "sphdeck: error: {}: an OpenRadioss deck; `sphdeck run` runs LS-DYNA keyword decks (sphdeck check "
+                   "and smooth read this one)\n",
+                   args.deck);
+        return exit_usage;
+    }
     std::size_t read_errors = 0;
     for (const diag::Diagnostic& d : r.diagnostics)
         if (d.severity == diag::Severity::Error && d.code.rfind("DK", 0) == 0) {
@@ -186,11 +197,13 @@ int run_deck(const RunArgs& args) {
         snapshots.write(sim);
     }
     ProgressBar bar("run", !args.quiet && ProgressBar::stderr_is_terminal());
+    ProgressLog log(!args.quiet && !ProgressBar::stderr_is_terminal(), args.progress_every);
     const auto t0 = std::chrono::steady_clock::now();
     sim.run([&](const refsolver::Simulation& s) {
         history.add(s.totals());
         if (!args.out.empty() && args.every > 0 && s.steps() % args.every == 0 && !s.finished()) snapshots.write(s);
         bar.update(s.end_time() > 0 ? s.time() / s.end_time() : 1.0);
+        log.update(s.steps(), s.time(), s.end_time(), s.dt(), particles);
     });
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     bar.finish();
@@ -223,6 +236,10 @@ std::function<int()> setup_run(CLI::App& app) {
     app.add_flag("--ignore-unsupported", args->ignore_unsupported,
                  "run even when the deck uses what the solver does not honour (it is left out)");
     app.add_flag("--quiet", args->quiet, "print only the summary and errors, no progress bar");
+    app.add_option("--progress-every", args->progress_every,
+                   "seconds between progress lines when stderr is no terminal (a CI log)")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
     app.add_option("-I,--include-path", args->include_paths, "extra folder searched for *INCLUDE files")
         ->allow_extra_args(false);
     return [args] { return run_deck(*args); };

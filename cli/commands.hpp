@@ -24,6 +24,7 @@ std::function<int()> setup_rule(CLI::App& app);
 std::function<int()> setup_rules(CLI::App& app);
 std::function<int()> setup_keyword(CLI::App& app);
 std::function<int()> setup_dump(CLI::App& app);
+std::function<int()> setup_diff(CLI::App& app);
 std::function<int()> setup_smooth(CLI::App& app);
 std::function<int()> setup_sol2sph(CLI::App& app);
 std::function<int()> setup_run(CLI::App& app);

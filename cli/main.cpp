@@ -17,6 +17,7 @@ const std::vector<sphdeck::cli::Command>& commands() {
         {"rules", "list every rule (--format markdown: docs/rules.md)", sphdeck::cli::setup_rules},
         {"keyword", "print a keyword's cards: columns, types, defaults, allowed values", sphdeck::cli::setup_keyword},
         {"dump", "print the decoded deck model (--format json)", sphdeck::cli::setup_dump},
+        {"diff", "what the solver reads differently in two decks (exit 1 when they differ)", sphdeck::cli::setup_diff},
         {"smooth", "preview smoothing lengths, neighbours and time step per part (table, json, csv, vtk, svg)", sphdeck::cli::setup_smooth},
         {"sol2sph", "generate the particles SOL2SPH parts of a Radioss deck will release (vtp, csv)", sphdeck::cli::setup_sol2sph},
         {"run", "run the deck with the compact reference SPH solver (time history, vtp snapshots)", sphdeck::cli::setup_run},

@@ -5,18 +5,23 @@
 #   --fuzz  also Clang 14, its sanitizer and libFuzzer runtimes and its OpenMP library, for the
 #           Clang build and the fuzz targets (fuzz/README.md); the default install stays GCC only.
 set -euo pipefail
-packages=(
+#   --build only what building sphdeck needs (make demo, make build-cli, the GitHub Action).
+build_packages=(
   build-essential cmake
   tao-pegtl-dev libeigen3-dev libfmt-dev libcli11-dev doctest-dev nlohmann-json3-dev
   libtomlplusplus-dev
-  python3 python3-jsonschema
+)
+test_packages=(
+  python3 python3-jsonschema python3-yaml
   python3-vtk9   # VTK's own reader checks the .vtp/.pvd files we write (tests/test_io_writers.cpp)
   neovim
 )
+packages=("${build_packages[@]}" "${test_packages[@]}")
 for arg in "$@"; do
   case $arg in
     --fuzz) packages+=(clang-14 libclang-rt-14-dev libomp-14-dev) ;;
-    *) echo "usage: scripts/install-deps.sh [--fuzz]" >&2; exit 2 ;;
+    --build) packages=("${build_packages[@]}") ;;
+    *) echo "usage: scripts/install-deps.sh [--build] [--fuzz]" >&2; exit 2 ;;
   esac
 done
 missing=()

@@ -35,3 +35,16 @@ TEST_CASE("refsolver cli: sphdeck run refuses an unsupported FORM with exit 2") 
     CHECK(r.err.find("FORM 15") != std::string::npos);
     CHECK(r.err.find("--ignore-unsupported") != std::string::npos);
 }
+
+TEST_CASE("refsolver cli: progress lines off a terminal, and an OpenRadioss deck refused in one line") {
+    TempDir dir;
+    const std::string deck = std::string(SPHDECK_SOURCE_DIR) + "/decks/run/water_column_2d.k";
+    const Run r = run_sphdeck(dir, "run '" + deck + "' --end-time 0.004 --progress-every 0");
+    CHECK_MESSAGE(r.exit_code == 0, r.err);
+    CHECK(r.err.find("run: step 1, t = ") != std::string::npos);  // stderr is a file here
+    CHECK(r.err.find("particles, about") != std::string::npos);
+    const std::string radioss = std::string(SPHDECK_SOURCE_DIR) + "/decks/tests/rad/DK012_parameter_silent.rad";
+    const Run refused = run_sphdeck(dir, "run '" + radioss + "'");
+    CHECK(refused.exit_code == 2);
+    CHECK(refused.err.find("an OpenRadioss deck; `sphdeck run` runs LS-DYNA keyword decks") != std::string::npos);
+}

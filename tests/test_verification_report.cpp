@@ -105,10 +105,31 @@ TEST_CASE("verification report: checks pass only with a finite error on the righ
     broken.name = "broken";
     broken.failure = "cannot read x.k";
     const std::vector<CaseResult> all = {r, broken};
-    const std::string summary = summary_markdown(all, false);
-    CHECK(summary.find("| demo | FAIL | 2/3 |") != std::string::npos);
-    CHECK(summary.find("| broken | NOT RUN | 0/0 |") != std::string::npos);
+    SummaryRows summary_rows;
+    merge_summary_rows(summary_rows, all, false);
+    const std::string summary = summary_markdown(summary_rows);
+    CHECK(summary.find("| demo | FAIL | 2/3 | full |") != std::string::npos);
+    CHECK(summary.find("| broken | NOT RUN | 0/0 | full |") != std::string::npos);
     CHECK(summary.find("cannot read x.k") != std::string::npos);
+    // A second run of one case replaces its row and keeps the other; the rows survive summary.json.
+    CaseResult again = r;
+    for (Check& c : again.checks) c.error = c.bound == Check::Bound::AtMost ? 0.0 : 1.0;
+    const std::vector<CaseResult> second = {again};
+    merge_summary_rows(summary_rows, second, true);
+    sphdeck::test::TempDir dir;
+    const auto path = dir.path() / "summary.json";
+    std::ofstream(path) << summary_rows_json(summary_rows);
+    const SummaryRows read = read_summary_rows(path);
+    REQUIRE(read.size() == 2);
+    CHECK(read[0].name == "broken");
+    CHECK(read[1].verdict == "PASS");
+    CHECK(read[1].quick);
+    // A reference row (not gated) is reported but does not decide the verdict.
+    CaseResult with_reference = again;
+    with_reference.checks.push_back({"experiment", 1.0, 2.0, 0.5, 0.1});
+    with_reference.checks.back().gated = false;
+    CHECK(with_reference.passed());
+    CHECK(check_table(with_reference).back()[5] == "outside (reference, not gated)");
 }
 
 TEST_CASE("verification cli: bad usage and a missing deck folder exit 2") {

@@ -1,7 +1,10 @@
 #include "verify/report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <fstream>
+#include <nlohmann/json.hpp>
 
 namespace sphdeck::verify {
 namespace {
@@ -50,7 +53,9 @@ std::vector<std::vector<std::string>> check_table(const CaseResult& result) {
     for (const Check& c : result.checks) {
         rows.push_back({c.quantity, g4(c.value), c.reference ? g4(*c.reference) : "-", g4(c.error),
                         fmt::format("{} {}", c.bound == Check::Bound::AtMost ? "<=" : ">=", g4(c.tolerance)),
-                        c.passed() ? "PASS" : "FAIL"});
+                        !c.gated ? (c.passed() ? "within (reference, not gated)" : "outside (reference, not gated)")
+                        : c.passed() ? "PASS"
+                                     : "FAIL"});
     }
     return rows;
 }
@@ -76,18 +81,59 @@ std::string case_markdown(const CaseResult& result, bool quick, std::string_view
     return md;
 }
 
-std::string summary_markdown(std::span<const CaseResult> results, bool quick) {
-    std::string md = fmt::format("# sphdeck verify: summary ({} version)\n\n", quick ? "quick" : "full");
-    std::vector<std::vector<std::string>> rows = {{"case", "result", "checks passed", "wall time [s]", "details"}};
+SummaryRow summary_row(const CaseResult& r, bool quick) {
+    SummaryRow row{r.name, verdict(r), 0, 0, wall_time(r), quick, r.failure};
+    for (const Check& c : r.checks)
+        if (c.gated) ++row.gated, row.gated_passed += c.passed();
+    return row;
+}
+
+void merge_summary_rows(SummaryRows& rows, std::span<const CaseResult> results, bool quick) {
     for (const CaseResult& r : results) {
-        std::size_t passed = 0;
-        for (const Check& c : r.checks) passed += c.passed();
-        rows.push_back({r.name, verdict(r), fmt::format("{}/{}", passed, r.checks.size()),
-                        fmt::format("{:.2f}", wall_time(r)), fmt::format("[{0}.md]({0}.md)", r.name)});
+        SummaryRow row = summary_row(r, quick);
+        const auto same = std::find_if(rows.begin(), rows.end(), [&](const SummaryRow& o) { return o.name == r.name; });
+        if (same != rows.end()) *same = std::move(row);
+        else rows.push_back(std::move(row));
     }
-    md += markdown_table(rows);
-    for (const CaseResult& r : results)
-        if (!r.ran()) md += fmt::format("\n- {}: {}\n", r.name, r.failure);
+    std::sort(rows.begin(), rows.end(), [](const SummaryRow& a, const SummaryRow& b) { return a.name < b.name; });
+}
+
+SummaryRows read_summary_rows(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return {};
+    SummaryRows rows;
+    try {
+        const nlohmann::json doc = nlohmann::json::parse(in);
+        for (const nlohmann::json& r : doc.at("cases"))
+            rows.push_back({r.at("name").get<std::string>(), r.at("result").get<std::string>(),
+                            r.at("gated_passed").get<std::size_t>(), r.at("gated").get<std::size_t>(),
+                            r.at("wall_seconds").get<double>(), r.at("quick").get<bool>(),
+                            r.value("failure", std::string())});
+    } catch (const nlohmann::json::exception&) {
+        return {};  // not ours or damaged: the summary starts again from this run
+    }
+    return rows;
+}
+
+std::string summary_rows_json(const SummaryRows& rows) {
+    nlohmann::json cases = nlohmann::json::array();
+    for (const SummaryRow& r : rows)
+        cases.push_back({{"name", r.name}, {"result", r.verdict}, {"gated_passed", r.gated_passed},
+                         {"gated", r.gated}, {"wall_seconds", r.wall_seconds}, {"quick", r.quick},
+                         {"failure", r.failure}});
+    return nlohmann::json{{"cases", cases}}.dump(2) + "\n";
+}
+
+std::string summary_markdown(const SummaryRows& rows) {
+    std::string md = "# sphdeck verify: summary\n\n";
+    std::vector<std::vector<std::string>> table = {
+        {"case", "result", "gated checks passed", "version", "wall time [s]", "details"}};
+    for (const SummaryRow& r : rows)
+        table.push_back({r.name, r.verdict, fmt::format("{}/{}", r.gated_passed, r.gated), r.quick ? "quick" : "full",
+                         fmt::format("{:.2f}", r.wall_seconds), fmt::format("[{0}.md]({0}.md)", r.name)});
+    md += markdown_table(table);
+    for (const SummaryRow& r : rows)
+        if (!r.failure.empty()) md += fmt::format("\n- {}: {}\n", r.name, r.failure);
     return md;
 }
 

@@ -128,7 +128,9 @@ def run_sphdeck(sphdeck, args, include_dir):
 
 def check(sphdeck, path, include_dir):
     """Errors and warnings of `sphdeck check`: list of (file, line, code, severity, message)."""
-    report, problem = run_sphdeck(sphdeck, ["check", "--format", "json", "--no-config", path], include_dir)
+    # --alone: a plant is a deck of its own; searching the scratch folder for decks that include it
+    # (engine/include_context) would read every other plant, for every plant.
+    report, problem = run_sphdeck(sphdeck, ["check", "--format", "json", "--no-config", "--alone", path], include_dir)
     if report is None:
         return None, problem
     found = []

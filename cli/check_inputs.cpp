@@ -1,0 +1,120 @@
+#include "cli/check_inputs.hpp"
+
+#include <fnmatch.h>
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <set>
+#include <system_error>
+
+namespace sphdeck::cli {
+namespace fs = std::filesystem;
+namespace {
+
+constexpr std::uintmax_t kMostScannedBytes = std::uintmax_t{64} << 20;
+
+std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+}
+
+bool is_deck_file(const fs::path& path) {
+    const std::string name = lower(path.filename().string());
+    for (const char* extension : {".k", ".key", ".dyn", ".inc"})
+        if (lower(path.extension().string()) == extension) return true;
+    return name.size() > 9 && name.ends_with("_0000.rad");
+}
+
+bool excluded(const std::string& path, const std::vector<std::string>& exclude) {
+    const std::string name = fs::path(path).filename().string();
+    return std::any_of(exclude.begin(), exclude.end(), [&](const std::string& glob) {
+        return fnmatch(glob.c_str(), path.c_str(), 0) == 0 || fnmatch(glob.c_str(), name.c_str(), 0) == 0;
+    });
+}
+
+std::string trimmed(std::string line) {
+    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.pop_back();
+    const auto first = line.find_first_not_of(" \t");
+    return first == std::string::npos ? std::string() : line.substr(first);
+}
+
+// The files a deck's text names in *INCLUDE blocks (the first data line of each; *INCLUDE_PATH and the
+// other *INCLUDE_ options with other first lines are left out) or #include lines, resolved from its folder.
+std::vector<fs::path> named_includes(const fs::path& deck) {
+    std::vector<fs::path> out;
+    std::error_code ec;
+    if (fs::file_size(deck, ec) > kMostScannedBytes || ec) return out;
+    std::ifstream in(deck, std::ios::binary);
+    bool in_include = false;
+    for (std::string raw; std::getline(in, raw);) {
+        const std::string line = trimmed(raw);
+        if (line.empty() || line[0] == '$') continue;
+        const std::string lowered = lower(line);
+        if (lowered.rfind("#include", 0) == 0) {
+            out.push_back(deck.parent_path() / trimmed(line.substr(8)));
+            continue;
+        }
+        if (line[0] == '*') {
+            const std::string keyword = lowered.substr(0, lowered.find_first_of(" \t,"));
+            in_include = keyword == "*include" || keyword == "*include_transform" || keyword == "*include_stamped_part";
+            continue;
+        }
+        if (in_include) {
+            std::string name = line;
+            std::replace(name.begin(), name.end(), '\\', '/');
+            out.push_back(deck.parent_path() / name);
+            in_include = false;
+        }
+    }
+    return out;
+}
+
+fs::path key(const fs::path& path) {
+    std::error_code ec;
+    fs::path canonical = fs::weakly_canonical(path, ec);
+    return ec ? fs::absolute(path).lexically_normal() : canonical;
+}
+
+}  // namespace
+
+ExpandedInputs expand_inputs(const std::vector<std::string>& given, const std::vector<std::string>& exclude) {
+    ExpandedInputs out;
+    for (const std::string& path : given) {
+        std::error_code ec;
+        if (path == "-" || !fs::is_directory(path, ec)) {
+            if (path != "-" && !fs::exists(path, ec)) {
+                out.error = "'" + path + "' does not exist";
+                return out;
+            }
+            out.inputs.push_back({path, false});
+            continue;
+        }
+        std::vector<std::string> found;
+        for (fs::recursive_directory_iterator it(path, fs::directory_options::skip_permission_denied, ec), end;
+             !ec && it != end; it.increment(ec)) {
+            if (it->is_directory(ec) && it->path().filename().string().rfind('.', 0) == 0) {
+                it.disable_recursion_pending();  // .git, .vscode ...
+                continue;
+            }
+            if (it->is_regular_file(ec) && is_deck_file(it->path()) && !excluded(it->path().string(), exclude))
+                found.push_back(it->path().string());
+        }
+        std::sort(found.begin(), found.end());
+        for (std::string& f : found) out.inputs.push_back({std::move(f), true});
+    }
+    return out;
+}
+
+std::vector<CheckInput> drop_included(const std::vector<CheckInput>& inputs) {
+    std::set<fs::path> included;
+    for (const CheckInput& input : inputs)
+        if (input.found_in_folder)
+            for (const fs::path& name : named_includes(input.path)) included.insert(key(name));
+    std::vector<CheckInput> kept;
+    for (const CheckInput& input : inputs)
+        if (!input.found_in_folder || !included.count(key(input.path))) kept.push_back(input);
+    return kept;
+}
+
+}  // namespace sphdeck::cli
