@@ -83,11 +83,7 @@ ExpandedInputs expand_inputs(const std::vector<std::string>& given, const std::v
     for (const std::string& path : given) {
         std::error_code ec;
         if (path == "-" || !fs::is_directory(path, ec)) {
-            if (path != "-" && !fs::exists(path, ec)) {
-                out.error = "'" + path + "' does not exist";
-                return out;
-            }
-            out.inputs.push_back({path, false});
+            out.inputs.push_back({path, false});  // a missing file: the reader says it cannot open it
             continue;
         }
         std::vector<std::string> found;
@@ -99,6 +95,10 @@ ExpandedInputs expand_inputs(const std::vector<std::string>& given, const std::v
             }
             if (it->is_regular_file(ec) && is_deck_file(it->path()) && !excluded(it->path().string(), exclude))
                 found.push_back(it->path().string());
+        }
+        if (found.empty()) {
+            out.error = "'" + path + "' is a directory with no deck files in it (*.k *.key *.dyn *.inc *_0000.rad)";
+            return out;
         }
         std::sort(found.begin(), found.end());
         for (std::string& f : found) out.inputs.push_back({std::move(f), true});

@@ -17,7 +17,7 @@ struct CheckInput {
 
 struct ExpandedInputs {
     std::vector<CheckInput> inputs;
-    std::optional<std::string> error;  // a named path that does not exist
+    std::optional<std::string> error;  // a folder without decks
 };
 
 // Deck files in a folder: *.k *.key *.dyn *.inc and OpenRadioss starter decks *_0000.rad (the engine

@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 
 #include "grammar/radioss/cell_names.hpp"
+#include "grammar/radioss/generated_layouts.hpp"
+#include "grammar/radioss/keyword_lookup.hpp"
 
 namespace sphdeck::cli {
 namespace {
@@ -36,13 +38,28 @@ int columns_version(const rad::KeywordSpec& keyword, std::size_t k) {
     return k > 0 && keyword.formats[k - 1].since <= 51 ? 44 : 51;
 }
 
+// What a generated cell's id names (FieldSpec::link).
+std::string link_note(char link) {
+    switch (link) {
+        case 'F': return "id of a /FUNCT or /TABLE";
+        case 'S': return "id of a /SENSOR";
+        case 'Y': return "id of a /SKEW or /FRAME";
+        case 'G': return "id of a /GRNOD";
+        case 'U': return "id of a /SURF";
+        case 'M': return "id of a /MAT";
+        case 'P': return "id of a /PROP";
+        case 'C': return "id of a /PART";
+    }
+    return {};
+}
+
 std::string card_notes(const rad::KeywordSpec& keyword, const rad::FormatSpec& format, std::size_t i) {
     const rad::CardSpec& card = format.cards[i];
     if (!card.count.empty())
         return fmt::format("LIST: {} values in all, {} a line, as field {} of the group's first card says; no "
                            "line for 0",
                            card.count, card.fields.size(), card.count);
-    if (card.repeat == rad::Repeat::Once && card.present_if)
+    if (card.repeat == rad::Repeat::Once && (card.present_if || !card.when.empty()))
         return fmt::format("once, only when {}; an absent card takes every default", card.condition);
     if (card.repeat == rad::Repeat::Once) return keyword.engine ? "once" : "once; an absent card takes every default";
     if (card.fields.size() == 1 && card.fields[0].cell == rad::Cell::Line && card.fields[0].name == "text")
@@ -65,7 +82,7 @@ void print_card(const rad::CardSpec& card, int version, bool engine) {
                               : to_end ? fmt::format("{}-", cells[i].start + 1)
                                        : fmt::format("{}-{}", cells[i].start + 1, cells[i].start + cells[i].width);
         rows.push_back({std::move(columns), f.name.empty() ? "-" : std::string(f.name), std::string(rad::cell_kind_name(f.cell)),
-                        std::string(f.note)});
+                        f.link ? link_note(f.link) : std::string(f.note)});
     }
     if (engine) rows[0][0] = "value";
     std::array<std::size_t, 3> width{};
@@ -83,7 +100,12 @@ void print_card(const rad::CardSpec& card, int version, bool engine) {
 
 const rad::KeywordSpec* find_radioss_keyword(std::string_view name) {
     if (name.empty() || name.front() != '/') return nullptr;
-    return rad::find_keyword(upper(name));
+    // The table the reader checks the cards with: hand-written, or generated where no hand-written
+    // table names the keyword (a family table such as /PROP does not describe /PROP/SHELL).
+    const std::string header = upper(name);
+    const rad::KeywordLookup found = rad::lookup_keyword(header);
+    if (found.cards) return found.cards;
+    return rad::find_generated(header);
 }
 
 void print_radioss_keyword(const rad::KeywordSpec& keyword) {
@@ -126,27 +148,20 @@ std::vector<std::pair<std::string, std::string>> radioss_list_rows() {
                                        k.decoded ? "" : ", kept as is", k.summary);
         rows.emplace_back(std::move(names), std::move(what));
     }
+    for (const rad::KeywordSpec& k : rad::generated::keywords()) {
+        std::size_t segments = 0;
+        const rad::KeywordSpec* hand = rad::find_keyword(k.name, &segments);
+        if (hand && hand->name == k.name) continue;  // the hand-written table's row says it
+        rows.emplace_back(std::string(k.name), fmt::format("[radioss {}, from the CFG files]",
+                                                           k.engine ? "engine" : "starter"));
+    }
     std::sort(rows.begin(), rows.end());
     return rows;
 }
 
 std::string radioss_suggestion(std::string_view name) {
-    const std::string wanted = upper(name);
-    std::string_view best;
-    std::size_t best_distance = 3;
-    for (const rad::KeywordSpec& k : rad::all_keywords()) {
-        const std::string_view n = k.name;
-        std::vector<std::size_t> prev(n.size() + 1), cur(n.size() + 1);
-        for (std::size_t j = 0; j <= n.size(); ++j) prev[j] = j;
-        for (std::size_t i = 1; i <= wanted.size(); ++i) {
-            cur[0] = i;
-            for (std::size_t j = 1; j <= n.size(); ++j)
-                cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (wanted[i - 1] == n[j - 1] ? 0 : 1)});
-            std::swap(prev, cur);
-        }
-        if (prev[n.size()] < best_distance) best_distance = prev[n.size()], best = n;
-    }
-    return best.empty() ? "" : fmt::format("; did you mean {}?", best);
+    const auto best = rad::suggest_keyword(upper(name));
+    return best ? fmt::format("; did you mean {}?", *best) : "";
 }
 
 }  // namespace sphdeck::cli

@@ -1,5 +1,7 @@
 #include "engine/position_index.hpp"
 
+#include "grammar/radioss/keyword_lookup.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <map>
@@ -184,7 +186,10 @@ std::optional<std::size_t> dyna_field_at(const keywords::CardSpec& card, grammar
 
 const rad::KeywordSpec* radioss_keyword(const grammar::Block& block, std::size_t* prefix) {
     if (block.keyword.empty() || block.keyword[0] != '/') return nullptr;
-    return rad::find_keyword(block.keyword, prefix);
+    // The table the reader walks (model/radioss_decoder.cpp): hand-written or generated.
+    const rad::KeywordLookup found = rad::lookup_keyword(block.keyword);
+    if (prefix) *prefix = found.prefix_segments;
+    return found.cards;
 }
 
 bool radioss_engine_block(const grammar::RawDeck& deck, const grammar::Block& block) {

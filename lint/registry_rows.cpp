@@ -13,8 +13,8 @@ constexpr RuleInfo kRows[] = {
     //  summary[, whether its findings carry fixes: Fixable::Safe, Unsafe or Mixed]
     // DK: deck syntax and card values, found by the readers and the schemas.
     {"DK001", "unknown-keyword", Error, "0.1.0", "schema",
-     "a keyword name LS-DYNA does not know (a typo: LS-DYNA stops there), with the closest known name; "
-     "a warning or info where the name may be valid",
+     "a keyword name LS-DYNA or the OpenRadioss starter does not know (a typo: the solver stops there), with "
+     "the closest known name; a warning or info where the name may be valid",
      Fixable::Unsafe},
     {"DK002", "bad-integer", Error, "0.1.0", "reader",
      "text in an integer field that is not an integer (after parameter substitution)",

@@ -282,6 +282,7 @@ void check_radioss(RuleContext& c) {
     radioss::check_sol2sph(c);
     radioss::check_properties(c);
     radioss::check_sph_references(c);
+    radioss::check_generated_references(c);
 }
 
 }  // namespace sphdeck::lint

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "grammar/keywords/generated_layouts.hpp"
+#include "grammar/radioss/generated_layouts.hpp"
 #include "grammar/parameters.hpp"
 #include "engine/id_index.hpp"
 #include "engine/position_index.hpp"
@@ -92,7 +93,16 @@ nlohmann::json radioss_keyword_items(std::string_view typed, const Edit& edit) {
         for (auto alias : k.aliases)
             if (starts_with_upper(alias, typed)) items.push_back(item(std::string(alias), kKeyword, std::string(k.summary), edit));
     }
-    return list(std::move(items), false);
+    // The other keywords of the starter's CFG files (grammar/radioss/generated/), after the tables'.
+    std::size_t generated = 0;
+    for (const auto& k : rad::generated::keywords()) {
+        if (!starts_with_upper(k.name, typed)) continue;
+        std::size_t segments = 0;
+        if (const auto* hand = rad::find_keyword(k.name, &segments); hand && hand->name == k.name) continue;
+        if (++generated > 200) break;  // a bare '/' matches them all
+        items.push_back(item(std::string(k.name), kKeyword, k.engine ? "engine keyword" : "starter keyword", edit));
+    }
+    return list(std::move(items), generated > 200);
 }
 
 // The ids of `kind` the deck defines, with their titles.

@@ -35,6 +35,8 @@ public:
     void card(const RadiossBlock& b, std::size_t card, std::uint32_t line, const std::vector<RadiossValue>& values);
     void end(const RadiossBlock& b);
     Model finish();
+    // The facts being gathered, for what the walker records itself (ids of generated cards).
+    RadiossFacts& facts() { return facts_; }
 
 private:
     // Once cards of the open block, by card index (empty when the block had no such line).

@@ -56,9 +56,9 @@ void RadiossCardDecoder::report(const char* code, diag::Severity s, std::string 
 
 void RadiossCardDecoder::decode(const grammar::CardLine& line, const grammar::radioss::CardSpec& card, int version,
                                 bool list_directed, std::vector<RadiossValue>& values, std::string_view newer,
-                                bool trailing_checked) {
+                                bool trailing_checked, std::uint32_t quiet_until) {
     if (list_directed) decode_tokens(line, card, values);
-    else decode_fixed(line, card, version, values, newer, trailing_checked);
+    else decode_fixed(line, card, version, values, newer, trailing_checked, quiet_until);
 }
 
 const std::vector<grammar::FixedField>& RadiossCardDecoder::layout_of(const grammar::radioss::CardSpec& card,
@@ -75,9 +75,24 @@ const std::vector<grammar::FixedField>& RadiossCardDecoder::layout_of(const gram
     return layouts_.back().positions;
 }
 
+namespace {
+// The line right above `line` in its file when it is a `#` comment (a CFG COMMENT naming the
+// fields), else empty.
+std::string_view comment_above(const grammar::RawDeck& deck, const grammar::CardLine& line) {
+    const std::string_view file = deck.sources.file(line.file).text;
+    if (line.offset < 2 || line.offset > file.size() || file[line.offset - 1] != '\n') return {};
+    std::size_t end = line.offset - 1, begin = end;
+    while (begin > 0 && file[begin - 1] != '\n' && end - begin < 256) --begin;
+    if (begin > 0 && file[begin - 1] != '\n') return {};
+    if (end > begin && file[end - 1] == '\r') --end;
+    const std::string_view above = file.substr(begin, end - begin);
+    return !above.empty() && above[0] == '#' ? above : std::string_view{};
+}
+}  // namespace
+
 void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const grammar::radioss::CardSpec& card,
                                       int version, std::vector<RadiossValue>& values, std::string_view newer,
-                                      bool trailing_checked) {
+                                      bool trailing_checked, std::uint32_t quiet_until) {
     const std::size_t found_before = out_.size();
     const std::vector<grammar::FixedField>& positions = layout_of(card, version);
     const std::uint32_t end = positions.empty() ? 0 : positions.back().start + std::min(positions.back().width, 1u << 20);
@@ -92,15 +107,15 @@ void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const gramm
     }
     if (!trailing_checked) {
         // the starter reads past the last field silently for this keyword
-    } else if (cut.free_format && cut.extra_values > 0) {
+    } else if (cut.free_format && cut.extra_values > 0 && quiet_until == 0) {
         report("DK006", diag::Severity::Warning,
                fmt::format("{} value(s) beyond the card's {} fields are ignored", cut.extra_values, card.fields.size()),
                cut.beyond);
-    } else if (!cut.free_format && text.size() > end) {
+    } else if (const std::uint32_t from = std::max(end, quiet_until); !cut.free_format && text.size() > from) {
         // The starter warns for each 10-character chunk past the last field that is not blank
         // or zero (reader messages 100213/100214); the first and last such chunks bound the span.
         std::size_t first = std::string_view::npos, last = 0;
-        for (std::size_t at = end; at < text.size(); at += 10) {
+        for (std::size_t at = from; at < text.size(); at += 10) {
             std::string_view chunk = text.substr(at, 10);
             if (harmless_chunk(chunk)) continue;
             std::size_t lead = 0;
@@ -109,7 +124,7 @@ void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const gramm
             last = at + lead + t.size();
         }
         if (first != std::string_view::npos) {
-            std::string message = fmt::format("text after column {} is past the card's last field and is ignored", end);
+            std::string message = fmt::format("text after column {} is past the card's last field and is ignored", from);
             if (!newer.empty()) message += fmt::format(" ({}; the deck's Invers is {})", newer, version);
             report("DK006", diag::Severity::Warning, std::move(message), columns(line, first, last));
         }
@@ -124,11 +139,12 @@ void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const gramm
         if (v.spec->cell == Cell::Skip || v.spec->cell == Cell::Skip20) continue;
         read_value(v, fields_[i].text, !cut.free_format);
     }
+    const std::string_view header = shift_check_ ? comment_above(deck_, line) : std::string_view{};
     if (!text_card && !cut.free_format && !cut.has_tab &&
-        (out_.size() > found_before || glued_across_cells(text, positions)))
+        (out_.size() > found_before || glued_across_cells(text, positions) || !header.empty()))
         diagnose_radioss_line(line, text, card, positions,
                               block_ < deck_.blocks.size() ? std::string_view(deck_.blocks[block_].keyword) : "its card",
-                              out_, found_before);
+                              out_, found_before, header);
 }
 
 // Engine data lines are read by Fortran list-directed input: tokens separated by blanks or commas.
@@ -179,7 +195,14 @@ void RadiossCardDecoder::read_value(RadiossValue& v, std::string_view field, boo
         std::string_view head = token.substr(0, gap), rest = trim(token.substr(gap));
         std::string_view second = rest.substr(0, rest.find_first_of(" \t"));
         grammar::RealValue a = grammar::parse_real(head), b = grammar::parse_real(second);
-        if (a.status == NumberStatus::Ok && b.status == NumberStatus::Ok) {
+        // The tail of a zero written across the cell's start ("0000      .000000000" after
+        // ".00000"; model/radioss_straddles.cpp) and an equal number: the value read is the one meant.
+        const bool same = offset == 0 && a.status == NumberStatus::Ok && b.status == NumberStatus::Ok &&
+                          a.value == 0.0 && b.value == 0.0 && trim(rest.substr(second.size())).empty();
+        if (same) {
+            token = head;
+            v.text = head;
+        } else if (a.status == NumberStatus::Ok && b.status == NumberStatus::Ok) {
             report("RAD025", diag::Severity::Error,
                    fmt::format("two numbers in the {}-column field {}: '{}'; the starter keeps {} and drops {}",
                                cell_columns, v.spec->name, shown(token), head, second),

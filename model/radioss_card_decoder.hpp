@@ -4,6 +4,7 @@
 // RAD025 for two numbers glued in one fixed cell).
 #pragma once
 
+#include <cstdint>
 #include <string_view>
 #include <vector>
 
@@ -33,18 +34,24 @@ public:
     // the lines being decoded stand: only parameters defined before it have a value there.
     void set_parameters(const RadiossParameters* parameters) { parameters_ = parameters; }
     void set_block(std::size_t block) { block_ = block; }
+    // The next lines are cards of a generated layout read once: under a `#` comment line (the
+    // field names of the CFG's COMMENT), a line is looked at for a shift even without a finding.
+    void set_shift_check(bool on) { shift_check_ = on; }
 
     // Decodes `line` against `card`. `version` sets the cell widths; `list_directed` reads engine
     // lines (tokens separated by blanks or commas); `newer` names a newer format that reads more
     // fields, for the message when text follows the last field; `trailing_checked` false reads
     // such text silently (KeywordSpec::trailing_checked).
+    // `quiet_until` > 0: text between the card's last field and that column is read silently (a
+    // generated layout's older format, which often ends before columns decks of its version fill).
     void decode(const grammar::CardLine& line, const grammar::radioss::CardSpec& card, int version,
                 bool list_directed, std::vector<RadiossValue>& values, std::string_view newer = {},
-                bool trailing_checked = true);
+                bool trailing_checked = true, std::uint32_t quiet_until = 0);
 
 private:
     void decode_fixed(const grammar::CardLine& line, const grammar::radioss::CardSpec& card, int version,
-                      std::vector<RadiossValue>& values, std::string_view newer, bool trailing_checked);
+                      std::vector<RadiossValue>& values, std::string_view newer, bool trailing_checked,
+                      std::uint32_t quiet_until);
     void decode_tokens(const grammar::CardLine& line, const grammar::radioss::CardSpec& card,
                        std::vector<RadiossValue>& values);
     void read_value(RadiossValue& v, std::string_view field, bool fixed);
@@ -57,6 +64,7 @@ private:
     std::vector<diag::Diagnostic>& out_;
     const RadiossParameters* parameters_ = nullptr;
     std::size_t block_ = 0;
+    bool shift_check_ = false;
     std::vector<grammar::Field> fields_;
     struct Layout {
         const grammar::radioss::CardSpec* card = nullptr;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "grammar/fields.hpp"
+#include "grammar/radioss/generated_layouts.hpp"
 
 namespace sphdeck::model {
 
@@ -22,7 +23,7 @@ RadiossCardSequence::RadiossCardSequence(const std::vector<rad::CardSpec>& cards
             list_ = k;
             break;
         }
-    for (std::size_t k = 0; k < first_repeated_; ++k) conditional_ = conditional_ || cards[k].present_if;
+    for (std::size_t k = 0; k < first_repeated_; ++k) conditional_ = conditional_ || cards[k].present_if || !cards[k].when.empty();
     skip_absent();
 }
 
@@ -33,7 +34,11 @@ double RadiossCardSequence::Earlier::operator()(std::string_view field) const {
 }
 
 void RadiossCardSequence::skip_absent() {
-    while (next_ < first_repeated_ && cards_[next_].present_if && !cards_[next_].present_if(earlier_)) ++next_;
+    const auto absent = [&](const rad::CardSpec& c) {
+        if (c.present_if) return !c.present_if(earlier_);
+        return !c.when.empty() && !rad::generated::condition_holds(c.when, earlier_);
+    };
+    while (next_ < first_repeated_ && absent(cards_[next_])) ++next_;
 }
 
 RadiossCardSequence::Next RadiossCardSequence::next(std::string_view text) const {

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "grammar/radioss/cards.hpp"
+#include "grammar/radioss/keyword_lookup.hpp"
 #include "grammar/radioss/reader.hpp"
 #include "grammar/value.hpp"
 #include "model/radioss_builder.hpp"
@@ -30,40 +31,12 @@ bool is_number(std::string_view s) {
 std::string keyword_name(std::string_view header) {
     std::string name;
     for (std::string_view s : rad::path_segments(header)) {
+        s = trim(s);
         if (is_number(s)) break;
         name += '/';
         name += s;
     }
     return name.empty() ? std::string(header) : name;
-}
-
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-    std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        cur[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j)
-            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
-        std::swap(prev, cur);
-    }
-    return prev[b.size()];
-}
-
-std::optional<std::string_view> similar_keyword(std::string_view name) {
-    std::optional<std::string_view> best;
-    std::size_t best_distance = 3;
-    const auto consider = [&](std::string_view n) {
-        // A length gap is a lower bound of the distance: most names need no distance at all.
-        const std::size_t gap = n.size() > name.size() ? n.size() - name.size() : name.size() - n.size();
-        if (gap >= best_distance) return;
-        const std::size_t d = edit_distance(name, n);
-        if (d < best_distance) best_distance = d, best = n;
-    };
-    for (const rad::KeywordSpec& k : rad::all_keywords()) {
-        consider(k.name);
-        for (std::string_view alias : k.aliases) consider(alias);
-    }
-    return best;
 }
 
 // The header path's segments after the keyword prefix, with their columns.
@@ -107,14 +80,6 @@ public:
             decoder_.set_block(static_cast<std::size_t>(&block - deck_.blocks.data()));
             walk(block);
         }
-        for (const auto& [name, u] : unknown_) {
-            std::string message = fmt::format("unknown keyword {} kept as is", name);
-            if (u.second > 1) message += fmt::format(" ({} blocks)", u.second);
-            diag::Diagnostic d{"DK001", diag::Severity::Info, message, u.first, {}};
-            if (auto similar = similar_keyword(name))
-                d.notes.push_back({grammar::Span{}, fmt::format("did you mean {}?", *similar)});
-            out_.push_back(std::move(d));
-        }
     }
 
     Model finish() { return builder_.finish(); }
@@ -127,6 +92,31 @@ public:
     }
 
 private:
+    // DK001: a header neither the starter's CFG files nor sphdeck's tables know, at its line, with
+    // the closest known name as an unsafe fix.
+    void report_unknown(const grammar::Block& block, bool engine) {
+        const std::string name = keyword_name(block.keyword);
+        auto& u = unknown_[name];
+        if (u.second++ == 0) u.first = block.span;
+        auto cached = suggestions_.find(name);
+        if (cached == suggestions_.end())
+            cached = suggestions_.emplace(name, suggestions_.size() < 64 ? rad::suggest_keyword(name)
+                                                                         : std::nullopt).first;
+        const std::optional<std::string>& better = cached->second;
+        std::string message = fmt::format("unknown keyword {}: {}", name,
+                                          engine ? "the engine stops at a keyword it does not know"
+                                                 : "no keyword of the starter's CFG files has this name");
+        if (better) message += fmt::format("; did you mean {}?", *better);
+        diag::Diagnostic d{"DK001", diag::Severity::Error, std::move(message), block.span, {}};
+        d.notes.push_back({grammar::Span{}, "sphdeck reads the deck without this block: its cards are not checked"});
+        if (better) {
+            grammar::Span at = block.span;
+            at.end_column = at.column + static_cast<std::uint32_t>(name.size());
+            d.fixes.push_back({fmt::format("replace {} with {}", name, *better), false, {{at, *better}}});
+        }
+        out_.push_back(std::move(d));
+    }
+
     // One-file decks: the blocks of a main file before its /END/ENGINE are the engine input.
     void mark_engine_sections() {
         engine_block_.assign(deck_.blocks.size(), false);
@@ -138,18 +128,55 @@ private:
         }
     }
 
+    // The ids a starter header defines for the REF rules of generated cards: the integer segments
+    // after the name, by the kind of id its family is.
+    void note_header_ids(const grammar::Block& block) {
+        const auto segments = rad::path_segments(block.keyword);
+        if (segments.empty()) return;
+        const std::string_view first = trim(segments.front());
+        RadiossFacts& facts = builder_.facts();
+        if (first == "SUBMODEL") facts.submodels = true;
+        const char kind = first.rfind("FUNCT", 0) == 0 || first.rfind("TABLE", 0) == 0 || first == "MOVE_FUNCT" ? 'F'
+                          : first == "SENSOR"                                  ? 'S'
+                          : first == "SKEW" || first == "FRAME"                ? 'Y'
+                          : first == "GRNOD"                                   ? 'G'
+                          : first == "SURF"                                    ? 'U'
+                          : first == "MAT"                                     ? 'M'
+                          : first == "PROP"                                    ? 'P'
+                          : first == "PART"                                    ? 'C'
+                                                                               : 0;
+        if (!kind) return;
+        for (std::size_t k = 1; k < segments.size(); ++k) {
+            const grammar::IntegerValue v = grammar::parse_integer(trim(segments[k]));
+            if (v.status == grammar::NumberStatus::Ok) facts.header_ids[kind].insert(v.value);
+        }
+    }
+
     void walk(const grammar::Block& block) {
         if (block.keyword == "/END" || block.keyword == "/END/ENGINE") return;
         const std::size_t index = static_cast<std::size_t>(&block - deck_.blocks.data());
         const bool engine =
             (block.span.file < engine_.size() && engine_[block.span.file]) || engine_block_[index];
-        std::size_t prefix = 0;
-        const rad::KeywordSpec* spec = rad::find_keyword(block.keyword, &prefix);
-        if (!spec) {
-            auto& u = unknown_[keyword_name(block.keyword)];
-            if (u.second++ == 0) u.first = block.span;
-            return;
+        if (!engine) note_header_ids(block);
+        const rad::KeywordLookup found = rad::lookup_keyword(block.keyword);
+        std::size_t prefix = found.prefix_segments;
+        const rad::KeywordSpec* spec = found.spec;
+        const rad::KeywordSpec* cards = found.cards ? found.cards : spec;
+        // The engine reads any header its REDKEY0 knows (the first five characters of the first
+        // segment); the layouts of its keywords are sphdeck's own or none.
+        if (engine && rad::is_engine_key(block.keyword) && (!spec || !spec->engine)) return;
+        if (!found.known && !(spec && spec->engine)) {
+            if (!engine && rad::is_engine_only_key(block.keyword)) {
+                out_.push_back({"DK001", diag::Severity::Info,
+                                fmt::format("{} is an engine keyword: the starter ignores it; it belongs in the "
+                                            "engine deck <run>_0001.rad",
+                                            keyword_name(block.keyword)),
+                                block.span, {}});
+                return;
+            }
+            report_unknown(block, engine);
         }
+        if (!spec) return;  // known by name, nothing to read (/SUBMODEL, /ENDSUB)
         if (spec->engine != engine) {
             out_.push_back({"DK001", diag::Severity::Info,
                             spec->engine ? fmt::format("{} is an engine keyword: the starter ignores it; it belongs "
@@ -171,11 +198,11 @@ private:
         b.engine = engine;
         b.version = version_;
         split_arguments(block, prefix, b);
-        const rad::FormatSpec& format = spec->format_for(engine ? rad::latest_version : version_);
+        const rad::FormatSpec& format = cards->format_for(engine ? rad::latest_version : version_);
         b.format = format.since;
         const grammar::CardLine* line = deck_.begin_lines(block);
         const grammar::CardLine* end = deck_.end_lines(block);
-        if (spec->title && !engine) {
+        if (cards->title && !engine) {
             if (rad::is_v4(version_)) {
                 // V4: the title is the rest of the header path (/PROP/TYPE34/7/title).
                 for (std::size_t k = 1; k < b.written.size(); ++k) b.title += (k > 1 ? "/" : "") + b.written[k];
@@ -184,29 +211,49 @@ private:
                 ++line;
             }
         }
-        builder_.begin(b);
+        if (!spec->generated) builder_.begin(b);
         if (reading_) reading_->records.push_back({block.keyword, spec->name, b.title, block.span, b.format, {}, 0});
-        walk_cards(b, format, line, end);
-        builder_.end(b);
+        walk_cards(b, *cards, format, line, end);
+        if (!spec->generated) builder_.end(b);
     }
 
-    void walk_cards(const RadiossBlock& b, const rad::FormatSpec& format, const grammar::CardLine* line,
-                    const grammar::CardLine* end) {
+    // `table`: the keyword whose cards the lines are (b.spec, or the generated layout of a family
+    // table's keyword); the builder sees the values only when they are b.spec's own.
+    void walk_cards(const RadiossBlock& b, const rad::KeywordSpec& table, const rad::FormatSpec& format,
+                    const grammar::CardLine* line, const grammar::CardLine* end) {
         const auto& cards = format.cards;
         RadiossCardSequence sequence(cards);
-        const std::string newer = newer_format(*b.spec, format);
+        const std::string newer = newer_format(table, format);
+        const bool to_builder = &table == b.spec && !table.generated;
+        // A generated layout's older formats often end before columns decks of that version still
+        // fill, silently for the starter: their trailing text is reported past the line's width only.
+        const std::uint32_t quiet_until = table.generated && !newer.empty() ? rad::line_width(b.version) : 0;
         for (; line != end; ++line) {
             const auto next = sequence.next(deck_.text(*line));
             if (next.step == RadiossCardSequence::Step::Blank) continue;
             if (next.step == RadiossCardSequence::Step::Past) {
-                report_extra(b, format, *line, static_cast<std::size_t>(end - line), newer);
+                report_extra(table, b.version, format, *line, static_cast<std::size_t>(end - line), newer);
                 return;
             }
-            decoder_.decode(*line, cards[next.index], b.version, b.engine, values_, newer, b.spec->trailing_checked);
+            decoder_.set_shift_check(table.generated && cards[next.index].repeat == rad::Repeat::Once);
+            decoder_.decode(*line, cards[next.index], b.version, b.engine, values_, newer, table.trailing_checked,
+                            quiet_until);
+            decoder_.set_shift_check(false);
             sequence.advance(next.index, values_);
-            builder_.card(b, next.index, static_cast<std::uint32_t>(line - deck_.lines.data()), values_);
+            if (!b.engine) note_id_uses(table);
+            if (to_builder)
+                builder_.card(b, next.index, static_cast<std::uint32_t>(line - deck_.lines.data()), values_);
             if (reading_) record(next.index < sequence.first_repeated());
         }
+    }
+
+    // Ids the cells of a generated card name (FieldSpec::link), for the REF rules; 0 and negative
+    // values name nothing.
+    void note_id_uses(const rad::KeywordSpec& table) {
+        for (const RadiossValue& v : values_)
+            if (v.spec && v.spec->link && v.valid && v.explicit_value && v.number > 0)
+                builder_.facts().id_uses.push_back({v.spec->link, static_cast<long long>(v.number), v.span,
+                                                    std::string(v.spec->name), std::string(table.name)});
     }
 
     void record(bool single_card) {
@@ -232,11 +279,11 @@ private:
         return fmt::format("{} reads more fields from format {}", spec.name, newest.since);
     }
 
-    void report_extra(const RadiossBlock& b, const rad::FormatSpec& format, const grammar::CardLine& line,
-                      std::size_t extra, const std::string& newer) {
-        std::string message = fmt::format("{} takes {} card(s) in format {}; {} more line(s) ignored", b.spec->name,
+    void report_extra(const rad::KeywordSpec& table, int version, const rad::FormatSpec& format,
+                      const grammar::CardLine& line, std::size_t extra, const std::string& newer) {
+        std::string message = fmt::format("{} takes {} card(s) in format {}; {} more line(s) ignored", table.name,
                                           format.cards.size(), format.since, extra);
-        if (!newer.empty()) message += fmt::format(" ({}; the deck's Invers is {})", newer, b.version);
+        if (!newer.empty()) message += fmt::format(" ({}; the deck's Invers is {})", newer, version);
         out_.push_back({"DK009", diag::Severity::Warning, std::move(message),
                         grammar::Span{line.file, line.line, 1, std::max<std::uint32_t>(deck_.length(line), 1) + 1}, {}});
     }
@@ -252,6 +299,7 @@ private:
     std::vector<bool> engine_block_;  // per block: before /END/ENGINE in a one-file deck
     RadiossReading* reading_ = nullptr;
     std::map<std::string, std::pair<grammar::Span, std::size_t>> unknown_;
+    std::map<std::string, std::optional<std::string>> suggestions_;  // per unknown name
 };
 
 }  // namespace

@@ -19,6 +19,8 @@
 #pragma once
 
 #include <array>
+#include <map>
+#include <set>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -196,6 +198,14 @@ struct RadiossDt {
     bool in_starter = false;   // written in the starter deck, where the starter ignores it
 };
 
+// An id a generated card's cell names (FieldSpec::link), for the REF rules.
+struct RadiossIdUse {
+    char kind = 0;              // FieldSpec::link
+    long long id = 0;
+    grammar::Span span;
+    std::string field, keyword;  // "grnd_ID1", "/RWALL/PLANE"
+};
+
 struct RadiossFacts {
     int version = 2026;               // Invers of /BEGIN (the latest when absent)
     bool begin_present = false;
@@ -224,6 +234,12 @@ struct RadiossFacts {
     std::vector<RadiossInitialState> initial_states;
     std::vector<RadiossDt> time_steps;
     bool engine_deck = false;         // an engine deck was read
+    // Ids named by generated cards, and the ids the headers of the starter deck define per kind
+    // (the integer segments after the name: /FUNCT/12, /GRNOD/NODE/5); a //SUBMODEL offsets ids,
+    // so then none is judged.
+    std::vector<RadiossIdUse> id_uses;
+    std::map<char, std::set<long long>> header_ids;
+    bool submodels = false;
 
     const RadiossSphProperty* sph_property(long long id) const;
     const RadiossSolidProperty* solid_property(long long id) const;

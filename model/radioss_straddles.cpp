@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <optional>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -52,6 +53,13 @@ std::vector<Straddle> straddles(std::string_view text, const grammar::radioss::C
         const bool packed = s == positions[i].start ||
                             (i + 1 < positions.size() && e == std::size_t{positions[i + 1].start} + positions[i + 1].width);
         if (packed || grammar::parse_real(text.substr(s, e - s)).status != grammar::NumberStatus::Ok) continue;
+        // A zero across the boundary ('.000000000' read as '.00000' and '0000') changes no value.
+        const grammar::RealValue whole = grammar::parse_real(text.substr(s, e - s));
+        const grammar::RealValue kept = grammar::parse_real(text.substr(s, b - s));
+        const grammar::RealValue lost = grammar::parse_real(text.substr(b, e - b));
+        if (whole.value == 0.0 && kept.status == grammar::NumberStatus::Ok && kept.value == 0.0 &&
+            lost.status == grammar::NumberStatus::Ok && lost.value == 0.0)
+            continue;
         out.push_back({i, s, b, e});
     }
     return out;
@@ -141,13 +149,38 @@ bool one_value_moved(std::string_view text, const std::vector<Straddle>& glued,
 
 void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
                            const grammar::radioss::CardSpec& card, std::span<const grammar::FixedField> positions,
-                           std::string_view keyword, std::vector<diag::Diagnostic>& out, std::size_t from) {
+                           std::string_view keyword, std::vector<diag::Diagnostic>& out, std::size_t from,
+                           std::string_view header) {
     auto glued = straddles(text, card, positions);
-    if (glued.empty() && out.size() == from) return;
+    if (glued.empty() && out.size() == from && header.empty()) return;
     std::vector<FieldType> types;
     for (const auto& f : card.fields) types.push_back(type_of(f.cell));
+    // A `#` header of the field names reads as LS-DYNA's `$#` one (same columns).
+    std::string names;
+    if (header.size() >= 2 && header[0] == '#' && header[1] == ' ') names = "$#" + std::string(header.substr(2));
+    // Under a header, values past the card's last field (a newer format's, or text the starter
+    // ignores) are no evidence either way: the line is judged up to a few columns past the card.
+    std::string_view probe = text;
+    if (!names.empty() && !positions.empty()) {
+        const std::size_t limit = std::size_t{positions.back().start} + positions.back().width + 4;
+        if (probe.size() > limit) probe = probe.substr(0, limit);
+    }
+    // Without a header, one value typed across a boundary among right-aligned ones is RAD030, not a shift.
     std::optional<grammar::LineShift> shift;
-    if (!one_value_moved(text, glued, positions)) shift = grammar::find_shift(text, {}, positions, types);
+    if (!names.empty() || !one_value_moved(text, glued, positions))
+        shift = grammar::find_shift(probe, names, positions, types);
+    if (shift && probe.size() != text.size()) {
+        // The fix moves the whole line, its tail included.
+        const int n = shift->columns;
+        if (n > 0 && text.substr(0, static_cast<std::size_t>(n)).find_first_not_of(' ') != std::string_view::npos)
+            shift.reset();
+        else {
+            std::string moved = n > 0 ? std::string(text.substr(static_cast<std::size_t>(n)))
+                                      : std::string(static_cast<std::size_t>(-n), ' ') + std::string(text);
+            while (!moved.empty() && moved.back() == ' ') moved.pop_back();
+            shift->realigned = std::move(moved);
+        }
+    }
     if (shift) {
         const int n = std::abs(shift->columns);
         diag::Diagnostic d{"DK029", shift->changes_reading ? diag::Severity::Error : diag::Severity::Warning,

@@ -29,8 +29,10 @@ inline bool glued_across_cells(std::string_view text, std::span<const grammar::F
 
 // Looks at `line` (its `text`, fixed format, cut at `positions`) after its values were read, with the line's
 // findings at out[from, end). Cheap when nothing is glued across a boundary and nothing was found.
+// `header`: the `#` comment line above that names the fields (a generated layout's card), or empty.
 void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
                            const grammar::radioss::CardSpec& card, std::span<const grammar::FixedField> positions,
-                           std::string_view keyword, std::vector<diag::Diagnostic>& out, std::size_t from);
+                           std::string_view keyword, std::vector<diag::Diagnostic>& out, std::size_t from,
+                           std::string_view header = {});
 
 }  // namespace sphdeck::model

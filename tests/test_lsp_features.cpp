@@ -265,6 +265,27 @@ TEST_CASE("lsp completion: keyword names, enum values, ids that exist") {
     CHECK(names[0] == "3");
 }
 
+TEST_CASE("lsp on an OpenRadioss deck: generated layouts hover and complete") {
+    const std::string rad = R"(#RADIOSS STARTER
+/BEGIN
+LSP
+      2026
+                  kg                  mm                  ms
+                  kg                  mm                  ms
+/SHELL/1
+         7         1         2         3         4
+/SHE
+/END
+)";
+    const auto deck = check(rad, "lsp_0000.rad", std::nullopt);
+    const At shell = find(rad, "         7         1");
+    const std::string text = hover_text(deck, {shell.line, 15});
+    CHECK(text.find("**node_ID1** (`/SHELL`") != std::string::npos);
+    const At typing = find(rad, "/SHE", shell.line);
+    auto names = labels(ask(deck, "textDocument/completion", {{"position", position({typing.line, 4})}}));
+    CHECK(has(names, "/SHELL"));
+}
+
 TEST_CASE("lsp outline and folding: one symbol and one range per keyword block, parts as children") {
     const auto deck = check(kDeck);
     auto symbols = ask(deck, "textDocument/documentSymbol", nlohmann::json::object());

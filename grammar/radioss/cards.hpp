@@ -34,6 +34,10 @@ struct FieldSpec {
     // What a blank or 0 means and which values the starter takes, as its reader decides them
     // (shown by `sphdeck keyword`; the decoding itself lives in model/).
     std::string_view note = {};
+    // The kind of id the cell names, from the CFG's ATTRIBUTES (generated layouts only): 'F' a
+    // function or table, 'S' a sensor, 'Y' a skew or frame, 'G' a node group, 'U' a surface, 'M' a
+    // material, 'P' a property, 'C' a part; 0 none.
+    char link = 0;
 };
 
 enum class Repeat : std::uint8_t {
@@ -61,6 +65,9 @@ struct CardSpec {
     // A card read once only when this holds (nullptr: always); `condition` says it in words.
     CardCondition present_if = nullptr;
     std::string_view condition = {};
+    // A generated card's condition as data ("Ifail!0&Itype=1", generated::condition_holds);
+    // empty: none. `condition` says the same for `sphdeck keyword`.
+    std::string_view when = {};
 
     const FieldSpec* field(std::string_view name) const;
     std::size_t index(std::string_view name) const;  // fields.size() when absent
@@ -85,6 +92,7 @@ struct KeywordSpec {
     std::string_view family = {};
     std::string_view summary = {};
     std::string_view source = {};            // where the layout comes from (CFG files of the starter)
+    bool generated = false;                  // from generated/radioss_layouts.cpp, not written by hand
     std::vector<FormatSpec> formats = {};    // newest first
 
     // The format a deck of version `version` reads: the newest one not above it (the reader's
