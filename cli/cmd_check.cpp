@@ -12,11 +12,13 @@
 #include "cli/check_inputs.hpp"
 #include "cli/check_statistics.hpp"
 #include "cli/commands.hpp"
+#include "cli/fix_output.hpp"
 #include "cli/text_folding.hpp"
 #include "diag/render_github.hpp"
 #include "diag/render_json.hpp"
 #include "diag/render_sarif.hpp"
 #include "diag/render_text.hpp"
+#include "edit/fix_session.hpp"
 #include "engine/check.hpp"
 #include "engine/config_file.hpp"
 #include "engine/include_context.hpp"
@@ -35,6 +37,7 @@ struct CheckArgs {
     bool no_config = false;
     bool no_geometry = false;
     bool alone = false;  // no search for the decks that include a named file
+    bool fix = false, unsafe_fixes = false, diff = false;
     std::vector<std::string> exclude;
     std::string stdin_filename;
     bool statistics = false, exit_zero = false;
@@ -153,7 +156,38 @@ std::vector<engine::CheckResult> check_named_file(const CheckInput& input, const
     return alone;
 }
 
+// What --fix and --diff did over all decks.
+struct FixTotals {
+    std::size_t fixed = 0, remaining = 0, files = 0;
+    bool write_failed = false;
+};
+
+// --fix: mends the deck read from `path` and its includes (edit::fix_deck) and writes the files that
+// changed; --diff prints their diff instead and writes nothing. Returns the check of the fixed texts.
+engine::CheckResult fix_deck(const std::string& path, engine::Documents& documents,
+                             const engine::CheckOptions& options, const CheckArgs& args, FixTotals& totals) {
+    if (path == "-") throw std::runtime_error("--fix and --diff mend files, not standard input");
+    const edit::FixLevel level = args.unsafe_fixes ? edit::FixLevel::Unsafe : edit::FixLevel::Safe;
+    edit::FixOutcome outcome = edit::fix_deck(path, documents, options, level);
+    totals.fixed += outcome.fixed;
+    totals.remaining += outcome.remaining.diagnostics.size();
+    totals.files += outcome.files.size();
+    for (const edit::FixedFile& file : outcome.files) {
+        if (args.diff) {
+            fmt::print("{}", fixed_file_diff(file));
+        } else if (std::string error = write_fixed_file(file); !error.empty()) {
+            fmt::print(stderr, "sphdeck: error: {}\n", error);
+            totals.write_failed = true;
+        }
+    }
+    return std::move(outcome.remaining);
+}
+
 int run_check(const CheckArgs& args) {
+    if (args.unsafe_fixes && !args.fix && !args.diff) {
+        fmt::print(stderr, "sphdeck: error: --unsafe-fixes widens --fix or --diff; give one of them\n");
+        return exit_usage;
+    }
     auto start = std::chrono::steady_clock::now();
     const ExpandedInputs expanded = expand_inputs(args.decks, args.exclude);
     if (expanded.error) {
@@ -174,20 +208,29 @@ int run_check(const CheckArgs& args) {
 
     diag::RunSummary totals;
     FindingStatistics statistics;
+    FixTotals fix_totals;
+    engine::Documents fixed_texts;  // the texts --fix and --diff mended, seen by the next decks
+    const bool fixing = args.fix || args.diff;
     bool failed = false;
     const bool text_format = args.format == "full" || args.format == "concise";
     for (std::size_t i = 0; i < inputs.size(); ++i) {
         const lint::Config& config = (*configs)[i];
         std::vector<engine::CheckResult> checked;
         try {
-            checked = check_named_file(inputs[i], options_for(config, args), args);
+            // --fix mends each deck as the deck read from its file, with its includes (name the main deck
+            // to mend an include in its context).
+            const engine::CheckOptions options = options_for(config, args);
+            if (fixing) checked.push_back(fix_deck(inputs[i].path, fixed_texts, options, args, fix_totals));
+            else checked = check_named_file(inputs[i], options, args);
         } catch (const std::exception& e) {
             fmt::print(stderr, "sphdeck: error: {}\n", e.what());
             totals.complete = false;
             continue;
         }
         for (const engine::CheckResult& r : checked) {
-            if (report) {
+            if (args.diff) {
+                // stdout holds the diff only, as with `diff -u`
+            } else if (report) {
                 report->add(r.deck.sources, r.diagnostics);
             } else if (args.format == "github") {
                 for (const diag::Diagnostic& d : r.diagnostics) fmt::print("{}", diag::render_github(d, r.deck.sources));
@@ -198,7 +241,7 @@ int run_check(const CheckArgs& args) {
             add_totals(r, totals);
             statistics.add(inputs[i].path, r.diagnostics);
         }
-        if (text_format && inputs.size() > 1) fmt::print("{}\n", statistics.file_summary(inputs[i].path));
+        if (text_format && inputs.size() > 1 && !args.diff) fmt::print("{}\n", statistics.file_summary(inputs[i].path));
     }
     if (args.statistics) fmt::print(text_format ? stdout : stderr, "{}", statistics.table(lint::rule_catalog()));
     totals.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -206,14 +249,21 @@ int run_check(const CheckArgs& args) {
     std::fflush(stdout);
     // When no deck could be read, its error message is the last word, not a summary of nothing.
     const bool nothing_read = !totals.complete && totals.files == 0;
+    std::string fixes;  // ruff's "(2 fixed, 1 remaining)"
+    if (fixing)
+        fixes = args.diff ? fmt::format("; would fix {}, {} remaining", fix_totals.fixed, fix_totals.remaining)
+                          : fmt::format("; {} fixed, {} remaining", fix_totals.fixed, fix_totals.remaining);
     if (!nothing_read)
-        fmt::print(args.format == "full" && args.output_file.empty() ? stdout : stderr,
+        fmt::print(args.format == "full" && args.output_file.empty() && !args.diff ? stdout : stderr,
                    "checked {} file(s): {} keywords, {} cards, {} particles; {} error(s), {} warning(s), {} info(s) "
-                   "in {:.2f} s\n",
+                   "in {:.2f} s{}\n",
                    totals.files, totals.keywords, totals.cards, totals.particles, totals.counts.errors,
-                   totals.counts.warnings, totals.counts.infos, totals.seconds);
-    if (!totals.complete) return exit_usage;
-    return failed && !args.exit_zero ? exit_findings : exit_clean;
+                   totals.counts.warnings, totals.counts.infos, totals.seconds, fixes);
+    if (!totals.complete || fix_totals.write_failed) return exit_usage;
+    if (args.exit_zero) return exit_clean;
+    // --diff exits 1 when a file would change, as ruff's does; otherwise the remaining findings decide.
+    if (args.diff && fix_totals.files > 0) return exit_findings;
+    return failed ? exit_findings : exit_clean;
 }
 
 // Rejects unknown codes on the command line, with the registry's suggestions.
@@ -274,6 +324,13 @@ std::function<int()> setup_check(CLI::App& app) {
                  "settings check of very large decks");
     app.add_flag("--alone", args->alone,
                  "check each file on its own, not as part of the decks around it that include it");
+    app.add_flag("--fix", args->fix,
+                 "apply the safe fixes the findings carry to the deck and its include files, in place; the "
+                 "summary and exit code then report the findings that remain");
+    app.add_flag("--unsafe-fixes", args->unsafe_fixes,
+                 "with --fix or --diff: apply the unsafe fixes too (a judgement, such as a did-you-mean name)");
+    app.add_flag("--diff", args->diff,
+                 "print the unified diff --fix would make and write nothing (exit 1 when a file would change)");
     return [args] { return run_check(*args); };
 }
 

@@ -4,7 +4,7 @@
 #include <fmt/format.h>
 
 #include "grammar/read_deck.hpp"
-#include "lsp/deck_lookup.hpp"
+#include "engine/position_index.hpp"
 #include "model/deck_check.hpp"
 #include "model/radioss_decoder.hpp"
 
@@ -69,7 +69,7 @@ std::string cards_json(const grammar::RawDeck& deck) {
             return v.spec->cell == grammar::radioss::Cell::Skip || v.spec->cell == grammar::radioss::Cell::Skip20;
         };
         for (const grammar::Block& block : deck.blocks)
-            lsp::walk_radioss_block(deck, block, version, [&](const grammar::CardLine& line, const lsp::RadiossCard& c) {
+            engine::walk_radioss_block(deck, block, version, [&](const grammar::CardLine& line, const engine::RadiossCard& c) {
                 append_card(out, block.keyword, c.title ? "title" : "card", line, c.values, skipped);
                 return true;
             });

@@ -24,6 +24,20 @@ bool iequals(std::string_view a, std::string_view b) {
            std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) { return to_lower(x) == to_lower(y); });
 }
 
+}  // namespace
+
+std::string_view to_string(Fixable f) {
+    switch (f) {
+    case Fixable::Safe: return "safe";
+    case Fixable::Unsafe: return "unsafe";
+    case Fixable::Mixed: return "safe or unsafe";
+    case Fixable::None: break;
+    }
+    return "none";
+}
+
+namespace {
+
 // The rows with their documentation pages; a row without a page keeps an empty doc (a test fails).
 std::vector<RuleInfo> build_table() {
     std::vector<RuleInfo> rows(detail::rule_rows().begin(), detail::rule_rows().end());

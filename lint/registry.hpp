@@ -23,6 +23,17 @@ struct RuleDoc {
     std::string_view after;   // the same fragment fixed
 };
 
+// Whether a rule's findings carry a fix (diag::Fix) that `check --fix` and the editor apply. A fix is
+// offered only where the rule's page says exactly what it does, so a rule that can fix still leaves a
+// finding without one when the mend is not certain (its page says when).
+enum class Fixable {
+    None,    // findings never carry a fix
+    Safe,    // the fixes are safe: the solver then reads the values the author evidently meant
+    Unsafe,  // the fixes are a judgement (a did-you-mean name): applied with --unsafe-fixes only
+    Mixed,   // some findings carry a safe fix, others an unsafe one
+};
+std::string_view to_string(Fixable f);  // "none", "safe", "unsafe", "safe or unsafe"
+
 struct RuleInfo {
     std::string_view code;    // "SPH030"
     std::string_view name;    // "iavis-solid-in-2d" (kebab-case, as in the catalogue)
@@ -31,6 +42,7 @@ struct RuleInfo {
     std::string_view since;   // "0.1.0"
     std::string_view source;  // "CONTROL_SPH R2e", "reader", "SPHBCS", ... as in the catalogue
     std::string_view summary;  // one line: the catalogue's condition in plain words
+    Fixable fix = Fixable::None;  // whether its findings carry fixes (a test compares with the deck tests)
     RuleDoc doc{};            // empty in the rows; the registry fills it from docs/rules/CODE.md
 };
 

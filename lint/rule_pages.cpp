@@ -76,6 +76,25 @@ std::string fenced(std::string_view deck) {
     return out + "```\n";
 }
 
+// The table's word: blank for none, so the rules that can fix stand out.
+std::string_view fix_column(Fixable f) {
+    switch (f) {
+    case Fixable::None: return "";
+    case Fixable::Mixed: return "mixed";
+    default: return to_string(f);
+    }
+}
+
+std::string fix_sentence(Fixable f) {
+    switch (f) {
+    case Fixable::Safe: return "safe (applied by `sphdeck check --fix` where the finding carries one)";
+    case Fixable::Unsafe: return "unsafe (a judgement: applied by `sphdeck check --fix --unsafe-fixes` only)";
+    case Fixable::Mixed: return "safe or unsafe, per finding (`--fix` applies the safe ones)";
+    case Fixable::None: break;
+    }
+    return "none";
+}
+
 }  // namespace
 
 std::string did_you_mean_rule(std::string_view query) {
@@ -99,24 +118,26 @@ std::string rule_text_body(const RuleInfo& rule) {
 std::string render_rule_page(const RuleInfo& rule) {
     std::string out = fmt::format("{} {} ({})\n", rule.code, rule.name, diag::to_string(rule.severity));
     out += wrap(rule.summary, 0) + "\n" + rule_text_body(rule);
-    out += fmt::format("\nSource: {}; since {}. Silence it with `$ sphdeck: disable={}`.\n{}\n", rule.source,
-                       rule.since, rule.code, rule_url(rule));
+    out += fmt::format("\nFix: {}.\nSource: {}; since {}. Silence it with `$ sphdeck: disable={}`.\n{}\n",
+                       fix_sentence(rule.fix), rule.source, rule.since, rule.code, rule_url(rule));
     return out;
 }
 
 std::string render_rules_table() {
     std::size_t name_width = 4;
     for (const RuleInfo& rule : all_rules()) name_width = std::max(name_width, rule.name.size());
-    std::string out = fmt::format("{:<7} {:<{}} {:<8} {}\n", "CODE", "NAME", name_width, "SEVERITY", "SUMMARY");
+    std::string out =
+        fmt::format("{:<7} {:<{}} {:<8} {:<6} {}\n", "CODE", "NAME", name_width, "SEVERITY", "FIX", "SUMMARY");
     for (const RuleInfo& rule : all_rules())
-        out += fmt::format("{:<7} {:<{}} {:<8} {}\n", rule.code, rule.name, name_width,
-                           diag::to_string(rule.severity), rule.summary);
+        out += fmt::format("{:<7} {:<{}} {:<8} {:<6} {}\n", rule.code, rule.name, name_width,
+                           diag::to_string(rule.severity), fix_column(rule.fix), rule.summary);
     return out;
 }
 
 std::string rule_markdown_body(const RuleInfo& rule) {
-    std::string out = fmt::format("**Severity:** {} · **Source:** {} · **Since:** {}\n\n{}{}\n",
-                                  diag::to_string(rule.severity), md(rule.source), rule.since, md(rule.summary),
+    std::string out = fmt::format("**Severity:** {} · **Fix:** {} · **Source:** {} · **Since:** {}\n\n{}{}\n",
+                                  diag::to_string(rule.severity), to_string(rule.fix), md(rule.source), rule.since,
+                                  md(rule.summary),
                                   rule.summary.ends_with('.') ? "" : ".");
     out += "\n### What it does\n\n" + md(rule.doc.what) + "\n";
     out += "\n### Why it matters\n\n" + md(rule.doc.why) + "\n";
@@ -135,10 +156,12 @@ std::string render_rules_markdown() {
         "Every rule `sphdeck check` reports, with its code, name and default severity. `sphdeck rule CODE`\n"
         "prints one section in the terminal. Silence a rule in a deck with `$ sphdeck: disable=CODE -- reason`\n"
         "on the comment line before the keyword or line, or for a whole project in `sphdeck.toml`.\n\n"
-        "| code | name | severity | summary |\n|---|---|---|---|\n";
+        "The fix column says whether findings carry a fix that `sphdeck check --fix` applies (safe) or that\n"
+        "`--unsafe-fixes` adds (unsafe, a judgement); the editor offers the same fixes as code actions.\n\n"
+        "| code | name | severity | fix | summary |\n|---|---|---|---|---|\n";
     for (const RuleInfo& rule : all_rules())
-        out += fmt::format("| [{}](#{}) | {} | {} | {} |\n", rule.code, lower(rule.code), rule.name,
-                           diag::to_string(rule.severity), md(rule.summary, true));
+        out += fmt::format("| [{}](#{}) | {} | {} | {} | {} |\n", rule.code, lower(rule.code), rule.name,
+                           diag::to_string(rule.severity), fix_column(rule.fix), md(rule.summary, true));
     for (const RuleInfo& rule : all_rules())
         out += fmt::format("\n<a id=\"{}\"></a>\n\n## {} {}\n\n", lower(rule.code), rule.code, rule.name) +
                rule_markdown_body(rule);

@@ -9,7 +9,7 @@
 
 #include "grammar/raw_deck.hpp"
 #include "lsp/checked_deck.hpp"
-#include "lsp/deck_lookup.hpp"
+#include "engine/position_index.hpp"
 
 namespace sphdeck::lsp {
 
@@ -27,8 +27,8 @@ bool is_bulk_block(const grammar::Block& block, bool radioss);
 struct DecodedLine {
     const grammar::Block* block = nullptr;
     const grammar::CardLine* line = nullptr;
-    const DynaCard* dyna = nullptr;
-    const RadiossCard* radioss = nullptr;  // with `title` set on a Radioss title line
+    const engine::DynaCard* dyna = nullptr;
+    const engine::RadiossCard* radioss = nullptr;  // with `title` set on a Radioss title line
 };
 using DecodedLineVisitor = std::function<void(const DecodedLine&)>;
 

@@ -9,13 +9,15 @@
 #include "grammar/keywords/generated_layouts.hpp"
 #include "grammar/radioss/generated_layouts.hpp"
 #include "grammar/parameters.hpp"
-#include "lsp/deck_ids.hpp"
-#include "lsp/deck_lookup.hpp"
+#include "engine/id_index.hpp"
+#include "engine/position_index.hpp"
 #include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
 #include "model/radioss_decoder.hpp"
 
 namespace sphdeck::lsp {
+
+using namespace engine;  // the position index: engine/position_index.hpp, engine/id_index.hpp
 namespace {
 
 namespace rad = grammar::radioss;
@@ -106,10 +108,10 @@ nlohmann::json radioss_keyword_items(std::string_view typed, const Edit& edit) {
 // The ids of `kind` the deck defines, with their titles.
 void id_items(const CheckedDeck& deck, const std::string& kind, const Edit& edit, nlohmann::json& items) {
     std::set<std::string> seen;
-    for (const auto& use : definitions_of(deck, kind)) {
+    for (const auto& use : definitions_of(deck.result, kind)) {
         if (!seen.insert(use.id).second) continue;
         if (items.size() >= kMaxItems) break;
-        items.push_back(item(display_text(use.id), kReference, describe(deck, use), edit));
+        items.push_back(item(display_text(use.id), kReference, display_text(describe(deck.result, use)), edit));
     }
 }
 

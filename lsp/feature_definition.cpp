@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cctype>
 
-#include "lsp/deck_ids.hpp"
-#include "lsp/deck_lookup.hpp"
+#include "engine/id_index.hpp"
+#include "engine/position_index.hpp"
 #include "lsp/features.hpp"
 #include "lsp/uri.hpp"
 
 namespace sphdeck::lsp {
+
+using namespace engine;  // the position index: engine/position_index.hpp, engine/id_index.hpp
 namespace {
 
 // Particle lines listed as references of a part at most: a 1M-particle part is no list to read.
@@ -42,10 +44,10 @@ nlohmann::json definition(const CheckedDeck& deck, grammar::FileId file, TextPos
         return location(sources, found.parameter->span);
     }
     if (auto own = parameter_definition_at(raw, file, at.line, at.column)) return location(sources, own->span);
-    auto use = id_at(deck, file, at.line, at.column);
+    auto use = id_at(deck.result, file, at.line, at.column);
     if (!use) return nullptr;
     if (use->defines) return location(sources, use->span);
-    const auto definitions = find_definitions(deck, use->kind, use->id);
+    const auto definitions = find_definitions(deck.result, use->kind, use->id);
     if (definitions.empty()) return nullptr;
     if (definitions.size() == 1) return location(sources, definitions.front().span);
     nlohmann::json out = nlohmann::json::array();
@@ -77,15 +79,15 @@ nlohmann::json references(const CheckedDeck& deck, grammar::FileId file, TextPos
                 if (same_name(p.name, reference->name)) out.push_back(location(sources, p.span));
         return out;
     }
-    auto use = id_at(deck, file, at.line, at.column);
+    auto use = id_at(deck.result, file, at.line, at.column);
     if (!use) return out;
-    for (const auto& u : collect_ids(deck))
+    for (const auto& u : collect_ids(deck.result))
         if (u.kind == use->kind && u.id == use->id && (include_declaration || !u.defines))
             out.push_back(location(sources, u.span));
     // Nodes are defined in the bulk *NODE blocks, which the walk of the deck leaves out.
     if (include_declaration && use->kind == "NODE")
-        for (const auto& d : find_definitions(deck, use->kind, use->id)) out.push_back(location(sources, d.span));
-    for (const auto& span : particle_spans(deck, use->kind, use->id, kMaxParticleReferences))
+        for (const auto& d : find_definitions(deck.result, use->kind, use->id)) out.push_back(location(sources, d.span));
+    for (const auto& span : particle_spans(deck.result, use->kind, use->id, kMaxParticleReferences))
         out.push_back(location(sources, span));
     return out;
 }

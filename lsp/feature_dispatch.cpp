@@ -71,7 +71,7 @@ nlohmann::json feature_capabilities() {
     for (const auto& row : kFeatures) capabilities[std::string(row.capability)] = true;
     // Completion is asked for on these characters too (a keyword after '*', a value after ',').
     capabilities["completionProvider"] = {{"triggerCharacters", {"*", ","}}, {"resolveProvider", false}};
-    capabilities["codeActionProvider"] = {{"codeActionKinds", {"quickfix"}}};
+    capabilities["codeActionProvider"] = {{"codeActionKinds", {"quickfix", "source.fixAll.sphdeck"}}};
     // Typing a card line: blanks align a value, commas separate free-format ones.
     capabilities["signatureHelpProvider"] = {{"triggerCharacters", {" ", ","}}};
     capabilities["semanticTokensProvider"] = {

@@ -1,10 +1,12 @@
 // textDocument/foldingRange: one range per keyword block, and one per run of comment lines.
 #include <cstring>
 
-#include "lsp/deck_lookup.hpp"
+#include "engine/position_index.hpp"
 #include "lsp/features.hpp"
 
 namespace sphdeck::lsp {
+
+using namespace engine;  // the position index: engine/position_index.hpp, engine/id_index.hpp
 namespace {
 
 // A comment line of the deck's format: `$` in LS-DYNA decks; `#` (not `#include`) or `$` in Radioss.

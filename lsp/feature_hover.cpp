@@ -9,14 +9,16 @@
 #include "grammar/keywords/schema.hpp"
 #include "grammar/number_cast.hpp"
 #include "grammar/value.hpp"
-#include "lsp/deck_ids.hpp"
-#include "lsp/deck_lookup.hpp"
+#include "engine/id_index.hpp"
+#include "engine/position_index.hpp"
 #include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
-#include "lsp/field_at_column.hpp"
+#include "engine/field_at_column.hpp"
 #include "model/radioss_decoder.hpp"
 
 namespace sphdeck::lsp {
+
+using namespace engine;  // the position index: engine/position_index.hpp, engine/id_index.hpp
 namespace {
 
 using keywords::FieldSpec;
@@ -87,9 +89,9 @@ std::string allowed_text(const FieldSpec& f) {
 std::string id_text_of(const CheckedDeck& deck, const std::optional<IdRole>& role, const std::string& id) {
     if (!role || id.empty()) return {};
     if (role->defines) return fmt::format("\n\ndefines {} {}", role->kind, id);
-    const auto definitions = find_definitions(deck, role->kind, id);
+    const auto definitions = find_definitions(deck.result, role->kind, id);
     if (definitions.empty()) return fmt::format("\n\nnames {} {}, which the deck does not define", role->kind, id);
-    return fmt::format("\n\nnames {} {}: `{}`", role->kind, id, describe(deck, definitions.front()));
+    return fmt::format("\n\nnames {} {}: `{}`", role->kind, id, display_text(describe(deck.result, definitions.front())));
 }
 
 // The cards of a keyword and their fields, one line a card ("Card 1: NCBS, BOXID, DT..."), up to
@@ -173,7 +175,7 @@ nlohmann::json radioss_hover(const CheckedDeck& deck, const grammar::Block& bloc
             if (!spec->decoded) text += "\n\n(known, kept as is: its cards are not read)";
         }
         grammar::Span span = block.span;
-        if (auto id = id_at(deck, block.span.file, line, column)) {
+        if (auto id = id_at(deck.result, block.span.file, line, column)) {
             text += id_text_of(deck, IdRole{id->kind, id->defines}, id->id);
             span = id->span;
         }

@@ -5,13 +5,14 @@
 #include <string>
 
 #include "grammar/fields.hpp"
-#include "lsp/deck_lookup.hpp"
+#include "engine/position_index.hpp"
 #include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
-#include "lsp/field_at_column.hpp"
+#include "engine/field_at_column.hpp"
 #include "model/radioss_decoder.hpp"
 
 namespace sphdeck::lsp {
+using namespace engine;  // the position index: engine/position_index.hpp, engine/id_index.hpp
 namespace {
 
 namespace rad = grammar::radioss;

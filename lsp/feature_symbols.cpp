@@ -3,12 +3,14 @@
 #include <fmt/format.h>
 #include <map>
 
-#include "lsp/deck_lookup.hpp"
+#include "engine/position_index.hpp"
 #include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
 #include "model/radioss_decoder.hpp"
 
 namespace sphdeck::lsp {
+
+using namespace engine;  // the position index: engine/position_index.hpp, engine/id_index.hpp
 namespace {
 
 // LSP SymbolKind values.

@@ -5,9 +5,10 @@
 #include <optional>
 #include <unordered_map>
 
-#include "lsp/deck_ids.hpp"
+#include "engine/id_index.hpp"
 
 namespace sphdeck::lsp {
+using namespace engine;  // the position index: engine/position_index.hpp, engine/id_index.hpp
 namespace {
 
 namespace rad = grammar::radioss;

@@ -8,6 +8,8 @@
 #include <optional>
 
 #include "grammar/number_cast.hpp"
+#include "grammar/realign.hpp"
+#include "grammar/tab_expansion.hpp"
 #include "grammar/shifted_line.hpp"
 #include "grammar/value.hpp"
 #include "model/decimal_comma.hpp"
@@ -97,6 +99,7 @@ const CardDecoder::Layout& CardDecoder::layout_of(const keywords::CardSpec& card
 
 void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& line, const keywords::CardSpec& card,
                          std::vector<FieldValue>& values) {
+    const std::size_t first_finding = out_.size();
     const Layout& layout = layout_of(card, block.format);
     const auto& positions_ = layout.positions;
     std::string_view text = deck_.text(line);
@@ -114,6 +117,12 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
         report("DK016", diag::Severity::Warning, "tab in a fixed-format card: columns become ambiguous",
                grammar::Span{line.file, line.line, static_cast<std::uint32_t>(tab + 1),
                              static_cast<std::uint32_t>(tab + 2)});
+        if (auto expanded = grammar::expand_tabs_if_certain(text, positions_))
+            out_.back().fixes.push_back({"replace the tabs by the blanks an editor shows (tab stops every 8 columns)",
+                                         true,
+                                         {{grammar::Span{line.file, line.line, 1,
+                                                         static_cast<std::uint32_t>(text.size() + 1)},
+                                           std::move(*expanded)}}});
     }
     // A title or heading longer than its 80 (70) columns is cut in the solver's output and loses
     // nothing else: no value can slip out of a card that holds one text field. A file name (*INCLUDE)
@@ -177,6 +186,24 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
         }
     }
     if (cut.free_format) check_decimal_comma(card, line, values);
+    if (out_.size() > first_finding) offer_realign(card, block.format, line, first_finding);
+}
+
+// A value that strays over its field's boundary is cut into text that is no number (DK002, DK003):
+// the line with every value moved into the field holding most of its characters is their safe fix,
+// offered only when that is certain (grammar/realign.hpp).
+void CardDecoder::offer_realign(const keywords::CardSpec& card, grammar::CardFormat format,
+                                const grammar::CardLine& line, std::size_t first_finding) {
+    std::optional<std::optional<std::string>> realigned;
+    for (std::size_t i = first_finding; i < out_.size(); ++i) {
+        diag::Diagnostic& d = out_[i];
+        if ((d.code != "DK002" && d.code != "DK003") || d.span.line != line.line || d.span.file != line.file) continue;
+        if (!realigned) realigned = grammar::realign_card(line_text_, card, format);
+        if (!*realigned) return;
+        const auto length = static_cast<std::uint32_t>(line_text_.size());
+        d.fixes.push_back({"move the values of the line into their fields", true,
+                           {{grammar::Span{line.file, line.line, 1, length + 1}, **realigned}}});
+    }
 }
 
 // `     0,002` for `     0.002`: a comma makes the whole line free format (LS-DYNA reads ENDTIM 0 and

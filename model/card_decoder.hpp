@@ -70,6 +70,8 @@ private:
                        const grammar::Field& field, std::uint32_t fixed_width, FieldValue& v);
     void check_decimal_comma(const keywords::CardSpec& card, const grammar::CardLine& line,
                              const std::vector<FieldValue>& values);
+    void offer_realign(const keywords::CardSpec& card, grammar::CardFormat format, const grammar::CardLine& line,
+                       std::size_t first_finding);
     void check_text(const grammar::Block& block, const keywords::FieldSpec& spec, FieldValue& v);
     void check_range(const keywords::FieldSpec& spec, const FieldValue& v);
     void report(const char* code, diag::Severity s, std::string message, grammar::Span span);

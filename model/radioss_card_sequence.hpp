@@ -3,7 +3,7 @@
 // group are no records; a LIST card of the group (CFG `LIST("%20lg", V, nvarsph)`) takes as many
 // lines as its count field on the group's first card says (none for 0); a card read once with a
 // condition is passed over when the cards before it say it is absent. One walk for the reading
-// (model/radioss_decoder.cpp) and the editor's lookups (lsp/deck_lookup.cpp).
+// (model/radioss_decoder.cpp) and the editor's lookups (engine/position_index.cpp).
 #pragma once
 
 #include <cstddef>

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
@@ -81,13 +82,25 @@ diag::Diagnostic straddle_finding(const grammar::CardLine& line, std::string_vie
     else
         where = fmt::format("'{}' is read as the start of {} ({})", lost, card.fields[s.cell + 1].name,
                             cell_columns(positions[s.cell + 1]));
-    return diag::Diagnostic{
+    diag::Diagnostic d{
         "RAD030", diag::Severity::Error,
         fmt::format("'{}' straddles the end of cell {} ({}): the starter reads {} as '{}' and {}", whole, here.name,
                     cell_columns(positions[s.cell]), here.name, kept, where),
         grammar::Span{line.file, line.line, static_cast<std::uint32_t>(s.begin + 1),
                       static_cast<std::uint32_t>(s.end + 1)},
         {}};
+    // Safe fix: the number moved left by the columns it overruns, to end at its cell's end, when blanks
+    // of its own cell stand before it: it is then read whole in its cell and nothing else moves.
+    const std::size_t overrun = s.end - s.boundary;
+    if (s.begin >= positions[s.cell].start + overrun &&
+        text.substr(s.begin - overrun, overrun).find_first_not_of(' ') == std::string_view::npos)
+        d.fixes.push_back({fmt::format("move '{}' {} column{} left, to end at column {}, the end of {}", whole,
+                                       overrun, overrun == 1 ? "" : "s", s.boundary, here.name),
+                           true,
+                           {{grammar::Span{line.file, line.line, static_cast<std::uint32_t>(s.begin - overrun + 1),
+                                           static_cast<std::uint32_t>(s.end + 1)},
+                             std::string(whole) + std::string(overrun, ' ')}}});
+    return d;
 }
 
 bool within(const diag::Diagnostic& d, const grammar::CardLine& line, std::size_t begin, std::size_t end) {
@@ -108,6 +121,30 @@ void fold_and_add(std::vector<diag::Diagnostic>& out, std::size_t from, diag::Di
     out.push_back(std::move(cause));
 }
 
+// One value typed across a cell boundary while every other value of the line ends at its cell's end
+// (right-aligned, as written): the line is not shifted, only that value moved (RAD030), whatever a
+// shift of the whole line would also explain.
+bool one_value_moved(std::string_view text, const std::vector<Straddle>& glued,
+                     std::span<const grammar::FixedField> positions) {
+    if (glued.size() != 1) return false;
+    std::size_t others = 0;
+    for (std::size_t i = 0; i < text.size();) {
+        if (blank(text[i])) {
+            ++i;
+            continue;
+        }
+        const std::size_t begin = i;
+        while (i < text.size() && !blank(text[i])) ++i;
+        if (begin == glued[0].begin) continue;
+        const bool at_cell_end = std::any_of(positions.begin(), positions.end(), [&](const grammar::FixedField& f) {
+            return std::size_t{f.start} + f.width == i && begin >= f.start;
+        });
+        if (!at_cell_end) return false;
+        ++others;
+    }
+    return others > 0;
+}
+
 }  // namespace
 
 void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
@@ -126,7 +163,10 @@ void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
         const std::size_t limit = std::size_t{positions.back().start} + positions.back().width + 4;
         if (probe.size() > limit) probe = probe.substr(0, limit);
     }
-    auto shift = grammar::find_shift(probe, header, positions, types);
+    // Without a header, one value typed across a boundary among right-aligned ones is RAD030, not a shift.
+    std::optional<grammar::LineShift> shift;
+    if (!header.empty() || !one_value_moved(text, glued, positions))
+        shift = grammar::find_shift(probe, header, positions, types);
     if (shift && probe.size() != text.size()) {
         // The fix moves the whole line, its tail included.
         const int n = shift->columns;

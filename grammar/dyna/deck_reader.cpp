@@ -136,8 +136,12 @@ void DeckReader::on_keyword(const char* begin, const char* end, const KeywordLin
     block.parameter_epoch = deck_.parameters.epoch();
     ++deck_.stats.keywords;
 
-    if (star > 0)
+    if (star > 0) {
         report("DK020", diag::Severity::Warning, "keyword line does not start in column 1", block.span);
+        // Safe: the line is read as this keyword already; in column 1 every reader reads it so.
+        deck_.diagnostics.back().fixes.push_back(
+            {"start the keyword line in column 1", true, {{span_of(begin, end, 0, star), ""}}});
+    }
     if (parts.name.empty())
         report("DK001", diag::Severity::Error,
                "keyword line without a keyword name: LS-DYNA reads a '*' in column 1 as a keyword; write '$' for a "
@@ -146,6 +150,10 @@ void DeckReader::on_keyword(const char* begin, const char* end, const KeywordLin
     for (char c : parts.name) {
         if (std::islower(static_cast<unsigned char>(c))) {
             report("DK021", diag::Severity::Info, "keyword '" + block.keyword + "' written in lower case", block.span);
+            // Safe: keyword names are read in upper case (block.keyword); the name only, not its arguments.
+            deck_.diagnostics.back().fixes.push_back(
+                {"write the keyword name in upper case", true,
+                 {{span_of(begin, end, star + 1, star + 1 + parts.name.size()), block.keyword.substr(1)}}});
             break;
         }
     }

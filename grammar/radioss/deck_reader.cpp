@@ -93,6 +93,9 @@ void DeckReader::on_header(const char* begin, const char* end) {
         report("DK020", diag::Severity::Warning,
                "header line does not start in column 1; OpenRadioss reads it as data unless headers may be indented",
                block.span);
+    if (indent > 0)  // safe: sphdeck reads the line as this header; in column 1 the starter does too
+        deck_.diagnostics.back().fixes.push_back(
+            {"start the header line in column 1", true, {{Span{f.id, f.line, 1, static_cast<std::uint32_t>(indent + 1)}, ""}}});
     deck_.blocks.push_back(std::move(block));
     if (deck_.blocks.back().keyword == "/END") {
         ended_ = true;

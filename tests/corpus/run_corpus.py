@@ -130,6 +130,8 @@ def main():
     parser.add_argument("--verbose", action="store_true", help="list every deck's findings")
     parser.add_argument("--no-format-check", action="store_true",
                         help="skip the proof that `sphdeck format` changes no value (tests/corpus/format_check.py)")
+    parser.add_argument("--no-fix-check", action="store_true",
+                        help="leave out the check of `check --fix` on the decks (tests/corpus/fix_check.py)")
     parser.add_argument("--skip-missing", action="store_true",
                         help="exit 77 (skipped, for ctest) when the corpus folder is not there")
     args = parser.parse_args()
@@ -204,6 +206,9 @@ def main():
         for line in format_summary:
             print(line)
         print(f"  format check: {time.monotonic() - format_start:.1f} s")
+    if not args.no_fix_check:
+        import fix_check  # tests/corpus/fix_check.py: no value changes except those a fix names
+        failures += fix_check.check_fixes(os.path.abspath(args.sphdeck), corpus, decks, args.jobs)
     for failure in failures:
         print("FAIL " + failure)
     passed = 0 if failures else 1

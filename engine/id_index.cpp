@@ -1,4 +1,4 @@
-#include "lsp/deck_ids.hpp"
+#include "engine/id_index.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,12 +7,11 @@
 #include <fmt/format.h>
 
 #include "grammar/value.hpp"
-#include "lsp/deck_lookup.hpp"
-#include "lsp/display_text.hpp"
+#include "engine/position_index.hpp"
 #include "model/model.hpp"
 #include "model/radioss_decoder.hpp"
 
-namespace sphdeck::lsp {
+namespace sphdeck::engine {
 namespace {
 
 namespace rad = grammar::radioss;
@@ -125,8 +124,8 @@ std::string field_title(std::string_view name, std::string_view text) {
     return name == "TITLE" || name == "HEADING" ? std::string(grammar::trim_blanks(text)) : std::string();
 }
 
-void collect_dyna(const CheckedDeck& deck, const grammar::Block& block, std::vector<IdUse>& out) {
-    const auto& raw = deck.result.deck;
+void collect_dyna(const CheckResult& deck, const grammar::Block& block, std::vector<IdUse>& out) {
+    const auto& raw = deck.deck;
     std::string title;
     walk_dyna_block(raw, block, [&](const DynaCard& card) {
         for (const auto& v : card.values) {
@@ -142,8 +141,8 @@ void collect_dyna(const CheckedDeck& deck, const grammar::Block& block, std::vec
     });
 }
 
-void collect_radioss(const CheckedDeck& deck, const grammar::Block& block, int version, std::vector<IdUse>& out) {
-    const auto& raw = deck.result.deck;
+void collect_radioss(const CheckResult& deck, const grammar::Block& block, int version, std::vector<IdUse>& out) {
+    const auto& raw = deck.deck;
     auto header = header_id(block);
     std::string title;
     if (header) {
@@ -224,10 +223,10 @@ std::string id_text(const model::RadiossValue& v) {
     return std::to_string(static_cast<long long>(v.number));
 }
 
-std::vector<IdUse> collect_ids(const CheckedDeck& deck) {
+std::vector<IdUse> collect_ids(const CheckResult& deck) {
     std::vector<IdUse> out;
-    const auto& raw = deck.result.deck;
-    const bool radioss = deck.result.model.radioss.has_value();
+    const auto& raw = deck.deck;
+    const bool radioss = deck.model.radioss.has_value();
     const int version = radioss ? model::radioss_version(raw) : 0;
     for (const grammar::Block& block : raw.blocks) {
         if (radioss) {
@@ -239,11 +238,11 @@ std::vector<IdUse> collect_ids(const CheckedDeck& deck) {
     return out;
 }
 
-std::optional<IdUse> id_at(const CheckedDeck& deck, grammar::FileId file, std::uint32_t line, std::uint32_t column) {
-    const auto& raw = deck.result.deck;
+std::optional<IdUse> id_at(const CheckResult& deck, grammar::FileId file, std::uint32_t line, std::uint32_t column) {
+    const auto& raw = deck.deck;
     const grammar::Block* block = block_at(raw, file, line);
     if (!block) return std::nullopt;
-    const bool radioss = deck.result.model.radioss.has_value();
+    const bool radioss = deck.model.radioss.has_value();
     if (radioss && line == block->span.line) {
         auto header = header_id(*block);
         if (!header || column < header->span.column || column >= header->span.end_column) return std::nullopt;
@@ -304,10 +303,10 @@ std::optional<IdUse> node_on_line(const grammar::RawDeck& raw, std::uint32_t ind
 // Where node `id` is defined. The model keeps no line per node (decks of 10^7 nodes), but nodes
 // are stored in the order of the *NODE lines: the node's position there names its line unless an
 // unreadable line was skipped before it; then the *NODE blocks are scanned.
-std::vector<IdUse> node_definitions(const CheckedDeck& deck, long long id) {
+std::vector<IdUse> node_definitions(const CheckResult& deck, long long id) {
     std::vector<IdUse> out;
-    const auto& raw = deck.result.deck;
-    if (deck.result.model.radioss) {
+    const auto& raw = deck.deck;
+    if (deck.model.radioss) {
         const auto lines = model::radioss_node_lines(raw, {id});
         const auto found = lines.find(id);
         if (found == lines.end()) return out;
@@ -317,7 +316,7 @@ std::vector<IdUse> node_definitions(const CheckedDeck& deck, long long id) {
         }
         return out;
     }
-    const auto& ids = deck.result.model.nodes.id;
+    const auto& ids = deck.model.nodes.id;
     const auto at = std::find(ids.begin(), ids.end(), id);
     if (at == ids.end()) return out;
     std::size_t position = static_cast<std::size_t>(at - ids.begin());
@@ -342,7 +341,7 @@ std::vector<IdUse> node_definitions(const CheckedDeck& deck, long long id) {
 }
 }  // namespace
 
-std::vector<IdUse> find_definitions(const CheckedDeck& deck, const std::string& kind, const std::string& id) {
+std::vector<IdUse> find_definitions(const CheckResult& deck, const std::string& kind, const std::string& id) {
     if (kind == "NODE") {
         auto node = integer_id(id);
         return node ? node_definitions(deck, *node) : std::vector<IdUse>{};
@@ -350,11 +349,11 @@ std::vector<IdUse> find_definitions(const CheckedDeck& deck, const std::string& 
     return definitions_of(deck, kind, &id);
 }
 
-std::vector<IdUse> definitions_of(const CheckedDeck& deck, const std::string& kind, const std::string* id) {
+std::vector<IdUse> definitions_of(const CheckResult& deck, const std::string& kind, const std::string* id) {
     std::vector<IdUse> out;
     if (kind == "NODE") return out;  // millions: never listed
-    const auto& raw = deck.result.deck;
-    const bool radioss = deck.result.model.radioss.has_value();
+    const auto& raw = deck.deck;
+    const bool radioss = deck.model.radioss.has_value();
     const int version = radioss ? model::radioss_version(raw) : 0;
     for (const grammar::Block& block : raw.blocks) {
         std::vector<IdUse> found;
@@ -375,12 +374,12 @@ std::vector<IdUse> definitions_of(const CheckedDeck& deck, const std::string& ki
     return out;
 }
 
-std::vector<grammar::Span> particle_spans(const CheckedDeck& deck, const std::string& kind, const std::string& id,
+std::vector<grammar::Span> particle_spans(const CheckResult& deck, const std::string& kind, const std::string& id,
                                           std::size_t limit) {
     std::vector<grammar::Span> out;
-    const auto& raw = deck.result.deck;
-    const auto& particles = deck.result.model.particles;
-    if (deck.result.model.radioss || (kind != "PART" && kind != "NODE")) return out;  // /SPHCEL: part in the header
+    const auto& raw = deck.deck;
+    const auto& particles = deck.model.particles;
+    if (deck.model.radioss || (kind != "PART" && kind != "NODE")) return out;  // /SPHCEL: part in the header
     const auto wanted = integer_id(id);
     if (!wanted) return out;
     const bool part = kind == "PART";
@@ -399,10 +398,10 @@ std::vector<grammar::Span> particle_spans(const CheckedDeck& deck, const std::st
     return out;
 }
 
-std::string describe(const CheckedDeck& deck, const IdUse& d) {
-    const auto& sources = deck.result.deck.sources;
+std::string describe(const CheckResult& deck, const IdUse& d) {
+    const auto& sources = deck.deck.sources;
     if (d.kind == "NODE") {
-        const auto& nodes = deck.result.model.nodes;
+        const auto& nodes = deck.model.nodes;
         std::string text = fmt::format("node {}", d.id);
         if (auto n = integer_id(d.id)) {
             const auto at = std::find(nodes.id.begin(), nodes.id.end(), *n);
@@ -411,7 +410,7 @@ std::string describe(const CheckedDeck& deck, const IdUse& d) {
                 text += fmt::format(" at ({:g}, {:g}, {:g})", nodes.x[i], nodes.y[i], nodes.z[i]);
             }
         }
-        return display_text(fmt::format("{}, line {}", text, d.span.line));
+        return fmt::format("{}, line {}", text, d.span.line);
     }
     std::string keyword = d.block ? d.block->keyword : d.kind;
     if (d.block && !d.block->keyword.empty() && d.block->keyword[0] == '/') {
@@ -423,7 +422,7 @@ std::string describe(const CheckedDeck& deck, const IdUse& d) {
     text += fmt::format(", line {}", d.span.line);
     if (d.span.file != 0 && d.span.file < sources.size())
         text += fmt::format(" of {}", sources.file(d.span.file).display_name);
-    return display_text(text);
+    return text;
 }
 
-}  // namespace sphdeck::lsp
+}  // namespace sphdeck::engine

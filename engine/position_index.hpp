@@ -1,6 +1,6 @@
-// "What is under this position": the block of a file line, the card line of a block, and the card
-// spec and decoded fields of that line, for LS-DYNA and Radioss decks. The features (hover,
-// completion, definition) ask here; nothing is indexed in advance, so a request costs a walk of
+// The position index, "what is under this position": the block of a file line, the card line of a
+// block, and the card spec and decoded fields of that line, for LS-DYNA and Radioss decks. The editor's
+// features (hover, completion, definition, code actions) ask here (engine/id_index.hpp for ids); nothing is indexed in advance, so a request costs a walk of
 // one block (a repeated card such as *NODE or *ELEMENT_SPH is found without walking its lines).
 #pragma once
 
@@ -16,7 +16,7 @@
 #include "model/card_decoder.hpp"
 #include "model/radioss_card_decoder.hpp"
 
-namespace sphdeck::lsp {
+namespace sphdeck::engine {
 
 // The block of `file` that `line` (1-based) stands in: the last block of the file whose keyword
 // line is at or before `line`, when no other block of the file starts between them. nullptr
@@ -112,4 +112,4 @@ std::optional<ParameterReference> parameter_definition_at(const grammar::RawDeck
 // Every reference in a line's text (for references of a parameter).
 std::vector<ParameterReference> parameter_references(std::string_view text, grammar::FileId file, std::uint32_t line);
 
-}  // namespace sphdeck::lsp
+}  // namespace sphdeck::engine

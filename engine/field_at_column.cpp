@@ -1,10 +1,10 @@
-#include "lsp/field_at_column.hpp"
+#include "engine/field_at_column.hpp"
 
 #include <algorithm>
 
 #include "grammar/fields.hpp"
 
-namespace sphdeck::lsp {
+namespace sphdeck::engine {
 namespace {
 
 // Index of the comma-separated item holding 0-based byte `byte` of a free-format line.
@@ -67,4 +67,4 @@ std::optional<std::size_t> radioss_field_at_column(const RadiossCard& card, std:
     return std::nullopt;
 }
 
-}  // namespace sphdeck::lsp
+}  // namespace sphdeck::engine

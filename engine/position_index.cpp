@@ -1,4 +1,4 @@
-#include "lsp/deck_lookup.hpp"
+#include "engine/position_index.hpp"
 
 #include "grammar/radioss/keyword_lookup.hpp"
 
@@ -10,7 +10,7 @@
 #include "grammar/radioss/reader.hpp"
 #include "model/radioss_card_sequence.hpp"
 
-namespace sphdeck::lsp {
+namespace sphdeck::engine {
 namespace {
 
 using keywords::CardRepeat;
@@ -323,4 +323,4 @@ std::optional<ParameterReference> parameter_reference_at(const grammar::SourceMa
     return std::nullopt;
 }
 
-}  // namespace sphdeck::lsp
+}  // namespace sphdeck::engine

@@ -14,11 +14,11 @@
 #include "grammar/keywords/schema.hpp"
 #include "grammar/radioss/cards.hpp"
 #include "grammar/raw_deck.hpp"
-#include "lsp/checked_deck.hpp"
+#include "engine/check.hpp"
 #include "model/card_decoder.hpp"
 #include "model/radioss_card_decoder.hpp"
 
-namespace sphdeck::lsp {
+namespace sphdeck::engine {
 
 struct IdRole {
     std::string kind;
@@ -48,24 +48,25 @@ struct IdUse {
 
 // Every id use of the deck outside its bulk blocks (*NODE, *ELEMENT_SPH, /NODE, /SPHCEL):
 // one walk of the other blocks, decoding their cards again.
-std::vector<IdUse> collect_ids(const CheckedDeck& deck);
+std::vector<IdUse> collect_ids(const CheckResult& deck);
 
 // The id use under a position (1-based line, byte column) of `file`, bulk lines included.
-std::optional<IdUse> id_at(const CheckedDeck& deck, grammar::FileId file, std::uint32_t line, std::uint32_t column);
+std::optional<IdUse> id_at(const CheckResult& deck, grammar::FileId file, std::uint32_t line, std::uint32_t column);
 
 // The definitions of id `id` of `kind` (usually one; a duplicated id gives more): a walk of the
 // blocks of the defining families only (LS-DYNA), or of the block headers (Radioss).
-std::vector<IdUse> find_definitions(const CheckedDeck& deck, const std::string& kind, const std::string& id);
+std::vector<IdUse> find_definitions(const CheckResult& deck, const std::string& kind, const std::string& id);
 // Every definition of `kind` (of id `*id` when given), the same walk; none for NODE.
-std::vector<IdUse> definitions_of(const CheckedDeck& deck, const std::string& kind, const std::string* id = nullptr);
+std::vector<IdUse> definitions_of(const CheckResult& deck, const std::string& kind, const std::string* id = nullptr);
 
 // The *ELEMENT_SPH lines that name part (kind PART) or node (NODE) `id`, as PID or NID field
 // spans: a scan of the particle arrays, decoding only the lines that match; at most `limit`.
 // Empty for other kinds and for Radioss decks (/SPHCEL names its part in the header).
-std::vector<grammar::Span> particle_spans(const CheckedDeck& deck, const std::string& kind, const std::string& id,
+std::vector<grammar::Span> particle_spans(const CheckResult& deck, const std::string& kind, const std::string& id,
                                           std::size_t limit);
 
-// A short description of a definition: "*SECTION_SPH 3, line 40" (+ its title when known).
-std::string describe(const CheckedDeck& deck, const IdUse& definition);
+// A short description of a definition: "*SECTION_SPH 3, line 40" (+ its title when known), in the
+// deck's bytes (an editor makes it valid UTF-8).
+std::string describe(const CheckResult& deck, const IdUse& definition);
 
-}  // namespace sphdeck::lsp
+}  // namespace sphdeck::engine

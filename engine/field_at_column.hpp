@@ -1,6 +1,6 @@
 // The field of a decoded card line under a column, blank part included: a right-aligned value
 // ("        12") answers on its leading blanks too, and a free-format line answers between its
-// commas. Hover and inlay hints ask here (lsp/deck_lookup.* keeps the older, span-first lookup).
+// commas. Hover and inlay hints ask here (position_index.* keeps the older, span-first lookup).
 #pragma once
 
 #include <cstdint>
@@ -10,10 +10,10 @@
 
 #include "grammar/keywords/schema.hpp"
 #include "grammar/raw_deck.hpp"
-#include "lsp/deck_lookup.hpp"
+#include "engine/position_index.hpp"
 #include "model/card_decoder.hpp"
 
-namespace sphdeck::lsp {
+namespace sphdeck::engine {
 
 // Index of the LS-DYNA field of `card` (decoded into `values` from the line `text`) under 1-based
 // byte `column`: a written value's span, else the fixed slot holding the column when the field
@@ -26,4 +26,4 @@ std::optional<std::size_t> dyna_field_at_column(const keywords::CardSpec& card, 
 // The same for a Radioss card line (fixed cells, or commas in free format).
 std::optional<std::size_t> radioss_field_at_column(const RadiossCard& card, std::string_view text, std::uint32_t column);
 
-}  // namespace sphdeck::lsp
+}  // namespace sphdeck::engine

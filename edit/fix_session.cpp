@@ -1,0 +1,60 @@
+#include "edit/fix_session.hpp"
+
+#include "edit/apply_edits.hpp"
+#include "edit/line_index.hpp"
+
+namespace sphdeck::edit {
+namespace {
+
+// The text the check read for `path` (the first instance of a file included twice: all read the same).
+std::string_view text_of(const grammar::SourceMap& sources, const std::string& path) {
+    for (grammar::FileId f = 0; f < sources.size(); ++f)
+        if (sources.file(f).path == path) return sources.file(f).text.view();
+    return {};
+}
+
+}  // namespace
+
+FixOutcome fix_deck(const std::string& path, engine::Documents& documents, const engine::CheckOptions& options,
+                    FixLevel level, std::size_t max_rounds) {
+    FixOutcome out;
+    std::map<std::string, std::size_t> file_index;  // path -> index in out.files
+    engine::CheckResult result = engine::check_deck(path, documents, options);
+    for (std::size_t round = 0; round < max_rounds; ++round) {
+        const FixRound choice = choose_fixes(result.deck.sources, result.diagnostics, level);
+        bool changed = false;
+        for (const auto& [file, edits] : choice.edits) {
+            const std::string_view current = text_of(result.deck.sources, file);
+            AppliedEdits applied = apply_edits(current, edits);
+            if (applied.text == current) continue;
+            auto [at, first_change] = file_index.try_emplace(file, out.files.size());
+            if (first_change) out.files.push_back({file, std::string(current), {}});
+            out.files[at->second].fixed = applied.text;
+            documents.set(file, std::move(applied.text));
+            changed = true;
+        }
+        // A round whose fixes change no byte would repeat itself: the findings stay as they are.
+        if (!changed) break;
+        out.fixed += choice.fixes;
+        ++out.rounds;
+        result = engine::check_deck(path, documents, options);
+    }
+    out.remaining = std::move(result);
+    std::erase_if(out.files, [](const FixedFile& f) { return f.fixed == f.original; });
+    return out;
+}
+
+std::vector<diag::TextEdit> line_edits_between(std::string_view original, std::string_view fixed) {
+    std::vector<diag::TextEdit> edits;
+    const LineIndex before(original), after(fixed);
+    if (before.count() != after.count()) return edits;
+    for (std::uint32_t line = 1; line <= before.count(); ++line) {
+        const std::string_view a = original.substr(before.begin(line), before.content_end(line) - before.begin(line));
+        const std::string_view b = fixed.substr(after.begin(line), after.content_end(line) - after.begin(line));
+        if (a == b) continue;
+        edits.push_back({grammar::Span{0, line, 1, static_cast<std::uint32_t>(a.size() + 1)}, std::string(b)});
+    }
+    return edits;
+}
+
+}  // namespace sphdeck::edit
