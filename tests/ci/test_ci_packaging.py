@@ -1,0 +1,71 @@
+#!/usr/bin/env python3
+"""The pre-commit hooks (.pre-commit-hooks.yaml) and the GitHub Action (action.yml) run as their files say
+(issue 33 item 6): each hook's entry on the files its pattern selects, and the action's check step with its
+inputs, against the built sphdeck. Exit 0 when every expectation holds."""
+import argparse, json, os, re, shlex, subprocess, sys, tempfile
+
+import yaml
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+CLEAN = ["decks/demo/dam_break_2d.k", "decks/demo/water_tank/water_tank.k", "decks/run/water_column_2d.k"]
+MISTAKES = "decks/demo/sph_mistakes_2d.k"
+
+
+def run(command, env, cwd=ROOT):
+    return subprocess.run(command, cwd=cwd, env=env, capture_output=True, text=True, timeout=300)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--sphdeck", required=True)
+    args = parser.parse_args()
+    env = dict(os.environ, PATH=os.path.dirname(os.path.abspath(args.sphdeck)) + os.pathsep + os.environ["PATH"])
+    failures = []
+
+    hooks = yaml.safe_load(open(os.path.join(ROOT, ".pre-commit-hooks.yaml")))
+    ids = {h["id"] for h in hooks}
+    if ids != {"sphdeck-check", "sphdeck-format"}:
+        failures.append(f"hooks: expected sphdeck-check and sphdeck-format, found {sorted(ids)}")
+    for hook in hooks:
+        pattern = re.compile(hook["files"])
+        selected = [f for f in CLEAN if pattern.search(f)]
+        if selected != CLEAN:
+            failures.append(f"{hook['id']}: its files pattern does not select the shipped decks")
+        done = run(shlex.split(hook["entry"]) + selected, env)  # pre-commit appends the staged files
+        if done.returncode != 0:
+            failures.append(f"{hook['id']} on the shipped decks: exit {done.returncode}: {done.stderr[-300:]}")
+    check_hook = next(h for h in hooks if h["id"] == "sphdeck-check")
+    done = run(shlex.split(check_hook["entry"]) + [MISTAKES], env)
+    if done.returncode != 1 or "[SPH030]" not in done.stdout:
+        failures.append(f"sphdeck-check on {MISTAKES}: exit {done.returncode}, expected 1 with SPH030")
+
+    action = yaml.safe_load(open(os.path.join(ROOT, "action.yml")))
+    step = next(s for s in action["runs"]["steps"] if s.get("name") == "check")
+    for fmt in ("github", "sarif"):
+        script = step["run"]
+        for name, value in (("paths", MISTAKES), ("format", fmt), ("args", "--select SPH,REF")):
+            script = script.replace("${{ inputs.%s }}" % name, value)
+        with tempfile.TemporaryDirectory() as work:
+            done = subprocess.run(["bash", "-c", f"cd {shlex.quote(ROOT)} && " + script.replace(
+                "sphdeck.sarif", os.path.join(work, "sphdeck.sarif"))], env=env, capture_output=True, text=True,
+                timeout=300)
+            if done.returncode != 1:
+                failures.append(f"action, format {fmt}: exit {done.returncode}, expected 1 (findings)")
+            if fmt == "github" and "::error file=decks/demo/sph_mistakes_2d.k,line=20" not in done.stdout:
+                failures.append("action, format github: no annotation for line 20 (SPH030)")
+            if fmt == "sarif":
+                try:
+                    sarif = json.load(open(os.path.join(work, "sphdeck.sarif")))
+                    rules = {r["ruleId"] for r in sarif["runs"][0]["results"]}
+                    if "SPH030" not in rules or any(not r.startswith(("SPH", "REF")) for r in rules):
+                        failures.append(f"action, format sarif: results {sorted(rules)}")
+                except (OSError, ValueError, KeyError, IndexError) as e:
+                    failures.append(f"action, format sarif: no SARIF file written ({e})")
+    for f in failures:
+        print("FAIL " + f)
+    print(f"ci packaging: {'passed' if not failures else 'failed'} (2 hooks, 2 action formats)")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
