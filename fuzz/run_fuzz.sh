@@ -47,7 +47,7 @@ fi
 # Seeds: the small decks of decks/ (large ones only slow each execution down), by format.
 seeds_for() {
   case $1 in
-    dyna_check) find "$root/decks" -type f \( -name '*.k' -o -name '*.inc' -o -name '*.key' \) -size -8k ;;
+    dyna_check|format_dyna) find "$root/decks" -type f \( -name '*.k' -o -name '*.inc' -o -name '*.key' \) -size -8k ;;
     radioss_check) find "$root/decks" -type f -name '*.rad' -size -8k ;;
     *) ;;
   esac

@@ -9,7 +9,10 @@
 #include "diag/render_github.hpp"
 #include "diag/render_json.hpp"
 #include "diag/render_text.hpp"
+#include "edit/apply_edits.hpp"
+#include "edit/format_deck.hpp"
 #include "engine/check.hpp"
+#include "engine/deck_diff.hpp"
 #include "grammar/dyna/expression.hpp"
 #include "grammar/dyna/keyword_arguments.hpp"
 #include "lint/rule_catalog.hpp"
@@ -81,6 +84,35 @@ void evaluate_expression(const std::uint8_t* data, std::size_t size) {
     if (!r.ok() && (r.offset > text.size() || r.length == 0)) __builtin_trap();  // the documented contract
 }
 
+void format_dyna_deck(const std::uint8_t* data, std::size_t size) {
+    if (size == 0) return;
+    edit::FormatOptions options;
+    options.headers = (data[0] & 1) != 0;
+    options.to_fixed = (data[0] & 2) != 0;
+    const std::string text = text_of(data + 1, size - 1);
+    engine::CheckOptions check;
+    check.rules.geometry = false;  // the values are what count here; the check target runs the geometry
+    const std::string name = std::string(no_folder) + "/fuzz.k";
+    const auto format = [&](const engine::CheckResult& r, const std::string& original) {
+        const edit::FormatResult f = edit::format_deck(r.deck, r.diagnostics, {0}, options);
+        std::vector<diag::TextEdit> own;
+        for (const diag::TextEdit& e : f.edits)
+            if (e.span.file == 0) own.push_back(e);
+        return edit::apply_edits(original, own).text;
+    };
+    engine::CheckResult before;
+    try {
+        before = engine::check_buffer(text, name, check, grammar::DeckFormat::LsDyna, no_folder);
+    } catch (const std::exception&) {
+        return;  // not a deck at all (empty, binary): refused before any formatting
+    }
+    const std::string formatted = format(before, text);
+    if (formatted == text) return;
+    const engine::CheckResult after = engine::check_buffer(formatted, name, check, grammar::DeckFormat::LsDyna, no_folder);
+    if (!engine::diff_decks(before, after, 0.0).equal()) __builtin_trap();  // a value changed
+    if (format(after, formatted) != formatted) __builtin_trap();            // not idempotent
+}
+
 void read_lsp_messages(const std::uint8_t* data, std::size_t size) {
     std::istringstream in(text_of(data, size));
     // A small bound, so the fuzzer reaches the skipping of oversized bodies with small inputs.
@@ -99,6 +131,7 @@ Target find_target(std::string_view name) {
     if (name == "keyword_arguments") return parse_keyword_arguments;
     if (name == "expression") return evaluate_expression;
     if (name == "lsp_messages") return read_lsp_messages;
+    if (name == "format_dyna") return format_dyna_deck;
     return nullptr;
 }
 

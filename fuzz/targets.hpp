@@ -19,6 +19,11 @@ void parse_keyword_arguments(const std::uint8_t* data, std::size_t size);
 // A *PARAMETER_EXPRESSION expression, with a few parameters defined.
 void evaluate_expression(const std::uint8_t* data, std::size_t size);
 
+// `sphdeck format` on an LS-DYNA deck (issue 27): the formatted text reads the same values as the input
+// (engine::diff_decks finds nothing) and formatting it again changes nothing; a breach traps. The first
+// input byte picks the options (--headers, --to fixed).
+void format_dyna_deck(const std::uint8_t* data, std::size_t size);
+
 // LSP messages (headers and JSON bodies) through the editor server's reader, to the end of the input.
 void read_lsp_messages(const std::uint8_t* data, std::size_t size);
 
