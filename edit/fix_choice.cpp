@@ -77,7 +77,8 @@ FixRound choose_fixes(const grammar::SourceMap& sources, const std::vector<diag:
         ++round.fixes;
         if (all_known) continue;  // the same fix (two findings of one line, a file included twice): applied once
         for (std::size_t i = 0; i < placed.size(); ++i) {
-            const auto& [path, p] = placed[i];
+            const auto& path = placed[i].first;  // plain names: clang 14 lambdas cannot capture bindings
+            const auto& p = placed[i].second;
             auto& on_file = taken[*path];
             if (std::any_of(on_file.begin(), on_file.end(), [&](const Placed& t) { return same(t, p); })) continue;
             on_file.push_back(p);

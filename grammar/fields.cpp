@@ -1,5 +1,6 @@
 #include "grammar/fields.hpp"
 
+#include <optional>
 #include <algorithm>
 #include <cstring>
 #include <tao/pegtl.hpp>
@@ -77,6 +78,42 @@ bool tab_moves_a_value(std::string_view text, std::span<const FixedField> positi
 }
 
 bool blank_char(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+}  // namespace
+
+// A tab typed where a run of blanks was: the values after it move left by the blanks it replaced.
+// Evidence that the author meant blanks: every value before the tab ends exactly at its field's end
+// (the line is right-aligned, as generators and LS-PrePost write it) and some value after it does not.
+bool tab_pulls_values_off_fields(std::string_view text, std::span<const FixedField> positions) {
+    const auto tab = text.find('\t');
+    if (tab == std::string_view::npos || positions.empty()) return false;
+    const auto field_end_of = [&](std::size_t last) -> std::optional<std::size_t> {  // last: a value's last byte
+        for (const FixedField& f : positions)
+            if (last >= f.start && last < std::size_t{f.start} + f.width) return std::size_t{f.start} + f.width;
+        return std::nullopt;
+    };
+    bool before = false, off_after = false;
+    for (std::size_t i = 0; i < text.size();) {
+        if (blank_char(text[i])) {
+            ++i;
+            continue;
+        }
+        std::size_t end = i;
+        while (end < text.size() && !blank_char(text[end])) ++end;
+        const auto field_end = field_end_of(end - 1);
+        const bool at_end = field_end && *field_end == end;
+        if (end <= tab) {
+            if (!at_end) return false;  // not a right-aligned line: no evidence
+            before = true;
+        } else if (!at_end) {
+            off_after = true;
+        }
+        i = end;
+    }
+    return before && off_after;
+}
+
+namespace {
 
 // Tabs only before the first value ("\t   1.0e-3   2.0").
 bool only_leading_tabs(std::string_view text) {

@@ -53,4 +53,8 @@ bool is_blank(std::string_view s);
 // `s` without leading blanks and tabs, nor trailing blanks, tabs and '\r'.
 std::string_view trim_blanks(std::string_view s);
 
+// A tab where a run of blanks was meant (DK016 even when both tab readings agree): every value before the
+// tab ends at its field's end and some value after it does not.
+bool tab_pulls_values_off_fields(std::string_view text, std::span<const FixedField> positions);
+
 }  // namespace sphdeck::grammar

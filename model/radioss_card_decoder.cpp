@@ -91,6 +91,12 @@ void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const gramm
         const std::size_t tab = text.find('\t');
         report("DK016", diag::Severity::Warning, "tab in a fixed-format card: columns become ambiguous",
                columns(line, tab, tab + 1));
+    } else if (!text_card && !cut.free_format && grammar::tab_pulls_values_off_fields(text, positions)) {
+        const std::size_t tab = text.find('\t');
+        report("DK016", diag::Severity::Warning,
+               "tab in a fixed-format card where blanks were meant: the starter counts it as one column, so the "
+               "values after it sit left of their cells' ends",
+               columns(line, tab, tab + 1));
     }
     if (!trailing_checked) {
         // the starter reads past the last field silently for this keyword

@@ -115,3 +115,17 @@ TEST_CASE("diff: the command's exit codes and a value no layout decodes") {
     CHECK(radioss.exit_code == 1);
     CHECK(radioss.out.find("not decoded: 10") != std::string::npos);
 }
+
+TEST_CASE("diff: a deck and the copy `sphdeck format` writes read the same; two versions differ") {
+    test::TempDir dir;
+    // Values written off the right edge of their fields (left-aligned, blanks around): format moves them.
+    const std::string deck = "*KEYWORD\n*control_termination\n0.5       0         \n*SECTION_SPH\n1         1.2       "
+                             "0.2       2.0\n*END\n";
+    dir.write("a.k", deck);
+    dir.write("b.k", deck);
+    CHECK(test::run_sphdeck(dir, "format b.k").exit_code == 0);
+    CHECK(slurp((dir.path() / "b.k").string()) != deck);  // format did change the text
+    const test::Run same = test::run_sphdeck(dir, "diff a.k b.k");
+    CHECK_MESSAGE(same.exit_code == 0, same.out);
+    CHECK(same.out.find("no difference in what the solver reads") != std::string::npos);
+}
