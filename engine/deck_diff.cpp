@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cctype>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <unordered_map>
@@ -210,6 +211,26 @@ void note_id(std::vector<long long>& ids, long long id) {
     if (ids.size() < kMostIdsListed) ids.push_back(id);
 }
 
+// Where each id occurs, in order: a deck may repeat an id (a duplicate is another rule's finding), and the
+// n-th occurrence on one side is matched with the n-th on the other.
+class IdOccurrences {
+public:
+    explicit IdOccurrences(const std::vector<long long>& ids) {
+        where_.reserve(ids.size());
+        for (std::size_t i = 0; i < ids.size(); ++i) where_[ids[i]].push_back(i);
+    }
+    std::optional<std::size_t> take(long long id) {
+        const auto it = where_.find(id);
+        if (it == where_.end() || it->second.empty()) return std::nullopt;
+        const std::size_t i = it->second.front();
+        it->second.erase(it->second.begin());
+        return i;
+    }
+
+private:
+    std::unordered_map<long long, std::vector<std::size_t>> where_;
+};
+
 BulkChange diff_nodes(const model::Nodes& before, const model::Nodes& after, double rtol) {
     BulkChange out;
     out.before_count = before.id.size();
@@ -221,18 +242,16 @@ BulkChange diff_nodes(const model::Nodes& before, const model::Nodes& after, dou
                 const auto [lo, hi] = std::minmax_element(c->begin(), c->end());
                 extent = std::max(extent, *hi - *lo);
             }
-    std::unordered_map<long long, std::size_t> index;
-    index.reserve(before.id.size());
-    for (std::size_t i = 0; i < before.id.size(); ++i) index.emplace(before.id[i], i);
+    IdOccurrences index(before.id);
     std::vector<bool> matched(before.id.size(), false);
     std::vector<long long> added, moved;
     for (std::size_t j = 0; j < after.id.size(); ++j) {
-        const auto it = index.find(after.id[j]);
-        if (it == index.end()) {
+        const auto found = index.take(after.id[j]);
+        if (!found) {
             added.push_back(after.id[j]);
             continue;
         }
-        const std::size_t i = it->second;
+        const std::size_t i = *found;
         matched[i] = true;
         const double dx = after.x[j] - before.x[i], dy = after.y[j] - before.y[i], dz = after.z[j] - before.z[i];
         const double d = std::sqrt(dx * dx + dy * dy + dz * dz);
@@ -259,18 +278,16 @@ BulkChange diff_particles(const model::Particles& before, const model::Particles
     BulkChange out;
     out.before_count = before.size();
     out.after_count = after.size();
-    std::unordered_map<long long, std::size_t> index;
-    index.reserve(before.size());
-    for (std::size_t i = 0; i < before.size(); ++i) index.emplace(before.node[i], i);
+    IdOccurrences index(before.node);
     std::vector<bool> matched(before.size(), false);
     std::vector<long long> added, changed, removed;
     for (std::size_t j = 0; j < after.size(); ++j) {
-        const auto it = index.find(after.node[j]);
-        if (it == index.end()) {
+        const auto found = index.take(after.node[j]);
+        if (!found) {
             added.push_back(after.node[j]);
             continue;
         }
-        const std::size_t i = it->second;
+        const std::size_t i = *found;
         matched[i] = true;
         const double m0 = before.mass[i], m1 = after.mass[j];
         const bool same_mass = m0 == m1 || std::abs(m0 - m1) <= rtol * std::max(std::abs(m0), std::abs(m1));
