@@ -12,7 +12,7 @@ usage: fuzz/run_fuzz.sh [-t SECONDS] [-n RUNS] [-B BUILD] [-o OUT] [-u] [TARGET.
   -o OUT      work folder for seeds, new inputs, logs and crashing inputs (default BUILD/fuzz-out)
   -u          merge the new inputs that add coverage into fuzz/corpus/<target>/ (the tree)
   -s          skip building: use the targets already in BUILD
-  TARGET      dyna_check radioss_check keyword_arguments expression (default: all)
+  TARGET      dyna_check radioss_check keyword_arguments expression lsp_messages format_dyna (default: all)
 Environment: FUZZ_FLAGS adds libFuzzer flags, after the script's own (so -entropic=1 restores the
 entropic schedule on the deck targets, which run with -entropic=0: see fuzz/README.md "Speed").
 USAGE
@@ -33,7 +33,7 @@ while getopts "t:n:B:o:ush" opt; do
 done
 shift $((OPTIND - 1))
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(dyna_check radioss_check keyword_arguments expression lsp_messages)
+[ ${#targets[@]} -eq 0 ] && targets=(dyna_check radioss_check keyword_arguments expression lsp_messages format_dyna)
 out=${out:-$build/fuzz-out}
 
 if [ "$skip_build" -eq 0 ]; then
