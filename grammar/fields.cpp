@@ -84,15 +84,27 @@ bool blank_char(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 // A tab typed where a run of blanks was: the values after it move left by the blanks it replaced.
 // Evidence that the author meant blanks: every value before the tab ends exactly at its field's end
 // (the line is right-aligned, as generators and LS-PrePost write it) and some value after it does not.
-bool tab_pulls_values_off_fields(std::string_view text, std::span<const FixedField> positions) {
+bool tab_pulls_values_off_fields(std::string_view text, std::span<const FixedField> positions,
+                                 std::span<const unsigned char> unused) {
     const auto tab = text.find('\t');
     if (tab == std::string_view::npos || positions.empty()) return false;
+    constexpr std::size_t none = static_cast<std::size_t>(-1);
+    std::size_t field_index = none;  // of the last field_end_of that found one
     const auto field_end_of = [&](std::size_t last) -> std::optional<std::size_t> {  // last: a value's last byte
-        for (const FixedField& f : positions)
-            if (last >= f.start && last < std::size_t{f.start} + f.width) return std::size_t{f.start} + f.width;
+        for (std::size_t k = 0; k < positions.size(); ++k) {
+            const FixedField& f = positions[k];
+            if (last >= f.start && last < std::size_t{f.start} + f.width) {
+                field_index = k;
+                return std::size_t{f.start} + f.width;
+            }
+        }
+        field_index = none;
         return std::nullopt;
     };
-    bool before = false, off_after = false;
+    // A value after the tab that now spans two fields, or shares its field with another: what is read
+    // changed. A value that merely sits inside its field, off its end ("1\t1.0"), is read as written.
+    bool before = false, misread = false;
+    std::optional<std::size_t> last_field_after;
     for (std::size_t i = 0; i < text.size();) {
         if (blank_char(text[i])) {
             ++i;
@@ -101,16 +113,19 @@ bool tab_pulls_values_off_fields(std::string_view text, std::span<const FixedFie
         std::size_t end = i;
         while (end < text.size() && !blank_char(text[end])) ++end;
         const auto field_end = field_end_of(end - 1);
-        const bool at_end = field_end && *field_end == end;
         if (end <= tab) {
-            if (!at_end) return false;  // not a right-aligned line: no evidence
+            if (!field_end || *field_end != end) return false;  // not a right-aligned line: no evidence
             before = true;
-        } else if (!at_end) {
-            off_after = true;
+        } else {
+            const auto start_end = field_end_of(i);
+            if (!field_end || !start_end || *start_end != *field_end) misread = true;  // across a boundary
+            else if (last_field_after && *last_field_after == *field_end) misread = true;  // two in one field
+            else if (field_index != none && field_index < unused.size() && unused[field_index]) misread = true;  // lost
+            last_field_after = field_end;
         }
         i = end;
     }
-    return before && off_after;
+    return before && misread;
 }
 
 namespace {

@@ -54,7 +54,9 @@ bool is_blank(std::string_view s);
 std::string_view trim_blanks(std::string_view s);
 
 // A tab where a run of blanks was meant (DK016 even when both tab readings agree): every value before the
-// tab ends at its field's end and some value after it does not.
-bool tab_pulls_values_off_fields(std::string_view text, std::span<const FixedField> positions);
+// tab ends at its field's end, and after it a value spans two fields, shares one with another or lands in an unused one.
+// `unused`: per field, whether the reader ignores it (a value moved into one is lost).
+bool tab_pulls_values_off_fields(std::string_view text, std::span<const FixedField> positions,
+                                 std::span<const unsigned char> unused = {});
 
 }  // namespace sphdeck::grammar

@@ -77,6 +77,15 @@ const std::vector<grammar::FixedField>& RadiossCardDecoder::layout_of(const gram
     return layouts_.back().positions;
 }
 
+namespace {
+// Per field of `card`, whether the starter skips its columns.
+std::vector<unsigned char> unused_mask(const grammar::radioss::CardSpec& card) {
+    std::vector<unsigned char> out;
+    for (const auto& f : card.fields) out.push_back(f.cell == Cell::Skip || f.cell == Cell::Skip20);
+    return out;
+}
+}  // namespace
+
 void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const grammar::radioss::CardSpec& card,
                                       int version, std::vector<RadiossValue>& values, std::string_view newer,
                                       bool trailing_checked, std::uint32_t quiet_until) {
@@ -91,7 +100,8 @@ void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const gramm
         const std::size_t tab = text.find('\t');
         report("DK016", diag::Severity::Warning, "tab in a fixed-format card: columns become ambiguous",
                columns(line, tab, tab + 1));
-    } else if (!text_card && !cut.free_format && grammar::tab_pulls_values_off_fields(text, positions)) {
+    } else if (!text_card && !cut.free_format && text.find('\t') != std::string_view::npos &&
+               grammar::tab_pulls_values_off_fields(text, positions, unused_mask(card))) {
         const std::size_t tab = text.find('\t');
         report("DK016", diag::Severity::Warning,
                "tab in a fixed-format card where blanks were meant: the starter counts it as one column, so the "
