@@ -4,6 +4,7 @@
 
 #include <map>
 
+#include "model/card_sequence.hpp"
 #include "edit/format_sink.hpp"
 #include "grammar/keywords/schema.hpp"
 #include "grammar/line_scan.hpp"
@@ -16,51 +17,9 @@ using keywords::CardRepeat;
 using keywords::CardSpec;
 using keywords::FieldType;
 
-// Blocks the reader itself reads (model/deck_check.cpp skip_cards): their lines are kept as written.
-bool read_by_reader(const std::string& keyword) {
-    return keyword == "*COMMENT" || keyword.rfind("*INCLUDE", 0) == 0 || keyword.rfind("*PARAMETER", 0) == 0 ||
-           keyword == "*END";
-}
 
-// Which card each line of a block is read as: model/deck_check.cpp's walk (conditional, optional and
-// repeated cards, repeat groups), without its reports.
-class CardSequence {
-public:
-    explicit CardSequence(const keywords::KeywordMatch& match)
-        : cards_(keywords::cards_for(match)), group_(keywords::repeat_group_size(match)) {}
-
-    const CardSpec* next() {
-        while (next_ < cards_.size() && !applies(*cards_[next_])) ++next_;
-        if (next_ < cards_.size() && cards_[next_]->unknown_layout) return nullptr;
-        if (next_ >= cards_.size()) {
-            if (group_ == 0) return nullptr;
-            next_ = cards_.size() - group_;
-        }
-        return cards_[next_];
-    }
-    bool needs_values(const CardSpec& card) const { return card.repeat != CardRepeat::Repeated; }
-    void advance(const CardSpec& card, const std::vector<model::FieldValue>& values) {
-        if (card.repeat == CardRepeat::Repeated) return;
-        for (const auto& v : values)  // as model/deck_check.cpp: a blank field without default is 0
-            if (v.spec->type != FieldType::Text && v.spec->type != FieldType::Unused)
-                earlier_[std::string(v.spec->name)] = model::condition_value(v);
-        ++next_;
-    }
-    bool only_repeats(const CardSpec& card) const { return card.repeat == CardRepeat::Repeated && group_ == 0; }
-
-private:
-    bool applies(const CardSpec& card) const {
-        if (!card.present_if) return true;
-        return card.present_if->holds_with([&](std::string_view field) {
-            auto it = earlier_.find(std::string(field));
-            return it == earlier_.end() ? 0.0 : it->second;
-        });
-    }
-    std::vector<const CardSpec*> cards_;
-    std::size_t group_ = 0;
-    std::size_t next_ = 0;
-    std::map<std::string, double> earlier_;
-};
+using model::CardSequence;
+using model::read_by_reader;
 
 CellKind kind_of(FieldType t) {
     switch (t) {
