@@ -40,24 +40,13 @@ struct CardColumns {
     std::string header;
 };
 
-// Where the sources disagree on a field's width, a value is laid out in the narrower one, which every reader
-// takes the same way: *ELEMENT_SPH's NEND is read in columns 33-42 (pydyna, LS-PrePost) but the manual's I8
-// ends it at 40 (DK023), so a number right-aligned to column 42 would read as another one there.
-void narrow_disputed_fields(std::string_view keyword, const CardSpec& card, grammar::CardFormat format,
-                            std::vector<grammar::FixedField>& slots) {
-    if (keyword != "*ELEMENT_SPH" || format != grammar::CardFormat::Standard) return;
-    for (std::size_t i = 0; i < card.fields.size() && i < slots.size(); ++i)
-        if (card.fields[i].name == "NEND" && slots[i].width == 10) slots[i].width = 8;
-}
-
 class ColumnCache {
 public:
     const CardColumns& of(std::string_view keyword, const CardSpec& card, grammar::CardFormat format) {
         auto [it, added] = cache_.try_emplace({&card, format});
         if (!added) return it->second;
         CardColumns& c = it->second;
-        c.slots = keywords::layout(card, format);
-        narrow_disputed_fields(keyword, card, format, c.slots);
+        c.slots = keywords::layout_to_write(keyword, card, format);
         std::vector<std::string_view> names;
         for (const auto& f : card.fields) {
             c.kinds.push_back(kind_of(f.type));

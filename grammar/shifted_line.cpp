@@ -86,6 +86,15 @@ std::vector<FixedField> narrowed_to_8(std::span<const FixedField> standard) {
     return out;
 }
 
+// Every field 8 wide, one after the other: how a person types a *NODE or *ELEMENT_SPH line (standard
+// widths 8/16 mixed) when they take every field for 8 columns.
+std::vector<FixedField> all_8_wide(std::span<const FixedField> standard) {
+    std::vector<FixedField> out;
+    std::uint32_t at = 0;
+    for (std::size_t i = 0; i < standard.size(); ++i, at += 8) out.push_back({at, 8});
+    return out;
+}
+
 }  // namespace
 
 std::vector<FieldType> field_types(const keywords::CardSpec& card) {
@@ -197,6 +206,7 @@ std::optional<WrittenWidths> find_written_widths(std::string_view text, const ke
     for (CardFormat f : {CardFormat::Standard, CardFormat::I10, CardFormat::Long})
         candidates.push_back(f == CardFormat::Standard ? standard : keywords::layout(card, f));
     candidates.push_back(narrowed_to_8(standard));
+    candidates.push_back(all_8_wide(standard));
     std::optional<WrittenWidths> found;
     for (std::size_t i = 0; i < candidates.size(); ++i) {
         const auto& c = candidates[i];

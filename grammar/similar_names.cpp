@@ -11,13 +11,15 @@ char folded(char c, bool fold_case) {
 }
 }  // namespace
 
-std::size_t typing_distance(std::string_view a, std::string_view b, bool fold_case) {
+std::size_t typing_distance(std::string_view a, std::string_view b, bool fold_case, std::size_t limit) {
     // Optimal string alignment with weights: three rows suffice.
     const std::size_t n = a.size(), m = b.size();
     std::vector<std::size_t> prev2(m + 1), prev(m + 1), cur(m + 1);
     for (std::size_t j = 0; j <= m; ++j) prev[j] = 2 * j;
+    std::size_t prev_min = 0;
     for (std::size_t i = 1; i <= n; ++i) {
         cur[0] = 2 * i;
+        std::size_t row_min = cur[0];
         const char ai = folded(a[i - 1], fold_case);
         for (std::size_t j = 1; j <= m; ++j) {
             const char bj = folded(b[j - 1], fold_case);
@@ -25,11 +27,15 @@ std::size_t typing_distance(std::string_view a, std::string_view b, bool fold_ca
             cur[j] = std::min({prev[j] + 2, cur[j - 1] + 2, prev[j - 1] + cost});
             if (i > 1 && j > 1 && ai == folded(b[j - 2], fold_case) && folded(a[i - 2], fold_case) == bj && ai != bj)
                 cur[j] = std::min(cur[j], prev2[j - 2] + 1);
+            row_min = std::min(row_min, cur[j]);
         }
+        // A row depends on the two rows above it only: once both exceed the limit, so does the end.
+        if (row_min > limit && prev_min > limit) return limit + 1;
+        prev_min = row_min;
         std::swap(prev2, prev);
         std::swap(prev, cur);
     }
-    return prev[m];
+    return std::min(prev[m], limit + 1);
 }
 
 std::size_t close_enough(std::string_view known) {
@@ -44,7 +50,7 @@ std::vector<std::string> closest_names(std::string_view typed, std::span<const s
         const std::size_t limit = close_enough(c);
         const std::size_t gap = typed.size() > c.size() ? typed.size() - c.size() : c.size() - typed.size();
         if (2 * gap > limit) continue;  // each insertion or deletion costs 2
-        const std::size_t d = typing_distance(typed, c, fold_case);
+        const std::size_t d = typing_distance(typed, c, fold_case, limit);
         if (d <= limit && d > 0) found.emplace_back(d, &c);
     }
     std::sort(found.begin(), found.end(), [](const auto& x, const auto& y) {

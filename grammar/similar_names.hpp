@@ -12,8 +12,10 @@
 namespace sphdeck::grammar {
 
 // Distance in half edits: an insertion, deletion or substitution costs 2, a swap of neighbours 1.
-// `fold_case`: letters compare without case.
-std::size_t typing_distance(std::string_view a, std::string_view b, bool fold_case = false);
+// `fold_case`: letters compare without case. Past `limit` the answer is only "more than limit"
+// (limit + 1): the work stops there, which matters when thousands of names are tried.
+std::size_t typing_distance(std::string_view a, std::string_view b, bool fold_case = false,
+                            std::size_t limit = static_cast<std::size_t>(-1) / 2);
 
 // The largest distance (half edits) at which `known` still counts as close to what was typed:
 // a quarter of its length in edits, at least one edit for names of up to 4 characters, else two.

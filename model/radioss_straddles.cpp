@@ -47,10 +47,14 @@ std::vector<Straddle> straddles(std::string_view text, const grammar::radioss::C
         if (b == 0 || b >= text.size() || blank(text[b - 1]) || blank(text[b])) continue;
         if (!numeric(card.fields[i].cell)) continue;
         if (i + 1 < positions.size() && positions[i + 1].start != b) continue;  // not adjacent
+        // One-column cells (the /BCS dof flags '111 110') are typed side by side; a run from such a
+        // cell into a wider one (dof6 '10' over columns 10-11) is one value across the boundary.
+        const bool flag = positions[i].width == 1;
+        if (flag && i + 1 < positions.size() && positions[i + 1].width == 1) continue;
         std::size_t s = b, e = b;
         while (s > 0 && !blank(text[s - 1])) --s;
         while (e < text.size() && !blank(text[e])) ++e;
-        const bool packed = s == positions[i].start ||
+        const bool packed = (s == positions[i].start && !flag) ||
                             (i + 1 < positions.size() && e == std::size_t{positions[i + 1].start} + positions[i + 1].width);
         if (packed || grammar::parse_real(text.substr(s, e - s)).status != grammar::NumberStatus::Ok) continue;
         // A zero across the boundary ('.000000000' read as '.00000' and '0000') changes no value.
@@ -154,8 +158,14 @@ void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
     auto glued = straddles(text, card, positions);
     const bool suspect = !glued.empty() || out.size() > from;
     if (!suspect && header.empty()) return;
+    // A cell the newest format leaves unused may hold a value of an older format's field there (/PROP/SHELL's
+    // Istrain in columns 11-20, unused since format 2025): the starter skips it, but it is aligned to that
+    // cell all the same, so it counts as a placed number when the line's alignment is judged.
     std::vector<FieldType> types;
-    for (const auto& f : card.fields) types.push_back(type_of(f.cell));
+    for (const auto& f : card.fields) {
+        const FieldType t = type_of(f.cell);
+        types.push_back(t == FieldType::Unused ? FieldType::Real : t);
+    }
     // Under a header, values past the card's last field (a newer format's, or text the starter
     // ignores) are no evidence either way: the line is judged up to a few columns past the card.
     std::string_view probe = text;

@@ -117,17 +117,19 @@ std::optional<diag::Diagnostic> shifted_line(const grammar::RawDeck& deck, const
     return d;
 }
 
-// Every line of the block written in `written` and not read cleanly as is, rewritten at `read`.
+// Every line of the block written in `written` and not read cleanly as is (at `read`), rewritten in
+// the columns every reader takes.
 std::vector<diag::TextEdit> rewrite_block(const grammar::RawDeck& deck, const grammar::Block& block,
                                              const keywords::CardSpec& card,
                                              std::span<const grammar::FixedField> written,
-                                             std::span<const grammar::FixedField> read) {
+                                             std::span<const grammar::FixedField> read,
+                                             std::span<const grammar::FixedField> to_write) {
     std::vector<diag::TextEdit> edits;
     if (block.line_count > max_fix_lines) return edits;
     for (const grammar::CardLine* l = deck.begin_lines(block); l != deck.end_lines(block); ++l) {
         const std::string_view text = deck.text(*l);
         if (!grammar::reads_aligned(text, written, card) || grammar::reads_aligned(text, read, card)) continue;
-        if (auto rewritten = grammar::rewrite_fields(text, written, read, card))
+        if (auto rewritten = grammar::rewrite_fields(text, written, to_write, card))
             edits.push_back(whole_line_edit(deck, *l, std::move(*rewritten)));
     }
     return edits;
@@ -148,6 +150,7 @@ std::optional<diag::Diagnostic> wrong_widths(const grammar::RawDeck& deck, const
             if (other.card == s.card && !grammar::reads_aligned(deck.text(*other.line), written->slots, *s.card))
                 return std::nullopt;
         const auto read = keywords::layout(*s.card, block.format);
+        const auto to_write = keywords::layout_to_write(block.keyword, *s.card, block.format);
         const grammar::CardLine& first = deck.lines[block.first_line];
         diag::Diagnostic d{"DK030", diag::Severity::Error,
                            fmt::format("lines written in {} where {} reads {}", written->described, block.keyword,
@@ -155,7 +158,7 @@ std::optional<diag::Diagnostic> wrong_widths(const grammar::RawDeck& deck, const
                            line_span(deck, first, true), {}};
         if (block.format != grammar::CardFormat::Standard)
             d.notes.push_back({block.span, fmt::format("the block is in {} format", grammar::to_string(block.format))});
-        auto edits = rewrite_block(deck, block, *s.card, written->slots, read);
+        auto edits = rewrite_block(deck, block, *s.card, written->slots, read, to_write);
         if (!edits.empty())
             d.fixes.push_back(diag::Fix{fmt::format("rewrite {} line(s) of the block in {}", edits.size(),
                                                     grammar::describe_widths(read)),

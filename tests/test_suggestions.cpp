@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <random>
 #include <string>
 
 #include "engine/check.hpp"
@@ -34,6 +35,24 @@ TEST_CASE("suggestions: the typing distance makes a swap cheaper than other edit
     CHECK(grammar::typing_distance("PRAT", "PART") == 1);
     CHECK(grammar::typing_distance("endx", "ENDX", true) == 0);
     CHECK(grammar::typing_distance("", "abc") == 6);
+}
+
+TEST_CASE("suggestions: a bounded distance is the distance up to the bound, and only 'beyond' past it") {
+    std::mt19937 rng(7);
+    const auto random_name = [&] {
+        std::string s(rng() % 12, 'A');
+        for (char& c : s) c = "ABCS_"[rng() % 5];  // few letters: many close pairs and swaps
+        return s;
+    };
+    for (int i = 0; i < 3000; ++i) {
+        const std::string a = random_name(), b = random_name();
+        const std::size_t full = grammar::typing_distance(a, b);
+        const std::size_t limit = rng() % 10;
+        const std::size_t bounded = grammar::typing_distance(a, b, false, limit);
+        INFO(a, " ", b, " limit ", limit);
+        if (full <= limit) CHECK(bounded == full);
+        else CHECK(bounded == limit + 1);
+    }
 }
 
 TEST_CASE("suggestions: keywords, with the author's options kept") {

@@ -105,7 +105,7 @@ std::vector<Candidate> candidates_for(const std::string& key) {
         const std::size_t gap = written.size() > known.name.size() ? written.size() - known.name.size()
                                                                    : known.name.size() - written.size();
         if (2 * gap > limit) return std::nullopt;  // each insertion or deletion costs 2
-        const std::size_t d = grammar::typing_distance(written, known.name);
+        const std::size_t d = grammar::typing_distance(written, known.name, false, limit);
         if (d > limit) return std::nullopt;
         return d;
     };

@@ -115,6 +115,14 @@ std::vector<FieldSlot> layout(const CardSpec& card, grammar::CardFormat format) 
     return slots;
 }
 
+std::vector<FieldSlot> layout_to_write(std::string_view keyword, const CardSpec& card, grammar::CardFormat format) {
+    std::vector<FieldSlot> slots = layout(card, format);
+    if (keyword != "*ELEMENT_SPH" || format != grammar::CardFormat::Standard) return slots;
+    for (std::size_t i = 0; i < card.fields.size() && i < slots.size(); ++i)
+        if (card.fields[i].name == "NEND" && slots[i].width == 10) slots[i].width = 8;
+    return slots;
+}
+
 std::uint32_t significant_width(const CardSpec& card, grammar::CardFormat format) {
     const std::uint32_t base = card.line_width;
     if (format == grammar::CardFormat::Standard) return base;

@@ -159,6 +159,12 @@ struct KeywordSchema {
 using FieldSlot = grammar::FixedField;
 std::vector<FieldSlot> layout(const CardSpec& card, grammar::CardFormat format);
 
+// The columns to write a value in (the formatter, a fix that rewrites a line): the layout, except that a
+// field whose width the sources dispute is narrowed to the width every reader takes. *ELEMENT_SPH's NEND is
+// read in columns 33-42 (pydyna, LS-PrePost) but the manual's I8 ends it at 40 (DK023): a number
+// right-aligned to column 42 would read as another one there.
+std::vector<FieldSlot> layout_to_write(std::string_view keyword, const CardSpec& card, grammar::CardFormat format);
+
 // Last significant column of a card in a format: the card's line width (80) in standard format;
 // in I10 format at least the end of the widened layout (10 fields of 10 reach 100); in long
 // format at least 160, more when the widened layout ends later (10 fields of 20 reach 200).
