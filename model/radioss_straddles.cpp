@@ -47,14 +47,14 @@ std::vector<Straddle> straddles(std::string_view text, const grammar::radioss::C
         if (b == 0 || b >= text.size() || blank(text[b - 1]) || blank(text[b])) continue;
         if (!numeric(card.fields[i].cell)) continue;
         if (i + 1 < positions.size() && positions[i + 1].start != b) continue;  // not adjacent
-        // One-column cells (the /BCS dof flags '111 110') are typed side by side; a run from such a
-        // cell into a wider one (dof6 '10' over columns 10-11) is one value across the boundary.
-        const bool flag = positions[i].width == 1;
-        if (flag && i + 1 < positions.size() && positions[i + 1].width == 1) continue;
+        // A one-column cell (the /BCS dof flags '111 110') is always filled from its first column: a run
+        // from it into a wider cell (dof6 '10' over columns 10-11) is still one value across the boundary.
+        const bool flag_into_wider =
+            positions[i].width == 1 && i + 1 < positions.size() && positions[i + 1].width > 1;
         std::size_t s = b, e = b;
         while (s > 0 && !blank(text[s - 1])) --s;
         while (e < text.size() && !blank(text[e])) ++e;
-        const bool packed = (s == positions[i].start && !flag) ||
+        const bool packed = (s == positions[i].start && !flag_into_wider) ||
                             (i + 1 < positions.size() && e == std::size_t{positions[i + 1].start} + positions[i + 1].width);
         if (packed || grammar::parse_real(text.substr(s, e - s)).status != grammar::NumberStatus::Ok) continue;
         // A zero across the boundary ('.000000000' read as '.00000' and '0000') changes no value.
