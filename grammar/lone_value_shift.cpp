@@ -18,6 +18,10 @@ std::size_t slot_end(const FixedField& f) { return std::size_t{f.start} + f.widt
 
 bool number_field(FieldType t) { return t == FieldType::Integer || t == FieldType::Real; }
 
+bool judged_field(FieldType t, Judged judged) {
+    return judged == Judged::Integers ? t == FieldType::Integer : number_field(t);
+}
+
 // The field holding [begin, end) whole, or `fields` when none does.
 std::size_t field_of(std::size_t begin, std::size_t end, std::span<const FixedField> slots, std::size_t fields) {
     for (std::size_t s = 0; s < fields; ++s)
@@ -28,40 +32,57 @@ std::size_t field_of(std::size_t begin, std::size_t end, std::span<const FixedFi
 }  // namespace
 
 void tally_alignment(std::string_view text, std::span<const FixedField> slots, std::span<const FieldType> types,
-                     AlignmentTally& tally) {
+                     AlignmentTally& tally, Judged judged) {
     const std::size_t fields = std::min(slots.size(), types.size());
     for (const LineToken& t : line_tokens(text)) {
         const std::size_t s = field_of(t.begin, t.end, slots, fields);
-        if (s == fields || !number_field(types[s])) continue;
+        if (s == fields || !judged_field(types[s], judged)) continue;
         if (t.end == slot_end(slots[s])) ++tally.right;
         else ++tally.other;
     }
 }
 
 std::optional<LoneShift> find_lone_shift(std::string_view text, std::span<const FixedField> slots,
-                                         std::span<const FieldType> types) {
+                                         std::span<const FieldType> types, Judged judged) {
     constexpr std::size_t max_values = 8;
     if (text.find('\t') != std::string_view::npos || is_free_format(text)) return std::nullopt;
     const std::vector<LineToken> tokens = line_tokens(text);
     if (tokens.empty() || tokens.size() > max_values) return std::nullopt;
     const std::size_t fields = std::min(slots.size(), types.size());
-    // As written: every value whole in a number field, none at its field's end.
+    // As written: every value whole in a number field, none judged at its field's end.
+    std::size_t judged_values = 0;
     for (const LineToken& t : tokens) {
         const std::size_t k = field_of(t.begin, t.end, slots, fields);
-        if (k == fields || !number_field(types[k]) || t.end == slot_end(slots[k])) return std::nullopt;
+        // An integer pushed past the card's last cell (the starter drops it silently) is judged moved back.
+        const bool past_last = judged == Judged::Integers && k == fields && fields > 0 &&
+                               t.begin >= slot_end(slots[fields - 1]) && types[fields - 1] == FieldType::Integer;
+        if (past_last) {
+            ++judged_values;
+            continue;
+        }
+        if (k == fields || !number_field(types[k])) return std::nullopt;
+        if (!judged_field(types[k], judged)) continue;
+        if (t.end == slot_end(slots[k])) return std::nullopt;
+        ++judged_values;
     }
+    if (judged == Judged::Integers && judged_values < 2) return std::nullopt;
     std::optional<LoneShift> found;
     for (std::size_t n = 1; n <= max_shift; ++n) {
         std::vector<LineToken> moved = tokens;
         if (!place_tokens(text, moved, slots, types, static_cast<int>(n))) continue;
         const bool at_ends = std::all_of(moved.begin(), moved.end(), [&](const LineToken& t) {
-            return number_field(types[t.slot]) && t.end - n == slot_end(slots[t.slot]);
+            if (!number_field(types[t.slot])) return false;
+            return !judged_field(types[t.slot], judged) || t.end - n == slot_end(slots[t.slot]);
         });
         if (!at_ends) continue;
         if (found) return std::nullopt;  // two readings: not certain
-        const LineToken& first = moved.front();
+        const auto first_judged = std::find_if(moved.begin(), moved.end(), [&](const LineToken& t) {
+            return judged_field(types[t.slot], judged);
+        });
+        const LineToken& first = first_judged != moved.end() ? *first_judged : moved.front();
         found = LoneShift{static_cast<int>(n), first.slot, field_of(first.begin, first.end, slots, fields),
-                          first.begin, first.end, tokens.size(), std::nullopt};
+                          first.begin, first.end, judged == Judged::Integers ? judged_values : tokens.size(),
+                          std::nullopt};
     }
     if (found && tokens.front().begin >= static_cast<std::size_t>(found->columns)) {
         std::string moved(text.substr(static_cast<std::size_t>(found->columns)));

@@ -23,9 +23,15 @@ struct AlignmentTally {
     std::uint64_t other = 0;  // start at its start only, or float inside it
 };
 
-// Adds the numbers (Integer and Real fields) of `text` that sit whole in one field of `slots`.
+// Which numbers a habit of alignment is judged on: every number, or the integers alone (machine-written
+// OpenRadioss decks right-align integers but write reals from a fixed column, "      1.00000000    ").
+enum class Judged { Numbers, Integers };
+
+// Adds the numbers (Integer and Real fields; `Judged::Integers`: Integer fields only) of `text` that sit
+// whole in one field of `slots`.
 void tally_alignment(std::string_view text, std::span<const FixedField> slots,
-                     std::span<const keywords::FieldType> types, AlignmentTally& tally);
+                     std::span<const keywords::FieldType> types, AlignmentTally& tally,
+                     Judged judged = Judged::Numbers);
 
 struct LoneShift {
     int columns = 0;         // > 0: right of the field it was meant for
@@ -39,7 +45,10 @@ struct LoneShift {
 // The values of `text` (one to eight), when none ends at its field's end and, moved `columns` (1 to 4)
 // left, each ends at the end of a number field whose type reads it: a right-aligned line pushed so far
 // right that nothing straddles (short values). `meant` and `read` are those of the first value.
+// `Judged::Integers`: the line's integers (two at least) are judged so; its reals need only stay whole
+// in fields that read them, and `meant`/`read` are those of the first integer.
 std::optional<LoneShift> find_lone_shift(std::string_view text, std::span<const FixedField> slots,
-                                         std::span<const keywords::FieldType> types);
+                                         std::span<const keywords::FieldType> types,
+                                         Judged judged = Judged::Numbers);
 
 }  // namespace sphdeck::grammar

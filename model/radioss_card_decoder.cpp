@@ -150,6 +150,8 @@ void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const gramm
                 line, text, card, positions,
                 block_ < deck_.blocks.size() ? std::string_view(deck_.blocks[block_].keyword) : "its card", header,
                 out_, found_before);
+        if (out_.size() == found_before && block_ < deck_.blocks.size())
+            lone_shifts_.note(line, text, card, positions, deck_.blocks[block_].keyword);
     }
 }
 

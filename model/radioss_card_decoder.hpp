@@ -11,6 +11,7 @@
 #include "diag/diagnostic.hpp"
 #include "grammar/radioss/cards.hpp"
 #include "grammar/raw_deck.hpp"
+#include "model/radioss_lone_shifts.hpp"
 
 namespace sphdeck::model {
 
@@ -47,6 +48,10 @@ public:
                 bool list_directed, std::vector<RadiossValue>& values, std::string_view newer = {},
                 bool trailing_checked = true, std::uint32_t quiet_until = 0);
 
+    // DK029 for lines whose integers were all pushed into the next cells (model/radioss_lone_shifts.hpp):
+    // decided once the whole deck is read.
+    void report_lone_shifts() { lone_shifts_.report(out_); }
+
 private:
     void decode_fixed(const grammar::CardLine& line, const grammar::radioss::CardSpec& card, int version,
                       std::vector<RadiossValue>& values, std::string_view newer, bool trailing_checked,
@@ -65,6 +70,7 @@ private:
     std::vector<diag::Diagnostic>& out_;
     const RadiossParameters* parameters_ = nullptr;
     std::size_t block_ = 0;
+    RadiossLoneShifts lone_shifts_;
     std::vector<grammar::Field> fields_;
     struct Layout {
         const grammar::radioss::CardSpec* card = nullptr;

@@ -80,6 +80,7 @@ public:
             decoder_.set_block(static_cast<std::size_t>(&block - deck_.blocks.data()));
             walk(block);
         }
+        decoder_.report_lone_shifts();
     }
 
     Model finish() { return builder_.finish(); }

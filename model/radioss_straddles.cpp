@@ -9,6 +9,7 @@
 
 #include "grammar/shifted_line.hpp"
 #include "grammar/value.hpp"
+#include "model/radioss_lone_shifts.hpp"
 #include "model/shift_diagnosis.hpp"
 
 namespace sphdeck::model {
@@ -19,16 +20,6 @@ using keywords::FieldType;
 
 bool numeric(Cell c) { return c == Cell::Int || c == Cell::Real; }
 bool blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
-
-FieldType type_of(Cell c) {
-    switch (c) {
-        case Cell::Int: return FieldType::Integer;
-        case Cell::Real: return FieldType::Real;
-        case Cell::Skip:
-        case Cell::Skip20: return FieldType::Unused;
-        default: return FieldType::Text;
-    }
-}
 
 // A number glued across the end of cell `cell`: the boundary's two sides are not blank and the run
 // of characters around it reads as one number. Values packed against each other are not one: a cell
@@ -81,7 +72,7 @@ diag::Diagnostic straddle_finding(const grammar::CardLine& line, std::string_vie
     std::string where;
     if (s.cell + 1 >= card.fields.size() || s.cell + 1 >= positions.size())
         where = fmt::format("'{}' past the last cell is not read", lost);
-    else if (!numeric(card.fields[s.cell + 1].cell) && type_of(card.fields[s.cell + 1].cell) == FieldType::Unused)
+    else if (card.fields[s.cell + 1].cell == Cell::Skip || card.fields[s.cell + 1].cell == Cell::Skip20)
         where = fmt::format("'{}' falls in an unused cell and is lost", lost);
     else
         where = fmt::format("'{}' is read as the start of {} ({})", lost, card.fields[s.cell + 1].name,
@@ -161,11 +152,9 @@ void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
     // A cell the newest format leaves unused may hold a value of an older format's field there (/PROP/SHELL's
     // Istrain in columns 11-20, unused since format 2025): the starter skips it, but it is aligned to that
     // cell all the same, so it counts as a placed number when the line's alignment is judged.
-    std::vector<FieldType> types;
-    for (const auto& f : card.fields) {
-        const FieldType t = type_of(f.cell);
-        types.push_back(t == FieldType::Unused ? FieldType::Real : t);
-    }
+    std::vector<FieldType> types = radioss_field_types(card);
+    for (FieldType& t : types)
+        if (t == FieldType::Unused) t = FieldType::Real;
     // Under a header, values past the card's last field (a newer format's, or text the starter
     // ignores) are no evidence either way: the line is judged up to a few columns past the card.
     std::string_view probe = text;

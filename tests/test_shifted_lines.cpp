@@ -167,13 +167,32 @@ TEST_CASE("OpenRadioss: a value across a cell boundary says what the starter kee
     std::stringstream whole;
     whole << in.rdbuf();
     auto r = engine::check_buffer(whole.str(), "straddle_0000.rad", {}, grammar::DeckFormat::Radioss);
-    const diag::Diagnostic* d = only(r, "RAD030");
+    REQUIRE(count_code(r.diagnostics, "RAD030") == 2);  // h on /PROP/SPH, a dof flag on /BCS
+    const diag::Diagnostic* d = nullptr;
+    for (const auto& f : r.diagnostics)
+        if (f.code == "RAD030" && f.message.find("cell h ") != std::string::npos) d = &f;
     REQUIRE(d);
     CHECK(d->message == "'2.4' straddles the end of cell h (columns 11-30): the starter reads h as '2.' and '4' is "
                         "read as the start of Xi_Stab (columns 31-50)");
     CHECK(count_code(r.diagnostics, "RAD025") == 0);
     REQUIRE(d->notes.size() == 1);
     CHECK(d->notes[0].message.ends_with("[RAD025]"));
+}
+
+TEST_CASE("OpenRadioss: a one-column flag run into the wider cell after it is RAD030; flags side by side are not") {
+    const std::string head = "#RADIOSS STARTER\n/BEGIN\nflags\n      2026\n"
+                             "                  kg                  mm                  ms\n"
+                             "                  kg                  mm                  ms\n/BCS/4\nfixed\n";
+    const std::string tail = "/GRNOD/NODE/2\nnodes\n         1\n/NODE\n         1                 0.0"
+                             "                 0.0                 0.0\n/END\n";
+    auto moved = engine::check_buffer(head + "   001 1 10        0         2\n" + tail, "bcs_0000.rad", {},
+                                      grammar::DeckFormat::Radioss);
+    const diag::Diagnostic* d = only(moved, "RAD030");
+    REQUIRE(d);
+    CHECK(d->message.starts_with("'10' straddles the end of cell dof6 (columns 10-10)"));
+    auto written = engine::check_buffer(head + "   001 110         0         2\n" + tail, "bcs_0000.rad", {},
+                                        grammar::DeckFormat::Radioss);
+    CHECK(count_code(written.diagnostics, "RAD030") == 0);
 }
 
 TEST_CASE("DK029 warning: a shift that changes no value read folds none of the line's findings") {

@@ -485,8 +485,11 @@ def tab_in_line(host, rng):
 def duplicated_block(host, rng):
     """A *PART / *SECTION_SPH / *MAT_ block (OpenRadioss /PART, /PROP, /MAT) copied and pasted with its id unchanged."""
     prefixes = ("*PART", "*SECTION_SPH", "*MAT_") if host.deck.fmt == "dyna" else ("/PART/", "/PROP/", "/MAT/")
+    # *MAT_ADD_... (erosion, damage, thermal expansion...) adds options to a material named by its MID: it
+    # defines no id of its own, so a second copy is not a duplicate id (whether it adds or replaces
+    # criteria, the manual does not say), and it is left out like *PART_CONTACT.
     blocks = [b for b in host.deck.blocks if b.name.startswith(prefixes) and b.data
-              and b.name not in ("*PART_CONTACT",)]
+              and b.name not in ("*PART_CONTACT",) and not b.name.startswith("*MAT_ADD_")]
     rng.shuffle(blocks)
     for b in blocks:
         copy = host.deck.lines[b.line - 1:b.end]
