@@ -136,7 +136,7 @@ CaseResult run_noh(const CaseOptions& options) {
     result.name = "noh";
     result.title = "Noh implosion (2D, cylindrical) against the exact solution";
     const NohSolution exact;  // j = 2, gamma 5/3, rho0 = 1, u0 = 1
-    const std::vector<int> resolutions = options.quick ? std::vector<int>{25, 50} : std::vector<int>{50, 100};
+    const std::vector<int> resolutions = options.quick ? std::vector<int>{35, 70} : std::vector<int>{50, 100};
 
     std::vector<NohRun> runs;
     for (int n : resolutions) {
@@ -186,7 +186,7 @@ CaseResult run_noh(const CaseOptions& options) {
         fmt::format("Decks `noh_2d_{}.k` and `noh_2d_{}.k` (`make_noh.py`): the quarter x, y in [0, 1] of a "
                     "cylindrical implosion, cold ideal gas gamma = 5/3, rho0 = 1, p0 = 1e-6, v = -x / |x| per "
                     "particle (*INITIAL_VELOCITY_NODE); symmetry planes at x = 0 and y = 0, free outer edges; "
-                    "FORM 1, h0 = 1.2 dx (CSLH), HMIN 0.2, HMAX 2; Monaghan alpha = 1, beta = 2; TSSFAC 0.3.",
+                    "FORM 0, h0 = 1.2 dx (CSLH), HMIN 0.2, HMAX 2; Monaghan alpha = 1, beta = 2; TSSFAC 0.3.",
                     resolutions[0], resolutions[1]),
         fmt::format("Reference: Noh (1987), cylindrical: shock at r_s = t / 3 = {:.4f} at t = {:.4g}; behind it "
                     "rho = ((gamma + 1) / (gamma - 1))^2 = {:g}, u = 0, p = 16 / 3; ahead rho = 1 + t / r, u = -1.",
