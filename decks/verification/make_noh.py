@@ -22,7 +22,8 @@ FORM 0, the default (Sedov needs FORM 1, this case does not): the inflow is comp
 4-fold by the convergence and the shock compresses it 4-fold radially, so the shocked lattice is
 compressed alike in both directions and DERIV 0's h ~ rho^(-1/2) follows its spacing (Sedov's shell is
 compressed 6-fold radially only). Measured (docs/verification.md section 5): post-shock density 15.50 /
-15.97 at N = 50 / 100 with FORM 0, 15.75 / 16.40 with FORM 1 (the finer run further from 16).
+15.97 at N = 50 / 100 with FORM 0; FORM 1 keeps the volume-weighted continuity (refsolver/continuity.hpp)
+and stays too dense, 17.25 / 17.83.
 
 Standard library only; deterministic. Run `python3 decks/verification/make_noh.py`.
 """
