@@ -34,10 +34,11 @@ inline FormValues form_values(bool volume_weighted, double p, double rho, double
 }
 
 // One neighbour's share of d rho_i / dt before the factor continuity_factor: V_j v_ij . g_ij (FORM 1),
-// v_ij . g_ij (FORM 0).
+// v_ij . g_ij (FORM 0). A neighbour that does not interact (s7 = 0 in both forms) adds nothing.
 template <bool VolumeWeighted>
 inline double continuity_term(double s7_j, double v_dot_g) {
-    return VolumeWeighted ? s7_j * v_dot_g : v_dot_g;
+    if constexpr (VolumeWeighted) return s7_j * v_dot_g;
+    return s7_j > 0 ? v_dot_g : 0.0;
 }
 
 // rho_i (FORM 1) or m_i (FORM 0).

@@ -16,10 +16,10 @@
 
 namespace sphdeck::refsolver {
 
-// j's share of de_i, from i's and j's s6, s7 (continuity.hpp FormValues).
+// j's share of de_i, from i's and j's s6, s7 (continuity.hpp FormValues; s7_j = 0: j does not interact).
 template <bool VolumeWeighted>
 inline double energy_term(double s6_i, double s7_i, double s7_j, double m_j, double pi_ij, double v_dot_g) {
-    const double own_work = VolumeWeighted ? s7_j * s6_i : s6_i * s7_i;
+    const double own_work = VolumeWeighted ? s7_j * s6_i : s7_j > 0 ? s6_i * s7_i : 0.0;
     return (own_work + 0.5 * m_j * pi_ij) * v_dot_g;
 }
 

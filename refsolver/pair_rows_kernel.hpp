@@ -163,8 +163,15 @@ void row(const PairRows& p, std::size_t i, OwnSums& own) {
         own.az += select(valid, o[3] * a * gz, zero);
         // continuity.hpp and energy.hpp: V_j v_ij . g_ij and V_j p_i / rho_i (FORM 1), v_ij . g_ij and
         // p_i V_i^2 / m_i (FORM 0).
-        own.drho += select(valid, Renormalise ? o[7] * v_dot_g : v_dot_g, zero);
-        own.de += select(valid, ((Renormalise ? o[7] * s6 : own_work) + half * o[3] * pi) * v_dot_g, zero);
+        // FORM 0: a partner that does not interact (1 / m = 0) adds no pdV term (its m = 0 drops the rest).
+        if constexpr (Renormalise) {
+            own.drho += select(valid, o[7] * v_dot_g, zero);
+            own.de += select(valid, (o[7] * s6 + half * o[3] * pi) * v_dot_g, zero);
+        } else {
+            const M present = valid & (M)(o[7] > zero);
+            own.drho += select(present, v_dot_g, zero);
+            own.de += select(valid, (select(present, own_work, zero) + half * o[3] * pi) * v_dot_g, zero);
+        }
         if (k < forward) {  // add_reverse: g_ji = -g_ij, v_ji . g_ji = v_ij . g_ij
             const V share[5] = {m * a * gx, m * a * gy, m * a * gz, Renormalise ? s7 * v_dot_g : v_dot_g,
                                 ((Renormalise ? s7 * o[6] : o[6] * o[7]) + half * m * pi) * v_dot_g};

@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <string>
 
 #include "test_refsolver_decks.hpp"
 
@@ -235,6 +236,32 @@ TEST_CASE("refsolver: BOXID deactivates a particle that leaves the box") {
     CHECK(st.x[0] == doctest::Approx(1.0).epsilon(0.05));
     CHECK(st.active[1] == 1);
     CHECK(setup.simulation->totals().active == 1);
+}
+
+// A particle that does not interact yet (its part's *SECTION_SPH START is later) stays in the neighbour
+// lists but is no neighbour: under FORM 0 the number-density terms (continuity.hpp) must not count it
+// either, though they carry no factor of its mass or volume.
+TEST_CASE("refsolver: a particle whose part has not started changes no density, FORM 0 and 1") {
+    for (int form : {0, 1}) {
+        CAPTURE(form);
+        const std::string deck = fmt::format(
+            "*KEYWORD\n*CONTROL_TERMINATION\n0.3\n*CONTROL_TIMESTEP\n0,0.3\n"
+            "*CONTROL_SPH\n1,0,1e20,3,150,{}\n*CONTROL_BULK_VISCOSITY\n1.5,0.06\n"
+            "*SECTION_SPH\n1,1.2,0.2,2.0,0.1\n*SECTION_SPH\n2,1.2,0.2,2.0,0.1,1e20,10.0\n"
+            "*PART\nmoving\n1,1,1,1\n*PART\nnot yet\n2,2,1,1\n*MAT_NULL\n1,1.0,-1e30\n"
+            "*EOS_MURNAGHAN\n1,7,100,1\n*NODE\n1,0,0,0\n2,0.25,0,0\n*ELEMENT_SPH\n1,1,1.0\n2,2,1.0\n"
+            "*SET_NODE_LIST\n100\n1\n*INITIAL_VELOCITY\n100\n0.5,0,0\n*END\n",
+            form);
+        const engine::CheckResult r = engine::check_buffer(deck, "test.k");
+        auto setup = refsolver::Simulation::create(r.model);
+        REQUIRE_MESSAGE(setup.simulation, unsupported_text(setup));
+        setup.simulation->run();
+        const auto& st = setup.simulation->state();
+        CHECK(st.active[1] == 1);
+        CHECK(std::abs(st.x[0] - st.x[1]) < 0.15);  // well within the support (0.2) at the end
+        CHECK(st.rho[0] == 1.0);
+        CHECK(st.vx[0] == 0.5);
+    }
 }
 
 TEST_CASE("refsolver: FORM 2 is refused with a message naming FORM and what is supported") {
