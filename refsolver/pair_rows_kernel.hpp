@@ -126,7 +126,8 @@ void row(const PairRows& p, std::size_t i, OwnSums& own) {
         // The five divisions of the pair: 1 / h_ij, h_ij / r = h_ij r / r^2 (the outer shell only:
         // where r <= h_ij the factor is h_ij^2, so that every factor is positive, coincident
         // particles included; and r^2 rather than r, so that the division need not wait for the
-        // square root), the viscosity's phi and 1 / rho_ij, and momentum.hpp's 1 / (rho_i rho_j).
+        // square root), the viscosity's phi and 1 / rho_ij, and momentum.hpp's 1 / (rho_i rho_j) under
+        // FORM 1 (FORM 0 passes 1: its 1 / m come precomputed in s7).
         const V visc_den = r2 + splat(0.01) * hij2;
         const Reciprocals inv = reciprocals(hij, select((M)(r2 > hij2), r2, hij2), visc_den, rho + o[4],
                                             Renormalise ? rho * o[4] : one);
