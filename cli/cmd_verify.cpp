@@ -1,4 +1,4 @@
-// sphdeck verify [sod|hydrostatic|dambreak|sedov|all]: runs the verification decks of decks/verification/
+// sphdeck verify [sod|hydrostatic|dambreak|sedov|noh|all]: runs the verification decks of decks/verification/
 // through the reference solver in-process and compares them with exact and experimental references
 // (docs/verification.md): a table per case, PASS/FAIL, and Markdown + SVG reports in --out.
 #include <algorithm>
@@ -118,7 +118,7 @@ int run_verify(const VerifyArgs& args) {
 std::function<int()> setup_verify(CLI::App& app) {
     auto args = std::make_shared<VerifyArgs>();
     app.add_option("cases", args->which, "the cases to run (several may be named)")
-        ->check(CLI::IsMember({"sod", "hydrostatic", "dambreak", "sedov", "all"}))
+        ->check(CLI::IsMember({"sod", "hydrostatic", "dambreak", "sedov", "noh", "all"}))
         ->capture_default_str();
     app.add_flag("--quick", args->quick, "the coarse, short variants (what `make test` runs, well under a minute)");
     app.add_option("--out", args->out, "folder for <case>.md, <case>.svg and summary.md")->capture_default_str();

@@ -103,8 +103,9 @@ void row(const PairRows& p, std::size_t i, OwnSums& own) {
     for (std::size_t k = n; k < n + lanes; ++k) inside[k] = inside[n - 1];  // padding lanes, masked below
 
     const V x = splat(at[0]), y = splat(at[1]), z = splat(at[2]), vx = splat(me.vx), vy = splat(me.vy), vz = splat(me.vz);
-    const V h = splat(at[3]), m = splat(me.m), rho = splat(me.rho), c = splat(me.c), por = splat(me.p_over_rho);
-    const V volume = splat(me.volume), norm = splat(p.norm), q1 = splat(p.q1), q2 = splat(p.q2);
+    // s6, s7: p / rho and V under FORM 1, p V^2 and 1 / m under FORM 0 (packed_particle.hpp).
+    const V h = splat(at[3]), m = splat(me.m), rho = splat(me.rho), c = splat(me.c), s6 = splat(me.s6);
+    const V s7 = splat(me.s7), own_work = s6 * s7, norm = splat(p.norm), q1 = splat(p.q1), q2 = splat(p.q2);
     const V half = splat(0.5), one = splat(1.0), zero = {};
     V lane_index = {};
     for (int l = 0; l < lanes; ++l) lane_index[l] = l;
@@ -112,7 +113,7 @@ void row(const PairRows& p, std::size_t i, OwnSums& own) {
 
     for (std::size_t k = 0; k < n; k += lanes) {
         // The partners: x y z h (their lines were just read by the filter), then vx vy vz m rho c
-        // p_over_rho volume (one cache line each).
+        // s6 s7 (one cache line each).
         V ox, oy, oz, oh, o[8];
         gather_position(p.positions, inside + k, ox, oy, oz, oh);
         gather(p.records, inside + k, o);
@@ -125,9 +126,11 @@ void row(const PairRows& p, std::size_t i, OwnSums& own) {
         // The five divisions of the pair: 1 / h_ij, h_ij / r = h_ij r / r^2 (the outer shell only:
         // where r <= h_ij the factor is h_ij^2, so that every factor is positive, coincident
         // particles included; and r^2 rather than r, so that the division need not wait for the
-        // square root), the viscosity's phi and 1 / rho_ij, and momentum.hpp's 1 / (rho_i rho_j).
+        // square root), the viscosity's phi and 1 / rho_ij, and momentum.hpp's 1 / (rho_i rho_j) under
+        // FORM 1 (FORM 0 passes 1: its 1 / m come precomputed in s7).
         const V visc_den = r2 + splat(0.01) * hij2;
-        const Reciprocals inv = reciprocals(hij, select((M)(r2 > hij2), r2, hij2), visc_den, rho + o[4], rho * o[4]);
+        const Reciprocals inv = reciprocals(hij, select((M)(r2 > hij2), r2, hij2), visc_den, rho + o[4],
+                                            Renormalise ? rho * o[4] : one);
         const V inv_h = inv.a, q = r * inv_h;
         const V inv_h2 = inv_h * inv_h;
         const V scale = norm * (Dimension == 2 ? inv_h2 * inv_h2 : inv_h2 * inv_h2 * inv_h);
@@ -153,17 +156,26 @@ void row(const PairRows& p, std::size_t i, OwnSums& own) {
         const V pi_all = (-q2 * (half * (c + o[5])) * phi + q1 * phi * phi) * (splat(2.0) * inv.d);
         const V pi = select((M)(v_dot_x < zero), pi_all, zero);
         // momentum.hpp's A_ij.
-        const V a = (por * rho + o[6] * o[4]) * inv.e + pi;
+        const V a = (Renormalise ? (s6 * rho + o[6] * o[4]) * inv.e : (s6 + o[6]) * s7 * o[7]) + pi;
         // add_to, lanes past the row's end masked.
         const M valid = (M)(lane_index < splat(static_cast<double>(n - k)));
         own.ax += select(valid, o[3] * a * gx, zero);
         own.ay += select(valid, o[3] * a * gy, zero);
         own.az += select(valid, o[3] * a * gz, zero);
-        own.drho += select(valid, o[7] * v_dot_g, zero);
-        own.de += select(valid, (o[7] * por + half * o[3] * pi) * v_dot_g, zero);
+        // continuity.hpp and energy.hpp: V_j v_ij . g_ij and V_j p_i / rho_i (FORM 1), v_ij . g_ij and
+        // p_i V_i^2 / m_i (FORM 0).
+        // FORM 0: a partner that does not interact (1 / m = 0) adds no pdV term (its m = 0 drops the rest).
+        if constexpr (Renormalise) {
+            own.drho += select(valid, o[7] * v_dot_g, zero);
+            own.de += select(valid, (o[7] * s6 + half * o[3] * pi) * v_dot_g, zero);
+        } else {
+            const M present = valid & (M)(o[7] > zero);
+            own.drho += select(present, v_dot_g, zero);
+            own.de += select(valid, (select(present, own_work, zero) + half * o[3] * pi) * v_dot_g, zero);
+        }
         if (k < forward) {  // add_reverse: g_ji = -g_ij, v_ji . g_ji = v_ij . g_ij
-            const V share[5] = {m * a * gx, m * a * gy, m * a * gz, volume * v_dot_g,
-                                (volume * o[6] + half * m * pi) * v_dot_g};
+            const V share[5] = {m * a * gx, m * a * gy, m * a * gz, Renormalise ? s7 * v_dot_g : v_dot_g,
+                                ((Renormalise ? s7 * o[6] : o[6] * o[7]) + half * m * pi) * v_dot_g};
             add_shares(p.received, inside + k, forward - k < lanes ? forward - k : std::size_t{lanes}, share);
         }
     }

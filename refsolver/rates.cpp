@@ -46,24 +46,27 @@ template <int Dimension, bool Renormalise>
     const double v_dot_g = dvx * gx + dvy * gy + dvz * gz;
     const double v_dot_x = dvx * dx + dvy * dy + dvz * dz;
     const double pi_ij = viscosity.pi(v_dot_x, r2, hij, 0.5 * (a.c + b.c), 0.5 * (a.rho + b.rho));
-    return {gx, gy, gz, v_dot_g, momentum_factor(a.p_over_rho, a.rho, b.p_over_rho, b.rho, pi_ij), pi_ij};
+    return {gx, gy, gz, v_dot_g, momentum_factor<Renormalise>(a.s6, a.s7, a.rho, b.s6, b.s7, b.rho, pi_ij), pi_ij};
 }
 
 // Sums of one particle: ax ay az drho de.
 using Sums = std::array<double, 5>;
 
-// Adds j's share of pair (i, j) to i's sums: m_j A_ij g_ij and the continuity and energy terms.
+// Adds j's share of pair (i, j) to i's sums: m_j A_ij g_ij and the continuity and energy terms
+// (FORM 1: the volume-weighted forms, FORM 0 the number-density forms, continuity.hpp).
+template <bool Renormalise>
 inline void add_to(Sums& sums, const PairTerms& t, const PackedParticle& i, const PackedParticle& j) {
     sums[0] -= j.m * t.a * t.gx, sums[1] -= j.m * t.a * t.gy, sums[2] -= j.m * t.a * t.gz;
-    sums[3] += continuity_term(j.volume, t.v_dot_g);
-    sums[4] += energy_term(j.volume, i.p_over_rho, j.m, t.pi, t.v_dot_g);
+    sums[3] += continuity_term<Renormalise>(j.s7, t.v_dot_g);
+    sums[4] += energy_term<Renormalise>(i.s6, i.s7, j.s7, j.m, t.pi, t.v_dot_g);
 }
 
 // Adds i's share of pair (i, j) to j's sums: g_ji = -g_ij and v_ji . g_ji = v_ij . g_ij.
+template <bool Renormalise>
 inline void add_reverse(Sums& sums, const PairTerms& t, const PackedParticle& i, const PackedParticle& j) {
     sums[0] += i.m * t.a * t.gx, sums[1] += i.m * t.a * t.gy, sums[2] += i.m * t.a * t.gz;
-    sums[3] += continuity_term(i.volume, t.v_dot_g);
-    sums[4] += energy_term(i.volume, j.p_over_rho, i.m, t.pi, t.v_dot_g);
+    sums[3] += continuity_term<Renormalise>(i.s7, t.v_dot_g);
+    sums[4] += energy_term<Renormalise>(j.s6, j.s7, i.s7, i.m, t.pi, t.v_dot_g);
 }
 
 // The stress terms of pair (i, j) of a deck with *MAT_ELASTIC parts (stress.hpp; sph-algorithms.md
@@ -200,8 +203,8 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
                 const double dx = me.x - o.x, dy = me.y - o.y, dz = me.z - o.z;
                 const PairTerms terms = pair_terms<Dimension, Renormalise>(
                     me, o, bi, correction[j], dx, dy, dz, dx * dx + dy * dy + dz * dz, norm, viscosity);
-                add_to(own, terms, me, o);
-                add_reverse(received[j], terms, me, o);
+                add_to<Renormalise>(own, terms, me, o);
+                add_reverse<Renormalise>(received[j], terms, me, o);
                 if constexpr (Solid) {
                     const StressTerms st = stress_terms(stress[i], stress[j], me, o, terms, dx, dy, dz);
                     add_stress(own, own_gradient, st, o.m, o.volume, 1.0);
@@ -217,7 +220,7 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
                 const double dx = me.x - o.x, dy = me.y - o.y, dz = me.z - o.z;
                 const PairTerms terms = pair_terms<Dimension, Renormalise>(me, o, bi, correction[j], dx, dy, dz,
                                                                            dx * dx + dy * dy + dz * dz, norm, viscosity);
-                add_to(own, terms, me, o);
+                add_to<Renormalise>(own, terms, me, o);
                 if constexpr (Solid)
                     add_stress(own, own_gradient, stress_terms(stress[i], stress[j], me, o, terms, dx, dy, dz), o.m,
                                o.volume, 1.0);
@@ -256,7 +259,7 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
                 continue;
             }
             if (Dimension == 2) s.az[i] = 0.0;
-            s.drho[i] *= s.rho[i];  // continuity.hpp: rho_i sum_j V_j v_ij . g_ij
+            s.drho[i] *= continuity_factor<Renormalise>(s.rho[i], s.m[i]);  // continuity.hpp
             s.dh[i] = smoothing_length_rate(rp.h_rule, Dimension, s.h[i], s.rho[i], s.drho[i]);
         }
     }
@@ -265,7 +268,8 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
 }  // namespace
 
 void compute_rates(Particles& s, const NeighbourList& list, const RateParameters& parameters, RateScratch& scratch) {
-    // Pack what neighbours are read for, ghosts included; p / rho and m / rho once per particle.
+    // Pack what neighbours are read for, ghosts included; the formulation's two values (continuity.hpp)
+    // and V = m / rho once per particle.
     // The SIMD loop reads the same values from two arrays (rates.hpp), the scalar loop from one.
     const std::size_t n = s.total();
     const bool simd = parameters.simd && !parameters.solid && best_pair_rows(parameters.avx512).run;
@@ -278,15 +282,16 @@ void compute_rates(Particles& s, const NeighbourList& list, const RateParameters
     double largest = 0;  // the largest coordinate magnitude: the single-precision filter's rounding scales with it
 #pragma omp parallel for schedule(static) reduction(max : largest) num_threads(parameters.threads)
     for (std::size_t i = 0; i < n; ++i) {
-        const double m = s.interacting[i] ? s.m[i] : 0.0, p_over_rho = s.p[i] / s.rho[i], volume = m / s.rho[i];
+        const double m = s.interacting[i] ? s.m[i] : 0.0, volume = m / s.rho[i];
+        const FormValues f = form_values(parameters.renormalise, s.p[i], s.rho[i], m, s.m[i]);
         if (simd) {
             positions[i] = {s.x[i], s.y[i], s.z[i], s.h[i]};
             positions_f[i] = {static_cast<float>(s.x[i]), static_cast<float>(s.y[i]), static_cast<float>(s.z[i]),
                               static_cast<float>(s.h[i])};
             largest = std::max({largest, std::abs(s.x[i]), std::abs(s.y[i]), std::abs(s.z[i])});
-            records[i] = {s.vx[i], s.vy[i], s.vz[i], m, s.rho[i], s.c[i], p_over_rho, volume};
+            records[i] = {s.vx[i], s.vy[i], s.vz[i], m, s.rho[i], s.c[i], f.s6, f.s7};
         } else {
-            packed[i] = {s.x[i], s.y[i], s.z[i], s.vx[i], s.vy[i], s.vz[i], s.h[i], m, s.rho[i], s.c[i], p_over_rho, volume};
+            packed[i] = {s.x[i], s.y[i], s.z[i], s.vx[i], s.vy[i], s.vz[i], s.h[i], m, s.rho[i], s.c[i], f.s6, f.s7, volume};
         }
     }
     // Rounding a coordinate to float moves it by at most 2^-24 of `largest`; a separation in single

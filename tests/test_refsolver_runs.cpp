@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <string>
 
 #include "test_refsolver_decks.hpp"
 
@@ -126,6 +127,36 @@ TEST_CASE("refsolver: without viscosity each particle stays on its adiabat, e / 
     CHECK(largest_drift < 1e-4);   // ... along each particle's adiabat (3e-6; the former form: 2.6e-3)
 }
 
+// continuity.hpp: under FORM 0 the density is the number density, d rho_i/dt = m_i sum_j v_ij . grad W_ij,
+// so with h fixed each particle's density changes exactly as m_i sum_j W_ij does (up to the time
+// integration): for two particles of masses 1 and 2, by m_i (W(r) - W(r0)). The volume-weighted form
+// (FORM 1; FORM 0 before Nov 2026) does not: it changes particle 1 by rho_1 V_2 (...), twice as much
+// here at the start, which left the Noh implosion too dense: 21.4 for 16 (docs/verification.md §5).
+TEST_CASE("refsolver: under FORM 0 the density follows m_i sum_j W_ij of the positions") {
+    TestDeck deck;
+    deck.sphini = 1.0;
+    deck.hmin = deck.hmax = 1.0;
+    deck.eos = "*EOS_LINEAR_POLYNOMIAL\n1,0,0,0,0,0.4,0.4,0\n1.0,1\n";  // ideal gas, e0 = 1
+    deck.particles = {{0, 0, 0, 1.0, 0.3, 0, 0}, {1.5, 0, 0, 2.0, -0.3, 0, 0}};
+    deck.endtim = 1.5;
+    deck.tssfac = 0.05;
+    auto setup = solver_for(deck);
+    REQUIRE_MESSAGE(setup.simulation, unsupported_text(setup));
+    const auto kernel = [](double r) {  // 3D cubic spline at h = 1 (kernel.hpp)
+        const double q = r;
+        const double theta = q < 1 ? 1 - 1.5 * q * q + 0.75 * q * q * q : q < 2 ? 0.25 * (2 - q) * (2 - q) * (2 - q) : 0.0;
+        return theta / std::acos(-1.0);
+    };
+    refsolver::Simulation& sim = *setup.simulation;
+    const double w0 = kernel(1.5);
+    sim.run();
+    const auto& st = sim.state();
+    const double w = kernel(std::hypot(st.x[1] - st.x[0], st.y[1] - st.y[0]));
+    CHECK(w - w0 > 0.05);  // they came closer: the kernel value grew by far more than the tolerance
+    CHECK(st.rho[0] - 1.0 == doctest::Approx(1.0 * (w - w0)).epsilon(1e-4));
+    CHECK(st.rho[1] - 1.0 == doctest::Approx(2.0 * (w - w0)).epsilon(1e-4));
+}
+
 TEST_CASE("refsolver: an isolated particle falls under *LOAD_BODY_Y as y0 - g t^2 / 2") {
     TestDeck deck;
     deck.sphini = 0.1;
@@ -205,6 +236,32 @@ TEST_CASE("refsolver: BOXID deactivates a particle that leaves the box") {
     CHECK(st.x[0] == doctest::Approx(1.0).epsilon(0.05));
     CHECK(st.active[1] == 1);
     CHECK(setup.simulation->totals().active == 1);
+}
+
+// A particle that does not interact yet (its part's *SECTION_SPH START is later) stays in the neighbour
+// lists but is no neighbour: under FORM 0 the number-density terms (continuity.hpp) must not count it
+// either, though they carry no factor of its mass or volume.
+TEST_CASE("refsolver: a particle whose part has not started changes no density, FORM 0 and 1") {
+    for (int form : {0, 1}) {
+        CAPTURE(form);
+        const std::string deck = fmt::format(
+            "*KEYWORD\n*CONTROL_TERMINATION\n0.3\n*CONTROL_TIMESTEP\n0,0.3\n"
+            "*CONTROL_SPH\n1,0,1e20,3,150,{}\n*CONTROL_BULK_VISCOSITY\n1.5,0.06\n"
+            "*SECTION_SPH\n1,1.2,0.2,2.0,0.1\n*SECTION_SPH\n2,1.2,0.2,2.0,0.1,1e20,10.0\n"
+            "*PART\nmoving\n1,1,1,1\n*PART\nnot yet\n2,2,1,1\n*MAT_NULL\n1,1.0,-1e30\n"
+            "*EOS_MURNAGHAN\n1,7,100,1\n*NODE\n1,0,0,0\n2,0.25,0,0\n*ELEMENT_SPH\n1,1,1.0\n2,2,1.0\n"
+            "*SET_NODE_LIST\n100\n1\n*INITIAL_VELOCITY\n100\n0.5,0,0\n*END\n",
+            form);
+        const engine::CheckResult r = engine::check_buffer(deck, "test.k");
+        auto setup = refsolver::Simulation::create(r.model);
+        REQUIRE_MESSAGE(setup.simulation, unsupported_text(setup));
+        setup.simulation->run();
+        const auto& st = setup.simulation->state();
+        CHECK(st.active[1] == 1);
+        CHECK(std::abs(st.x[0] - st.x[1]) < 0.15);  // well within the support (0.2) at the end
+        CHECK(st.rho[0] == 1.0);
+        CHECK(st.vx[0] == 0.5);
+    }
 }
 
 TEST_CASE("refsolver: FORM 2 is refused with a message naming FORM and what is supported") {

@@ -361,9 +361,11 @@ TEST_CASE("verification decks: every deck in decks/verification passes sphdeck c
         INFO(entry.path().filename().string());
         CHECK(errors == 0);
         CHECK(r.model.particles.size() > 0);
-        CHECK(r.model.symmetry_planes.size() >= 3);
+        // The Noh decks' outer edges are free (the gas streams in): only the two axes are planes.
+        const bool noh = entry.path().filename().string().starts_with("noh_");
+        CHECK(r.model.symmetry_planes.size() >= (noh ? 2u : 3u));
     }
-    CHECK(decks == 13);  // sod x 3, hydrostatic x 2, dam break x 2 + cross-check x 2, sedov x 4
+    CHECK(decks == 17);  // sod x 3, hydrostatic x 2, dam break x 2 + cross-check x 2, sedov x 4, noh x 4
 }
 
 // The Sod strips expand along x only (by rho_L / rho*_L = 2.35), while DERIV 0 in 2D grows h only as
@@ -413,5 +415,35 @@ TEST_CASE("verification decks: the Sedov decks keep FORM 1, HMIN 1, HMAX 5 and E
         }
         CHECK(hot == 8);
         CHECK(energy == Approx(0.25 + 2.5e-6).epsilon(1e-6));  // E / 4 in the quarter, plus the ambient gas
+    }
+}
+
+// The Noh decks (docs/verification.md §5): cold gas (p0 = 1e-6) streaming at unit speed towards the
+// origin, one part, FORM 0, and no plane but the two axes (the outer edges are free).
+TEST_CASE("verification decks: the Noh decks stream cold gas inward at unit speed") {
+    for (int n : {35, 50, 70, 100}) {
+        const std::filesystem::path deck = std::filesystem::path(SPHDECK_SOURCE_DIR) / "decks" / "verification" /
+                                           ("noh_2d_" + std::to_string(n) + ".k");
+        INFO(deck.filename().string());
+        const sphdeck::engine::CheckResult r = sphdeck::engine::check_file(deck.string());
+        CHECK(r.model.controls.sph.form.value == sphdeck::model::Form::Default);
+        CHECK(r.model.symmetry_planes.size() == 2);
+        const auto setup = sphdeck::refsolver::Simulation::create(r.model);
+        REQUIRE(setup.simulation);
+        const sphdeck::refsolver::ParticleState& s = setup.simulation->state();
+        REQUIRE(s.size() == static_cast<std::size_t>(n * n));
+        double mass = 0, kinetic = 0, internal = 0, worst = 0;
+        for (std::size_t i = 0; i < s.size(); ++i) {
+            const double r_i = std::hypot(s.x[i], s.y[i]);
+            const double radial = (s.vx[i] * s.x[i] + s.vy[i] * s.y[i]) / r_i;
+            worst = std::max(worst, std::abs(radial + 1.0));
+            CHECK(std::abs(s.vx[i] * s.y[i] - s.vy[i] * s.x[i]) < 1e-6 * r_i);  // no swirl
+            mass += s.mass[i], kinetic += 0.5 * s.mass[i] * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]);
+            internal += s.mass[i] * s.e[i];
+        }
+        CHECK(worst < 1e-6);  // unit speed to the digits a 10-column field holds
+        CHECK(mass == Approx(1.0));
+        CHECK(kinetic == Approx(0.5).epsilon(1e-6));
+        CHECK(internal == Approx(1.5e-6).epsilon(1e-6));  // p0 = 1e-6: e = p0 / ((gamma - 1) rho0)
     }
 }

@@ -11,6 +11,7 @@ const std::vector<VerificationCase>& verification_cases() {
          "TrixiParticles",
          run_dam_break},
         {"sedov", "Sedov-Taylor blast wave against the similarity solution", run_sedov},
+        {"noh", "Noh implosion (converging shock) against the exact solution", run_noh},
     };
     return cases;
 }

@@ -17,6 +17,8 @@ CaseResult run_hydrostatic(const CaseOptions& options);
 CaseResult run_dam_break(const CaseOptions& options);
 // Sedov-Taylor blast wave (§4): shock radius and peak density at two resolutions, energy conservation.
 CaseResult run_sedov(const CaseOptions& options);
+// Noh implosion (§5): post-shock density and shock radius of a converging shock at two resolutions.
+CaseResult run_noh(const CaseOptions& options);
 
 struct VerificationCase {
     std::string_view name;  // as typed on the command line
