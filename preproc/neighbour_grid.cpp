@@ -38,15 +38,19 @@ NeighbourGrid::NeighbourGrid(std::span<const double> x, std::span<const double> 
     const std::size_t n = x.size();
     const std::span<const double> axes[3] = {x, y, z};
     std::array<double, 3> lo{0, 0, 0}, hi{0, 0, 0};
+    // The bounding box of the finite coordinates, in one pass (minima and maxima: any order).
     const int threads = bin_threads(n);
-    for (int a = 0; a < 3; ++a) {  // the bounding box of the finite coordinates (min and max: any order)
-        double l = std::numeric_limits<double>::infinity(), h = -l;
-        const double* v = axes[a].data();
-#pragma omp parallel for num_threads(threads) reduction(min : l) reduction(max : h) if (threads > 1)
-        for (std::size_t i = 0; i < n; ++i)
-            if (std::isfinite(v[i])) l = std::min(l, v[i]), h = std::max(h, v[i]);
-        if (l <= h) lo[a] = l, hi[a] = h;
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    double lx = inf, ly = inf, lz = inf, hx = -inf, hy = -inf, hz = -inf;
+#pragma omp parallel for num_threads(threads) reduction(min : lx, ly, lz) reduction(max : hx, hy, hz) if (threads > 1)
+    for (std::size_t i = 0; i < n; ++i) {
+        if (std::isfinite(x[i])) lx = std::min(lx, x[i]), hx = std::max(hx, x[i]);
+        if (std::isfinite(y[i])) ly = std::min(ly, y[i]), hy = std::max(hy, y[i]);
+        if (std::isfinite(z[i])) lz = std::min(lz, z[i]), hz = std::max(hz, z[i]);
     }
+    const double found_lo[3] = {lx, ly, lz}, found_hi[3] = {hx, hy, hz};
+    for (int a = 0; a < 3; ++a)
+        if (found_lo[a] <= found_hi[a]) lo[a] = found_lo[a], hi[a] = found_hi[a];
     origin_ = lo;
     double extent = 0;
     for (int a = 0; a < 3; ++a) extent = std::max(extent, hi[a] - lo[a]);
