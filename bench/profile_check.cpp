@@ -1,11 +1,13 @@
 // Where the time of `sphdeck check` goes, phase by phase, in one process (issue 30 item 1):
 // reading, decoding into the model, the rules' id indexes, the geometry preview and its parts
-// (grid binning, nearest neighbours, neighbour counts), then each rule family. Wall seconds per
-// phase (threads: OMP_NUM_THREADS) and the peak RSS reached after it in the first run.
+// (grid binning, nearest neighbours, neighbour counts), then each rule family. Wall and CPU
+// seconds per phase (threads: OMP_NUM_THREADS; the share is of the CPU seconds) and the peak RSS
+// reached after it in the first run.
 //   profile_check DECK [REPEATS = 3]     (prints the median of REPEATS for every phase)
 // The preview's parts are timed again on their own, on the model's positions of the first part
 // (exact for the benchmark deck: one part, particles in node order); their sum is not the preview.
 #include <sys/resource.h>
+#include <time.h>
 
 #include <algorithm>
 #include <chrono>
@@ -34,8 +36,14 @@ double peak_mb() {
     return static_cast<double>(u.ru_maxrss) / 1024.0;
 }
 
+double cpu_now() {  // process CPU seconds (every thread): on one thread, the time a busy machine inflates least
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 struct Phase {
-    std::vector<double> seconds;
+    std::vector<double> seconds, cpu;
     double peak = 0;
 };
 
@@ -46,8 +54,10 @@ template <typename F>
 auto timed(const std::string& name, F&& f) {
     if (!phases.count(name)) order.push_back(name);
     const auto t0 = std::chrono::steady_clock::now();
+    const double c0 = cpu_now();
     auto finish = [&] {
         Phase& p = phases[name];
+        p.cpu.push_back(cpu_now() - c0);
         p.seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         if (p.seconds.size() == 1) p.peak = peak_mb();  // the first run's: later ones start higher
     };
@@ -107,15 +117,15 @@ int main(int argc, char** argv) {
     }
     const int repeats = argc > 2 ? std::max(1, std::atoi(argv[2])) : 3;
     for (int r = 0; r < repeats; ++r) one_check(argv[1]);
-    double total = 0;
+    double total = 0, total_cpu = 0;
     for (const std::string& name : order)
-        if (name.rfind("  ", 0) != 0) total += median(phases[name].seconds);
-    std::printf("%-50s %9s %7s %10s\n", "phase (median of runs)", "seconds", "share", "peak MB");
+        if (name.rfind("  ", 0) != 0) total += median(phases[name].seconds), total_cpu += median(phases[name].cpu);
+    std::printf("%-50s %9s %9s %7s %10s\n", "phase (median of runs)", "wall s", "cpu s", "share", "peak MB");
     for (const std::string& name : order) {
-        const double s = median(phases[name].seconds);
-        std::printf("%-50s %9.4f %6.1f%% %10.1f\n", name.c_str(), s, name.rfind("  ", 0) == 0 ? 0.0 : 100 * s / total,
-                    phases[name].peak);
+        const double s = median(phases[name].seconds), c = median(phases[name].cpu);
+        std::printf("%-50s %9.4f %9.4f %6.1f%% %10.1f\n", name.c_str(), s, c,
+                    name.rfind("  ", 0) == 0 ? 0.0 : 100 * c / total_cpu, phases[name].peak);
     }
-    std::printf("%-50s %9.4f\n", "sum of the phases above (parts excluded)", total);
+    std::printf("%-50s %9.4f %9.4f\n", "sum of the phases above (parts excluded)", total, total_cpu);
     return 0;
 }
