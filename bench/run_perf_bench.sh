@@ -3,7 +3,8 @@
 # printing each figure beside its goal.
 #
 #   bash bench/run_perf_bench.sh BUILD_DIR                 the 1M-particle deck: 1 core, 2 threads, RSS, smooth
-#   BENCH_MANY=1 bash bench/run_perf_bench.sh BUILD_DIR    the many-core figures (10M-particle deck), under 60 s
+#   BENCH_MANY=1 bash bench/run_perf_bench.sh BUILD_DIR    the many-core figures (10M-particle deck), under 60 s,
+#                                                          and profile_check's split on every core when built
 #
 # BENCH_RUNS (5; 3 with BENCH_MANY), BENCH_NODES (1000000), BENCH_MANY_NODES (10000000: the big deck),
 # BENCH_STRICT (0).
@@ -96,6 +97,11 @@ if [ "${BENCH_MANY:-0}" = 1 ]; then
       "<= 1.0" "$(awk -v r="$many10_rss" -v d="$big10" 'BEGIN { print (r <= d) }')"
   printf '%-52s %12.3f   (the reading and decoding alone)\n' "check --no-geometry, $tag deck, $cores threads (s)" "$nogeo10_s"
   printf '%-52s %12s\n' "1M deck: 1 thread / $cores threads" "$(awk -v a="$one1_s" -v b="$many1_s" 'BEGIN { printf "%.2fx", a / b }')"
+  if [ -x "$build/profile_check" ]; then  # where the time goes on every core: the serial phases show here
+    echo
+    echo "== the split of one check of the $tag deck on $cores threads (profile_check, 1 run)"
+    OMP_NUM_THREADS="$cores" "$build/profile_check" bench/out/big10m.k 1
+  fi
   [ "${BENCH_STRICT:-0}" = 1 ] && [ "$missed" = 1 ] && exit 1
   exit 0
 fi
