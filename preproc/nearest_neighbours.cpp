@@ -71,15 +71,22 @@ inline void scan_range(const NeighbourGrid& g, std::uint32_t k, std::uint32_t b,
     best2 = m, best = at;
 }
 
-// The same, leaving k itself out.
+// The same, leaving k itself out. Each range starts a running minimum of its own, merged after it:
+// the short ranges' minima then overlap in the processor instead of waiting on one chain, and the
+// merge keeps the first point of the smallest distance, as one scan in order would.
 inline void scan(const NeighbourGrid& g, std::uint32_t k, std::uint32_t b, std::uint32_t e, double& best2,
                  std::uint32_t& best) {
+    double m = std::numeric_limits<double>::infinity();
+    std::uint32_t at = NearestNeighbours::none;
     if (k >= b && k < e) {
-        scan_range(g, k, b, k, best2, best);
-        scan_range(g, k, k + 1, e, best2, best);
+        scan_range(g, k, b, k, m, at);
+        scan_range(g, k, k + 1, e, m, at);
     } else {
-        scan_range(g, k, b, e, best2, best);
+        scan_range(g, k, b, e, m, at);
     }
+    const bool closer = m < best2;
+    best2 = closer ? m : best2;
+    best = closer ? at : best;
 }
 
 // Calls f(begin, end) for the cells at Chebyshev distance exactly `reach` from cell c.
