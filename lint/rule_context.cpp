@@ -33,7 +33,9 @@ const std::vector<std::uint32_t>& RuleContext::particle_nodes() const {
     const model::IdIndex& nodes = node_index();
     particle_nodes_ = std::make_unique<std::vector<std::uint32_t>>(model.particles.size(), no_node);
     auto& out = *particle_nodes_;
-    for (std::size_t i = 0; i < out.size(); ++i)
+    const std::size_t n = out.size();
+#pragma omp parallel for schedule(static) if (n > 65536)
+    for (std::size_t i = 0; i < n; ++i)
         if (auto k = nodes.find(model.particles.node[i])) out[i] = static_cast<std::uint32_t>(*k);
     return out;
 }

@@ -17,7 +17,7 @@ void check_densities(RuleContext& c);      // rules_density.cpp: SPH119
 void check_sph_dimension(RuleContext& c);  // rules_dimension.cpp: SPH120-SPH121
 // The geometry rules' preview (null without particles), computed before the other rules run;
 // check_preview reads it from RuleContext::preview.
-std::shared_ptr<const preproc::Preview> compute_rules_preview(const model::Model& model);
+std::shared_ptr<const preproc::Preview> compute_rules_preview(const model::Model& model, bool particle_arrays = false);
 void check_preview(RuleContext& c);        // rules_preview.cpp: SPH090, SPH113-SPH115, SPH118
 void check_radioss(RuleContext& c);        // rules_radioss*.cpp: RAD002-RAD029 (Radioss decks only)
 

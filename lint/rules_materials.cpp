@@ -8,6 +8,12 @@
 #include <set>
 #include <unordered_set>
 
+#ifdef _OPENMP
+#include <omp.h>
+#else
+static int omp_get_max_threads() { return 1; }
+#endif
+
 #include "lint/rules.hpp"
 #include "model/id_index.hpp"
 
@@ -28,25 +34,44 @@ double number(const model::KeywordRecord& r, std::string_view field, double fall
     return f && f->valid ? f->number : fallback;
 }
 
-// Runs `f(particle, part stats)` over particles, looking a part up once per run of equal ids
+// Runs `f(particle, part stats)` over particles [from, to), looking a part up once per run of equal ids
 // (particles come in blocks of one part).
 template <typename F>
-void for_each_particle(const model::Particles& p, std::map<Id, PartStats>& parts, F f) {
+void for_each_particle(const model::Particles& p, std::size_t from, std::size_t to, std::map<Id, PartStats>& parts, F f) {
     long long last = 0;
     PartStats* stats = nullptr;
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t i = from; i < to; ++i) {
         if (!stats || p.part[i] != last) last = p.part[i], stats = &parts[std::to_string(last)];
         f(i, *stats);
     }
 }
+template <typename F>
+void for_each_particle(const model::Particles& p, std::map<Id, PartStats>& parts, F f) {
+    for_each_particle(p, 0, p.size(), parts, f);
+}
 
+// The parts' extents, on every thread: each takes a run of particles, and the runs' boxes are
+// merged (minima and maxima: the same in any order).
 std::map<Id, PartStats> particle_parts(const model::Model& m, const std::vector<std::uint32_t>& node_of) {
-    std::map<Id, PartStats> parts;
-    for_each_particle(m.particles, parts, [&](std::size_t i, PartStats& s) {
-        if (node_of[i] == RuleContext::no_node) return;
-        const double x[3] = {m.nodes.x[node_of[i]], m.nodes.y[node_of[i]], m.nodes.z[node_of[i]]};
-        for (int a = 0; a < 3; ++a) s.lo[a] = std::min(s.lo[a], x[a]), s.hi[a] = std::max(s.hi[a], x[a]);
-    });
+    const std::size_t n = m.particles.size();
+    const int threads = n > 65536 ? std::max(1, omp_get_max_threads()) : 1;
+    std::vector<std::map<Id, PartStats>> runs(static_cast<std::size_t>(threads));
+#pragma omp parallel for num_threads(threads) schedule(static, 1) if (threads > 1)
+    for (int t = 0; t < threads; ++t) {
+        const std::size_t from = n * static_cast<std::size_t>(t) / static_cast<std::size_t>(threads);
+        const std::size_t to = n * static_cast<std::size_t>(t + 1) / static_cast<std::size_t>(threads);
+        for_each_particle(m.particles, from, to, runs[static_cast<std::size_t>(t)], [&](std::size_t i, PartStats& s) {
+            if (node_of[i] == RuleContext::no_node) return;
+            const double x[3] = {m.nodes.x[node_of[i]], m.nodes.y[node_of[i]], m.nodes.z[node_of[i]]};
+            for (int a = 0; a < 3; ++a) s.lo[a] = std::min(s.lo[a], x[a]), s.hi[a] = std::max(s.hi[a], x[a]);
+        });
+    }
+    std::map<Id, PartStats> parts = std::move(runs[0]);
+    for (std::size_t t = 1; t < runs.size(); ++t)
+        for (const auto& [id, box] : runs[t]) {
+            PartStats& s = parts[id];
+            for (int a = 0; a < 3; ++a) s.lo[a] = std::min(s.lo[a], box.lo[a]), s.hi[a] = std::max(s.hi[a], box.hi[a]);
+        }
     return parts;
 }
 

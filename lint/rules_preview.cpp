@@ -1,11 +1,13 @@
 // SPH090, SPH113-SPH115, SPH118: rules on the preview's geometry (spacing, h0, neighbour counts).
 // The preview is computed once per check, here; rules never measure geometry themselves.
+#include <array>
 #include <cmath>
 #include <fmt/format.h>
 #include <memory>
 
 #include "lint/rules.hpp"
 #include "preproc/preview.hpp"
+#include "preproc/smoothing_length.hpp"
 
 namespace sphdeck::lint {
 namespace {
@@ -20,6 +22,22 @@ std::size_t first_particle(const Preview& p, std::size_t q) {
     for (std::size_t i = 0; i < p.particles.part.size(); ++i)
         if (p.particles.part[i] == q && p.particles.located[i]) return i;
     return p.particles.part.size();
+}
+
+// The mass particle i carries: the preview's, or computed as the preview does when it kept no
+// per-particle arrays.
+double particle_mass(const RuleContext& c, const Preview& p, std::size_t i) {
+    if (!p.particles.mass.empty()) return p.particles.mass[i];
+    return preproc::particle_mass(c.model.particles.mass[i], c.model.particles.volume[i] != 0,
+                                  p.parts[p.particles.part[i]].density);
+}
+
+// Particle i's position (it is located): the preview's, or its node's in the model.
+std::array<double, 3> particle_position(const RuleContext& c, const Preview& p, std::size_t i) {
+    if (!p.particles.x.empty()) return {p.particles.x[i], p.particles.y[i], p.particles.z[i]};
+    const auto at = c.node_index().find(c.model.particles.node[i]);
+    if (!at) return {0.0, 0.0, 0.0};
+    return {c.model.nodes.x[*at], c.model.nodes.y[*at], c.model.nodes.z[*at]};
 }
 
 // SPH090: MEMORY against the largest estimated neighbour count.
@@ -65,7 +83,7 @@ void check_mass_spacing(RuleContext& c, const Preview& p) {
     for (std::size_t i = 0; i < n; ++i) {
         const std::uint32_t q = p.particles.part[i];
         if (ratio[q] <= 2.0 && ratio[q] >= 0.5) continue;
-        const double off = std::abs(p.particles.mass[i] - p.parts[q].mass_median);
+        const double off = std::abs(particle_mass(c, p, i) - p.parts[q].mass_median);
         if (at[q] == n || off < closest[q]) at[q] = i, closest[q] = off;
     }
     for (std::size_t q = 0; q < p.parts.size(); ++q) {
@@ -84,10 +102,11 @@ void check_coincident(RuleContext& c, const Preview& p) {
     const auto& ids = c.model.particles.node;
     for (std::size_t k = 0; k < p.coincident.size() && k < max_listed; ++k) {
         const auto [a, b] = p.coincident[k];
+        const auto [x, y, z] = particle_position(c, p, b);
         std::string total = k == 0 && p.coincident.size() > 1 ? fmt::format(" ({} pairs in all)", p.coincident.size()) : "";
         c.report("SPH114", c.particle_span(b),
                  fmt::format("particle {} is at the same position as particle {} ({:.6g}, {:.6g}, {:.6g}){}", ids[b],
-                             ids[a], p.particles.x[b], p.particles.y[b], p.particles.z[b], total))
+                             ids[a], x, y, z, total))
             .notes.push_back({c.particle_span(a), fmt::format("particle {} is here", ids[a])});
     }
 }
@@ -154,9 +173,13 @@ void check_few_neighbours(RuleContext& c, const Preview& p) {
 
 }  // namespace
 
-std::shared_ptr<const Preview> compute_rules_preview(const model::Model& model) {
+// The rules need the per-particle arrays of part, location and nearest distance only; the others
+// (positions, masses, h, counts) are made when the preview is kept for `sphdeck smooth`.
+std::shared_ptr<const Preview> compute_rules_preview(const model::Model& model, bool particle_arrays) {
     if (model.particles.size() == 0) return nullptr;
-    return std::make_shared<const Preview>(preproc::compute_preview(model));
+    preproc::PreviewOptions options;
+    options.particle_arrays = particle_arrays;
+    return std::make_shared<const Preview>(preproc::compute_preview(model, options));
 }
 
 void check_preview(RuleContext& c) {

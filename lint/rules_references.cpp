@@ -78,8 +78,36 @@ void report_undefined_parts(RuleContext& c, const PartGroups& missing, bool part
 
 // REF001 and REF002 for particles: grouped per missing id, so a million bad particles make a
 // handful of findings, each at the first particle that names it.
+// Whether some particle names a missing node or an undefined part (a part id that could not be
+// read, below 0, is DK002's). One pass on every thread; each thread looks a part up once per run.
+bool any_missing(const RuleContext& c, const model::IdIndex& nodes) {
+    const model::Particles& p = c.model.particles;
+    const std::size_t n = p.size();
+    bool missing = false;
+#pragma omp parallel reduction(|| : missing) if (n > 65536)
+    {
+        std::unordered_map<long long, bool> known;  // this thread's part lookups
+#pragma omp for schedule(static)
+        for (std::size_t i = 0; i < n; ++i) {
+            if (missing) continue;  // this thread found one: the answer is known
+            if (!nodes.find(p.node[i])) {
+                missing = true;
+            } else if (p.part[i] >= 0 && (i == 0 || p.part[i] != p.part[i - 1])) {
+                auto it = known.find(p.part[i]);
+                if (it == known.end())
+                    it = known.emplace(p.part[i], c.model.part(std::to_string(p.part[i])) != nullptr).first;
+                missing = !it->second;
+            }
+        }
+    }
+    return missing;
+}
+
 void check_particles(RuleContext& c, const model::IdIndex& nodes) {
     const model::Particles& p = c.model.particles;
+    // The usual deck names only nodes and parts that exist: the grouping below runs in particle
+    // order, on one thread, only when something is missing.
+    if (!any_missing(c, nodes)) return;
     std::map<long long, std::pair<std::size_t, std::size_t>> missing_node;  // id → first particle, count
     PartGroups missing_part;
     bool part_is_node = true;  // on every particle whose part is undefined

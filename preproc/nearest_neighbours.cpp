@@ -71,15 +71,22 @@ inline void scan_range(const NeighbourGrid& g, std::uint32_t k, std::uint32_t b,
     best2 = m, best = at;
 }
 
-// The same, leaving k itself out.
+// The same, leaving k itself out. Each range starts a running minimum of its own, merged after it:
+// the short ranges' minima then overlap in the processor instead of waiting on one chain, and the
+// merge keeps the first point of the smallest distance, as one scan in order would.
 inline void scan(const NeighbourGrid& g, std::uint32_t k, std::uint32_t b, std::uint32_t e, double& best2,
                  std::uint32_t& best) {
+    double m = std::numeric_limits<double>::infinity();
+    std::uint32_t at = NearestNeighbours::none;
     if (k >= b && k < e) {
-        scan_range(g, k, b, k, best2, best);
-        scan_range(g, k, k + 1, e, best2, best);
+        scan_range(g, k, b, k, m, at);
+        scan_range(g, k, k + 1, e, m, at);
     } else {
-        scan_range(g, k, b, e, best2, best);
+        scan_range(g, k, b, e, m, at);
     }
+    const bool closer = m < best2;
+    best2 = closer ? m : best2;
+    best = closer ? at : best;
 }
 
 // Calls f(begin, end) for the cells at Chebyshev distance exactly `reach` from cell c.
@@ -405,6 +412,9 @@ NeighbourCounts count_neighbours(std::span<const double> x, std::span<const doub
     // change the grid), and whether one support serves every point.
     double largest_support = 0, largest_tolerance = 0;
     bool uniform = true;
+    const int threads = grid_threads(n);
+#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1) \
+    reduction(max : largest_support, largest_tolerance) reduction(&& : uniform)
     for (std::size_t i = 0; i < n; ++i) {
         largest_support = std::max(largest_support, support_of(i));
         largest_tolerance = std::max(largest_tolerance, tolerance_of(i));
@@ -426,9 +436,12 @@ NeighbourCounts count_neighbours(std::span<const double> x, std::span<const doub
     const bool sampled = work > pair_budget;
     // Supports in grid order: one value when uniform (and not sampled, which reads an array).
     std::vector<double> s(uniform && !sampled ? 1 : n);
-    if (s.size() == 1) s[0] = support_of(0);
-    else
+    if (s.size() == 1) {
+        s[0] = support_of(0);
+    } else {
+#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
         for (std::size_t k = 0; k < n; ++k) s[k] = support_of(order[k]);
+    }
     std::vector<std::uint64_t> count(n, 0);
     std::vector<std::uint32_t> close_points;
     if (sampled) {
@@ -441,6 +454,7 @@ NeighbourCounts count_neighbours(std::span<const double> x, std::span<const doub
         count_symmetric<false>(g, s, largest_tolerance * largest_tolerance, count, close_points);
     }
     s = {};
+#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
     for (std::size_t k = 0; k < n; ++k) out.count[order[k]] = static_cast<std::uint32_t>(count[k]);
     count = {};
     // Coincident pairs: the few points with a pair inside the largest tolerance, checked exactly.

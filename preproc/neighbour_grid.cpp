@@ -4,11 +4,33 @@
 #include <cmath>
 #include <limits>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 namespace sphdeck::preproc {
 
 namespace {
 constexpr std::uint32_t axis_bits = 21;  // hashed keys: 21 bits per axis
 constexpr double max_axis_cells = double(1u << axis_bits) - 2;
+
+// Threads for binning: OMP_NUM_THREADS (or --threads) decides; inside a parallel region (a
+// solver's loop) or below some tens of thousands of points, one.
+int bin_threads(std::size_t points) {
+#ifdef _OPENMP
+    if (points < 32768 || omp_in_parallel()) return 1;
+    return std::max(1, omp_get_max_threads());
+#else
+    (void)points;
+    return 1;
+#endif
+}
+
+// Thread t's share [begin, end) of `count` items cut in `threads` equal runs.
+std::pair<std::size_t, std::size_t> share(std::size_t count, int t, int threads) {
+    return {count * static_cast<std::size_t>(t) / static_cast<std::size_t>(threads),
+            count * static_cast<std::size_t>(t + 1) / static_cast<std::size_t>(threads)};
+}
 }  // namespace
 
 NeighbourGrid::NeighbourGrid(std::span<const double> x, std::span<const double> y, std::span<const double> z,
@@ -16,12 +38,19 @@ NeighbourGrid::NeighbourGrid(std::span<const double> x, std::span<const double> 
     const std::size_t n = x.size();
     const std::span<const double> axes[3] = {x, y, z};
     std::array<double, 3> lo{0, 0, 0}, hi{0, 0, 0};
-    for (int a = 0; a < 3; ++a) {  // the bounding box of the finite coordinates
-        double l = std::numeric_limits<double>::infinity(), h = -l;
-        for (double v : axes[a])
-            if (std::isfinite(v)) l = std::min(l, v), h = std::max(h, v);
-        if (l <= h) lo[a] = l, hi[a] = h;
+    // The bounding box of the finite coordinates, in one pass (minima and maxima: any order).
+    const int threads = bin_threads(n);
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    double lx = inf, ly = inf, lz = inf, hx = -inf, hy = -inf, hz = -inf;
+#pragma omp parallel for num_threads(threads) reduction(min : lx, ly, lz) reduction(max : hx, hy, hz) if (threads > 1)
+    for (std::size_t i = 0; i < n; ++i) {
+        if (std::isfinite(x[i])) lx = std::min(lx, x[i]), hx = std::max(hx, x[i]);
+        if (std::isfinite(y[i])) ly = std::min(ly, y[i]), hy = std::max(hy, y[i]);
+        if (std::isfinite(z[i])) lz = std::min(lz, z[i]), hz = std::max(hz, z[i]);
     }
+    const double found_lo[3] = {lx, ly, lz}, found_hi[3] = {hx, hy, hz};
+    for (int a = 0; a < 3; ++a)
+        if (found_lo[a] <= found_hi[a]) lo[a] = found_lo[a], hi[a] = found_hi[a];
     origin_ = lo;
     double extent = 0;
     for (int a = 0; a < 3; ++a) extent = std::max(extent, hi[a] - lo[a]);
@@ -60,19 +89,50 @@ NeighbourGrid::Cell NeighbourGrid::cell_of(double px, double py, double pz) cons
     return c;
 }
 
+// A counting sort by cell, stable (points of a cell in input order), the same on any number of
+// threads: each thread owns a run of cells and scans every point for those in its run, so no
+// two threads write one counter or one slot, and nothing per thread and cell is allocated.
 void NeighbourGrid::bin_dense(std::span<const double> x, std::span<const double> y, std::span<const double> z) {
     const std::size_t n = x.size(), cells = static_cast<std::size_t>(n_[0]) * n_[1] * n_[2];
+    const int threads = bin_threads(n);
     start_.assign(cells + 1, 0);
     std::vector<std::uint32_t> cell_id(n);
+#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
     for (std::size_t i = 0; i < n; ++i) {
         const Cell c = cell_of(x[i], y[i], z[i]);
         cell_id[i] = static_cast<std::uint32_t>(index(c[0], c[1], c[2]));
-        ++start_[cell_id[i] + 1];
     }
-    for (std::size_t c = 0; c < cells; ++c) {
-        if (start_[c + 1]) occupied_.push_back(c);
-        start_[c + 1] += start_[c];
+    if (threads == 1) {
+        for (std::size_t i = 0; i < n; ++i) ++start_[cell_id[i] + 1];
+        for (std::size_t c = 0; c < cells; ++c) {
+            if (start_[c + 1]) occupied_.push_back(c);
+            start_[c + 1] += start_[c];
+        }
+        return gather(x, y, z, cell_id);
     }
+    // Counts and running sums per run of cells, then each run's offset.
+    std::vector<std::vector<std::uint64_t>> occupied(static_cast<std::size_t>(threads));
+    std::vector<std::uint32_t> run_total(static_cast<std::size_t>(threads) + 1, 0);
+#pragma omp parallel for num_threads(threads) schedule(static, 1)
+    for (int t = 0; t < threads; ++t) {
+        const auto [c0, c1] = share(cells, t, threads);
+        for (std::size_t i = 0; i < n; ++i)
+            if (cell_id[i] >= c0 && cell_id[i] < c1) ++start_[cell_id[i] + 1];
+        for (std::size_t c = c0; c < c1; ++c) {
+            if (start_[c + 1]) occupied[static_cast<std::size_t>(t)].push_back(c);
+            if (c > c0) start_[c + 1] += start_[c];
+        }
+        run_total[static_cast<std::size_t>(t) + 1] = c1 > c0 ? start_[c1] : 0;
+    }
+    for (int t = 0; t < threads; ++t) run_total[static_cast<std::size_t>(t) + 1] += run_total[static_cast<std::size_t>(t)];
+#pragma omp parallel for num_threads(threads) schedule(static, 1)
+    for (int t = 0; t < threads; ++t) {
+        const auto [c0, c1] = share(cells, t, threads);
+        // start_[c0 + 1 .. c1] are this run's sums (start_[c0] closes the run before).
+        const std::uint32_t offset = run_total[static_cast<std::size_t>(t)];
+        for (std::size_t c = c0 + 1; c <= c1; ++c) start_[c] += offset;
+    }
+    for (auto& o : occupied) occupied_.insert(occupied_.end(), o.begin(), o.end());
     gather(x, y, z, cell_id);
 }
 
@@ -108,15 +168,27 @@ void NeighbourGrid::bin_hashed(std::span<const double> x, std::span<const double
 
 void NeighbourGrid::gather(std::span<const double> x, std::span<const double> y, std::span<const double> z,
                            const std::vector<std::uint32_t>& cell_id) {
-    const std::size_t n = x.size();
+    const std::size_t n = x.size(), slots = start_.size() - 1;  // cells (dense) or occupied cells (hashed)
     order_.resize(n);
     x_.resize(n), y_.resize(n), z_.resize(n);
     // start_ serves as the cursors (no copy of a 4-byte entry per cell at the preview's peak):
-    // afterwards each entry holds the next cell's start, and one shift puts them back.
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::uint32_t k = start_[cell_id[i]]++;
-        order_[k] = static_cast<std::uint32_t>(i);
-        x_[k] = x[i], y_[k] = y[i], z_[k] = z[i];
+    // afterwards each entry holds the next cell's start, and one shift puts them back. On several
+    // threads each owns the cells of a run of about n / threads points and scans every point.
+    const int threads = bin_threads(n);
+    std::vector<std::size_t> bound(static_cast<std::size_t>(threads) + 1, slots);  // before any cursor moves
+    for (int t = 0; t < threads; ++t)  // the first cell starting at or after the run's first point
+        bound[static_cast<std::size_t>(t)] = t == 0 ? 0 : static_cast<std::size_t>(std::lower_bound(
+            start_.begin(), start_.end() - 1, share(n, t, threads).first) - start_.begin());
+#pragma omp parallel for num_threads(threads) schedule(static, 1) if (threads > 1)
+    for (int t = 0; t < threads; ++t) {
+        const std::size_t c0 = bound[static_cast<std::size_t>(t)], c1 = bound[static_cast<std::size_t>(t) + 1];
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::uint32_t c = cell_id[i];
+            if (c < c0 || c >= c1) continue;
+            const std::uint32_t k = start_[c]++;
+            order_[k] = static_cast<std::uint32_t>(i);
+            x_[k] = x[i], y_[k] = y[i], z_[k] = z[i];
+        }
     }
     std::copy_backward(start_.begin(), start_.end() - 1, start_.end());
     start_[0] = 0;

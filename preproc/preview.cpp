@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "model/id_index.hpp"
+#include "preproc/particle_positions.hpp"
 #include "preproc/nearest_neighbours.hpp"
 #include "preproc/radioss_preview.hpp"
 #include "preproc/smoothing_length.hpp"
@@ -41,10 +42,12 @@ struct PartGroups {
     std::vector<long long> ids;
     std::vector<std::uint32_t> of_particle;  // part index per particle
     std::vector<std::size_t> begin;          // ids.size() + 1 offsets into members
-    std::vector<std::uint32_t> members;
+    std::vector<std::uint32_t> members;      // empty: one part, member k is particle k
+    std::uint32_t member(std::size_t k) const { return members.empty() ? static_cast<std::uint32_t>(k) : members[k]; }
 };
 
-PartGroups group_by_part(const std::vector<long long>& part) {
+// `members` stays empty when there is one part and `always_members` is false: member k is then k.
+PartGroups group_by_part(const std::vector<long long>& part, bool always_members) {
     PartGroups g;
     // One id per run of equal parts (particles come grouped by part in decks), then sorted: not a
     // copy of every particle's part, nor a sort of a million equal values.
@@ -66,6 +69,7 @@ PartGroups group_by_part(const std::vector<long long>& part) {
         ++g.begin[last_index + 1];
     }
     for (std::size_t q = 0; q < g.ids.size(); ++q) g.begin[q + 1] += g.begin[q];
+    if (g.ids.size() == 1 && !always_members) return g;
     std::vector<std::size_t> next(g.begin.begin(), g.begin.end() - 1);
     g.members.resize(part.size());
     for (std::size_t i = 0; i < part.size(); ++i) g.members[next[g.of_particle[i]]++] = static_cast<std::uint32_t>(i);
@@ -97,8 +101,8 @@ PartModel resolve(const model::Model& m, long long id, std::string& notes) {
 }
 
 // Nearest neighbours, h0, sound speed and time steps of one part.
-void preview_part(const model::Model& m, const PartGroups& groups, std::size_t q, model::IniMode mode,
-                  Preview& out, const std::function<void(double)>& progress) {
+void preview_part(const model::Model& m, const ParticlePositions& at, const PartGroups& groups, std::size_t q,
+                  model::IniMode mode, Preview& out, const std::function<void(double)>& progress) {
     PartPreview& pv = out.parts[q];
     ParticlePreview& pp = out.particles;
     const model::Particles& particles = m.particles;
@@ -108,17 +112,20 @@ void preview_part(const model::Model& m, const PartGroups& groups, std::size_t q
     const PartModel pm = resolve(m, pv.part, pv.notes);
     pv.density = pm.material ? pm.material->density.value : 0.0;
 
+    const std::size_t n = pp.located.size();
+    const bool arrays = !pp.mass.empty();
     std::size_t count = 0;  // the part's located particles
     std::vector<double> masses, volumes;
     for (std::size_t k = groups.begin[q]; k < groups.begin[q + 1]; ++k) {
-        const std::uint32_t i = groups.members[k];
+        const std::uint32_t i = groups.member(k);
         ++pv.particles;
         const bool volume_flag = particles.volume[i] != 0;
-        pp.mass[i] = particle_mass(particles.mass[i], volume_flag, pv.density);
-        pv.mass_total += pp.mass[i];
+        const double mass = particle_mass(particles.mass[i], volume_flag, pv.density);
+        if (arrays) pp.mass[i] = mass;
+        pv.mass_total += mass;
         if (!pp.located[i]) continue;
         ++count;
-        masses.push_back(pp.mass[i]);
+        masses.push_back(mass);
         if (mode == model::IniMode::FromMass) volumes.push_back(particle_volume(particles.mass[i], volume_flag, pv.density));
     }
     if (count < pv.particles)
@@ -127,46 +134,53 @@ void preview_part(const model::Model& m, const PartGroups& groups, std::size_t q
 
     // Model indices of the located particles; none kept when they are every particle of the model
     // in order (one part, every node found): 4 bytes a particle less at the preview's peak.
-    const bool whole = count == pp.x.size();
+    const bool whole = count == n;
     std::vector<std::uint32_t> located;
     if (!whole) {
         located.reserve(count);
         for (std::size_t k = groups.begin[q]; k < groups.begin[q + 1]; ++k)
-            if (pp.located[groups.members[k]]) located.push_back(groups.members[k]);
+            if (pp.located[groups.member(k)]) located.push_back(groups.member(k));
     }
     const auto model_index = [&](std::size_t k) { return whole ? static_cast<std::uint32_t>(k) : located[k]; };
 
-    // Positions: the preview's arrays themselves when the part is every particle, in order.
-    std::vector<double> xs, ys, zs;
-    std::span<const double> x = pp.x, y = pp.y, z = pp.z;
-    if (!whole) {
-        xs.resize(count), ys.resize(count), zs.resize(count);
-        for (std::size_t k = 0; k < count; ++k)
-            xs[k] = pp.x[located[k]], ys[k] = pp.y[located[k]], zs[k] = pp.z[located[k]];
-        x = xs, y = ys, z = zs;
-    }
-    const NearestNeighbours nn = mode == model::IniMode::Global ? nearest_neighbours_all_pairs(x, y, z, progress)
-                                                                : nearest_neighbours_grid(x, y, z);
+    // Positions: the model's own arrays when the part is every particle in node order, else a
+    // copy of the part's located ones.
+    PointCopy copy;
+    if (!whole) copy = at.gather(located);
+    else if (!at.in_place()) copy = at.gather_all();
+    const PointSpans points = whole && at.in_place() ? at.all() : copy.spans();
+    NearestNeighbours nn = mode == model::IniMode::Global
+                               ? nearest_neighbours_all_pairs(points.x, points.y, points.z, progress)
+                               : nearest_neighbours_grid(points.x, points.y, points.z);
+    copy = PointCopy{};
     pv.nn_distance = stats_of(nn.distance);
     pv.spacing = pv.nn_distance.median;
 
+    // The distances: the preview's own array when the part is every particle (no copy).
+    std::span<const double> distance = nn.distance;
+    if (whole) {
+        pp.nn_distance = std::move(nn.distance);
+        distance = pp.nn_distance;
+    } else if (pp.nn_distance.size() != n) {
+        pp.nn_distance.assign(n, 0.0);
+    }
     const double tolerance = 1e-9 * pv.spacing;
     for (std::size_t k = 0; k < count; ++k) {
         const std::uint32_t i = model_index(k);
-        pp.nn_distance[i] = nn.distance[k];
-        if (nn.index[k] != NearestNeighbours::none && nn.distance[k] <= tolerance) {
+        if (!whole) pp.nn_distance[i] = distance[k];
+        if (nn.index[k] != NearestNeighbours::none && distance[k] <= tolerance) {
             const std::uint32_t j = model_index(nn.index[k]);
             out.coincident.emplace_back(std::min(i, j), std::max(i, j));
         }
     }
     if (m.radioss) {  // h, masses and time steps as the OpenRadioss starter computes them
-        const std::span<const std::uint32_t> members(groups.members.data() + groups.begin[q],
+        const std::span<const std::uint32_t> members(groups.members.data() + groups.begin[q],  // always kept
                                                      groups.begin[q + 1] - groups.begin[q]);
         radioss_preview_part(m, members, q, out);
         return;
     }
 
-    const SmoothingLength h = initial_smoothing_length({pm.section, mode, nn.distance, volumes, out.dimension});
+    const SmoothingLength h = initial_smoothing_length({pm.section, mode, distance, volumes, out.dimension});
     pv.h0 = h.h0;
     pv.sphini_given = h.from_sphini;
     add_note(pv.notes, h.note);
@@ -181,7 +195,8 @@ void preview_part(const model::Model& m, const PartGroups& groups, std::size_t q
     if (section.kernel.value == model::Kernel::Quadratic || section.kernel.value == model::Kernel::QuarticBSpline)
         add_note(pv.notes, "kernel support assumed 2h (SPHKERN 2 and 3 are not documented)");
 
-    for (std::size_t k = 0; k < count; ++k) pp.h[model_index(k)] = pv.h0;
+    if (arrays)
+        for (std::size_t k = 0; k < count; ++k) pp.h[model_index(k)] = pv.h0;
 
     const SoundSpeed c = sound_speed(m, pm.material, pm.eos);
     pv.sound_speed = c.c;
@@ -194,7 +209,7 @@ void preview_part(const model::Model& m, const PartGroups& groups, std::size_t q
 
 // Neighbour counts of every located particle, all parts on one grid. Support and tolerance are
 // the part's (per particle on Radioss decks, where h is per particle).
-void count_all_neighbours(Preview& out) {
+void count_all_neighbours(const ParticlePositions& at, Preview& out) {
     ParticlePreview& pp = out.particles;
     const std::size_t n = pp.located.size();
     // model indices of the located particles; left empty when every particle is located. None located
@@ -208,16 +223,12 @@ void count_all_neighbours(Preview& out) {
     if (!all_located && located.empty()) return;
     const std::size_t m = all_located ? n : located.size();
     const auto model_index = [&](std::size_t k) { return all_located ? k : std::size_t{located[k]}; };
-    // Positions: the preview's own arrays when every particle has a node (the usual case, and
-    // 24 bytes a particle less at the peak), else a copy of the located ones.
-    std::vector<double> xs, ys, zs;
-    std::span<const double> x = pp.x, y = pp.y, z = pp.z;
-    if (!all_located) {
-        xs.resize(m), ys.resize(m), zs.resize(m);
-        for (std::size_t k = 0; k < m; ++k)
-            xs[k] = pp.x[located[k]], ys[k] = pp.y[located[k]], zs[k] = pp.z[located[k]];
-        x = xs, y = ys, z = zs;
-    }
+    // Positions: the model's own arrays when every particle has a node and they come in node
+    // order (the usual case, and 24 bytes a particle less at the peak), else a copy.
+    PointCopy copy;
+    if (!all_located) copy = at.gather(located);
+    else if (!at.in_place()) copy = at.gather_all();
+    const PointSpans points = all_located && at.in_place() ? at.all() : copy.spans();
     // Groups: the parts (pp.part itself when every particle is located), or every particle its
     // own group on Radioss decks.
     std::vector<std::uint32_t> group;
@@ -238,9 +249,11 @@ void count_all_neighbours(Preview& out) {
         }
     }
     const std::span<const std::uint32_t> groups = group.empty() ? std::span<const std::uint32_t>(pp.part) : group;
-    NeighbourCounts counts = count_neighbours(x, y, z, GroupedRadii{groups, support, tolerance});
+    NeighbourCounts counts = count_neighbours(points.x, points.y, points.z, GroupedRadii{groups, support, tolerance});
+    copy = PointCopy{};
     out.neighbour_sample_stride = counts.sample_stride;
-    for (std::size_t k = 0; k < m; ++k) pp.neighbours[model_index(k)] = counts.count[k];
+    if (!pp.neighbours.empty())
+        for (std::size_t k = 0; k < m; ++k) pp.neighbours[model_index(k)] = counts.count[k];
     std::vector<std::vector<std::uint32_t>> per_part(out.parts.size());
     if (out.parts.size() == 1) {
         per_part[0] = std::move(counts.count);
@@ -270,19 +283,15 @@ Preview compute_preview(const model::Model& m, const PreviewOptions& options) {
     const model::Particles& particles = m.particles;
     const std::size_t n = particles.size();
     ParticlePreview& pp = out.particles;
-    pp.x.assign(n, 0.0), pp.y.assign(n, 0.0), pp.z.assign(n, 0.0), pp.mass.assign(n, 0.0);
-    pp.nn_distance.assign(n, 0.0), pp.h.assign(n, 0.0), pp.neighbours.assign(n, 0), pp.located.assign(n, 0);
-
-    {
-        const model::IdIndex nodes(m.nodes.id);
-        for (std::size_t i = 0; i < n; ++i) {
-            if (auto at = nodes.find(particles.node[i])) {
-                pp.x[i] = m.nodes.x[*at], pp.y[i] = m.nodes.y[*at], pp.z[i] = m.nodes.z[*at];
-                pp.located[i] = 1;
-            }
-        }
+    const ParticlePositions at(m);  // where each particle's node is: read in place, no copy
+    pp.located = at.located();
+    if (options.particle_arrays || m.radioss) {
+        pp.x.assign(n, 0.0), pp.y.assign(n, 0.0), pp.z.assign(n, 0.0);
+        for (std::size_t i = 0; i < n; ++i)
+            if (pp.located[i]) pp.x[i] = at.x(i), pp.y[i] = at.y(i), pp.z[i] = at.z(i);
+        pp.mass.assign(n, 0.0), pp.h.assign(n, 0.0), pp.neighbours.assign(n, 0);
     }
-    PartGroups groups = group_by_part(particles.part);
+    PartGroups groups = group_by_part(particles.part, m.radioss.has_value());
     pp.part = std::move(groups.of_particle);  // the groups use members and begin from here on
     out.parts.resize(groups.ids.size());
     progress(0.05);
@@ -296,15 +305,16 @@ Preview compute_preview(const model::Model& m, const PreviewOptions& options) {
         const std::size_t size = groups.begin[q + 1] - groups.begin[q];
         const double start = 0.05 + nn_share * static_cast<double>(done) / std::max<std::size_t>(n, 1);
         const double share = nn_share * static_cast<double>(size) / std::max<std::size_t>(n, 1);
-        preview_part(m, groups, q, mode, out, [&](double f) { progress(start + share * f); });
+        preview_part(m, at, groups, q, mode, out, [&](double f) { progress(start + share * f); });
         done += size;
         progress(start + share);
     }
     // The counts need neither the groups nor the node index: both go before the counts' grid is
     // built, which is the preview's peak of memory.
     groups = PartGroups{};
+    if (pp.nn_distance.size() != n) pp.nn_distance.assign(n, 0.0);  // no part had a located particle
     if (out.radioss) radioss_count_ghosts(out);
-    count_all_neighbours(out);
+    count_all_neighbours(at, out);
     std::sort(out.coincident.begin(), out.coincident.end());
     out.coincident.erase(std::unique(out.coincident.begin(), out.coincident.end()), out.coincident.end());
     progress(1.0);

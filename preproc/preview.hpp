@@ -25,6 +25,10 @@ struct Stats { double min = 0, median = 0, max = 0; };
 struct PreviewOptions {
     std::optional<model::IniMode> ini;            // --ini: forces the mode for every part
     std::function<void(double fraction)> progress; // optional, called now and then with 0..1
+    // ParticlePreview's x, y, z, mass, h and neighbours (smooth, the solver). Without them (the
+    // rules' preview) they stay empty on LS-DYNA decks, 44 bytes a particle less: part, located
+    // and nn_distance are always there, and Radioss decks always get every array.
+    bool particle_arrays = true;
 };
 struct PartPreview {
     long long part = 0;
