@@ -73,7 +73,11 @@ std::shared_ptr<const FileCache::File> FileCache::file(const std::string& path) 
     std::lock_guard lock(mutex_);
     ++counters_.files_read;
     // The size read must be the size seen: a file that changed while being read is not kept.
-    if (known && file->text.size() == size) files_[key] = Version{size, modified, file};
+    if (!known || file->text.size() != size) return file;
+    auto [it, added] = files_.try_emplace(key, Version{size, modified, file});
+    // Another thread read the same version meanwhile: give its copy, so that both decks hold one text.
+    if (!added && it->second.size == size && it->second.modified == modified) return it->second.file;
+    it->second = Version{size, modified, file};
     return file;
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "engine/check.hpp"
+#include "engine/include_context.hpp"
 #include "grammar/file_cache.hpp"
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
@@ -162,4 +163,23 @@ TEST_CASE("check --jobs: a folder of decks sharing includes reports as each deck
         if (line.find(" error(s), ") == std::string::npos) findings += line + '\n';
     CHECK(findings == alone);
     CHECK(alone.find("model/mesh/mesh.k:") != std::string::npos);
+}
+
+TEST_CASE("file cache: an include checked in the context of its decks reads it once for all of them") {
+    test::TempDir dir;
+    write_decks(dir);
+    const std::string mesh = (dir.path() / "model/mesh/mesh.k").string();
+    engine::CheckOptions plain;
+    const engine::IncludeContext alone = engine::check_in_context(mesh, engine::Documents{}, plain);
+    grammar::FileCache cache;
+    engine::CheckOptions options;
+    options.reader.cache = &cache;
+    const engine::IncludeContext shared = engine::check_in_context(mesh, engine::Documents{}, options);
+    REQUIRE(shared.decks.size() == alone.decks.size());
+    CHECK(shared.decks.size() >= 4);
+    for (std::size_t k = 0; k < alone.decks.size(); ++k) {
+        CHECK(describe(shared.decks[k]) == describe(alone.decks[k]));
+        CHECK(shared.findings[k].size() == alone.findings[k].size());
+    }
+    CHECK(cache.counters().readings_made == 2);  // standard and long format, whatever number of decks
 }
