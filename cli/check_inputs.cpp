@@ -39,14 +39,15 @@ std::string trimmed(std::string line) {
     return first == std::string::npos ? std::string() : line.substr(first);
 }
 
-// The files a deck's text names in *INCLUDE blocks (the first data line of each; *INCLUDE_PATH and the
-// other *INCLUDE_ options with other first lines are left out) or #include lines, resolved from its folder.
+// The files a deck's text names in *INCLUDE blocks (every data line of a plain *INCLUDE, the first of
+// *INCLUDE_TRANSFORM and _STAMPED_PART; *INCLUDE_PATH and the other *INCLUDE_ options with other first
+// lines are left out) or #include lines, resolved from its folder.
 std::vector<fs::path> named_includes(const fs::path& deck) {
     std::vector<fs::path> out;
     std::error_code ec;
     if (fs::file_size(deck, ec) > kMostScannedBytes || ec) return out;
     std::ifstream in(deck, std::ios::binary);
-    bool in_include = false;
+    bool in_include = false, every_line = false;
     for (std::string raw; std::getline(in, raw);) {
         const std::string line = trimmed(raw);
         if (line.empty() || line[0] == '$') continue;
@@ -57,14 +58,15 @@ std::vector<fs::path> named_includes(const fs::path& deck) {
         }
         if (line[0] == '*') {
             const std::string keyword = lowered.substr(0, lowered.find_first_of(" \t,"));
-            in_include = keyword == "*include" || keyword == "*include_transform" || keyword == "*include_stamped_part";
+            every_line = keyword == "*include";
+            in_include = every_line || keyword == "*include_transform" || keyword == "*include_stamped_part";
             continue;
         }
         if (in_include) {
             std::string name = line;
             std::replace(name.begin(), name.end(), '\\', '/');
             out.push_back(deck.parent_path() / name);
-            in_include = false;
+            in_include = every_line;
         }
     }
     return out;

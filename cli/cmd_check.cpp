@@ -7,12 +7,15 @@
 #include <fmt/format.h>
 #include <map>
 #include <memory>
+#include <omp.h>
+#include <thread>
 #include <unistd.h>
 
 #include "cli/check_inputs.hpp"
 #include "cli/check_statistics.hpp"
 #include "cli/commands.hpp"
 #include "cli/fix_output.hpp"
+#include "cli/ordered_jobs.hpp"
 #include "cli/text_folding.hpp"
 #include "diag/render_github.hpp"
 #include "diag/render_json.hpp"
@@ -42,6 +45,7 @@ struct CheckArgs {
     std::string stdin_filename;
     bool statistics = false, exit_zero = false;
     std::string output_file;
+    unsigned jobs = 0;  // decks checked at once; 0: one per core
     CLI::Option* select_option = nullptr;  // to tell "--select" absent from empty
 };
 
@@ -123,37 +127,43 @@ void add_totals(const engine::CheckResult& r, diag::RunSummary& totals) {
     totals.counts.infos += c.infos;
 }
 
+// What checking one input gave: its checks, or why it could not be checked.
+struct InputOutcome {
+    std::vector<engine::CheckResult> checked;
+    std::string included_by;  // the decks a named include was checked as part of ("a.k, b.k"), if any
+    std::string error;        // the message when the input could not be read
+};
+
 // A named file checked as part of the decks around it that include it (engine/include_context.hpp):
 // each result then holds only the file's findings. A file no deck includes is checked on its own.
-std::vector<engine::CheckResult> check_named_file(const CheckInput& input, const engine::CheckOptions& options,
-                                                  const CheckArgs& args) {
+// Prints nothing: it may run on any thread (--jobs).
+InputOutcome check_named_file(const CheckInput& input, const engine::CheckOptions& options, const CheckArgs& args) {
     const std::string& path = input.path;
-    std::vector<engine::CheckResult> alone;
+    InputOutcome out;
     if (path == "-") {  // standard input: named and resolved as --stdin-filename says
         const std::string name = args.stdin_filename.empty() ? "<stdin>" : args.stdin_filename;
         std::string text(std::istreambuf_iterator<char>(std::cin), {});
         const std::string folder = args.stdin_filename.empty() ? "." : std::filesystem::path(name).parent_path().string();
-        alone.push_back(engine::check_buffer(std::move(text), name, options, std::nullopt, folder.empty() ? "." : folder));
-        return alone;
+        out.checked.push_back(
+            engine::check_buffer(std::move(text), name, options, std::nullopt, folder.empty() ? "." : folder));
+        return out;
     }
     // A deck found in a folder is checked alone: the decks of the folder that include it were dropped
     // from the list or are checked themselves (check_inputs.hpp).
     if (!args.alone && !input.found_in_folder) {
         engine::IncludeContext context = engine::check_in_context(path, engine::Documents{}, options);
         if (!context.decks.empty()) {
-            std::string mains;
             for (std::size_t k = 0; k < context.decks.size(); ++k) {
-                mains += fmt::format("{}{}", k == 0 ? "" : ", ", context.decks[k].deck.sources.file(0).display_name);
+                out.included_by += fmt::format("{}{}", k == 0 ? "" : ", ",
+                                               context.decks[k].deck.sources.file(0).display_name);
                 context.decks[k].diagnostics = std::move(context.findings[k]);
             }
-            std::fflush(stdout);
-            fmt::print(args.format == "full" || args.format == "concise" ? stdout : stderr,
-                       "{}: checked as included by {}\n", path, mains);
-            return std::move(context.decks);
+            out.checked = std::move(context.decks);
+            return out;
         }
     }
-    alone.push_back(engine::check_file(path, options));
-    return alone;
+    out.checked.push_back(engine::check_file(path, options));
+    return out;
 }
 
 // What --fix and --diff did over all decks.
@@ -210,24 +220,47 @@ int run_check(const CheckArgs& args) {
     FindingStatistics statistics;
     FixTotals fix_totals;
     engine::Documents fixed_texts;  // the texts --fix and --diff mended, seen by the next decks
+    grammar::FileCache file_cache;  // each file read once in the run, whatever number of decks include it
     const bool fixing = args.fix || args.diff;
     bool failed = false;
     const bool text_format = args.format == "full" || args.format == "concise";
-    for (std::size_t i = 0; i < inputs.size(); ++i) {
-        const lint::Config& config = (*configs)[i];
-        std::vector<engine::CheckResult> checked;
+    // --fix mends the decks one after the other: each sees the texts the ones before mended.
+    const unsigned jobs = fixing ? 1u : args.jobs > 0 ? args.jobs : std::max(1u, std::thread::hardware_concurrency());
+    const unsigned decks_at_once = static_cast<unsigned>(std::min<std::size_t>(jobs, std::max<std::size_t>(inputs.size(), 1)));
+    const int threads_per_deck = std::max(1, omp_get_max_threads() / static_cast<int>(decks_at_once));
+    const auto check_input = [&](std::size_t i) {
+        InputOutcome out;
         try {
+            if (decks_at_once > 1) omp_set_num_threads(threads_per_deck);  // this thread's decoding and geometry
             // --fix mends each deck as the deck read from its file, with its includes (name the main deck
             // to mend an include in its context).
-            const engine::CheckOptions options = options_for(config, args);
-            if (fixing) checked.push_back(fix_deck(inputs[i].path, fixed_texts, options, args, fix_totals));
-            else checked = check_named_file(inputs[i], options, args);
+            engine::CheckOptions options = options_for((*configs)[i], args);
+            if (fixing) {
+                out.checked.push_back(fix_deck(inputs[i].path, fixed_texts, options, args, fix_totals));
+            } else {
+                options.reader.cache = &file_cache;
+                out = check_named_file(inputs[i], options, args);
+            }
         } catch (const std::exception& e) {
-            fmt::print(stderr, "sphdeck: error: {}\n", e.what());
-            totals.complete = false;
-            continue;
+            out.checked.clear();
+            out.error = e.what();
         }
-        for (const engine::CheckResult& r : checked) {
+        return out;
+    };
+    const auto report_input = [&](std::size_t i, InputOutcome& outcome) {
+        const lint::Config& config = (*configs)[i];
+        if (!outcome.error.empty()) {
+            std::fflush(stdout);
+            fmt::print(stderr, "sphdeck: error: {}\n", outcome.error);
+            totals.complete = false;
+            return;
+        }
+        if (!outcome.included_by.empty()) {
+            std::fflush(stdout);
+            fmt::print(text_format ? stdout : stderr, "{}: checked as included by {}\n", inputs[i].path,
+                       outcome.included_by);
+        }
+        for (const engine::CheckResult& r : outcome.checked) {
             if (args.diff) {
                 // stdout holds the diff only, as with `diff -u`
             } else if (report) {
@@ -242,7 +275,8 @@ int run_check(const CheckArgs& args) {
             statistics.add(inputs[i].path, r.diagnostics);
         }
         if (text_format && inputs.size() > 1 && !args.diff) fmt::print("{}\n", statistics.file_summary(inputs[i].path));
-    }
+    };
+    run_in_order<InputOutcome>(inputs.size(), jobs, check_input, report_input);
     if (args.statistics) fmt::print(text_format ? stdout : stderr, "{}", statistics.table(lint::rule_catalog()));
     totals.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (report) fmt::print("{}", report->finish(totals));
@@ -322,6 +356,10 @@ std::function<int()> setup_check(CLI::App& app) {
     app.add_flag("--no-geometry", args->no_geometry,
                  "skip the rules that need particle neighbours (SPH090, SPH113-SPH118): a quick syntax and "
                  "settings check of very large decks");
+    app.add_option("--jobs,-j", args->jobs,
+                   "check this many decks at once (default: one per core); the report keeps the order of the "
+                   "decks, and files several decks include are read once either way")
+        ->check(CLI::Range(1u, 1024u));
     app.add_flag("--alone", args->alone,
                  "check each file on its own, not as part of the decks around it that include it");
     app.add_flag("--fix", args->fix,

@@ -7,6 +7,7 @@
 #include <system_error>
 #include <tuple>
 
+#include "grammar/file_cache.hpp"
 #include "grammar/file_overlay.hpp"
 #include "grammar/source_text.hpp"
 
@@ -75,13 +76,15 @@ bool mentions(std::string_view text, std::string_view name) {
     return false;
 }
 
-std::string text_of(const fs::path& path, const Documents& documents) {
+// The candidate's text; through the run's cache when there is one, so the decks checked next and the
+// other files checked in context find it read.
+grammar::SourceText text_of(const fs::path& path, const Documents& documents, grammar::FileCache* cache) {
     if (const std::string* held = documents.find(path)) return *held;
     std::error_code ec;
     const auto size = fs::file_size(path, ec);
     if (ec || size > kMostCandidateBytes) return {};
     try {
-        return std::string(grammar::SourceText::read(path.string()).view());
+        return cache ? cache->file(path.string())->text : grammar::SourceText::read(path.string());
     } catch (const std::exception&) {
         return {};
     }
@@ -118,13 +121,13 @@ IncludeContext check_in_context(const fs::path& file, const Documents& documents
     const auto candidates = candidate_decks(key, options.config.roots);
     // The candidates that name the file, or name a candidate that does (an include of an include):
     // grown until nothing new is named.
-    std::vector<std::string> texts(candidates.size());
-    for (std::size_t i = 0; i < candidates.size(); ++i) texts[i] = text_of(candidates[i], documents);
+    std::vector<grammar::SourceText> texts(candidates.size());
+    for (std::size_t i = 0; i < candidates.size(); ++i) texts[i] = text_of(candidates[i], documents, options.reader.cache);
     std::vector<bool> reached(candidates.size(), false);
     std::vector<std::string> names{key.filename().string()};
     for (std::size_t named = 0; named < names.size(); ++named)
         for (std::size_t i = 0; i < candidates.size(); ++i)
-            if (!reached[i] && mentions(texts[i], names[named])) {
+            if (!reached[i] && mentions(texts[i].view(), names[named])) {
                 reached[i] = true;
                 names.push_back(candidates[i].filename().string());
             }

@@ -24,8 +24,9 @@ class DeckReader {
 public:
     DeckReader(RawDeck& deck, const ReaderOptions& options);
 
-    // Reads one file's text (already in the SourceMap) with the line grammar.
-    void read(FileId file, CardFormat inherited_format);
+    // Reads one file's text (already in the SourceMap) with the line grammar; `cached`: the file as the
+    // run's FileCache holds it, whose reading another deck may have made already (shared_reading.cpp).
+    void read(FileId file, CardFormat inherited_format, const FileCache::File* cached = nullptr);
 
     // Called by the grammar's actions, once per physical line.
     void on_comment();
@@ -69,6 +70,11 @@ private:
     void handle_include_path(const Block& block, bool relative);
     void open_include(const std::string& name, Span where, char suffix);
     std::vector<std::pair<std::string, Span>> file_names(const Block& block, std::size_t max_lines);
+
+    // A shared reading laid into the deck as `file`, and the reading of `file` just made, to share.
+    void lay_in(FileId file, const FileReading& reading);
+    FileReading reading_of(FileId file, std::size_t first_block, std::size_t first_line, std::size_t first_diagnostic,
+                           std::uint32_t physical_lines) const;
 
     RawDeck& deck_;
     const ReaderOptions& options_;

@@ -8,7 +8,8 @@
 
 namespace sphdeck::grammar::dyna {
 
-SourceText read_include_text(const std::string& path, const FileOverlay* overlay = nullptr);  // reader.cpp
+SourceText read_include_text(const std::string& path, const FileOverlay* overlay = nullptr, FileCache* cache = nullptr,
+                             std::shared_ptr<const FileCache::File>* cached = nullptr);  // reader.cpp
 
 namespace {
 constexpr std::size_t max_include_name = 236;  // *INCLUDE Remark 2, via dynareadout and pydyna
@@ -122,8 +123,9 @@ void DeckReader::open_include(const std::string& name, Span where, char suffix) 
     child.parent = parent.id;
     child.include_line = where.line;
     child.depth = parent_source.depth + 1;
+    std::shared_ptr<const FileCache::File> cached;  // the run's copy, whose reading other decks share
     try {
-        child.text = read_include_text(child.path, options_.overlay);
+        child.text = read_include_text(child.path, options_.overlay, options_.cache, &cached);
     } catch (const std::exception& e) {
         report("DK010", diag::Severity::Error, std::string("include file '") + name + "' cannot be read: " + e.what(),
                where);
@@ -134,7 +136,7 @@ void DeckReader::open_include(const std::string& name, Span where, char suffix) 
     else if (suffix == '%') format = CardFormat::I10;
     else if (suffix == '-') format = CardFormat::Standard;
     FileId id = deck_.sources.add(std::move(child));
-    read(id, format);
+    read(id, format, cached.get());
 }
 
 }  // namespace sphdeck::grammar::dyna

@@ -96,7 +96,7 @@ RawDeck read_main(SourceFile main, const std::filesystem::path& directory, const
 
 }  // namespace
 
-void DeckReader::read(FileId file, CardFormat inherited_format) {
+void DeckReader::read(FileId file, CardFormat inherited_format, const FileCache::File* cached) {
     const SourceFile& source = deck_.sources.file(file);
     deck_.parameters.add_file(file, source.parent);
     if (canonical_paths_.size() <= file) canonical_paths_.resize(file + 1);
@@ -104,6 +104,11 @@ void DeckReader::read(FileId file, CardFormat inherited_format) {
     canonical_paths_[file] = std::filesystem::weakly_canonical(source.path, ec);
     ++deck_.stats.files;
     deck_.stats.bytes += source.text.size();
+    FileCache::Lookup shared;
+    if (cached && options_.cache) shared = options_.cache->reading(*cached, inherited_format);
+    if (shared.reading) return lay_in(file, *shared.reading);
+    const std::size_t first_block = deck_.blocks.size(), first_line = deck_.lines.size(),
+                      first_diagnostic = deck_.diagnostics.size();
 
     OpenFile open;
     open.id = file;
@@ -115,8 +120,11 @@ void DeckReader::read(FileId file, CardFormat inherited_format) {
         source.text.data(), source.text.data() + source.text.size(), source.path.c_str());
     pegtl::parse<rules::file, action>(in, *this);
     close_block();
-    deck_.stats.lines += current().line;
+    const std::uint32_t physical_lines = current().line;
+    deck_.stats.lines += physical_lines;
     stack_.pop_back();
+    if (shared.claim)
+        shared.claim->fulfil(reading_of(file, first_block, first_line, first_diagnostic, physical_lines));
     source.text.release(0, source.text.size());  // read again, block by block, when decoded
 }
 
@@ -137,8 +145,16 @@ RawDeck read_buffer(std::string text, const std::string& display_name, const std
     return read_main(std::move(main), base_directory, options);
 }
 
-SourceText read_include_text(const std::string& path, const FileOverlay* overlay) {
-    SourceText text = read_source_text(path, overlay);
+SourceText read_include_text(const std::string& path, const FileOverlay* overlay, FileCache* cache,
+                             std::shared_ptr<const FileCache::File>* cached) {
+    SourceText text;
+    if (cache && !(overlay && overlay->find(path))) {
+        std::shared_ptr<const FileCache::File> file = cache->file(path);
+        text = file->text;
+        if (cached) *cached = std::move(file);
+    } else {
+        text = read_source_text(path, overlay);
+    }
     // An empty include is fine; a binary one (a d3plot named by mistake) is not parsed as cards.
     if (auto why = binary_or_empty(text.substr(0, 64 * 1024)); why && !text.empty())
         throw std::runtime_error("'" + path + "' is not a keyword deck: " + *why);

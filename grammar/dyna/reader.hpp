@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "grammar/file_cache.hpp"
 #include "grammar/file_overlay.hpp"
 #include "grammar/raw_deck.hpp"
 
@@ -13,6 +14,7 @@ struct ReaderOptions {
     std::vector<std::string> include_paths;  // extra directories searched after the deck's own
     unsigned max_include_depth = 200;        // deeper nesting is reported, not followed
     const FileOverlay* overlay = nullptr;    // texts in memory read instead of the files (engine/)
+    FileCache* cache = nullptr;              // one run's shared reading of files on disk (engine/, cli/)
     // Bounds on what one deck reads, so that memory stays bounded whatever the includes say (a
     // file included twice at each of 30 levels is read 2^30 times): include files read, and
     // bytes of all files together. Past either, an include is reported, not read.

@@ -8,7 +8,8 @@
 #include "grammar/fields.hpp"
 
 namespace sphdeck::grammar::dyna {
-SourceText read_include_text(const std::string& path, const FileOverlay* overlay = nullptr);  // grammar/dyna/reader.cpp
+SourceText read_include_text(const std::string& path, const FileOverlay* overlay = nullptr, FileCache* cache = nullptr,
+                             std::shared_ptr<const FileCache::File>* cached = nullptr);  // grammar/dyna/reader.cpp
 }
 
 namespace sphdeck::grammar::radioss {
@@ -196,7 +197,7 @@ void DeckReader::on_include(const char* begin, const char* end, std::string_view
     child.include_line = f.line;
     child.depth = parent.depth + 1;
     try {
-        child.text = dyna::read_include_text(child.path, options_.overlay);
+        child.text = dyna::read_include_text(child.path, options_.overlay, options_.cache);
     } catch (const std::exception& e) {
         report("DK010", diag::Severity::Error, "include file '" + file_name + "' cannot be read: " + e.what(), where);
         return;

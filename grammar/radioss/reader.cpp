@@ -7,7 +7,8 @@
 #include "grammar/radioss/line_grammar.hpp"
 
 namespace sphdeck::grammar::dyna {
-SourceText read_include_text(const std::string& path, const FileOverlay* overlay = nullptr);  // grammar/dyna/reader.cpp
+SourceText read_include_text(const std::string& path, const FileOverlay* overlay = nullptr, FileCache* cache = nullptr,
+                             std::shared_ptr<const FileCache::File>* cached = nullptr);  // grammar/dyna/reader.cpp
 }
 
 namespace sphdeck::grammar::radioss {
@@ -113,7 +114,7 @@ void read_engine(RawDeck& deck, const std::string& starter_name, const fs::path&
     engine.path = path.string();
     engine.display_name = (fs::path(starter_name).parent_path() / *name).string();
     try {
-        engine.text = dyna::read_include_text(engine.path, options.overlay);
+        engine.text = dyna::read_include_text(engine.path, options.overlay, options.cache);
     } catch (const std::exception& e) {
         deck.diagnostics.push_back({"DK010", diag::Severity::Error,
                                     "engine deck '" + engine.display_name + "' cannot be read: " + e.what(), Span{}, {}});
@@ -179,7 +180,7 @@ RawDeck read_file(const std::string& path, const ReaderOptions& options) {
     SourceFile main;
     main.path = path;
     main.display_name = path;
-    main.text = dyna::read_include_text(path, options.overlay);
+    main.text = dyna::read_include_text(path, options.overlay, options.cache);
     return read_main(std::move(main), fs::path(path).parent_path(), options);
 }
 
