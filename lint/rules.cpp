@@ -2,10 +2,12 @@
 
 namespace sphdeck::lint {
 
-void run_rules(RuleContext& context) {
+void run_rules(RuleContext& context) { run_rules(context, compute_rules_preview); }
+
+void run_rules(RuleContext& context, const PreviewSource& preview_source) {
     // The preview first: its grids then never sit beside the id indexes that the rules below
     // build and keep (the peak of memory). Its findings keep their place in the order.
-    if (context.options.geometry) context.preview = compute_rules_preview(context.model);
+    if (context.options.geometry) context.preview = preview_source(context.model);
     check_references(context);
     check_control_sph(context);
     check_section_sph(context);
