@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <exception>
+#include <system_error>
+
+#include <omp.h>
 
 #include "engine/include_context.hpp"
 #include "engine/recheck.hpp"
@@ -15,6 +18,34 @@ namespace fs = std::filesystem;
 namespace {
 bool blank(const std::string& text) {
     return std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isspace(c); });
+}
+
+// A small deck is checked on the calling thread alone. Between the parallel regions of a check,
+// OpenMP's idle workers spin (libgomp's default wait policy): on a deck of 10,000 lines that cost
+// five times the check itself on a busy 2-core machine (bench/bench_incremental.cpp). Big decks
+// keep every thread: their decoding and geometry gain from them.
+constexpr std::size_t kSmallDeckBytes = std::size_t{4} << 20;  // about 40,000 particles
+
+class ThreadsForDeck {
+public:
+    explicit ThreadsForDeck(std::size_t bytes) : saved_(omp_get_max_threads()) {
+        if (bytes < kSmallDeckBytes) omp_set_num_threads(1);
+    }
+    ~ThreadsForDeck() { omp_set_num_threads(saved_); }
+    ThreadsForDeck(const ThreadsForDeck&) = delete;
+    ThreadsForDeck& operator=(const ThreadsForDeck&) = delete;
+
+private:
+    int saved_;
+};
+
+// The bytes a check of the deck at `main` reads: the last check's count, else its main file's.
+std::size_t deck_bytes(const fs::path& main, const engine::Documents& documents, const engine::CheckResult* previous) {
+    if (previous && previous->deck.stats.bytes > 0) return previous->deck.stats.bytes;
+    if (const std::string* text = documents.find(main)) return text->size();
+    std::error_code error;
+    const auto size = fs::file_size(main, error);
+    return error ? 0 : static_cast<std::size_t>(size);
 }
 
 // A deck that cannot be read at all (`sphdeck check` says "error: ..." and exits 2): one error at
@@ -97,6 +128,7 @@ Workspace::Deck Workspace::check(const fs::path& main, const engine::CheckResult
     out.opened_as = main;
     DeckSettings settings = settings_for(main, roots_);
     settings.options.rules.keep_preview = true;  // for the next re-check
+    const ThreadsForDeck threads(deck_bytes(main, documents_, previous));
     try {
         out.checked.result = previous ? engine::recheck_deck(main.string(), documents_, settings.options, *previous)
                                       : engine::check_deck(main.string(), documents_, settings.options);
@@ -125,6 +157,7 @@ std::optional<Workspace::Deck> Workspace::check_in_context(const fs::path& inclu
     DeckSettings settings = settings_for(include, roots_);
     if (settings.error) return std::nullopt;  // checked on its own, which reports the bad settings
     settings.options.rules.keep_preview = true;  // for the next re-check
+    const ThreadsForDeck threads(deck_bytes(known_main.empty() ? include : known_main, documents_, previous));
     engine::CheckResult result;
     bool found = false;
     // The deck found last time first: re-searching the folders at every edit of the include costs more.
