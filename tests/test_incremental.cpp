@@ -161,12 +161,16 @@ TEST_CASE("recheck: the geometry preview is kept when an edit leaves its inputs 
     options.rules.keep_preview = true;
     const engine::CheckResult first = engine::check_deck(path.string(), documents, options);
     REQUIRE(first.preview);
+    // The deck views the document's own text (an editor's 100 MB buffer is not copied), and keeps it
+    // alive when the document is replaced.
+    CHECK(first.deck.sources.file(0).text.data() == documents.find(path)->data());
 
     // The part's title: the same particles, controls and parts.
     std::string retitled = text;
     retitled.replace(retitled.find("water"), 5, "water, renamed");
     documents.set(path, retitled);
     const engine::CheckResult again = engine::recheck_deck(path.string(), documents, options, first);
+    CHECK(first.deck.sources.file(0).text.view() == text);
     CHECK(again.preview == first.preview);
     CHECK(engine::same_geometry_inputs(first.model, again.model));
     const engine::CheckResult full = engine::check_deck(path.string(), documents);
