@@ -310,6 +310,7 @@ int run_smooth(const SmoothArgs& args) {
     // The geometry rules compute the preview of the deck's own INI mode: printed as it is unless
     // --ini asks for another mode (computing it twice was half the command's time on big decks).
     options.rules.keep_preview = !args.ini.has_value();
+    options.rules.preview_arrays = options.rules.keep_preview;
     const engine::CheckResult r = engine::check_file(args.deck, options);
     const diag::Counts counts = diag::count(r.diagnostics);
     // *DEFINE_SPH_MESH_BOX particles join the deck's own (preproc/sph_mesh_box.hpp).

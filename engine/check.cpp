@@ -3,10 +3,13 @@
 #include <functional>
 
 #include "engine/mended_consequences.hpp"
+#include "engine/preview_reuse.hpp"
+#include "engine/recheck.hpp"
 #include "grammar/read_deck.hpp"
 #include "preproc/preview.hpp"
 #include "lint/fold_causes.hpp"
 #include "lint/fragment_ids.hpp"
+#include "lint/rules.hpp"
 #include "lint/suppressions.hpp"
 #include "lint/typo_consequences.hpp"
 #include "model/model_builder.hpp"
@@ -16,7 +19,8 @@ namespace sphdeck::engine {
 namespace {
 
 // read → model → rules, the findings of each line's cause folded into it.
-CheckResult analyse(grammar::RawDeck deck, const CheckOptions& options) {
+// `previous`: the last check of the same deck (a re-check), or null.
+CheckResult analyse(grammar::RawDeck deck, const CheckOptions& options, const CheckResult* previous) {
     CheckResult result;
     result.deck = std::move(deck);
     result.diagnostics = result.deck.diagnostics;
@@ -24,7 +28,15 @@ CheckResult analyse(grammar::RawDeck deck, const CheckOptions& options) {
                        ? model::build_radioss_model(result.deck, result.diagnostics, &result.summary)
                        : model::build_model(result.deck, result.diagnostics, &result.summary);
     lint::RuleContext context(result.model, result.deck, options.rules, result.diagnostics);
-    lint::run_rules(context);
+    if (previous && previous->preview) {
+        const bool arrays = options.rules.preview_arrays;
+        lint::run_rules(context, [previous, arrays](const model::Model& model) {
+            return same_geometry_inputs(previous->model, model) ? previous->preview
+                                                                : lint::compute_rules_preview(model, arrays);
+        });
+    } else {
+        lint::run_rules(context);
+    }
     lint::point_to_misspelt_keywords(result.diagnostics);
     result.preview = std::move(context.preview);
     lint::fold_into_causes(result.deck, result.diagnostics);
@@ -35,14 +47,15 @@ CheckResult analyse(grammar::RawDeck deck, const CheckOptions& options) {
 // `original`: the deck as first read (a buffer's text is its first file).
 using Reread = std::function<grammar::RawDeck(const grammar::dyna::ReaderOptions&, const grammar::RawDeck& original)>;
 
-CheckResult finish(grammar::RawDeck deck, const CheckOptions& options, const Reread& reread) {
-    CheckResult result = analyse(std::move(deck), options);
+CheckResult finish(grammar::RawDeck deck, const CheckOptions& options, const Reread& reread,
+                   const CheckResult* previous = nullptr) {
+    CheckResult result = analyse(std::move(deck), options, previous);
     fold_mended_consequences(result.deck, result.diagnostics, options.reader.overlay,
                              [&](const grammar::FileOverlay& mended) {
                                  CheckOptions again = options;
                                  again.reader.overlay = &mended;
                                  again.rules.keep_preview = false;
-                                 return analyse(reread(again.reader, result.deck), again).diagnostics;
+                                 return analyse(reread(again.reader, result.deck), again, previous).diagnostics;
                              });
     diag::sort_by_location(result.diagnostics);
     // What the deck's own comments and the configuration say about the findings: every consumer
@@ -70,6 +83,17 @@ CheckResult check_file(const std::string& path, const CheckOptions& options) {
                   [&](const grammar::dyna::ReaderOptions& reader, const grammar::RawDeck&) {
                       return grammar::read_deck(path, reader);
                   });
+}
+
+CheckResult recheck_deck(const std::string& path, const Documents& documents, const CheckOptions& options,
+                         const CheckResult& previous) {
+    CheckOptions with_documents = options;
+    if (!documents.empty()) with_documents.reader.overlay = &documents;
+    with_documents.rules.keep_preview = true;  // for the next re-check
+    return finish(
+        grammar::read_deck(path, with_documents.reader), with_documents,
+        [&](const grammar::dyna::ReaderOptions& reader, const grammar::RawDeck&) { return grammar::read_deck(path, reader); },
+        &previous);
 }
 
 CheckResult check_buffer(std::string text, const std::string& name, const CheckOptions& options,

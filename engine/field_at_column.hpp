@@ -1,6 +1,7 @@
 // The field of a decoded card line under a column, blank part included: a right-aligned value
 // ("        12") answers on its leading blanks too, and a free-format line answers between its
-// commas. Hover and inlay hints ask here (position_index.* keeps the older, span-first lookup).
+// commas. Every editor feature asks here: hover, inlay hints, signature help, completion, and
+// definition and references through engine::id_at.
 #pragma once
 
 #include <cstdint>

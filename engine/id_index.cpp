@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "grammar/value.hpp"
+#include "engine/field_at_column.hpp"
 #include "engine/position_index.hpp"
 #include "model/model.hpp"
 #include "model/radioss_decoder.hpp"
@@ -255,7 +256,7 @@ std::optional<IdUse> id_at(const CheckResult& deck, grammar::FileId file, std::u
     if (radioss) {
         auto card = radioss_card_at(raw, *block, *card_line, model::radioss_version(raw));
         if (!card || !card->card) return std::nullopt;
-        auto index = radioss_field_at(*card, raw.text(*card_line), column);
+        auto index = radioss_field_at_column(*card, raw.text(*card_line), column);
         if (!index) return std::nullopt;
         const auto& v = card->values[*index];
         auto role = radioss_id_role(*v.spec);
@@ -265,7 +266,7 @@ std::optional<IdUse> id_at(const CheckResult& deck, grammar::FileId file, std::u
     }
     auto card = dyna_card_at(raw, *block, *card_line);
     if (!card) return std::nullopt;
-    auto index = dyna_field_at(*card->card, block->format, card->values, column);
+    auto index = dyna_field_at_column(*card->card, block->format, card->values, raw.text(*card_line), column);
     if (!index) return std::nullopt;
     const auto& v = card->values[*index];
     auto role = dyna_id_role(card->match.schema->name, *v.spec);

@@ -119,28 +119,6 @@ const keywords::CardSpec* dyna_card_after(const grammar::RawDeck& deck, const gr
     return sequence.next();
 }
 
-std::optional<std::size_t> dyna_field_at(const keywords::CardSpec& card, grammar::CardFormat format,
-                                         const std::vector<model::FieldValue>& values, std::uint32_t column) {
-    for (std::size_t i = 0; i < values.size(); ++i) {
-        const auto& v = values[i];
-        if (v.spec && v.spec->type != keywords::FieldType::Unused && v.explicit_value && column >= v.span.column &&
-            column < v.span.end_column)
-            return i;
-    }
-    const auto slots = keywords::layout(card, format);
-    for (std::size_t i = 0; i < slots.size() && i < card.fields.size(); ++i)
-        if (card.fields[i].type != keywords::FieldType::Unused && column >= slots[i].start + 1 &&
-            column < slots[i].start + 1 + slots[i].width) {
-            // A free-format line moves fields off their columns: trust the columns only when the
-            // decoded field sits there.
-            if (i < values.size() && values[i].explicit_value && values[i].span.column != slots[i].start + 1 &&
-                (column < values[i].span.column || column >= values[i].span.end_column))
-                return std::nullopt;
-            return i;
-        }
-    return std::nullopt;
-}
-
 const rad::KeywordSpec* radioss_keyword(const grammar::Block& block, std::size_t* prefix) {
     if (block.keyword.empty() || block.keyword[0] != '/') return nullptr;
     // The table the reader walks (model/radioss_decoder.cpp): hand-written or generated.
@@ -222,22 +200,6 @@ std::optional<RadiossCard> radioss_card_at(const grammar::RawDeck& deck, const g
         return false;
     });
     return found;
-}
-
-std::optional<std::size_t> radioss_field_at(const RadiossCard& card, std::string_view text, std::uint32_t column) {
-    const auto skipped = [](const rad::FieldSpec* spec) {
-        return !spec || spec->cell == rad::Cell::Skip || spec->cell == rad::Cell::Skip20;
-    };
-    for (std::size_t i = 0; i < card.values.size(); ++i) {
-        const auto& v = card.values[i];
-        if (!skipped(v.spec) && v.explicit_value && column >= v.span.column && column < v.span.end_column) return i;
-    }
-    if (!card.card || card.engine || grammar::is_free_format(text)) return std::nullopt;
-    const auto cells = rad::layout(*card.card, card.version);
-    for (std::size_t i = 0; i < cells.size() && i < card.values.size(); ++i)
-        if (!skipped(card.values[i].spec) && column >= cells[i].start + 1 && column < cells[i].start + 1 + cells[i].width)
-            return i;
-    return std::nullopt;
 }
 
 std::optional<grammar::FileId> included_file(const grammar::SourceMap& sources, grammar::FileId file,

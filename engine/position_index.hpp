@@ -56,11 +56,6 @@ std::optional<DynaCard> dyna_card_at(const grammar::RawDeck& deck, const grammar
 const keywords::CardSpec* dyna_card_after(const grammar::RawDeck& deck, const grammar::Block& block,
                                           const grammar::CardLine* before);
 
-// Index of the field of `card` (decoded into `values`) under 1-based byte `column`: a written
-// value's span, else the field's columns in the block's format. nullopt: between or past fields.
-std::optional<std::size_t> dyna_field_at(const keywords::CardSpec& card, grammar::CardFormat format,
-                                         const std::vector<model::FieldValue>& values, std::uint32_t column);
-
 // One decoded Radioss card line.
 struct RadiossCard {
     const grammar::radioss::KeywordSpec* keyword = nullptr;
@@ -87,10 +82,6 @@ std::optional<RadiossCard> radioss_card_at(const grammar::RawDeck& deck, const g
 using RadiossCardVisitor = std::function<bool(const grammar::CardLine&, const RadiossCard&)>;
 void walk_radioss_block(const grammar::RawDeck& deck, const grammar::Block& block, int version,
                         const RadiossCardVisitor& visit);
-
-// Index of the Radioss field under `column` of the card's line `text`: a written value's span,
-// else the cell's columns in the deck's version (fixed format only); nullopt when none.
-std::optional<std::size_t> radioss_field_at(const RadiossCard& card, std::string_view text, std::uint32_t column);
 
 // The file an include line of `file` opened (an *INCLUDE file name line, a Radioss #include
 // line), or nullopt.

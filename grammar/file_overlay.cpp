@@ -15,14 +15,22 @@ fs::path FileOverlay::key(const fs::path& path) {
     return ec ? absolute.lexically_normal() : canonical;
 }
 
-void FileOverlay::set(const fs::path& path, std::string text) { texts_[key(path)] = std::move(text); }
+void FileOverlay::set(const fs::path& path, std::string text) {
+    texts_[key(path)] = std::make_shared<const std::string>(std::move(text));
+}
 
 void FileOverlay::erase(const fs::path& path) { texts_.erase(key(path)); }
 
 const std::string* FileOverlay::find(const fs::path& path) const {
     if (texts_.empty()) return nullptr;  // the common case (the command line) pays nothing
     auto it = texts_.find(key(path));
-    return it == texts_.end() ? nullptr : &it->second;
+    return it == texts_.end() ? nullptr : it->second.get();
+}
+
+std::shared_ptr<const std::string> FileOverlay::find_shared(const fs::path& path) const {
+    if (texts_.empty()) return nullptr;
+    auto it = texts_.find(key(path));
+    return it == texts_.end() ? nullptr : it->second;
 }
 
 bool is_regular_file(const fs::path& path, const FileOverlay* overlay) {
@@ -43,7 +51,7 @@ std::string read_file_text(const std::string& path, const FileOverlay* overlay) 
 }
 
 SourceText read_source_text(const std::string& path, const FileOverlay* overlay) {
-    if (const std::string* text = overlay ? overlay->find(path) : nullptr) return SourceText(*text);
+    if (auto text = overlay ? overlay->find_shared(path) : nullptr) return SourceText(std::move(text));
     return SourceText::read(path);
 }
 

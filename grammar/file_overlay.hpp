@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <string>
 
 #include "grammar/source_text.hpp"
@@ -14,19 +15,24 @@ namespace sphdeck::grammar {
 class FileOverlay {
 public:
     // Adds or replaces the text of `path` (relative paths are taken from the working directory).
+    // Texts are held by shared pointer: a deck read from the overlay shares its text instead of
+    // copying it (an editor's 100 MB buffer), a copy of the overlay shares them all, and a text
+    // replaced later stays alive while a deck read before still views it.
     void set(const std::filesystem::path& path, std::string text);
     void erase(const std::filesystem::path& path);
     // The text held for `path`, or nullptr when the file system has the say.
     const std::string* find(const std::filesystem::path& path) const;
+    std::shared_ptr<const std::string> find_shared(const std::filesystem::path& path) const;
     bool empty() const { return texts_.empty(); }
-    const std::map<std::filesystem::path, std::string>& texts() const { return texts_; }  // keyed by key()
+    // keyed by key()
+    const std::map<std::filesystem::path, std::shared_ptr<const std::string>>& texts() const { return texts_; }
 
     // The name both sides are compared by: absolute, normalised, symbolic links resolved where the
     // folders exist (a buffer not yet saved has no file).
     static std::filesystem::path key(const std::filesystem::path& path);
 
 private:
-    std::map<std::filesystem::path, std::string> texts_;
+    std::map<std::filesystem::path, std::shared_ptr<const std::string>> texts_;
 };
 
 // The file access the readers use: the overlay's text when it holds the path, else the disk's.

@@ -16,9 +16,14 @@ public:
     SourceText() = default;
     SourceText(std::string text) : owned_(std::move(text)) {}  // NOLINT: a buffer is a source text
     SourceText(const char* text) : owned_(text) {}             // NOLINT
+    // A buffer shared with its holder (an editor's document in the overlay): not copied, kept alive
+    // by the share.
+    explicit SourceText(std::shared_ptr<const std::string> shared)
+        : shared_(std::move(shared)), view_(shared_->data()), size_(shared_->size()) {}
     SourceText& operator=(std::string text) {
         owned_ = std::move(text);
         mapping_.reset();
+        shared_.reset();
         view_ = nullptr, size_ = 0;
         return *this;
     }
@@ -52,7 +57,8 @@ public:
 private:
     std::string owned_;
     std::shared_ptr<const Mapping> mapping_;  // shared: copies of a SourceFile share the pages
-    const char* view_ = nullptr;              // the mapping's bytes, when mapped
+    std::shared_ptr<const std::string> shared_;  // a buffer shared with its holder
+    const char* view_ = nullptr;              // the mapping's or the shared buffer's bytes
     std::size_t size_ = 0;
 };
 

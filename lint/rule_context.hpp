@@ -31,8 +31,10 @@ struct RuleOptions {
     // SPH113-SPH118) cost about as much as reading the deck; `check --no-geometry` skips them.
     bool geometry = true;
     // Keep the preview the geometry rules computed (RuleContext::preview): `sphdeck smooth` prints
-    // it instead of computing the same preview a second time.
+    // it instead of computing the same preview a second time; the editor reuses it on the next re-check.
     bool keep_preview = false;
+    // With its per-particle arrays (h, neighbour counts...), which `smooth` prints and the rules do not need.
+    bool preview_arrays = false;
 };
 
 class RuleContext {

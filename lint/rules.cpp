@@ -3,9 +3,14 @@
 namespace sphdeck::lint {
 
 void run_rules(RuleContext& context) {
+    const bool arrays = context.options.preview_arrays;
+    run_rules(context, [arrays](const model::Model& model) { return compute_rules_preview(model, arrays); });
+}
+
+void run_rules(RuleContext& context, const PreviewSource& preview_source) {
     // The preview first: its grids then never sit beside the id indexes that the rules below
     // build and keep (the peak of memory). Its findings keep their place in the order.
-    if (context.options.geometry) context.preview = compute_rules_preview(context.model, context.options.keep_preview);
+    if (context.options.geometry) context.preview = preview_source(context.model);
     check_references(context);
     check_control_sph(context);
     check_section_sph(context);

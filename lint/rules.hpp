@@ -1,6 +1,8 @@
 // The lint rule families (design.md: one file per family), each a function of the context.
 #pragma once
 
+#include <functional>
+
 #include "lint/rule_context.hpp"
 
 namespace sphdeck::lint {
@@ -19,6 +21,10 @@ void check_sph_dimension(RuleContext& c);  // rules_dimension.cpp: SPH120-SPH121
 // check_preview reads it from RuleContext::preview.
 std::shared_ptr<const preproc::Preview> compute_rules_preview(const model::Model& model, bool particle_arrays = false);
 void check_preview(RuleContext& c);        // rules_preview.cpp: SPH090, SPH113-SPH115, SPH118
+// run_rules with the geometry preview taken from `preview_source` instead of compute_rules_preview:
+// the editor's re-check hands back the last check's preview when the geometry inputs are unchanged.
+using PreviewSource = std::function<std::shared_ptr<const preproc::Preview>(const model::Model&)>;
+void run_rules(RuleContext& context, const PreviewSource& preview_source);
 void check_radioss(RuleContext& c);        // rules_radioss*.cpp: RAD002-RAD029 (Radioss decks only)
 
 }  // namespace sphdeck::lint

@@ -9,6 +9,7 @@
 #include "grammar/keywords/generated_layouts.hpp"
 #include "grammar/radioss/generated_layouts.hpp"
 #include "grammar/parameters.hpp"
+#include "engine/field_at_column.hpp"
 #include "engine/id_index.hpp"
 #include "engine/position_index.hpp"
 #include "lsp/display_text.hpp"
@@ -125,8 +126,22 @@ Edit token_edit(std::string_view text, std::uint32_t line0, std::uint32_t byte) 
     return {line0, utf16_offset(text, start), utf16_offset(text, end)};
 }
 
-// The field index under the cursor on a card line being typed: the count of commas before it in
-// free format, else the fixed slot holding the cursor (or the character before it).
+// The field index under the cursor (before 0-based `byte`) on a line the last check decoded as
+// `values`: the field of the character before it while a value is being typed, else the field under
+// it, blank part included (engine/field_at_column.hpp, as hover asks).
+std::optional<std::size_t> decoded_field(const keywords::CardSpec& card, grammar::CardFormat format,
+                                         const std::vector<model::FieldValue>& values, std::string_view text,
+                                         std::uint32_t byte) {
+    const bool typing = byte > 0 && byte <= text.size() && text[byte - 1] != ' ' && text[byte - 1] != ',';
+    if (typing) {
+        if (auto index = engine::dyna_field_at_column(card, format, values, text, byte)) return index;
+    }
+    return engine::dyna_field_at_column(card, format, values, text, byte + 1);
+}
+
+// The field index under the cursor on a card line being typed (not decoded by the last check): the
+// count of commas before it in free format, else the fixed slot holding the cursor (or the
+// character before it).
 std::optional<std::size_t> typed_field(const keywords::CardSpec& card, grammar::CardFormat format,
                                        std::string_view text, std::uint32_t byte) {
     const std::string_view before = text.substr(0, std::min<std::size_t>(byte, text.size()));
@@ -147,10 +162,12 @@ nlohmann::json field_items(const CheckedDeck& deck, const grammar::Block& block,
     const auto& raw = deck.result.deck;
     const grammar::CardLine* card_line = card_line_at(raw, block, line);
     const keywords::CardSpec* card = nullptr;
+    std::optional<engine::DynaCard> decoded;
     std::optional<keywords::KeywordMatch> match = decodable_match(block);
     if (!match) return list(nlohmann::json::array(), false);
     if (card_line) {
-        if (auto decoded = dyna_card_at(raw, block, *card_line)) card = decoded->card;
+        decoded = dyna_card_at(raw, block, *card_line);
+        if (decoded) card = decoded->card;
     } else {
         // A line the last check did not see as a card (typed since, or a comment): the card after
         // the card line just above it.
@@ -161,7 +178,8 @@ nlohmann::json field_items(const CheckedDeck& deck, const grammar::Block& block,
     }
     if (!card) return list(nlohmann::json::array(), false);
     const std::string_view text = raw.sources.line_text(block.span.file, line);
-    auto index = typed_field(*card, block.format, text, byte);
+    auto index = decoded ? decoded_field(*card, block.format, decoded->values, text, byte)
+                         : typed_field(*card, block.format, text, byte);
     if (!index) return list(nlohmann::json::array(), false);
     const keywords::FieldSpec& field = card->fields[*index];
     nlohmann::json items = nlohmann::json::array();
@@ -189,8 +207,8 @@ nlohmann::json radioss_field_items(const CheckedDeck& deck, const grammar::Block
     auto card = radioss_card_at(raw, block, *card_line, model::radioss_version(raw));
     if (!card || !card->card) return list(std::move(items), false);
     const std::string_view text = raw.text(*card_line);
-    auto index = radioss_field_at(*card, text, column);
-    if (!index && column > 1) index = radioss_field_at(*card, text, column - 1);
+    auto index = radioss_field_at_column(*card, text, column);
+    if (!index && column > 1) index = radioss_field_at_column(*card, text, column - 1);
     if (!index) return list(std::move(items), false);
     if (auto role = radioss_id_role(*card->values[*index].spec)) id_items(deck, role->kind, edit, items);
     return list(std::move(items), false);

@@ -5,6 +5,8 @@
 #include <cctype>
 #include <charconv>
 
+#include "lsp/json_long_strings.hpp"
+
 namespace sphdeck::lsp {
 namespace {
 constexpr std::size_t max_header_line = 8192;  // a real header line is ~30 bytes
@@ -190,11 +192,23 @@ ReadResult MessageReader::next() {
     }
 }
 
-std::optional<nlohmann::json> parse_body(std::string_view body) {
+namespace {
+std::optional<nlohmann::json> parse_whole(std::string_view body) {
     if (!nesting_within(body, max_depth)) return std::nullopt;
     nlohmann::json parsed = nlohmann::json::parse(body.begin(), body.end(), nullptr, /*allow_exceptions=*/false);
     if (parsed.is_discarded()) return std::nullopt;
     return parsed;
+}
+}  // namespace
+
+std::optional<nlohmann::json> parse_body(std::string_view body) {
+    // A document's text (didOpen, a whole-text didChange) is decoded apart: lsp/json_long_strings.hpp.
+    if (auto lifted = lift_long_strings(body)) {
+        auto parsed = parse_whole(lifted->rest);
+        if (!parsed) return std::nullopt;  // the rest is JSON exactly when the body is
+        if (restore_long_strings(*parsed, lifted->strings)) return parsed;
+    }
+    return parse_whole(body);
 }
 
 void write_message(std::ostream& out, const nlohmann::json& message) {

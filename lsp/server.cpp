@@ -94,7 +94,7 @@ int Server::run() {
                 const nlohmann::json* id = member(params, "id");
                 if (id && valid_id(*id)) cancelled_.insert(id->dump());
             }
-        for (const ReadResult& read : batch) {
+        for (ReadResult& read : batch) {
             handle(read);
             if (exited_) break;
         }
@@ -110,7 +110,7 @@ int Server::run() {
     return shut_down_ ? 0 : 1;
 }
 
-void Server::handle(const ReadResult& read) {
+void Server::handle(ReadResult& read) {
     switch (read.status) {
         case ReadStatus::parse_error:
             log(read.error);
@@ -150,7 +150,9 @@ void Server::handle(const ReadResult& read) {
                             "Invalid Request: bad method or id"));
         return;
     }
-    const nlohmann::json params = message.value("params", nlohmann::json());
+    // Moved out, not copied: a didOpen's params hold the whole document (100 MB for a big deck).
+    nlohmann::json params;
+    if (auto found = read.message.find("params"); found != read.message.end()) params = std::move(*found);
     if (id)
         handle_request(*id, method->get<std::string>(), params);
     else
@@ -188,7 +190,7 @@ void Server::handle_request(const nlohmann::json& id, const std::string& method,
     }
 }
 
-void Server::handle_notification(const std::string& method, const nlohmann::json& params) {
+void Server::handle_notification(const std::string& method, nlohmann::json& params) {
     if (method == "exit") {
         exited_ = true;
         return;
@@ -199,8 +201,11 @@ void Server::handle_notification(const std::string& method, const nlohmann::json
         const std::string uri = document ? string_member(*document, "uri") : std::string();
         bool understood = true;
         if (method == "textDocument/didOpen") {
-            const nlohmann::json* text = document ? member(*document, "text") : nullptr;
-            understood = text && text->is_string() && workspace_.open(uri, text->get<std::string>(), version_of(*document));
+            nlohmann::json* text = document && document->is_object() && document->contains("text")
+                                       ? &params["textDocument"]["text"]
+                                       : nullptr;
+            understood = text && text->is_string() &&
+                         workspace_.open(uri, std::move(text->get_ref<std::string&>()), version_of(*document));
         } else if (method == "textDocument/didChange") {
             const nlohmann::json* changes = member(params, "contentChanges");
             understood = document && changes && workspace_.change(uri, version_of(*document), *changes);

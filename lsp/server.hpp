@@ -36,9 +36,9 @@ public:
     int run();
 
 private:
-    void handle(const ReadResult& read);
+    void handle(ReadResult& read);
     void handle_request(const nlohmann::json& id, const std::string& method, const nlohmann::json& params);
-    void handle_notification(const std::string& method, const nlohmann::json& params);
+    void handle_notification(const std::string& method, nlohmann::json& params);
     nlohmann::json initialize(const nlohmann::json& params);
     nlohmann::json document_request(const std::string& method, const nlohmann::json& params);
     void send(const nlohmann::json& message);

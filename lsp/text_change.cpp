@@ -9,7 +9,7 @@
 namespace sphdeck::lsp {
 namespace {
 // The byte offset in `text` of an LSP position.
-std::size_t offset_of(const std::string& text, TextPosition position) {
+std::size_t offset_of(std::string_view text, TextPosition position) {
     std::size_t line_start = 0;
     for (std::uint32_t line = 0; line < position.line; ++line) {
         const void* newline = std::memchr(text.data() + line_start, '\n', text.size() - line_start);
@@ -24,21 +24,29 @@ std::size_t offset_of(const std::string& text, TextPosition position) {
 }
 }  // namespace
 
-bool apply_change(std::string& text, const nlohmann::json& change) {
-    if (!change.is_object()) return false;
+std::optional<std::string> changed_text(std::string_view text, const nlohmann::json& change) {
+    if (!change.is_object()) return std::nullopt;
     const auto new_text = change.find("text");
-    if (new_text == change.end() || !new_text->is_string()) return false;
+    if (new_text == change.end() || !new_text->is_string()) return std::nullopt;
+    const std::string& inserted = new_text->get_ref<const std::string&>();
     const auto range = change.find("range");
-    if (range == change.end() || range->is_null()) {
-        text = new_text->get<std::string>();
-        return true;
-    }
-    if (!range->is_object() || !range->contains("start") || !range->contains("end")) return false;
+    if (range == change.end() || range->is_null()) return inserted;
+    if (!range->is_object() || !range->contains("start") || !range->contains("end")) return std::nullopt;
     TextPosition start, end;
-    if (!parse_position(range->at("start"), start) || !parse_position(range->at("end"), end)) return false;
+    if (!parse_position(range->at("start"), start) || !parse_position(range->at("end"), end)) return std::nullopt;
     std::size_t from = offset_of(text, start), to = offset_of(text, end);
     if (from > to) std::swap(from, to);
-    text.replace(from, to - from, new_text->get_ref<const std::string&>());
+    // One pass: the text before, the new text, the text after.
+    std::string out;
+    out.reserve(text.size() - (to - from) + inserted.size());
+    out.append(text.substr(0, from)).append(inserted).append(text.substr(to));
+    return out;
+}
+
+bool apply_change(std::string& text, const nlohmann::json& change) {
+    auto changed = changed_text(text, change);
+    if (!changed) return false;
+    text = std::move(*changed);
     return true;
 }
 

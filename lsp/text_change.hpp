@@ -2,7 +2,9 @@
 // positions, lines split at '\n' as the deck readers split them) replaced by new text.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -11,5 +13,9 @@ namespace sphdeck::lsp {
 // Applies one change to `text`. Positions past a line's end or past the last line clamp to them,
 // a reversed range is taken in order. False (and `text` unchanged) when `change` is not a change event.
 bool apply_change(std::string& text, const nlohmann::json& change);
+
+// The same, building the changed text in one pass from `text` (left as it is: a check may still read
+// it); nullopt when `change` is not a change event.
+std::optional<std::string> changed_text(std::string_view text, const nlohmann::json& change);
 
 }  // namespace sphdeck::lsp

@@ -3,8 +3,12 @@
 #include <algorithm>
 #include <cctype>
 #include <exception>
+#include <system_error>
+
+#include <omp.h>
 
 #include "engine/include_context.hpp"
+#include "engine/recheck.hpp"
 #include "lsp/deck_settings.hpp"
 #include "lsp/text_change.hpp"
 #include "lsp/uri.hpp"
@@ -14,6 +18,34 @@ namespace fs = std::filesystem;
 namespace {
 bool blank(const std::string& text) {
     return std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isspace(c); });
+}
+
+// A small deck is checked on the calling thread alone. Between the parallel regions of a check,
+// OpenMP's idle workers spin (libgomp's default wait policy): on a deck of 10,000 lines that cost
+// five times the check itself on a busy 2-core machine (bench/bench_incremental.cpp). Big decks
+// keep every thread: their decoding and geometry gain from them.
+constexpr std::size_t kSmallDeckBytes = std::size_t{4} << 20;  // about 40,000 particles
+
+class ThreadsForDeck {
+public:
+    explicit ThreadsForDeck(std::size_t bytes) : saved_(omp_get_max_threads()) {
+        if (bytes < kSmallDeckBytes) omp_set_num_threads(1);
+    }
+    ~ThreadsForDeck() { omp_set_num_threads(saved_); }
+    ThreadsForDeck(const ThreadsForDeck&) = delete;
+    ThreadsForDeck& operator=(const ThreadsForDeck&) = delete;
+
+private:
+    int saved_;
+};
+
+// The bytes a check of the deck at `main` reads: the last check's count, else its main file's.
+std::size_t deck_bytes(const fs::path& main, const engine::Documents& documents, const engine::CheckResult* previous) {
+    if (previous && previous->deck.stats.bytes > 0) return previous->deck.stats.bytes;
+    if (const std::string* text = documents.find(main)) return text->size();
+    std::error_code error;
+    const auto size = fs::file_size(main, error);
+    return error ? 0 : static_cast<std::size_t>(size);
 }
 
 // A deck that cannot be read at all (`sphdeck check` says "error: ..." and exits 2): one error at
@@ -43,10 +75,15 @@ bool Workspace::change(const std::string& uri, std::int64_t version, const nlohm
     const auto document = open_.find(key);
     const std::string* current = documents_.find(key);
     if (document == open_.end() || !current) return false;
-    std::string text = *current;
+    // Each change builds the next text in one pass from the last (no copy of the buffer first).
+    std::optional<std::string> text;
     bool all_applied = true;
-    for (const nlohmann::json& change : content_changes) all_applied = apply_change(text, change) && all_applied;
-    documents_.set(key, std::move(text));
+    for (const nlohmann::json& change : content_changes) {
+        auto next = changed_text(text ? std::string_view(*text) : std::string_view(*current), change);
+        if (next) text = std::move(next);
+        else all_applied = false;
+    }
+    if (text) documents_.set(key, std::move(*text));
     document->second.version = version;
     dirty_.insert(key);
     return all_applied;
@@ -85,13 +122,16 @@ std::string Workspace::uri_of(const fs::path& key, const std::string& path) cons
 
 bool Workspace::reads(const Deck& deck, const fs::path& key) const { return deck.findings.count(key) > 0; }
 
-Workspace::Deck Workspace::check(const fs::path& main) const {
+Workspace::Deck Workspace::check(const fs::path& main, const engine::CheckResult* previous) const {
     Deck out;
     out.checked.main = main;
     out.opened_as = main;
-    const DeckSettings settings = settings_for(main, roots_);
+    DeckSettings settings = settings_for(main, roots_);
+    settings.options.rules.keep_preview = true;  // for the next re-check
+    const ThreadsForDeck threads(deck_bytes(main, documents_, previous));
     try {
-        out.checked.result = engine::check_deck(main.string(), documents_, settings.options);
+        out.checked.result = previous ? engine::recheck_deck(main.string(), documents_, settings.options, *previous)
+                                      : engine::check_deck(main.string(), documents_, settings.options);
     } catch (const std::exception& e) {
         out.checked.result = engine::CheckResult{};
         out.checked.result.includes.main = main;
@@ -112,15 +152,19 @@ Workspace::Deck Workspace::check(const fs::path& main) const {
     return out;
 }
 
-std::optional<Workspace::Deck> Workspace::check_in_context(const fs::path& include, const fs::path& known_main) const {
-    const DeckSettings settings = settings_for(include, roots_);
+std::optional<Workspace::Deck> Workspace::check_in_context(const fs::path& include, const fs::path& known_main,
+                                                           const engine::CheckResult* previous) const {
+    DeckSettings settings = settings_for(include, roots_);
     if (settings.error) return std::nullopt;  // checked on its own, which reports the bad settings
+    settings.options.rules.keep_preview = true;  // for the next re-check
+    const ThreadsForDeck threads(deck_bytes(known_main.empty() ? include : known_main, documents_, previous));
     engine::CheckResult result;
     bool found = false;
     // The deck found last time first: re-searching the folders at every edit of the include costs more.
     if (!known_main.empty()) {
         try {
-            result = engine::check_deck(known_main.string(), documents_, settings.options);
+            result = previous ? engine::recheck_deck(known_main.string(), documents_, settings.options, *previous)
+                              : engine::check_deck(known_main.string(), documents_, settings.options);
             found = result.includes.depends_on(include);
         } catch (const std::exception&) {
         }
@@ -158,8 +202,8 @@ void Workspace::flush() {
                 return reads(deck, key) || deck.checked.result.includes.depends_on(key);
             })) {
             if (deck.opened_as == deck.checked.main) {
-                deck = check(deck.checked.main);
-            } else if (auto again = check_in_context(deck.opened_as, deck.checked.main)) {
+                deck = check(deck.checked.main, &deck.checked.result);
+            } else if (auto again = check_in_context(deck.opened_as, deck.checked.main, &deck.checked.result)) {
                 deck = std::move(*again);
             } else {
                 continue;  // no deck includes it any more: checked on its own below

@@ -398,3 +398,36 @@ TEST_CASE("lsp signature help: the card's fields, the one under the cursor activ
     CHECK(ask(deck, "textDocument/signatureHelp", {{"position", {{"line", line_of(kDeck, "$#    ncbs")}, {"character", 3}}}})
               .is_null());
 }
+
+TEST_CASE("lsp definition, references and completion: every column of an id field, blank part included (issue 29)") {
+    const auto deck = check(kDeck);
+    const std::uint32_t part = line_of(kDeck, "         1         3         5         7");
+    const std::uint32_t section = line_of(kDeck, "         3                 0.2");
+    const std::uint32_t material = line_of(kDeck, "         5      &rho");
+    // SECID: columns 11-20, "         3": every column leads to the section, blanks included.
+    for (std::uint32_t character = 10; character < 20; ++character) {
+        CAPTURE(character);
+        auto location = ask(deck, "textDocument/definition", {{"position", {{"line", part}, {"character", character}}}});
+        REQUIRE(location.is_object());
+        CHECK(location["range"]["start"]["line"] == section);
+    }
+    // MID on its first blank column: the material; references of the section from a blank of SECID.
+    auto location = ask(deck, "textDocument/definition", {{"position", {{"line", part}, {"character", 20}}}});
+    REQUIRE(location.is_object());
+    CHECK(location["range"]["start"]["line"] == material);
+    auto refs = ask(deck, "textDocument/references",
+                    {{"position", {{"line", part}, {"character", 12}}}, {"context", {{"includeDeclaration", false}}}});
+    REQUIRE(refs.size() == 1);  // the part's SECID
+    CHECK(refs[0]["range"]["start"]["line"] == part);
+    // Completion on the blank part of SECID offers the sections (id 3), not the field before it.
+    auto list = ask(deck, "textDocument/completion", {{"position", {{"line", part}, {"character", 12}}}});
+    REQUIRE(list["items"].is_array());
+    REQUIRE_FALSE(list["items"].empty());
+    CHECK(list["items"][0]["label"] == "3");
+    // Free format: the blank after a comma belongs to the field after it.
+    const std::string free = "*KEYWORD\n*SECTION_SPH\n3\n*PART\nwater\n1,  3\n*END\n";
+    const auto free_deck = check(free);
+    location = ask(free_deck, "textDocument/definition", {{"position", {{"line", 5}, {"character", 3}}}});
+    REQUIRE(location.is_object());
+    CHECK(location["range"]["start"]["line"] == 2);
+}

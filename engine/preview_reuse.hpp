@@ -1,0 +1,17 @@
+// The editor's re-check keeps the geometry preview of the last check (neighbour grid, nearest
+// neighbours, counts: the costliest rules on a big deck) when the data it is computed from did not
+// change: an edit of a title, a comment or a control the preview does not read.
+#pragma once
+
+#include "model/model.hpp"
+
+namespace sphdeck::engine {
+
+// Whether preproc::compute_preview reads the same values from `now` as from `before`: the controls,
+// the parts' section, material and EOS ids, the sections, materials, EOS and the keyword records
+// they point at, the nodes and the particles (their lines aside). Positions (spans) are not compared:
+// the preview holds model indices, never a place in the deck. Radioss decks: false (their preview
+// reads properties, groups and cells as well). Keep this beside what compute_preview reads.
+bool same_geometry_inputs(const model::Model& before, const model::Model& now);
+
+}  // namespace sphdeck::engine

@@ -1,0 +1,19 @@
+// The editor's re-check of a deck it checked before (after an edit): the same findings as
+// check_deck, computed keeping what the last check computed and the edit left alone. Today that is
+// the geometry preview (neighbour grid, nearest neighbours, neighbour counts: the costliest rules of
+// a big deck), kept when the model's geometry inputs are unchanged (engine/preview_reuse.hpp).
+#pragma once
+
+#include <string>
+
+#include "engine/check.hpp"
+
+namespace sphdeck::engine {
+
+// check_deck(path, documents, options), reusing `previous` (the last check of the same deck, kept
+// alive by the caller during the call). The result keeps its preview for the next re-check
+// (options.rules.keep_preview is set).
+CheckResult recheck_deck(const std::string& path, const Documents& documents, const CheckOptions& options,
+                         const CheckResult& previous);
+
+}  // namespace sphdeck::engine

@@ -1,0 +1,232 @@
+// Issue 29 item 5: the editor's re-check after an edit (engine/recheck.hpp, lsp::Workspace) keeps
+// what the last check computed and the edit left alone, and its findings equal a full check of the
+// same text: message, code, range, severity and order, on random edits of several decks.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "engine/check.hpp"
+#include "engine/preview_reuse.hpp"
+#include "engine/recheck.hpp"
+#include "grammar/text_file.hpp"
+#include "lsp/uri.hpp"
+#include "lsp/workspace.hpp"
+
+using namespace sphdeck;
+
+namespace {
+
+const std::filesystem::path kSource = SPHDECK_SOURCE_DIR;
+
+std::vector<std::string> split_lines(const std::string& text) {
+    std::vector<std::string> lines;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t end = text.find('\n', start);
+        if (end == std::string::npos) {
+            lines.push_back(text.substr(start));
+            return lines;
+        }
+        lines.push_back(text.substr(start, end - start));
+        start = end + 1;
+    }
+}
+
+std::string join_lines(const std::vector<std::string>& lines) {
+    std::string out;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        if (i) out += '\n';
+        out += lines[i];
+    }
+    return out;
+}
+
+// The diagnostics a workspace holding only `text` at `path` publishes for it: a full check.
+nlohmann::json full_check(const std::filesystem::path& path, const std::string& text) {
+    nlohmann::json published;
+    lsp::Workspace workspace([&](const nlohmann::json& params) {
+        if (params["uri"] == lsp::uri_from_path(path)) published = params["diagnostics"];
+    });
+    workspace.open(lsp::uri_from_path(path), text, 1);
+    workspace.flush();
+    return published;
+}
+
+// The lines of the bulk blocks (*NODE, *ELEMENT_SPH) and the keyword lines of `lines`.
+struct Places {
+    std::vector<std::uint32_t> bulk, keywords;
+};
+Places places_of(const std::vector<std::string>& lines) {
+    Places out;
+    bool bulk = false;
+    for (std::uint32_t i = 0; i < lines.size(); ++i) {
+        if (!lines[i].empty() && lines[i][0] == '*') {
+            out.keywords.push_back(i);
+            bulk = lines[i].rfind("*NODE", 0) == 0 || lines[i].rfind("*ELEMENT_SPH", 0) == 0;
+        } else if (bulk && !lines[i].empty() && lines[i][0] != '$') {
+            out.bulk.push_back(i);
+        }
+    }
+    return out;
+}
+
+// One random edit of `lines` as an LSP change; `lines` becomes the edited text.
+nlohmann::json random_edit(std::vector<std::string>& lines, std::mt19937& random) {
+    const auto pick = [&](std::size_t n) { return static_cast<std::uint32_t>(std::uniform_int_distribution<std::size_t>(0, n - 1)(random)); };
+    const Places places = places_of(lines);
+    // Where: anywhere, inside a bulk block, or on or next to a keyword line.
+    std::uint32_t line = pick(lines.size());
+    const std::uint32_t where = pick(3);
+    if (where == 1 && !places.bulk.empty()) line = places.bulk[pick(places.bulk.size())];
+    if (where == 2 && !places.keywords.empty())
+        line = std::min<std::uint32_t>(places.keywords[pick(places.keywords.size())] + pick(3),
+                                       static_cast<std::uint32_t>(lines.size() - 1));
+    static const std::vector<std::string> pieces = {"0", "1", "7", "-1", "2.5e-3", " ", "     ", "12345678", "&rho",
+                                                    "abc", ",", "1.0e+20", "*NODE", "*PART", "$ comment", ""};
+    const auto range = [](std::uint32_t l1, std::uint32_t c1, std::uint32_t l2, std::uint32_t c2) {
+        return nlohmann::json{{"start", {{"line", l1}, {"character", c1}}}, {"end", {{"line", l2}, {"character", c2}}}};
+    };
+    std::string& text = lines[line];
+    switch (pick(5)) {
+        case 0: {  // replace a few characters of the line
+            const std::uint32_t from = text.empty() ? 0 : pick(text.size() + 1);
+            const std::uint32_t to = std::min<std::uint32_t>(static_cast<std::uint32_t>(text.size()), from + pick(12));
+            const std::string piece = pieces[pick(pieces.size())];
+            text = text.substr(0, from) + piece + text.substr(to);
+            return {{"range", range(line, from, line, to)}, {"text", piece}};
+        }
+        case 1: {  // one digit of the line changed (a coordinate, an id, a mass)
+            std::vector<std::uint32_t> digits;
+            for (std::uint32_t i = 0; i < text.size(); ++i)
+                if (text[i] >= '0' && text[i] <= '9') digits.push_back(i);
+            const std::uint32_t at = digits.empty() ? 0 : digits[pick(digits.size())];
+            const std::string digit(1, static_cast<char>('0' + pick(10)));
+            const std::uint32_t end = digits.empty() ? 0 : at + 1;
+            text = text.substr(0, at) + digit + text.substr(end);
+            return {{"range", range(line, at, line, end)}, {"text", digit}};
+        }
+        case 2: {  // a whole line deleted
+            if (lines.size() < 3 || line + 1 >= lines.size()) return nlohmann::json();
+            lines.erase(lines.begin() + line);
+            return {{"range", range(line, 0, line + 1, 0)}, {"text", ""}};
+        }
+        case 3: {  // a copy of another line inserted (a node or particle twice, a card too many)
+            const std::string copy = lines[pick(lines.size())];
+            lines.insert(lines.begin() + line, copy);
+            return {{"range", range(line, 0, line, 0)}, {"text", copy + "\n"}};
+        }
+        default: {  // text across lines removed, keyword lines included
+            const std::uint32_t last = std::min<std::uint32_t>(static_cast<std::uint32_t>(lines.size() - 1), line + 1 + pick(4));
+            const std::uint32_t from = std::min<std::uint32_t>(pick(11), static_cast<std::uint32_t>(lines[line].size()));
+            const std::uint32_t to = std::min<std::uint32_t>(pick(11), static_cast<std::uint32_t>(lines[last].size()));
+            lines[line] = lines[line].substr(0, from) + lines[last].substr(to);
+            lines.erase(lines.begin() + line + 1, lines.begin() + last + 1);
+            return {{"range", range(line, from, last, to)}, {"text", ""}};
+        }
+    }
+}
+
+// A deck of n x n particles in a plane (a bulk *NODE and *ELEMENT_SPH), with a title and controls.
+std::string lattice_deck(int n) {
+    std::string deck =
+        "*KEYWORD\n*CONTROL_SPH\n         1         0   1.0e+20         2       150         0\n*SECTION_SPH\n"
+        "         1       1.2       0.2       2.0\n*PART\nwater\n         1         1         1         1\n"
+        "*MAT_NULL\n         1    1000.0\n*EOS_MURNAGHAN\n         1       7.0  357142.9       1.0\n*NODE\n";
+    char line[96];
+    for (int i = 0; i < n * n; ++i) {
+        std::snprintf(line, sizeof line, "%8d%16.8e%16.8e%16.8e\n", i + 1, 0.01 * (i % n), 0.01 * (i / n), 0.0);
+        deck += line;
+    }
+    deck += "*ELEMENT_SPH\n";
+    for (int i = 0; i < n * n; ++i) {
+        std::snprintf(line, sizeof line, "%8d%8d%16.8e\n", i + 1, 1, 0.1);
+        deck += line;
+    }
+    return deck + "*END\n";
+}
+
+}  // namespace
+
+TEST_CASE("recheck: the geometry preview is kept when an edit leaves its inputs alone, and findings equal a full check") {
+    const std::filesystem::path path = std::filesystem::absolute("incremental_lattice.k");
+    const std::string text = lattice_deck(20);
+    engine::Documents documents;
+    documents.set(path, text);
+    engine::CheckOptions options;
+    options.rules.keep_preview = true;
+    const engine::CheckResult first = engine::check_deck(path.string(), documents, options);
+    REQUIRE(first.preview);
+    // The deck views the document's own text (an editor's 100 MB buffer is not copied), and keeps it
+    // alive when the document is replaced.
+    CHECK(first.deck.sources.file(0).text.data() == documents.find(path)->data());
+
+    // The part's title: the same particles, controls and parts.
+    std::string retitled = text;
+    retitled.replace(retitled.find("water"), 5, "water, renamed");
+    documents.set(path, retitled);
+    const engine::CheckResult again = engine::recheck_deck(path.string(), documents, options, first);
+    CHECK(first.deck.sources.file(0).text.view() == text);
+    CHECK(again.preview == first.preview);
+    CHECK(engine::same_geometry_inputs(first.model, again.model));
+    const engine::CheckResult full = engine::check_deck(path.string(), documents);
+    REQUIRE(again.diagnostics.size() == full.diagnostics.size());
+    for (std::size_t i = 0; i < full.diagnostics.size(); ++i) {
+        CHECK(again.diagnostics[i].code == full.diagnostics[i].code);
+        CHECK(again.diagnostics[i].message == full.diagnostics[i].message);
+        CHECK(again.diagnostics[i].span.line == full.diagnostics[i].span.line);
+        CHECK(again.diagnostics[i].span.column == full.diagnostics[i].span.column);
+    }
+
+    // A coordinate, a mass and CSLH change the preview's inputs: computed again.
+    for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+             {"1.00000000e-02", "1.50000000e-02"}, {"1.00000000e-01\n", "2.00000000e-01\n"}, {"1.2", "1.3"}}) {
+        std::string edited = retitled;
+        edited.replace(edited.find(from), from.size(), to);
+        documents.set(path, edited);
+        const engine::CheckResult changed = engine::recheck_deck(path.string(), documents, options, again);
+        CHECK_MESSAGE(changed.preview != again.preview, from);
+        CHECK_FALSE(engine::same_geometry_inputs(again.model, changed.model));
+    }
+}
+
+TEST_CASE("recheck: random edits in and out of the bulk blocks, across keyword lines: incremental equals full") {
+    // Shipped decks (2D and 3D, with particles, parameters and mistakes) and a generated lattice.
+    std::vector<std::pair<std::filesystem::path, std::string>> decks;
+    for (const char* name : {"decks/demo/sph_mistakes_2d.k", "decks/run/water_column_2d.k",
+                             "decks/verification/hydrostatic_2d_quick.k", "decks/tests/preview/SPH118_fires.k",
+                             "decks/tests/preview/SPH114_fires.k", "decks/tests/dk/DK003_fires_flood.k"}) {
+        const std::filesystem::path path = kSource / name;
+        decks.emplace_back(path, grammar::read_text_file(path.string()));
+    }
+    decks.emplace_back(std::filesystem::absolute("incremental_random_lattice.k"), lattice_deck(12));
+    std::mt19937 random(29);
+    for (const auto& [path, original] : decks) {
+        CAPTURE(path.string());
+        const std::string uri = lsp::uri_from_path(path);
+        nlohmann::json published;
+        lsp::Workspace workspace([&](const nlohmann::json& params) {
+            if (params["uri"] == uri) published = params["diagnostics"];
+        });
+        workspace.open(uri, original, 1);
+        workspace.flush();
+        std::vector<std::string> lines = split_lines(original);
+        for (int edit = 0; edit < 24; ++edit) {
+            const nlohmann::json change = random_edit(lines, random);
+            if (change.is_null()) continue;
+            CAPTURE(edit);
+            CAPTURE(change.dump());
+            REQUIRE(workspace.change(uri, edit + 2, nlohmann::json::array({change})));
+            workspace.flush();
+            const std::string text = join_lines(lines);
+            REQUIRE(*workspace.text(uri) == text);
+            const nlohmann::json full = full_check(path, text);
+            REQUIRE(published.size() == full.size());
+            for (std::size_t i = 0; i < full.size(); ++i) CHECK(published[i] == full[i]);
+        }
+    }
+}
