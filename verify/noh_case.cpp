@@ -5,11 +5,11 @@
 #include <cmath>
 #include <fmt/format.h>
 
-#include "io/svg_plot.hpp"
 #include "verify/cases.hpp"
 #include "verify/deck_run.hpp"
 #include "verify/noh_exact.hpp"
 #include "verify/norms.hpp"
+#include "verify/radial_profile.hpp"
 #include "verify/wave_detection.hpp"
 
 namespace sphdeck::verify {
@@ -35,16 +35,8 @@ struct NohRun {
     double centre = NAN, centre_e = NAN;  // mean density and specific energy within r_s / 4 (the wall heating)
     double energy_start = 0, energy_end = 0;
     ErrorNorms rho;  // within the shocked gas and the inflow up to 2 r_s
-    std::vector<double> r, rho_values, u_values, p_values;  // active particles
+    RadialProfile profile;
 };
-
-double total_energy(const ParticleState& s) {
-    double sum = 0;
-    for (std::size_t i = 0; i < s.size(); ++i)
-        if (s.active[i])
-            sum += s.mass[i] * (0.5 * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]) + s.e[i]);
-    return sum;
-}
 
 double median(std::vector<double> v) {
     if (v.empty()) return NAN;
@@ -58,16 +50,13 @@ NohRun evaluate(DeckRun run, int n, const NohSolution& exact) {
     NohRun r;
     r.n = n, r.spacing = box / n;
     const ParticleState& s = run.simulation->state();
+    r.profile = radial_profile(s, n);
     const double t = run.simulation->time(), rs = exact.shock_radius(t);
     std::vector<double> band, volume, rho_exact, rho_compared;
     double centre_mass = 0, centre_volume = 0, centre_energy = 0;
     for (std::size_t i = 0; i < s.size(); ++i) {
         if (!s.active[i]) continue;
         const double radius = std::hypot(s.x[i], s.y[i]);
-        r.r.push_back(radius);
-        r.rho_values.push_back(s.rho[i]);
-        r.u_values.push_back(radius > 0 ? (s.vx[i] * s.x[i] + s.vy[i] * s.y[i]) / radius : 0.0);
-        r.p_values.push_back(s.p[i]);
         if (radius > plateau_low * rs && radius < plateau_high * rs) band.push_back(s.rho[i]);
         if (radius < plateau_low * rs) {
             centre_mass += s.mass[i], centre_volume += s.mass[i] / s.rho[i], centre_energy += s.mass[i] * s.e[i];
@@ -84,7 +73,7 @@ NohRun evaluate(DeckRun run, int n, const NohSolution& exact) {
     r.rho = error_norms(rho_compared, rho_exact, volume);
     // Shock: where the density averaged in rings one spacing wide falls, outward from the plateau, to
     // halfway between the measured plateau and the exact density just ahead of the shock (4 at t = 0.6).
-    const Profile ring = binned_profile(r.r, r.rho_values, 0.0, box, r.spacing);
+    const Profile ring = binned_profile(r.profile.r, r.profile.rho, 0.0, box, r.spacing);
     const double level = 0.5 * (r.plateau + exact.pre_shock_density(rs, t));
     r.shock = level_crossing(ring, level, plateau_high * rs, box).value_or(NAN);
     r.energy_start = total_energy(run.initial);
@@ -101,32 +90,11 @@ std::string figure(const std::vector<NohRun>& runs, const NohSolution& exact, do
         const NohSolution::State g = exact.sample(radius, t);
         rs.push_back(radius), rho.push_back(g.rho), u.push_back(g.u), p.push_back(g.p);
     }
-    struct Quantity {
-        const char* title;
-        const char* label;
-        const std::vector<double>& exact;
-        std::vector<double> NohRun::*values;
-    };
-    const Quantity quantities[] = {{"density", "rho", rho, &NohRun::rho_values},
-                                   {"radial velocity", "u_r", u, &NohRun::u_values},
-                                   {"pressure", "p", p, &NohRun::p_values}};
-    const char* colours[] = {"#f58518", "#4c78a8"};
-    std::vector<io::PlotPanel> panels;
-    for (const Quantity& q : quantities) {
-        io::PlotPanel panel{q.title, "r", q.label, {}, std::pair{0.0, reach}, std::nullopt};
-        for (std::size_t k = 0; k < runs.size(); ++k) {
-            std::vector<double> r, v;
-            for (std::size_t i = 0; i < runs[k].r.size(); ++i)
-                if (runs[k].r[i] <= reach) r.push_back(runs[k].r[i]), v.push_back((runs[k].*q.values)[i]);
-            panel.series.push_back({fmt::format("SPH, {} x {} (quarter)", runs[k].n, runs[k].n), std::move(r),
-                                    std::move(v), io::SeriesStyle::Dots, colours[k % 2]});
-        }
-        panel.series.push_back({"exact (Noh, cylindrical)", rs, q.exact, io::SeriesStyle::Line, "#222222"});
-        panels.push_back(std::move(panel));
-    }
-    io::PlotOptions options;
-    options.title = fmt::format("Noh implosion at t = {:.4g}: particles against the exact solution", t);
-    return io::svg_plot(panels, options);
+    std::vector<const RadialProfile*> profiles;
+    for (const NohRun& run : runs) profiles.push_back(&run.profile);
+    RadialCurve curve{"exact (Noh, cylindrical)", std::move(rs), std::move(rho), std::move(u), std::move(p)};
+    return radial_figure(profiles, curve, reach,
+                         fmt::format("Noh implosion at t = {:.4g}: particles against the exact solution", t));
 }
 
 }  // namespace

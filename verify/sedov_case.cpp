@@ -5,10 +5,10 @@
 #include <cmath>
 #include <fmt/format.h>
 
-#include "io/svg_plot.hpp"
 #include "verify/cases.hpp"
 #include "verify/deck_run.hpp"
 #include "verify/norms.hpp"
+#include "verify/radial_profile.hpp"
 #include "verify/sedov_exact.hpp"
 #include "verify/wave_detection.hpp"
 
@@ -34,37 +34,26 @@ struct SedovRun {
     double shock = NAN, peak = NAN;  // measured shock radius and peak density
     double energy_start = 0, energy_end = 0;
     ErrorNorms rho;
-    std::vector<double> r, rho_values, u_values, p_values;  // active particles
+    RadialProfile profile;
 };
-
-double total_energy(const ParticleState& s) {
-    double sum = 0;
-    for (std::size_t i = 0; i < s.size(); ++i)
-        if (s.active[i])
-            sum += s.mass[i] * (0.5 * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]) + s.e[i]);
-    return sum;
-}
 
 SedovRun evaluate(DeckRun run, int n, const SedovSolution& exact) {
     SedovRun r;
     r.n = n, r.spacing = box / n;
     const ParticleState& s = run.simulation->state();
+    r.profile = radial_profile(s, n);
     const double t = run.simulation->time();
     std::vector<double> volume, rho_exact;
     for (std::size_t i = 0; i < s.size(); ++i) {
         if (!s.active[i]) continue;
         const double radius = std::hypot(s.x[i], s.y[i]);
-        r.r.push_back(radius);
-        r.rho_values.push_back(s.rho[i]);
-        r.u_values.push_back(radius > 0 ? (s.vx[i] * s.x[i] + s.vy[i] * s.y[i]) / radius : 0.0);
-        r.p_values.push_back(s.p[i]);
         volume.push_back(s.mass[i] / s.rho[i]);
         rho_exact.push_back(exact.sample(radius, energy, rho0, t).rho);
     }
-    r.rho = error_norms(r.rho_values, rho_exact, volume);
+    r.rho = error_norms(r.profile.rho, rho_exact, volume);
     // Density averaged in rings one spacing wide: the peak is the largest ring mean, the shock where the
     // mean falls to halfway between the peak and the ambient density, outside the peak.
-    const Profile ring = binned_profile(r.r, r.rho_values, 0.0, box, r.spacing);
+    const Profile ring = binned_profile(r.profile.r, r.profile.rho, 0.0, box, r.spacing);
     if (!ring.f.empty()) {
         const auto top = std::max_element(ring.f.begin(), ring.f.end());
         r.peak = *top;
@@ -84,28 +73,12 @@ std::string figure(const std::vector<SedovRun>& runs, const SedovSolution& exact
         const SedovSolution::State g = exact.sample(radius, energy, rho0, t);
         rs.push_back(radius), rho.push_back(g.rho), u.push_back(g.u), p.push_back(g.p);
     }
-    struct Quantity {
-        const char* title;
-        const char* label;
-        const std::vector<double>& exact;
-        std::vector<double> SedovRun::*values;
-    };
-    const Quantity quantities[] = {{"density", "rho", rho, &SedovRun::rho_values},
-                                   {"radial velocity", "u_r", u, &SedovRun::u_values},
-                                   {"pressure", "p", p, &SedovRun::p_values}};
-    const char* colours[] = {"#f58518", "#4c78a8"};
-    std::vector<io::PlotPanel> panels;
-    for (const Quantity& q : quantities) {
-        io::PlotPanel panel{q.title, "r", q.label, {}, std::pair{0.0, box}, std::nullopt};
-        for (std::size_t k = 0; k < runs.size(); ++k)
-            panel.series.push_back({fmt::format("SPH, {} x {} (quarter)", runs[k].n, runs[k].n), runs[k].r,
-                                    runs[k].*q.values, io::SeriesStyle::Dots, colours[k % 2]});
-        panel.series.push_back({"exact (Sedov, j = 2)", rs, q.exact, io::SeriesStyle::Line, "#222222"});
-        panels.push_back(std::move(panel));
-    }
-    io::PlotOptions options;
-    options.title = fmt::format("Sedov-Taylor blast wave at t = {:.4g}: particles against the similarity solution", t);
-    return io::svg_plot(panels, options);
+    std::vector<const RadialProfile*> profiles;
+    for (const SedovRun& run : runs) profiles.push_back(&run.profile);
+    RadialCurve curve{"exact (Sedov, j = 2)", std::move(rs), std::move(rho), std::move(u), std::move(p)};
+    const std::string title =
+        fmt::format("Sedov-Taylor blast wave at t = {:.4g}: particles against the similarity solution", t);
+    return radial_figure(profiles, curve, box, title);
 }
 
 }  // namespace
