@@ -100,7 +100,9 @@ std::string unified_diff(std::string_view path, std::string_view text, const std
     for (const auto& line : changed) append_changes(changes, line.line, old_line(line.line), line.new_text);
     // The last line of the index is an empty remainder when the text ends with a line break.
     const std::uint32_t last_line = lines.count() - (lines.begin(lines.count()) == text.size() ? 1 : 0);
-    std::string out = fmt::format("--- a/{}\n+++ b/{}\n", path, path);
+    // An absolute path without its leading '/', as git writes one: "a/tmp/deck.k", not "a//tmp/deck.k".
+    const std::string_view shown = !path.empty() && path.front() == '/' ? path.substr(1) : path;
+    std::string out = fmt::format("--- a/{}\n+++ b/{}\n", shown, shown);
     std::int64_t line_delta = 0;  // lines added so far less lines removed
     for (std::size_t first = 0; first < changes.size();) {
         std::size_t last = first;  // changes with at most twice the context between them share a hunk

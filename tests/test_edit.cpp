@@ -85,6 +85,11 @@ TEST_CASE("edit: a last line without a line break is marked as diff marks it") {
     CHECK(edit::unified_diff("deck.k", text, edits) == diff_u(text, edit::apply_edits(text, edits).text));
 }
 
+TEST_CASE("edit: an absolute path is named as git names it, without a doubled slash") {
+    const std::string diff = edit::unified_diff("/tmp/deck.k", "a\nb\n", {edit_at(1, 1, 2, "A")});
+    CHECK(diff.starts_with("--- a/tmp/deck.k\n+++ b/tmp/deck.k\n@@ "));
+}
+
 TEST_CASE("edit: no diff when the edits change nothing") {
     CHECK(edit::unified_diff("deck.k", "a\nb\n", {edit_at(1, 1, 2, "a")}).empty());
 }
