@@ -49,7 +49,7 @@ Points cloud(int side, int clusters, unsigned seed) {
         for (int j = 0; j < side; ++j)
             for (int i = 0; i < side; ++i) p.x.push_back(i + u(rng)), p.y.push_back(j + u(rng)), p.z.push_back(k + u(rng));
     for (int c = 0; c < clusters; ++c)
-        for (int i = 0; i < 2000; ++i) p.x.push_back(5 + 0.01 * u(rng)), p.y.push_back(7 + c), p.z.push_back(3 + 0.01 * u(rng));
+        for (int i = 0; i < 800; ++i) p.x.push_back(5 + 0.01 * u(rng)), p.y.push_back(7 + c), p.z.push_back(3 + 0.01 * u(rng));
     p.x.push_back(3 * side), p.y.push_back(0.5), p.z.push_back(0.5);
     return p;
 }
@@ -104,7 +104,7 @@ model::Model lattice_model(int side, bool shuffled_nodes) {
 }  // namespace
 
 TEST_CASE("preview threads: the grid bins the same on 1 and 4 threads") {
-    const Points p = cloud(40, 3, 11);  // 64,000 lattice points and 6,000 clustered
+    const Points p = cloud(40, 3, 11);  // 64,000 lattice points and 2,400 clustered
     for (double cell : {0.9, 1.5, 2.5, 1000.0}) {  // hashed; dense: about a point per cell, several, one for all
         const GridPicture one = with_threads(1, [&] { return picture(p, cell); });
         const GridPicture four = with_threads(4, [&] { return picture(p, cell); });
@@ -113,7 +113,7 @@ TEST_CASE("preview threads: the grid bins the same on 1 and 4 threads") {
 }
 
 TEST_CASE("preview threads: nearest neighbours and counts are the same on 1 and 4 threads") {
-    const Points p = cloud(36, 2, 5);
+    const Points p = cloud(24, 2, 5);  // 13,824 lattice points and 1,600 clustered
     const auto nn = [&] { return preproc::nearest_neighbours_grid(p.x, p.y, p.z); };
     const preproc::NearestNeighbours a = with_threads(1, nn), b = with_threads(4, nn);
     CHECK(a.distance == b.distance);
