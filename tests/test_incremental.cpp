@@ -183,8 +183,11 @@ TEST_CASE("recheck: the geometry preview is kept when an edit leaves its inputs 
     }
 
     // A coordinate, a mass and CSLH change the preview's inputs: computed again.
-    for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+    // Pairs, not structured bindings: clang does not let doctest's macros capture a binding.
+    for (const auto& change : std::vector<std::pair<std::string, std::string>>{
              {"1.00000000e-02", "1.50000000e-02"}, {"1.00000000e-01\n", "2.00000000e-01\n"}, {"1.2", "1.3"}}) {
+        const std::string& from = change.first;
+        const std::string& to = change.second;
         std::string edited = retitled;
         edited.replace(edited.find(from), from.size(), to);
         documents.set(path, edited);
@@ -205,7 +208,9 @@ TEST_CASE("recheck: random edits in and out of the bulk blocks, across keyword l
     }
     decks.emplace_back(std::filesystem::absolute("incremental_random_lattice.k"), lattice_deck(12));
     std::mt19937 random(29);
-    for (const auto& [path, original] : decks) {
+    for (const auto& deck : decks) {
+        const std::filesystem::path& path = deck.first;
+        const std::string& original = deck.second;
         CAPTURE(path.string());
         const std::string uri = lsp::uri_from_path(path);
         nlohmann::json published;
