@@ -1,5 +1,7 @@
 #include "model/radioss_lone_shifts.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 namespace sphdeck::model {
@@ -24,9 +26,14 @@ std::vector<FieldType> radioss_field_types(const grammar::radioss::CardSpec& car
 void RadiossLoneShifts::note(const grammar::CardLine& line, std::string_view text,
                              const grammar::radioss::CardSpec& card, std::span<const grammar::FixedField> positions,
                              std::string_view keyword) {
-    const std::vector<FieldType> types = radioss_field_types(card);
-    if (candidates_.size() < max_candidates)
-        if (auto shift = grammar::find_lone_shift(text, positions, types, grammar::Judged::Integers)) {
+    if (card_ != &card) {
+        card_ = &card;
+        types_ = radioss_field_types(card);
+        integer_cells_ = static_cast<std::size_t>(std::count(types_.begin(), types_.end(), FieldType::Integer));
+    }
+    // A line of fewer than two integer cells is never judged pushed (find_lone_shift wants two).
+    if (integer_cells_ >= 2 && candidates_.size() < max_candidates)
+        if (auto shift = grammar::find_lone_shift(text, positions, types_, grammar::Judged::Integers)) {
             const auto end = static_cast<std::uint32_t>(text.size() + 1);
             const auto first = static_cast<std::uint32_t>(text.find_first_not_of(' ') + 1);
             Candidate c{grammar::Span{line.file, line.line, first, end}, end, std::string(keyword), std::string(card.fields[shift->meant].name),
@@ -35,7 +42,8 @@ void RadiossLoneShifts::note(const grammar::CardLine& line, std::string_view tex
             candidates_.push_back(std::move(c));
             return;
         }
-    grammar::tally_alignment(text, positions, types, tally_, grammar::Judged::Integers);
+    if (tally_.right + tally_.other < max_tallied)
+        grammar::tally_alignment(text, positions, types_, tally_, grammar::Judged::Integers);
 }
 
 void RadiossLoneShifts::report(std::vector<diag::Diagnostic>& out) const {

@@ -40,6 +40,11 @@ private:
         grammar::LoneShift shift;
     };
     static constexpr std::size_t max_candidates = 64;
+    // The habit is judged on a sample: the first integers of a deck of millions of /NODE lines suffice.
+    static constexpr std::uint64_t max_tallied = 100000;
+    const grammar::radioss::CardSpec* card_ = nullptr;  // the card of types_ (repeated cards: line after line)
+    std::vector<keywords::FieldType> types_;
+    std::size_t integer_cells_ = 0;
     grammar::AlignmentTally tally_;
     std::vector<Candidate> candidates_;
 };
