@@ -26,6 +26,7 @@ std::vector<FieldType> radioss_field_types(const grammar::radioss::CardSpec& car
 void RadiossLoneShifts::note(const grammar::CardLine& line, std::string_view text,
                              const grammar::radioss::CardSpec& card, std::span<const grammar::FixedField> positions,
                              std::string_view keyword) {
+    if (card.repeat == grammar::radioss::Repeat::Repeated) return;
     if (card_ != &card) {
         card_ = &card;
         types_ = radioss_field_types(card);
@@ -42,8 +43,7 @@ void RadiossLoneShifts::note(const grammar::CardLine& line, std::string_view tex
             candidates_.push_back(std::move(c));
             return;
         }
-    if (tally_.right + tally_.other < max_tallied)
-        grammar::tally_alignment(text, positions, types_, tally_, grammar::Judged::Integers);
+    grammar::tally_alignment(text, positions, types_, tally_, grammar::Judged::Integers);
 }
 
 void RadiossLoneShifts::report(std::vector<diag::Diagnostic>& out) const {

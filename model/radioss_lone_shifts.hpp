@@ -26,7 +26,9 @@ std::vector<keywords::FieldType> radioss_field_types(const grammar::radioss::Car
 
 class RadiossLoneShifts {
 public:
-    // A fixed-format line read without a finding: tallied, or kept when its integers look pushed.
+    // A fixed-format line read without a finding: tallied, or kept when its integers look pushed. Lines of
+    // repeated cards (/NODE, /SHELL: millions of machine-written lines) are neither: the habit shows on
+    // the cards read once, which are where a person edits.
     void note(const grammar::CardLine& line, std::string_view text, const grammar::radioss::CardSpec& card,
               std::span<const grammar::FixedField> positions, std::string_view keyword);
     // DK029 for the kept lines, when (all but 1% of) the deck's other integers end at their cells' ends.
@@ -40,8 +42,6 @@ private:
         grammar::LoneShift shift;
     };
     static constexpr std::size_t max_candidates = 64;
-    // The habit is judged on a sample: the first integers of a deck of millions of /NODE lines suffice.
-    static constexpr std::uint64_t max_tallied = 100000;
     const grammar::radioss::CardSpec* card_ = nullptr;  // the card of types_ (repeated cards: line after line)
     std::vector<keywords::FieldType> types_;
     std::size_t integer_cells_ = 0;
