@@ -3,8 +3,9 @@ BUILD ?= build
 BUILD_ASAN ?= build-asan
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
+PREFIX ?= /usr/local
 
-.PHONY: all deps deps-build build build-cli demo test test-asan corpus mistakes bench verify clean
+.PHONY: all deps deps-build build build-cli demo test test-asan corpus mistakes bench verify install package clean
 
 all: build
 
@@ -56,6 +57,17 @@ bench: build
 # The full verification suite (docs/verification.md): reports in verification-out/.
 verify: build
 	./$(BUILD)/sphdeck verify all --out verification-out
+
+# The binary, man pages, shell completions, rule pages, editor set-ups and decks under $(PREFIX) (DESTDIR
+# honoured): builds only what it installs.
+install: build-cli
+	cmake --build $(BUILD) -j $(JOBS) --target sphdeck_man
+	cmake --install $(BUILD) --prefix $(PREFIX)
+
+# The Debian package build/sphdeck_VERSION_ARCH.deb (CPack): what make install puts under /usr.
+package: build-cli
+	cmake --build $(BUILD) -j $(JOBS) --target sphdeck_man
+	cd $(BUILD) && cpack -G DEB
 
 clean:
 	rm -rf $(BUILD) $(BUILD_ASAN)

@@ -28,7 +28,7 @@ struct VerifyArgs {
 };
 
 // --decks, else decks/verification under the current folder, else under the parent of the folder holding
-// the binary (the source tree when sphdeck was built in build/ or build-*/).
+// the binary (the source tree when sphdeck was built in build/ or build-*/), else PREFIX/share/sphdeck.
 std::optional<fs::path> find_decks(const std::string& given) {
     std::error_code ec;
     if (!given.empty()) return fs::is_directory(given, ec) ? std::optional<fs::path>(given) : std::nullopt;
@@ -38,6 +38,8 @@ std::optional<fs::path> find_decks(const std::string& given) {
     if (!ec) {
         const fs::path beside = exe.parent_path().parent_path() / "decks" / "verification";
         if (fs::is_directory(beside, ec)) return beside;
+        const fs::path installed = exe.parent_path().parent_path() / "share" / "sphdeck" / "decks" / "verification";
+        if (fs::is_directory(installed, ec)) return installed;  // make install, the Debian package
     }
     return std::nullopt;
 }
@@ -124,7 +126,8 @@ std::function<int()> setup_verify(CLI::App& app) {
     app.add_option("--out", args->out, "folder for <case>.md, <case>.svg and summary.md")->capture_default_str();
     app.add_option("--decks", args->decks,
                    "folder with the verification decks (default: decks/verification under the current folder, "
-                   "else under the source tree the binary was built in)");
+                   "else under the source tree the binary was built in, else the installed "
+                   "share/sphdeck/decks/verification)");
     app.add_option("--threads", args->threads, "OpenMP threads (0: the OpenMP default)")->check(CLI::NonNegativeNumber);
     app.footer("Exit status: 0 when every gated check of every case passes (reference rows, such as the dam "
                "break's experiments, are reported, not gated), 1 when a case fails, 2 on bad usage or a deck that "

@@ -15,6 +15,7 @@ test_packages=(
   python3 python3-jsonschema python3-yaml
   python3-vtk9   # VTK's own reader checks the .vtp/.pvd files we write (tests/test_io_writers.cpp)
   neovim
+  man-db         # `man sphdeck-check` on the installed pages (tests/ci/test_install.py)
 )
 packages=("${build_packages[@]}" "${test_packages[@]}")
 for arg in "$@"; do

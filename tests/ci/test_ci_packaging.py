@@ -61,6 +61,17 @@ def main():
                         failures.append(f"action, format sarif: results {sorted(rules)}")
                 except (OSError, ValueError, KeyError, IndexError) as e:
                     failures.append(f"action, format sarif: no SARIF file written ({e})")
+    # The key of the cached build: the runner's system and the hash of the action's files, the same twice.
+    key_step = next(s for s in action["runs"]["steps"] if s.get("id") == "key")
+    keys = []
+    with tempfile.TemporaryDirectory() as work:
+        for _ in range(2):
+            output = os.path.join(work, "output")
+            open(output, "w").close()
+            run(["bash", "-c", key_step["run"]], dict(env, GITHUB_ACTION_PATH=ROOT, GITHUB_OUTPUT=output))
+            keys.append(open(output).read().strip())
+    if not re.fullmatch(r"key=sphdeck-\S+-\S+-[0-9a-f]{20}", keys[0]) or keys[0] != keys[1]:
+        failures.append(f"action, build key: {keys}, expected the same key=sphdeck-SYSTEM-ARCH-HASH twice")
     for f in failures:
         print("FAIL " + f)
     print(f"ci packaging: {'passed' if not failures else 'failed'} (2 hooks, 2 action formats)")
