@@ -27,7 +27,8 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/rules DESTINATION ${CMAKE_INSTALL_D
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/editors DESTINATION ${CMAKE_INSTALL_DATADIR}/sphdeck
   PATTERN node_modules EXCLUDE PATTERN out EXCLUDE PATTERN .gitignore EXCLUDE PATTERN .vscodeignore EXCLUDE)
 # The demo decks and the verification decks (`sphdeck verify` finds them beside the installed binary).
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/decks/demo ${PROJECT_SOURCE_DIR}/decks/run ${PROJECT_SOURCE_DIR}/decks/verification
+install(DIRECTORY
+  ${PROJECT_SOURCE_DIR}/decks/demo ${PROJECT_SOURCE_DIR}/decks/run ${PROJECT_SOURCE_DIR}/decks/verification
   DESTINATION ${CMAKE_INSTALL_DATADIR}/sphdeck/decks PATTERN "*.py" EXCLUDE)
 
 # The Debian package: Debian 12's runtime libraries, named (dpkg -I shows them).
@@ -35,15 +36,15 @@ set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME sphdeck)
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "checker, formatter and previewer for LS-DYNA and OpenRadioss SPH decks")
-set(CPACK_PACKAGE_DESCRIPTION "sphdeck checks LS-DYNA and OpenRadioss SPH input decks before they reach the
-solver: file:line:column diagnostics with rule codes, a formatter, smoothing-length previews, a compact
-reference SPH solver and a language server for editors.")
+set(CPACK_PACKAGE_DESCRIPTION "sphdeck checks LS-DYNA and OpenRadioss SPH input decks before they reach
+the solver: file:line:column diagnostics with rule codes, a formatter, smoothing-length previews, a
+compact reference SPH solver and a language server for editors.")
 set(CPACK_PACKAGE_CONTACT "sphdeck maintainers")
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
-set(CPACK_DEBIAN_PACKAGE_DEPENDS
-  "libc6 (>= 2.34), libstdc++6 (>= 12), libgcc-s1 (>= 3.0), libgomp1 (>= 12), libfmt9 (>= 9.1.0), libtomlplusplus3 (>= 3.3.0)")
+string(CONCAT CPACK_DEBIAN_PACKAGE_DEPENDS "libc6 (>= 2.34), libstdc++6 (>= 12), libgcc-s1 (>= 3.0), libgomp1 (>= 12), "
+  "libfmt9 (>= 9.1.0), libtomlplusplus3 (>= 3.3.0)")
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "bash-completion")
 include(CPack)
 

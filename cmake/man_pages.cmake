@@ -39,7 +39,8 @@ function(roff_text out_var line)
   set(${out_var} "${line}" PARENT_SCOPE)
 endfunction()
 
-# The body of a page from the help lines (the list named list_var) after the description: sections, tagged entries, paragraphs.
+# The body of a page from the help lines (the list named list_var) after the description: sections,
+# tagged entries, paragraphs.
 function(help_body out_var list_var)
   set(body "")
   set(section "")
