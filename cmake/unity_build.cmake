@@ -6,6 +6,10 @@
 # that breaks a batch with "redefinition of" or "call of overloaded ... is ambiguous" in
 # Unity/unity_N_cxx.cxx goes on this list too (or renames its helper). -DSPHDECK_UNITY_BUILD=OFF compiles
 # file by file: quicker rebuilds while editing one file.
+# Off by default: a file-local name can also silently shadow a header's name for the files after it in a
+# batch. rules_preview.cpp's `max_listed = 20` replaced particle_groups.hpp's 5 in rules_references.cpp:
+# REF001 named 20 particles instead of 5 (test_references.cpp caught it). The list below has it now, but
+# no audit has shown that no other such pair exists: turn it on only with the whole ctest and the corpus.
 set(CMAKE_UNITY_BUILD ${SPHDECK_UNITY_BUILD})
 set(CMAKE_UNITY_BUILD_BATCH_SIZE 16)
 
@@ -18,6 +22,7 @@ set(SPHDECK_UNITY_ALONE
   io/svg_plot.cpp
   lint/rules_dimension.cpp
   lint/rules_isph.cpp
+  lint/rules_preview.cpp
   lint/rules_references_links.cpp
   lsp/feature_inlay_hints.cpp
   model/decimal_comma.cpp
