@@ -12,6 +12,7 @@
 #include "edit/unified_diff.hpp"
 #include "engine/check.hpp"
 #include "engine/config_file.hpp"
+#include "grammar/file_paths.hpp"
 
 namespace sphdeck::cli {
 namespace {
@@ -29,7 +30,8 @@ struct Totals {
     std::array<std::size_t, edit::format_change_kinds> changes{};
 };
 
-// Writes `text` over `path` through a temporary file renamed into place (the deck may be mapped).
+// Writes `text` over `path` through a temporary file renamed into place (the deck may be mapped). `path` is
+// the canonical path: renamed over a symbolic link, the file would replace the link and leave its target.
 void write_file(const std::string& path, const std::string& text) {
     namespace fs = std::filesystem;
     const std::string temporary = path + ".sphdeck-format-" + std::to_string(::getpid());  // one per process
@@ -94,7 +96,8 @@ bool format_one(const std::string& deck, const FormatArgs& args, Totals& totals)
         else if (args.check)
             fmt::print("would reformat {}\n", file.display_name);
         else
-            write_file(file.path, edit::apply_edits(file.text, edits).text);
+            write_file(grammar::canonical_path(file.path).string(),  // a link's target: the link stays
+                       edit::apply_edits(file.text, edits).text);
     }
     return any;
 }
