@@ -1,5 +1,7 @@
 #include "cli/check_inputs.hpp"
 
+#include "grammar/file_paths.hpp"
+
 #include <fnmatch.h>
 
 #include <algorithm>
@@ -86,11 +88,7 @@ std::vector<fs::path> named_includes(const fs::path& deck) {
     return out;
 }
 
-fs::path key(const fs::path& path) {
-    std::error_code ec;
-    fs::path canonical = fs::weakly_canonical(path, ec);
-    return ec ? fs::absolute(path).lexically_normal() : canonical;
-}
+fs::path key(const fs::path& path) { return grammar::canonical_path(path); }
 
 }  // namespace
 

@@ -15,6 +15,7 @@
 #include "edit/unified_diff.hpp"
 #include "engine/check.hpp"
 #include "engine/config_file.hpp"
+#include "grammar/file_paths.hpp"
 
 namespace sphdeck::cli {
 namespace {
@@ -34,7 +35,8 @@ struct Totals {
     std::array<std::size_t, edit::format_change_kinds> changes{};
 };
 
-// Writes `text` over `path` through a temporary file renamed into place (the deck may be mapped).
+// Writes `text` over `path` through a temporary file renamed into place (the deck may be mapped). `path` is
+// the canonical path: renamed over a symbolic link, the file would replace the link and leave its target.
 void write_file(const std::string& path, const std::string& text) {
     namespace fs = std::filesystem;
     const std::string temporary = path + ".sphdeck-format-" + std::to_string(::getpid());  // one per process
@@ -121,7 +123,8 @@ bool format_one(const CheckInput& input, const FormatArgs& args, Totals& totals)
         else if (from_stdin)
             fmt::print("{}", edit::apply_edits(file.text, edits).text);
         else
-            write_file(file.path, edit::apply_edits(file.text, edits).text);
+            write_file(grammar::canonical_path(file.path).string(),  // a link's target: the link stays
+                       edit::apply_edits(file.text, edits).text);
     }
     return any;
 }

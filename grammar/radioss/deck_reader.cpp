@@ -4,6 +4,7 @@
 
 #include "grammar/dyna/include_not_found.hpp"
 #include "grammar/dyna/include_resolver.hpp"
+#include "grammar/file_paths.hpp"
 #include "grammar/parameters.hpp"
 #include "grammar/fields.hpp"
 
@@ -174,8 +175,7 @@ void DeckReader::on_include(const char* begin, const char* end, std::string_view
         deck_.diagnostics.push_back(dyna::include_not_found(file_name, where, search, false, true));
         return;
     }
-    std::error_code ec;
-    auto canonical = std::filesystem::weakly_canonical(resolved->path, ec);
+    const std::filesystem::path canonical = canonical_path(resolved->path);  // the same file by any path
     for (const OpenFile& open : stack_) {
         if (canonical_[open.id] == canonical) {
             report("DK011", diag::Severity::Error,
@@ -192,7 +192,7 @@ void DeckReader::on_include(const char* begin, const char* end, std::string_view
     }
     SourceFile child;
     child.path = resolved->path.string();
-    child.display_name = resolved->path.lexically_normal().string();
+    child.display_name = normal_path(resolved->path).string();
     child.parent = f.id;
     child.include_line = f.line;
     child.depth = parent.depth + 1;
