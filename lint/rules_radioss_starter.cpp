@@ -135,7 +135,7 @@ private:
 
     void report(grammar::Span at, std::string message, const StarterCheck& check) {
         diag::Diagnostic& d = c_.report("RAD040", at, std::move(message));
-        d.notes.push_back({grammar::Span{}, fmt::format("OpenRadioss starter: {}", check.source)});
+        d.notes.push_back({grammar::Span{}, fmt::format("OpenRadioss starter/source/materials/mat/{}", check.source)});
     }
 
     RuleContext& c_;
