@@ -140,6 +140,12 @@ constexpr RuleInfo kRows[] = {
     {"RAD030", "straddling-value", Error, "0.1.0", "reader",
      "a number written across the end of its cell: the starter keeps the part inside and reads the rest elsewhere",
      Fixable::Safe},
+    {"RAD040", "starter-value-check", Error, "0.1.0", "starter",
+     "a material value the OpenRadioss starter's reader rejects (A <= 0 in LAW2, E <= 0, a density <= 0...), with "
+     "the starter's message id; a card the block lacks reads as blanks"},
+    {"RAD042", "th-selection-undefined", Error, "0.1.0", "starter",
+     "a /TH selection id that no entity of its keyword's kind has (node, SPH cell, shell, brick...: starter error "
+     "78 or 69; part or interface: warning 1610 or 257)"},
 
     // REF: references between definitions (ids of nodes, parts, sections, materials, sets).
     {"REF001", "undefined-node", Error, "0.1.0", "references",

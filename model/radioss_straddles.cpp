@@ -158,14 +158,23 @@ void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
     // Under a header, values past the card's last field (a newer format's, or text the starter
     // ignores) are no evidence either way: the line is judged up to a few columns past the card.
     std::string_view probe = text;
-    if (!header.empty() && !positions.empty()) {
-        const std::size_t limit = std::size_t{positions.back().start} + positions.back().width + 4;
+    // A last cell kept as text (the rest of /MAT's E, nu card) is no cell to align a value to: a shift
+    // that moves a number there empties a cell the starter reads. The line is judged up to it.
+    const bool rest_as_text = positions.size() > 1 && positions.size() == card.fields.size() &&
+                              card.fields.back().cell == grammar::radioss::Cell::Line;
+    const std::span<const grammar::FixedField> cells = rest_as_text ? positions.first(positions.size() - 1) : positions;
+    if (rest_as_text) {
+        types.resize(cells.size());
+        if (probe.size() > std::size_t{positions.back().start}) probe = probe.substr(0, positions.back().start);
+    }
+    if (!header.empty() && !cells.empty()) {
+        const std::size_t limit = std::size_t{cells.back().start} + cells.back().width + 4;
         if (probe.size() > limit) probe = probe.substr(0, limit);
     }
     // Without a header, one value typed across a boundary among right-aligned ones is RAD030, not a shift.
     std::optional<grammar::LineShift> shift;
     if (!header.empty() || !one_value_moved(text, glued, positions))
-        shift = grammar::find_shift(probe, header, positions, types);
+        shift = grammar::find_shift(probe, header, cells, types);
     if (shift && probe.size() != text.size()) {
         // The fix moves the whole line, its tail included.
         const int n = shift->columns;
