@@ -76,10 +76,16 @@ void fold_mended_consequences(const grammar::RawDeck& deck, std::vector<diag::Di
     std::vector<int> folded_into(diagnostics.size(), -1);
     for (std::size_t k = 0; k < cause_at.size(); ++k) {
         std::multiset<Place> after;
-        for (const diag::Diagnostic& d : recheck(mended_files(deck, diagnostics[cause_at[k]].fixes.front(), documents)))
+        // A finding the re-check folds into a cause of its own line (a shift the mended deck's habit now shows)
+        // is not gone: it stays, on that line.
+        std::set<std::pair<grammar::FileId, std::uint32_t>> cause_lines;
+        for (const diag::Diagnostic& d : recheck(mended_files(deck, diagnostics[cause_at[k]].fixes.front(), documents))) {
             after.insert(place_of(d));
+            if (is_cause_code(d.code) || is_cause(d)) cause_lines.insert({d.span.file, d.span.line});
+        }
         for (std::size_t i : candidates)
-            if (folded_into[i] < 0 && after.count(place_of(diagnostics[i])) == 0)
+            if (folded_into[i] < 0 && after.count(place_of(diagnostics[i])) == 0 &&
+                cause_lines.count({diagnostics[i].span.file, diagnostics[i].span.line}) == 0)
                 folded_into[i] = static_cast<int>(cause_at[k]);
     }
     for (std::size_t i : candidates)

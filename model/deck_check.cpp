@@ -144,9 +144,15 @@ public:
         constexpr std::uint64_t min_aligned = 4;  // a deck with fewer numbers shows no habit
         // A stray left-aligned number or two in a deck of hundreds is no habit of writing left.
         if (alignment_.right < min_aligned || alignment_.other * 100 > alignment_.right) return;
-        for (const LoneCandidate& c : lone_)
+        for (const LoneCandidate& c : lone_) {
+            // A line the `$#` header above already showed shifted (model/shift_diagnosis.cpp) is reported once.
+            const bool reported = std::any_of(out_.begin(), out_.end(), [&](const diag::Diagnostic& d) {
+                return d.code == "DK029" && d.span.file == c.line->file && d.span.line == c.line->line;
+            });
+            if (reported) continue;
             out_.push_back(lone_value_finding(deck_, *c.block, *c.line, *c.card, c.shift, layout_of(*c.card, c.block->format),
                                               c.refused));
+        }
     }
 
 private:
@@ -448,9 +454,11 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
             if (const CaseSpan* first = first_in_run(seen, current_case)) out.push_back(duplicate_control(deck, *match->schema, block.span, first->span));
             seen.push_back({current_case, block.span});
         }
-        if (block.keyword == "*COMMENT") {
+        if (block.keyword == "*COMMENT" || block.keyword.rfind("*PARAMETER", 0) == 0) {
+            // Lines the reader takes (parameters) or keeps as text: a keyword name among them lost its '*'.
             std::vector<LostAsteriskLine> lost;
-            note_lost_in_comment(deck, block, lost);
+            if (block.keyword == "*COMMENT") note_lost_in_comment(deck, block, lost);
+            else if (block.line_count > 0) note_lost_in_unread(deck, block, deck.begin_lines(block), lost);
             diagnose_lost_asterisks(deck, block, lost, out, out.size());
         }
         if (skip_cards(block.keyword) || match->schema->free_text) continue;
