@@ -52,7 +52,9 @@ constexpr RuleInfo kRows[] = {
      "a tab inside a fixed-format data line",
      Fixable::Safe},
     {"DK017", "data-after-end", Info, "0.1.0", "reader",
-     "non-blank lines after *END"},
+     "non-blank lines after *END (or /END): information; a warning at the end line when keyword blocks that "
+     "define or load something follow it (the solver never reads them)",
+     Fixable::Unsafe},
     {"DK018", "duplicate-control", Error, "0.1.0", "schema",
      "a *CONTROL_ keyword that may appear once appears twice"},
     {"DK019", "include-format-ignored", Warning, "0.1.0", "reader",
@@ -85,6 +87,14 @@ constexpr RuleInfo kRows[] = {
      Fixable::Safe},
     {"DK031", "decimal-comma", Warning, "0.1.0", "reader",
      "a comma between two digits in a padded fixed-format line: a decimal comma makes the line free format"},
+    {"DK032", "part-heading-missing", Warning, "0.1.0", "schema",
+     "a *PART heading that reads as a card of integers: the heading line was left out, so the PID line is read "
+     "as the heading and the next line as card 2 (an error when that misreads)",
+     Fixable::Unsafe},
+    {"DK033", "keyword-without-asterisk", Warning, "0.1.0", "schema",
+     "a data line that is a keyword name without its '*' (PART for *PART): read as more cards of the block above, "
+     "so the block it meant to open is lost (an error when that misreads)",
+     Fixable::Unsafe},
 
     // RAD: OpenRadioss SPH options (/SPHBCS, SOL2SPH, /PROP/SPH, /SPHCEL, /SPHGLO, /DT).
     {"RAD001", "missing-starter-header", Error, "0.1.0", "reader",

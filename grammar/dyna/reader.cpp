@@ -120,6 +120,7 @@ void DeckReader::read(FileId file, CardFormat inherited_format, const FileCache:
         source.text.data(), source.text.data() + source.text.size(), source.path.c_str());
     pegtl::parse<rules::file, action>(in, *this);
     close_block();
+    report_dropped_blocks(first_diagnostic);
     const std::uint32_t physical_lines = current().line;
     deck_.stats.lines += physical_lines;
     stack_.pop_back();

@@ -2,6 +2,8 @@
 // join the open block, #include reads a file in place, #enddata ends a file, /END the deck.
 #include "grammar/radioss/deck_reader.hpp"
 
+#include "grammar/radioss/keyword_lookup.hpp"
+
 #include "grammar/dyna/include_not_found.hpp"
 #include "grammar/dyna/include_resolver.hpp"
 #include "grammar/file_paths.hpp"
@@ -76,6 +78,10 @@ void DeckReader::on_enddata(const char* begin, const char* end) {
 void DeckReader::on_header(const char* begin, const char* end) {
     OpenFile& f = current();
     ++f.line;
+    if (ended_ && header_path == begin) {
+        const std::string header = to_upper(trim(strip_cr(header_path, end)));
+        dropped_.note_radioss(header, lookup_keyword(header).known);
+    }
     if (skipped(begin, end)) return;
     close_block();
     f.headed = true;
@@ -101,6 +107,7 @@ void DeckReader::on_header(const char* begin, const char* end) {
     deck_.blocks.push_back(std::move(block));
     if (deck_.blocks.back().keyword == "/END") {
         ended_ = true;
+        dropped_.set_end(deck_.blocks.back().span);
         return;
     }
     block_ = deck_.blocks.size() - 1;
@@ -208,6 +215,20 @@ void DeckReader::on_include(const char* begin, const char* end, std::string_view
     const std::size_t blocks = deck_.blocks.size();
     read(deck_.sources.add(std::move(child)));
     if (deck_.blocks.size() != blocks) close_block();
+}
+
+// The warning then stands for the information on the first line after /END in its file.
+void DeckReader::report_dropped_blocks() {
+    auto found = dropped_.finding("/END", false);
+    if (!found) return;
+    for (std::size_t i = 0; i < deck_.diagnostics.size(); ++i) {
+        const diag::Diagnostic& d = deck_.diagnostics[i];
+        if (d.code == "DK017" && d.span.file == found->span.file && d.severity == diag::Severity::Info) {
+            deck_.diagnostics.erase(deck_.diagnostics.begin() + static_cast<std::ptrdiff_t>(i));
+            break;
+        }
+    }
+    deck_.diagnostics.push_back(std::move(*found));
 }
 
 }  // namespace sphdeck::grammar::radioss

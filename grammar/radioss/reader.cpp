@@ -173,7 +173,7 @@ void DeckReader::read(FileId file) {
     pegtl::parse<rules::file, action>(in, *this);
     deck_.stats.lines += current().line;
     stack_.pop_back();
-    if (stack_.empty()) close_block();
+    if (stack_.empty()) close_block(), report_dropped_blocks();
 }
 
 RawDeck read_file(const std::string& path, const ReaderOptions& options) {
