@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "grammar/fields.hpp"
 #include "grammar/shifted_line.hpp"
 #include "grammar/value.hpp"
 #include "model/radioss_lone_shifts.hpp"
@@ -48,12 +49,23 @@ std::vector<Straddle> straddles(std::string_view text, const grammar::radioss::C
         const bool packed = (s == positions[i].start && !flag_into_wider) ||
                             (i + 1 < positions.size() && e == std::size_t{positions[i + 1].start} + positions[i + 1].width);
         if (packed || grammar::parse_real(text.substr(s, e - s)).status != grammar::NumberStatus::Ok) continue;
-        // A zero across the boundary ('.000000000' read as '.00000' and '0000') changes no value.
+        // A zero across the boundary ('.000000000' read as '.00000' and '0000') changes no value, unless
+        // the next cell holds a value of its own that the lost zeros are then read with (BS '0.0' one
+        // column past 80 makes IFORM '0        1': the starter reads IFORM 0).
         const grammar::RealValue whole = grammar::parse_real(text.substr(s, e - s));
         const grammar::RealValue kept = grammar::parse_real(text.substr(s, b - s));
         const grammar::RealValue lost = grammar::parse_real(text.substr(b, e - b));
+        const std::size_t next_end =
+            i + 1 < positions.size() ? std::size_t{positions[i + 1].start} + positions[i + 1].width : e;
+        // The next cell's own value, read with the lost zeros: harmless when it is blank or zero too
+        // ('0000      .000000000' is 0 either way).
+        const std::string_view own =
+            e >= text.size() ? std::string_view{} : grammar::trim_blanks(text.substr(e, next_end > e ? next_end - e : 0));
+        const grammar::RealValue own_value = grammar::parse_real(own);
+        const bool next_clear =
+            own.empty() || (own_value.status == grammar::NumberStatus::Ok && own_value.value == 0.0);
         if (whole.value == 0.0 && kept.status == grammar::NumberStatus::Ok && kept.value == 0.0 &&
-            lost.status == grammar::NumberStatus::Ok && lost.value == 0.0)
+            lost.status == grammar::NumberStatus::Ok && lost.value == 0.0 && next_clear)
             continue;
         out.push_back({i, s, b, e});
     }
