@@ -1,5 +1,7 @@
 #include "cli/check_inputs.hpp"
 
+#include "grammar/file_paths.hpp"
+
 #include <fnmatch.h>
 
 #include <algorithm>
@@ -26,10 +28,24 @@ bool is_deck_file(const fs::path& path) {
     return name.size() > 9 && name.ends_with("_0000.rad");
 }
 
-bool excluded(const std::string& path, const std::vector<std::string>& exclude) {
-    const std::string name = fs::path(path).filename().string();
-    return std::any_of(exclude.begin(), exclude.end(), [&](const std::string& glob) {
-        return fnmatch(glob.c_str(), path.c_str(), 0) == 0 || fnmatch(glob.c_str(), name.c_str(), 0) == 0;
+// Whether --exclude leaves out a file or folder found under a given folder, as .gitignore patterns do:
+// a pattern without '/' matches the name of the file or of any folder on its way ("water_tank",
+// "tmp_*.k"); one with '/' matches the path as found or a folder of it ("*/old/*", "decks/old").
+// Names are those below the folder given on the command line (`root`).
+bool excluded(const fs::path& path, const fs::path& root, const std::vector<std::string>& exclude) {
+    return std::any_of(exclude.begin(), exclude.end(), [&](std::string pattern) {
+        while (pattern.size() > 1 && pattern.back() == '/') pattern.pop_back();
+        if (pattern.find('/') == std::string::npos) {
+            for (const fs::path& part : path.lexically_relative(root))
+                if (fnmatch(pattern.c_str(), part.string().c_str(), 0) == 0) return true;
+            return false;
+        }
+        fs::path prefix;
+        for (const fs::path& part : path) {
+            prefix /= part;
+            if (fnmatch(pattern.c_str(), prefix.string().c_str(), 0) == 0) return true;
+        }
+        return false;
     });
 }
 
@@ -72,11 +88,7 @@ std::vector<fs::path> named_includes(const fs::path& deck) {
     return out;
 }
 
-fs::path key(const fs::path& path) {
-    std::error_code ec;
-    fs::path canonical = fs::weakly_canonical(path, ec);
-    return ec ? fs::absolute(path).lexically_normal() : canonical;
-}
+fs::path key(const fs::path& path) { return grammar::canonical_path(path); }
 
 }  // namespace
 
@@ -91,11 +103,12 @@ ExpandedInputs expand_inputs(const std::vector<std::string>& given, const std::v
         std::vector<std::string> found;
         for (fs::recursive_directory_iterator it(path, fs::directory_options::skip_permission_denied, ec), end;
              !ec && it != end; it.increment(ec)) {
-            if (it->is_directory(ec) && it->path().filename().string().rfind('.', 0) == 0) {
-                it.disable_recursion_pending();  // .git, .vscode ...
+            if (it->is_directory(ec) &&
+                (it->path().filename().string().rfind('.', 0) == 0 || excluded(it->path(), path, exclude))) {
+                it.disable_recursion_pending();  // .git, .vscode ..., and folders --exclude names
                 continue;
             }
-            if (it->is_regular_file(ec) && is_deck_file(it->path()) && !excluded(it->path().string(), exclude))
+            if (it->is_regular_file(ec) && is_deck_file(it->path()) && !excluded(it->path(), path, exclude))
                 found.push_back(it->path().string());
         }
         if (found.empty()) {

@@ -21,8 +21,9 @@ struct ExpandedInputs {
 };
 
 // Deck files in a folder: *.k *.key *.dyn *.inc and OpenRadioss starter decks *_0000.rad (the engine
-// deck is read with its starter). Hidden folders are skipped. `exclude`: fnmatch globs matched against
-// the path as found and its file name (`--exclude '*/old/*' --exclude 'tmp_*.k'`).
+// deck is read with its starter). Hidden folders are skipped. `exclude`: patterns as in .gitignore, a
+// name (glob) matching a file or folder below the given folder (`--exclude old --exclude 'tmp_*.k'`)
+// or a glob with '/' matching the path as found or one of its folders (`--exclude '*/old/*'`).
 ExpandedInputs expand_inputs(const std::vector<std::string>& given, const std::vector<std::string>& exclude);
 
 // The decks found in folders that no other found deck includes (by their *INCLUDE / #include lines,

@@ -1,6 +1,9 @@
 // sphdeck check DECK...: read decks, report problems in the chosen format, end with one summary
 // line (stdout for the full text format, stderr otherwise so stdout stays machine-readable).
+#include <algorithm>
+#include <cctype>
 #include <chrono>
+#include <filesystem>
 #include <cstdio>
 #include <iostream>
 #include <iterator>
@@ -193,10 +196,30 @@ engine::CheckResult fix_deck(const std::string& path, engine::Documents& documen
     return std::move(outcome.remaining);
 }
 
+// "REF003", "SPH030", "DK001": two to three capitals and three digits.
+bool looks_like_rule_code(const std::string& word) {
+    std::size_t letters = 0;
+    while (letters < word.size() && std::isupper(static_cast<unsigned char>(word[letters]))) ++letters;
+    if (letters < 2 || letters > 3 || word.size() != letters + 3) return false;
+    return std::all_of(word.begin() + static_cast<std::ptrdiff_t>(letters), word.end(),
+                       [](unsigned char c) { return std::isdigit(c); });
+}
+
 int run_check(const CheckArgs& args) {
     if (args.unsafe_fixes && !args.fix && !args.diff) {
         fmt::print(stderr, "sphdeck: error: --unsafe-fixes widens --fix or --diff; give one of them\n");
         return exit_usage;
+    }
+    // `--ignore SPH030 REF003 deck.k`: a list option takes one value (A,B) per flag, so REF003 came as a deck.
+    for (const std::string& deck : args.decks) {
+        std::error_code ec;
+        if (deck != "-" && !std::filesystem::exists(deck, ec) && looks_like_rule_code(deck)) {
+            fmt::print(stderr,
+                       "sphdeck check: error: '{}' is no file but looks like a rule code: a list option takes its "
+                       "codes joined by commas (--ignore A,B) or repeated (--ignore A --ignore B)\n",
+                       deck);
+            return exit_usage;
+        }
     }
     auto start = std::chrono::steady_clock::now();
     const ExpandedInputs expanded = expand_inputs(args.decks, args.exclude);
@@ -318,7 +341,9 @@ std::function<int()> setup_check(CLI::App& app) {
                    "decks (LS-DYNA .k .key .dyn .inc, OpenRadioss _0000.rad), folders searched for them, or - "
                    "for standard input")
         ->required();
-    app.add_option("--exclude", args->exclude, "skip files found in folders that match these globs")
+    app.add_option("--exclude", args->exclude,
+                   "skip files and folders found in folders that match these patterns (a name, or a glob on the path)")
+        ->type_name("PATTERN")
         ->allow_extra_args(false);
     app.add_option("--stdin-filename", args->stdin_filename,
                    "the name of the deck read from standard input (-): for messages and include resolution");
@@ -339,10 +364,12 @@ std::function<int()> setup_check(CLI::App& app) {
                                          "check only these rules: codes, names or prefixes such as SPH "
                                          "(replaces select of sphdeck.toml)")
                               ->delimiter(',')
+                              ->type_name("CODE,...")
                               ->allow_extra_args(false)  // one list per --select: decks are never codes
                               ->check(rule_selector());
     app.add_option("--ignore", args->ignore, "skip these rules (added to ignore of sphdeck.toml)")
         ->delimiter(',')
+        ->type_name("CODE,...")
         ->allow_extra_args(false)
         ->check(rule_selector());
     app.add_option("--solver", args->solver, "the run type, for rules that depend on it")

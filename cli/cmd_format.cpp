@@ -4,20 +4,26 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
+#include <iostream>
+#include <iterator>
 #include <unistd.h>
 
+#include "cli/check_inputs.hpp"
 #include "cli/commands.hpp"
 #include "edit/apply_edits.hpp"
 #include "edit/format_deck.hpp"
 #include "edit/unified_diff.hpp"
 #include "engine/check.hpp"
 #include "engine/config_file.hpp"
+#include "grammar/file_paths.hpp"
 
 namespace sphdeck::cli {
 namespace {
 
 struct FormatArgs {
     std::vector<std::string> decks;
+    std::vector<std::string> exclude;
+    std::string stdin_filename;
     bool check = false, diff = false, verbose = false;
     std::string to;
     edit::FormatOptions options;
@@ -29,7 +35,8 @@ struct Totals {
     std::array<std::size_t, edit::format_change_kinds> changes{};
 };
 
-// Writes `text` over `path` through a temporary file renamed into place (the deck may be mapped).
+// Writes `text` over `path` through a temporary file renamed into place (the deck may be mapped). `path` is
+// the canonical path: renamed over a symbolic link, the file would replace the link and leave its target.
 void write_file(const std::string& path, const std::string& text) {
     namespace fs = std::filesystem;
     const std::string temporary = path + ".sphdeck-format-" + std::to_string(::getpid());  // one per process
@@ -52,14 +59,31 @@ std::vector<std::string> include_paths_for(const std::string& deck, const Format
     return paths;
 }
 
-// Formats one deck (and its includes when asked); true when a file changed or would change.
-bool format_one(const std::string& deck, const FormatArgs& args, Totals& totals) {
+// Reads one input: a file, or standard input ("-") named and resolved as --stdin-filename says.
+engine::CheckResult read_input(const CheckInput& input, const FormatArgs& args) {
     engine::CheckOptions options;
-    options.reader.include_paths = include_paths_for(deck, args);
     options.rules.geometry = false;  // the layout needs the reading's findings, not the particles' geometry
-    const engine::CheckResult r = engine::check_file(deck, options);
-    const auto files = edit::files_to_format(r.deck, args.options.includes);
-    edit::FormatResult formatted = edit::format_deck(r.deck, r.diagnostics, files, args.options);
+    if (input.path != "-") {
+        options.reader.include_paths = include_paths_for(input.path, args);
+        return engine::check_file(input.path, options);
+    }
+    const std::string name = args.stdin_filename.empty() ? "<stdin>" : args.stdin_filename;
+    options.reader.include_paths = include_paths_for(args.stdin_filename.empty() ? "." : name, args);
+    std::string text(std::istreambuf_iterator<char>(std::cin), {});
+    const std::string folder = std::filesystem::path(name).parent_path().string();
+    return engine::check_buffer(std::move(text), name, options, std::nullopt, folder.empty() ? "." : folder);
+}
+
+// Formats one deck (and its includes when asked, or when it was found in a folder: the folder's decks
+// are formatted through the decks that include them); true when a file changed or would change. A deck
+// read from standard input is written to standard output (with --check and --diff: nothing written).
+bool format_one(const CheckInput& input, const FormatArgs& args, Totals& totals) {
+    const engine::CheckResult r = read_input(input, args);
+    const bool from_stdin = input.path == "-";
+    edit::FormatOptions format_options = args.options;
+    format_options.includes = args.options.includes || input.found_in_folder;
+    const auto files = edit::files_to_format(r.deck, format_options.includes);
+    edit::FormatResult formatted = edit::format_deck(r.deck, r.diagnostics, files, format_options);
     for (std::size_t k = 0; k < totals.changes.size(); ++k) totals.changes[k] += formatted.changes[k];
     totals.kept += formatted.kept;
     if (args.verbose)
@@ -78,7 +102,10 @@ bool format_one(const std::string& deck, const FormatArgs& args, Totals& totals)
         while (at < count && all[at].span.file < id) ++at;
         std::size_t end = at;
         while (end < count && all[end].span.file == id) ++end;
-        if (end == at) continue;
+        if (end == at) {
+            if (from_stdin && !args.check && !args.diff) fmt::print("{}", r.deck.sources.file(id).text);
+            continue;
+        }
         std::vector<diag::TextEdit> edits;
         if (at == 0 && end == count)
             edits = std::move(all);  // one file: no copy (a 1M-particle deck may change every line)
@@ -93,21 +120,29 @@ bool format_one(const std::string& deck, const FormatArgs& args, Totals& totals)
             fmt::print("{}", edit::unified_diff(file.display_name, file.text, edits));
         else if (args.check)
             fmt::print("would reformat {}\n", file.display_name);
+        else if (from_stdin)
+            fmt::print("{}", edit::apply_edits(file.text, edits).text);
         else
-            write_file(file.path, edit::apply_edits(file.text, edits).text);
+            write_file(grammar::canonical_path(file.path).string(),  // a link's target: the link stays
+                       edit::apply_edits(file.text, edits).text);
     }
     return any;
 }
 
 int run_format(FormatArgs& args) {
     args.options.to_fixed = args.to == "fixed";
+    const ExpandedInputs expanded = expand_inputs(args.decks, args.exclude);
+    if (expanded.error) {
+        fmt::print(stderr, "sphdeck format: error: {}\n", *expanded.error);
+        return exit_usage;
+    }
     Totals totals;
     bool changed = false;
-    for (const std::string& deck : args.decks) {
+    for (const CheckInput& input : drop_included(expanded.inputs)) {
         try {
-            changed = format_one(deck, args, totals) || changed;
+            changed = format_one(input, args, totals) || changed;
         } catch (const std::exception& e) {
-            fmt::print(stderr, "error: {}\n", e.what());
+            fmt::print(stderr, "sphdeck format: error: {}\n", e.what());
             return exit_usage;
         }
     }
@@ -122,16 +157,25 @@ int run_format(FormatArgs& args) {
                totals.kept == 0 ? ""
                                 : fmt::format("; {} card line{} left as written{}", totals.kept,
                                               totals.kept == 1 ? "" : "s", args.verbose ? "" : " (--verbose lists them)"));
-    return args.check && changed ? exit_findings : exit_clean;
+    // --check and --diff exit 1 when a file would change, as `check --diff` does.
+    return (args.check || args.diff) && changed ? exit_findings : exit_clean;
 }
 
 }  // namespace
 
 std::function<int()> setup_format(CLI::App& app) {
     auto args = std::make_shared<FormatArgs>();
-    app.add_option("decks", args->decks, "LS-DYNA keyword decks or OpenRadioss starter decks")->required();
+    app.add_option("decks", args->decks,
+                   "decks (LS-DYNA .k .key .dyn .inc, OpenRadioss _0000.rad), folders searched for them (each deck "
+                   "with its includes), or - for standard input (the formatted deck goes to standard output)")
+        ->required();
+    app.add_option("--exclude", args->exclude,
+                   "skip files and folders found in folders that match these patterns (a name, or a glob on the path)")
+        ->allow_extra_args(false);
+    app.add_option("--stdin-filename", args->stdin_filename,
+                   "the name of the deck read from standard input (-): for messages and include resolution");
     app.add_flag("--check", args->check, "write nothing; exit 1 when a file would change (CI, pre-commit)");
-    app.add_flag("--diff", args->diff, "write nothing; print a unified diff of the changes");
+    app.add_flag("--diff", args->diff, "write nothing; print a unified diff of the changes (exit 1 when a file would change)");
     app.add_flag("--includes", args->options.includes, "format the included files too (else only the named decks)");
     app.add_flag("--headers", args->options.headers, "write a `$#` line naming the fields above each card");
     app.add_option("--to", args->to, "rewrite free (comma) lines in fixed columns when every value fits")

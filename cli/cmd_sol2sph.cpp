@@ -63,7 +63,7 @@ std::string check_word(const preproc::Sol2sphPart& p) {
 }
 
 std::string guidance(const preproc::Sol2sphPart& p) {
-    std::string s = fmt::format("pitch {}: h {} to {} (1.25 to 1.5 x pitch, sph-algorithms.md §9.4); h_1D 3 "
+    std::string s = fmt::format("pitch {}: h {} to {} (1.25 to 1.5 x pitch, docs/radioss.md: SOL2SPH); h_1D 3 "
                                 "with hcst 1.2 gives {}",
                                 g4(p.pitch), g4(1.25 * p.pitch), g4(1.5 * p.pitch), g4(1.2 * p.pitch));
     if (p.sph_h_1d == 3) s += fmt::format("; SPH part {} uses h_1D 3", p.sph_part);

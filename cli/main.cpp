@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/parse_error_message.hpp"
+#include "cli/stream_order.hpp"
 #include "cli/suggest.hpp"
 #include "cli/unknown_option.hpp"
 
@@ -22,7 +24,7 @@ const std::vector<sphdeck::cli::Command>& commands() {
         {"smooth", "preview smoothing lengths, neighbours and time step per part (table, json, csv, vtk, svg)", sphdeck::cli::setup_smooth},
         {"sol2sph", "generate the particles SOL2SPH parts of a Radioss deck will release (vtp, csv)", sphdeck::cli::setup_sol2sph},
         {"run", "run the deck with the compact reference SPH solver (time history, vtp snapshots)", sphdeck::cli::setup_run},
-        {"verify", "run the verification cases (sod, hydrostatic, dambreak, sedov) against exact and experimental data", sphdeck::cli::setup_verify},
+        {"verify", "run the verification cases (sod, hydrostatic, dambreak, sedov, noh...) against exact, experimental and independent data", sphdeck::cli::setup_verify},
         {"lsp", "serve editors over the Language Server Protocol on stdio: diagnostics as you type, hover, go to definition", sphdeck::cli::setup_lsp},
     };
     return table;
@@ -32,6 +34,7 @@ const std::vector<sphdeck::cli::Command>& commands() {
 
 int main(int argc, char** argv) {
     using namespace sphdeck::cli;
+    keep_streams_in_order();
     CLI::App app{"sphdeck: checks LS-DYNA and OpenRadioss SPH decks before they reach the solver", "sphdeck"};
     app.set_version_flag("--version", std::string("sphdeck ") + SPHDECK_VERSION);
     app.require_subcommand(1);
@@ -58,8 +61,10 @@ int main(int argc, char** argv) {
                 return exit_usage;
             }
         }
-        int code = app.exit(e);
-        return code == 0 ? exit_clean : exit_usage;
+        // --help and --version end the parse with an "error" that CLI11 prints itself.
+        if (e.get_exit_code() == 0) return app.exit(e) == 0 ? exit_clean : exit_usage;
+        fmt::print(stderr, "{}\n", parse_error_message(app, e, argc, argv));
+        return exit_usage;
     }
     try {
         return run ? run() : exit_usage;

@@ -70,38 +70,46 @@ std::vector<TextItem> fold_for_text(const std::vector<diag::Diagnostic>& finding
         if (++r.count > kShownPerBlock && r.folded_lines.size() < 5) r.folded_lines.push_back(findings[i].span.line);
     }
     std::map<std::string, std::size_t> shown, hidden;
+    std::map<std::string, const diag::Diagnostic*> first_hidden;  // where a fold line of a code points
     for (std::size_t i = 0; i < findings.size(); ++i) {
         const diag::Diagnostic& d = findings[i];
         if (block[i] != no_block) {
             Run& r = runs[{block[i], d.code}];
             const std::size_t k = ++r.seen;
             if (r.count > kShownPerBlock + 1 && k > kShownPerBlock) {
-                if (k == kShownPerBlock + 1 && shown[d.code] >= max_per_code) hidden[d.code] += r.count - kShownPerBlock;
+                if (k == kShownPerBlock + 1 && shown[d.code] >= max_per_code) {
+                    hidden[d.code] += r.count - kShownPerBlock;
+                    first_hidden.try_emplace(d.code, &d);
+                }
                 else if (k == kShownPerBlock + 1) {
                     std::string lines;
                     for (std::size_t n = 0; n < r.folded_lines.size(); ++n)
                         lines += (n ? ", " : "") + std::to_string(r.folded_lines[n]);
                     if (r.count - kShownPerBlock > r.folded_lines.size()) lines += ", ...";
-                    out.push_back({nullptr, fmt::format("{}: {} more {} finding(s) on the lines of this {} block: "
-                                                        "lines {} (--max-per-code 0 shows all)\n",
+                    out.push_back({nullptr, fmt::format("{}: note: {} more {} finding(s) on the lines of this {} "
+                                                        "block: lines {} (--max-per-code 0 shows all) [{}]\n",
                                                         diag::detail::location(d.span, deck.sources),
                                                         r.count - kShownPerBlock, d.code,
-                                                        deck.blocks[block[i]].keyword, lines)});
+                                                        deck.blocks[block[i]].keyword, lines, d.code)});
                 }
                 continue;
             }
         }
         if (shown[d.code] >= max_per_code) {
             ++hidden[d.code];
+            first_hidden.try_emplace(d.code, &d);
             continue;
         }
         ++shown[d.code];
         out.push_back({&d, {}});
     }
-    const std::string deck_name = deck.sources.size() ? diag::detail::file_name(deck.sources.file(0)) : "sphdeck";
+    // In the concise pattern (file:line:col: severity: message [CODE]) at the first finding not shown, so
+    // that grep, problem matchers and CI parsers read the fold line as any other.
     for (const auto& [code, n] : hidden)
-        out.push_back({nullptr, fmt::format("{}: {} more {} finding(s) not shown (--max-per-code 0 shows all)\n",
-                                            deck_name, n, code)});
+        out.push_back({nullptr, fmt::format("{}: note: {} more {} finding(s) not shown (--max-per-code 0 shows all) "
+                                            "[{}]\n",
+                                            diag::detail::location(first_hidden.at(code)->span, deck.sources), n,
+                                            code, code)});
     return out;
 }
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "grammar/file_paths.hpp"
+
 namespace sphdeck::edit {
 namespace {
 
@@ -24,7 +26,21 @@ bool overlaps(const Placed& taken, const Placed& next) {
     return taken.begin < next.end;
 }
 
-using TakenEdits = std::map<std::string, std::vector<Placed>>;  // path -> edits taken on it
+using TakenEdits = std::map<std::string, std::vector<Placed>>;  // canonical path -> edits taken on it
+
+// The canonical path of each file (grammar::canonical_path), asked of the system once per file.
+class FileKeys {
+public:
+    explicit FileKeys(const grammar::SourceMap& sources) : sources_(sources), keys_(sources.size()) {}
+    const std::string& operator[](grammar::FileId id) {
+        if (keys_[id].empty()) keys_[id] = grammar::canonical_path(sources_.file(id).path).string();
+        return keys_[id];
+    }
+
+private:
+    const grammar::SourceMap& sources_;
+    std::vector<std::string> keys_;
+};
 
 }  // namespace
 
@@ -38,6 +54,7 @@ FixRound choose_fixes(const grammar::SourceMap& sources, const std::vector<diag:
                       FixLevel level) {
     FixRound round;
     TakenEdits taken;
+    FileKeys keys(sources);
     for (const diag::Diagnostic& d : diagnostics) {
         const diag::Fix* fix = chosen_fix(d, level);
         if (!fix) continue;
@@ -53,7 +70,7 @@ FixRound choose_fixes(const grammar::SourceMap& sources, const std::vector<diag:
                 break;
             }
             const std::size_t length = sources.line_text(s.file, s.line).size();
-            placed.push_back({&sources.file(s.file).path,
+            placed.push_back({&keys[s.file],
                               Placed{s.line, std::min<std::size_t>(s.column - 1, length),
                                      std::min<std::size_t>(s.end_column - 1, length), &e.replacement}});
         }

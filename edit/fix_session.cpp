@@ -2,15 +2,16 @@
 
 #include "edit/apply_edits.hpp"
 #include "edit/line_index.hpp"
+#include "grammar/file_paths.hpp"
 
 namespace sphdeck::edit {
 namespace {
 
-// The text the check read for `path` (the first instance of a file included twice: all read the same).
-std::string_view text_of(const grammar::SourceMap& sources, const std::string& path) {
+// The first instance of the file whose canonical path is `key` (a file included twice: all read the same).
+const grammar::SourceFile* file_of(const grammar::SourceMap& sources, const std::string& key) {
     for (grammar::FileId f = 0; f < sources.size(); ++f)
-        if (sources.file(f).path == path) return sources.file(f).text.view();
-    return {};
+        if (grammar::canonical_path(sources.file(f).path).string() == key) return &sources.file(f);
+    return nullptr;
 }
 
 }  // namespace
@@ -18,19 +19,21 @@ std::string_view text_of(const grammar::SourceMap& sources, const std::string& p
 FixOutcome fix_deck(const std::string& path, engine::Documents& documents, const engine::CheckOptions& options,
                     FixLevel level, std::size_t max_rounds) {
     FixOutcome out;
-    std::map<std::string, std::size_t> file_index;  // path -> index in out.files
+    std::map<std::string, std::size_t> file_index;  // canonical path -> index in out.files
     engine::CheckResult result = engine::check_deck(path, documents, options);
     for (std::size_t round = 0; round < max_rounds; ++round) {
         const FixRound choice = choose_fixes(result.deck.sources, result.diagnostics, level);
         bool changed = false;
-        for (const auto& [file, edits] : choice.edits) {
-            const std::string_view current = text_of(result.deck.sources, file);
+        for (const auto& [key, edits] : choice.edits) {
+            const grammar::SourceFile* file = file_of(result.deck.sources, key);
+            if (!file) continue;
+            const std::string_view current = file->text.view();
             AppliedEdits applied = apply_edits(current, edits);
             if (applied.text == current) continue;
-            auto [at, first_change] = file_index.try_emplace(file, out.files.size());
-            if (first_change) out.files.push_back({file, std::string(current), {}});
+            auto [at, first_change] = file_index.try_emplace(key, out.files.size());
+            if (first_change) out.files.push_back({file->path, std::string(current), {}});
             out.files[at->second].fixed = applied.text;
-            documents.set(file, std::move(applied.text));
+            documents.set(key, std::move(applied.text));
             changed = true;
         }
         // A round whose fixes change no byte would repeat itself: the findings stay as they are.

@@ -15,7 +15,7 @@
 namespace sphdeck::edit {
 
 struct FixedFile {
-    std::string path;      // as the reader opened it (SourceFile::path)
+    std::string path;      // as the reader first opened it (SourceFile::path of its first instance)
     std::string original;  // the text before the first round
     std::string fixed;     // after the last; differs from `original`
 };

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "edit/format_sink.hpp"
+#include "grammar/file_paths.hpp"
 #include "grammar/read_deck.hpp"
 
 namespace sphdeck::edit {
@@ -85,7 +86,7 @@ std::vector<grammar::FileId> files_to_format(const grammar::RawDeck& deck, bool 
     for (grammar::FileId id = 0; id < deck.sources.size(); ++id) {
         const grammar::SourceFile& f = deck.sources.file(id);
         if (f.depth > 0 && !includes) continue;
-        if (seen.insert(f.path).second) out.push_back(id);
+        if (seen.insert(grammar::canonical_path(f.path).string()).second) out.push_back(id);  // by any name
     }
     return out;
 }

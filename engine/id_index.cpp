@@ -104,8 +104,8 @@ std::optional<HeaderId> header_id(const grammar::Block& block) {
 
 // Radioss header families: those that define an id, and those whose id names another block's.
 std::optional<IdRole> header_role(std::string_view family) {
-    static constexpr std::array<std::string_view, 10> defines{"PART", "PROP",  "MAT",    "GRNOD", "GRPART",
-                                                              "FRAME", "SKEW", "SURF", "FUNCT", "SUBSET"};
+    static constexpr std::array<std::string_view, 11> defines{"PART", "PROP",  "MAT",    "GRNOD", "GRPART", "FRAME",
+                                                              "SKEW", "SURF", "FUNCT", "SUBSET", "SET"};
     static constexpr std::array<std::string_view, 9> of_part{"SPHCEL", "BRICK", "TETRA4", "TETRA10", "PENTA6",
                                                              "SHELL",  "SH3N",  "BEAM",   "SPRING"};
     if (std::find(defines.begin(), defines.end(), family) != defines.end()) return IdRole{std::string(family), true};
@@ -188,6 +188,9 @@ std::optional<IdRole> dyna_id_role(std::string_view keyword, const keywords::Fie
 
 std::optional<IdRole> radioss_id_role(const rad::FieldSpec& field) {
     if (field.cell != rad::Cell::Int) return std::nullopt;
+    // The CFG's own type of the cell first (/RBODY grnd_ID, /INTER's secondary and main ids).
+    if (field.link == 'G') return IdRole{"GRNOD", false};
+    if (field.link == 'U') return IdRole{"SURF", false};
     std::string_view name = field.name;
     const std::size_t at = name.rfind("_ID");
     if (at == std::string_view::npos || at == 0) return std::nullopt;
@@ -206,6 +209,12 @@ std::optional<std::string> radioss_header_kind(std::string_view header) {
     auto role = header_role(id->family);
     if (!role || !role->defines) return std::nullopt;
     return role->kind;
+}
+
+bool ids_meet(std::string_view a, std::string_view b) {
+    if (a == b) return true;
+    const auto group = [](std::string_view k) { return starts_with(k, "GR") || k == "SURF" || k == "LINE"; };
+    return (a == "SET" && group(b)) || (group(a) && b == "SET");
 }
 
 std::string id_text(const model::FieldValue& v) {
@@ -360,7 +369,7 @@ std::vector<IdUse> definitions_of(const CheckResult& deck, const std::string& ki
         std::vector<IdUse> found;
         if (radioss) {
             auto header = header_id(block);
-            if (!header || header->family != kind || (id && header->id != *id)) continue;
+            if (!header || !ids_meet(header->family, kind) || (id && header->id != *id)) continue;
             collect_radioss(deck, block, version, found);
         } else {
             const bool family = std::any_of(kDefinitions.begin(), kDefinitions.end(), [&](const Definition& d) {
@@ -370,7 +379,7 @@ std::vector<IdUse> definitions_of(const CheckResult& deck, const std::string& ki
             collect_dyna(deck, block, found);
         }
         for (auto& use : found)
-            if (use.defines && use.kind == kind && (!id || use.id == *id)) out.push_back(std::move(use));
+            if (use.defines && ids_meet(use.kind, kind) && (!id || use.id == *id)) out.push_back(std::move(use));
     }
     return out;
 }

@@ -32,6 +32,11 @@ std::optional<IdRole> radioss_id_role(const grammar::radioss::FieldSpec& field);
 // The kind a Radioss header defines an id of (its first numeric segment): "/PROP/SPH/7" -> PROP.
 std::optional<std::string> radioss_header_kind(std::string_view header);
 
+// Whether ids of kind `a` and kind `b` are one space: the same kind, or a Radioss group kind
+// (GRNOD, GRPART, SURF, LINE...) and SET, since the starter makes a group of each kind from a /SET
+// of that id (starter fill_igr.F).
+bool ids_meet(std::string_view a, std::string_view b);
+
 // The id a decoded field holds ("7", a label), empty when blank, zero or unreadable.
 std::string id_text(const model::FieldValue& value);
 std::string id_text(const model::RadiossValue& value);

@@ -9,6 +9,7 @@
 
 #include "grammar/file_cache.hpp"
 #include "grammar/file_overlay.hpp"
+#include "grammar/file_paths.hpp"
 #include "grammar/source_text.hpp"
 
 namespace sphdeck::engine {
@@ -90,6 +91,21 @@ grammar::SourceText text_of(const fs::path& path, const Documents& documents, gr
     }
 }
 
+// `path` absolute, its folders as the user reaches them (a linked folder stays the link): the decks
+// around a file reached through a link are searched, checked and named where the user sees them.
+fs::path as_reached(const fs::path& path) {
+    std::error_code ec;
+    const fs::path absolute = fs::absolute(path, ec);
+    return grammar::normal_path(ec ? path : absolute);
+}
+
+// The names a deck may include `path` by: its own and, when it is a link, its target's.
+void add_names(const fs::path& path, std::vector<std::string>& names) {
+    for (const fs::path& p : {path, Documents::key(path)})
+        if (std::find(names.begin(), names.end(), p.filename().string()) == names.end())
+            names.push_back(p.filename().string());
+}
+
 }  // namespace
 
 std::vector<fs::path> candidate_decks(const fs::path& file, const std::vector<std::string>& roots) {
@@ -101,43 +117,45 @@ std::vector<fs::path> candidate_decks(const fs::path& file, const std::vector<st
             else if (fs::is_regular_file(root, ec)) out.emplace_back(root);
         }
     } else {
-        const auto chain = folders_up_to_root(file);
+        const auto chain = folders_up_to_root(as_reached(file));
         for (const fs::path& folder : chain) add_deck_files(folder, out);
         for (const fs::path& folder : chain)
             for (const fs::path& inner : subfolders(folder))
                 if (std::find(chain.begin(), chain.end(), inner) == chain.end()) add_deck_files(inner, out);
     }
-    const fs::path key = Documents::key(file);
+    // Told apart by canonical path (a deck reached by two names is one candidate), kept as reached.
     std::vector<fs::path> unique;
-    std::set<fs::path> seen{key};
+    std::set<fs::path> seen{Documents::key(file)};
     for (const fs::path& candidate : out)
         if (seen.insert(Documents::key(candidate)).second && unique.size() < kMostCandidates)
-            unique.push_back(Documents::key(candidate));
+            unique.push_back(as_reached(candidate));
     return unique;
 }
 
 IncludeContext check_in_context(const fs::path& file, const Documents& documents, const CheckOptions& options) {
     const fs::path key = Documents::key(file);
-    const auto candidates = candidate_decks(key, options.config.roots);
+    const auto candidates = candidate_decks(file, options.config.roots);
     // The candidates that name the file, or name a candidate that does (an include of an include):
     // grown until nothing new is named.
     std::vector<grammar::SourceText> texts(candidates.size());
     for (std::size_t i = 0; i < candidates.size(); ++i) texts[i] = text_of(candidates[i], documents, options.reader.cache);
     std::vector<bool> reached(candidates.size(), false);
-    std::vector<std::string> names{key.filename().string()};
+    std::vector<std::string> names;
+    add_names(file, names);
     for (std::size_t named = 0; named < names.size(); ++named)
         for (std::size_t i = 0; i < candidates.size(); ++i)
             if (!reached[i] && mentions(texts[i].view(), names[named])) {
                 reached[i] = true;
-                names.push_back(candidates[i].filename().string());
+                add_names(candidates[i], names);
             }
     IncludeContext context;
     for (std::size_t i = 0; i < candidates.size(); ++i) {
         if (!reached[i]) continue;
         try {
-            // Named as the user would type it from here, as the file itself was.
+            // Named as the user would type it from here, as the file itself was; lexically, so that a
+            // deck reached through a linked folder keeps the link in its name (fs::proximate resolves it).
             std::error_code ec;
-            fs::path shown = fs::proximate(candidates[i], ec);
+            fs::path shown = candidates[i].lexically_proximate(fs::current_path(ec));
             if (ec || shown.empty()) shown = candidates[i];
             CheckResult r = check_deck(shown.string(), documents, options);
             if (r.includes.main != key && r.includes.depends_on(key)) context.decks.push_back(std::move(r));

@@ -17,7 +17,8 @@ namespace sphdeck::engine {
 // the file's folder and each folder above it up to the project root (the nearest folder with a
 // sphdeck.toml or a .git, .hg or .svn; without one, the file's folder and its parent), and of the
 // folders directly inside those. Deck files: .k .key .dyn .inc .rad by extension; `file` itself left
-// out; at most kMostCandidates, nearest folders first.
+// out; at most kMostCandidates, nearest folders first. Folders are walked as `file` reaches them (a
+// linked folder stays the link) and the candidates returned so, absolute; two names of one deck are one.
 inline constexpr std::size_t kMostCandidates = 2000;
 std::vector<std::filesystem::path> candidate_decks(const std::filesystem::path& file,
                                                    const std::vector<std::string>& roots);

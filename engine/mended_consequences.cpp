@@ -12,11 +12,20 @@
 namespace sphdeck::engine {
 namespace {
 
+// A cause whose mend is a judgement (unsafe fix) yet whose consequences the deck shows the same way: a
+// stray *END (DK017 warning: the blocks after it are read once it is gone), a *PART heading line
+// missing (DK032), a keyword line that lost its '*' (DK033).
+bool judged_cause(const diag::Diagnostic& d) {
+    return (d.code == "DK017" && d.severity == diag::Severity::Warning) || d.code == "DK032" || d.code == "DK033";
+}
+
 bool is_cause(const diag::Diagnostic& d) {
     const bool shift = d.code == "DK029" && d.severity == diag::Severity::Error;
-    return (shift || d.code == "DK030") && !d.fixes.empty() && d.fixes.front().safe &&
-           !d.fixes.front().edits.empty();
+    return ((shift || d.code == "DK030") || judged_cause(d)) && !d.fixes.empty() &&
+           (d.fixes.front().safe || judged_cause(d)) && !d.fixes.front().edits.empty();
 }
+
+bool is_cause_code(const std::string& code) { return code == "DK029" || code == "DK030" || code == "DK032" || code == "DK033"; }
 
 using Place = std::tuple<std::string, grammar::FileId, std::uint32_t, std::uint32_t>;
 Place place_of(const diag::Diagnostic& d) { return {d.code, d.span.file, d.span.line, d.span.column}; }
@@ -59,7 +68,7 @@ void fold_mended_consequences(const grammar::RawDeck& deck, std::vector<diag::Di
     std::vector<std::size_t> candidates;
     for (std::size_t i = 0; i < diagnostics.size(); ++i) {
         const diag::Diagnostic& d = diagnostics[i];
-        if (d.code == "DK029" || d.code == "DK030" || on_cause_lines(d, causes)) continue;
+        if (is_cause_code(d.code) || is_cause(d) || on_cause_lines(d, causes)) continue;
         candidates.push_back(i);
     }
     if (candidates.empty()) return;
@@ -67,14 +76,25 @@ void fold_mended_consequences(const grammar::RawDeck& deck, std::vector<diag::Di
     std::vector<int> folded_into(diagnostics.size(), -1);
     for (std::size_t k = 0; k < cause_at.size(); ++k) {
         std::multiset<Place> after;
-        for (const diag::Diagnostic& d : recheck(mended_files(deck, diagnostics[cause_at[k]].fixes.front(), documents)))
+        // A finding the re-check folds into a cause of its own line (a shift the mended deck's habit now shows)
+        // is not gone: it stays, on that line.
+        std::set<std::pair<grammar::FileId, std::uint32_t>> cause_lines;
+        for (const diag::Diagnostic& d : recheck(mended_files(deck, diagnostics[cause_at[k]].fixes.front(), documents))) {
             after.insert(place_of(d));
+            if (is_cause_code(d.code) || is_cause(d)) cause_lines.insert({d.span.file, d.span.line});
+        }
         for (std::size_t i : candidates)
-            if (folded_into[i] < 0 && after.count(place_of(diagnostics[i])) == 0)
+            if (folded_into[i] < 0 && after.count(place_of(diagnostics[i])) == 0 &&
+                cause_lines.count({diagnostics[i].span.file, diagnostics[i].span.line}) == 0)
                 folded_into[i] = static_cast<int>(cause_at[k]);
     }
     for (std::size_t i : candidates)
-        if (folded_into[i] >= 0) model::fold_into(diagnostics[static_cast<std::size_t>(folded_into[i])], std::move(diagnostics[i]));
+        if (folded_into[i] >= 0) {
+            diag::Diagnostic& cause = diagnostics[static_cast<std::size_t>(folded_into[i])];
+            // A cause is as grave as what it brings about (an *END that drops a part the particles name).
+            cause.severity = std::max(cause.severity, diagnostics[i].severity);
+            model::fold_into(cause, std::move(diagnostics[i]));
+        }
     std::size_t kept = 0;
     for (std::size_t i = 0; i < diagnostics.size(); ++i)
         if (folded_into[i] < 0) {

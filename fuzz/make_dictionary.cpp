@@ -77,15 +77,16 @@ void print(std::string_view token) {
 int main(int argc, char** argv) {
     const std::string_view target = argc > 1 ? argv[1] : "";
     std::set<std::string> tokens;
-    // format_dyna reads LS-DYNA decks as dyna_check does: the same words.
-    if (target == "dyna_check" || target == "format_dyna") dyna(tokens), expression(tokens), keyword_arguments(tokens);
-    else if (target == "radioss_check") radioss(tokens);
+    // dyna_read and format_dyna read LS-DYNA decks as dyna_check does: the same words.
+    if (target == "dyna_check" || target == "dyna_read" || target == "format_dyna")
+        dyna(tokens), expression(tokens), keyword_arguments(tokens);
+    else if (target == "radioss_check" || target == "radioss_read") radioss(tokens);
     else if (target == "expression") expression(tokens);
     else if (target == "keyword_arguments") keyword_arguments(tokens);
     else if (target == "lsp_messages") lsp_messages(tokens);
     else {
-        std::fprintf(stderr, "usage: fuzz_dictionary dyna_check|format_dyna|radioss_check|expression|"
-                             "keyword_arguments|lsp_messages\n");
+        std::fprintf(stderr, "usage: fuzz_dictionary dyna_read|dyna_check|format_dyna|radioss_read|radioss_check|"
+                             "expression|keyword_arguments|lsp_messages\n");
         return 2;
     }
     tokens.erase("");

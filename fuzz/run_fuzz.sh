@@ -12,7 +12,8 @@ usage: fuzz/run_fuzz.sh [-t SECONDS] [-n RUNS] [-B BUILD] [-o OUT] [-u] [TARGET.
   -o OUT      work folder for seeds, new inputs, logs and crashing inputs (default BUILD/fuzz-out)
   -u          merge the new inputs that add coverage into fuzz/corpus/<target>/ (the tree)
   -s          skip building: use the targets already in BUILD
-  TARGET      dyna_check radioss_check keyword_arguments expression lsp_messages format_dyna (default: all)
+  TARGET      dyna_read radioss_read dyna_check radioss_check keyword_arguments expression lsp_messages
+              format_dyna (default: all)
 Environment: FUZZ_FLAGS adds libFuzzer flags, after the script's own (so -entropic=1 restores the
 entropic schedule on the deck targets, which run with -entropic=0: see fuzz/README.md "Speed").
 USAGE
@@ -33,7 +34,7 @@ while getopts "t:n:B:o:ush" opt; do
 done
 shift $((OPTIND - 1))
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(dyna_check radioss_check keyword_arguments expression lsp_messages format_dyna)
+[ ${#targets[@]} -eq 0 ] && targets=(dyna_read radioss_read dyna_check radioss_check keyword_arguments expression lsp_messages format_dyna)
 out=${out:-$build/fuzz-out}
 
 if [ "$skip_build" -eq 0 ]; then
@@ -47,8 +48,8 @@ fi
 # Seeds: the small decks of decks/ (large ones only slow each execution down), by format.
 seeds_for() {
   case $1 in
-    dyna_check|format_dyna) find "$root/decks" -type f \( -name '*.k' -o -name '*.inc' -o -name '*.key' \) -size -8k ;;
-    radioss_check) find "$root/decks" -type f -name '*.rad' -size -8k ;;
+    dyna_read|dyna_check|format_dyna) find "$root/decks" -type f \( -name '*.k' -o -name '*.inc' -o -name '*.key' \) -size -8k ;;
+    radioss_read|radioss_check) find "$root/decks" -type f -name '*.rad' -size -8k ;;
     *) ;;
   esac
 }
@@ -66,15 +67,18 @@ for t in "${targets[@]}"; do
   mkdir -p "$kept" "$found" "$seeds" "$artifacts"
   seeds_for "$t" | while read -r f; do cp "$f" "$seeds/"; done
   "$build/fuzz/fuzz_dictionary" "$t" > "$out/$t.dict"
+  # The read targets take the decks their check targets take: those targets' kept inputs seed them too.
+  shared=()
+  case $t in dyna_read|radioss_read) [ -d "$root/fuzz/corpus/${t%_read}_check" ] && shared=("$root/fuzz/corpus/${t%_read}_check") ;; esac
   log="$out/$t.log"
   echo "== fuzz_$t: ${seconds} s$( [ "$runs" -ge 0 ] && echo ", at most $runs runs"), log $log"
   # The deck targets reach tens of thousands of features, and clang 14's entropic schedule scans
   # its list of rare features once per feature of every execution: three fifths of the time.
   schedule=""
-  case $t in dyna_check|radioss_check) schedule="-entropic=0" ;; esac
+  case $t in dyna_read|radioss_read|dyna_check|radioss_check) schedule="-entropic=0" ;; esac
   status=0
   # New inputs go to the first folder ($found), never into the tree unless -u merges them.
-  "$bin" "$found" "$kept" "$seeds" -dict="$out/$t.dict" -max_total_time="$seconds" -runs="$runs" \
+  "$bin" "$found" "$kept" ${shared[@]+"${shared[@]}"} "$seeds" -dict="$out/$t.dict" -max_total_time="$seconds" -runs="$runs" \
     -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=512 -max_len=8192 -print_final_stats=1 \
     -artifact_prefix="$artifacts/" $schedule ${FUZZ_FLAGS:-} > "$log" 2>&1 || status=$?
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)

@@ -14,6 +14,11 @@ namespace sphdeck::fuzz {
 void check_dyna_deck(const std::uint8_t* data, std::size_t size);
 // The same for an OpenRadioss starter deck.
 void check_radioss_deck(const std::uint8_t* data, std::size_t size);
+// An LS-DYNA deck read and decoded into the model (the reader's and the decoder's findings), no rule and
+// no renderer: the shallow target, fast enough for the 1e7 executions a deck target should see.
+void read_dyna_deck(const std::uint8_t* data, std::size_t size);
+// The same for an OpenRadioss starter deck.
+void read_radioss_deck(const std::uint8_t* data, std::size_t size);
 // The text after *KEYWORD (memory sizes, long=, i10=, ...).
 void parse_keyword_arguments(const std::uint8_t* data, std::size_t size);
 // A *PARAMETER_EXPRESSION expression, with a few parameters defined.

@@ -2,18 +2,13 @@
 
 #include <system_error>
 
+#include "grammar/file_paths.hpp"
 #include "grammar/text_file.hpp"
 
 namespace sphdeck::grammar {
 namespace fs = std::filesystem;
 
-fs::path FileOverlay::key(const fs::path& path) {
-    std::error_code ec;
-    fs::path absolute = fs::absolute(path, ec);
-    if (ec) absolute = path;
-    fs::path canonical = fs::weakly_canonical(absolute, ec);
-    return ec ? absolute.lexically_normal() : canonical;
-}
+fs::path FileOverlay::key(const fs::path& path) { return canonical_path(path); }
 
 void FileOverlay::set(const fs::path& path, std::string text) {
     texts_[key(path)] = std::make_shared<const std::string>(std::move(text));

@@ -16,10 +16,16 @@ constexpr std::size_t max_shift = 4;  // "a few columns", as grammar/shifted_lin
 
 std::size_t slot_end(const FixedField& f) { return std::size_t{f.start} + f.width; }
 
-bool number_field(FieldType t) { return t == FieldType::Integer || t == FieldType::Real; }
+// A label field (an id that may be alphanumeric, *SECTION_SPH SECID) holds a number as a rule: a value moved
+// back into it reads (the tally of a deck's habit counts integers and reals only, as before).
+bool number_field(FieldType t) { return t == FieldType::Integer || t == FieldType::Real || t == FieldType::Label; }
+
+bool tallied_field(FieldType t, Judged judged) {
+    return judged == Judged::Integers ? t == FieldType::Integer : t == FieldType::Integer || t == FieldType::Real;
+}
 
 bool judged_field(FieldType t, Judged judged) {
-    return judged == Judged::Integers ? t == FieldType::Integer : number_field(t);
+    return judged == Judged::Integers ? t == FieldType::Integer || t == FieldType::Label : number_field(t);
 }
 
 // The field holding [begin, end) whole, or `fields` when none does.
@@ -36,7 +42,7 @@ void tally_alignment(std::string_view text, std::span<const FixedField> slots, s
     const std::size_t fields = std::min(slots.size(), types.size());
     for (const LineToken& t : line_tokens(text)) {
         const std::size_t s = field_of(t.begin, t.end, slots, fields);
-        if (s == fields || !judged_field(types[s], judged)) continue;
+        if (s == fields || !tallied_field(types[s], judged)) continue;
         if (t.end == slot_end(slots[s])) ++tally.right;
         else ++tally.other;
     }

@@ -95,6 +95,22 @@ std::vector<FixedField> all_8_wide(std::span<const FixedField> standard) {
     return out;
 }
 
+// `text` with the columns of its text fields, moved `shift` right, blanked: a text value's own alignment
+// (LS-PrePost writes *SET_NODE_LIST's SOLVER `MECH` left-aligned, glued to DA4's `0.0`) is evidence
+// neither for nor against a shift; the numbers decide.
+std::string without_text_fields(std::string_view text, std::span<const FixedField> slots,
+                                std::span<const FieldType> types, int shift) {
+    std::string out(text);
+    for (std::size_t i = 0; i < slots.size() && i < types.size(); ++i) {
+        if (types[i] != FieldType::Text) continue;
+        const std::ptrdiff_t from = std::max<std::ptrdiff_t>(0, static_cast<std::ptrdiff_t>(slots[i].start) + shift);
+        const std::ptrdiff_t to = static_cast<std::ptrdiff_t>(slot_end(slots[i])) + shift;
+        for (std::ptrdiff_t c = from; c < to && c < static_cast<std::ptrdiff_t>(out.size()); ++c)
+            out[static_cast<std::size_t>(c)] = ' ';
+    }
+    return out;
+}
+
 }  // namespace
 
 std::vector<FieldType> field_types(const keywords::CardSpec& card) {
@@ -130,14 +146,19 @@ std::optional<LineShift> find_shift(std::string_view text, std::string_view head
 std::optional<LineShift> find_shift(std::string_view text, std::string_view header, std::span<const FixedField> slots,
                                     std::span<const FieldType> types) {
     if (!cuttable(text)) return std::nullopt;
-    std::vector<LineToken> tokens = line_tokens(text);
+    // Judged at each shift on the numbers alone: the text fields' columns, moved as far, are blanked.
+    std::string numbers = without_text_fields(text, slots, types, 0);
+    std::vector<LineToken> tokens = line_tokens(numbers);
     if (tokens.size() < 2) return std::nullopt;  // one value shows no consistent shift
     const bool by_header = header_aligned(header, slots, types.size());
-    const bool clean = place_tokens(text, tokens, slots, types, 0);
+    const bool clean = place_tokens(numbers, tokens, slots, types, 0);
     if (clean && (!by_header || aligned(tokens, slots, 0, true))) return std::nullopt;
     std::optional<LineShift> found;
     for (int n = -max_shift; n <= max_shift; ++n) {
-        if (n == 0 || !place_tokens(text, tokens, slots, types, n)) continue;
+        if (n == 0) continue;
+        numbers = without_text_fields(text, slots, types, n);
+        tokens = line_tokens(numbers);
+        if (tokens.size() < 2 || !place_tokens(numbers, tokens, slots, types, n)) continue;
         const bool header_says = by_header && aligned(tokens, slots, n, true);
         const bool straddles_say = !clean && aligned(tokens, slots, n, false);
         if (!header_says && !straddles_say) continue;

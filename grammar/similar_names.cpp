@@ -9,12 +9,28 @@ namespace {
 char folded(char c, bool fold_case) {
     return fold_case ? static_cast<char>(std::toupper(static_cast<unsigned char>(c))) : c;
 }
+
+// A lower bound of the distance from the letters alone: each letter one name has more of than the
+// other needs an insertion, deletion or substitution, and one edit (2) settles at most two such letters
+// (a swap settles none), so the distance is at least their count. Letters are counted in 64 buckets
+// (merging letters only lowers the count, so the bound holds); thousands of names are tried per
+// unknown keyword, and most are told apart here without the quadratic table.
+std::size_t letter_bound(std::string_view a, std::string_view b, bool fold_case) {
+    int counts[64] = {};
+    for (char c : a) ++counts[static_cast<unsigned char>(folded(c, fold_case)) & 63];
+    for (char c : b) --counts[static_cast<unsigned char>(folded(c, fold_case)) & 63];
+    std::size_t differing = 0;
+    for (int count : counts) differing += static_cast<std::size_t>(count < 0 ? -count : count);
+    return differing;
+}
 }  // namespace
 
 std::size_t typing_distance(std::string_view a, std::string_view b, bool fold_case, std::size_t limit) {
-    // Optimal string alignment with weights: three rows suffice.
+    if (letter_bound(a, b, fold_case) > limit) return limit + 1;
+    // Optimal string alignment with weights: three rows suffice, kept per thread (no allocation per call).
     const std::size_t n = a.size(), m = b.size();
-    std::vector<std::size_t> prev2(m + 1), prev(m + 1), cur(m + 1);
+    thread_local std::vector<std::size_t> prev2, prev, cur;
+    prev2.assign(m + 1, 0), prev.assign(m + 1, 0), cur.assign(m + 1, 0);
     for (std::size_t j = 0; j <= m; ++j) prev[j] = 2 * j;
     std::size_t prev_min = 0;
     for (std::size_t i = 1; i <= n; ++i) {

@@ -25,27 +25,19 @@ struct SourceText::Mapping {
 };
 
 SourceText SourceText::read(const std::string& path, std::size_t min_bytes) {
+    const RegularFile file(path);  // a directory, a device, a pipe or a socket is refused here
 #ifdef SPHDECK_HAS_MMAP
-    // Directories, unreadable files and small files go the plain way (its messages included): a
-    // deck with thousands of small includes must not use thousands of mappings.
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd >= 0) {
-        struct stat st {};
-        void* address = MAP_FAILED;
-        std::size_t size = 0;
-        if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && static_cast<std::size_t>(st.st_size) >= min_bytes &&
-            st.st_size > 0) {
-            size = static_cast<std::size_t>(st.st_size);
-            address = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
-        }
-        ::close(fd);
+    // Small files are read whole: a deck with thousands of small includes must not use thousands of
+    // mappings.
+    if (file.size() >= min_bytes && file.size() > 0) {
+        void* address = ::mmap(nullptr, file.size(), PROT_READ, MAP_PRIVATE, file.descriptor(), 0);
         if (address != MAP_FAILED) {
-            ::madvise(address, size, MADV_SEQUENTIAL);  // read ahead: the readers walk it front to back
+            ::madvise(address, file.size(), MADV_SEQUENTIAL);  // read ahead: the readers walk it front to back
             auto mapping = std::make_shared<Mapping>();
-            mapping->address = address, mapping->size = size;
+            mapping->address = address, mapping->size = file.size();
             SourceText text;
             text.view_ = static_cast<const char*>(address);
-            text.size_ = size;
+            text.size_ = file.size();
             text.mapping_ = std::move(mapping);
             return text;
         }
@@ -53,7 +45,7 @@ SourceText SourceText::read(const std::string& path, std::size_t min_bytes) {
 #else
     (void)min_bytes;
 #endif
-    return SourceText(read_text_file(path));
+    return SourceText(file.read(file.size()));
 }
 
 void SourceText::release(std::size_t begin, std::size_t end) const {

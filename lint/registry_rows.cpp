@@ -52,7 +52,9 @@ constexpr RuleInfo kRows[] = {
      "a tab inside a fixed-format data line",
      Fixable::Safe},
     {"DK017", "data-after-end", Info, "0.1.0", "reader",
-     "non-blank lines after *END"},
+     "non-blank lines after *END (or /END): information; a warning at the end line when keyword blocks that "
+     "define or load something follow it (the solver never reads them)",
+     Fixable::Unsafe},
     {"DK018", "duplicate-control", Error, "0.1.0", "schema",
      "a *CONTROL_ keyword that may appear once appears twice"},
     {"DK019", "include-format-ignored", Warning, "0.1.0", "reader",
@@ -85,6 +87,14 @@ constexpr RuleInfo kRows[] = {
      Fixable::Safe},
     {"DK031", "decimal-comma", Warning, "0.1.0", "reader",
      "a comma between two digits in a padded fixed-format line: a decimal comma makes the line free format"},
+    {"DK032", "part-heading-missing", Warning, "0.1.0", "schema",
+     "a *PART heading that reads as a card of integers: the heading line was left out, so the PID line is read "
+     "as the heading and the next line as card 2 (an error when that misreads)",
+     Fixable::Unsafe},
+    {"DK033", "keyword-without-asterisk", Warning, "0.1.0", "schema",
+     "a data line that is a keyword name without its '*' (PART for *PART): read as more cards of the block above, "
+     "so the block it meant to open is lost (an error when that misreads)",
+     Fixable::Unsafe},
 
     // RAD: OpenRadioss SPH options (/SPHBCS, SOL2SPH, /PROP/SPH, /SPHCEL, /SPHGLO, /DT).
     {"RAD001", "missing-starter-header", Error, "0.1.0", "reader",
@@ -140,6 +150,12 @@ constexpr RuleInfo kRows[] = {
     {"RAD030", "straddling-value", Error, "0.1.0", "reader",
      "a number written across the end of its cell: the starter keeps the part inside and reads the rest elsewhere",
      Fixable::Safe},
+    {"RAD040", "starter-value-check", Error, "0.1.0", "starter",
+     "a material value the OpenRadioss starter's reader rejects (A <= 0 in LAW2, E <= 0, a density <= 0...), with "
+     "the starter's message id; a card the block lacks reads as blanks"},
+    {"RAD042", "th-selection-undefined", Error, "0.1.0", "starter",
+     "a /TH selection id that no entity of its keyword's kind has (node, SPH cell, shell, brick...: starter error "
+     "78 or 69; part or interface: warning 1610 or 257)"},
 
     // REF: references between definitions (ids of nodes, parts, sections, materials, sets).
     {"REF001", "undefined-node", Error, "0.1.0", "references",

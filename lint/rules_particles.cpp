@@ -96,11 +96,19 @@ void check_planar(RuleContext& c) {
         return diag::Note{at, fmt::format("node {} has {} = {:g}", id, field == "Z" ? "z" : "x", value)};
     };
     if (off_plane.count) {
+        // At the z a person typed (the first off-plane node's Z field), the particle in a note: the value
+        // to edit is the node's, not the *ELEMENT_SPH line's.
         const std::size_t i = off_plane.first.front();
-        auto& d = c.report("SPH110", c.particle_span(i),
+        diag::Note node = node_note(i, "Z", n.z[node_of[i]]);
+        const grammar::Span particle = c.particle_span(i);
+        const bool at_node = node.span.valid();
+        auto& d = c.report("SPH110", at_node ? node.span : particle,
                            fmt::format("{} particle{} off the z = 0 plane with IDIM {}: {}; expected z = 0",
                                        off_plane.count, off_plane.count == 1 ? "" : "s", idim, off_plane.ids(p)));
-        d.notes.push_back(node_note(i, "Z", n.z[node_of[i]]));
+        if (at_node)
+            d.notes.push_back({particle, fmt::format("the particle of node {} ({})", n.id[node_of[i]], node.message)});
+        else
+            d.notes.push_back(std::move(node));
         d.notes.push_back({sph.idim.span, fmt::format("IDIM {} here", idim)});
     }
     if (negative_x.count) {

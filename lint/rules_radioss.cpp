@@ -283,6 +283,8 @@ void check_radioss(RuleContext& c) {
     radioss::check_properties(c);
     radioss::check_sph_references(c);
     radioss::check_generated_references(c);
+    radioss::check_starter_values(c);
+    radioss::check_time_history_selections(c);
 }
 
 }  // namespace sphdeck::lint

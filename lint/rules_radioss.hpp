@@ -58,5 +58,9 @@ void check_properties(RuleContext& c);   // RAD020, RAD022-RAD024, RAD026-RAD029
 void check_sph_references(RuleContext& c);  // REF001, REF002: /SPH/INOUT and /INISPHCEL ids
 // REF002-REF004, REF008, REF009: ids named by generated cards (model::RadiossIdUse).
 void check_generated_references(RuleContext& c);
+// RAD040: the starter's own value checks, law by law (lint/starter_checks.hpp).
+void check_starter_values(RuleContext& c);
+// RAD042: /TH selections naming ids the entity kind of their keyword does not define.
+void check_time_history_selections(RuleContext& c);
 
 }  // namespace sphdeck::lint::radioss

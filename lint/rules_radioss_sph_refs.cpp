@@ -18,7 +18,7 @@ void check_sph_references(RuleContext& c) {
         if (io.surface.value > 0) {
             if (f.surfaces_known && !f.has_surface(io.surface.value))
                 c.report("REF008", io.surface.span,
-                         fmt::format("/SPH/INOUT {} surf_ID {} names no /SURF (starter error 438)", io.id,
+                         fmt::format("/SPH/INOUT {} surf_ID {} names no /SURF or /SET (starter error 438)", io.id,
                                      io.surface.value));
             continue;
         }

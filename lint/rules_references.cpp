@@ -317,6 +317,29 @@ void check_set_references(RuleContext& c) {
     }
 }
 
+// Where a list set names `id`: the member field holding it (a _GENERATE range: its first bound), found in
+// the set's block, whose SID field is `set.span`; the SID when the block is not found.
+grammar::Span member_span(const RuleContext& c, const model::IdSet& set, long long id) {
+    for (const model::KeywordRecord& r : c.model.records) {
+        const model::FieldRecord* sid = r.field("SID");
+        if (!sid || sid->span.file != set.span.file || sid->span.line != set.span.line ||
+            sid->span.column != set.span.column)
+            continue;
+        const bool generate = r.has_option("GENERATE");
+        for (const auto& row : r.rows) {
+            if (row.empty() || row.front().name == "TITLE" || row.front().name == "SID") continue;
+            for (std::size_t k = 0; k < row.size(); k += generate ? 2 : 1) {
+                if (!row[k].explicit_value || !row[k].valid) continue;
+                const double first = row[k].number;
+                const double last = generate && k + 1 < row.size() ? row[k + 1].number : first;
+                if (first <= static_cast<double>(id) && static_cast<double>(id) <= last) return row[k].span;
+            }
+        }
+        break;
+    }
+    return set.span;
+}
+
 void check_set_members(RuleContext& c, const model::IdIndex& nodes) {
     for (const auto& s : c.model.node_sets) {
         std::vector<long long> missing;
@@ -327,8 +350,11 @@ void check_set_members(RuleContext& c, const model::IdIndex& nodes) {
     for (const auto& s : c.model.part_sets) {
         std::vector<long long> missing;
         for (long long id : s.members) if (!c.model.part(std::to_string(id))) missing.push_back(id);
+        // At the member that names the first missing part: the line a person edits (the SID is a note).
         if (!missing.empty())
-            c.report("REF002", s.span, fmt::format("part set {} names undefined part(s) {}", s.id, list_ids(missing)));
+            c.report("REF002", member_span(c, s, missing.front()),
+                     fmt::format("part set {} names undefined part(s) {}", s.id, list_ids(missing)))
+                .notes.push_back({s.span, fmt::format("part set {} is defined here", s.id)});
     }
 }
 

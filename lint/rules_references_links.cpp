@@ -67,12 +67,14 @@ Definitions ids_of(const std::vector<T>& items) {
     return d;
 }
 
-// Keywords that make parts of their own (particles of a mesh box, SPH parts of adaptive solids,
-// duplicated parts): a part id no *PART defines may be theirs.
+// Keywords that make parts of their own (SPH parts of adaptive solids, duplicated parts): a part id no
+// *PART defines may be theirs. Not *DEFINE_SPH_MESH_BOX/_SURFACE: their SPHPID/IPID is filled with particles
+// but is a *PART of its own with its *SECTION_SPH (pydyna's isph.k defines parts 4-6 so), and REF002 judges
+// the part sets of such decks too; a *CONSTRAINED_RIGID_BODIES naming no part there is reported (issue 37).
 bool deck_makes_parts(const grammar::RawDeck& deck) {
     for (const grammar::Block& b : deck.blocks)
-        for (std::string_view p : {"*DEFINE_SPH_MESH", "*DEFINE_ADAPTIVE_SOLID_TO_SPH", "*PART_DUPLICATE",
-                                   "*ALE_STRUCTURED_MESH", "*DEFINE_PARTICLE_BLAST", "*ELEMENT_SEATBELT"})
+        for (std::string_view p : {"*DEFINE_ADAPTIVE_SOLID_TO_SPH", "*PART_DUPLICATE", "*ALE_STRUCTURED_MESH",
+                                   "*DEFINE_PARTICLE_BLAST", "*ELEMENT_SEATBELT"})
             if (starts_with(b.keyword, p)) return true;
     return false;
 }

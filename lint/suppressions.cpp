@@ -9,6 +9,7 @@
 #include <map>
 #include <tuple>
 
+#include "grammar/file_paths.hpp"
 #include "lint/registry.hpp"
 #include "lint/rule_pages.hpp"
 
@@ -208,14 +209,20 @@ void apply_suppressions(const grammar::SourceMap& sources, std::vector<diag::Dia
 
     std::erase_if(diagnostics, [&](const diag::Diagnostic& d) { return silence(placed, d); });
 
-    // A file included twice holds its directives twice: an item counts as used if any copy was,
-    // and each finding about a directive is reported once, at its first copy.
+    // A file included twice (by one name or by two: a symbolic link) holds its directives twice: an item
+    // counts as used if any copy was, and each finding about a directive is reported once, at its first copy.
+    std::map<grammar::FileId, std::string> canonical_paths;
+    const auto canonical = [&](grammar::FileId file) -> const std::string& {
+        auto [it, fresh] = canonical_paths.try_emplace(file);
+        if (fresh) it->second = grammar::canonical_path(sources.file(file).path).string();
+        return it->second;
+    };
     using Where = std::tuple<std::string, std::uint32_t, std::uint32_t, std::string>;  // path, line, column, code
     std::map<Where, std::pair<diag::Diagnostic, bool>> unused;
     for (const Placed& p : placed) {
         for (std::size_t i = 0; i < p.directive.items.size(); ++i) {
             const SuppressionItem& item = p.directive.items[i];
-            Where key{sources.file(p.file).path, p.directive.line, item.column, item.code};
+            Where key{canonical(p.file), p.directive.line, item.column, item.code};
             diag::Diagnostic d{"DK026", diag::Severity::Info, unused_message(p, item),
                                grammar::Span{p.file, p.directive.line, item.column, item.end_column}, {}};
             auto [it, fresh] = unused.try_emplace(key, std::move(d), p.used[i]);
@@ -226,7 +233,7 @@ void apply_suppressions(const grammar::SourceMap& sources, std::vector<diag::Dia
     for (auto& [key, entry] : unused)
         if (!entry.second) reports.emplace(key, std::move(entry.first));
     for (diag::Diagnostic& d : problems)
-        reports.emplace(Where{sources.file(d.span.file).path, d.span.line, d.span.column, d.message}, std::move(d));
+        reports.emplace(Where{canonical(d.span.file), d.span.line, d.span.column, d.message}, std::move(d));
     // `disable-file=DK026` (or DK028) also silences these reports in its file.
     for (auto& entry : reports) {
         diag::Diagnostic& d = entry.second;

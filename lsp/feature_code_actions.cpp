@@ -13,6 +13,7 @@
 #include "lint/registry.hpp"
 #include "lint/suppressions.hpp"
 #include "engine/position_index.hpp"
+#include "grammar/file_paths.hpp"
 #include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
 #include "lsp/uri.hpp"
@@ -153,7 +154,7 @@ void carried_fixes(const Request& r, const diag::Diagnostic& found, const nlohma
 std::optional<nlohmann::json> fix_all(const Request& r) {
     const auto& sources = r.deck.result.deck.sources;
     const edit::FixRound round = edit::choose_fixes(sources, r.deck.result.diagnostics, edit::FixLevel::Safe);
-    const auto found = round.edits.find(sources.file(r.file).path);
+    const auto found = round.edits.find(grammar::canonical_path(sources.file(r.file).path).string());
     if (found == round.edits.end()) return std::nullopt;
     diag::Fix all{"", true, {}};
     for (const diag::TextEdit& e : found->second) {

@@ -82,7 +82,7 @@ nlohmann::json references(const CheckedDeck& deck, grammar::FileId file, TextPos
     auto use = id_at(deck.result, file, at.line, at.column);
     if (!use) return out;
     for (const auto& u : collect_ids(deck.result))
-        if (u.kind == use->kind && u.id == use->id && (include_declaration || !u.defines))
+        if (ids_meet(u.kind, use->kind) && u.id == use->id && (include_declaration || !u.defines))
             out.push_back(location(sources, u.span));
     // Nodes are defined in the bulk *NODE blocks, which the walk of the deck leaves out.
     if (include_declaration && use->kind == "NODE")

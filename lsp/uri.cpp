@@ -1,5 +1,7 @@
 #include "lsp/uri.hpp"
 
+#include "grammar/file_paths.hpp"
+
 #include <cctype>
 
 namespace sphdeck::lsp {
@@ -53,7 +55,7 @@ std::string uri_from_path(const std::filesystem::path& path) {
     std::error_code error;
     std::filesystem::path absolute = std::filesystem::absolute(path, error);
     if (error) absolute = path;
-    const std::string text = absolute.lexically_normal().generic_string();
+    const std::string text = grammar::normal_path(absolute).generic_string();  // `link/..` kept right
     static constexpr char digits[] = "0123456789ABCDEF";
     std::string out = "file://";
     for (unsigned char c : text) {

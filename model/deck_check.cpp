@@ -2,6 +2,7 @@
 #include "model/flood_guard.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <fmt/format.h>
 #include <map>
 #include <optional>
@@ -12,6 +13,8 @@
 #include "grammar/shifted_line.hpp"
 #include "grammar/value.hpp"
 #include "model/case_blocks.hpp"
+#include "model/lost_asterisk.hpp"
+#include "model/missing_heading.hpp"
 #include "model/particle_ranges.hpp"
 #include "model/shift_diagnosis.hpp"
 #include "model/unknown_keywords.hpp"
@@ -76,6 +79,8 @@ public:
     void walk(const grammar::Block& block, const keywords::KeywordMatch& match, DeckSummary& summary,
               FloodBound& bound) {
         suspects_.clear();
+        lost_.clear();
+        heading_ = {};
         std::vector<const CardSpec*> cards = keywords::cards_for(match);
         if (bulk_ && bulk_->wants(match) && cards.size() == 1 && cards[0]->repeat == CardRepeat::Repeated &&
             !cards[0]->present_if && block.line_count >= bulk_min_lines)
@@ -89,7 +94,10 @@ public:
         for (const grammar::CardLine* l = deck_.begin_lines(block); l != deck_.end_lines(block); ++l) {
             if (++walked % trim_lines == 0) bound.trim(out_);
             while (next < cards.size() && !applies(*cards[next])) ++next;
-            if (next < cards.size() && cards[next]->unknown_layout) return;  // generated layout ends here
+            if (next < cards.size() && cards[next]->unknown_layout) {  // generated layout ends here
+                note_lost_in_unread(deck_, block, l, lost_);
+                return;
+            }
             if (next >= cards.size()) {
                 if (group > 0) {
                     next = group_start;
@@ -99,9 +107,13 @@ public:
                 }
             }
             const CardSpec& card = *cards[next];
+            note_lost_asterisk(*l, card.fields.empty() || card.fields[0].type == FieldType::Text);
+            if (!heading_.line && next + 1 < cards.size()) note_missing_heading(block, *l, card, *cards[next + 1]);
             const std::size_t found_before = out_.size();
             decoder_.decode(block, *l, card, values_);
-            note_alignment(block, *l, card, out_.size() > found_before);
+            note_alignment(block, *l, card,
+                           std::any_of(out_.begin() + static_cast<std::ptrdiff_t>(found_before), out_.end(),
+                                       [](const diag::Diagnostic& d) { return d.severity == diag::Severity::Error; }));
             note_suspect(block, *l, card,
                          out_.size() > found_before || decoder_.glued() || decoder_.text_past_fields());
             std::optional<diag::Diagnostic> refused;
@@ -117,6 +129,14 @@ public:
 
     // The lines the shift diagnosis looks at (model/shift_diagnosis.hpp), filled by walk().
     const std::vector<SuspectLine>& suspects() const { return suspects_; }
+    // Lines that are keyword names without their '*' (model/lost_asterisk.hpp), filled by walk().
+    const std::vector<LostAsteriskLine>& lost_asterisks() const { return lost_; }
+    // A *PART heading that reads as the card after it (model/missing_heading.hpp), and that card.
+    struct HeadingSuspect {
+        const grammar::CardLine* line = nullptr;
+        const CardSpec* next = nullptr;
+    };
+    const HeadingSuspect& heading_suspect() const { return heading_; }
 
     // DK029 for the lines of one value pushed into the next field, when (all but 1% of) the other numbers
     // the walk saw end at their field's end (grammar/lone_value_shift.hpp). Called once, after the last block.
@@ -124,8 +144,15 @@ public:
         constexpr std::uint64_t min_aligned = 4;  // a deck with fewer numbers shows no habit
         // A stray left-aligned number or two in a deck of hundreds is no habit of writing left.
         if (alignment_.right < min_aligned || alignment_.other * 100 > alignment_.right) return;
-        for (const LoneCandidate& c : lone_)
-            out_.push_back(lone_value_finding(deck_, *c.block, *c.line, *c.card, c.shift, layout_of(*c.card, c.block->format)));
+        for (const LoneCandidate& c : lone_) {
+            // A line the `$#` header above already showed shifted (model/shift_diagnosis.cpp) is reported once.
+            const bool reported = std::any_of(out_.begin(), out_.end(), [&](const diag::Diagnostic& d) {
+                return d.code == "DK029" && d.span.file == c.line->file && d.span.line == c.line->line;
+            });
+            if (reported) continue;
+            out_.push_back(lone_value_finding(deck_, *c.block, *c.line, *c.card, c.shift, layout_of(*c.card, c.block->format),
+                                              c.refused));
+        }
     }
 
 private:
@@ -134,6 +161,7 @@ private:
         const grammar::CardLine* line = nullptr;
         const CardSpec* card = nullptr;
         grammar::LoneShift shift;
+        bool refused = false;  // the line as written makes an error (a required field left blank)
     };
     static constexpr std::size_t max_lone_candidates = 64;
 
@@ -146,15 +174,31 @@ private:
         return layout_slots_;
     }
 
-    // Tallies how the line's numbers sit in their fields, or keeps it as a lone shifted value.
-    void note_alignment(const grammar::Block& block, const grammar::CardLine& line, const CardSpec& card, bool found) {
+    // A line from column 1 that is a keyword name without its '*' (only lines starting with a letter are looked up).
+    void note_lost_asterisk(const grammar::CardLine& line, bool read_as_text) {
+        constexpr std::size_t max_lost = 8;
+        const std::string_view text = deck_.text(line);
+        if (lost_.size() >= max_lost || text.empty() || !std::isalpha(static_cast<unsigned char>(text.front()))) return;
+        if (auto lost = lost_asterisk_line(line.file, line.line, text, read_as_text)) lost_.push_back(std::move(*lost));
+    }
+
+    // A *PART heading line that reads as the card after it: the heading was left out.
+    void note_missing_heading(const grammar::Block& block, const grammar::CardLine& line, const CardSpec& card,
+                              const CardSpec& next) {
+        if (card.fields.empty() || card.fields[0].name != "HEADING" || block.keyword.rfind("*PART", 0) != 0) return;
+        if (reads_as_integer_card(deck_.text(line), layout_of(next, block.format), next)) heading_ = {&line, &next};
+    }
+
+    // Tallies how the line's numbers sit in their fields, or keeps it as a lone shifted value. `refused`: the
+    // line as written made an error.
+    void note_alignment(const grammar::Block& block, const grammar::CardLine& line, const CardSpec& card, bool refused) {
         if (card.fields.empty() || (card.fields[0].type == FieldType::Text && card.fields[0].width >= 70)) return;
         const std::string_view text = deck_.text(line);
         const auto slots = layout_of(card, block.format);
-        (void)found;  // a lone value read as an integer written as a real (DK004) is still lone
+        // A lone value read as an integer written as a real (DK004) is still lone.
         if (lone_.size() < max_lone_candidates)
             if (auto lone = grammar::find_lone_shift(text, slots, layout_types_)) {
-                lone_.push_back({&block, &line, &card, std::move(*lone)});
+                lone_.push_back({&block, &line, &card, std::move(*lone), refused});
                 return;
             }
         if (!grammar::is_free_format(text)) grammar::tally_alignment(text, slots, layout_types_, alignment_);
@@ -285,6 +329,7 @@ private:
         for (auto& part : found) out_.insert(out_.end(), std::make_move_iterator(part.begin()),
                                              std::make_move_iterator(part.end()));
         note_bulk_suspects(block, card, merged_from);
+        for (const SuspectLine& s : suspects_) note_lost_asterisk(*s.line, false);  // a keyword name misread as a line
     }
 
     // The text of lines [from, to) of one block is decoded: a mapped file's pages go back, so that
@@ -305,6 +350,7 @@ private:
             return deck_.text(l).find_first_not_of(" \t") == std::string_view::npos;
         });
         if (all_blank) return;
+        for (const grammar::CardLine* l = &line; l != deck_.end_lines(block); ++l) note_lost_asterisk(*l, false);
         std::size_t extra = static_cast<std::size_t>(deck_.end_lines(block) - &line);
         out_.push_back({"DK009", diag::Severity::Warning,
                         fmt::format("{} takes {} card(s); {} more line(s) ignored", block.keyword, expected, extra),
@@ -332,6 +378,8 @@ private:
     std::vector<FieldValue> values_;
     std::map<std::string, double> earlier_;
     std::vector<SuspectLine> suspects_;
+    std::vector<LostAsteriskLine> lost_;
+    HeadingSuspect heading_;
     grammar::AlignmentTally alignment_;
     std::vector<LoneCandidate> lone_;
     const CardSpec* layout_card_ = nullptr;
@@ -390,7 +438,13 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
         track_case(block.keyword, current_case);
         auto match = keywords::find_keyword(block.keyword);
         if (!match || !match->unknown_options.empty()) {
+            const std::size_t before = out.size();
             unknown.add(deck, block, out);
+            if (block.line_count > 0) {
+                std::vector<LostAsteriskLine> lost;
+                note_lost_in_unread(deck, block, deck.begin_lines(block), lost);
+                diagnose_lost_asterisks(deck, block, lost, out, before);
+            }
             ++summary.unknown_keywords;
             continue;
         }
@@ -400,11 +454,21 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
             if (const CaseSpan* first = first_in_run(seen, current_case)) out.push_back(duplicate_control(deck, *match->schema, block.span, first->span));
             seen.push_back({current_case, block.span});
         }
+        if (block.keyword == "*COMMENT" || block.keyword.rfind("*PARAMETER", 0) == 0) {
+            // Lines the reader takes (parameters) or keeps as text: a keyword name among them lost its '*'.
+            std::vector<LostAsteriskLine> lost;
+            if (block.keyword == "*COMMENT") note_lost_in_comment(deck, block, lost);
+            else if (block.line_count > 0) note_lost_in_unread(deck, block, deck.begin_lines(block), lost);
+            diagnose_lost_asterisks(deck, block, lost, out, out.size());
+        }
         if (skip_cards(block.keyword) || match->schema->free_text) continue;
         const std::size_t before = out.size();
         FloodBound bound(before);
         walker.walk(block, *match, summary, bound);
         diagnose_shifts(deck, block, walker.suspects(), out, before);
+        diagnose_lost_asterisks(deck, block, walker.lost_asterisks(), out, before);
+        if (const auto& h = walker.heading_suspect(); h.line)
+            diagnose_missing_heading(deck, block, *h.line, *h.next, out, before);
         bound.annotate(out, before, block.keyword);
     }
     walker.report_lone_shifts();

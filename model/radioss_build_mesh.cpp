@@ -29,6 +29,12 @@ const RadiossValue* RadiossBuilder::value(std::string_view name) const {
     return nullptr;
 }
 
+std::string_view RadiossBuilder::first_named(std::initializer_list<std::string_view> names) const {
+    for (std::string_view name : names)
+        if (value(name)) return name;
+    return *names.begin();
+}
+
 template <typename T>
 StarterValue<T> RadiossBuilder::starter(std::string_view name, const RadiossBlock& b) const {
     StarterValue<T> s;

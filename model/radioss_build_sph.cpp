@@ -150,11 +150,12 @@ void RadiossBuilder::end_material(const RadiossBlock& b) {
     m.keyword = "/MAT/" + b.args[0];
     m.span = b.block->span;
     m.law_span = b.arg_spans[0];
-    StarterValue<double> rho = starter<double>("RHO_I", b);
+    // The hand-written cards' names, then the CFG files' (a law read by its generated cards).
+    const std::string_view rho_name = first_named({"RHO_I", "MAT_RHO", "Rho"});
+    StarterValue<double> rho = starter<double>(rho_name, b);
     m.density = rho.value;
-    // Only the laws whose cards sphdeck knows (grammar/radioss/cards_materials.cpp) name these.
-    m.young = starter<double>("E", b).value;
-    m.poisson = starter<double>("nu", b).value;
+    m.young = starter<double>(first_named({"E", "MAT_E"}), b).value;
+    m.poisson = starter<double>(first_named({"nu", "MAT_NU", "Nu"}), b).value;
     if (const RadiossValue* c1 = value("C1"); c1 && c1->valid) m.bulk = c1->number;  // LAW3, LAW6 before 2018
     Material mat;
     mat.id = std::to_string(*id);
@@ -164,7 +165,7 @@ void RadiossBuilder::end_material(const RadiossBlock& b) {
     // The starter requires RHO_I > 0 of every law but these (hm_read_mat.F90, message 683 'DENSITY').
     static const std::set<std::string_view> no_density_check = {
         "VOID", "LAW0", "BIMAT", "LAW20", "MULTIMAT", "LAW51", "SPR_GENE", "LAW108", "MULTIFLUID", "LAW151", "GAS"};
-    mat.has_density = value("RHO_I") != nullptr && !no_density_check.count(b.args[0]);
+    mat.has_density = value(rho_name) != nullptr && !no_density_check.count(b.args[0]);
     model_.materials.push_back(std::move(mat));
     facts_.materials.push_back(std::move(m));
 }

@@ -10,7 +10,8 @@ namespace sphdeck::model {
 void RadiossBuilder::collect_surfaces() {
     for (const grammar::Block& block : deck_.blocks) {
         const auto segments = grammar::radioss::path_segments(block.keyword);
-        if (segments.empty() || segments[0] != "SURF") continue;
+        // A /SET is a surface of its id too when an option asks for one (starter fill_igr.F).
+        if (segments.empty() || (segments[0] != "SURF" && segments[0] != "SET")) continue;
         bool found = false;
         for (std::size_t k = 1; k < segments.size() && !found; ++k) {
             const auto id = grammar::parse_integer(segments[k]);

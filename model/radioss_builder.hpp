@@ -4,6 +4,7 @@
 // (radioss_finish.cpp) resolves what needs the whole deck (particle masses, planes, groups).
 #pragma once
 
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -33,6 +34,9 @@ public:
 
     void begin(const RadiossBlock& b);
     void card(const RadiossBlock& b, std::size_t card, std::uint32_t line, const std::vector<RadiossValue>& values);
+    // A card of another table than the block's (a law's generated cards under /MAT), kept for
+    // value(name).
+    void named_card(const std::vector<RadiossValue>& values) { cards_.push_back(values); }
     void end(const RadiossBlock& b);
     Model finish();
     // The facts being gathered, for what the walker records itself (ids of generated cards).
@@ -43,6 +47,8 @@ private:
     std::vector<std::vector<RadiossValue>> cards_;
 
     const RadiossValue* value(std::string_view name) const;
+    // The first of `names` a card of the block holds (the first when none does).
+    std::string_view first_named(std::initializer_list<std::string_view> names) const;
     template <typename T>
     StarterValue<T> starter(std::string_view name, const RadiossBlock& b) const;
     StarterValue<std::string> text(std::string_view name, const RadiossBlock& b) const;

@@ -12,7 +12,9 @@
 #include "grammar/value.hpp"
 #include "model/radioss_builder.hpp"
 #include "model/radioss_card_sequence.hpp"
+#include "model/radioss_other_formats.hpp"
 #include "model/radioss_parameters.hpp"
+#include "model/radioss_unknown_causes.hpp"
 #include "grammar/fields.hpp"
 
 namespace sphdeck::model {
@@ -65,6 +67,8 @@ class Walker {
 public:
     Walker(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, int version)
         : deck_(deck), out_(out), version_(version), builder_(deck, out, version), decoder_(deck, out) {
+        version_known_ = std::any_of(deck.blocks.begin(), deck.blocks.end(),
+                                     [](const grammar::Block& b) { return b.keyword == "/BEGIN"; });
         for (grammar::FileId f = 0; f < deck.sources.size(); ++f) {
             grammar::FileId root = deck.sources.include_chain(f).front();
             engine_.push_back(rad::is_engine_file_name(deck.sources.file(root).display_name));
@@ -99,6 +103,10 @@ private:
         const std::string name = keyword_name(block.keyword);
         auto& u = unknown_[name];
         if (u.second++ == 0) u.first = block.span;
+        if (auto cause = unknown_header_cause(deck_, block)) {
+            out_.push_back(std::move(*cause));
+            return;
+        }
         auto cached = suggestions_.find(name);
         if (cached == suggestions_.end())
             cached = suggestions_.emplace(name, suggestions_.size() < 64 ? rad::suggest_keyword(name)
@@ -130,7 +138,8 @@ private:
     }
 
     // The ids a starter header defines for the REF rules of generated cards: the integer segments
-    // after the name, by the kind of id its family is.
+    // after the name, by the kind of id its family is. A /SET ('T') stands for every group kind:
+    // the starter makes a group of each kind an option uses from it, of the set's id (fill_igr.F).
     void note_header_ids(const grammar::Block& block) {
         const auto segments = rad::path_segments(block.keyword);
         if (segments.empty()) return;
@@ -142,6 +151,7 @@ private:
                           : first == "SKEW" || first == "FRAME"                ? 'Y'
                           : first == "GRNOD"                                   ? 'G'
                           : first == "SURF"                                    ? 'U'
+                          : first == "SET"                                     ? 'T'
                           : first == "MAT"                                     ? 'M'
                           : first == "PROP"                                    ? 'P'
                           : first == "PART"                                    ? 'C'
@@ -203,7 +213,10 @@ private:
         b.format = format.since;
         const grammar::CardLine* line = deck_.begin_lines(block);
         const grammar::CardLine* end = deck_.end_lines(block);
-        if (cards->title && !engine) {
+        // A family's generic table read through a law's generated cards: the family says whether a
+        // title follows (the CFG files of /MAT write the title in their export branches only).
+        const bool titled = spec->fallback ? spec->title : cards->title;
+        if (titled && !engine) {
             if (rad::is_v4(version_)) {
                 // V4: the title is the rest of the header path (/PROP/TYPE34/7/title).
                 for (std::size_t k = 1; k < b.written.size(); ++k) b.title += (k > 1 ? "/" : "") + b.written[k];
@@ -226,6 +239,9 @@ private:
         RadiossCardSequence sequence(cards);
         const std::string newer = newer_format(table, format);
         const bool to_builder = &table == b.spec && !table.generated;
+        // The generated cards of a law read through a family's generic table (/MAT): the builder
+        // finds their values by name (model/radioss_build_sph.cpp, end_material).
+        const bool by_name = &table != b.spec && b.spec->fallback;
         // A generated layout's older formats often end before columns decks of that version still
         // fill, silently for the starter: their trailing text is reported past the line's width only.
         const std::uint32_t quiet_until = table.generated && !newer.empty() ? rad::line_width(b.version) : 0;
@@ -236,12 +252,18 @@ private:
                 report_extra(table, b.version, format, *line, static_cast<std::size_t>(end - line), newer);
                 return;
             }
+            const std::size_t found_before = out_.size();
             decoder_.decode(*line, cards[next.index], b.version, b.engine, values_, newer, table.trailing_checked,
                             quiet_until);
+            if (table.generated && out_.size() > found_before)
+                settle_trailing_text(out_, found_before, *line, deck_.text(*line), table, format, next.index,
+                                     b.version, version_known_);
             sequence.advance(next.index, values_);
             if (!b.engine) note_id_uses(table);
             if (to_builder)
                 builder_.card(b, next.index, static_cast<std::uint32_t>(line - deck_.lines.data()), values_);
+            else if (by_name && next.index < sequence.first_repeated())
+                builder_.named_card(values_);
             if (reading_) record(next.index < sequence.first_repeated());
         }
     }
@@ -290,6 +312,7 @@ private:
     const grammar::RawDeck& deck_;
     std::vector<diag::Diagnostic>& out_;
     int version_;
+    bool version_known_ = true;  // false: a fragment without /BEGIN, read with the newest formats
     RadiossBuilder builder_;
     RadiossCardDecoder decoder_;
     RadiossParameters parameters_;

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "grammar/fields.hpp"
 #include "grammar/shifted_line.hpp"
 #include "grammar/value.hpp"
 #include "model/radioss_lone_shifts.hpp"
@@ -48,12 +49,23 @@ std::vector<Straddle> straddles(std::string_view text, const grammar::radioss::C
         const bool packed = (s == positions[i].start && !flag_into_wider) ||
                             (i + 1 < positions.size() && e == std::size_t{positions[i + 1].start} + positions[i + 1].width);
         if (packed || grammar::parse_real(text.substr(s, e - s)).status != grammar::NumberStatus::Ok) continue;
-        // A zero across the boundary ('.000000000' read as '.00000' and '0000') changes no value.
+        // A zero across the boundary ('.000000000' read as '.00000' and '0000') changes no value, unless
+        // the next cell holds a value of its own that the lost zeros are then read with (BS '0.0' one
+        // column past 80 makes IFORM '0        1': the starter reads IFORM 0).
         const grammar::RealValue whole = grammar::parse_real(text.substr(s, e - s));
         const grammar::RealValue kept = grammar::parse_real(text.substr(s, b - s));
         const grammar::RealValue lost = grammar::parse_real(text.substr(b, e - b));
+        const std::size_t next_end =
+            i + 1 < positions.size() ? std::size_t{positions[i + 1].start} + positions[i + 1].width : e;
+        // The next cell's own value, read with the lost zeros: harmless when it is blank or zero too
+        // ('0000      .000000000' is 0 either way).
+        const std::string_view own =
+            e >= text.size() ? std::string_view{} : grammar::trim_blanks(text.substr(e, next_end > e ? next_end - e : 0));
+        const grammar::RealValue own_value = grammar::parse_real(own);
+        const bool next_clear =
+            own.empty() || (own_value.status == grammar::NumberStatus::Ok && own_value.value == 0.0);
         if (whole.value == 0.0 && kept.status == grammar::NumberStatus::Ok && kept.value == 0.0 &&
-            lost.status == grammar::NumberStatus::Ok && lost.value == 0.0)
+            lost.status == grammar::NumberStatus::Ok && lost.value == 0.0 && next_clear)
             continue;
         out.push_back({i, s, b, e});
     }
@@ -158,14 +170,23 @@ void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
     // Under a header, values past the card's last field (a newer format's, or text the starter
     // ignores) are no evidence either way: the line is judged up to a few columns past the card.
     std::string_view probe = text;
-    if (!header.empty() && !positions.empty()) {
-        const std::size_t limit = std::size_t{positions.back().start} + positions.back().width + 4;
+    // A last cell kept as text (the rest of /MAT's E, nu card) is no cell to align a value to: a shift
+    // that moves a number there empties a cell the starter reads. The line is judged up to it.
+    const bool rest_as_text = positions.size() > 1 && positions.size() == card.fields.size() &&
+                              card.fields.back().cell == grammar::radioss::Cell::Line;
+    const std::span<const grammar::FixedField> cells = rest_as_text ? positions.first(positions.size() - 1) : positions;
+    if (rest_as_text) {
+        types.resize(cells.size());
+        if (probe.size() > std::size_t{positions.back().start}) probe = probe.substr(0, positions.back().start);
+    }
+    if (!header.empty() && !cells.empty()) {
+        const std::size_t limit = std::size_t{cells.back().start} + cells.back().width + 4;
         if (probe.size() > limit) probe = probe.substr(0, limit);
     }
     // Without a header, one value typed across a boundary among right-aligned ones is RAD030, not a shift.
     std::optional<grammar::LineShift> shift;
     if (!header.empty() || !one_value_moved(text, glued, positions))
-        shift = grammar::find_shift(probe, header, positions, types);
+        shift = grammar::find_shift(probe, header, cells, types);
     if (shift && probe.size() != text.size()) {
         // The fix moves the whole line, its tail included.
         const int n = shift->columns;

@@ -185,7 +185,8 @@ std::string_view header_above(const grammar::RawDeck& deck, const grammar::CardL
 
 diag::Diagnostic lone_value_finding(const grammar::RawDeck& deck, const grammar::Block& block,
                                     const grammar::CardLine& line, const keywords::CardSpec& card,
-                                    const grammar::LoneShift& shift, std::span<const grammar::FixedField> slots) {
+                                    const grammar::LoneShift& shift, std::span<const grammar::FixedField> slots,
+                                    bool refused) {
     const std::string_view text = deck.text(line);
     const std::string_view value = text.substr(shift.begin, shift.end - shift.begin);
     const auto& meant = card.fields[shift.meant];
@@ -210,7 +211,7 @@ diag::Diagnostic lone_value_finding(const grammar::RawDeck& deck, const grammar:
     if (shift.realigned)
         d.fixes.push_back(diag::Fix{fmt::format("move the values {} column{} left into their fields", n,
                                                 n == 1 ? "" : "s"),
-                                    false, {whole_line_edit(deck, line, *shift.realigned)}});
+                                    refused, {whole_line_edit(deck, line, *shift.realigned)}});
     return d;
 }
 

@@ -35,10 +35,13 @@ void diagnose_shifts(const grammar::RawDeck& deck, const grammar::Block& block, 
                      std::vector<diag::Diagnostic>& out, std::size_t from);
 
 // DK029 for a line of one value pushed into the next field (grammar/lone_value_shift.hpp), the deck's
-// numbers all right-aligned otherwise. Its fix is not safe: the evidence is the deck's habit.
+// numbers all right-aligned otherwise. Its fix is not safe, the evidence being the deck's habit, unless the
+// line as written is `refused` (an error: a required field left blank) and reads when moved back: then the
+// author evidently meant it there (`          6         0` under *SECTION_SPH, SECID blank).
 diag::Diagnostic lone_value_finding(const grammar::RawDeck& deck, const grammar::Block& block,
                                     const grammar::CardLine& line, const keywords::CardSpec& card,
-                                    const grammar::LoneShift& shift, std::span<const grammar::FixedField> slots);
+                                    const grammar::LoneShift& shift, std::span<const grammar::FixedField> slots,
+                                    bool refused = false);
 
 // The reading findings a shift or a wrong width explains (DK002-DK008): folded into the cause.
 bool follows_from_shift(std::string_view code);

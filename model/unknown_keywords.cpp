@@ -1,7 +1,9 @@
 #include "model/unknown_keywords.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include "grammar/keywords/keyword_names.hpp"
 #include "grammar/keywords/schema.hpp"
 
 namespace sphdeck::model {
@@ -10,23 +12,6 @@ namespace {
 // Distinct misspelt names a deck gets suggestions for: each costs a pass over every known name,
 // and a deck of thousands of made-up names (a fuzzer's) must stay fast.
 constexpr std::size_t max_suggested_names = 64;
-// The keyword without trailing _TITLE / _ID tokens, when that is a keyword the tables know as a
-// whole and something was removed: LS-DYNA gives many keywords a title or id card that pydyna's
-// layouts leave out (*CONSTRAINED_LAGRANGE_IN_SOLID_TITLE), so the name may well be valid.
-std::optional<std::string> known_without_title(std::string name) {
-    bool removed = false;
-    while (true) {
-        if (name.ends_with("_TITLE")) name.resize(name.size() - 6);
-        else if (name.ends_with("_ID")) name.resize(name.size() - 3);
-        else break;
-        removed = true;
-    }
-    if (!removed) return std::nullopt;
-    if (keywords::is_known_without_layout(name)) return name;
-    auto match = keywords::find_keyword(name);
-    if (match && match->unknown_options.empty()) return name;
-    return std::nullopt;
-}
 }  // namespace
 
 const std::optional<std::string>& UnknownKeywords::suggestion(const std::string& keyword) {
@@ -39,16 +24,18 @@ const std::optional<std::string>& UnknownKeywords::suggestion(const std::string&
 
 void UnknownKeywords::add(const grammar::RawDeck& deck, const grammar::Block& block,
                           std::vector<diag::Diagnostic>& out) {
-    if (keywords::is_known_without_layout(block.keyword)) {
+    // DK001's policy (grammar/keywords/keyword_names.hpp): a name some source knows is no error.
+    if (keywords::known_by_name(block.keyword)) {
         auto& u = unchecked_[block.keyword];
         if (u.count++ == 0) u.first = block.span;
         return;
     }
-    if (auto base = known_without_title(block.keyword)) {
+    if (auto known = keywords::known_with_options(block.keyword)) {
         out.push_back({"DK001", diag::Severity::Warning,
-                       fmt::format("{} is {} with an option sphdeck's tables do not give it ({}): its cards are "
-                                   "not checked, and LS-DYNA stops here if it does not accept the option either",
-                                   block.keyword, *base, block.keyword.substr(base->size() + 1)),
+                       fmt::format("{} is {} with {} sphdeck's tables do not give it ({}): its cards are "
+                                   "not checked, and LS-DYNA stops here if it does not accept {} either",
+                                   block.keyword, known->base, known->options.size() > 1 ? "options" : "an option",
+                                   fmt::join(known->options, ", "), known->options.size() > 1 ? "them" : "the option"),
                        block.span, {}});
         return;
     }

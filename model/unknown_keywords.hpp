@@ -1,6 +1,7 @@
-// DK001 for LS-DYNA decks: a keyword name neither table knows is an error at its line (LS-DYNA stops
-// at a keyword it does not know), with the closest known name as an unsafe fix; a keyword LS-DYNA
-// has but no table describes (keywords::known_without_layout) is an info, once per name.
+// DK001 for LS-DYNA decks, by the policy of grammar/keywords/keyword_names.hpp: a keyword name no source
+// knows is an error at its line (LS-DYNA stops at a keyword it does not know), with the closest known name
+// as an unsafe fix; a known keyword with options the tables do not lay out is a warning; a name known
+// without a layout (the manual's, OpenRadioss' Keyword971 names) is an info, once per name.
 #pragma once
 
 #include <map>

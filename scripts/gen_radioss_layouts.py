@@ -366,13 +366,29 @@ class Linear:
             if not cond:
                 self.fields.update(n for n, k, w in fields if k in 'IR' and n)
             return
+        if s.kind == 'FREE_CARD' and len(s.args) >= 2:
+            # FREE_CARD(flag, format, ...): a card the starter reads when the line is there (the flag
+            # says whether it was); checked as a card when it comes last, nothing after it to shift.
+            fmt, names = card_args(Stmt('CARD', s.args[1:]))
+            names = ['ID' if n == '_ID_' else n for n in names or []]  # the /FAIL's own id card
+            fields = parse_card(fmt, names) if fmt is not None and last else None
+            if fields is None:
+                return self.stop()
+            self.cards.append(('1', cond, fields))
+            return
         if s.kind == 'BLANK':
             self.cards.append(('1', cond, [('', 'B', 100)]))
             return
         if s.kind == 'if':
             try:
                 taken = eval_cond(s.cond, env)
-                return self.run(s.body if taken else (s.other or []), env, cond, last)
+                branch, other = (s.body, s.other or []) if taken else (s.other or [], s.body)
+                # The export branches write the header and the title, the import one reads neither
+                # (/MAT/%3s, mat116.cfg): the title line is read all the same.
+                if self.allow_title and not self.cards and not self.title and \
+                        not titled_header(branch) and titled_header(other):
+                    self.title = True
+                return self.run(branch, env, cond, last)
             except Unknown:
                 pass
             if neutral(s.body) and neutral(s.other or []):
@@ -450,6 +466,16 @@ def compatible(a, b):
         else:
             return None
     return out
+
+
+def titled_header(stmts):
+    """A HEADER followed by a title card, in these statements or an `if` among them."""
+    for k, s in enumerate(stmts):
+        if s.kind == 'HEADER' and k + 1 < len(stmts) and stmts[k + 1].kind == 'CARD' and is_title_card(stmts[k + 1]):
+            return True
+        if s.kind == 'if' and (titled_header(s.body) or titled_header(s.other or [])):
+            return True
+    return False
 
 
 def plain(stmts):

@@ -18,10 +18,11 @@ struct Run {
     int exit_code = -1;
 };
 
-// Runs `sphdeck ARGS` in folder `dir`; the caller single-quotes arguments that need it.
-inline Run run_sphdeck(const TempDir& dir, const std::string& args) {
+// Runs `sphdeck ARGS` in folder `dir`; the caller single-quotes arguments that need it. `prefix` goes
+// before the binary ("timeout 20 ").
+inline Run run_sphdeck(const TempDir& dir, const std::string& args, const std::string& prefix = "") {
     const std::string out = (dir.path() / "stdout.txt").string(), err = (dir.path() / "stderr.txt").string();
-    const std::string command = "cd '" + dir.path().string() + "' && '" + SPHDECK_BINARY + "' " + args + " > '" +
+    const std::string command = "cd '" + dir.path().string() + "' && " + prefix + "'" + SPHDECK_BINARY + "' " + args + " > '" +
                                 out + "' 2> '" + err + "'";
     const int status = std::system(command.c_str());
     auto slurp = [](const std::string& path) {

@@ -105,10 +105,11 @@ TEST_CASE("diff: the command's exit codes and a value no layout decodes") {
     CHECK(changed.exit_code == 1);
     CHECK(changed.out.find("CSLH: 1.2 -> 1.3  (a.k:25:18 -> b.k:25:18)") != std::string::npos);
     CHECK(test::run_sphdeck(dir, "diff a.k missing.k").exit_code == 2);
-    // An OpenRadioss card past the first of /MAT is not decoded: its text is compared, blanks aside.
+    // An OpenRadioss card past the first of a /MAT law whose CFG reads free lines (LAW30) is not decoded:
+    // its text is compared, blanks aside.
     const std::string rad = "#RADIOSS STARTER\n/BEGIN\nrun\n      2026         0\n                  kg                  mm                  ms\n"
                             "                  kg                  mm                  ms\n"
-                            "/MAT/LAW14/1\nmat\n               .0078                   0\n                  10                 100                   1\n/END\n";
+                            "/MAT/LAW30/1\nmat\n               .0078                   0\n                  10                 100                   1\n/END\n";
     dir.write("r1_0000.rad", rad);
     dir.write("r2_0000.rad", replaced(rad, "                  10                 100", "                  11                 100"));
     const test::Run radioss = test::run_sphdeck(dir, "diff r1_0000.rad r2_0000.rad");

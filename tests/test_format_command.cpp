@@ -57,7 +57,7 @@ TEST_CASE("format command: --check and --diff write nothing; in place, then idem
     CHECK(r.err.find("would reformat 1 of 1 file (lines: 1 values realigned, 1 keyword case); 1 card line left as "
                      "written") != std::string::npos);
     r = test::run_sphdeck(dir, "format --diff main.k");
-    CHECK(r.exit_code == 0);
+    CHECK(r.exit_code == 1);  // as --check and `check --diff`: a file would change
     CHECK(r.out.find("-1.0\n+       1.0\n") != std::string::npos);
     CHECK(slurp(main) == kMain);
 

@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
 
 #include "diag/render_github.hpp"
 #include "diag/render_json.hpp"
@@ -280,9 +282,18 @@ TEST_CASE("output: every format carries every finding; text folds, every summary
     std::size_t shown = 0;
     for (std::size_t at = concise.out.find("[DK003]"); at != std::string::npos; at = concise.out.find("[DK003]", at + 1))
         ++shown;
-    CHECK(shown == 5);
-    CHECK(concise.out.find("flood.k:8:3: 25 more DK003 finding(s) on the lines of this *NODE block: lines 8, 9, 10, "
-                           "11, 12, ... (--max-per-code 0 shows all)") != std::string::npos);
+    CHECK(shown == 6);  // five findings and the fold line, which keeps the concise pattern
+    CHECK(concise.out.find("flood.k:8:3: note: 25 more DK003 finding(s) on the lines of this *NODE block: lines 8, 9, "
+                           "10, 11, 12, ... (--max-per-code 0 shows all) [DK003]") != std::string::npos);
+    const std::regex concise_line(R"(^[^:]+:\d+:\d+: (error|warning|info|note): .* \[[A-Z]+[0-9]+\]$)");
+    std::istringstream concise_lines(concise.out);
+    for (std::string line; std::getline(concise_lines, line);) CHECK_MESSAGE(std::regex_match(line, concise_line), line);
+    // A code folded across the deck (--max-per-code) points at its first finding not shown.
+    const test::Run capped = test::run_sphdeck(dir, "check" + only + "--format concise --max-per-code 2 flood.k");
+    std::istringstream capped_lines(capped.out);
+    for (std::string line; std::getline(capped_lines, line);) CHECK_MESSAGE(std::regex_match(line, concise_line), line);
+    CHECK(capped.out.find(": note: 28 more DK003 finding(s) not shown (--max-per-code 0 shows all) [DK003]") !=
+          std::string::npos);
     CHECK(concise.err.find("30 error(s)") != std::string::npos);
     const test::Run all = test::run_sphdeck(dir, "check" + only + "--format concise --max-per-code 0 flood.k");
     CHECK(std::count(all.out.begin(), all.out.end(), '\n') == 30);

@@ -60,12 +60,12 @@ TEST_CASE("radioss layouts: /MAT reads the density and E, nu where it knows the 
     const std::string cowper = "/MAT/COWPER/2\nc\n     0.780000000E-02      0.00000000\n      2.05000000E+05"
                                "          0.3\n        400.0                 5.0                  1         0       "
                                ".000000000E00\n";
-    // LAW66 (unknown layout): integers in what a 20-wide grid would cut as one cell.
-    const std::string law66 = "/MAT/LAW66/3\nx\n" + r20("1.0") + "\n" + i10("7") + i10("7") + i10("0") + "\n";
+    // LAW30 (its CFG reads free text lines): integers in what a 20-wide grid would cut as one cell.
+    const std::string law30 = "/MAT/LAW30/3\nx\n" + r20("1.0") + "\n" + i10("7") + i10("7") + i10("0") + "\n";
     // Gas and multi-material laws have no density card (mat_gas.cfg, mat_law51.cfg).
     const std::string gas = "/MAT/GAS/PREDEF/4\nInitial gaz\nAIR\n";
     const std::string law51 = "/MAT/LAW51/5\nmm\n" + i10("0") + "  " + i10("1") + i10("2") + "\n";
-    auto r = check(deck(plas + cowper + law66 + gas + law51, 2019));
+    auto r = check(deck(plas + cowper + law30 + gas + law51, 2019));
     CHECK(warnings_and_errors(r) == 0);
     const auto& f = facts(r);
     REQUIRE(f.material(1) != nullptr);

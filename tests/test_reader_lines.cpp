@@ -93,7 +93,12 @@ TEST_CASE("reader: *END stops the file; later content is reported once") {
     CHECK(deck.blocks.size() == 2);
     CHECK(deck.lines.size() == 1);
     REQUIRE(count_code(deck.diagnostics, "DK017") == 1);
-    CHECK(deck.diagnostics[0].span.line == 6);
+    CHECK(deck.diagnostics[0].span.line == 3);  // a keyword block dropped: a warning at *END
+    CHECK(deck.diagnostics[0].severity == diag::Severity::Warning);
+    auto text = read_buffer("*NODE\n       1\n*END\n$ fine\n\nnotes\n", "d.k");
+    REQUIRE(count_code(text.diagnostics, "DK017") == 1);
+    CHECK(text.diagnostics[0].span.line == 6);  // text only: information at its first line
+    CHECK(text.diagnostics[0].severity == diag::Severity::Info);
 }
 
 TEST_CASE("reader: encrypted blocks are skipped with a note") {

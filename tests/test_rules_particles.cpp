@@ -60,8 +60,10 @@ TEST_CASE("SPH110: one finding for all particles off the plane, with the count")
     const diag::Diagnostic* d = find_code(r.diagnostics, "SPH110");
     CHECK(d->message.find("3 particles") != std::string::npos);
     CHECK(d->message.find("4, 5, 6") != std::string::npos);
+    CHECK(d->span.column == 41);  // at the node's Z field, the value a person typed
     REQUIRE(!d->notes.empty());
-    CHECK(d->notes[0].span.column == 41);  // the node's Z field
+    CHECK(d->notes[0].message.find("the particle of node 4") != std::string::npos);
+    CHECK(d->notes[0].span.line > d->span.line);  // its *ELEMENT_SPH line, below the nodes
     CHECK(count_code(r.diagnostics, "SPH111") == 0);  // IDIM 2: negative x is not checked
 }
 

@@ -117,6 +117,7 @@ void DeckReader::on_keyword(const char* begin, const char* end, const KeywordLin
     OpenFile& f = current();
     ++f.line;
     if (f.in_encrypted) return;
+    if (f.ended && star == 0) f.dropped.note_dyna("*" + to_upper(parts.name));
     if (after_end(begin, end)) return;
     close_block();
 
@@ -162,11 +163,28 @@ void DeckReader::on_keyword(const char* begin, const char* end, const KeywordLin
     const Block& added = deck_.blocks.back();
     if (added.keyword == "*END") {
         f.ended = true;
+        f.dropped.set_end(added.span);
         return;
     }
     f.in_comment_block = added.keyword == "*COMMENT";
     if (added.keyword == "*KEYWORD" || added.keyword.rfind("*KEYWORD_", 0) == 0) handle_keyword_line_arguments(added);
     f.block = deck_.blocks.size() - 1;
+}
+
+// At the end of a file: the warning for keyword blocks after its *END, which then stands for the
+// information on the first line after it (grammar/dropped_after_end.hpp).
+void DeckReader::report_dropped_blocks(std::size_t first_diagnostic) {
+    const OpenFile& f = current();
+    auto found = f.dropped.finding("*END", stack_.size() > 1);
+    if (!found) return;
+    for (std::size_t i = deck_.diagnostics.size(); i-- > first_diagnostic;) {
+        const diag::Diagnostic& d = deck_.diagnostics[i];
+        if (d.code == "DK017" && d.span.file == f.id) {
+            deck_.diagnostics.erase(deck_.diagnostics.begin() + static_cast<std::ptrdiff_t>(i));
+            break;
+        }
+    }
+    deck_.diagnostics.push_back(std::move(*found));
 }
 
 // Special keywords act when their block is complete: their data lines are known then, and

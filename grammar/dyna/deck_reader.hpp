@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "grammar/dropped_after_end.hpp"
 #include "grammar/dyna/include_resolver.hpp"
 #include "grammar/dyna/reader.hpp"
 
@@ -50,6 +51,7 @@ private:
         std::optional<std::size_t> block;  // index of the open block in deck_.blocks
         bool ended = false;                // after *END
         bool reported_after_end = false;
+        DroppedAfterEnd dropped;           // keyword blocks after *END (DK017)
         bool in_comment_block = false;     // inside *COMMENT
         bool in_encrypted = false;
         bool reported_stray_data = false;
@@ -61,6 +63,7 @@ private:
     bool indented_data(std::size_t star, const KeywordLineParts& parts);
     void close_block();
     bool after_end(const char* begin, const char* end);
+    void report_dropped_blocks(std::size_t first_diagnostic);
     Span span_of(const char* begin, const char* end, std::size_t column_begin, std::size_t column_end) const;
     void report(const char* code, diag::Severity severity, std::string message, Span span);
 

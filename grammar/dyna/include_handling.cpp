@@ -5,6 +5,7 @@
 #include "grammar/dyna/deck_reader.hpp"
 #include "grammar/dyna/include_not_found.hpp"
 #include "grammar/dyna/keyword_arguments.hpp"
+#include "grammar/file_paths.hpp"
 
 namespace sphdeck::grammar::dyna {
 
@@ -101,8 +102,7 @@ void DeckReader::open_include(const std::string& name, Span where, char suffix) 
         deck_.diagnostics.push_back(include_not_found(name, where, search, continued, false));
         return;
     }
-    std::error_code ec;
-    auto canonical = std::filesystem::weakly_canonical(resolved->path, ec);
+    const std::filesystem::path canonical = canonical_path(resolved->path);  // the same file by any path
     for (const OpenFile& open : stack_) {
         if (canonical_paths_[open.id] == canonical) {
             report("DK011", diag::Severity::Error,
@@ -119,7 +119,7 @@ void DeckReader::open_include(const std::string& name, Span where, char suffix) 
     }
     SourceFile child;
     child.path = resolved->path.string();
-    child.display_name = resolved->path.lexically_normal().string();
+    child.display_name = normal_path(resolved->path).string();
     child.parent = parent.id;
     child.include_line = where.line;
     child.depth = parent_source.depth + 1;

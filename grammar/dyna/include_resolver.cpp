@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "grammar/file_paths.hpp"
+
 namespace sphdeck::grammar::dyna {
 namespace fs = std::filesystem;
 
@@ -67,7 +69,7 @@ std::optional<std::string> include_budget_problem(const fs::path& path, std::siz
 std::vector<IncludeTry> include_tries(const std::string& name, const IncludeSearch& search) {
     std::vector<IncludeTry> out;
     const auto add = [&](const Candidate& c, std::string rule) {
-        const fs::path normal = c.path.lexically_normal();
+        const fs::path normal = normal_path(c.path);
         auto same = std::find_if(out.begin(), out.end(), [&](const IncludeTry& t) { return t.path == normal; });
         if (same == out.end()) out.push_back({normal, {std::move(rule)}});
         else if (std::find(same->rules.begin(), same->rules.end(), rule) == same->rules.end())

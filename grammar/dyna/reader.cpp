@@ -8,6 +8,7 @@
 
 #include "grammar/dyna/deck_reader.hpp"
 #include "grammar/dyna/line_grammar.hpp"
+#include "grammar/file_paths.hpp"
 #include "grammar/text_file.hpp"
 
 namespace sphdeck::grammar::dyna {
@@ -100,8 +101,7 @@ void DeckReader::read(FileId file, CardFormat inherited_format, const FileCache:
     const SourceFile& source = deck_.sources.file(file);
     deck_.parameters.add_file(file, source.parent);
     if (canonical_paths_.size() <= file) canonical_paths_.resize(file + 1);
-    std::error_code ec;
-    canonical_paths_[file] = std::filesystem::weakly_canonical(source.path, ec);
+    canonical_paths_[file] = canonical_path(source.path);
     ++deck_.stats.files;
     deck_.stats.bytes += source.text.size();
     FileCache::Lookup shared;
@@ -120,6 +120,7 @@ void DeckReader::read(FileId file, CardFormat inherited_format, const FileCache:
         source.text.data(), source.text.data() + source.text.size(), source.path.c_str());
     pegtl::parse<rules::file, action>(in, *this);
     close_block();
+    report_dropped_blocks(first_diagnostic);
     const std::uint32_t physical_lines = current().line;
     deck_.stats.lines += physical_lines;
     stack_.pop_back();

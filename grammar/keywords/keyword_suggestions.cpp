@@ -96,6 +96,22 @@ bool before(const Candidate& a, const Candidate& b) {
     return a.known->name < b.known->name;  // the same suggestion from a base name and from base + option
 }
 
+// No token replaced wholesale: where `written` and `known` have the same '_'-separated tokens, each token
+// differs from its counterpart by at most half its letters (a swap, a dropped or doubled letter pass; *INITIAL_SPH
+// is not *INITIAL_CPG, two of SPH's three letters replaced). Names of other token counts are left to the
+// distance alone (a dropped '_').
+bool no_token_replaced(std::string_view written, std::string_view known) {
+    if (std::count(written.begin(), written.end(), '_') != std::count(known.begin(), known.end(), '_')) return true;
+    while (!written.empty()) {
+        const std::size_t a = std::min(written.find('_'), written.size()), b = std::min(known.find('_'), known.size());
+        const std::string_view x = written.substr(0, a), y = known.substr(0, b);
+        if (x != y && grammar::typing_distance(x, y, false, x.size() + 1) > x.size()) return false;  // half edits
+        written.remove_prefix(std::min(a + 1, written.size()));
+        known.remove_prefix(std::min(b + 1, known.size()));
+    }
+    return true;
+}
+
 // Every known name close to `key`: compared as a whole, and with as many leading tokens of `key` as
 // it has, the rest of `key` (the author's options) kept in the suggestion (*SECTON_SPH_TITLE).
 std::vector<Candidate> candidates_for(const std::string& key) {
@@ -106,7 +122,7 @@ std::vector<Candidate> candidates_for(const std::string& key) {
                                                                    : known.name.size() - written.size();
         if (2 * gap > limit) return std::nullopt;  // each insertion or deletion costs 2
         const std::size_t d = grammar::typing_distance(written, known.name, false, limit);
-        if (d > limit) return std::nullopt;
+        if (d > limit || !no_token_replaced(written, known.name)) return std::nullopt;
         return d;
     };
     for (const KnownName& known : known_names()) {

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "grammar/keywords/generated_layouts.hpp"
+#include "grammar/keywords/keyword_names.hpp"
 #include "grammar/keywords/schema.hpp"
 #include "grammar/keywords/tables.hpp"
 
@@ -86,6 +87,12 @@ std::optional<KeywordMatch> find_keyword(std::string_view full_name) {
     std::optional<KeywordMatch> hand = find_hand_written(key, core);
     if (hand && hand->unknown_options.empty()) return hand;
     if (auto generated = generated::find_generated(key)) return generated;
+    // Another spelling LS-DYNA reads as a laid-out keyword (a legacy name, _ID before other options).
+    for (const std::string& other : respellings(key)) {
+        if (auto same = find_hand_written(other, std::string_view(other).substr(1)); same && same->unknown_options.empty())
+            return same;
+        if (auto generated = generated::find_generated(other)) return generated;
+    }
     return hand;
 }
 

@@ -93,6 +93,10 @@ struct KeywordSpec {
     std::string_view summary = {};
     std::string_view source = {};            // where the layout comes from (CFG files of the starter)
     bool generated = false;                  // from generated/radioss_layouts.cpp, not written by hand
+    // A family's generic reading (/MAT: the density card of any law): where the starter's CFG files
+    // lay out the law, its generated cards are checked instead and the builder reads their values
+    // by name (keyword_lookup.cpp).
+    bool fallback = false;
     std::vector<FormatSpec> formats = {};    // newest first
 
     // The format a deck of version `version` reads: the newest one not above it (the reader's

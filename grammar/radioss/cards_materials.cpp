@@ -29,9 +29,11 @@ KeywordSpec law(std::string_view name, std::vector<std::string_view> aliases, st
 }  // namespace
 
 void add_material_keywords(std::vector<KeywordSpec>& out) {
-    // Any other law: the density card, then text.
+    // Any other law: the density card, then text; a law the CFG files lay out is checked by its
+    // generated cards instead (/MAT/VOID: RHO, E, Nu in 20-column cells, matl_void0.cfg).
     out.push_back({.name = "/MAT",
                    .summary = "material: law and density (the law's other cards are not checked)",
+                   .fallback = true,
                    .formats = {{0, {density(), opaque()}}}});
 
     // Card 2 `%20lg%20lg` E nu (`%16lg%16lg` in V4) in every format of these laws: elast_1.cfg,

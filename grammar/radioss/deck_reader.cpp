@@ -2,8 +2,11 @@
 // join the open block, #include reads a file in place, #enddata ends a file, /END the deck.
 #include "grammar/radioss/deck_reader.hpp"
 
+#include "grammar/radioss/keyword_lookup.hpp"
+
 #include "grammar/dyna/include_not_found.hpp"
 #include "grammar/dyna/include_resolver.hpp"
+#include "grammar/file_paths.hpp"
 #include "grammar/parameters.hpp"
 #include "grammar/fields.hpp"
 
@@ -75,6 +78,10 @@ void DeckReader::on_enddata(const char* begin, const char* end) {
 void DeckReader::on_header(const char* begin, const char* end) {
     OpenFile& f = current();
     ++f.line;
+    if (ended_ && header_path == begin) {
+        const std::string header = to_upper(trim(strip_cr(header_path, end)));
+        dropped_.note_radioss(header, lookup_keyword(header).known);
+    }
     if (skipped(begin, end)) return;
     close_block();
     f.headed = true;
@@ -100,6 +107,7 @@ void DeckReader::on_header(const char* begin, const char* end) {
     deck_.blocks.push_back(std::move(block));
     if (deck_.blocks.back().keyword == "/END") {
         ended_ = true;
+        dropped_.set_end(deck_.blocks.back().span);
         return;
     }
     block_ = deck_.blocks.size() - 1;
@@ -174,8 +182,7 @@ void DeckReader::on_include(const char* begin, const char* end, std::string_view
         deck_.diagnostics.push_back(dyna::include_not_found(file_name, where, search, false, true));
         return;
     }
-    std::error_code ec;
-    auto canonical = std::filesystem::weakly_canonical(resolved->path, ec);
+    const std::filesystem::path canonical = canonical_path(resolved->path);  // the same file by any path
     for (const OpenFile& open : stack_) {
         if (canonical_[open.id] == canonical) {
             report("DK011", diag::Severity::Error,
@@ -192,7 +199,7 @@ void DeckReader::on_include(const char* begin, const char* end, std::string_view
     }
     SourceFile child;
     child.path = resolved->path.string();
-    child.display_name = resolved->path.lexically_normal().string();
+    child.display_name = normal_path(resolved->path).string();
     child.parent = f.id;
     child.include_line = f.line;
     child.depth = parent.depth + 1;
@@ -208,6 +215,20 @@ void DeckReader::on_include(const char* begin, const char* end, std::string_view
     const std::size_t blocks = deck_.blocks.size();
     read(deck_.sources.add(std::move(child)));
     if (deck_.blocks.size() != blocks) close_block();
+}
+
+// The warning then stands for the information on the first line after /END in its file.
+void DeckReader::report_dropped_blocks() {
+    auto found = dropped_.finding("/END", false);
+    if (!found) return;
+    for (std::size_t i = 0; i < deck_.diagnostics.size(); ++i) {
+        const diag::Diagnostic& d = deck_.diagnostics[i];
+        if (d.code == "DK017" && d.span.file == found->span.file && d.severity == diag::Severity::Info) {
+            deck_.diagnostics.erase(deck_.diagnostics.begin() + static_cast<std::ptrdiff_t>(i));
+            break;
+        }
+    }
+    deck_.diagnostics.push_back(std::move(*found));
 }
 
 }  // namespace sphdeck::grammar::radioss

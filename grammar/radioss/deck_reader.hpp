@@ -2,6 +2,7 @@
 // are read. One DeckReader per main file (the starter, then the engine deck).
 #pragma once
 
+#include "grammar/dropped_after_end.hpp"
 #include <deque>
 #include <filesystem>
 #include <optional>
@@ -60,6 +61,10 @@ private:
     // to no block (QA LOI13: its /GRNOD/NODE keeps 45 nodes though qadiags.inc follows it).
     std::optional<std::size_t> block_;
     bool ended_ = false;                // after /END: the rest of the deck is ignored
+    DroppedAfterEnd dropped_;           // the blocks that are (DK017)
+public:
+    // After the deck's last file: the warning for blocks after /END (grammar/dropped_after_end.hpp).
+    void report_dropped_blocks();
 };
 
 }  // namespace sphdeck::grammar::radioss

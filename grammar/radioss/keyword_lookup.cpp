@@ -45,6 +45,13 @@ bool has_generated_below(std::string_view prefix) {
 
 KeywordLookup lookup_raw(std::string_view header);
 
+// A generated layout whose newest format checks at least its first card (not only text lines).
+bool checks_cards(const KeywordSpec& k) {
+    if (k.formats.empty() || k.formats.front().cards.empty()) return false;
+    const CardSpec& first = k.formats.front().cards.front();
+    return !first.fields.empty() && first.fields.front().cell != Cell::Line;
+}
+
 // A table whose every format keeps every line as text (a family's catch-all: /PROP, /GRNOD).
 bool keeps_text_only(const KeywordSpec& k) {
     for (const FormatSpec& f : k.formats)
@@ -136,7 +143,8 @@ KeywordLookup lookup_raw(std::string_view header) {
         out.prefix_segments = generated_segments;
     }
     out.cards = out.spec;
-    if (out.spec == hand && hand && made && generated_segments > hand_segments && keeps_text_only(*hand))
+    if (out.spec == hand && hand && made && generated_segments > hand_segments &&
+        (keeps_text_only(*hand) || (hand->fallback && checks_cards(*made))))
         out.cards = made;
     return out;
 }
@@ -170,6 +178,21 @@ bool is_engine_key(std::string_view header) {
                                                   : header.find('/', 1) - 1);
     first = first.substr(0, 5);
     return std::find(engine_keys.begin(), engine_keys.end(), first) != engine_keys.end();
+}
+
+std::vector<std::string> options_below(std::string_view family) {
+    std::vector<std::string> out;
+    const std::string below = std::string(family) + '/';
+    const auto all = generated::layouts();
+    auto it = std::lower_bound(all.begin(), all.end(), std::string_view(below),
+                               [](const generated::LayoutEntry& k, std::string_view n) { return k.name < n; });
+    for (; it != all.end() && it->name.substr(0, below.size()) == below; ++it) {
+        const std::string_view rest = it->name.substr(below.size());
+        std::string option(rest.substr(0, rest.find('/')));
+        if (out.empty() || out.back() != option) out.push_back(std::move(option));
+    }
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
 }
 
 std::optional<std::string> suggest_keyword(std::string_view name) {

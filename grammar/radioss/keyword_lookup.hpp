@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "grammar/radioss/cards.hpp"
 
@@ -39,6 +40,10 @@ bool is_engine_key(std::string_view header);
 // An engine key whose first segment no starter keyword has (/ANIM, /RUN, /TFILE; not /INTER or
 // /TH, which both decks have): a header the starter does not know is then an engine one.
 bool is_engine_only_key(std::string_view header);
+
+// The segments the generated names put after `family` ("/GRSH3N" -> BOX, PART, SHELL...), sorted;
+// empty when no generated name continues it.
+std::vector<std::string> options_below(std::string_view family);
 
 // The known keyword name closest to `name` ("/SHEL" -> "/SHELL"), or nullopt.
 std::optional<std::string> suggest_keyword(std::string_view name);

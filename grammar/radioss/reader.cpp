@@ -5,6 +5,7 @@
 
 #include "grammar/radioss/deck_reader.hpp"
 #include "grammar/radioss/line_grammar.hpp"
+#include "grammar/file_paths.hpp"
 
 namespace sphdeck::grammar::dyna {
 SourceText read_include_text(const std::string& path, const FileOverlay* overlay = nullptr, FileCache* cache = nullptr,
@@ -159,8 +160,7 @@ void DeckReader::read(FileId file) {
     const SourceFile& source = deck_.sources.file(file);
     deck_.parameters.add_file(file, source.parent);
     if (canonical_.size() <= file) canonical_.resize(file + 1);
-    std::error_code ec;
-    canonical_[file] = fs::weakly_canonical(source.path, ec);
+    canonical_[file] = canonical_path(source.path);
     ++deck_.stats.files;
     deck_.stats.bytes += source.text.size();
 
@@ -173,7 +173,7 @@ void DeckReader::read(FileId file) {
     pegtl::parse<rules::file, action>(in, *this);
     deck_.stats.lines += current().line;
     stack_.pop_back();
-    if (stack_.empty()) close_block();
+    if (stack_.empty()) close_block(), report_dropped_blocks();
 }
 
 RawDeck read_file(const std::string& path, const ReaderOptions& options) {

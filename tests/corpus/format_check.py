@@ -78,7 +78,7 @@ def findings(sphdeck, deck, root):
         return None
     found = collections.Counter()
     for d in json.loads(done.stdout)["diagnostics"]:
-        name = os.path.relpath(os.path.abspath(d["file"]), root) if d["file"] else None
+        name = os.path.relpath(os.path.realpath(d["file"]), os.path.realpath(root)) if d["file"] else None
         found[(d["code"], d["severity"], name, d["line"])] += 1
     return found
 
@@ -93,7 +93,7 @@ def findings_by_block(sphdeck, deck, root, by_line=None):
     found = collections.Counter()
     for d in json.loads(done.stdout)["diagnostics"]:
         path = d["file"]
-        name = os.path.relpath(os.path.abspath(path), root) if path else None
+        name = os.path.relpath(os.path.realpath(path), os.path.realpath(root)) if path else None
         block = None
         if path:
             full = os.path.abspath(path)  # findings name files as given or from the working folder
@@ -158,7 +158,8 @@ def check_formatting(sphdeck, corpus, decks, jobs):
     failures = []
     with tempfile.TemporaryDirectory(prefix="sphdeck-format-") as tmp:
         copy = os.path.join(tmp, "corpus")
-        shutil.copytree(corpus, copy, symlinks=True)
+        # Links followed: the copy shares no file with the corpus (format writes a link's target).
+        shutil.copytree(corpus, copy)
         pool = concurrent.futures.ThreadPoolExecutor(max_workers=max(1, jobs))
         original = os.path.abspath(corpus)
         def read_original(deck):

@@ -500,9 +500,116 @@ def duplicated_block(host, rng):
                     line_map=lambda n, end=b.end, size=size: n if n <= end else n + size)
 
 
+# Blocks that define or load nothing: the deck's frame and text (the finding names the blocks that do).
+INERT_DYNA = ("*KEYWORD", "*END", "*COMMENT", "*TITLE", "*INCLUDE")
+INERT_RADIOSS = ("/BEGIN", "/END", "/TITLE", "/DUMMY", "/ASSEMBLY", "/POSITION")
+
+
+def stray_end(host, rng):
+    """*END (OpenRadioss /END) pasted before a block that defines or loads something: the rest is dropped."""
+    inert, end = (INERT_DYNA, "*END") if host.deck.fmt == "dyna" else (INERT_RADIOSS, "/END")
+    blocks = [b for b in host.deck.blocks[1:] if not b.name.startswith(inert)]
+    if host.deck.fmt == "radioss":  # the starter deck's blocks after /BEGIN
+        begin = next((b for b in host.deck.blocks if b.name.startswith("/BEGIN")), None)
+        blocks = [b for b in blocks if begin and b.line > begin.line]
+    rng.shuffle(blocks)
+    for b in blocks:
+        at = b.line
+        lines = host.deck.lines[:at - 1] + [end] + host.deck.lines[at - 1:]
+        yield Plant("stray-end", lines, [at], f"{end} before {b.name} at line {at}",
+                    line_map=lambda n, at=at: n if n < at else n + 1)
+
+
+def missing_heading(host, rng):
+    """The heading line of a *PART left out: its PID/SECID/MID line is read as the heading."""
+    if host.deck.fmt != "dyna":
+        return
+    blocks = [b for b in host.deck.blocks if b.name in ("*PART", "*PART_INERTIA", "*PART_CONTACT")
+              and len(b.data) >= 2 and not b.suffix]
+    rng.shuffle(blocks)
+    for b in blocks:
+        h = b.data[0]
+        card = host.deck.lines[b.data[1] - 1]
+        if not re.match(r"^[ 0-9,]+$", card) or len(card.split()) < 2:
+            continue  # the card 2 read as numbers only (a parameter reference reads as text too)
+        lines = host.deck.lines[:h - 1] + host.deck.lines[h:]
+        yield Plant("missing-heading", lines, [b.data[1] - 1], f"{b.name} at line {b.line}: heading deleted",
+                    line_map=lambda n, h=h: n if n < h else (None if n == h else n - 1))
+
+
+def lost_asterisk(host, rng):
+    """A keyword line that lost its '*' (`PART` for `*PART`)."""
+    if host.deck.fmt != "dyna":
+        return
+    blocks = [b for b in host.deck.blocks[1:] if not b.name.startswith(INERT_DYNA) and not b.suffix
+              and host.deck.lines[b.line - 1].strip() == host.deck.lines[b.line - 1][:len(b.name)].strip()]
+    rng.shuffle(blocks)
+    for b in blocks:
+        text = host.deck.lines[b.line - 1]
+        yield Plant("lost-asterisk", replaced(host.deck.lines, b.line, text[1:]), [b.line], f"{b.name} -> {text[1:].strip()}")
+
+
+def off_plane(host, rng):
+    """A particle's node of a 2D deck (IDIM 2 or -2, every node at z = 0) given a z off the plane."""
+    if host.deck.fmt != "dyna" or host.deck.long_format:
+        return
+    idim = [f[2] for fs in host.fields.values() for f in fs if f[0] == "*CONTROL_SPH" and f[1] == "IDIM"]
+    if not idim or idim[0] not in (2, -2):
+        return
+    particles = set()
+    for b in host.deck.blocks:
+        if b.name == "*ELEMENT_SPH" and not b.suffix:
+            for n in b.data[:2000]:
+                nid = host.deck.lines[n - 1][:8].strip()
+                if nid.isdigit():
+                    particles.add(nid)
+    cands = []
+    for b in host.deck.blocks:
+        if b.name != "*NODE" or b.suffix:
+            continue
+        for n in b.data:
+            text = host.deck.lines[n - 1]
+            if "," in text or "\t" in text:
+                continue
+            f = grid_fields(text, DYNA_GRIDS["*NODE"])
+            try:
+                if f[0] in particles and float(f[3] or 0) == 0.0:
+                    cands.append((b, n, f))
+            except ValueError:
+                continue
+    rng.shuffle(cands)
+    for b, n, f in cands:
+        text = host.deck.lines[n - 1].ljust(56)
+        # The y typed again as z (a copy slip), or a unit when y is 0.
+        z = f[2] if f[2] and float(f[2]) != 0.0 else "1.0"
+        new = (text[:40] + z.rjust(16) + text[56:]).rstrip()
+        yield Plant("off-plane", replaced(host.deck.lines, n, new), [n], f"*NODE line {n}: z = {z}", "grid", [n],
+                    DYNA_GRIDS["*NODE"])
+
+
+def digit_shift(host, rng):
+    """A card line whose values are all one digit shifted one column right: each value wholly in the next
+    field, nothing straddles (`         6         0` typed `          6         0`)."""
+    if host.deck.fmt != "dyna":
+        return
+    skip = ("*TITLE", "*KEYWORD", "*COMMENT", "*PARAMETER", "*INCLUDE")
+    lines = [(b, n) for b, n in data_lines_with_fields(host) if not b.name.startswith(skip)
+             and not bulk_grid(host.deck, b, n)]
+    rng.shuffle(lines)
+    for b, n in lines:
+        text = host.deck.lines[n - 1]
+        words = text.split()
+        if len(words) < 2 or "," in text or not all(len(w) == 1 and w.isdigit() for w in words):
+            continue
+        if any(isinstance(f[2], str) for f in host.fields.get(n, [])):
+            continue
+        yield Plant("digit-shift", replaced(host.deck.lines, n, " " + text), [n], f"{b.name} line {n}", "dump")
+
+
 KINDS = [keyword_typo, shift_right_1, shift_right_3, shift_left_2, width_8, letter_o, decimal_comma,
          missing_id, zero_density, no_control_sph, parameter_typo, radioss_straddle, radioss_shift,
-         duplicated_block, tab_in_line]
+         duplicated_block, tab_in_line, stray_end, missing_heading, lost_asterisk, off_plane, digit_shift]
 KIND_NAMES = ["keyword-typo", "shift-right-1", "shift-right-3", "shift-left-2", "width-8", "letter-O",
               "decimal-comma", "missing-id", "zero-density", "no-control-sph", "parameter-typo",
-              "radioss-straddle", "radioss-shift", "duplicated-block", "tab-in-line"]
+              "radioss-straddle", "radioss-shift", "duplicated-block", "tab-in-line", "stray-end",
+              "missing-heading", "lost-asterisk", "off-plane", "digit-shift"]

@@ -1,0 +1,91 @@
+#include "model/missing_heading.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "grammar/line_tokens.hpp"
+#include "grammar/value.hpp"
+#include "model/shift_diagnosis.hpp"
+
+namespace sphdeck::model {
+namespace {
+
+bool integer_word(std::string_view word) {
+    const grammar::IntegerValue v = grammar::parse_integer(word);
+    return v.status == grammar::NumberStatus::Ok && word.find_first_of(".eEdD") == std::string_view::npos;
+}
+
+bool reading_finding(std::string_view code) { return follows_from_shift(code) || code == "DK009"; }
+
+}  // namespace
+
+bool reads_as_integer_card(std::string_view text, std::span<const grammar::FixedField> slots,
+                           const keywords::CardSpec& card) {
+    constexpr std::size_t min_values = 2;  // a lone number is a plausible heading ("1")
+    std::size_t values = 0;
+    if (grammar::is_free_format(text)) {
+        std::size_t at = 0;
+        while (at <= text.size()) {
+            std::size_t comma = std::min(text.find(',', at), text.size());
+            const std::string_view word = grammar::trim_blanks(text.substr(at, comma - at));
+            if (!word.empty()) {
+                if (!integer_word(word)) return false;
+                ++values;
+            }
+            at = comma + 1;
+        }
+        return values >= min_values;
+    }
+    const std::size_t fields = std::min(slots.size(), card.fields.size());
+    for (const grammar::LineToken& t : grammar::line_tokens(text)) {
+        const auto in = std::find_if(slots.begin(), slots.begin() + static_cast<std::ptrdiff_t>(fields),
+                                     [&](const grammar::FixedField& f) {
+                                         return f.start <= t.begin && t.end <= std::size_t{f.start} + f.width;
+                                     });
+        if (in == slots.begin() + static_cast<std::ptrdiff_t>(fields)) return false;
+        const auto& spec = card.fields[static_cast<std::size_t>(in - slots.begin())];
+        const bool integer_field = spec.type == keywords::FieldType::Integer || spec.type == keywords::FieldType::Label;
+        if (!integer_field || !integer_word(text.substr(t.begin, t.end - t.begin)))
+            return false;
+        ++values;
+    }
+    return values >= min_values;
+}
+
+void diagnose_missing_heading(const grammar::RawDeck& deck, const grammar::Block& block,
+                              const grammar::CardLine& heading, const keywords::CardSpec& next_card,
+                              std::vector<diag::Diagnostic>& out, std::size_t from) {
+    // The block's misreadings from the heading on (and "missing its Card 2" on its keyword line).
+    const auto misread = [&](const diag::Diagnostic& d) {
+        const bool after = d.span.file == heading.file && d.span.line >= heading.line;
+        const bool keyword_line = d.span.file == block.span.file && d.span.line == block.span.line;
+        return reading_finding(d.code) && (after || keyword_line);
+    };
+    if (std::none_of(out.begin() + static_cast<std::ptrdiff_t>(from), out.end(), misread)) return;
+    const std::string_view text = deck.text(heading);
+    const auto first = static_cast<std::uint32_t>(std::min(text.find_first_not_of(' '), text.size()) + 1);
+    diag::Diagnostic d{"DK032", diag::Severity::Warning,
+                       fmt::format("{} heading line missing: this line of integers reads as {}'s {}, but LS-DYNA "
+                                   "reads it as the part's heading and the line after it as its {}",
+                                   block.keyword, block.keyword, next_card.name, next_card.name),
+                       grammar::Span{heading.file, heading.line, first, static_cast<std::uint32_t>(text.size() + 1)},
+                       {}};
+    // Unsafe: which title the part had is not known; a blank heading is read as none.
+    d.fixes.push_back({"insert a blank heading line above it", false,
+                       {{grammar::Span{heading.file, heading.line, 1, 1}, "\n"}}});
+    std::size_t kept = from;
+    for (std::size_t i = from; i < out.size(); ++i) {
+        if (misread(out[i])) {
+            d.severity = std::max(d.severity, out[i].severity);
+            fold_into(d, std::move(out[i]));
+            continue;
+        }
+        if (kept != i) out[kept] = std::move(out[i]);
+        ++kept;
+    }
+    out.resize(kept);
+    out.push_back(std::move(d));
+}
+
+}  // namespace sphdeck::model

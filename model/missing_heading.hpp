@@ -1,0 +1,30 @@
+// A `*PART` whose heading line was forgotten: LS-DYNA reads its PID/SECID/MID line as the heading (any text
+// is a heading) and the next line, or the next keyword, as card 2, so the part is missing or wrong and the
+// findings land on the keyword line ("missing its Card 2"), on the next part's heading, on every particle
+// of the part. The cause is the line a person typed: a heading that reads as a card of integers (DK032).
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "diag/diagnostic.hpp"
+#include "grammar/fields.hpp"
+#include "grammar/keywords/schema.hpp"
+#include "grammar/raw_deck.hpp"
+
+namespace sphdeck::model {
+
+// Whether `text` reads as `card` (the card after the heading): two integers at least, each word an integer
+// whole in one of the card's integer fields (or, in free format, each value an integer).
+bool reads_as_integer_card(std::string_view text, std::span<const grammar::FixedField> slots,
+                           const keywords::CardSpec& card);
+
+// DK032 at `heading` (a heading line that reads as the next card), when the block misread after it (a
+// reading finding in out[from, end)); the block's reading findings become its notes.
+void diagnose_missing_heading(const grammar::RawDeck& deck, const grammar::Block& block,
+                              const grammar::CardLine& heading, const keywords::CardSpec& next_card,
+                              std::vector<diag::Diagnostic>& out, std::size_t from);
+
+}  // namespace sphdeck::model
