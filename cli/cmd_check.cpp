@@ -17,6 +17,7 @@
 #include "cli/check_inputs.hpp"
 #include "cli/check_statistics.hpp"
 #include "cli/commands.hpp"
+#include "cli/deck_input.hpp"
 #include "cli/fix_output.hpp"
 #include "cli/ordered_jobs.hpp"
 #include "cli/text_folding.hpp"
@@ -144,11 +145,7 @@ InputOutcome check_named_file(const CheckInput& input, const engine::CheckOption
     const std::string& path = input.path;
     InputOutcome out;
     if (path == "-") {  // standard input: named and resolved as --stdin-filename says
-        const std::string name = args.stdin_filename.empty() ? "<stdin>" : args.stdin_filename;
-        std::string text(std::istreambuf_iterator<char>(std::cin), {});
-        const std::string folder = args.stdin_filename.empty() ? "." : std::filesystem::path(name).parent_path().string();
-        out.checked.push_back(
-            engine::check_buffer(std::move(text), name, options, std::nullopt, folder.empty() ? "." : folder));
+        out.checked.push_back(check_deck_input(path, args.stdin_filename, options));
         return out;
     }
     // A deck found in a folder is checked alone: the decks of the folder that include it were dropped

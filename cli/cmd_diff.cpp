@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/deck_input.hpp"
 #include "engine/check.hpp"
 #include "engine/deck_diff.hpp"
 
@@ -11,6 +12,7 @@ namespace {
 
 struct DiffArgs {
     std::string before, after;
+    std::string stdin_filename;
     std::string format = "text";
     double rtol = 1e-12;
     std::vector<std::string> include_paths;
@@ -66,13 +68,17 @@ void print_text(const engine::DeckDiff& diff) {
 }
 
 int run_diff(const DiffArgs& args) {
+    if (args.before == "-" && args.after == "-") {
+        fmt::print(stderr, "sphdeck diff: error: only one of the two decks can be read from standard input (-)\n");
+        return exit_usage;
+    }
     engine::CheckOptions options;
     options.reader.include_paths = args.include_paths;
     options.rules.geometry = false;  // the values are what count, not the neighbour rules
     engine::CheckResult before, after;
     try {
-        before = engine::check_file(args.before, options);
-        after = engine::check_file(args.after, options);
+        before = check_deck_input(args.before, args.stdin_filename, options);
+        after = check_deck_input(args.after, args.stdin_filename, options);
     } catch (const std::exception& e) {
         fmt::print(stderr, "sphdeck: error: {}\n", e.what());
         return exit_usage;
@@ -90,8 +96,10 @@ int run_diff(const DiffArgs& args) {
 
 std::function<int()> setup_diff(CLI::App& app) {
     auto args = std::make_shared<DiffArgs>();
-    app.add_option("before", args->before, "the first deck (LS-DYNA or OpenRadioss starter)")->required();
-    app.add_option("after", args->after, "the second deck")->required();
+    app.add_option("before", args->before, "the first deck (LS-DYNA or OpenRadioss starter), or - for standard input")
+        ->required();
+    app.add_option("after", args->after, "the second deck, or - for standard input")->required();
+    app.add_option("--stdin-filename", args->stdin_filename, stdin_help);
     app.add_option("--format", args->format, "output format")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
     app.add_option("--rtol", args->rtol, "numbers closer than this relative tolerance are equal")
         ->check(CLI::NonNegativeNumber)

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/deck_input.hpp"
 #include "cli/dump_cards.hpp"
 #include "engine/check.hpp"
 #include "model/model_json.hpp"
@@ -13,6 +14,7 @@ namespace {
 
 struct DumpArgs {
     std::string deck;
+    std::string stdin_filename;
     std::string format = "json";
     bool particles = false;
     bool cards = false;
@@ -36,7 +38,7 @@ void print(nlohmann::ordered_json& out, const grammar::RawDeck& deck, bool cards
 int run_dump(const DumpArgs& args) {
     engine::CheckOptions options;
     options.reader.include_paths = args.include_paths;
-    engine::CheckResult r = engine::check_file(args.deck, options);
+    engine::CheckResult r = check_deck_input(args.deck, args.stdin_filename, options);
     if (grammar::format_of(r.deck) == grammar::DeckFormat::Radioss) {
         nlohmann::ordered_json out = model::radioss_to_json(model::read_radioss_records(r.deck), r.model, r.deck,
                                                                   args.particles);
@@ -52,7 +54,9 @@ int run_dump(const DumpArgs& args) {
 
 std::function<int()> setup_dump(CLI::App& app) {
     auto args = std::make_shared<DumpArgs>();
-    app.add_option("deck", args->deck, "LS-DYNA keyword deck or OpenRadioss starter deck")->required();
+    app.add_option("deck", args->deck, "LS-DYNA keyword deck or OpenRadioss starter deck, or - for standard input")
+        ->required();
+    app.add_option("--stdin-filename", args->stdin_filename, stdin_help);
     app.add_option("--format", args->format, "output format")->check(CLI::IsMember({"json"}))->capture_default_str();
     app.add_flag("--particles", args->particles, "list every particle (id, part, mass), not only counts");
     app.add_flag("--cards", args->cards,

@@ -10,6 +10,7 @@
 
 #include "cli/check_inputs.hpp"
 #include "cli/commands.hpp"
+#include "cli/deck_input.hpp"
 #include "edit/apply_edits.hpp"
 #include "edit/format_deck.hpp"
 #include "edit/unified_diff.hpp"
@@ -67,11 +68,9 @@ engine::CheckResult read_input(const CheckInput& input, const FormatArgs& args) 
         options.reader.include_paths = include_paths_for(input.path, args);
         return engine::check_file(input.path, options);
     }
-    const std::string name = args.stdin_filename.empty() ? "<stdin>" : args.stdin_filename;
-    options.reader.include_paths = include_paths_for(args.stdin_filename.empty() ? "." : name, args);
-    std::string text(std::istreambuf_iterator<char>(std::cin), {});
-    const std::string folder = std::filesystem::path(name).parent_path().string();
-    return engine::check_buffer(std::move(text), name, options, std::nullopt, folder.empty() ? "." : folder);
+    options.reader.include_paths =
+        include_paths_for(args.stdin_filename.empty() ? "." : deck_display_name("-", args.stdin_filename), args);
+    return check_deck_input("-", args.stdin_filename, options);
 }
 
 // Formats one deck (and its includes when asked, or when it was found in a folder: the folder's decks
@@ -172,8 +171,7 @@ std::function<int()> setup_format(CLI::App& app) {
     app.add_option("--exclude", args->exclude,
                    "skip files and folders found in folders that match these patterns (a name, or a glob on the path)")
         ->allow_extra_args(false);
-    app.add_option("--stdin-filename", args->stdin_filename,
-                   "the name of the deck read from standard input (-): for messages and include resolution");
+    app.add_option("--stdin-filename", args->stdin_filename, stdin_help);
     app.add_flag("--check", args->check, "write nothing; exit 1 when a file would change (CI, pre-commit)");
     app.add_flag("--diff", args->diff, "write nothing; print a unified diff of the changes (exit 1 when a file would change)");
     app.add_flag("--includes", args->options.includes, "format the included files too (else only the named decks)");

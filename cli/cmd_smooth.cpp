@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "cli/commands.hpp"
+#include "cli/deck_input.hpp"
 #include "cli/text_table.hpp"
 #include "cli/progress_bar.hpp"
 #include "diag/render_text.hpp"
@@ -23,7 +24,9 @@ namespace sphdeck::cli {
 namespace {
 
 struct SmoothArgs {
-    std::string deck;
+    std::string deck;  // as shown in the output: the path, or --stdin-filename for `-`
+    std::string input;  // as given: a path or `-`
+    std::string stdin_filename;
     std::string format = "table";
     std::optional<int> ini;
     std::string csv, vtk, plot;
@@ -311,7 +314,7 @@ int run_smooth(const SmoothArgs& args) {
     // --ini asks for another mode (computing it twice was half the command's time on big decks).
     options.rules.keep_preview = !args.ini.has_value();
     options.rules.preview_arrays = options.rules.keep_preview;
-    const engine::CheckResult r = engine::check_file(args.deck, options);
+    const engine::CheckResult r = check_deck_input(args.input, args.stdin_filename, options);
     const diag::Counts counts = diag::count(r.diagnostics);
     // *DEFINE_SPH_MESH_BOX particles join the deck's own (preproc/sph_mesh_box.hpp).
     const preproc::MeshBoxParticles boxes = preproc::generate_mesh_box_particles(r.model);
@@ -374,7 +377,9 @@ int run_smooth(const SmoothArgs& args) {
 
 std::function<int()> setup_smooth(CLI::App& app) {
     auto args = std::make_shared<SmoothArgs>();
-    app.add_option("deck", args->deck, "LS-DYNA keyword deck or OpenRadioss starter deck")->required();
+    app.add_option("deck", args->input, "LS-DYNA keyword deck or OpenRadioss starter deck, or - for standard input")
+        ->required();
+    app.add_option("--stdin-filename", args->stdin_filename, stdin_help);
     app.add_option("--format", args->format, "output format")
         ->check(CLI::IsMember({"table", "json"}))
         ->capture_default_str();
@@ -391,7 +396,10 @@ std::function<int()> setup_smooth(CLI::App& app) {
                                          "counts per part (.svg)");
     app.add_option("-I,--include-path", args->include_paths, "extra folder searched for *INCLUDE files")
         ->allow_extra_args(false);
-    return [args] { return run_smooth(*args); };
+    return [args] {
+        args->deck = deck_display_name(args->input, args->stdin_filename);
+        return run_smooth(*args);
+    };
 }
 
 }  // namespace sphdeck::cli

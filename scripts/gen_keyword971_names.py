@@ -76,7 +76,8 @@ def write_cpp(names, commit):
         '',
         'namespace {',
         'using namespace std::string_view_literals;',
-        'constexpr std::array kKeyword971Names = {',
+        "// A plain array: Clang deduces std::array's size by a fold over every element, which stops at 256.",
+        'constexpr std::string_view kKeyword971Names[] = {',
     ]
     out += ['    "' + n + '"sv,' for n in names]
     out += [

@@ -124,3 +124,23 @@ TEST_CASE("cli conventions: output and messages in order when both streams go to
     REQUIRE(summary_at != std::string::npos);
     CHECK(diff_at < summary_at);
 }
+
+TEST_CASE("cli conventions: dump, smooth and diff read a deck from standard input (-) as check does") {
+    test::TempDir dir;
+    dir.write("deck.k", kTidy);
+    dir.write("other.k", "*KEYWORD\n*CONTROL_TERMINATION\n       2.0\n*END\n");
+    const test::Run dumped = test::run_sphdeck(dir, "dump - --stdin-filename named.k < deck.k");
+    CHECK(dumped.exit_code == 0);
+    CHECK(dumped.out.find("\"file\": \"named.k\"") != std::string::npos);
+    CHECK(dumped.out.find("\"ENDTIM\": {\n          \"value\": 1.0,") != std::string::npos);
+    const test::Run same = test::run_sphdeck(dir, "diff deck.k - < deck.k");
+    CHECK(same.exit_code == 0);
+    const test::Run differs = test::run_sphdeck(dir, "diff - other.k --stdin-filename piped.k < deck.k");
+    CHECK(differs.exit_code == 1);
+    CHECK(differs.out.find("ENDTIM: 1.0 -> 2.0") != std::string::npos);
+    CHECK(differs.out.find("piped.k:2") != std::string::npos);
+    CHECK(test::run_sphdeck(dir, "diff - - < deck.k").exit_code == 2);
+    const test::Run smoothed = test::run_sphdeck(dir, "smooth - --stdin-filename piped.k < deck.k");
+    CHECK(smoothed.exit_code == 2);  // no particles: the message names the deck as --stdin-filename says
+    CHECK(smoothed.err.find("sphdeck: error: piped.k: no SPH particles") != std::string::npos);
+}

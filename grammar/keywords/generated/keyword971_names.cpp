@@ -13,7 +13,8 @@ namespace sphdeck::keywords::generated {
 
 namespace {
 using namespace std::string_view_literals;
-constexpr std::array kKeyword971Names = {
+// A plain array: Clang deduces std::array's size by a fold over every element, which stops at 256.
+constexpr std::string_view kKeyword971Names[] = {
     "*AIRBAG_ADIABATIC_GAS_MODEL"sv,
     "*AIRBAG_ADIABATIC_GAS_MODEL_ID"sv,
     "*AIRBAG_ADVANCED_ALE"sv,
