@@ -108,7 +108,9 @@ TEST_CASE("special files: a device, a pipe or a socket as the deck itself is exi
                                                          {"pipe.k", "'pipe.k' is a named pipe"},
                                                          {"pipe_link.k", "'pipe_link.k' is a named pipe"},
                                                          {"socket.k", "'socket.k' is a socket"}};
-    for (const auto& [deck, message] : decks) {
+    for (const auto& entry : decks) {  // no structured binding: clang cannot capture one in CAPTURE()
+        const char* deck = entry.first;
+        const char* message = entry.second;
         for (const char* command : {"check", "dump", "format"}) {
             CAPTURE(deck);
             CAPTURE(command);
