@@ -73,4 +73,17 @@ std::optional<diag::Diagnostic> DroppedAfterEnd::finding(std::string_view end_wo
     return d;
 }
 
+void DroppedAfterEnd::report(std::vector<diag::Diagnostic>& out, std::size_t from, std::string_view end_word,
+                             bool include) const {
+    auto found = finding(end_word, include);
+    if (!found) return;
+    for (std::size_t i = from; i < out.size(); ++i) {
+        if (out[i].code == "DK017" && out[i].span.file == found->span.file && out[i].severity == diag::Severity::Info) {
+            out.erase(out.begin() + static_cast<std::ptrdiff_t>(i));
+            break;
+        }
+    }
+    out.push_back(std::move(*found));
+}
+
 }  // namespace sphdeck::grammar

@@ -33,6 +33,10 @@ public:
     // included one (LS-DYNA goes on with the file that included it).
     std::optional<diag::Diagnostic> finding(std::string_view end_word, bool include) const;
 
+    // Adds the warning to `out`, where it stands for the information on the first line after the end in
+    // the same file (the DK017 info at index `from` or later); nothing when no block was dropped.
+    void report(std::vector<diag::Diagnostic>& out, std::size_t from, std::string_view end_word, bool include) const;
+
 private:
     static constexpr std::size_t max_kinds = 4;  // kinds named in the message
     Span end_;

@@ -174,17 +174,7 @@ void DeckReader::on_keyword(const char* begin, const char* end, const KeywordLin
 // At the end of a file: the warning for keyword blocks after its *END, which then stands for the
 // information on the first line after it (grammar/dropped_after_end.hpp).
 void DeckReader::report_dropped_blocks(std::size_t first_diagnostic) {
-    const OpenFile& f = current();
-    auto found = f.dropped.finding("*END", stack_.size() > 1);
-    if (!found) return;
-    for (std::size_t i = deck_.diagnostics.size(); i-- > first_diagnostic;) {
-        const diag::Diagnostic& d = deck_.diagnostics[i];
-        if (d.code == "DK017" && d.span.file == f.id) {
-            deck_.diagnostics.erase(deck_.diagnostics.begin() + static_cast<std::ptrdiff_t>(i));
-            break;
-        }
-    }
-    deck_.diagnostics.push_back(std::move(*found));
+    current().dropped.report(deck_.diagnostics, first_diagnostic, "*END", stack_.size() > 1);
 }
 
 // Special keywords act when their block is complete: their data lines are known then, and

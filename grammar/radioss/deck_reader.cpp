@@ -218,17 +218,6 @@ void DeckReader::on_include(const char* begin, const char* end, std::string_view
 }
 
 // The warning then stands for the information on the first line after /END in its file.
-void DeckReader::report_dropped_blocks() {
-    auto found = dropped_.finding("/END", false);
-    if (!found) return;
-    for (std::size_t i = 0; i < deck_.diagnostics.size(); ++i) {
-        const diag::Diagnostic& d = deck_.diagnostics[i];
-        if (d.code == "DK017" && d.span.file == found->span.file && d.severity == diag::Severity::Info) {
-            deck_.diagnostics.erase(deck_.diagnostics.begin() + static_cast<std::ptrdiff_t>(i));
-            break;
-        }
-    }
-    deck_.diagnostics.push_back(std::move(*found));
-}
+void DeckReader::report_dropped_blocks() { dropped_.report(deck_.diagnostics, 0, "/END", false); }
 
 }  // namespace sphdeck::grammar::radioss
