@@ -13,6 +13,7 @@ import argparse
 import hashlib
 import os
 import pathlib
+import re
 import subprocess
 import sys
 
@@ -31,7 +32,10 @@ def record(sphdeck: str, deck: pathlib.Path) -> str:
     for args in (["check", "--format", "json"], ["format", "--diff", "--includes"]):
         run = subprocess.run([sphdeck, *args, str(deck)], capture_output=True, text=True, timeout=300,
                              errors="replace")
-        parts.append(f"$ {' '.join(args)}\nexit {run.returncode}\n--- stdout\n{run.stdout}\n--- stderr\n{run.stderr}\n")
+        # How long the check took is the one figure that differs between two runs (JSON and summary line).
+        stdout = re.sub(r'"seconds": [-+0-9.eE]+', '"seconds": N', run.stdout)
+        stderr = re.sub(r" in [0-9.]+ s$", " in N s", run.stderr, flags=re.M)
+        parts.append(f"$ {' '.join(args)}\nexit {run.returncode}\n--- stdout\n{stdout}\n--- stderr\n{stderr}\n")
     return "".join(parts)
 
 
