@@ -30,7 +30,7 @@ demo: build-cli
 	bash decks/demo/run_demo.sh $(BUILD)/sphdeck
 
 test: build
-	cd $(BUILD) && ctest --output-on-failure
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 # The corpus check: sphdeck on the real public decks of ../shared/corpus (or $$SPHDECK_CORPUS), every
 # error and warning compared with the argued baseline tests/corpus/baseline.tsv.
