@@ -30,4 +30,8 @@ DeckKind kind_of_deck(const std::filesystem::path& deck);
 // rule's info (or warning) where the firing deck has its error (or warning). Each says so in its comments.
 bool reports_its_rule_lower(const std::filesystem::path& deck);
 
+// "DK001 DK002 ...": the codes CMakeLists.txt gave a ctest entry rule-CODE (read from the registry's rows
+// at configure time; generated into the build tree).
+std::string_view rule_ctest_codes();
+
 }  // namespace sphdeck::test

@@ -136,3 +136,10 @@ TEST_CASE("rule rows: every deck named after a code has a row") {
         CHECK_MESSAGE(lint::find_rule(code) != nullptr, "no registry row: rename the deck or add the rule");
     }
 }
+
+TEST_CASE("rule rows: every rule has its ctest entry") {
+    // CMakeLists.txt reads the codes from lint/registry_rows.cpp; a row it cannot read would run no deck.
+    std::vector<std::string> registered;
+    for (const lint::RuleInfo& rule : lint::all_rules()) registered.emplace_back(rule.code);
+    CHECK(words(test::rule_ctest_codes()) == registered);
+}
