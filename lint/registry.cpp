@@ -86,6 +86,8 @@ std::tuple<int, std::size_t> match(const std::string& query, std::string_view ca
 
 std::span<const RuleInfo> all_rules() { return table(); }
 
+std::string rule_page_path(const RuleInfo& rule) { return "docs/rules/" + std::string(rule.code) + ".md"; }
+
 const RuleInfo* find_rule(std::string_view code_or_name) {
     for (const RuleInfo& rule : table())
         if (iequals(rule.code, code_or_name) || rule.name == code_or_name) return &rule;

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -34,6 +35,19 @@ enum class Fixable {
 };
 std::string_view to_string(Fixable f);  // "none", "safe", "unsafe", "safe or unsafe"
 
+// Where a rule lives besides its row: the source files whose code reports it and the folders of its
+// decks. Its page is docs/rules/CODE.md (rule_page_path); its decks are the files CODE_* in those folders
+// of decks/tests/, those named *fires* fire it and those named *silent* must not. A deck that cannot be
+// written (a model too big for the repository) is replaced by a reason here and a unit test. A test
+// (tests/test_rule_rows.cpp) holds every row to this: each named file reports the code, each rule has
+// its page, a firing and a silent deck or the reason why not; ctest runs each rule's decks as rule-CODE.
+struct RuleHome {
+    std::string_view check;  // "lint/rules_control_sph_form.cpp"; several separated by blanks, main first
+    std::string_view decks;  // "sph": folders under decks/tests/, several separated by blanks ("dk rad")
+    std::string_view no_firing_deck = {};  // why no deck fires it, and which unit test does instead
+    std::string_view no_silent_deck = {};  // why no deck must stay silent, and which unit test shows it
+};
+
 struct RuleInfo {
     std::string_view code;    // "SPH030"
     std::string_view name;    // "iavis-solid-in-2d" (kebab-case, as in the catalogue)
@@ -41,10 +55,14 @@ struct RuleInfo {
                               // `what` says when a finding is reported lower
     std::string_view since;   // "0.1.0"
     std::string_view source;  // "CONTROL_SPH R2e", "reader", "SPHBCS", ... as in the catalogue
+    RuleHome home;            // its check and its decks
     std::string_view summary;  // one line: the catalogue's condition in plain words
     Fixable fix = Fixable::None;  // whether its findings carry fixes (a test compares with the deck tests)
     RuleDoc doc{};            // empty in the rows; the registry fills it from docs/rules/CODE.md
 };
+
+// "docs/rules/SPH030.md": the page a rule's documentation is read from.
+std::string rule_page_path(const RuleInfo& rule);
 
 // Every rule, sorted by code.
 std::span<const RuleInfo> all_rules();

@@ -6,14 +6,20 @@
 // Included files (*.inc, or anything under a folder named `include`) are not run on their own.
 // Radioss decks (*.rad) may write the same lines with '#' instead of '$'; their engine decks
 // (<run>_0001.rad) are checked with the starter deck <run>_0000.rad that reads them.
+// A rule's decks (tests/rule_decks.hpp) also show their rule: a *fires* deck declares it, a *silent* one not.
+// SPHDECK_DECKS picks the decks of one run: a rule code (ctest's rule-SPH030: SPHDECK_DECKS=SPH030), `none`
+// (the decks named after no rule, with the unit tests in ctest), or, unset, every deck.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <set>
 #include <tuple>
 
-#include "grammar/radioss/reader.hpp"
 #include "engine/check.hpp"
+#include "lint/registry.hpp"
+#include "rule_decks.hpp"
 
 namespace fs = std::filesystem;
 using namespace sphdeck;
@@ -82,27 +88,27 @@ std::string describe(const std::multiset<Expectation>& set) {
     return s.empty() ? "  (none)\n" : s;
 }
 
-bool is_main_deck(const fs::path& p) {
-    // Radioss engine decks (<run>_0001.rad) are read with their starter deck.
-    const bool engine = grammar::radioss::is_engine_file_name(p.filename().string());
-    if (p.extension() != ".k" && (p.extension() != ".rad" || engine)) return false;
-    for (const auto& part : p) if (part == "include") return false;
-    return true;
+// The decks SPHDECK_DECKS asks for (every one when unset).
+std::vector<fs::path> selected_decks() {
+    const char* env = std::getenv("SPHDECK_DECKS");
+    const std::string selection = env ? env : "";
+    std::vector<fs::path> decks = test::all_test_decks();
+    if (selection.empty()) return decks;
+    std::erase_if(decks, [&](const fs::path& deck) {
+        const std::string rule = test::rule_of_deck(deck);
+        return selection == "none" ? !rule.empty() : rule != selection;
+    });
+    return decks;
 }
 
 }  // namespace
 
 TEST_CASE("decks: every test deck produces exactly the diagnostics it declares") {
-    // decks/demo too: the demo's mistakes deck declares what `make demo` shows, the dam break none.
-    std::vector<fs::path> decks;
-    for (const char* folder : {"tests", "demo"}) {
-        fs::path root = fs::path(SPHDECK_SOURCE_DIR) / "decks" / folder;
-        REQUIRE(fs::is_directory(root));
-        for (const auto& e : fs::recursive_directory_iterator(root))
-            if (e.is_regular_file() && is_main_deck(e.path())) decks.push_back(e.path());
-    }
-    std::sort(decks.begin(), decks.end());
-    CHECK(decks.size() >= 10);
+    const std::vector<fs::path> decks = selected_decks();
+    const char* env = std::getenv("SPHDECK_DECKS");
+    const std::string selection = env ? env : "";
+    INFO("SPHDECK_DECKS=" << selection);
+    CHECK(decks.size() >= (selection.empty() ? 10 : 1));
     for (const auto& deck : decks) {
         CAPTURE(deck.string());
         engine::CheckResult r = engine::check_file(deck.string());
@@ -115,5 +121,15 @@ TEST_CASE("decks: every test deck produces exactly the diagnostics it declares")
                             std::inserter(unexpected, unexpected.end()));
         INFO("expected but not found:\n" << describe(missing) << "found but not declared:\n" << describe(unexpected));
         CHECK((missing.empty() && unexpected.empty()));
+        // A deck named after a rule shows that rule: reported (on the lines it declares) or not at all.
+        const std::string rule = test::rule_of_deck(deck);
+        if (rule.empty()) continue;
+        CHECK_MESSAGE(lint::find_rule(rule) != nullptr, "no registry row for " << rule);
+        const bool declares_rule = std::any_of(expected.begin(), expected.end(),
+                                               [&](const Expectation& e) { return std::get<2>(e) == rule; });
+        if (test::kind_of_deck(deck) == test::DeckKind::Fires)
+            CHECK_MESSAGE(declares_rule, "a firing deck must report " << rule);
+        if (test::kind_of_deck(deck) == test::DeckKind::Silent && !test::reports_its_rule_lower(deck))
+            CHECK_MESSAGE(!declares_rule, "a silent deck must not report " << rule);
     }
 }
