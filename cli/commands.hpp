@@ -31,5 +31,6 @@ std::function<int()> setup_sol2sph(CLI::App& app);
 std::function<int()> setup_run(CLI::App& app);
 std::function<int()> setup_verify(CLI::App& app);
 std::function<int()> setup_lsp(CLI::App& app);
+std::function<int()> setup_mcp(CLI::App& app);
 
 }  // namespace sphdeck::cli

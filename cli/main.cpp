@@ -26,6 +26,7 @@ const std::vector<sphdeck::cli::Command>& commands() {
         {"run", "run the deck with the compact reference SPH solver (time history, vtp snapshots)", sphdeck::cli::setup_run},
         {"verify", "run the verification cases (sod, hydrostatic, dambreak, sedov, noh...) against exact, experimental and independent data", sphdeck::cli::setup_verify},
         {"lsp", "serve editors over the Language Server Protocol on stdio: diagnostics as you type, hover, go to definition", sphdeck::cli::setup_lsp},
+        {"mcp", "serve coding agents over the Model Context Protocol on stdio: check, fix, format, explain decks", sphdeck::cli::setup_mcp},
     };
     return table;
 }

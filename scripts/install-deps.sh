@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages sphdeck builds and tests with, only those missing
-# (neovim: the editor test tests/editor/, ctest entry editor-neovim).
+# (neovim: the editor test tests/editor/, ctest entry editor-neovim; nodejs and npm: the MCP client
+# test tests/mcp-client/, ctest entry mcp-client-sdk, whose pinned SDK `npm ci` then installs from the
+# npm registry).
 # Runs as root (CI, fresh machines) or through sudo when available.
 #   --fuzz  also Clang 14, its sanitizer and libFuzzer runtimes and its OpenMP library, for the
 #           Clang build and the fuzz targets (fuzz/README.md); the default install stays GCC only.
@@ -17,11 +19,16 @@ test_packages=(
   neovim
   man-db         # `man sphdeck-check` on the installed pages (tests/ci/test_install.py)
 )
+# node and npm from Debian, unless another install already provides the commands (NodeSource's nodejs
+# carries npm and conflicts with Debian's npm package).
+command -v node > /dev/null || test_packages+=(nodejs)
+command -v npm > /dev/null || test_packages+=(npm)
 packages=("${build_packages[@]}" "${test_packages[@]}")
+with_tests=1
 for arg in "$@"; do
   case $arg in
     --fuzz) packages+=(clang-14 libclang-rt-14-dev libomp-14-dev) ;;
-    --build) packages=("${build_packages[@]}") ;;
+    --build) packages=("${build_packages[@]}"); with_tests=0 ;;
     *) echo "usage: scripts/install-deps.sh [--build] [--fuzz]" >&2; exit 2 ;;
   esac
 done
@@ -29,10 +36,16 @@ missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
-echo "installing: ${missing[*]}"
-sudo_cmd=""
-[ "$(id -u)" -ne 0 ] && sudo_cmd="sudo"
-export DEBIAN_FRONTEND=noninteractive
-$sudo_cmd apt-get update -qq
-$sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "installing: ${missing[*]}"
+  sudo_cmd=""
+  [ "$(id -u)" -ne 0 ] && sudo_cmd="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo_cmd apt-get update -qq
+  $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+# The MCP client test's SDK, at the version package-lock.json pins (tests/mcp-client/README.md).
+client_dir="$(cd "$(dirname "$0")/.." && pwd)/tests/mcp-client"
+if [ $with_tests -eq 1 ] && [ ! -f "$client_dir/node_modules/@modelcontextprotocol/sdk/package.json" ]; then
+  (cd "$client_dir" && npm ci --no-audit --no-fund --loglevel=error)
+fi

@@ -28,8 +28,9 @@ const std::map<std::string, std::set<std::string>> kAllowed = {
     {"engine", {"lint", "preproc", "model", "grammar", "diag"}},
     {"edit", {"engine", "lint", "preproc", "model", "grammar", "diag"}},
     {"lsp", {"edit", "engine", "lint", "preproc", "model", "grammar", "diag"}},
+    {"mcp", {"edit", "engine", "lint", "preproc", "model", "grammar", "diag"}},
     {"verify", {"engine", "refsolver", "lint", "preproc", "model", "grammar", "diag", "io"}},
-    {"cli", {"lsp", "edit", "verify", "engine", "refsolver", "lint", "preproc", "model", "grammar", "diag", "io"}},
+    {"cli", {"mcp", "lsp", "edit", "verify", "engine", "refsolver", "lint", "preproc", "model", "grammar", "diag", "io"}},
 };
 
 // The narrow seams: (part, included header) pairs allowed although the part is not, and single
@@ -38,6 +39,8 @@ const std::set<std::pair<std::string, std::string>> kHeaderOnly = {
     {"diag", "grammar/source_map.hpp"},  // a diagnostic's span
     {"grammar", "diag/diagnostic.hpp"},  // the readers' findings
     {"engine", "edit/apply_edits.hpp"},  // a cause's fix applied to re-check the deck mended (engine/mended_consequences.*)
+    {"mcp", "lsp/json_rpc.hpp"},  // the MCP server shares the editor server's JSON-RPC parsing and messages
+    {"mcp", "lsp/uri.hpp"},       // the file:// URIs of the client's roots
 };
 const std::map<std::string, std::string> kFileExceptions = {};  // none today
 

@@ -11,7 +11,7 @@ import argparse, os, re, shutil, subprocess, sys, tempfile
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DECK = "decks/demo/sph_mistakes_2d.k"
 SUBCOMMANDS = {"check", "rule", "rules", "keyword", "format", "dump", "diff", "smooth", "sol2sph", "run",
-               "verify", "lsp"}
+               "verify", "lsp", "mcp"}
 
 
 def run(command, **kwargs):

@@ -12,7 +12,7 @@ import sys
 from pathlib import Path
 
 COMMANDS = ["check", "rule", "rules", "keyword", "format", "dump", "diff", "smooth", "sol2sph", "run", "verify",
-            "lsp"]
+            "lsp", "mcp"]
 NOT_DOCUMENTED = {"--help"}  # every command has it; the README says so once
 
 
@@ -79,7 +79,7 @@ def main() -> int:
             continue
         options = help_options(args.sphdeck, command)
         checks += 1
-        if not options and command not in ("rule", "rules", "lsp"):
+        if not options and command not in ("rule", "rules", "lsp", "mcp"):
             problems.append(f"`sphdeck {command} --help` lists no options (could not be read)")
         prose = re.sub(r"```.*?```", "", section, flags=re.S)
         quoted_spans = re.findall(r"`([^`]+)`", prose)
