@@ -149,13 +149,6 @@ int run_deck(const RunArgs& args) {
     engine::CheckOptions options;
     options.reader.include_paths = args.include_paths;
     const engine::CheckResult r = engine::check_file(args.deck, options);
-    if (grammar::format_of(r.deck) == grammar::DeckFormat::Radioss) {
-        fmt::print(stderr,
-                   "sphdeck: error: {}: an OpenRadioss deck; `sphdeck run` runs LS-DYNA keyword decks (sphdeck check "
-                   "and smooth read this one)\n",
-                   args.deck);
-        return exit_usage;
-    }
     std::size_t read_errors = 0;
     for (const diag::Diagnostic& d : r.diagnostics)
         if (d.severity == diag::Severity::Error && d.code.rfind("DK", 0) == 0) {
@@ -171,6 +164,7 @@ int run_deck(const RunArgs& args) {
     run_options.end_time = args.end_time;
     run_options.threads = args.threads;
     run_options.ignore_unsupported = args.ignore_unsupported;
+    run_options.deck = &r.deck;  // OpenRadioss decks: /RUN and /INIVEL
     const auto t_setup = std::chrono::steady_clock::now();
     refsolver::Simulation::Setup setup = refsolver::Simulation::create(r.model, run_options);
     const bool fatal = print_unsupported(setup.unsupported, r, args);
@@ -225,12 +219,12 @@ int run_deck(const RunArgs& args) {
 
 std::function<int()> setup_run(CLI::App& app) {
     auto args = std::make_shared<RunArgs>();
-    app.add_option("deck", args->deck, "LS-DYNA keyword deck")->required();
+    app.add_option("deck", args->deck, "LS-DYNA keyword deck, or OpenRadioss starter deck <run>_0000.rad (its engine deck <run>_0001.rad beside it)")->required();
     app.add_option("--out", args->out, "folder for history.csv (one row per step), particles_NNNNNN.vtp "
                                        "snapshots and particles.pvd, their time series for ParaView (created if missing)");
     app.add_option("--every", args->every, "write a snapshot every N steps (0: only the first and the last)")
         ->capture_default_str();
-    app.add_option("--end-time", args->end_time, "end time, instead of *CONTROL_TERMINATION ENDTIM")
+    app.add_option("--end-time", args->end_time, "end time, instead of *CONTROL_TERMINATION ENDTIM (OpenRadioss: /RUN)")
         ->check(CLI::PositiveNumber);
     app.add_option("--threads", args->threads, "OpenMP threads (0: the OpenMP default)")->check(CLI::NonNegativeNumber);
     app.add_flag("--ignore-unsupported", args->ignore_unsupported,

@@ -120,7 +120,7 @@ int run_verify(const VerifyArgs& args) {
 std::function<int()> setup_verify(CLI::App& app) {
     auto args = std::make_shared<VerifyArgs>();
     app.add_option("cases", args->which, "the cases to run (several may be named)")
-        ->check(CLI::IsMember({"sod", "hydrostatic", "dambreak", "sedov", "noh", "all"}))
+        ->check(CLI::IsMember({"sod", "hydrostatic", "dambreak", "sedov", "noh", "radioss-waves", "all"}))
         ->capture_default_str();
     app.add_flag("--quick", args->quick, "the coarse, short variants (what `make test` runs, well under a minute)");
     app.add_option("--out", args->out, "folder for <case>.md, <case>.svg and summary.md")->capture_default_str();

@@ -3,6 +3,7 @@
 #include "refsolver/setup.hpp"
 
 #include <cmath>
+#include <limits>
 #include <fmt/format.h>
 
 #include "grammar/number_cast.hpp"
@@ -203,15 +204,21 @@ void initial_eos_state(const model::Model& m, const model::Part* part, double& v
 SetupResult build_setup(const model::Model& m, const RunOptions& options) {
     SetupResult result;
     std::vector<Unsupported>& out = result.unsupported;
-    out = unsupported_features(m);
+    const bool radioss = m.radioss.has_value();
+    const model::RadiossRunInput run =
+        radioss && options.deck ? model::read_radioss_run_input(*options.deck) : model::RadiossRunInput{};
+    out = radioss ? radioss_unsupported(m, run) : unsupported_features(m);
     SolverInput in;
     bool runnable = true;
 
     const preproc::Preview preview = preproc::compute_preview(m);
     in.dimension = preview.dimension;
     in.parts.resize(preview.parts.size());
+    std::vector<double> radioss_e0(preview.parts.size(), 0.0);  // /EOS/POLYNOMIAL E0 per part
     for (std::size_t q = 0; q < preview.parts.size(); ++q) {
-        runnable = read_part(m, preview.parts[q].part, in.parts[q], out) && runnable;
+        runnable = (radioss ? read_radioss_part(m, preview.parts[q].part, in.parts[q], radioss_e0[q], out)
+                            : read_part(m, preview.parts[q].part, in.parts[q], out)) &&
+                   runnable;
         if (!(preview.parts[q].h0 > 0)) {
             out.push_back({fmt::format("part {}: no initial smoothing length ({}); give SPHINI on its *SECTION_SPH",
                                        preview.parts[q].part, preview.parts[q].notes),
@@ -229,7 +236,8 @@ SetupResult build_setup(const model::Model& m, const RunOptions& options) {
     // The EOS's V0 and E0 per part, looked up once (not per particle).
     std::vector<std::array<double, 2>> v0_e0(preview.parts.size(), {1.0, 0.0});
     for (std::size_t q = 0; q < preview.parts.size(); ++q)
-        if (!in.parts[q].solid())
+        if (radioss) v0_e0[q] = {1.0, radioss_e0[q]};
+        else if (!in.parts[q].solid())
             initial_eos_state(m, m.part(std::to_string(preview.parts[q].part)), v0_e0[q][0], v0_e0[q][1]);
     std::size_t unlocated = 0, massless = 0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -239,6 +247,8 @@ SetupResult build_setup(const model::Model& m, const RunOptions& options) {
         in.e[i] = pv.density > 0 ? e0 / pv.density : 0.0;  // E0 per reference volume: e = E0 / rho0
         in.h_low[i] = pv.h_min > 0 ? pv.h_min : pv.h0;
         in.h_high[i] = pv.h_max >= in.h_low[i] ? pv.h_max : pv.h0;
+        if (radioss && pv.h_min == 0 && pv.h_max == 0)  // h_1D 0: h follows the volume, unbounded
+            in.h_low[i] = 0, in.h_high[i] = std::numeric_limits<double>::infinity();
         unlocated += !pp.located[i];
         massless += !(in.m[i] > 0);
     }
@@ -255,8 +265,12 @@ SetupResult build_setup(const model::Model& m, const RunOptions& options) {
                        {}, true, true}),
             runnable = false;
 
-    setup_controls(m, options, in, out);
-    setup_initial_velocities(m, in, out);
+    if (radioss) {
+        setup_radioss_controls(m, run, options, in, out);
+    } else {
+        setup_controls(m, options, in, out);
+        setup_initial_velocities(m, in, out);
+    }
     for (const Unsupported& u : out) {
         if (u.blocking) runnable = false;
         if (u.fatal && !options.ignore_unsupported) runnable = false;

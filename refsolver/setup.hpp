@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "model/model.hpp"
+#include "model/radioss_run_input.hpp"
 #include "refsolver/body_load.hpp"
 #include "refsolver/eos.hpp"
 #include "refsolver/simulation.hpp"
@@ -33,6 +34,7 @@ struct SolverInput {
     bool renormalise = false;  // FORM 1
     SmoothingLengthRule h_rule = SmoothingLengthRule::Divergence;
     double q1 = 1.5, q2 = 0.06, tssfac = 0.9;
+    bool radioss_step = false;  // OpenRadioss decks: the engine's particle step (radioss_time_step.hpp)
     double end_time = 0;
     long long end_cycle = 0;  // *CONTROL_TERMINATION ENDCYC, 0: none
     long long ncbs = 1;
@@ -45,6 +47,10 @@ struct SolverInput {
     // Per particle, model order.
     std::vector<double> x, y, z, vx, vy, vz, rho, e, h, m, h_low, h_high;
     std::vector<std::uint32_t> part;
+    // OpenRadioss /SPHBCS kinematic conditions, model order (empty when none): the projector P
+    // (row-major 3x3) applied to each particle's acceleration and initial velocity; 0 for a
+    // TIED node, I - n n^T for a SLIDE one, their product for a node in several groups.
+    std::vector<std::array<double, 9>> kinematic;
 };
 
 struct SetupResult {
@@ -53,6 +59,15 @@ struct SetupResult {
 };
 
 SetupResult build_setup(const model::Model& model, const RunOptions& options);
+
+// OpenRadioss decks (setup_radioss.cpp): what the solver does not honour, one part's property,
+// material and EOS (`e0`: the EOS's E0 per unit initial volume), and the controls, planes,
+// kinematic conditions and /INIVEL.
+std::vector<Unsupported> radioss_unsupported(const model::Model& model, const model::RadiossRunInput& run);
+bool read_radioss_part(const model::Model& model, long long id, PartSetup& ps, double& e0,
+                       std::vector<Unsupported>& out);
+void setup_radioss_controls(const model::Model& model, const model::RadiossRunInput& run, const RunOptions& options,
+                            SolverInput& in, std::vector<Unsupported>& out);
 
 // The keywords and settings of the deck the solver does not honour (unsupported.cpp).
 std::vector<Unsupported> unsupported_features(const model::Model& model);

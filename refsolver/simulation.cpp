@@ -25,6 +25,7 @@
 #include "refsolver/renormalisation.hpp"
 #include "refsolver/setup.hpp"
 #include "refsolver/symmetry_ghosts.hpp"
+#include "refsolver/radioss_time_step.hpp"
 #include "refsolver/time_step.hpp"
 #include "refsolver/verlet_skin.hpp"
 
@@ -83,6 +84,12 @@ struct Simulation::Impl {
     void step();
     void evaluate();  // EOS, lists, corrections, rates at the current (predicted) state
     void update_eos();
+    void apply_kinematic();
+    // TSSFAC times `smallest` (time_step.hpp), or for OpenRadioss decks the engine's particle step.
+    double next_time_step(double smallest) const {
+        if (in.radioss_step) smallest = radioss_particle_time_step(s, list, in.q1, in.q2, rates.threads);
+        return in.tssfac * smallest;
+    }
     void update_interacting();
     void rebuild();
     bool needs_rebuild() const;
@@ -203,6 +210,21 @@ void Simulation::Impl::evaluate() {
     }
     rates.body = body_acceleration(in.loads, time);
     compute_rates(s, list, rates, scratch);
+    if (!in.kinematic.empty()) apply_kinematic();
+}
+
+// OpenRadioss /SPHBCS kinematic conditions (setup.hpp: SolverInput::kinematic): the acceleration
+// projected, so that a velocity that satisfies them at the start keeps satisfying them.
+void Simulation::Impl::apply_kinematic() {
+    const std::size_t n = s.real;
+#pragma omp parallel for schedule(static) num_threads(rates.threads)
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::array<double, 9>& p = in.kinematic[s.model_index[k]];
+        const double ax = s.ax[k], ay = s.ay[k], az = s.az[k];
+        s.ax[k] = p[0] * ax + p[1] * ay + p[2] * az;
+        s.ay[k] = p[3] * ax + p[4] * ay + p[5] * az;
+        s.az[k] = p[6] * ax + p[7] * ay + p[8] * az;
+    }
 }
 
 void Simulation::Impl::initialise() {
@@ -232,7 +254,7 @@ void Simulation::Impl::initialise() {
     s.x_built.assign(n, std::numeric_limits<double>::infinity());
     s.y_built = s.x_built, s.z_built = s.x_built;
     evaluate();
-    dt_next = std::min(stable_time_step(s, in.tssfac, rates.threads), in.end_time - time);
+    dt_next = std::min(next_time_step(stable_time_step(s, 1.0, rates.threads)), in.end_time - time);
     dt = dt_next;
     timings.total += seconds_since(t0);
     check_finite();
@@ -307,7 +329,7 @@ void Simulation::Impl::step() {
     if (s.solid) kick_stress(s, half, false, rates.threads);
     ++steps, ++since_rebuild;
     state_valid = false;
-    dt_next = in.tssfac * smallest;
+    dt_next = next_time_step(smallest);
     timings.total += seconds_since(t0);
     report_non_finite(finite);
 }

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "grammar/raw_deck.hpp"
 #include "grammar/source_map.hpp"
 #include "model/model.hpp"
 
@@ -43,6 +44,9 @@ struct RunOptions {
     bool simd = true;                // the SIMD pair loop where the CPU has one (false: scalar, for comparison)
     bool avx512 = true;              // with simd: false keeps it at AVX2 where AVX-512 runs (for comparison)
     bool rebuild_every_step = false; // rebuild the neighbour lists at every step: the reference the skin test is checked against
+    // The deck's text, which OpenRadioss decks need besides the Model: the engine deck's /RUN end
+    // time and the /INIVEL cards (model/radioss_run_input.hpp). Ignored for LS-DYNA decks.
+    const grammar::RawDeck* deck = nullptr;
 };
 
 // Particle state in model order (structure of arrays).

@@ -26,6 +26,9 @@ namespace sphdeck::refsolver {
 struct SymmetryPlane {
     std::array<double, 3> normal{0, 0, 1};  // unit, into the body
     double offset = 0;                      // O . n
+    // OpenRadioss /SPHBCS/TIED: the ghost's velocity is the source's reversed (no slip) instead of
+    // mirrored (Slide); position, density and stress are mirrored alike.
+    bool tied = false;
 };
 
 // Rebuilds the ghost list: sources, planes mirrored, and the pair-array sizes. `radius`: the

@@ -12,6 +12,8 @@ const std::vector<VerificationCase>& verification_cases() {
          run_dam_break},
         {"sedov", "Sedov-Taylor blast wave against the similarity solution", run_sedov},
         {"noh", "Noh implosion (converging shock) against the exact solution", run_noh},
+        {"radioss-waves", "OpenRadioss QA case WavesCompression against the OpenRadioss engine's listing",
+         run_radioss_waves},
     };
     return cases;
 }

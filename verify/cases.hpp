@@ -19,6 +19,8 @@ CaseResult run_dam_break(const CaseOptions& options);
 CaseResult run_sedov(const CaseOptions& options);
 // Noh implosion (§5): post-shock density and shock radius of a converging shock at two resolutions.
 CaseResult run_noh(const CaseOptions& options);
+// OpenRadioss's QA case WavesCompression (§6): energies and time steps against the engine's listing.
+CaseResult run_radioss_waves(const CaseOptions& options);
 
 struct VerificationCase {
     std::string_view name;  // as typed on the command line

@@ -32,6 +32,7 @@ DeckRun run_deck(const std::filesystem::path& deck, const CaseOptions& options,
         return run;
     }
     RunOptions run_options;
+    run_options.deck = &checked.deck;  // OpenRadioss decks: /RUN and /INIVEL (model/radioss_run_input.hpp)
     run_options.threads = options.threads;
     Simulation::Setup setup = Simulation::create(checked.model, run_options);
     if (!setup.simulation) {
