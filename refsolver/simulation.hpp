@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "grammar/source_map.hpp"
+#include "text/source_map.hpp"
 #include "model/model.hpp"
 
 namespace sphdeck::refsolver {
