@@ -2,6 +2,7 @@
 
 #include "text/apply_edits.hpp"
 #include "text/line_index.hpp"
+#include "text/line_rewrite.hpp"
 #include "grammar/file_paths.hpp"
 
 namespace sphdeck::edit {
@@ -55,7 +56,7 @@ std::vector<diag::TextEdit> line_edits_between(std::string_view original, std::s
         const std::string_view a = original.substr(before.begin(line), before.content_end(line) - before.begin(line));
         const std::string_view b = fixed.substr(after.begin(line), after.content_end(line) - after.begin(line));
         if (a == b) continue;
-        edits.push_back({grammar::Span{0, line, 1, static_cast<std::uint32_t>(a.size() + 1)}, std::string(b)});
+        edits.push_back(text::whole_line_edit(0, line, a.size(), std::string(b)));
     }
     return edits;
 }
