@@ -11,7 +11,7 @@
 #include "cli/check_inputs.hpp"
 #include "cli/commands.hpp"
 #include "cli/deck_input.hpp"
-#include "edit/apply_edits.hpp"
+#include "text/apply_edits.hpp"
 #include "edit/format_deck.hpp"
 #include "edit/unified_diff.hpp"
 #include "engine/check.hpp"
@@ -120,10 +120,10 @@ bool format_one(const CheckInput& input, const FormatArgs& args, Totals& totals)
         else if (args.check)
             fmt::print("would reformat {}\n", file.display_name);
         else if (from_stdin)
-            fmt::print("{}", edit::apply_edits(file.text, edits).text);
+            fmt::print("{}", text::apply_edits(file.text, edits).text);
         else
             write_file(grammar::canonical_path(file.path).string(),  // a link's target: the link stays
-                       edit::apply_edits(file.text, edits).text);
+                       text::apply_edits(file.text, edits).text);
     }
     return any;
 }

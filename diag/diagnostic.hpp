@@ -5,7 +5,8 @@
 #include <string_view>
 #include <vector>
 
-#include "grammar/source_map.hpp"
+#include "text/source_map.hpp"
+#include "text/text_edit.hpp"
 
 namespace sphdeck::diag {
 
@@ -17,30 +18,19 @@ bool parse_severity(std::string_view word, Severity& out);
 
 // A secondary location or remark attached to a diagnostic ("the section is defined here").
 struct Note {
-    grammar::Span span;  // may be invalid: a note without a location
+    text::Span span;  // may be invalid: a note without a location
     std::string message;
 };
 
-// One text replacement: the columns of `span` (one line, end_column exclusive as in every Span) become
-// `replacement`. An empty span (column == end_column) inserts.
-struct TextEdit {
-    grammar::Span span;
-    std::string replacement;
-};
-
-// A mechanical mend carried by a finding. Safe: the solver then reads the values the author evidently
-// meant, with no judgement (a value moved back into its field). Unsafe: a judgement (a did-you-mean name).
-struct Fix {
-    std::string description;  // "realign the line to the fields of *CONTROL_SPH"
-    bool safe = false;
-    std::vector<TextEdit> edits;
-};
+// A fix's edits and the fix itself are text-level (text/text_edit.hpp): diag::Fix names the same type.
+using text::Fix;
+using text::TextEdit;
 
 struct Diagnostic {
     std::string code;  // rule code, e.g. "DK010"
     Severity severity = Severity::Error;
     std::string message;  // short lower-case fragment naming the value found and what was expected
-    grammar::Span span;   // primary location; invalid for deck-wide findings
+    text::Span span;   // primary location; invalid for deck-wide findings
     std::vector<Note> notes;
     std::vector<Fix> fixes = {};  // mends the finding offers, most likely first; empty when none is mechanical
 };

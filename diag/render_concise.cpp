@@ -9,15 +9,15 @@ namespace sphdeck::diag {
 
 namespace detail {
 
-bool has_location(const grammar::Span& span, const grammar::SourceMap& sources) {
+bool has_location(const text::Span& span, const text::SourceMap& sources) {
     return span.valid() && span.file < sources.size();
 }
 
-std::string file_name(const grammar::SourceFile& file) {
+std::string file_name(const text::SourceFile& file) {
     return printable(file.display_name.empty() ? file.path : file.display_name);
 }
 
-std::string location(const grammar::Span& span, const grammar::SourceMap& sources) {
+std::string location(const text::Span& span, const text::SourceMap& sources) {
     return fmt::format("{}:{}:{}", file_name(sources.file(span.file)), span.line, span.column);
 }
 
@@ -32,7 +32,7 @@ std::string printable(std::string_view text) {
 
 }  // namespace detail
 
-std::string render_concise(const Diagnostic& d, const grammar::SourceMap& sources) {
+std::string render_concise(const Diagnostic& d, const text::SourceMap& sources) {
     using namespace detail;
     std::string out;
     auto sink = std::back_inserter(out);

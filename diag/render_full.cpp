@@ -82,7 +82,7 @@ Excerpt render_window(std::string_view line, std::size_t from, std::size_t b0, s
 }
 
 // The excerpt of a line for columns [column, end_column): whole when it fits, else windowed.
-Excerpt make_excerpt(std::string_view line, const grammar::Span& span) {
+Excerpt make_excerpt(std::string_view line, const text::Span& span) {
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     const std::size_t b0 = span.column > 0 ? span.column - 1 : 0;
     const std::size_t b1 = std::max<std::size_t>(span.end_column > 0 ? span.end_column - 1 : 0, b0 + 1);
@@ -115,7 +115,7 @@ constexpr std::string_view bold = "1";
 
 // Builds one diagnostic's frame; `width` is that of the widest line number shown.
 struct Frame {
-    const grammar::SourceMap& sources;
+    const text::SourceMap& sources;
     bool colour;
     std::size_t width;
     std::string out;
@@ -128,7 +128,7 @@ struct Frame {
     }
     void equals_note(std::string_view message) { gutter("=", fmt::format(" {}: {}", paint(bold, "note"), message)); }
 
-    void excerpt(const grammar::Span& span, std::string_view caret_style) {
+    void excerpt(const text::Span& span, std::string_view caret_style) {
         const Excerpt e = make_excerpt(sources.line_text(span.file, span.line), span);
         fmt::format_to(std::back_inserter(out), "{:{}}{} {}\n", "", width, paint(gutter_style, "-->"),
                        detail::location(span, sources));
@@ -137,9 +137,9 @@ struct Frame {
         fmt::format_to(std::back_inserter(out), "{}{}{}\n", number, e.text.empty() ? "" : " ", e.text);
         gutter("|", fmt::format(" {:{}}{}", "", e.caret_start, paint(caret_style, std::string(e.caret_width, '^'))));
     }
-    void include_chain(grammar::FileId id) {
+    void include_chain(text::FileId id) {
         for (std::size_t level = 0; level < sources.size(); ++level) {
-            const grammar::SourceFile& file = sources.file(id);
+            const text::SourceFile& file = sources.file(id);
             if (file.parent >= sources.size()) break;  // also no_file
             equals_note(fmt::format("included from {}:{}", detail::file_name(sources.file(file.parent)),
                                     file.include_line));
@@ -148,7 +148,7 @@ struct Frame {
     }
 };
 
-std::size_t gutter_width(const Diagnostic& d, const grammar::SourceMap& sources) {
+std::size_t gutter_width(const Diagnostic& d, const text::SourceMap& sources) {
     std::uint32_t widest = 0;
     if (detail::has_location(d.span, sources)) widest = d.span.line;
     for (const Note& note : d.notes)
@@ -158,7 +158,7 @@ std::size_t gutter_width(const Diagnostic& d, const grammar::SourceMap& sources)
 
 }  // namespace
 
-std::string render_full(const Diagnostic& d, const grammar::SourceMap& sources, const RenderOptions& options) {
+std::string render_full(const Diagnostic& d, const text::SourceMap& sources, const RenderOptions& options) {
     using detail::printable;
     Frame f{sources, options.colour, gutter_width(d, sources), {}};
     f.out += f.paint(severity_style(d.severity), to_string(d.severity));

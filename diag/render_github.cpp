@@ -38,7 +38,7 @@ std::string escaped(std::string_view text, bool property) {
 std::string github_escape_data(std::string_view text) { return escaped(text, false); }
 std::string github_escape_property(std::string_view text) { return escaped(text, true); }
 
-std::string render_github(const Diagnostic& d, const grammar::SourceMap& sources) {
+std::string render_github(const Diagnostic& d, const text::SourceMap& sources) {
     std::string properties;
     if (detail::has_location(d.span, sources)) {
         properties = fmt::format("file={},line={},col={},endColumn={},",

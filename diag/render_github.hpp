@@ -7,13 +7,13 @@
 #include <string_view>
 
 #include "diag/diagnostic.hpp"
-#include "grammar/source_map.hpp"
+#include "text/source_map.hpp"
 
 namespace sphdeck::diag {
 
 // One line ending in '\n'; notes with a location follow the message as "note: file:line:col: text".
 // Without a location the file, line and column properties are left out.
-std::string render_github(const Diagnostic& d, const grammar::SourceMap& sources);
+std::string render_github(const Diagnostic& d, const text::SourceMap& sources);
 
 // Message text: % -> %25, CR -> %0D, LF -> %0A.
 std::string github_escape_data(std::string_view text);

@@ -11,7 +11,7 @@ namespace {
 using json = nlohmann::ordered_json;  // keeps fields in the documented order
 
 // file/line/column/end_column of a span; file null and zeros when it has no location.
-void put_location(json& out, const grammar::Span& span, const grammar::SourceMap& sources) {
+void put_location(json& out, const text::Span& span, const text::SourceMap& sources) {
     const bool located = detail::has_location(span, sources);
     out["file"] = located ? json(detail::file_name(sources.file(span.file))) : json(nullptr);
     out["line"] = located ? span.line : 0;
@@ -20,10 +20,10 @@ void put_location(json& out, const grammar::Span& span, const grammar::SourceMap
 }
 
 // The files that include the finding's file, main deck first, each with the line naming the next file.
-json include_chain(const grammar::Span& span, const grammar::SourceMap& sources) {
+json include_chain(const text::Span& span, const text::SourceMap& sources) {
     json chain = json::array();
     if (!detail::has_location(span, sources)) return chain;
-    const std::vector<grammar::FileId> files = sources.include_chain(span.file);
+    const std::vector<text::FileId> files = sources.include_chain(span.file);
     for (std::size_t i = 0; i + 1 < files.size(); ++i)
         chain.push_back({{"file", detail::file_name(sources.file(files[i]))},
                          {"line", sources.file(files[i + 1]).include_line}});
@@ -32,7 +32,7 @@ json include_chain(const grammar::Span& span, const grammar::SourceMap& sources)
 
 // The finding's mends: each edit replaces the columns [column, end_column) of one line (equal
 // columns insert), as TextEdit says.
-json fixes_of(const Diagnostic& d, const grammar::SourceMap& sources) {
+json fixes_of(const Diagnostic& d, const text::SourceMap& sources) {
     json fixes = json::array();
     for (const Fix& fix : d.fixes) {
         json edits = json::array();
@@ -53,7 +53,7 @@ class JsonReport final : public Report {
 public:
     explicit JsonReport(const RuleCatalog& rules) : rules_(rules) {}
 
-    void add(const grammar::SourceMap& sources, const std::vector<Diagnostic>& diagnostics) override {
+    void add(const text::SourceMap& sources, const std::vector<Diagnostic>& diagnostics) override {
         for (const Diagnostic& d : diagnostics) {
             const RuleMeta* rule = rules_.find(d.code);
             json item = {{"code", d.code},

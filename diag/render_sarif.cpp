@@ -46,7 +46,7 @@ json rule_descriptor(const RuleMeta& rule) {
             {"defaultConfiguration", {{"level", level(rule.severity)}}}};
 }
 
-json artifact_location(const grammar::SourceFile& file) {
+json artifact_location(const text::SourceFile& file) {
     bool relative = false;
     json artifact = {{"uri", sarif_uri(file, relative)}};
     if (relative) artifact["uriBaseId"] = kSrcRoot;
@@ -55,7 +55,7 @@ json artifact_location(const grammar::SourceFile& file) {
 
 // Deck-wide findings have no span: they point at the first line of the main deck, because code
 // scanning drops results without a location.
-json physical_location(const grammar::Span& span, const grammar::SourceMap& sources) {
+json physical_location(const text::Span& span, const text::SourceMap& sources) {
     const bool located = detail::has_location(span, sources);
     const json artifact = artifact_location(sources.file(located ? span.file : 0));
     json region = {{"startLine", located ? span.line : 1}};
@@ -68,11 +68,11 @@ json physical_location(const grammar::Span& span, const grammar::SourceMap& sour
 
 // SARIF fixes (§3.55): one artifactChange per file, each edit a replacement of a one-line region
 // (a zero-length region inserts). Edits without a location cannot be expressed and are left out.
-json fixes_of(const Diagnostic& d, const grammar::SourceMap& sources) {
+json fixes_of(const Diagnostic& d, const text::SourceMap& sources) {
     json fixes = json::array();
     for (const Fix& fix : d.fixes) {
         json changes = json::array();
-        std::vector<grammar::FileId> files;
+        std::vector<text::FileId> files;
         for (const TextEdit& edit : fix.edits) {
             if (!detail::has_location(edit.span, sources)) continue;
             json replacement = {
@@ -100,7 +100,7 @@ class SarifReport final : public Report {
 public:
     explicit SarifReport(const RuleCatalog& rules) : rules_(rules) {}
 
-    void add(const grammar::SourceMap& sources, const std::vector<Diagnostic>& diagnostics) override {
+    void add(const text::SourceMap& sources, const std::vector<Diagnostic>& diagnostics) override {
         for (const Diagnostic& d : diagnostics) {
             std::string text = d.message;
             json related = json::array();
@@ -156,7 +156,7 @@ private:
 
 }  // namespace
 
-std::string sarif_uri(const grammar::SourceFile& file, bool& relative) {
+std::string sarif_uri(const text::SourceFile& file, bool& relative) {
     const std::string path = tool_path(file);
     relative = !path.starts_with('/');
     return relative ? percent_encoded(path) : "file://" + percent_encoded(path);

@@ -15,6 +15,6 @@ std::unique_ptr<Report> make_sarif_report(const RuleCatalog& rules);
 
 // A file's artifactLocation.uri: percent-encoded, relative to the working directory (uriBaseId
 // %SRCROOT%) when the file lies below it, else an absolute file:// URI.
-std::string sarif_uri(const grammar::SourceFile& file, bool& relative);
+std::string sarif_uri(const text::SourceFile& file, bool& relative);
 
 }  // namespace sphdeck::diag

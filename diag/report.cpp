@@ -5,7 +5,7 @@
 
 namespace sphdeck::diag {
 
-std::string tool_path(const grammar::SourceFile& file) {
+std::string tool_path(const text::SourceFile& file) {
     namespace fs = std::filesystem;
     std::error_code ec;
     fs::path absolute = fs::absolute(fs::path(file.path), ec).lexically_normal();

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "diag/diagnostic.hpp"
-#include "grammar/source_map.hpp"
+#include "text/source_map.hpp"
 
 namespace sphdeck::diag {
 
@@ -23,13 +23,13 @@ class Report {
 public:
     virtual ~Report() = default;
     // Adds one deck's findings; the spans point into `sources`, which need not outlive the call.
-    virtual void add(const grammar::SourceMap& sources, const std::vector<Diagnostic>& diagnostics) = 0;
+    virtual void add(const text::SourceMap& sources, const std::vector<Diagnostic>& diagnostics) = 0;
     // The whole document, ending in a newline.
     virtual std::string finish(const RunSummary& summary) const = 0;
 };
 
 // A file's path for tools that open it: relative to the working directory when the file lies
 // below it, else absolute; '/' separators. In-memory decks keep their name.
-std::string tool_path(const grammar::SourceFile& file);
+std::string tool_path(const text::SourceFile& file);
 
 }  // namespace sphdeck::diag

@@ -7,7 +7,7 @@
 namespace sphdeck::edit {
 namespace {
 
-// An edit's bytes on its line, with columns clamped to the line as edit::place_edits clamps them.
+// An edit's bytes on its line, with columns clamped to the line as text::place_edits clamps them.
 struct Placed {
     std::uint32_t line = 0;
     std::size_t begin = 0, end = 0;  // 0-based, within the line's content

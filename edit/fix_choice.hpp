@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "diag/diagnostic.hpp"
-#include "grammar/source_map.hpp"
+#include "text/source_map.hpp"
 
 namespace sphdeck::edit {
 

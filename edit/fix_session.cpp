@@ -1,7 +1,8 @@
 #include "edit/fix_session.hpp"
 
-#include "edit/apply_edits.hpp"
-#include "edit/line_index.hpp"
+#include "text/apply_edits.hpp"
+#include "text/line_index.hpp"
+#include "text/line_rewrite.hpp"
 #include "grammar/file_paths.hpp"
 
 namespace sphdeck::edit {
@@ -28,7 +29,7 @@ FixOutcome fix_deck(const std::string& path, engine::Documents& documents, const
             const grammar::SourceFile* file = file_of(result.deck.sources, key);
             if (!file) continue;
             const std::string_view current = file->text.view();
-            AppliedEdits applied = apply_edits(current, edits);
+            text::AppliedEdits applied = text::apply_edits(current, edits);
             if (applied.text == current) continue;
             auto [at, first_change] = file_index.try_emplace(key, out.files.size());
             if (first_change) out.files.push_back({file->path, std::string(current), {}});
@@ -49,13 +50,13 @@ FixOutcome fix_deck(const std::string& path, engine::Documents& documents, const
 
 std::vector<diag::TextEdit> line_edits_between(std::string_view original, std::string_view fixed) {
     std::vector<diag::TextEdit> edits;
-    const LineIndex before(original), after(fixed);
+    const text::LineIndex before(original), after(fixed);
     if (before.count() != after.count()) return edits;
     for (std::uint32_t line = 1; line <= before.count(); ++line) {
         const std::string_view a = original.substr(before.begin(line), before.content_end(line) - before.begin(line));
         const std::string_view b = fixed.substr(after.begin(line), after.content_end(line) - after.begin(line));
         if (a == b) continue;
-        edits.push_back({grammar::Span{0, line, 1, static_cast<std::uint32_t>(a.size() + 1)}, std::string(b)});
+        edits.push_back(text::whole_line_edit(0, line, a.size(), std::string(b)));
     }
     return edits;
 }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "text/line_rewrite.hpp"
+
 namespace sphdeck::edit {
 namespace {
 
@@ -34,13 +36,7 @@ bool right_aligned(CellKind kind, std::string_view value) {
 
 // Writes `value` into `out` in the field `f`: right-aligned, or from the field's first column.
 void place(std::string& out, const FixedField& f, std::string_view value, bool right) {
-    if (out.size() < f.start) out.append(f.start - out.size(), ' ');
-    if (right && value.size() < f.width) out.append(f.width - value.size(), ' ');
-    out.append(value);
-}
-
-void trim_end(std::string& out) {
-    while (!out.empty() && blank(out.back())) out.pop_back();
+    text::write_in_field(out, f.start, f.width, value, right ? text::Align::Right : text::Align::Left);
 }
 
 LineLayout doubt(std::string_view why) { return {LineVerdict::Doubt, why}; }
@@ -86,7 +82,7 @@ LineLayout layout_fixed_line(std::string_view text, std::span<const FixedField> 
             place(out, slots[i], cell, false);  // text keeps its own blanks
         else
             place(out, slots[i], value, true);
-        trim_end(out);
+        text::trim_trailing_blanks(out);
     }
     return {out == text ? LineVerdict::Same : LineVerdict::Changed, {}};
 }
@@ -130,7 +126,7 @@ LineLayout free_to_fixed(std::string_view text, std::span<const FixedField> slot
             return doubt("a value that is not one number");
         place(out, slots[i], value, right_aligned(kinds[i], value));
     }
-    trim_end(out);
+    text::trim_trailing_blanks(out);
     return {LineVerdict::Changed, {}};
 }
 

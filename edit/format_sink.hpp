@@ -14,6 +14,7 @@
 #include "edit/format_deck.hpp"
 #include "edit/format_line.hpp"
 #include "grammar/raw_deck.hpp"
+#include "text/line_rewrite.hpp"
 
 namespace sphdeck::edit::detail {
 
@@ -47,7 +48,7 @@ struct LineChanges {
 
     void change(grammar::FileId file, std::uint32_t line, std::string_view old_text, std::string text,
                 FormatChange kind) {
-        changes.push_back({grammar::Span{file, line, 1, static_cast<std::uint32_t>(old_text.size()) + 1}, std::move(text)});
+        changes.push_back(text::whole_line_edit(file, line, old_text.size(), std::move(text)));
         ++counts[static_cast<std::size_t>(kind)];
     }
     void keep(grammar::FileId file, std::uint32_t line, std::string_view why) {

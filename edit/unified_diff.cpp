@@ -4,8 +4,8 @@
 
 #include <algorithm>
 
-#include "edit/apply_edits.hpp"
-#include "edit/line_index.hpp"
+#include "text/apply_edits.hpp"
+#include "text/line_index.hpp"
 
 namespace sphdeck::edit {
 namespace {
@@ -18,7 +18,7 @@ struct ChangedLine {
     std::string new_text;
 };
 
-std::vector<ChangedLine> changed_lines(std::string_view text, const LineIndex& lines, const PlacedEdits& placed) {
+std::vector<ChangedLine> changed_lines(std::string_view text, const text::LineIndex& lines, const text::PlacedEdits& placed) {
     std::vector<ChangedLine> changed;
     for (std::size_t i = 0; i < placed.edits.size();) {
         const std::uint32_t line = placed.edits[i].line;
@@ -90,8 +90,8 @@ void append_changes(std::vector<Change>& changes, std::uint32_t line, std::strin
 }  // namespace
 
 std::string unified_diff(std::string_view path, std::string_view text, const std::vector<diag::TextEdit>& edits) {
-    const LineIndex lines(text);
-    const auto changed = changed_lines(text, lines, place_edits(text, edits));
+    const text::LineIndex lines(text);
+    const auto changed = changed_lines(text, lines, text::place_edits(text, edits));
     if (changed.empty()) return {};
     const auto old_line = [&](std::uint32_t line) {
         return text.substr(lines.begin(line), lines.end(line) - lines.begin(line));

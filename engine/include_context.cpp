@@ -10,7 +10,7 @@
 #include "grammar/file_cache.hpp"
 #include "grammar/file_overlay.hpp"
 #include "grammar/file_paths.hpp"
-#include "grammar/source_text.hpp"
+#include "text/source_text.hpp"
 
 namespace sphdeck::engine {
 namespace fs = std::filesystem;

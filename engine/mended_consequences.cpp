@@ -6,7 +6,7 @@
 #include <string>
 #include <tuple>
 
-#include "edit/apply_edits.hpp"
+#include "text/apply_edits.hpp"
 #include "model/shift_diagnosis.hpp"
 
 namespace sphdeck::engine {
@@ -39,7 +39,7 @@ grammar::FileOverlay mended_files(const grammar::RawDeck& deck, const diag::Fix&
         if (e.span.valid()) by_file[e.span.file].push_back(e);
     for (const auto& [file, edits] : by_file) {
         const grammar::SourceFile& source = deck.sources.file(file);
-        mended.set(source.path, edit::apply_edits(std::string_view(source.text), edits).text);
+        mended.set(source.path, text::apply_edits(std::string_view(source.text), edits).text);
     }
     return mended;
 }

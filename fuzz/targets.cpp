@@ -9,7 +9,7 @@
 #include "diag/render_github.hpp"
 #include "diag/render_json.hpp"
 #include "diag/render_text.hpp"
-#include "edit/apply_edits.hpp"
+#include "text/apply_edits.hpp"
 #include "edit/format_deck.hpp"
 #include "engine/check.hpp"
 #include "engine/deck_diff.hpp"
@@ -121,7 +121,7 @@ void format_dyna_deck(const std::uint8_t* data, std::size_t size) {
         std::vector<diag::TextEdit> own;
         for (const diag::TextEdit& e : f.edits)
             if (e.span.file == 0) own.push_back(e);
-        return edit::apply_edits(original, own).text;
+        return text::apply_edits(original, own).text;
     };
     engine::CheckResult before;
     try {

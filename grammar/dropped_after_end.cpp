@@ -66,7 +66,7 @@ std::optional<diag::Diagnostic> DroppedAfterEnd::finding(std::string_view end_wo
                            (count_ == 1 ? "" : "s") + ": " + where + "; " + (count_ == 1 ? "it is" : "they are") +
                            " never read (" + kinds + ")",
                        end_, {}};
-    constexpr std::uint32_t whole_line = 1u << 30;  // clamped to the line's end (edit/apply_edits.hpp)
+    constexpr std::uint32_t whole_line = 1u << 30;  // clamped to the line's end (text/apply_edits.hpp)
     // Judgement: the blocks after it may be meant to be dropped (a deck kept for reference).
     d.fixes.push_back({"comment out the " + std::string(end_word) + " line, so that the blocks after it are read", false,
                        {{Span{end_.file, end_.line, 1, whole_line}, std::string(dyna ? "$ " : "# ") + std::string(end_word)}}});

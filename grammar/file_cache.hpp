@@ -18,7 +18,7 @@
 
 #include "diag/diagnostic.hpp"
 #include "grammar/raw_deck.hpp"
-#include "grammar/source_text.hpp"
+#include "text/source_text.hpp"
 
 namespace sphdeck::grammar {
 

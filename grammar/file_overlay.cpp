@@ -3,7 +3,7 @@
 #include <system_error>
 
 #include "grammar/file_paths.hpp"
-#include "grammar/text_file.hpp"
+#include "text/text_file.hpp"
 
 namespace sphdeck::grammar {
 namespace fs = std::filesystem;
@@ -42,7 +42,7 @@ bool file_exists(const fs::path& path, const FileOverlay* overlay) {
 
 std::string read_file_text(const std::string& path, const FileOverlay* overlay) {
     if (const std::string* text = overlay ? overlay->find(path) : nullptr) return *text;
-    return read_text_file(path);
+    return text::read_text_file(path);
 }
 
 SourceText read_source_text(const std::string& path, const FileOverlay* overlay) {
@@ -52,7 +52,7 @@ SourceText read_source_text(const std::string& path, const FileOverlay* overlay)
 
 std::string read_file_prefix(const std::string& path, std::size_t bytes, const FileOverlay* overlay) {
     if (const std::string* text = overlay ? overlay->find(path) : nullptr) return text->substr(0, bytes);
-    return read_text_prefix(path, bytes);
+    return text::read_text_prefix(path, bytes);
 }
 
 }  // namespace sphdeck::grammar

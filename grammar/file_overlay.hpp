@@ -8,7 +8,7 @@
 #include <memory>
 #include <string>
 
-#include "grammar/source_text.hpp"
+#include "text/source_text.hpp"
 
 namespace sphdeck::grammar {
 
@@ -36,11 +36,11 @@ private:
 };
 
 // The file access the readers use: the overlay's text when it holds the path, else the disk's.
-// `overlay` may be null (disk only). read_file_text throws like read_text_file (grammar/text_file.hpp).
+// `overlay` may be null (disk only). read_file_text throws like read_text_file (text/text_file.hpp).
 bool is_regular_file(const std::filesystem::path& path, const FileOverlay* overlay);
 bool file_exists(const std::filesystem::path& path, const FileOverlay* overlay);
 std::string read_file_text(const std::string& path, const FileOverlay* overlay);
-// The same as a SourceText: a big file on disk is mapped, not copied (grammar/source_text.hpp).
+// The same as a SourceText: a big file on disk is mapped, not copied (text/source_text.hpp).
 SourceText read_source_text(const std::string& path, const FileOverlay* overlay);
 std::string read_file_prefix(const std::string& path, std::size_t bytes, const FileOverlay* overlay);
 

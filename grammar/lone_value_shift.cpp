@@ -6,6 +6,7 @@
 #include "grammar/line_tokens.hpp"
 #include "grammar/shifted_line.hpp"
 #include "grammar/value.hpp"
+#include "text/line_rewrite.hpp"
 
 namespace sphdeck::grammar {
 namespace {
@@ -91,9 +92,7 @@ std::optional<LoneShift> find_lone_shift(std::string_view text, std::span<const 
                           std::nullopt};
     }
     if (found && tokens.front().begin >= static_cast<std::size_t>(found->columns)) {
-        std::string moved(text.substr(static_cast<std::size_t>(found->columns)));
-        while (!moved.empty() && moved.back() == ' ') moved.pop_back();
-        found->realigned = std::move(moved);
+        found->realigned = text::shift_line(text, found->columns);
     }
     return found;
 }

@@ -25,7 +25,7 @@ DeckFormat format_of(const RawDeck& deck);
 
 // Reads `path` with the reader its content asks for. Throws std::runtime_error with a plain
 // message when the main file cannot be read or is not a deck: a directory, an empty or binary
-// file, text without a single keyword line (grammar/text_file.hpp).
+// file, text without a single keyword line (text/text_file.hpp).
 RawDeck read_deck(const std::string& path, const dyna::ReaderOptions& options = {},
                   std::optional<DeckFormat> format = std::nullopt);
 

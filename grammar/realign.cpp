@@ -4,6 +4,7 @@
 
 #include "grammar/fields.hpp"
 #include "grammar/line_tokens.hpp"
+#include "text/line_rewrite.hpp"
 
 namespace sphdeck::grammar {
 using keywords::FieldType;
@@ -45,10 +46,12 @@ std::optional<std::string> realign_card(std::string_view text, const keywords::C
         const auto& slot = slots[t.slot];
         const std::size_t length = t.end - t.begin;
         const bool inside = t.begin >= slot.start && t.end <= slot.start + slot.width;
-        std::size_t at = t.begin;
-        if (!inside) at = card.fields[t.slot].type == FieldType::Text ? slot.start : slot.start + slot.width - length;
-        if (out.size() < at + length) out.resize(at + length, ' ');
-        out.replace(at, length, text.substr(t.begin, length));
+        const std::string_view value = text.substr(t.begin, length);
+        if (inside)
+            text::write_in_field(out, t.begin, length, value, text::Align::Left);  // stays where written
+        else
+            text::write_in_field(out, slot.start, slot.width, value,
+                                 card.fields[t.slot].type == FieldType::Text ? text::Align::Left : text::Align::Right);
     }
     return out;
 }

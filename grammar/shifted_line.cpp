@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "grammar/value.hpp"
+#include "text/line_rewrite.hpp"
 
 namespace sphdeck::grammar {
 namespace {
@@ -58,13 +59,6 @@ bool same_reading(std::string_view a, std::string_view b, std::span<const FixedF
     const std::size_t end = slots.empty() ? 0 : slot_end(slots.back());
     return trim_blanks(a.size() > end ? a.substr(end) : std::string_view{}) ==
            trim_blanks(b.size() > end ? b.substr(end) : std::string_view{});
-}
-
-std::string shifted(std::string_view text, int columns) {
-    std::string out = columns > 0 ? std::string(text.substr(static_cast<std::size_t>(columns)))
-                                  : std::string(static_cast<std::size_t>(-columns), ' ') + std::string(text);
-    while (!out.empty() && out.back() == ' ') out.pop_back();
-    return out;
 }
 
 bool same_slots(std::span<const FixedField> a, std::span<const FixedField> b) {
@@ -163,7 +157,7 @@ std::optional<LineShift> find_shift(std::string_view text, std::string_view head
         const bool straddles_say = !clean && aligned(tokens, slots, n, false);
         if (!header_says && !straddles_say) continue;
         if (found) return std::nullopt;  // two readings: not certain
-        found = LineShift{n, false, header_says, shifted(text, n)};
+        found = LineShift{n, false, header_says, text::shift_line(text, n)};
     }
     if (found) found->changes_reading = !same_reading(text, found->realigned, slots);
     return found;
@@ -204,7 +198,7 @@ std::optional<Straddle> find_straddle(std::string_view text, std::span<const Fix
         if (place_tokens(text, moved, slots, types, n) &&
             std::equal(moved.begin(), moved.end(), tokens.begin(),
                        [](const LineToken& a, const LineToken& b) { return a.slot == b.slot; }))
-            found->realigned = shifted(text, n);
+            found->realigned = text::shift_line(text, n);
     }
     return found;
 }
@@ -252,9 +246,8 @@ std::optional<std::string> rewrite_fields(std::string_view text, std::span<const
         const std::size_t length = t.end - t.begin;
         const FixedField& slot = to[t.slot];
         if (length > slot.width) return std::nullopt;
-        const std::size_t at = card.fields[t.slot].type == FieldType::Text ? slot.start : slot_end(slot) - length;
-        if (out.size() < at + length) out.resize(at + length, ' ');
-        out.replace(at, length, text.substr(t.begin, length));
+        text::write_in_field(out, slot.start, slot.width, text.substr(t.begin, length),
+                             card.fields[t.slot].type == FieldType::Text ? text::Align::Left : text::Align::Right);
     }
     return out;
 }

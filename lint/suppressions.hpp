@@ -21,7 +21,7 @@
 
 #include "diag/diagnostic.hpp"
 #include "grammar/read_deck.hpp"  // DeckFormat
-#include "grammar/source_map.hpp"
+#include "text/source_map.hpp"
 
 namespace sphdeck::lint {
 

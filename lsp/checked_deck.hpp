@@ -8,7 +8,7 @@
 #include <string>
 
 #include "engine/check.hpp"
-#include "grammar/source_map.hpp"
+#include "text/source_map.hpp"
 
 namespace sphdeck::lsp {
 

@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "grammar/source_map.hpp"
+#include "text/source_map.hpp"
 #include "lsp/checked_deck.hpp"
 #include "lsp/text_position.hpp"
 

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "grammar/source_map.hpp"
+#include "text/source_map.hpp"
 
 namespace sphdeck::lsp {
 

@@ -1,6 +1,6 @@
 // format_deck: the deck in its canonical column layout (`sphdeck format`), as text and as a diff;
 // nothing is written. Lines whose layout is in doubt are left as written.
-#include "edit/apply_edits.hpp"
+#include "text/apply_edits.hpp"
 #include "edit/format_deck.hpp"
 #include "edit/unified_diff.hpp"
 #include "mcp/deck_input.hpp"

@@ -13,6 +13,7 @@
 #include "grammar/shifted_line.hpp"
 #include "grammar/value.hpp"
 #include "model/decimal_comma.hpp"
+#include "text/line_rewrite.hpp"
 
 namespace sphdeck::model {
 
@@ -200,9 +201,8 @@ void CardDecoder::offer_realign(const keywords::CardSpec& card, grammar::CardFor
         if ((d.code != "DK002" && d.code != "DK003") || d.span.line != line.line || d.span.file != line.file) continue;
         if (!realigned) realigned = grammar::realign_card(line_text_, card, format);
         if (!*realigned) return;
-        const auto length = static_cast<std::uint32_t>(line_text_.size());
         d.fixes.push_back({"move the values of the line into their fields", true,
-                           {{grammar::Span{line.file, line.line, 1, length + 1}, **realigned}}});
+                           {text::whole_line_edit(line.file, line.line, line_text_.size(), **realigned)}});
     }
 }
 

@@ -333,7 +333,7 @@ private:
     }
 
     // The text of lines [from, to) of one block is decoded: a mapped file's pages go back, so that
-    // decoding keeps the model, not the deck, resident (grammar/source_text.hpp).
+    // decoding keeps the model, not the deck, resident (text/source_text.hpp).
     static constexpr std::size_t release_lines = 65536;
     // Lines between two trims of the findings past the flood bound (model/flood_guard.hpp): the
     // findings of a block of broken lines never grow far past the bound while it is walked.

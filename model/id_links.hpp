@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "grammar/raw_deck.hpp"
-#include "grammar/source_map.hpp"
+#include "text/source_map.hpp"
 #include "model/card_decoder.hpp"
 
 namespace sphdeck::model {

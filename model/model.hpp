@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "grammar/keywords/schema.hpp"
-#include "grammar/source_map.hpp"
+#include "text/source_map.hpp"
 #include "model/id_links.hpp"
 #include "model/radioss_facts.hpp"
 #include "model/settings.hpp"

@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-#include "grammar/source_map.hpp"
+#include "text/source_map.hpp"
 
 namespace sphdeck::model {
 

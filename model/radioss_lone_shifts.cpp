@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "text/line_rewrite.hpp"
+
 namespace sphdeck::model {
 
 using grammar::radioss::Cell;
@@ -64,8 +66,8 @@ void RadiossLoneShifts::report(std::vector<diag::Diagnostic>& out) const {
             d.fixes.push_back(diag::Fix{fmt::format("move the values {} column{} left into their cells", n,
                                                     n == 1 ? "" : "s"),
                                         false,
-                                        {diag::TextEdit{grammar::Span{c.span.file, c.span.line, 1, c.line_end},
-                                                        *c.shift.realigned}}});
+                                        {text::whole_line_edit(c.span.file, c.span.line, c.line_end - 1,
+                                                               *c.shift.realigned)}});
         out.push_back(std::move(d));
     }
 }

@@ -12,6 +12,7 @@
 #include "grammar/value.hpp"
 #include "model/radioss_lone_shifts.hpp"
 #include "model/shift_diagnosis.hpp"
+#include "text/line_rewrite.hpp"
 
 namespace sphdeck::model {
 namespace {
@@ -193,10 +194,7 @@ void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
         if (n > 0 && text.substr(0, static_cast<std::size_t>(n)).find_first_not_of(' ') != std::string_view::npos)
             shift.reset();
         else {
-            std::string moved = n > 0 ? std::string(text.substr(static_cast<std::size_t>(n)))
-                                      : std::string(static_cast<std::size_t>(-n), ' ') + std::string(text);
-            while (!moved.empty() && moved.back() == ' ') moved.pop_back();
-            shift->realigned = std::move(moved);
+            shift->realigned = text::shift_line(text, n);
         }
     }
     // On the header's word alone, only a shift that changes what is read: a value written a few columns
@@ -216,9 +214,8 @@ void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
         d.fixes.push_back(diag::Fix{fmt::format("move the values {} column{} {} into their cells", n,
                                                 n == 1 ? "" : "s", shift->columns > 0 ? "left" : "right"),
                                     true,
-                                    {diag::TextEdit{grammar::Span{line.file, line.line, 1,
-                                                                  static_cast<std::uint32_t>(text.size() + 1)},
-                                                    std::move(shift->realigned)}}});
+                                    {text::whole_line_edit(line.file, line.line, text.size(),
+                                                           std::move(shift->realigned))}});
         const bool explains = d.severity == diag::Severity::Error;  // a shift that changes no value explains nothing
         fold_and_add(out, from, std::move(d), [&](const diag::Diagnostic&) { return explains; });
         return;

@@ -9,6 +9,7 @@
 
 #include "grammar/fields.hpp"
 #include "grammar/shifted_line.hpp"
+#include "text/line_rewrite.hpp"
 
 namespace sphdeck::model {
 namespace {
@@ -28,8 +29,7 @@ grammar::Span line_span(const grammar::RawDeck& deck, const grammar::CardLine& l
 }
 
 diag::TextEdit whole_line_edit(const grammar::RawDeck& deck, const grammar::CardLine& line, std::string text) {
-    const auto length = static_cast<std::uint32_t>(deck.text(line).size());
-    return diag::TextEdit{grammar::Span{line.file, line.line, 1, length + 1}, std::move(text)};
+    return text::whole_line_edit(line.file, line.line, deck.text(line).size(), std::move(text));
 }
 
 std::string card_name(const keywords::CardSpec& card) {

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "grammar/raw_deck.hpp"
-#include "grammar/source_map.hpp"
+#include "text/source_map.hpp"
 #include "model/model.hpp"
 
 namespace sphdeck::refsolver {

@@ -9,7 +9,7 @@
 #include <memory>
 #include <string>
 
-#include "edit/apply_edits.hpp"
+#include "text/apply_edits.hpp"
 #include "edit/unified_diff.hpp"
 
 using namespace sphdeck;
@@ -47,7 +47,7 @@ std::string diff_u(const std::string& before, const std::string& after) {
 
 TEST_CASE("edit: edits apply by line and column, clamped to the line, keeping line breaks") {
     const std::string text = "*KEYWORD\n  1.0  2\r\nlast";
-    const auto result = edit::apply_edits(text, {edit_at(2, 1, 99, "1.0       2"), edit_at(3, 5, 5, "!"),
+    const auto result = text::apply_edits(text, {edit_at(2, 1, 99, "1.0       2"), edit_at(3, 5, 5, "!"),
                                                  edit_at(1, 1, 2, "$")});
     CHECK(result.text == "$KEYWORD\n1.0       2\r\nlast!");
     CHECK(result.applied == 3);
@@ -56,7 +56,7 @@ TEST_CASE("edit: edits apply by line and column, clamped to the line, keeping li
 
 TEST_CASE("edit: an edit overlapping one taken before it is skipped, touching ones are not") {
     const std::string text = "abcdefghij\n";
-    const auto result = edit::apply_edits(text, {edit_at(1, 3, 6, "X"), edit_at(1, 5, 8, "Y"), edit_at(1, 6, 7, "Z"),
+    const auto result = text::apply_edits(text, {edit_at(1, 3, 6, "X"), edit_at(1, 5, 8, "Y"), edit_at(1, 6, 7, "Z"),
                                                  edit_at(1, 1, 1, "<")});
     CHECK(result.text == "<abXZghij\n");
     CHECK(result.applied == 3);
@@ -64,7 +64,7 @@ TEST_CASE("edit: an edit overlapping one taken before it is skipped, touching on
 }
 
 TEST_CASE("edit: edits on lines that do not exist or with reversed columns are skipped") {
-    const auto result = edit::apply_edits("a\nb\n", {edit_at(0, 1, 2, "x"), edit_at(4, 1, 2, "x"), edit_at(1, 3, 2, "x")});
+    const auto result = text::apply_edits("a\nb\n", {edit_at(0, 1, 2, "x"), edit_at(4, 1, 2, "x"), edit_at(1, 3, 2, "x")});
     CHECK(result.text == "a\nb\n");
     CHECK(result.skipped == 3);
 }
@@ -75,14 +75,14 @@ TEST_CASE("edit: the unified diff equals diff -u's, hunks merged and split as di
     const std::vector<diag::TextEdit> edits{edit_at(2, 1, 5, "LINE"), edit_at(8, 6, 7, "eight"),
                                             edit_at(9, 1, 1, "$# a header\n"), edit_at(30, 1, 99, ""),
                                             edit_at(40, 6, 8, "forty")};
-    const auto after = edit::apply_edits(text, edits).text;
+    const auto after = text::apply_edits(text, edits).text;
     CHECK(edit::unified_diff("deck.k", text, edits) == diff_u(text, after));
 }
 
 TEST_CASE("edit: a last line without a line break is marked as diff marks it") {
     const std::string text = "one\ntwo\nthree";
     const std::vector<diag::TextEdit> edits{edit_at(3, 1, 6, "THREE")};
-    CHECK(edit::unified_diff("deck.k", text, edits) == diff_u(text, edit::apply_edits(text, edits).text));
+    CHECK(edit::unified_diff("deck.k", text, edits) == diff_u(text, text::apply_edits(text, edits).text));
 }
 
 TEST_CASE("edit: an absolute path is named as git names it, without a doubled slash") {
@@ -117,6 +117,6 @@ TEST_CASE("edit: random edits give the diff diff -u gives") {
             }
         }
         CAPTURE(trial);
-        CHECK(edit::unified_diff("deck.k", text, edits) == diff_u(text, edit::apply_edits(text, edits).text));
+        CHECK(edit::unified_diff("deck.k", text, edits) == diff_u(text, text::apply_edits(text, edits).text));
     }
 }

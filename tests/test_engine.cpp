@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "engine/check.hpp"
-#include "grammar/text_file.hpp"
+#include "text/text_file.hpp"
 #include "test_support.hpp"
 
 using namespace sphdeck;
@@ -41,17 +41,17 @@ TEST_CASE("engine: a deck given as an in-memory document gives the findings it g
     REQUIRE(count_code(disk.diagnostics, "REF002") == 3);
 
     engine::Documents documents;
-    documents.set(kDeck, grammar::read_text_file(kDeck));
+    documents.set(kDeck, text::read_text_file(kDeck));
     CHECK(findings(engine::check_deck(kDeck, documents)) == findings(disk));
     CHECK(findings(engine::check_deck(kDeck, engine::Documents{})) == findings(disk));
 }
 
 TEST_CASE("engine: an include held in memory is read instead of the file, as if it were saved") {
     // The include as an editor holds it: node 1 defined a second time (REF006).
-    const std::string edited = grammar::read_text_file(kInclude) + "*NODE\n       1\n";
+    const std::string edited = text::read_text_file(kInclude) + "*NODE\n       1\n";
     test::TempDir saved;
     saved.write("include/ref_lattice.inc", edited);
-    const engine::CheckResult on_disk = engine::check_file(saved.write("REF002_fires.k", grammar::read_text_file(kDeck)));
+    const engine::CheckResult on_disk = engine::check_file(saved.write("REF002_fires.k", text::read_text_file(kDeck)));
     REQUIRE(count_code(on_disk.diagnostics, "REF006") == 1);
 
     engine::Documents documents;

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "edit/apply_edits.hpp"
+#include "text/apply_edits.hpp"
 #include "edit/format_deck.hpp"
 #include "edit/format_line.hpp"
 #include "engine/check.hpp"
@@ -17,7 +17,7 @@ std::string format_text(const std::string& text, edit::FormatOptions options = {
                         edit::FormatResult* result = nullptr) {
     const engine::CheckResult r = engine::check_buffer(text, "main.k");
     edit::FormatResult formatted = edit::format_deck(r.deck, r.diagnostics, {0}, options);
-    std::string out = edit::apply_edits(text, formatted.edits).text;
+    std::string out = text::apply_edits(text, formatted.edits).text;
     if (result) *result = std::move(formatted);
     return out;
 }
@@ -184,7 +184,7 @@ TEST_CASE("format: OpenRadioss cards in the starter's cells, headers, titles and
         "/END\n";
     const engine::CheckResult r = engine::check_buffer(deck, "run_0000.rad", {}, grammar::DeckFormat::Radioss);
     const edit::FormatResult formatted = edit::format_deck(r.deck, r.diagnostics, {0}, {});
-    const std::string out = edit::apply_edits(deck, formatted.edits).text;
+    const std::string out = text::apply_edits(deck, formatted.edits).text;
     CHECK(out.find("#  node_ID                  Xc\n         1                 0.5                 1.0\n         2") !=
           std::string::npos);
     CHECK(out.substr(0, 60) == deck.substr(0, 60));  // /BEGIN's cards: text cells and the version as written

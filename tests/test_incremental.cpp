@@ -13,7 +13,7 @@
 #include "engine/check.hpp"
 #include "engine/preview_reuse.hpp"
 #include "engine/recheck.hpp"
-#include "grammar/text_file.hpp"
+#include "text/text_file.hpp"
 #include "lsp/uri.hpp"
 #include "lsp/workspace.hpp"
 
@@ -204,7 +204,7 @@ TEST_CASE("recheck: random edits in and out of the bulk blocks, across keyword l
                              "decks/verification/hydrostatic_2d_quick.k", "decks/tests/preview/SPH118_fires.k",
                              "decks/tests/preview/SPH114_fires.k", "decks/tests/dk/DK003_fires_flood.k"}) {
         const std::filesystem::path path = kSource / name;
-        decks.emplace_back(path, grammar::read_text_file(path.string()));
+        decks.emplace_back(path, text::read_text_file(path.string()));
     }
     decks.emplace_back(std::filesystem::absolute("incremental_random_lattice.k"), lattice_deck(12));
     std::mt19937 random(29);

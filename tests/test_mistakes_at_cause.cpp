@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "edit/apply_edits.hpp"
+#include "text/apply_edits.hpp"
 #include "engine/check.hpp"
 #include "test_support.hpp"
 
@@ -35,7 +35,7 @@ std::size_t errors_and_warnings(const engine::CheckResult& r) {
 // The deck with the first fix of the finding applied.
 std::string mended(const std::string& deck, const diag::Diagnostic& d) {
     REQUIRE(!d.fixes.empty());
-    return edit::apply_edits(deck, d.fixes.front().edits).text;
+    return text::apply_edits(deck, d.fixes.front().edits).text;
 }
 
 }  // namespace

@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "engine/check.hpp"
-#include "grammar/source_text.hpp"
+#include "text/source_text.hpp"
 #include "test_support.hpp"
 
 using namespace sphdeck;

@@ -13,7 +13,7 @@
 #include <filesystem>
 #include <string>
 
-#include "grammar/text_file.hpp"
+#include "text/text_file.hpp"
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
@@ -51,14 +51,14 @@ bool has(const std::string& text, const std::string& part) { return text.find(pa
 TEST_CASE("special files: each kind is named by its type, without opening it") {
     test::TempDir dir;
     make_special_files(dir);
-    CHECK(grammar::special_file_kind("/dev/zero") == "a character device");
-    CHECK(grammar::special_file_kind((dir.path() / "pipe.k").string()) == "a named pipe");
-    CHECK(grammar::special_file_kind((dir.path() / "pipe_link.k").string()) == "a named pipe");  // the link followed
-    CHECK(grammar::special_file_kind((dir.path() / "socket.k").string()) == "a socket");
-    CHECK(grammar::special_file_kind((dir.path() / "folder.k").string()) == "a directory");
-    CHECK_FALSE(grammar::special_file_kind(dir.write("deck.k", "*KEYWORD\n")));
-    CHECK_FALSE(grammar::special_file_kind((dir.path() / "missing.k").string()));
-    CHECK_THROWS_WITH(grammar::read_text_file((dir.path() / "socket.k").string()),
+    CHECK(text::special_file_kind("/dev/zero") == "a character device");
+    CHECK(text::special_file_kind((dir.path() / "pipe.k").string()) == "a named pipe");
+    CHECK(text::special_file_kind((dir.path() / "pipe_link.k").string()) == "a named pipe");  // the link followed
+    CHECK(text::special_file_kind((dir.path() / "socket.k").string()) == "a socket");
+    CHECK(text::special_file_kind((dir.path() / "folder.k").string()) == "a directory");
+    CHECK_FALSE(text::special_file_kind(dir.write("deck.k", "*KEYWORD\n")));
+    CHECK_FALSE(text::special_file_kind((dir.path() / "missing.k").string()));
+    CHECK_THROWS_WITH(text::read_text_file((dir.path() / "socket.k").string()),
                       doctest::Contains("socket.k' is a socket, not a deck file"));
 }
 

@@ -9,7 +9,7 @@
 #include "grammar/dyna/deck_reader.hpp"
 #include "grammar/dyna/line_grammar.hpp"
 #include "grammar/file_paths.hpp"
-#include "grammar/text_file.hpp"
+#include "text/text_file.hpp"
 
 namespace sphdeck::grammar::dyna {
 namespace {
@@ -157,7 +157,7 @@ SourceText read_include_text(const std::string& path, const FileOverlay* overlay
         text = read_source_text(path, overlay);
     }
     // An empty include is fine; a binary one (a d3plot named by mistake) is not parsed as cards.
-    if (auto why = binary_or_empty(text.substr(0, 64 * 1024)); why && !text.empty())
+    if (auto why = text::binary_or_empty(text.substr(0, 64 * 1024)); why && !text.empty())
         throw std::runtime_error("'" + path + "' is not a keyword deck: " + *why);
     return text;
 }

@@ -1,8 +1,8 @@
-#include "grammar/source_text.hpp"
+#include "text/source_text.hpp"
 
 #include <algorithm>
 
-#include "grammar/text_file.hpp"
+#include "text/text_file.hpp"
 
 #if defined(__unix__) || defined(__APPLE__)
 #include <fcntl.h>
@@ -12,7 +12,7 @@
 #define SPHDECK_HAS_MMAP 1
 #endif
 
-namespace sphdeck::grammar {
+namespace sphdeck::text {
 
 struct SourceText::Mapping {
     void* address = nullptr;
@@ -77,4 +77,4 @@ bool SourceText::contains(std::string_view needle) const {
     return false;
 }
 
-}  // namespace sphdeck::grammar
+}  // namespace sphdeck::text

@@ -1,5 +1,5 @@
-// Applying text edits to one file's text: the one applier the CLI's --fix and --diff, `format` and the
-// editor server share (issue 27 item 5).
+// Applying text edits to one file's text: the one applier of the CLI's --fix and --diff, `format`, the
+// engine's re-check of a deck mended (engine/mended_consequences.cpp) and the tests of the editor's edits.
 #pragma once
 
 #include <cstddef>
@@ -8,9 +8,9 @@
 #include <string_view>
 #include <vector>
 
-#include "diag/diagnostic.hpp"
+#include "text/text_edit.hpp"
 
-namespace sphdeck::edit {
+namespace sphdeck::text {
 
 // An edit placed on the text: the bytes it replaces and the line they are on.
 struct PlacedEdit {
@@ -30,7 +30,7 @@ struct PlacedEdits {
 // line and keeps its line break. An edit that overlaps one placed before it (in order of position, then
 // the order given) is skipped and counted, as ruff does with fixes that touch the same text: one round
 // never applies two competing mends; the caller re-checks and tries the rest again.
-PlacedEdits place_edits(std::string_view text, const std::vector<diag::TextEdit>& edits);
+PlacedEdits place_edits(std::string_view text, const std::vector<TextEdit>& edits);
 
 struct AppliedEdits {
     std::string text;
@@ -39,6 +39,6 @@ struct AppliedEdits {
 };
 
 // The text with the placed edits applied.
-AppliedEdits apply_edits(std::string_view text, const std::vector<diag::TextEdit>& edits);
+AppliedEdits apply_edits(std::string_view text, const std::vector<TextEdit>& edits);
 
-}  // namespace sphdeck::edit
+}  // namespace sphdeck::text

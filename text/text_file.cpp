@@ -1,4 +1,4 @@
-#include "grammar/text_file.hpp"
+#include "text/text_file.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -9,7 +9,7 @@
 #include <cstring>
 #include <stdexcept>
 
-namespace sphdeck::grammar {
+namespace sphdeck::text {
 namespace {
 
 // What a file of type `mode` is when it is no regular file, for the message; nullptr for a regular one.
@@ -93,4 +93,4 @@ std::optional<std::string> binary_or_empty(std::string_view text) {
     return std::nullopt;
 }
 
-}  // namespace sphdeck::grammar
+}  // namespace sphdeck::text

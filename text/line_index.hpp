@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-namespace sphdeck::edit {
+namespace sphdeck::text {
 
 class LineIndex {
 public:
@@ -42,4 +42,4 @@ inline std::uint32_t LineIndex::line_of(std::size_t offset) const {
     return static_cast<std::uint32_t>(lo + 1);
 }
 
-}  // namespace sphdeck::edit
+}  // namespace sphdeck::text

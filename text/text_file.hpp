@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-namespace sphdeck::grammar {
+namespace sphdeck::text {
 
 // A regular file open for reading (after following symbolic links). Opening never blocks: the type is
 // asked with stat() first, and the file is opened without waiting (O_NONBLOCK), then asked again on
@@ -46,4 +46,4 @@ std::string read_text_prefix(const std::string& path, std::size_t bytes);
 // UTF-16 text, or binary data (a NUL byte). Any other byte passes: decks carry Latin-1 comments.
 std::optional<std::string> binary_or_empty(std::string_view text);
 
-}  // namespace sphdeck::grammar
+}  // namespace sphdeck::text

@@ -1,9 +1,9 @@
-#include "grammar/source_map.hpp"
+#include "text/source_map.hpp"
 
 #include <algorithm>
 #include <cstring>
 
-namespace sphdeck::grammar {
+namespace sphdeck::text {
 
 FileId SourceMap::add(SourceFile file) {
     files_.push_back(std::move(file));
@@ -52,4 +52,4 @@ std::vector<FileId> SourceMap::include_chain(FileId id) const {
     return chain;
 }
 
-}  // namespace sphdeck::grammar
+}  // namespace sphdeck::text

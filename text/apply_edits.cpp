@@ -1,15 +1,15 @@
-#include "edit/apply_edits.hpp"
+#include "text/apply_edits.hpp"
 
 #include <algorithm>
 #include <optional>
 
-#include "edit/line_index.hpp"
+#include "text/line_index.hpp"
 
-namespace sphdeck::edit {
+namespace sphdeck::text {
 namespace {
 
 // The bytes an edit replaces, or nothing when its line does not exist or its columns are reversed.
-std::optional<PlacedEdit> place(const LineIndex& lines, const diag::TextEdit& edit) {
+std::optional<PlacedEdit> place(const LineIndex& lines, const TextEdit& edit) {
     const auto& span = edit.span;
     if (span.line == 0 || span.line > lines.count() || span.column == 0 || span.end_column < span.column)
         return std::nullopt;
@@ -21,7 +21,7 @@ std::optional<PlacedEdit> place(const LineIndex& lines, const diag::TextEdit& ed
 
 }  // namespace
 
-PlacedEdits place_edits(std::string_view text, const std::vector<diag::TextEdit>& edits) {
+PlacedEdits place_edits(std::string_view text, const std::vector<TextEdit>& edits) {
     const LineIndex lines(text);
     struct Candidate {
         PlacedEdit edit;
@@ -52,7 +52,7 @@ PlacedEdits place_edits(std::string_view text, const std::vector<diag::TextEdit>
     return result;
 }
 
-AppliedEdits apply_edits(std::string_view text, const std::vector<diag::TextEdit>& edits) {
+AppliedEdits apply_edits(std::string_view text, const std::vector<TextEdit>& edits) {
     const auto placed = place_edits(text, edits);
     AppliedEdits result;
     result.text.reserve(text.size());
@@ -68,4 +68,4 @@ AppliedEdits apply_edits(std::string_view text, const std::vector<diag::TextEdit
     return result;
 }
 
-}  // namespace sphdeck::edit
+}  // namespace sphdeck::text
