@@ -34,6 +34,14 @@ enum class Fixable {
 };
 std::string_view to_string(Fixable f);  // "none", "safe", "unsafe", "safe or unsafe"
 
+// What a rule's finding says of its line's layout, for `sphdeck format` (edit/format_deck.cpp): a line
+// whose layout is in doubt is left as written, so formatting never moves a value its author misplaced.
+enum class Layout {
+    Trusted,   // the finding is about a value, not its place (a blank required field, a value out of range)
+    Doubtful,  // values may not read as laid out: cut, glued or shifted values, text past the last column,
+               // tabs, parameter names a field may have cut, decimal commas
+};
+
 struct RuleInfo {
     std::string_view code;    // "SPH030"
     std::string_view name;    // "iavis-solid-in-2d" (kebab-case, as in the catalogue)
@@ -43,6 +51,7 @@ struct RuleInfo {
     std::string_view source;  // "CONTROL_SPH R2e", "reader", "SPHBCS", ... as in the catalogue
     std::string_view summary;  // one line: the catalogue's condition in plain words
     Fixable fix = Fixable::None;  // whether its findings carry fixes (a test compares with the deck tests)
+    Layout layout = Layout::Trusted;  // Doubtful: the formatter leaves a line with its finding as written
     RuleDoc doc{};            // empty in the rows; the registry fills it from docs/rules/CODE.md
 };
 
