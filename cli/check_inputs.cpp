@@ -1,5 +1,6 @@
 #include "cli/check_inputs.hpp"
 
+#include "grammar/deck_files.hpp"
 #include "grammar/file_paths.hpp"
 
 #include <fnmatch.h>
@@ -19,13 +20,6 @@ constexpr std::uintmax_t kMostScannedBytes = std::uintmax_t{64} << 20;
 std::string lower(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return s;
-}
-
-bool is_deck_file(const fs::path& path) {
-    const std::string name = lower(path.filename().string());
-    for (const char* extension : {".k", ".key", ".dyn", ".inc"})
-        if (lower(path.extension().string()) == extension) return true;
-    return name.size() > 9 && name.ends_with("_0000.rad");
 }
 
 // Whether --exclude leaves out a file or folder found under a given folder, as .gitignore patterns do:
@@ -108,7 +102,7 @@ ExpandedInputs expand_inputs(const std::vector<std::string>& given, const std::v
                 it.disable_recursion_pending();  // .git, .vscode ..., and folders --exclude names
                 continue;
             }
-            if (it->is_regular_file(ec) && is_deck_file(it->path()) && !excluded(it->path(), path, exclude))
+            if (it->is_regular_file(ec) && grammar::is_deck_to_check(it->path()) && !excluded(it->path(), path, exclude))
                 found.push_back(it->path().string());
         }
         if (found.empty()) {

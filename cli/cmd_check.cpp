@@ -108,15 +108,11 @@ std::optional<std::vector<lint::Config>> resolve_configs(const CheckArgs& args, 
     return out;
 }
 
+// The options the config gives (engine::options_for, as in the editor), with what the command line says.
 engine::CheckOptions options_for(const lint::Config& config, const CheckArgs& args) {
-    engine::CheckOptions options;
-    options.reader.include_paths = config.include_paths;
-    options.config = config;
+    engine::CheckOptions options = engine::options_for(config);
     options.rules.geometry = !args.no_geometry;
-    if (config.solver) {
-        options.rules.solver = *config.solver == "mpp" ? lint::Solver::Mpp : lint::Solver::Smp;
-        options.rules.solver_source = args.solver.empty() ? config.path : "--solver";
-    }
+    if (config.solver && !args.solver.empty()) options.rules.solver_source = "--solver";
     return options;
 }
 

@@ -10,6 +10,4 @@ namespace sphdeck::cli {
 // "; did you mean 'check'?" when a candidate is within 2 edits, else "".
 std::string did_you_mean(std::string_view typed, const std::vector<std::string_view>& candidates);
 
-std::size_t edit_distance(std::string_view a, std::string_view b);
-
 }  // namespace sphdeck::cli

@@ -6,6 +6,7 @@
 #include "edit/format_sink.hpp"
 #include "grammar/file_paths.hpp"
 #include "grammar/read_deck.hpp"
+#include "lint/registry.hpp"
 
 namespace sphdeck::edit {
 namespace detail {
@@ -93,15 +94,15 @@ std::vector<grammar::FileId> files_to_format(const grammar::RawDeck& deck, bool 
 
 namespace {
 
-// Findings that say a line may not read as its author laid it out: values that do not read as their
-// field's type or run over its columns, text past the last column, tabs, parameter names a field may have
-// cut, shifted lines and blocks in other widths, decimal commas, OpenRadioss glued and straddling values;
-// and any finding that offers a mend. A value finding (a blank required field, a value out of range) is
-// about the value, not its place: the line is laid out.
+// Findings that say a line may not read as its author laid it out: those of the rules whose registry row
+// says the layout is in doubt (lint::Layout::Doubtful), and any finding that offers a mend.
 bool casts_doubt(const diag::Diagnostic& d) {
-    static const std::set<std::string, std::less<>> codes{"DK002", "DK003", "DK004", "DK005", "DK006",
-                                                          "DK012", "DK013", "DK015", "DK016", "DK023",
-                                                          "DK029", "DK030", "DK031", "RAD025", "RAD030"};
+    static const std::set<std::string, std::less<>> codes = [] {
+        std::set<std::string, std::less<>> doubtful;
+        for (const lint::RuleInfo& rule : lint::all_rules())
+            if (rule.layout == lint::Layout::Doubtful) doubtful.emplace(rule.code);
+        return doubtful;
+    }();
     return codes.count(d.code) != 0 || !d.fixes.empty();
 }
 

@@ -25,7 +25,7 @@ namespace sphdeck::engine {
 struct CheckOptions {
     grammar::dyna::ReaderOptions reader;  // its `overlay` is set by check_deck from the documents
     lint::RuleOptions rules;
-    lint::Config config;  // sphdeck.toml merged with the command line; cli/ copies the solver into `rules`
+    lint::Config config;  // sphdeck.toml merged with the command line; engine::options_for copies the solver into `rules`
 };
 
 struct CheckResult {

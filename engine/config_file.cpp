@@ -28,4 +28,16 @@ std::optional<lint::ConfigError> load_config(const std::string& path, lint::Conf
     return lint::parse_config(text.str(), path, out);
 }
 
+CheckOptions options_for(lint::Config config) {
+    CheckOptions options;
+    options.reader.include_paths = config.include_paths;
+    options.rules.geometry = true;
+    if (config.solver) {
+        options.rules.solver = *config.solver == "mpp" ? lint::Solver::Mpp : lint::Solver::Smp;
+        options.rules.solver_source = config.path;
+    }
+    options.config = std::move(config);
+    return options;
+}
+
 }  // namespace sphdeck::engine

@@ -5,6 +5,7 @@
 #include <string>
 #include <string_view>
 
+#include "engine/check.hpp"
 #include "lint/config.hpp"
 
 namespace sphdeck::engine {
@@ -17,5 +18,10 @@ std::optional<std::filesystem::path> find_config(const std::filesystem::path& de
 
 // Reads and parses the file at `path` into `out`.
 std::optional<lint::ConfigError> load_config(const std::string& path, lint::Config& out);
+
+// What a deck is checked with under `config` (overrides already applied), for `sphdeck check` and the
+// editor alike: the reader searches the config's include paths, the rules see its solver (named by
+// the config file's path), the geometry rules run. The command line changes what it overrides.
+CheckOptions options_for(lint::Config config);
 
 }  // namespace sphdeck::engine

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "grammar/keywords/schema.hpp"
 #include "grammar/read_deck.hpp"
 #include "model/model_json.hpp"
 #include "model/radioss_json.hpp"
@@ -35,18 +36,12 @@ std::string string_or_empty(const json& object, const char* key) {
     return it != object.end() && it->is_string() ? it->get<std::string>() : std::string();
 }
 
-bool is_title(const std::string& field) {
-    std::string upper = field;
-    std::transform(upper.begin(), upper.end(), upper.begin(), [](unsigned char c) { return std::toupper(c); });
-    return upper == "TITLE" || upper == "HEADING";
-}
-
 // "SECID 1" from the first field that is not a title, when it names an id and has a value.
 std::string id_of(const json& keyword) {
     const auto fields = keyword.find("fields");
     if (fields == keyword.end() || !fields->is_object()) return {};
     for (const auto& [name, field] : fields->items()) {
-        if (is_title(name)) continue;
+        if (keywords::is_title_field(name)) continue;
         if (!field.is_object() || !field.contains("value")) return {};
         const json& value = field["value"];
         const bool names_id = name.size() >= 2 && (name.ends_with("ID") || name.ends_with("id") || name == "ID");

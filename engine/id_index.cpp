@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "grammar/keywords/id_kinds.hpp"
 #include "grammar/value.hpp"
 #include "engine/field_at_column.hpp"
 #include "engine/position_index.hpp"
@@ -18,59 +19,6 @@ namespace {
 namespace rad = grammar::radioss;
 
 bool starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
-
-// Keyword families and the field that holds their own id (the manual's *PART PID, *SECTION SECID...).
-struct Definition {
-    std::string_view keyword;  // the schema name or a family prefix ending in '_'
-    std::string_view field;
-    std::string_view kind;
-};
-constexpr std::array<Definition, 18> kDefinitions{{
-    {"*NODE", "NID", "NODE"},
-    {"*PART", "PID", "PART"},
-    {"*SECTION_", "SECID", "SECTION"},
-    {"*MAT_", "MID", "MAT"},
-    {"*EOS_", "EOSID", "EOS"},
-    {"*HOURGLASS", "HGID", "HOURGLASS"},
-    {"*SET_NODE", "SID", "SET_NODE"},
-    {"*SET_PART", "SID", "SET_PART"},
-    {"*SET_SEGMENT", "SID", "SET_SEGMENT"},
-    {"*SET_SOLID", "SID", "SET_SOLID"},
-    {"*SET_SHELL", "SID", "SET_SHELL"},
-    {"*SET_BEAM", "SID", "SET_BEAM"},
-    {"*DEFINE_CURVE", "LCID", "DEFINE_CURVE"},
-    {"*DEFINE_TABLE", "TBID", "DEFINE_CURVE"},
-    {"*DEFINE_BOX", "BOXID", "DEFINE_BOX"},
-    {"*DEFINE_VECTOR", "VID", "DEFINE_VECTOR"},
-    {"*DEFINE_COORDINATE_", "CID", "DEFINE_COORDINATE_SYSTEM"},
-    {"*DEFINE_TRANSFORMATION", "TRANID", "DEFINE_TRANSFORMATION"},
-}};
-
-// Fields of the hand-written tables that name an id (the generated layouts say it in refers_to).
-struct Reference {
-    std::string_view field;
-    std::string_view kind;
-};
-constexpr std::array<Reference, 19> kReferences{{
-    {"NID", "NODE"},
-    {"SECID", "SECTION"},     {"ISSPH", "SECTION"},       {"MID", "MAT"},
-    {"EOSID", "EOS"},         {"HGID", "HOURGLASS"},      {"PID", "PART"},
-    {"IPID", "PART"},         {"IPSPH", "PART"},          {"BOXID", "DEFINE_BOX"},
-    {"IBOXA", "DEFINE_BOX"},  {"IBOXB", "DEFINE_BOX"},    {"NSID", "SET_NODE"},
-    {"NSIDEX", "SET_NODE"},   {"LCID", "DEFINE_CURVE"},   {"LCFLD", "DEFINE_CURVE"},
-    {"DT2MSLC", "DEFINE_CURVE"}, {"LCIDDR", "DEFINE_CURVE"}, {"LCEPSMX", "DEFINE_CURVE"},
-}};
-
-bool family_matches(std::string_view keyword, std::string_view family) {
-    if (family.back() == '_') return starts_with(keyword, family);
-    return keyword == family || starts_with(keyword, std::string(family) + "_");
-}
-
-// PID1..PID8 of *SET_PART_LIST: the name without its trailing digits.
-std::string_view without_digits(std::string_view name) {
-    while (!name.empty() && std::isdigit(static_cast<unsigned char>(name.back()))) name.remove_suffix(1);
-    return name;
-}
 
 // A Radioss header's family ("/PROP/SPH/7" -> "PROP") and its id segment with its columns.
 struct HeaderId {
@@ -122,7 +70,7 @@ bool bulk_block(const grammar::Block& block) {
 }
 
 std::string field_title(std::string_view name, std::string_view text) {
-    return name == "TITLE" || name == "HEADING" ? std::string(grammar::trim_blanks(text)) : std::string();
+    return keywords::is_title_field(name) ? std::string(grammar::trim_blanks(text)) : std::string();
 }
 
 void collect_dyna(const CheckResult& deck, const grammar::Block& block, std::vector<IdUse>& out) {
@@ -170,20 +118,12 @@ void collect_radioss(const CheckResult& deck, const grammar::Block& block, int v
 
 std::optional<IdRole> dyna_id_role(std::string_view keyword, const keywords::FieldSpec& field) {
     if (field.type == keywords::FieldType::Real || field.type == keywords::FieldType::Unused) return std::nullopt;
-    for (const auto& d : kDefinitions)
-        if (field.name == d.field && family_matches(keyword, d.keyword) && !starts_with(keyword, "*MAT_ADD_"))
-            return IdRole{std::string(d.kind), true};
-    if (!field.refers_to.empty()) {
-        if (field.refers_to == "DEFINE_CURVE_OR_TABLE") return IdRole{"DEFINE_CURVE", false};
-        return IdRole{std::string(field.refers_to), false};
-    }
-    // *ELEMENT_SPH: NID is the particle's node, PID its part; NEND ends a range of nodes.
-    if (keyword == "*ELEMENT_SPH" && field.name != "PID" && field.name != "NID") return std::nullopt;
-    const bool numbered = starts_with(keyword, "*SET_PART") || starts_with(keyword, "*SET_NODE");
-    const std::string_view name = numbered ? without_digits(field.name) : field.name;
-    for (const auto& r : kReferences)
-        if (name == r.field) return IdRole{std::string(r.kind), false};
-    return std::nullopt;
+    if (const keywords::IdDefinition* d = keywords::defining_field(keyword, field.name))
+        return IdRole{std::string(d->kind), true};
+    if (!field.refers_to.empty()) return IdRole{std::string(keywords::id_space(field.refers_to)), false};
+    const std::string_view kind = keywords::kind_named_by(keyword, field.name);
+    if (kind.empty()) return std::nullopt;
+    return IdRole{std::string(kind), false};
 }
 
 std::optional<IdRole> radioss_id_role(const rad::FieldSpec& field) {
@@ -372,10 +312,7 @@ std::vector<IdUse> definitions_of(const CheckResult& deck, const std::string& ki
             if (!header || !ids_meet(header->family, kind) || (id && header->id != *id)) continue;
             collect_radioss(deck, block, version, found);
         } else {
-            const bool family = std::any_of(kDefinitions.begin(), kDefinitions.end(), [&](const Definition& d) {
-                return d.kind == kind && starts_with(block.keyword, d.keyword);
-            });
-            if (!family || bulk_block(block)) continue;
+            if (!keywords::defines_kind(block.keyword, kind) || bulk_block(block)) continue;
             collect_dyna(deck, block, found);
         }
         for (auto& use : found)

@@ -1,6 +1,8 @@
-// Ids in a deck: which fields define an id of a kind (a *PART's PID, a *SECTION's SECID, the id
-// of a Radioss /PROP header) and which name one (a part's SECID, a particle's PID, an LCID), so
-// that definition, references, hover and completion can follow them. Kinds are spelled like the
+// Id look-ups for the editor: the id a field defines or names (a *PART's PID, a part's SECID, the id of
+// a Radioss /PROP header), the uses of an id and its definitions, so that definition, references, hover
+// and completion can follow them. No index is built (model/id_index.hpp is the index of node and particle
+// ids): each question walks the deck's blocks again. Which LS-DYNA fields define or name which kind is
+// declared in grammar/keywords/id_kinds.hpp, which the REF rules read too; kinds are spelled like the
 // generated layouts' links: "PART", "SECTION", "MAT", "EOS", "HOURGLASS", "SET_NODE", "SET_PART",
 // "DEFINE_CURVE", "DEFINE_BOX"; Radioss kinds are their header families: "PART", "PROP", "MAT",
 // "GRNOD", "FRAME", "SKEW".
@@ -25,7 +27,9 @@ struct IdRole {
     bool defines = false;
 };
 
-// The id role of an LS-DYNA field of a keyword (canonical schema name), or nullopt.
+// The id role of an LS-DYNA field of a keyword (canonical schema name), or nullopt: the field that holds a
+// block's own id defines one (keywords::defining_field); a field the layout links (refers_to) or whose name
+// names a kind (keywords::kind_named_by) names one.
 std::optional<IdRole> dyna_id_role(std::string_view keyword, const keywords::FieldSpec& field);
 // The id role of a Radioss card field ("prop_ID" names a PROP), or nullopt.
 std::optional<IdRole> radioss_id_role(const grammar::radioss::FieldSpec& field);

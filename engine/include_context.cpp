@@ -7,6 +7,7 @@
 #include <system_error>
 #include <tuple>
 
+#include "grammar/deck_files.hpp"
 #include "grammar/file_cache.hpp"
 #include "grammar/file_overlay.hpp"
 #include "grammar/file_paths.hpp"
@@ -15,15 +16,6 @@
 namespace sphdeck::engine {
 namespace fs = std::filesystem;
 namespace {
-
-bool has_deck_extension(const fs::path& path) {
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    for (const char* known : {".k", ".key", ".dyn", ".inc", ".rad"})
-        if (extension == known) return true;
-    return false;
-}
 
 bool marks_project_root(const fs::path& folder) {
     std::error_code ec;
@@ -48,7 +40,7 @@ void add_deck_files(const fs::path& folder, std::vector<fs::path>& out) {
     std::error_code ec;
     std::vector<fs::path> found;
     for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec))
-        if (it->is_regular_file(ec) && has_deck_extension(it->path())) found.push_back(it->path());
+        if (it->is_regular_file(ec) && grammar::has_deck_extension(it->path())) found.push_back(it->path());
     std::sort(found.begin(), found.end());
     out.insert(out.end(), found.begin(), found.end());
 }

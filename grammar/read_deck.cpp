@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "grammar/deck_files.hpp"
 #include "grammar/radioss/reader.hpp"
 #include "text/text_file.hpp"
 
@@ -33,8 +34,7 @@ DeckFormat detect_format(std::string_view text, std::string_view file_name) {
         if (line[first] == '/') return DeckFormat::Radioss;
         break;
     }
-    const bool rad = file_name.size() >= 4 && file_name.substr(file_name.size() - 4) == ".rad";
-    return rad ? DeckFormat::Radioss : DeckFormat::LsDyna;
+    return file_name.ends_with(radioss_deck_extension) ? DeckFormat::Radioss : DeckFormat::LsDyna;
 }
 
 DeckFormat format_of(const RawDeck& deck) {

@@ -25,7 +25,9 @@ std::size_t letter_bound(std::string_view a, std::string_view b, bool fold_case)
 }
 }  // namespace
 
-std::size_t typing_distance(std::string_view a, std::string_view b, bool fold_case, std::size_t limit) {
+std::size_t typing_distance(std::string_view a, std::string_view b, bool fold_case, std::size_t limit,
+                            SwapCost swap) {
+    const auto swap_cost = static_cast<std::size_t>(swap);
     if (letter_bound(a, b, fold_case) > limit) return limit + 1;
     // Optimal string alignment with weights: three rows suffice, kept per thread (no allocation per call).
     const std::size_t n = a.size(), m = b.size();
@@ -42,7 +44,7 @@ std::size_t typing_distance(std::string_view a, std::string_view b, bool fold_ca
             const std::size_t cost = ai == bj ? 0 : 2;
             cur[j] = std::min({prev[j] + 2, cur[j - 1] + 2, prev[j - 1] + cost});
             if (i > 1 && j > 1 && ai == folded(b[j - 2], fold_case) && folded(a[i - 2], fold_case) == bj && ai != bj)
-                cur[j] = std::min(cur[j], prev2[j - 2] + 1);
+                cur[j] = std::min(cur[j], prev2[j - 2] + swap_cost);
             row_min = std::min(row_min, cur[j]);
         }
         // A row depends on the two rows above it only: once both exceed the limit, so does the end.
@@ -52,6 +54,10 @@ std::size_t typing_distance(std::string_view a, std::string_view b, bool fold_ca
         std::swap(prev, cur);
     }
     return std::min(prev[m], limit + 1);
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b, SwapCost swap) {
+    return typing_distance(a, b, false, static_cast<std::size_t>(-1) / 2, swap) / 2;
 }
 
 std::size_t close_enough(std::string_view known) {

@@ -6,6 +6,7 @@
 #include <string>
 #include <tuple>
 
+#include "grammar/similar_names.hpp"
 #include "lint/rule_docs.hpp"
 
 namespace sphdeck::lint {
@@ -52,29 +53,11 @@ const std::vector<RuleInfo>& table() {
     return rows;
 }
 
-// Optimal string alignment distance (Levenshtein plus adjacent transpositions), on lower-case text.
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-    std::vector<std::size_t> prev2(b.size() + 1), prev(b.size() + 1), cur(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        cur[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
-            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + cost});
-            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
-                cur[j] = std::min(cur[j], prev2[j - 2] + 1);
-        }
-        std::swap(prev2, prev);
-        std::swap(prev, cur);
-    }
-    return prev[b.size()];
-}
-
 // How well `query` (lower case) matches `candidate`: (kind, distance), smaller is better.
 // kind 0 = prefix, 1 = substring, 2 = edit distance; kind 3 = no match.
 std::tuple<int, std::size_t> match(const std::string& query, std::string_view candidate) {
     std::string cand = lowered(candidate);
-    std::size_t dist = edit_distance(query, cand);
+    std::size_t dist = grammar::edit_distance(query, cand, grammar::SwapCost::OneEdit);
     if (query.size() >= 2 && cand.starts_with(query)) return {0, dist};
     if (query.size() >= 3 && cand.find(query) != std::string::npos) return {1, dist};
     std::size_t limit = std::max<std::size_t>(2, query.size() / 3);

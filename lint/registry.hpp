@@ -48,6 +48,14 @@ struct RuleHome {
     std::string_view no_silent_deck = {};  // why no deck must stay silent, and which unit test shows it
 };
 
+// What a rule's finding says of its line's layout, for `sphdeck format` (edit/format_deck.cpp): a line
+// whose layout is in doubt is left as written, so formatting never moves a value its author misplaced.
+enum class Layout {
+    Trusted,   // the finding is about a value, not its place (a blank required field, a value out of range)
+    Doubtful,  // values may not read as laid out: cut, glued or shifted values, text past the last column,
+               // tabs, parameter names a field may have cut, decimal commas
+};
+
 struct RuleInfo {
     std::string_view code;    // "SPH030"
     std::string_view name;    // "iavis-solid-in-2d" (kebab-case, as in the catalogue)
@@ -58,6 +66,7 @@ struct RuleInfo {
     RuleHome home;            // its check and its decks
     std::string_view summary;  // one line: the catalogue's condition in plain words
     Fixable fix = Fixable::None;  // whether its findings carry fixes (a test compares with the deck tests)
+    Layout layout = Layout::Trusted;  // Doubtful: the formatter leaves a line with its finding as written
     RuleDoc doc{};            // empty in the rows; the registry fills it from docs/rules/CODE.md
 };
 

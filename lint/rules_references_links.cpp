@@ -7,6 +7,7 @@
 #include <unordered_set>
 
 #include "grammar/fields.hpp"
+#include "grammar/keywords/id_kinds.hpp"
 
 namespace sphdeck::lint {
 namespace {
@@ -42,9 +43,9 @@ bool several_per_block(std::string_view kind) {
 Definitions definitions_of(const grammar::RawDeck& deck, std::string_view kind) {
     Definitions d;
     for (const grammar::Block& b : deck.blocks) {
-        if (!model::defines_kind(b.keyword, kind)) continue;
+        if (!keywords::defines_kind(b.keyword, kind)) continue;
         const grammar::CardLine* line = deck.begin_lines(b);
-        if (b.keyword.find("_TITLE") != std::string::npos) ++line;
+        line += keywords::title_lines(b.keyword);
         if (line >= deck.end_lines(b)) continue;
         if (auto id = first_integer(deck.text(*line), b.format)) d.ids.insert(*id);
         else d.unreadable = true;
@@ -135,12 +136,12 @@ void check_followed_references(RuleContext& c, std::set<model::Id>& boxes) {
             // Thermal materials (*MAT_THERMAL_..., the TMID of a part) are not in model.materials.
             for (const grammar::Block& b : c.deck.blocks)
                 if (starts_with(b.keyword, "*MAT_THERMAL_") && c.deck.begin_lines(b) < c.deck.end_lines(b)) {
-                    const grammar::CardLine* line = c.deck.begin_lines(b) + (b.keyword.find("_TITLE") != std::string::npos);
+                    const grammar::CardLine* line = c.deck.begin_lines(b) + keywords::title_lines(b.keyword);
                     if (line >= c.deck.end_lines(b)) continue;
                     if (auto id = first_integer(c.deck.text(*line), b.format)) d.ids.insert(*id);
                     else d.unreadable = true;
                 }
-        } else if (kind != "NODE") d = definitions_of(c.deck, kind == "DEFINE_CURVE_OR_TABLE" ? "DEFINE_CURVE" : kind);
+        } else if (kind != "NODE") d = definitions_of(c.deck, keywords::id_space(kind));
         return known.emplace(kind, std::move(d)).first->second;
     };
     std::set<std::string_view> hinted;  // kinds with the "defines none" note already given

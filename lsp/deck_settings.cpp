@@ -5,6 +5,7 @@
 #include <string>
 
 #include "engine/config_file.hpp"
+#include "grammar/deck_files.hpp"
 
 namespace sphdeck::lsp {
 namespace fs = std::filesystem;
@@ -27,24 +28,12 @@ DeckSettings settings_for(const fs::path& deck, const std::vector<fs::path>& roo
             settings = lint::Config{};
         }
     }
-    // As cli/cmd_check.cpp's options_for, without command-line overrides: the reader searches the
-    // config's include paths, the rules see its solver.
-    out.options.reader.include_paths = settings.include_paths;
-    out.options.rules.geometry = true;
-    if (settings.solver) {
-        out.options.rules.solver = *settings.solver == "mpp" ? lint::Solver::Mpp : lint::Solver::Smp;
-        out.options.rules.solver_source = settings.path;
-    }
-    out.options.config = std::move(settings);
+    out.options = engine::options_for(std::move(settings));  // as `sphdeck check`, without command-line overrides
     return out;
 }
 
 bool is_deck(const fs::path& path, std::string_view text) {
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    for (std::string_view known : {".k", ".key", ".dyn", ".inc", ".rad"})
-        if (extension == known) return true;
+    if (grammar::has_deck_extension(path)) return true;
     std::size_t at = 0;
     while (at < text.size()) {
         std::size_t end = text.find('\n', at);

@@ -1,7 +1,8 @@
 // textDocument/codeAction: for each sphdeck diagnostic of the request's context, the mends its finding
 // carries (diag::Fix, the data `sphdeck check --fix` applies: DK029's moved line, DK002's realigned
 // values...), then suppress its rule for the card (or block) or for the file with the existing comment
-// directives (lint/suppressions.hpp: `$ sphdeck: disable=CODE`, `disable-file=`; `#` in Radioss decks).
+// directives (edit/suppression_fixes.hpp: `$ sphdeck: disable=CODE`, `disable-file=`; `#` in Radioss
+// decks), fixes too. Every action is a diag::Fix turned into LSP edits here.
 // No action is offered twice: findings sharing a range share their actions. With context.only asking
 // for source.fixAll, one action applies every safe fix of the file (edit::choose_fixes, as the CLI).
 #include <algorithm>
@@ -10,8 +11,8 @@
 #include <string>
 
 #include "edit/fix_choice.hpp"
+#include "edit/suppression_fixes.hpp"
 #include "lint/registry.hpp"
-#include "lint/suppressions.hpp"
 #include "engine/position_index.hpp"
 #include "grammar/file_paths.hpp"
 #include "lsp/display_text.hpp"
@@ -23,9 +24,6 @@ namespace sphdeck::lsp {
 using namespace engine;  // the position index: engine/position_index.hpp, engine/id_index.hpp
 namespace {
 
-// Lines at the top of a file searched for a `disable-file=` directive to extend.
-constexpr std::uint32_t kHeaderLines = 50;
-
 nlohmann::json position(std::uint32_t line, std::uint32_t character) {
     return {{"line", line}, {"character", character}};
 }
@@ -35,70 +33,12 @@ nlohmann::json text_edit(std::uint32_t line, std::uint32_t start, std::uint32_t 
     return {{"range", {{"start", position(line, start)}, {"end", position(end_line, end)}}}, {"newText", std::move(text)}};
 }
 
-nlohmann::json action(std::string title, const nlohmann::json& diagnostic, const std::string& uri, nlohmann::json edit,
-                      bool preferred = false) {
-    nlohmann::json out = {{"title", std::move(title)},
-                          {"kind", "quickfix"},
-                          {"diagnostics", nlohmann::json::array({diagnostic})},
-                          {"edit", {{"changes", {{uri, nlohmann::json::array({std::move(edit)})}}}}}};
-    if (preferred) out["isPreferred"] = true;
-    return out;
-}
-
 struct Request {
     const CheckedDeck& deck;
     grammar::FileId file;
     std::string uri;
     char comment;  // '$' LS-DYNA, '#' Radioss
 };
-
-// The UTF-16 column just after the last code of a well-formed directive of `scope` on a comment
-// line (1-based `line`), or nullopt.
-std::optional<std::uint32_t> directive_end(const Request& r, std::string_view text, std::uint32_t line,
-                                           lint::Suppression::Scope scope) {
-    if (text.empty() || (text[0] != r.comment && text[0] != '$')) return std::nullopt;
-    lint::Suppression directive;
-    std::vector<diag::Diagnostic> problems;
-    if (!lint::parse_suppression(text, r.file, line, directive, problems) || !problems.empty() ||
-        directive.scope != scope || directive.items.empty())
-        return std::nullopt;
-    return utf16_offset(text, directive.items.back().end_column - 1);
-}
-
-// "Suppress CODE in this file": a code added to the file's `disable-file=` directive near its
-// top, else a directive line at the top (after a Radioss file's `#RADIOSS` line, which tells the
-// format).
-nlohmann::json file_suppression(const Request& r, const std::string& code, const nlohmann::json& diagnostic) {
-    const auto& sources = r.deck.result.deck.sources;
-    const std::uint32_t lines = std::min(sources.line_count(r.file), kHeaderLines);
-    const std::string title = fmt::format("Suppress {} in this file", code);
-    for (std::uint32_t l = 1; l <= lines; ++l)
-        if (auto at = directive_end(r, sources.line_text(r.file, l), l, lint::Suppression::Scope::File))
-            return action(title, diagnostic, r.uri, text_edit(l - 1, *at, l - 1, *at, "," + code));
-    std::uint32_t line = 0;
-    if (r.comment == '#' && sources.line_text(r.file, 1).rfind("#RADIOSS", 0) == 0) line = 1;
-    return action(title, diagnostic, r.uri,
-                  text_edit(line, 0, line, 0, fmt::format("{} sphdeck: disable-file={}\n", r.comment, code)));
-}
-
-// "Suppress CODE for this card": a `disable=` line just before the finding's line; before a
-// keyword line it silences the whole block.
-nlohmann::json card_suppression(const Request& r, const std::string& code, std::uint32_t line0,
-                                const nlohmann::json& diagnostic) {
-    const auto& raw = r.deck.result.deck;
-    const grammar::Block* block = block_at(raw, r.file, line0 + 1);
-    const bool keyword_line = block && block->span.line == line0 + 1;
-    const std::string title =
-        fmt::format("Suppress {} for this {}", code, keyword_line ? "keyword block" : "card");
-    // A `disable=` directive just above takes the code too.
-    if (line0 > 0) {
-        const std::string_view above = raw.sources.line_text(r.file, line0);
-        if (auto end = directive_end(r, above, line0, lint::Suppression::Scope::NextBlock))
-            return action(title, diagnostic, r.uri, text_edit(line0 - 1, *end, line0 - 1, *end, "," + code));
-    }
-    return action(title, diagnostic, r.uri,
-                  text_edit(line0, 0, line0, 0, fmt::format("{} sphdeck: disable={}\n", r.comment, code)));
-}
 
 // A diag::Fix as LSP edits on this file's text (UTF-16 columns); empty when it edits another file.
 nlohmann::json lsp_edits(const Request& r, const diag::Fix& fix) {
@@ -133,20 +73,23 @@ std::vector<const diag::Diagnostic*> findings_of(const Request& r, const std::st
     return out;
 }
 
-// The mends the finding carries itself (diag::Fix: the same data `check --fix` applies), safe ones
-// preferred.
+// A fix as a quick fix of the editor's diagnostic, safe ones preferred; nullopt when it edits another file.
+std::optional<nlohmann::json> quick_fix(const Request& r, const diag::Fix& fix, const nlohmann::json& diagnostic) {
+    nlohmann::json edits = lsp_edits(r, fix);
+    if (edits.empty()) return std::nullopt;
+    nlohmann::json a = {{"title", title_of(fix)},
+                        {"kind", "quickfix"},
+                        {"diagnostics", nlohmann::json::array({diagnostic})},
+                        {"edit", {{"changes", {{r.uri, std::move(edits)}}}}}};
+    if (fix.safe) a["isPreferred"] = true;
+    return a;
+}
+
+// The mends the finding carries itself (diag::Fix: the same data `check --fix` applies).
 void carried_fixes(const Request& r, const diag::Diagnostic& found, const nlohmann::json& diagnostic,
                    nlohmann::json& out) {
-    for (const diag::Fix& fix : found.fixes) {
-        nlohmann::json edits = lsp_edits(r, fix);
-        if (edits.empty()) continue;
-        nlohmann::json a = {{"title", title_of(fix)},
-                            {"kind", "quickfix"},
-                            {"diagnostics", nlohmann::json::array({diagnostic})},
-                            {"edit", {{"changes", {{r.uri, std::move(edits)}}}}}};
-        if (fix.safe) a["isPreferred"] = true;
-        out.push_back(std::move(a));
-    }
+    for (const diag::Fix& fix : found.fixes)
+        if (auto a = quick_fix(r, fix, diagnostic)) out.push_back(std::move(*a));
 }
 
 // "Fix all safe fixes in this file" (source.fixAll.sphdeck): one round of `check --fix` on this file,
@@ -227,8 +170,11 @@ nlohmann::json code_actions(const CheckedDeck& deck, grammar::FileId file, const
         }
         const lint::RuleInfo* rule = lint::find_rule(code);
         if (!rule || rule->code != code) continue;  // a directive names rules the registry knows
-        add_once(suppressions, card_suppression(r, code, start.line, d));
-        add_once(suppressions, file_suppression(r, code, d));
+        // Suppressing the rule, as fixes too (edit/suppression_fixes.hpp): for the card, for the file.
+        const grammar::RawDeck& raw = deck.result.deck;
+        for (const diag::Fix& fix : {edit::suppress_for_card(raw, file, start.line + 1, code, r.comment),
+                                     edit::suppress_in_file(raw.sources, file, code, r.comment)})
+            if (auto a = quick_fix(r, fix, d)) add_once(suppressions, std::move(*a));
     }
     // The mends first (what the user most likely wants), then the suppressions.
     for (auto& a : fixes) out.push_back(std::move(a));

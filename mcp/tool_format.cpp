@@ -32,7 +32,7 @@ ToolResult run(const Arguments& args, const ToolContext& context) {
     for (const diag::TextEdit& e : formatted.edits)
         if (e.span.file == 0) edits.push_back(e);
     const grammar::SourceFile& file = r.deck.sources.file(0);
-    std::string text = edit::apply_edits(file.text, edits).text;
+    std::string text = text::apply_edits(file.text, edits).text;
     std::string diff = edit::unified_diff(file.display_name, file.text, edits);
     json structured = {{"changed", !edits.empty()},
                        {"lines_changed", edits.size()},

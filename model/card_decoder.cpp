@@ -86,8 +86,7 @@ const CardDecoder::Layout& CardDecoder::layout_of(const keywords::CardSpec& card
     l.significant = keywords::significant_width(card, format);
     // A card that starts with a long text field (title, heading) is never in free format.
     l.text_card = !card.fields.empty() && card.fields[0].type == FieldType::Text && card.fields[0].width >= 70;
-    l.title_card = l.text_card && card.fields.size() == 1 &&
-                   (card.fields[0].is_named("TITLE") || card.fields[0].is_named("HEADING"));
+    l.title_card = l.text_card && card.fields.size() == 1 && keywords::is_title_field(card.fields[0].name);
     l.plain = format == grammar::CardFormat::Standard &&
               std::all_of(card.fields.begin(), card.fields.end(), [](const keywords::FieldSpec& f) {
                   return f.type == FieldType::Integer || f.type == FieldType::Real || f.type == FieldType::Label ||

@@ -1,6 +1,7 @@
-// Which card each line of an LS-DYNA block is read as: model/deck_check.cpp's walk (conditional,
-// optional and repeated cards, repeat groups) without its reports, shared by the position index
-// (engine/position_index.cpp) and the formatter (edit/format_dyna.cpp).
+// Which card each line of an LS-DYNA block is read as (lsdyna-format.md §12): mandatory, optional
+// trailing, conditional (present_if on an earlier field) and repeated cards, or a trailing group of cards
+// repeated together (*PART). The one walk of the cards: the deck check (model/deck_check.cpp), the
+// position index (engine/position_index.cpp) and the formatter (edit/format_dyna.cpp) all follow it.
 #pragma once
 
 #include <cstddef>
@@ -41,13 +42,30 @@ public:
     // After a line was decoded as `card` with `values`.
     void advance(const CardSpec& card, const std::vector<model::FieldValue>& values) {
         if (card.repeat == CardRepeat::Repeated) return;
-        for (const auto& v : values)  // as model/deck_check.cpp: a blank field without default is 0
+        // A blank field without a default compares as 0, like a field not read: a card group read again
+        // (*ELEMENT_SOLID's one- or two-line elements) must not see the last group's value. A value that
+        // is not a number (reported) equals nothing.
+        for (const auto& v : values)
             if (v.spec->type != keywords::FieldType::Text && v.spec->type != keywords::FieldType::Unused)
                 earlier_[std::string(v.spec->name)] = model::condition_value(v);
         ++next_;
     }
     // True when every further line is read as `card`: one repeated card, no group after it.
     bool only_repeats(const CardSpec& card) const { return card.repeat == CardRepeat::Repeated && group_ == 0; }
+
+    // The keyword's cards, in order.
+    const std::vector<const CardSpec*>& cards() const { return cards_; }
+    // After next() gave nullptr: true when the layout is not known from here on (a generated layout's
+    // undecidable card), false when the block has more lines than the keyword has cards.
+    bool layout_unknown() const { return next_ < cards_.size(); }
+    // The card listed after the one next() gave, or nullptr after the last.
+    const CardSpec* card_after() const { return next_ + 1 < cards_.size() ? cards_[next_ + 1] : nullptr; }
+    // When the block has ended: the first mandatory card it ended before (its condition holding), or nullptr.
+    const CardSpec* missing_card() const {
+        for (std::size_t i = next_; i < cards_.size(); ++i)
+            if (cards_[i]->repeat == CardRepeat::Once && applies(*cards_[i])) return cards_[i];
+        return nullptr;
+    }
 
 private:
     bool applies(const CardSpec& card) const {

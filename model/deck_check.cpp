@@ -12,6 +12,7 @@
 #include "grammar/lone_value_shift.hpp"
 #include "grammar/shifted_line.hpp"
 #include "grammar/value.hpp"
+#include "model/card_sequence.hpp"
 #include "model/case_blocks.hpp"
 #include "model/lost_asterisk.hpp"
 #include "model/missing_heading.hpp"
@@ -67,9 +68,8 @@ std::size_t count_particles(const grammar::RawDeck& deck, const grammar::CardLin
     return n;
 }
 
-// Walks the lines of one block against its card sequence (lsdyna-format.md §12): mandatory,
-// optional trailing, conditional (present_if on an earlier field) and repeated cards, or a
-// trailing group of cards repeated together (*PART).
+// Walks the lines of one block against its card sequence (model/card_sequence.hpp), decoding and
+// reporting each line.
 class BlockWalker {
 public:
     BlockWalker(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, const CardVisitor& visit,
@@ -81,34 +81,27 @@ public:
         suspects_.clear();
         lost_.clear();
         heading_ = {};
-        std::vector<const CardSpec*> cards = keywords::cards_for(match);
+        CardSequence sequence(match);
+        const std::vector<const CardSpec*>& cards = sequence.cards();
         if (bulk_ && bulk_->wants(match) && cards.size() == 1 && cards[0]->repeat == CardRepeat::Repeated &&
             !cards[0]->present_if && block.line_count >= bulk_min_lines)
             return walk_in_parallel(block, *cards[0], summary, bound);
-        std::size_t group = keywords::repeat_group_size(match);
-        std::size_t group_start = cards.size() - group;
-        earlier_.clear();
-        std::size_t next = 0;
         const bool particles = block.keyword.rfind("*ELEMENT_SPH", 0) == 0;
         std::size_t walked = 0;
         for (const grammar::CardLine* l = deck_.begin_lines(block); l != deck_.end_lines(block); ++l) {
             if (++walked % trim_lines == 0) bound.trim(out_);
-            while (next < cards.size() && !applies(*cards[next])) ++next;
-            if (next < cards.size() && cards[next]->unknown_layout) {  // generated layout ends here
+            const CardSpec* next = sequence.next();
+            if (!next && sequence.layout_unknown()) {  // generated layout ends here
                 note_lost_in_unread(deck_, block, l, lost_);
                 return;
             }
-            if (next >= cards.size()) {
-                if (group > 0) {
-                    next = group_start;
-                } else {
-                    report_extra(block, *l, cards.size());
-                    return;
-                }
+            if (!next) {
+                report_extra(block, *l, cards.size());
+                return;
             }
-            const CardSpec& card = *cards[next];
+            const CardSpec& card = *next;
             note_lost_asterisk(*l, card.fields.empty() || card.fields[0].type == FieldType::Text);
-            if (!heading_.line && next + 1 < cards.size()) note_missing_heading(block, *l, card, *cards[next + 1]);
+            if (!heading_.line && sequence.card_after()) note_missing_heading(block, *l, card, *sequence.card_after());
             const std::size_t found_before = out_.size();
             decoder_.decode(block, *l, card, values_);
             note_alignment(block, *l, card,
@@ -118,13 +111,12 @@ public:
                          out_.size() > found_before || decoder_.glued() || decoder_.text_past_fields());
             std::optional<diag::Diagnostic> refused;
             if (particles) refused = take_range(values_);
-            if (card.repeat != CardRepeat::Repeated) remember(values_);  // conditions look at header cards
+            sequence.advance(card, values_);  // conditions look at header cards
             if (visit_) visit_(block, match, card, *l, values_);
             if (particles) summary.particles += count_particles(deck_, *l, block.format, values_, out_);
             if (refused) out_.push_back(std::move(*refused));  // last of the line's findings, as in parallel
-            if (card.repeat != CardRepeat::Repeated) ++next;
         }
-        report_missing(block, cards, next);
+        if (const CardSpec* missing = sequence.missing_card()) report_missing(block, *missing);
     }
 
     // The lines the shift diagnosis looks at (model/shift_diagnosis.hpp), filled by walk().
@@ -235,23 +227,6 @@ private:
         return range_error(values[3].span, *problem);
     }
 
-    bool applies(const CardSpec& card) const {
-        if (!card.present_if) return true;
-        return card.present_if->holds_with([&](std::string_view field) {
-            auto it = earlier_.find(std::string(field));
-            return it == earlier_.end() ? 0.0 : it->second;
-        });
-    }
-
-    void remember(const std::vector<FieldValue>& values) {
-        // A blank field without a default compares as 0, like a field not read: a card group read
-        // again (*ELEMENT_SOLID's one- or two-line elements) must not see the last group's value. A
-        // value that is not a number (reported) equals nothing.
-        for (const auto& v : values)
-            if (v.spec->type != keywords::FieldType::Text && v.spec->type != keywords::FieldType::Unused)
-                earlier_[std::string(v.spec->name)] = condition_value(v);
-    }
-
     // Every line of `block` is one `card`: contiguous ranges of lines go to the threads, and their
     // findings are appended range after range, so the order is the same as on one thread.
     void walk_in_parallel(const grammar::Block& block, const CardSpec& card, DeckSummary& summary,
@@ -358,15 +333,10 @@ private:
     }
 
     // A mandatory card the block ended before (optional and repeated cards may be absent).
-    void report_missing(const grammar::Block& block, const std::vector<const CardSpec*>& cards, std::size_t next) {
-        for (std::size_t i = next; i < cards.size(); ++i) {
-            const CardSpec& c = *cards[i];
-            if (c.repeat != CardRepeat::Once || !applies(c)) continue;
-            out_.push_back({"DK008", diag::Severity::Error,
-                            fmt::format("{} is missing its {}", block.keyword, c.name.empty() ? "card" : c.name),
-                            block.span, {}});
-            return;
-        }
+    void report_missing(const grammar::Block& block, const CardSpec& missing) {
+        out_.push_back({"DK008", diag::Severity::Error,
+                        fmt::format("{} is missing its {}", block.keyword, missing.name.empty() ? "card" : missing.name),
+                        block.span, {}});
     }
 
     const grammar::RawDeck& deck_;
@@ -376,7 +346,6 @@ private:
     BulkVisitor* bulk_;
     RangeBudget ranges_{deck_};
     std::vector<FieldValue> values_;
-    std::map<std::string, double> earlier_;
     std::vector<SuspectLine> suspects_;
     std::vector<LostAsteriskLine> lost_;
     HeadingSuspect heading_;

@@ -244,7 +244,7 @@ void extract_record(const KeywordRecord& r, std::size_t index, Model& m) {
 // LS-DYNA puts it in columns 1-10 of the first data card, after the title line of _TITLE.
 bool raw_first_id(const grammar::RawDeck& deck, const grammar::Block& block, Id& id, grammar::Span& span) {
     const grammar::CardLine* line = deck.begin_lines(block);
-    if (block.keyword.find("_TITLE") != std::string::npos) ++line;
+    line += keywords::title_lines(block.keyword);
     if (line >= deck.end_lines(block)) return false;
     std::string_view text = deck.text(*line);
     std::size_t width = block.format == grammar::CardFormat::Long ? 20 : 10;
@@ -266,7 +266,7 @@ struct RawField {
 };
 std::optional<RawField> raw_field(const grammar::RawDeck& deck, const grammar::Block& b, std::string_view id_field,
                                   std::string_view name) {
-    const grammar::CardLine* line = deck.begin_lines(b) + (b.keyword.find("_TITLE") != std::string::npos);
+    const grammar::CardLine* line = deck.begin_lines(b) + keywords::title_lines(b.keyword);
     if (line >= deck.end_lines(b)) return std::nullopt;
     const std::optional<keywords::KeywordMatch> known = keywords::find_keyword(b.keyword);
     if (!known) return std::nullopt;
@@ -312,7 +312,7 @@ long long raw_shell_form(const grammar::RawDeck& deck, const grammar::Block& b) 
 // materials), enough for mass and sound-speed checks but not for SPH119 (has_density stays false).
 Material raw_material(const grammar::RawDeck& deck, const grammar::Block& b, const Id& id, grammar::Span span) {
     Material mat{id, b.keyword, span, {}, std::nullopt, false};
-    const grammar::CardLine* line = deck.begin_lines(b) + (b.keyword.find("_TITLE") != std::string::npos);
+    const grammar::CardLine* line = deck.begin_lines(b) + keywords::title_lines(b.keyword);
     if (line >= deck.end_lines(b)) return mat;
     const std::optional<keywords::KeywordMatch> known = keywords::find_keyword(b.keyword);
     if (!known || known->schema->cards.empty()) {

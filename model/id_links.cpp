@@ -3,6 +3,8 @@
 #include <array>
 #include <cmath>
 
+#include "grammar/keywords/id_kinds.hpp"
+
 namespace sphdeck::model {
 namespace {
 
@@ -64,13 +66,18 @@ std::string_view contact_kind(std::string_view keyword, std::string_view field, 
 }
 
 // Fields pydyna does not link though the manual leaves no doubt: LCID of prescribed motions and
-// loads is a curve (or a *DEFINE_FUNCTION, which the curve definitions include) when positive.
+// loads is a curve (or a *DEFINE_FUNCTION, which the curve definitions include) when positive. Their
+// kind is the one their name gives (keywords::kind_named_by); elsewhere an unlinked field is not judged.
 std::string_view missing_link(std::string_view keyword, std::string_view field) {
     if (field != "LCID") return {};
     for (std::string_view p : {"*BOUNDARY_PRESCRIBED_MOTION", "*LOAD_NODE", "*LOAD_SEGMENT", "*LOAD_BODY_"})
-        if (starts_with(keyword, p)) return "DEFINE_CURVE";
+        if (starts_with(keyword, p)) return keywords::kind_named_by(keyword, field);
     return {};
 }
+
+// The kinds whose definitions the model reads itself (model/extract.cpp) and the REF rules take from it:
+// a field naming one inside a block of its defining family (*PART_MODES' PID) is followed as a reference.
+bool model_reads(std::string_view kind) { return kind == "PART" || kind == "SECTION" || kind == "MAT" || kind == "NODE"; }
 
 // A field of the same card whose name says it is a type or an option may change what kind of
 // entity an id names (*AIRBAG_PARTICLE STYPE1: part or part set, *INITIAL_VELOCITY_GENERATION STYP):
@@ -83,23 +90,6 @@ bool card_has_type_field(const std::vector<FieldValue>& card) {
 
 }  // namespace
 
-bool defines_kind(std::string_view keyword, std::string_view kind) {
-    if (kind == "DEFINE_CURVE" || kind == "DEFINE_CURVE_OR_TABLE")
-        return starts_with(keyword, "*DEFINE_CURVE") || starts_with(keyword, "*DEFINE_TABLE") ||
-               starts_with(keyword, "*DEFINE_FUNCTION");
-    if (kind == "DEFINE_BOX") return starts_with(keyword, "*DEFINE_BOX");
-    if (kind == "DEFINE_VECTOR") return starts_with(keyword, "*DEFINE_VECTOR");
-    if (kind == "DEFINE_COORDINATE_SYSTEM") return starts_with(keyword, "*DEFINE_COORDINATE");
-    if (kind == "DEFINE_TRANSFORMATION") return starts_with(keyword, "*DEFINE_TRANSFORMATION");
-    if (kind == "HOURGLASS") return starts_with(keyword, "*HOURGLASS");
-    if (starts_with(kind, "SET_")) {
-        // *SET_PART, *SET_PART_LIST, _ADD, _GENERATE...: "*" + kind, then the end or an option.
-        const std::size_t n = kind.size() + 1;
-        return keyword.size() >= n && keyword.substr(1, kind.size()) == kind && (keyword.size() == n || keyword[n] == '_');
-    }
-    return false;
-}
-
 std::string_view followed_kind(std::string_view keyword, const keywords::FieldSpec& field,
                                const std::vector<FieldValue>& card, std::string_view& why) {
     why = {};
@@ -108,7 +98,7 @@ std::string_view followed_kind(std::string_view keyword, const keywords::FieldSp
         !starts_with(keyword, "*CONTACT_ENTITY"))
         if (std::string_view kind = contact_kind(keyword, field.name, card, why); !kind.empty()) return kind;
     std::string_view kind = field.refers_to.empty() ? missing_link(keyword, field.name) : field.refers_to;
-    if (kind.empty() || defines_kind(keyword, kind)) return {};
+    if (kind.empty() || (!model_reads(kind) && keywords::defines_kind(keyword, kind))) return {};
     // The data card of *PART_INERTIA, *PART_CONTACT...: the part's own SECID and MID, which REF003
     // and REF004 check with the part (model/extract.cpp reads *PART_ variants as parts).
     if (starts_with(keyword, "*PART") && (kind == "SECTION" || kind == "MAT" || kind == "HOURGLASS")) return {};

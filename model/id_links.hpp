@@ -1,6 +1,7 @@
 // References followed through the generated layouts: the ids that fields of generated keywords
 // name (pydyna's links, FieldSpec::refers_to, plus a few the links miss or a type field decides),
-// collected while the cards are decoded, one per kind and id, for the REF rules.
+// collected while the cards are decoded, one per kind and id, for the REF rules. Which keywords define
+// which kinds is grammar/keywords/id_kinds.hpp's, shared with the editor.
 #pragma once
 
 #include <cstddef>
@@ -29,11 +30,6 @@ struct IdReference {
 // type field where one decides the kind (SURFATYP for SURFA); `why` is set to what decided it.
 std::string_view followed_kind(std::string_view keyword, const keywords::FieldSpec& field,
                                const std::vector<FieldValue>& card, std::string_view& why);
-
-// Whether `keyword` defines ids of `kind` in the first field of its first card: *DEFINE_CURVE...,
-// *DEFINE_TABLE... and *DEFINE_FUNCTION... define "DEFINE_CURVE" ids. False for the kinds the model
-// holds (PART, SECTION, MAT, NODE).
-bool defines_kind(std::string_view keyword, std::string_view kind);
 
 class IdLinkCollector {
 public:

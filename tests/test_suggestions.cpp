@@ -37,6 +37,15 @@ TEST_CASE("suggestions: the typing distance makes a swap cheaper than other edit
     CHECK(grammar::typing_distance("", "abc") == 6);
 }
 
+TEST_CASE("suggestions: one edit distance, a swap costing half an edit, one edit or two") {
+    // Rule names (lint/registry.cpp) count a swap as one edit; command names (cli/suggest.cpp) as two.
+    CHECK(grammar::edit_distance("chekc", "check", grammar::SwapCost::OneEdit) == 1);
+    CHECK(grammar::edit_distance("chekc", "check", grammar::SwapCost::TwoEdits) == 2);
+    CHECK(grammar::edit_distance("fromat", "format", grammar::SwapCost::TwoEdits) == 2);
+    CHECK(grammar::edit_distance("kitten", "sitting", grammar::SwapCost::TwoEdits) == 3);
+    CHECK(grammar::edit_distance("", "lsp", grammar::SwapCost::OneEdit) == 3);
+}
+
 TEST_CASE("suggestions: a bounded distance is the distance up to the bound, and only 'beyond' past it") {
     std::mt19937 rng(7);
     const auto random_name = [&] {

@@ -1,5 +1,6 @@
-// Applying text edits to one file's text: the one applier of the CLI's --fix and --diff, `format`, the
-// engine's re-check of a deck mended (engine/mended_consequences.cpp) and the tests of the editor's edits.
+// Applying text edits to one file's text: the one applier of the CLI's --fix and --diff (edit/fix_session,
+// edit/unified_diff), `format`, and the engine's re-check of a deck mended (engine/mended_consequences).
+// The editor server applies none: it sends the edits, and the editor applies them to its buffer.
 #pragma once
 
 #include <cstddef>

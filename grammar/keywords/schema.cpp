@@ -67,6 +67,12 @@ bool CardCondition::holds(double v) const {
     return false;
 }
 
+bool is_title_field(std::string_view field_name) {
+    return iequals(field_name, "TITLE") || iequals(field_name, "HEADING");
+}
+
+std::size_t title_lines(std::string_view keyword) { return keyword.find("_TITLE") != std::string_view::npos ? 1 : 0; }
+
 bool FieldSpec::is_named(std::string_view n) const {
     if (iequals(name, n)) return true;
     return std::any_of(aliases.begin(), aliases.end(), [&](std::string_view a) { return iequals(a, n); });

@@ -64,6 +64,15 @@ struct FieldSpec {
     const EnumChoice* choice(long long v) const;  // nullptr when v is not one of the choices
 };
 
+// Whether a field of this name (any case) is a title or heading: text naming its entity (a part's HEADING,
+// a _TITLE option's TITLE), never a value. The card decoder keeps its tail, the editor shows it as the
+// entity's name, `sphdeck diff` names blocks by their ids instead.
+bool is_title_field(std::string_view field_name);
+
+// The title lines before a keyword's first card as written: 1 when its name carries the _TITLE option,
+// else 0. For readers of a block's raw lines (the first id of a definition) that decode no cards.
+std::size_t title_lines(std::string_view keyword);
+
 // How often a card occurs in its block.
 enum class CardRepeat : std::uint8_t {
     Once,      // exactly one line, mandatory

@@ -5,6 +5,7 @@
 
 #include "grammar/radioss/deck_reader.hpp"
 #include "grammar/radioss/line_grammar.hpp"
+#include "grammar/deck_files.hpp"
 #include "grammar/file_paths.hpp"
 
 namespace sphdeck::grammar::dyna {
@@ -100,7 +101,7 @@ void read_one(RawDeck& deck, SourceFile file, const fs::path& directory, const R
         one_file = one_file || deck.blocks[b].keyword == "/END/ENGINE";
     // Only a file named as a starter deck (<run>_0000.rad, the name the starter reads) must begin
     // with #RADIOSS STARTER: another name is an include or a fragment (an editor opens those alone).
-    const bool starter_name = ends_with(deck.sources.file(id).display_name, "_0000.rad");
+    const bool starter_name = ends_with(deck.sources.file(id).display_name, radioss_starter_suffix);
     if (!engine && !one_file && starter_name) check_first_line(deck, id);
 }
 
