@@ -135,6 +135,15 @@ bool read_polynomial(const model::RadiossFacts& f, const model::RadiossMaterial&
 
 }  // namespace
 
+// An elastic solid (LAW1, and LAW2 run without its plasticity): pressure from the bulk modulus, as *MAT_ELASTIC.
+void run_elastic(const model::RadiossMaterial& mat, PartSetup& ps) {
+    ps.elastic = ElasticModuli::from_young(mat.young, mat.poisson);
+    ps.eos.kind = EquationOfState::Kind::LinearPolynomial;
+    ps.eos.rho0 = mat.density;
+    ps.eos.c[1] = ps.elastic.bulk;
+    ps.wave_speed = ps.elastic.wave_speed(ps.eos.rho0);
+}
+
 bool read_radioss_part(const model::Model& m, long long id, PartSetup& ps, double& e0, std::vector<Unsupported>& out) {
     ps.id = id;
     e0 = 0;
@@ -191,11 +200,7 @@ bool read_radioss_part(const model::Model& m, long long id, PartSetup& ps, doubl
                 mat->span, true, true);
             return false;
         }
-        ps.elastic = ElasticModuli::from_young(mat->young, mat->poisson);
-        ps.eos.kind = EquationOfState::Kind::LinearPolynomial;
-        ps.eos.rho0 = mat->density;
-        ps.eos.c[1] = ps.elastic.bulk;
-        ps.wave_speed = ps.elastic.wave_speed(ps.eos.rho0);
+        run_elastic(*mat, ps);
         return true;
     }
     case 2:
@@ -204,11 +209,7 @@ bool read_radioss_part(const model::Model& m, long long id, PartSetup& ps, doubl
                              id, mat->keyword, mat->id),
             mat->law_span);
         if (mat->young > 0 && mat->poisson > -1 && mat->poisson < 0.5) {
-            ps.elastic = ElasticModuli::from_young(mat->young, mat->poisson);
-            ps.eos.kind = EquationOfState::Kind::LinearPolynomial;
-            ps.eos.rho0 = mat->density;
-            ps.eos.c[1] = ps.elastic.bulk;
-            ps.wave_speed = ps.elastic.wave_speed(ps.eos.rho0);
+            run_elastic(*mat, ps);
             return true;
         }
         add(out, fmt::format("part {}: {} {} has no E and nu the solver can run", id, mat->keyword, mat->id),
