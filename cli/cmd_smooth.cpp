@@ -18,6 +18,7 @@
 #include "io/vtp_writer.hpp"
 #include "engine/check.hpp"
 #include "preproc/preview.hpp"
+#include "preproc/preview_json.hpp"
 #include "preproc/sph_mesh_box.hpp"
 
 namespace sphdeck::cli {
@@ -124,60 +125,6 @@ void write_plot(const std::string& path, const std::string& deck, const preproc:
     io::write_svg_file(path, panels, options);
 }
 
-std::vector<std::string> split_notes(const std::string& notes) {
-    std::vector<std::string> out;
-    std::size_t start = 0;
-    while (start < notes.size()) {
-        std::size_t end = notes.find("; ", start);
-        if (end == std::string::npos) end = notes.size();
-        out.push_back(notes.substr(start, end - start));
-        start = end + 2;
-    }
-    return out;
-}
-
-nlohmann::ordered_json stats_json(const preproc::Stats& s) {
-    return {{"min", s.min}, {"median", s.median}, {"max", s.max}};
-}
-
-// The Radioss additions (docs/json.md, docs/radioss.md): one object per part, one per deck.
-nlohmann::ordered_json radioss_part_json(const preproc::RadiossPartPreview& r) {
-    return {{"property", r.property},
-            {"mp", r.mp},
-            {"property_h", r.property_h},
-            {"h_1d", r.h_1d},
-            {"hcst", r.hcst},
-            {"h_rule", r.h_rule},
-            {"h_evolution", r.h_evolution},
-            {"h", {{"min", r.h_smallest}, {"median", r.h_median}, {"max", r.h_largest}}},
-            {"cells", {{"from_property", r.cells_from_property}, {"with_mass", r.cells_with_mass},
-                       {"with_volume", r.cells_with_volume}}},
-            {"mass_before_symmetry", r.mass_before},
-            {"mass_after_symmetry", r.mass_after},
-            {"on_planes", r.on_planes},
-            {"ghosts", r.ghosts},
-            {"ghosts_coded", r.ghosts_coded},
-            {"qa", r.qa},
-            {"qb", r.qb},
-            {"dt_particle", r.dt_particle},
-            {"dt_nodal", r.dt_nodal}};
-}
-
-nlohmann::ordered_json radioss_json(const preproc::RadiossPreview& r) {
-    nlohmann::ordered_json planes = nlohmann::ordered_json::array();
-    for (const preproc::RadiossPlanePreview& p : r.planes)
-        planes.push_back({{"id", p.id}, {"type", p.type}, {"origin", p.origin}, {"normal", p.normal},
-                          {"on_plane", p.on_plane}, {"ghosts", p.ghosts}, {"ghosts_coded", p.ghosts_coded}});
-    return {{"alpha_sort", r.alpha_sort},
-            {"h_max", r.h_max},
-            {"dt_scale_particle", r.dt_scale_particle},
-            {"dt_scale_nodal", r.dt_scale_nodal},
-            {"nodal", r.nodal},
-            {"engine_deck", r.engine_deck},
-            {"planes", std::move(planes)},
-            {"unknown_planes", r.unknown_planes}};
-}
-
 // "file:line" of a *DEFINE_SPH_MESH_BOX keyword ("" when unknown).
 std::string box_location(const engine::CheckResult& r, const preproc::MeshBox& b) {
     return b.span.valid() ? fmt::format("{}:{}", r.deck.sources.file(b.span.file).display_name, b.span.line) : "";
@@ -197,28 +144,7 @@ nlohmann::ordered_json mesh_boxes_json(const engine::CheckResult& r, const prepr
 
 nlohmann::ordered_json to_json(const SmoothArgs& args, const preproc::Preview& p) {
     nlohmann::ordered_json parts = nlohmann::ordered_json::array();
-    for (const preproc::PartPreview& pv : p.parts) {
-        parts.push_back({{"part", pv.part},
-                         {"particles", pv.particles},
-                         {"mass_total", pv.mass_total},
-                         {"mass_median", pv.mass_median},
-                         {"density", pv.density},
-                         {"spacing", pv.spacing},
-                         {"h0", pv.h0},
-                         {"h_min", pv.h_min},
-                         {"h_max", pv.h_max},
-                         {"support", pv.support},
-                         {"nn_distance", stats_json(pv.nn_distance)},
-                         {"neighbours", stats_json(pv.neighbours)},
-                         {"sound_speed", pv.sound_speed},
-                         {"sound_source", pv.sound_source},
-                         {"dt_estimate", pv.dt_estimate},
-                         {"dt_radioss", pv.dt_radioss},
-                         {"ini", static_cast<int>(pv.ini)},
-                         {"sphini_given", pv.sphini_given},
-                         {"notes", split_notes(pv.notes)}});
-        if (pv.radioss) parts.back()["radioss"] = radioss_part_json(*pv.radioss);
-    }
+    for (const preproc::PartPreview& pv : p.parts) parts.push_back(preproc::part_preview_json(pv));
     nlohmann::ordered_json out = {{"version", SPHDECK_VERSION},
             {"deck", args.deck},
             {"dimension", p.dimension},
@@ -227,7 +153,7 @@ nlohmann::ordered_json to_json(const SmoothArgs& args, const preproc::Preview& p
             {"coincident_pairs", p.coincident.size()},
             {"neighbour_sample_stride", p.neighbour_sample_stride},
             {"parts", std::move(parts)}};
-    if (p.radioss) out["radioss"] = radioss_json(*p.radioss);
+    if (p.radioss) out["radioss"] = preproc::radioss_preview_json(*p.radioss);
     return out;
 }
 
@@ -289,7 +215,7 @@ void print_text(const SmoothArgs& args, const preproc::Preview& p, bool control_
                "HMAX*h0;\nneighbours: min/median/max particles within the kernel support; dt: TSSFAC*h0/c, "
                "'-' when the sound speed c is unknown\n");
     for (const preproc::PartPreview& pv : p.parts)
-        for (const std::string& note : split_notes(pv.notes)) fmt::print("part {}: {}\n", pv.part, note);
+        for (const std::string& note : preproc::split_notes(pv.notes)) fmt::print("part {}: {}\n", pv.part, note);
     if (!p.coincident.empty())
         fmt::print("warning: {} pair(s) of particles at the same position\n", p.coincident.size());
     if (p.radioss) print_radioss(p);

@@ -4,40 +4,12 @@
 
 #include "mcp/deck_input.hpp"
 #include "preproc/preview.hpp"
+#include "preproc/preview_json.hpp"
 #include "preproc/sph_mesh_box.hpp"
 
 namespace sphdeck::mcp {
 namespace {
 using json = nlohmann::json;
-
-json stats(const preproc::Stats& s) { return {{"min", s.min}, {"median", s.median}, {"max", s.max}}; }
-
-json part_json(const preproc::PartPreview& p) {
-    json notes = json::array();
-    for (std::size_t start = 0; start < p.notes.size();) {  // "a; b" -> ["a", "b"], as `smooth --format json`
-        std::size_t end = p.notes.find("; ", start);
-        if (end == std::string::npos) end = p.notes.size();
-        notes.push_back(p.notes.substr(start, end - start));
-        start = end + 2;
-    }
-    return {{"part", p.part},
-            {"particles", p.particles},
-            {"mass_total", p.mass_total},
-            {"density", p.density},
-            {"spacing", p.spacing},
-            {"h0", p.h0},
-            {"h_min", p.h_min},
-            {"h_max", p.h_max},
-            {"support", p.support},
-            {"nn_distance", stats(p.nn_distance)},
-            {"neighbours", stats(p.neighbours)},
-            {"sound_speed", p.sound_speed},
-            {"sound_source", p.sound_source},
-            {"dt_estimate", p.dt_estimate},
-            {"dt_radioss", p.dt_radioss},
-            {"ini", static_cast<int>(p.ini)},
-            {"notes", std::move(notes)}};
-}
 
 ToolResult run(const Arguments& args, const ToolContext& context) {
     const DeckInput deck = deck_input(args, context);
@@ -57,7 +29,7 @@ ToolResult run(const Arguments& args, const ToolContext& context) {
         preview = std::make_shared<const preproc::Preview>(preproc::compute_preview(model, preview_options));
     }
     json parts = json::array();
-    for (const preproc::PartPreview& p : preview->parts) parts.push_back(part_json(p));
+    for (const preproc::PartPreview& p : preview->parts) parts.push_back(json(preproc::part_preview_json(p)));
     json structured = {{"dimension", preview->dimension},
                        {"particles", model.particles.size()},
                        {"coincident_pairs", preview->coincident.size()},
