@@ -65,7 +65,7 @@ FixRound choose_fixes(const grammar::SourceMap& sources, const std::vector<diag:
             const grammar::Span& s = e.span;
             if (!s.valid() || s.file >= sources.size() || s.line == 0 || s.line > sources.line_count(s.file) ||
                 s.column == 0 || s.end_column < s.column ||
-                e.replacement.find_first_of("\r\n") != std::string::npos) {
+                (level == FixLevel::Safe && e.replacement.find_first_of("\r\n") != std::string::npos)) {
                 usable = false;
                 break;
             }

@@ -25,15 +25,16 @@ struct FixRound {
     std::map<std::string, std::vector<diag::TextEdit>> edits;  // canonical path -> edits, spans of that file
     std::size_t fixes = 0;     // findings whose fix is taken (findings sharing one fix are each counted)
     std::size_t deferred = 0;  // fixes that touch the text of one taken before: the next round tries them again
-    std::size_t unusable = 0;  // fixes that name no file, or whose replacement holds a line break
+    std::size_t unusable = 0;  // fixes that name no file, or (at the safe level) whose replacement holds a line break
 };
 
 // Chooses whole fixes, in the findings' order: a fix is taken when none of its edits overlaps an edit
 // already taken on the same file (an identical edit, the same fix seen through a second include of
 // the file, is not an overlap and is kept once). The files are told apart by their canonical path
 // (grammar::canonical_path), so a file included twice, by one name or by two (a symbolic link), gets
-// its edits once. Fixes are one-line replacements; a replacement holding a line break
-// would change the lines the next findings name, and is not applied.
+// its edits once. The edits of one round are all placed on the text as it was checked, so a
+// replacement holding a line break (an inserted line: DK032's blank heading) renumbers nothing the
+// round's other edits name; it is taken only at the Unsafe level: adding a line is a judgement.
 FixRound choose_fixes(const grammar::SourceMap& sources, const std::vector<diag::Diagnostic>& diagnostics,
                       FixLevel level);
 

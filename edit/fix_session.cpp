@@ -51,12 +51,33 @@ FixOutcome fix_deck(const std::string& path, engine::Documents& documents, const
 std::vector<diag::TextEdit> line_edits_between(std::string_view original, std::string_view fixed) {
     std::vector<diag::TextEdit> edits;
     const text::LineIndex before(original), after(fixed);
-    if (before.count() != after.count()) return edits;
-    for (std::uint32_t line = 1; line <= before.count(); ++line) {
-        const std::string_view a = original.substr(before.begin(line), before.content_end(line) - before.begin(line));
-        const std::string_view b = fixed.substr(after.begin(line), after.content_end(line) - after.begin(line));
-        if (a == b) continue;
-        edits.push_back(text::whole_line_edit(0, line, a.size(), std::string(b)));
+    const std::uint32_t n = before.count(), m = after.count();
+    if (m < n) return edits;  // fixes never remove a line
+    const auto old_line = [&](std::uint32_t line) {
+        return original.substr(before.begin(line), before.content_end(line) - before.begin(line));
+    };
+    const auto new_line = [&](std::uint32_t line) {
+        return fixed.substr(after.begin(line), after.content_end(line) - after.begin(line));
+    };
+    // Each old line becomes one new line or more (lines a fix inserted above it): where an old line
+    // differs from the next new line, the fewest inserted lines after which the next old line reads
+    // again are given to it.
+    for (std::uint32_t i = 1, j = 1; i <= n; ++i) {
+        const std::uint32_t spare = (m - j) - (n - i);  // new lines not yet given to an old one
+        std::uint32_t taken = 0;
+        if (i == n) {
+            taken = spare;
+        } else if (spare > 0 && old_line(i) != new_line(j)) {
+            for (std::uint32_t k = 0; k <= spare; ++k)
+                if (new_line(j + 1 + k) == old_line(i + 1)) {
+                    taken = k;
+                    break;
+                }
+        }
+        const std::string_view a = old_line(i);
+        const std::string_view b = fixed.substr(after.begin(j), after.content_end(j + taken) - after.begin(j));
+        if (a != b) edits.push_back(text::whole_line_edit(0, i, a.size(), std::string(b)));
+        j += taken + 1;
     }
     return edits;
 }

@@ -36,8 +36,9 @@ inline constexpr std::size_t max_fix_rounds = 10;
 FixOutcome fix_deck(const std::string& path, engine::Documents& documents, const engine::CheckOptions& options,
                     FixLevel level, std::size_t max_rounds = max_fix_rounds);
 
-// Per-line edits that turn `original` into `fixed` when both have the same number of lines (fixes
-// never add or remove a line), for edit::unified_diff; each changed line is replaced whole.
+// Per-line edits that turn `original` into `fixed`, for edit::unified_diff; each changed line is
+// replaced whole, a line a fix inserted (DK032's blank heading) joins the old line below it. None when
+// `fixed` has fewer lines (fixes never remove a line).
 std::vector<diag::TextEdit> line_edits_between(std::string_view original, std::string_view fixed);
 
 }  // namespace sphdeck::edit

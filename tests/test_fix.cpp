@@ -10,6 +10,7 @@
 #include "edit/fix_session.hpp"
 #include "grammar/radioss/reader.hpp"
 #include "grammar/tab_expansion.hpp"
+#include "text/apply_edits.hpp"
 #include "lint/registry.hpp"
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
@@ -64,7 +65,7 @@ TEST_CASE("fix: a round takes whole fixes that do not overlap; a file included t
         finding(1, 1, 1, 5, "LINE"),   // the same fix through the second include: applied once
         finding(0, 1, 3, 7, "XXXX"),   // overlaps the first: the next round
         finding(1, 2, 6, 9, "TWO"),    // another line of the same file, named through the second instance
-        finding(0, 2, 1, 1, "\n"),     // a line break would renumber the lines the others name
+        finding(0, 2, 1, 1, "\n"),     // an inserted line: a judgement, taken at the unsafe level only
         finding(0, 1, 6, 9, "ONE", false),  // unsafe: not at the safe level
     };
     edit::FixRound round = edit::choose_fixes(sources, found, edit::FixLevel::Safe);
@@ -76,8 +77,9 @@ TEST_CASE("fix: a round takes whole fixes that do not overlap; a file included t
     CHECK(round.edits.begin()->second.size() == 2);
 
     round = edit::choose_fixes(sources, found, edit::FixLevel::Unsafe);
-    CHECK(round.fixes == 4);
-    CHECK(round.edits.begin()->second.size() == 3);
+    CHECK(round.fixes == 5);
+    CHECK(round.unusable == 0);
+    CHECK(round.edits.begin()->second.size() == 4);
 }
 
 TEST_CASE("fix: a fix is taken whole or not at all") {
@@ -131,6 +133,39 @@ TEST_CASE("fix: the lines between two texts, as whole-line edits for the diff") 
     CHECK(edits[0].replacement == "BB");
     CHECK(edits[1].span.line == 3);
     CHECK(edits[1].replacement == "C");
+}
+
+TEST_CASE("fix: lines a fix inserted join the old line below them in the diff's edits") {
+    // A line inserted above line 2, line 4 changed, a line inserted above the last line.
+    const std::string original = "a\r\nb\r\nc\r\nd\r\ne\r\n";
+    const std::string fixed = "a\r\n\r\nb\r\nc\r\nD\r\nnew\r\ne\r\n";
+    const auto edits = edit::line_edits_between(original, fixed);
+    REQUIRE(edits.size() == 2);
+    CHECK(edits[0].span.line == 2);
+    CHECK(edits[0].replacement == "\r\nb");
+    CHECK(edits[1].span.line == 4);  // a changed line takes the inserted lines up to the next old one
+    CHECK(edits[1].replacement == "D\r\nnew");
+    CHECK(text::apply_edits(original, edits).text == fixed);
+    CHECK(edit::line_edits_between("a\nb\n", "a\n").empty());  // fixes never remove a line
+}
+
+TEST_CASE("fix: DK032's blank heading is inserted by --unsafe-fixes only") {
+    test::TempDir dir;
+    const std::string deck = dir.write("part.k", slurp(fs::path(SPHDECK_SOURCE_DIR) / "decks/tests/dk/DK032_fires.k"));
+    engine::Documents safe_documents;
+    edit::FixOutcome outcome = edit::fix_deck(deck, safe_documents, {}, edit::FixLevel::Safe);
+    CHECK(outcome.files.empty());
+    CHECK(test::count_code(outcome.remaining.diagnostics, "DK032") == 1);
+
+    engine::Documents documents;
+    outcome = edit::fix_deck(deck, documents, {}, edit::FixLevel::Unsafe);
+    REQUIRE(outcome.files.size() == 1);
+    const std::string& fixed = outcome.files[0].fixed;
+    CHECK(fixed.find("$ expect: DK032\n\n         1         1         1         1\n") != std::string::npos);
+    CHECK(test::count_code(outcome.remaining.diagnostics, "DK032") == 0);
+    for (const auto& d : outcome.remaining.diagnostics) CHECK(d.severity == diag::Severity::Info);
+    CHECK(text::apply_edits(outcome.files[0].original,
+                            edit::line_edits_between(outcome.files[0].original, fixed)).text == fixed);
 }
 
 TEST_CASE("fix: DK016's tab expanded only when the layout it shows is certain") {
