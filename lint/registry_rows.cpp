@@ -225,8 +225,8 @@ constexpr RuleInfo kRows[] = {
      Fixable::Safe, Layout::Doubtful},
     {"RAD040", "starter-value-check", Error, "0.1.0", "starter",
      {"lint/rules_radioss_starter.cpp", "rad"},
-     "a material value the OpenRadioss starter's reader rejects (A <= 0 in LAW2, E <= 0, a density <= 0...), with "
-     "the starter's message id; a card the block lacks reads as blanks"},
+     "a material, EOS or property value the OpenRadioss starter's reader rejects (A <= 0 in LAW2, E <= 0, a density "
+     "<= 0, K0 <= 0 in /EOS/MURNAGHAN...), with the starter's message id; a card the block lacks reads as blanks"},
     {"RAD042", "th-selection-undefined", Error, "0.1.0", "starter",
      {"lint/rules_radioss_th.cpp", "rad"},
      "a /TH selection id that no entity of its keyword's kind has (node, SPH cell, shell, brick...: starter error "

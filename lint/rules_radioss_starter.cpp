@@ -1,5 +1,5 @@
 // RAD040: the OpenRadioss starter's own value checks (lint/starter_checks.hpp), at the field the
-// starter rejects: each /MAT block whose law the table knows is read again through the law's
+// starter rejects: each /MAT, /EOS or /PROP block whose reader the table knows is read again through its
 // layout for the deck's version, with the reader's defaults applied before the test, as the
 // starter does. A card the block does not hold reads as blanks, as the starter reads it: its
 // finding goes on the block's last line and names the missing card.
@@ -135,7 +135,8 @@ private:
 
     void report(grammar::Span at, std::string message, const StarterCheck& check) {
         diag::Diagnostic& d = c_.report("RAD040", at, std::move(message));
-        d.notes.push_back({grammar::Span{}, fmt::format("OpenRadioss starter/source/materials/mat/{}", check.source)});
+        d.notes.push_back(
+            {grammar::Span{}, fmt::format("OpenRadioss starter/source/{}/{}", reader_folder(law_), check.source)});
     }
 
     RuleContext& c_;
@@ -159,7 +160,9 @@ bool in_engine_file(const grammar::RawDeck& deck, const grammar::Block& block) {
 void check_starter_values(RuleContext& c) {
     const int version = c.model.radioss->version;
     for (const grammar::Block& block : c.deck.blocks) {
-        if (!block.keyword.starts_with("/MAT/")) continue;
+        if (!block.keyword.starts_with("/MAT/") && !block.keyword.starts_with("/EOS/") &&
+            !block.keyword.starts_with("/PROP/"))
+            continue;
         const StarterLaw* law = starter_law_of(block.keyword);
         if (!law || in_engine_file(c.deck, block)) continue;
         const rad::FormatSpec* format = format_of(*law, version);

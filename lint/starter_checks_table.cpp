@@ -1,6 +1,8 @@
 // The starter's value checks, law by law (lint/starter_checks.hpp says where they come from).
-// Paths are under starter/source/materials/mat/ of OpenRadioss (AGPL-3.0) at commit
-// bd4557ba7503a277d3be5b50e1c64e8a12e0c53f; message texts from starter_message_description.txt.
+// Paths are under starter/source/ of OpenRadioss (AGPL-3.0) at commit
+// bd4557ba7503a277d3be5b50e1c64e8a12e0c53f (materials/mat/, materials/eos/ or properties/, by the row's
+// family: reader_folder); message texts from starter_message_description.txt; the hand-written layouts
+// from the CFG files of hm_cfg_files/config/CFG/radiossNNNN/MAT/ (law51_Iflag_10.cfg, mat_EOS.cfg).
 #include <algorithm>
 #include <limits>
 
@@ -23,6 +25,8 @@ bool allowed(Allowed a, double v) {
         case Allowed::AtMostOne: return v <= 1;
         case Allowed::ZeroToHalf: return v >= 0 && v < 0.5;
         case Allowed::AtMostHundred: return v <= 100;
+        case Allowed::AboveOne: return v > 1;
+        case Allowed::NotNegative: return v >= 0;
     }
     return true;
 }
@@ -36,8 +40,17 @@ std::string_view expected(Allowed a) {
         case Allowed::AtMostOne: return "<= 1";
         case Allowed::ZeroToHalf: return ">= 0 and < 0.5";
         case Allowed::AtMostHundred: return "<= 100";
+        case Allowed::AboveOne: return "> 1";
+        case Allowed::NotNegative: return ">= 0";
     }
     return "";
+}
+
+std::string_view reader_folder(const StarterLaw& law) {
+    const std::string_view name = law.names.front();
+    if (name.starts_with("/EOS/")) return "materials/eos";
+    if (name.starts_with("/PROP/")) return "properties";
+    return "materials/mat";
 }
 
 namespace {
@@ -83,6 +96,49 @@ std::vector<rad::FormatSpec> law2_layout() {
         {0, {once({R("MAT_RHO")}), once({R("MAT_E"), R("MAT_NU")}), abn,
              once({R("MAT_SRC"), R("MAT_SRP"), I("STRFLAG")}), thermal, opaque()}},
     };
+}
+
+CardSpec when(std::string_view condition, std::initializer_list<FieldSpec> fields) {
+    CardSpec c = once(fields);
+    c.when = c.condition = condition;
+    return c;
+}
+
+// /MAT/LAW51 with Iform 10 (law51_Iflag_10.cfg of radioss51 to radioss130; Iform 10 stops the starter
+// from 2023 on, message 75): the generated layout stops after the Iform card, the rest being a
+// sub-object. Three phases of six cards, then the explosive's three; IBFRAC since 130.
+std::vector<rad::FormatSpec> law51_layout() {
+    constexpr std::string_view iform10 = "MAT_Iflag=10";
+    std::vector<CardSpec> cards = {once({R("MAT_RHO"), R("Refer_Rho")}), once({I("MAT_Iflag")}),
+                                   when(iform10, {R("PEXT"), R("MAT_NU"), R("MAT_Lamda")})};
+    for (int phase = 0; phase < 3; ++phase) {
+        cards.push_back(when(iform10, {R("MAT_ALPHA_Iflg10_phas"), R("MAT_RHO_Iflg10_phas"), R("MAT_E_Iflg10_phas"),
+                                       R("MAT_P_Iflg10_phas"), R("MAT_C0_Iflg10_phas")}));
+        cards.push_back(when(iform10, {R("MAT_C1_Iflg10_phas"), R("MAT_C2_Iflg10_phas"), R("MAT_C3_Iflg10_phas"),
+                                       R("MAT_C4_Iflg10_phas"), R("MAT_C5_Iflg10_phas")}));
+        cards.push_back(when(iform10, {R("MLAW51_G10"), R("Sigma_Y10"), R("BB10"), R("LAW51_N10")}));
+        cards.push_back(when(iform10, {R("CC10"), R("e010")}));
+        cards.push_back(when(iform10, {R("CM10"), R("T10_10"), R("T_melt10"), R("T_limit10"), R("Rhocv10")}));
+        cards.push_back(when(iform10, {R("E_max10"), R("sigma_max10"), R("K_A1"), R("K_B1")}));
+    }
+    cards.push_back(when(iform10, {R("MLAW51_ALPHA"), R("MLAW51_Rho"), R("MLAW51_E0"), R("MLAW51_Pmin"),
+                                   R("MLAW51_C0")}));
+    cards.push_back(when(iform10, {R("MLAW51_B1"), R("MLAW51_B2"), R("MLAW51_R1"), R("MLAW51_R2"), R("MLAW51_W")}));
+    cards.push_back(when(iform10, {R("MLAW51_D"), R("MLAW51_PCJ"), R("MLAW51_C14"), S(), I("MAT_IBFRAC")}));
+    cards.push_back(opaque());  // the other forms' cards
+    rad::FormatSpec format;
+    format.since = 0;
+    format.cards = std::move(cards);
+    return {format};
+}
+
+// An EOS of one card (mat_EOS.cfg, radioss2018 to radioss2612: the same cells; Refer_Rho, fifth in
+// 2018 to 2024, is read but never tested here).
+std::vector<rad::FormatSpec> eos_layout(std::initializer_list<FieldSpec> fields) {
+    rad::FormatSpec format;
+    format.since = 0;
+    format.cards = {once(fields), opaque()};
+    return {format};
 }
 
 std::vector<StarterLaw> build() {
@@ -155,6 +211,54 @@ std::vector<StarterLaw> build() {
                       "mat070/hm_read_mat70.F:152"}}});
     // LAW80 (hm_read_mat80.F): the density only here.
     laws.push_back({{"/MAT/LAW80"}, "mat080/hm_read_mat80.F", {density()}});
+    // LAW51 (hm_read_mat51.F), Iform 10: an explosive phase (its density given) needs C14 and D. A line
+    // deleted from the block leaves its last card blank: message 99 on the block's last line. The reader
+    // returns after the first of the two, so D is tested only when C14 passes.
+    constexpr std::string_view explosive = "MAT_Iflag=10&MLAW51_Rho>0";
+    laws.push_back({{"/MAT/LAW51", "/MAT/MULTIMAT"},
+                    "mat051/hm_read_mat51.F",
+                    {{"MLAW51_C14", "C14", Allowed::Positive, 0.0, explosive, 99,
+                      "BULK MODULUS C14 MUST BE PROVIDED FOR UNREACTED EXPLOSIVE", "mat051/hm_read_mat51.F:786"},
+                     {"MLAW51_D", "D", Allowed::Positive, 0.0, "MAT_Iflag=10&MLAW51_Rho>0&MLAW51_C14>0", 99,
+                      "DETONATION VELOCITY MUST BE INPUT FOR EXPLOSIVE SUBMATERIAL", "mat051/hm_read_mat51.F:791"}},
+                    law51_layout()});
+
+    // EOS (materials/eos/hm_read_eos_*.F): message 67 "ERROR IN EOS DEFINITION" with its own text.
+    laws.push_back({{"/EOS/MURNAGHAN"},
+                    "hm_read_eos_murnaghan.F",
+                    {{"EOS_K0", "K0", Allowed::Positive, 0.0, {}, 67, "K0 MUST BE POSITIVE",
+                      "hm_read_eos_murnaghan.F:102"}},
+                    eos_layout({R("EOS_K0"), R("K1"), R("LAW5_P0"), R("LAW5_PSH"), R("Refer_Rho")})});
+    laws.push_back({{"/EOS/STIFF-GAS"},
+                    "hm_read_eos_stiffened_gas.F",
+                    {{"Gamma", "Gamma", Allowed::AboveOne, 0.0, {}, 67, "GAMMA MUST BE GREATER THAN 1.0",
+                      "hm_read_eos_stiffened_gas.F:112"}},
+                    eos_layout({R("Gamma"), R("LAW5_P0"), R("LAW5_PSH"), R("P_star"), R("Refer_Rho")})});
+    laws.push_back({{"/EOS/IDEAL-GAS", "/EOS/IDEAL-GAS-VE"},
+                    "hm_read_eos_ideal_gas.F",
+                    {{"Gamma", "Gamma", Allowed::AboveOne, 0.0, {}, 67,
+                      "SPECIFIC HEAT RATIO (GAMMA) MUST BE GREATER THAN 1.0", "hm_read_eos_ideal_gas.F:135"},
+                     {"LAW5_P0", "P0", Allowed::Positive, 0.0, {}, 67, "INITIAL PRESSURE MUST BE POSITIVE",
+                      "hm_read_eos_ideal_gas.F:129"}},
+                    eos_layout({R("Gamma"), R("LAW5_P0"), R("LAW5_PSH"), R("T_Initial"), R("Refer_Rho")})});
+    // NASG: Gamma second on its first card in every format (b, Gamma, P_star, E0 in 2612).
+    laws.push_back({{"/EOS/NASG"},
+                    "hm_read_eos_nasg.F",
+                    {{"Gamma_Constant", "Gamma", Allowed::AboveOne, 0.0, {}, 67, "GAMMA MUST BE GREATER THAN 1.0",
+                      "hm_read_eos_nasg.F:117"}},
+                    eos_layout({R("b_Covolume"), R("Gamma_Constant")})});
+
+    // /PROP/TYPE6 (properties/solid/hm_read_prop06.F): an orthotropy of REFPLANE 23 or 24 needs a vector V.
+    // Its other errors name ids (1037 SPHPART_ID, 137 the skew: the REF rules) or depend on /DEF_SOLID (563).
+    // /PROP/TYPE14 (hm_read_prop14.F: 1037, 131, 563) and /PROP/TYPE34 (hm_read_prop34.F: 137; MASS <= 0
+    // is warning 138) have no value check of one field; they have no row.
+    const auto null_vector = [](std::string_view plane) {
+        return StarterCheck{"Vx", "V", Allowed::NotZero, 0.0, plane, 1918,
+                            "INVALID ZERO REFERENCE VECTOR WITH IP=23 OR 24", "solid/hm_read_prop06.F:418"};
+    };
+    laws.push_back({{"/PROP/TYPE6", "/PROP/SOL_ORTH"},
+                    "solid/hm_read_prop06.F",
+                    {null_vector("REFPLANE=23&Vy=0&Vz=0"), null_vector("REFPLANE=24&Vy=0&Vz=0")}});
     return laws;
 }
 

@@ -49,7 +49,15 @@ const rad::FormatSpec& newest(const StarterLaw& law) {
 }
 
 // A value each check accepts, and one past its bound.
-double good(Allowed a) { return a == Allowed::ZeroToOne || a == Allowed::AtMostOne ? 0.5 : a == Allowed::ZeroToHalf ? 0.3 : 1.0; }
+double good(Allowed a) {
+    switch (a) {
+        case Allowed::ZeroToOne:
+        case Allowed::AtMostOne: return 0.5;
+        case Allowed::ZeroToHalf: return 0.3;
+        case Allowed::AboveOne: return 1.4;
+        default: return 1.0;
+    }
+}
 double bad(Allowed a) {
     switch (a) {
         case Allowed::Positive: return -1.0;
@@ -59,20 +67,23 @@ double bad(Allowed a) {
         case Allowed::AtMostOne: return 1.5;
         case Allowed::ZeroToHalf: return 0.5;
         case Allowed::AtMostHundred: return 101.0;
+        case Allowed::AboveOne: return 1.0;
+        case Allowed::NotNegative: return -1.0;
     }
     return 0.0;
 }
 
-// "MAT_SRC!0&MAT_Iflag=1" → values that make it hold.
+// "MAT_SRC!0&MAT_Iflag=1&MLAW51_Rho>0" → values that make it hold.
 void satisfy(std::string_view condition, std::map<std::string, double>& values) {
     while (!condition.empty()) {
         const std::size_t amp = condition.find('&');
         const std::string_view part = condition.substr(0, amp);
-        const std::size_t op = part.find_first_of("=!");
+        const std::size_t op = part.find_first_of("=!>");
         const std::string name(part.substr(0, op));
         const double number = std::stod(std::string(part.substr(op + 1)));
         if (part[op] == '=') values[name] = number;
-        else if (values[name] == number) values[name] = number + 1;
+        else if (part[op] == '>' && values[name] <= number) values[name] = number + 1;
+        else if (part[op] == '!' && values[name] == number) values[name] = number + 1;
         condition = amp == std::string_view::npos ? std::string_view{} : condition.substr(amp + 1);
     }
 }
@@ -191,4 +202,34 @@ TEST_CASE("starter checks: the shipped SOL2SPH deck passes, and fires without it
     rho.replace(rho.find("              7.8E-6"), 20, "             -7.8E-6");
     CHECK(lines_of(check(rho), "SPH119").size() == 1);
     CHECK(lines_of(check(rho), "RAD040").empty());
+}
+
+TEST_CASE("starter checks: a line deleted from a /MAT/LAW51 Iform 10 is message 99 on the block's last line") {
+    const std::string whole = slurp(SPHDECK_SOURCE_DIR "/decks/tests/rad/RAD040_silent_law51_eos.rad");
+    CHECK(lines_of(check(whole), "RAD040").empty());
+    const std::size_t block = whole.find("/MAT/LAW51/1\n");
+    const std::size_t end = whole.find("/MAT/LAW6/2\n");
+    REQUIRE(block != std::string::npos);
+    // The block's value lines (not comments), after its header and title.
+    std::vector<std::size_t> values;
+    for (std::size_t at = whole.find('\n', whole.find('\n', block) + 1) + 1; at < end;
+         at = whole.find('\n', at) + 1)
+        if (whole[at] != '#') values.push_back(at);
+    REQUIRE(values.size() == 24);
+    // From the third card (P_EXT) on, every deletion leaves the last card (D, PCJ, C14) blank.
+    for (std::size_t k = 2; k < values.size(); ++k) {
+        std::string deck = whole;
+        deck.erase(values[k], whole.find('\n', values[k]) + 1 - values[k]);
+        const auto r = check(deck);
+        // The block's last value line (a comment line may follow it).
+        std::size_t last = deck.rfind('\n', deck.find("/MAT/LAW6/2\n") - 1);
+        while (deck[deck.rfind('\n', last - 1) + 1] == '#') last = deck.rfind('\n', last - 1);
+        const std::uint32_t last_line = static_cast<std::uint32_t>(std::count(deck.begin(), deck.begin() + last, '\n') + 1);
+        INFO("card " << k + 1 << " deleted");
+        CHECK(lines_of(r, "RAD040") == std::multiset<std::uint32_t>{last_line});
+        const diag::Diagnostic* d = test::find_code(r.diagnostics, "RAD040");
+        REQUIRE(d);
+        CHECK(d->message.find("starter message 99") != std::string::npos);
+        CHECK(d->message.find("ends before card") != std::string::npos);
+    }
 }
