@@ -82,7 +82,10 @@ private:
     RawDeck& deck_;
     const ReaderOptions& options_;
     std::deque<OpenFile> stack_;  // deque: an include pushed while a caller holds current()
-    std::vector<std::filesystem::path> canonical_paths_;  // per FileId, for cycle detection
+    // Per FileId, for cycle detection: asked of the system only when an include is found (canonical_of),
+    // since a deck read from a buffer with no include would pay several system calls for nothing.
+    std::vector<std::filesystem::path> canonical_paths_;
+    const std::filesystem::path& canonical_of(FileId file);
     std::filesystem::path main_directory_;
     std::vector<std::filesystem::path> include_paths_;
     std::vector<std::string> include_path_origins_;  // per include path: the option or card that gave it

@@ -24,6 +24,12 @@ std::string_view trim(std::string_view s, std::size_t* leading = nullptr) {
 }
 }  // namespace
 
+const std::filesystem::path& DeckReader::canonical_of(FileId file) {
+    if (canonical_paths_.size() <= file) canonical_paths_.resize(file + 1);
+    if (canonical_paths_[file].empty()) canonical_paths_[file] = canonical_path(deck_.sources.file(file).path);
+    return canonical_paths_[file];
+}
+
 void DeckReader::handle_keyword_line_arguments(const Block& block) {
     KeywordArguments args = parse_keyword_arguments(block.arguments);
     args.span = block.span;
@@ -104,7 +110,7 @@ void DeckReader::open_include(const std::string& name, Span where, char suffix) 
     }
     const std::filesystem::path canonical = canonical_path(resolved->path);  // the same file by any path
     for (const OpenFile& open : stack_) {
-        if (canonical_paths_[open.id] == canonical) {
+        if (canonical_of(open.id) == canonical) {
             report("DK011", diag::Severity::Error,
                    "include cycle: '" + name + "' is already being read (" + deck_.sources.file(open.id).display_name +
                        ")",

@@ -100,8 +100,6 @@ RawDeck read_main(SourceFile main, const std::filesystem::path& directory, const
 void DeckReader::read(FileId file, CardFormat inherited_format, const FileCache::File* cached) {
     const SourceFile& source = deck_.sources.file(file);
     deck_.parameters.add_file(file, source.parent);
-    if (canonical_paths_.size() <= file) canonical_paths_.resize(file + 1);
-    canonical_paths_[file] = canonical_path(source.path);
     ++deck_.stats.files;
     deck_.stats.bytes += source.text.size();
     FileCache::Lookup shared;

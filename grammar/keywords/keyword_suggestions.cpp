@@ -5,6 +5,7 @@
 #include <cctype>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "grammar/keywords/generated_layouts.hpp"
@@ -165,12 +166,24 @@ std::vector<std::string_view> similar_keywords(std::string_view name, std::size_
 std::optional<std::string> suggest_keyword(std::string_view name) {
     const std::string key = key_of(name);
     if (key.size() < 2) return std::nullopt;
+    // The answers of this thread, by key: a deck checked again (the editor at each keystroke, a fuzzer
+    // mutating one byte) asks again for the same unknown names, and each answer weighs the name
+    // against every known one. Bounded: emptied when full.
+    constexpr std::size_t max_remembered = 4096;
+    thread_local std::unordered_map<std::string, std::optional<std::string>> remembered;
+    if (const auto it = remembered.find(key); it != remembered.end()) return it->second;
+    std::optional<std::string> answer;
     std::size_t checked = 0;
     for (const Candidate& c : candidates_for(key)) {
         if (++checked > 50) break;  // the closest few decide; the rest are farther anyway
-        if (known_as_written(c.text)) return c.text;
+        if (known_as_written(c.text)) {
+            answer = c.text;
+            break;
+        }
     }
-    return std::nullopt;
+    if (remembered.size() >= max_remembered) remembered.clear();
+    remembered.emplace(key, answer);
+    return answer;
 }
 
 std::string keyword_replacement(std::string_view written_name, std::string_view suggestion) {

@@ -33,6 +33,12 @@ bool blank(std::string_view s) { return trim(s).empty(); }
 DeckReader::DeckReader(RawDeck& deck, const ReaderOptions& options, std::filesystem::path main_directory)
     : deck_(deck), options_(options), main_directory_(std::move(main_directory)) {}
 
+const std::filesystem::path& DeckReader::canonical_of(FileId file) {
+    if (canonical_.size() <= file) canonical_.resize(file + 1);
+    if (canonical_[file].empty()) canonical_[file] = canonical_path(deck_.sources.file(file).path);
+    return canonical_[file];
+}
+
 void DeckReader::report(const char* code, diag::Severity severity, std::string message, Span span) {
     deck_.diagnostics.push_back(diag::Diagnostic{code, severity, std::move(message), span, {}});
 }
@@ -184,7 +190,7 @@ void DeckReader::on_include(const char* begin, const char* end, std::string_view
     }
     const std::filesystem::path canonical = canonical_path(resolved->path);  // the same file by any path
     for (const OpenFile& open : stack_) {
-        if (canonical_[open.id] == canonical) {
+        if (canonical_of(open.id) == canonical) {
             report("DK011", diag::Severity::Error,
                    "include cycle: '" + file_name + "' is already being read (" +
                        deck_.sources.file(open.id).display_name + ")",

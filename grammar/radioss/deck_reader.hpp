@@ -53,7 +53,10 @@ private:
     const ReaderOptions& options_;
     std::filesystem::path main_directory_;
     std::deque<OpenFile> stack_;
-    std::vector<std::filesystem::path> canonical_;  // per FileId, for cycle detection
+    // Per FileId, for cycle detection: asked of the system only when an include is found (canonical_of),
+    // since a deck read from a buffer with no include would pay several system calls for nothing.
+    std::vector<std::filesystem::path> canonical_;
+    const std::filesystem::path& canonical_of(FileId file);
     // The open block. A block's cards come from its own file: the starter skips an #include
     // line while it reads one keyword, and finds the included file's blocks by their headers
     // (reader/source/cfgio/MODEL_IO/meci_read_model_base.cpp: includes are not followed in

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "grammar/radioss/generated_layouts.hpp"
@@ -207,9 +208,17 @@ std::optional<std::string> suggest_keyword(std::string_view name) {
         out.erase(std::unique(out.begin(), out.end()), out.end());
         return out;
     }();
+    // Remembered per thread, as keywords::suggest_keyword does: a deck checked again asks again.
+    constexpr std::size_t max_remembered = 4096;
+    thread_local std::unordered_map<std::string, std::optional<std::string>> remembered;
+    const std::string key(name);
+    if (const auto it = remembered.find(key); it != remembered.end()) return it->second;
     auto best = closest_names(name, names);
-    if (best.empty()) return std::nullopt;
-    return best.front();
+    std::optional<std::string> answer;
+    if (!best.empty()) answer = std::string(best.front());
+    if (remembered.size() >= max_remembered) remembered.clear();
+    remembered.emplace(key, answer);
+    return answer;
 }
 
 }  // namespace sphdeck::grammar::radioss

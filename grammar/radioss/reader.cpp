@@ -160,8 +160,6 @@ bool is_engine_file_name(std::string_view name) {
 void DeckReader::read(FileId file) {
     const SourceFile& source = deck_.sources.file(file);
     deck_.parameters.add_file(file, source.parent);
-    if (canonical_.size() <= file) canonical_.resize(file + 1);
-    canonical_[file] = canonical_path(source.path);
     ++deck_.stats.files;
     deck_.stats.bytes += source.text.size();
 
