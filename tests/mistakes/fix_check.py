@@ -58,12 +58,16 @@ def carries_fix(sphdeck, path, include, targets, unsafe):
 
 
 def new_findings(host, plant, found, path):
-    """Errors and warnings of the fixed mutant that the original does not have (lines mapped)."""
+    """Errors and warnings of the fixed mutant that the original does not have (lines mapped: through the
+    plant's map, unless the fix gave the file back the original's line count, as DK032's inserted heading
+    does for a deleted one)."""
     mine, real = os.path.realpath(host.copy), os.path.realpath(path)
+    with open(host.copy, "rb") as a, open(path, "rb") as b:
+        restored_lines = a.read().count(b"\n") == b.read().count(b"\n")
     before = collections.Counter()
     for file, line, code, severity, _ in host.found:
         if file == mine:
-            line = plant.line_map(line)
+            line = line if restored_lines else plant.line_map(line)
             if line is None:
                 continue
             file = real
