@@ -516,7 +516,7 @@ TEST_CASE("lsp features: the server's table answers every feature and announces 
                             "documentSymbolProvider", "foldingRangeProvider", "codeActionProvider"})
         CHECK(capabilities.contains(key));
     const auto deck = check(kDeck);
-    CHECK_FALSE(lsp::answer_feature("textDocument/rename", deck, 0, nlohmann::json::object()).handled);
+    CHECK_FALSE(lsp::answer_feature("textDocument/typeDefinition", deck, 0, nlohmann::json::object()).handled);
     // A request without a position is answered, with nothing.
     CHECK(ask(deck, "textDocument/hover", nlohmann::json::object()).is_null());
     CHECK(ask(deck, "textDocument/definition", {{"position", "x"}}).is_null());
