@@ -338,10 +338,10 @@ RenamePlan plan_rename(const CheckResult& deck, const RenameTarget& target, std:
         }
         std::size_t start = value_start, end = value_end;
         std::string new_value = value;
-        if (parameter && slot->fixed) {
+        if (parameter && slot->fixed && !slot->free_format) {
             // The whole value of the field changes: "&pid" is "-&pid" or "R pid" there.
             const std::size_t field_end = std::min(slot->start + slot->width, text.size());
-            if (slot->free_format || value_start < slot->start || value_end > field_end) {
+            if (value_start < slot->start || value_end > field_end) {
                 new_value = value;
             } else {
                 const std::string_view field = text.substr(slot->start, field_end - slot->start);
@@ -353,7 +353,8 @@ RenamePlan plan_rename(const CheckResult& deck, const RenameTarget& target, std:
                             std::string(text.substr(value_end, end - value_end));
             }
         }
-        if (slot->fixed && text.substr(slot->start, slot->width).find('\t') != std::string_view::npos) {
+        if (slot->fixed && !slot->free_format && slot->start < text.size() &&
+            text.substr(slot->start, slot->width).find('\t') != std::string_view::npos) {
             plan.refusal = fmt::format("a tab at {} makes its columns ambiguous: not renamed", where(sources, span));
             plan.edits.clear();
             return plan;
