@@ -1,5 +1,6 @@
 // bench_lsp_features: how long the editor server's request features take on a checked deck
-// (hover, definition, references, completion, outline, folding, semantic tokens, inlay hints),
+// (hover, definition, references, completion, outline, folding, semantic tokens, inlay hints,
+// rename, document links, code lens),
 // medians of several runs.
 //
 //   bench_lsp_features DECK [RUNS]      (RUNS defaults to 5)
@@ -77,6 +78,10 @@ int main(int argc, char** argv) {
         params["settings"] = {{"bulkBlocks", true}};
         return params;
     };
+    auto renamed = [](nlohmann::json params, const char* name) {
+        params["newName"] = name;
+        return params;
+    };
     struct Request {
         const char* what;
         const char* method;
@@ -100,13 +105,27 @@ int main(int argc, char** argv) {
         {"inlayHint, 60 lines mid particles (off there)", "textDocument/inlayHint", lines(middle, middle + 60)},
         {"inlayHint, 60 lines mid particles, bulkBlocks", "textDocument/inlayHint", bulk(middle, middle + 60)},
         {"inlayHint, first 200 lines", "textDocument/inlayHint", lines(0, 200)},
+        // Issue 45: rename the part (its *PART line and every particle's PID), the section (two fields).
+        {"rename, the part (every particle's PID)", "textDocument/rename", renamed(at(part_card, 9), "9")},
+        {"rename, the part's SECID", "textDocument/rename", renamed(at(part_card, 19), "99")},
+        {"prepareRename, a particle's PID", "textDocument/prepareRename", at(middle, 15)},
+        {"documentLink", "textDocument/documentLink", nlohmann::json::object()},
+        {"codeLens (particles counted)", "textDocument/codeLens", nlohmann::json::object()},
     };
     std::printf("%-45s %10s  %s\n", "request", "median ms", "answer");
     for (const auto& r : requests) {
         nlohmann::json result;
-        const double ms = median_ms(runs, [&] { result = sphdeck::lsp::answer_feature(r.method, deck, 0, r.params).result; });
+        const double ms = median_ms(runs, [&] {
+            try {
+                result = sphdeck::lsp::answer_feature(r.method, deck, 0, r.params).result;
+            } catch (const sphdeck::lsp::FeatureError& e) {  // a refused rename: its reason is the answer
+                result = nlohmann::json::array({e.what()});
+            }
+        });
         std::string answer = result.is_array() ? std::to_string(result.size()) + " items"
                              : result.is_null() ? "null"
+                             : result.contains("changes") && !result["changes"].empty()
+                                 ? std::to_string(result["changes"].begin()->size()) + " edits"
                              : result.contains("data") ? std::to_string(result["data"].size() / 5) + " tokens"
                                                 : "object";
         std::printf("%-45s %10.2f  %s\n", r.what, ms, answer.c_str());

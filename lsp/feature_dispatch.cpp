@@ -41,7 +41,11 @@ nlohmann::json folding_of(const CheckedDeck& deck, grammar::FileId file, const n
 }
 
 // One row a feature.
-constexpr std::array<FeatureRow, 14> kFeatures{{
+nlohmann::json rename_of(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json& params) {
+    return rename(deck, file, params);
+}
+
+constexpr std::array<FeatureRow, 18> kFeatures{{
     {"textDocument/hover", "hoverProvider", at_position<hover>},
     {"textDocument/definition", "definitionProvider", at_position<definition>},
     {"textDocument/references", "referencesProvider", references_of},
@@ -56,6 +60,10 @@ constexpr std::array<FeatureRow, 14> kFeatures{{
     {"textDocument/signatureHelp", "signatureHelpProvider", at_position<signature_help>},
     {"textDocument/formatting", "documentFormattingProvider", formatting},
     {"textDocument/rangeFormatting", "documentRangeFormattingProvider", range_formatting},
+    {"textDocument/prepareRename", "renameProvider", at_position<prepare_rename>},
+    {"textDocument/rename", "renameProvider", rename_of},
+    {"textDocument/documentLink", "documentLinkProvider", document_links},
+    {"textDocument/codeLens", "codeLensProvider", code_lenses},
 }};
 }  // namespace
 
@@ -74,6 +82,10 @@ nlohmann::json feature_capabilities() {
     capabilities["codeActionProvider"] = {{"codeActionKinds", {"quickfix", "source.fixAll.sphdeck"}}};
     // Typing a card line: blanks align a value, commas separate free-format ones.
     capabilities["signatureHelpProvider"] = {{"triggerCharacters", {" ", ","}}};
+    capabilities["renameProvider"] = {{"prepareProvider", true}};
+    capabilities["documentLinkProvider"] = {{"resolveProvider", false}};
+    capabilities["codeLensProvider"] = {{"resolveProvider", false}};
+    capabilities["workspaceSymbolProvider"] = true;  // answered by the server across decks (workspace_symbols)
     capabilities["semanticTokensProvider"] = {
         {"legend", semantic_tokens_legend()}, {"range", true}, {"full", {{"delta", true}}}};
     return capabilities;

@@ -3,15 +3,20 @@
 // there is nothing to say). The server (lsp/server.*) finds the deck and the file a request is
 // about, then calls these; they never read a file or write to the client.
 // One file per feature: lsp/feature_hover.cpp, feature_definition.cpp, feature_completion.cpp,
-// feature_symbols.cpp, feature_folding.cpp, feature_code_actions.cpp, feature_formatting.cpp.
+// feature_symbols.cpp, feature_folding.cpp, feature_code_actions.cpp, feature_formatting.cpp,
+// feature_rename.cpp, feature_document_links.cpp, feature_code_lens.cpp, feature_workspace_symbols.cpp.
 #pragma once
 
+#include <stdexcept>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "text/source_map.hpp"
 #include "lsp/checked_deck.hpp"
+#include "lsp/json_rpc.hpp"
 #include "lsp/text_position.hpp"
 
 namespace sphdeck::lsp {
@@ -67,6 +72,31 @@ nlohmann::json signature_help(const CheckedDeck& deck, grammar::FileId file, Tex
 // TextEdit[]; textDocument/rangeFormatting: those on the lines of params.range.
 nlohmann::json formatting(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json& params);
 nlohmann::json range_formatting(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json& params);
+
+// textDocument/prepareRename: the id or `&name` under the cursor ({"range", "placeholder"}), null
+// when there is none; textDocument/rename (params.newName): a WorkspaceEdit of every id field that
+// names it, in every file of the deck (engine/id_rename.hpp). A refused rename (a new id too wide
+// for a field, one that exists) throws FeatureError with the reason.
+nlohmann::json prepare_rename(const CheckedDeck& deck, grammar::FileId file, TextPosition position);
+nlohmann::json rename(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json& params);
+
+// textDocument/documentLink: the file names of the file's include lines, each linked to the file the
+// check read for it. DocumentLink[].
+nlohmann::json document_links(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json& params);
+
+// textDocument/codeLens: "used by N" on each definition the file holds. CodeLens[] (resolved).
+nlohmann::json code_lenses(const CheckedDeck& deck, grammar::FileId file, const nlohmann::json& params);
+
+// workspace/symbol: the definitions of every deck matching `query` (symbol_matches). SymbolInformation[].
+nlohmann::json workspace_symbols(const std::vector<const CheckedDeck*>& decks, std::string_view query);
+// Whether a symbol `name` matches a workspace/symbol query: its characters in order, any case.
+bool symbol_matches(std::string_view query, std::string_view name);
+
+// A request a feature understood but cannot carry out: answered with this JSON-RPC error.
+struct FeatureError : std::runtime_error {
+    FeatureError(int error_code, const std::string& message) : std::runtime_error(message), code(error_code) {}
+    int code;
+};
 
 // The feature requests by method name, for the server: it finds the deck and the file that a
 // request's textDocument names, then asks here. `handled` is false for a method no feature answers

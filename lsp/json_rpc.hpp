@@ -28,6 +28,7 @@ inline constexpr int invalid_params = -32602;
 inline constexpr int internal_error = -32603;
 inline constexpr int server_not_initialized = -32002;
 inline constexpr int request_cancelled = -32800;
+inline constexpr int request_failed = -32803;  // a valid request the server cannot carry out (a refused rename)
 }  // namespace error_code
 
 // 1 GiB: the didOpen of a 10-million-particle deck (about 1 GB of text) still fits; beyond, the

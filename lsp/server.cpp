@@ -19,12 +19,13 @@ struct RpcError {
 };
 
 // The document requests the features answer; with no deck reading the file their answer is null.
-constexpr std::array<std::string_view, 14> kDocumentFeatures = {
+constexpr std::array<std::string_view, 18> kDocumentFeatures = {
     "textDocument/hover",          "textDocument/definition",   "textDocument/references",
     "textDocument/completion",     "textDocument/documentSymbol", "textDocument/foldingRange",
     "textDocument/codeAction",     "textDocument/semanticTokens/full", "textDocument/semanticTokens/full/delta",
     "textDocument/semanticTokens/range", "textDocument/inlayHint", "textDocument/signatureHelp",
-    "textDocument/formatting",     "textDocument/rangeFormatting"};
+    "textDocument/formatting",     "textDocument/rangeFormatting", "textDocument/prepareRename",
+    "textDocument/rename",         "textDocument/documentLink", "textDocument/codeLens"};
 
 // The "inlayHints" object of initializationOptions or of didChangeConfiguration's settings, also
 // under a "sphdeck" section; null when there is none.
@@ -176,12 +177,17 @@ void Server::handle_request(const nlohmann::json& id, const std::string& method,
             shut_down_ = true;
         } else if (method.rfind("textDocument/", 0) == 0) {
             result = document_request(method, params);
+        } else if (method == "workspace/symbol") {
+            workspace_.flush();  // answers read the buffers as they are now
+            result = workspace_symbols(workspace_.checked_decks(), string_member(params, "query"));
         } else {
             throw RpcError{error_code::method_not_found, "Method not found: " + method};
         }
         send(response(id, std::move(result)));
     } catch (const RpcError& e) {
         send(error_response(id, e.code, e.message));
+    } catch (const FeatureError& e) {
+        send(error_response(id, e.code, e.what()));
     } catch (const std::exception& e) {
         log(method + ": " + e.what());
         send(error_response(id, error_code::internal_error, std::string("Internal error: ") + e.what()));

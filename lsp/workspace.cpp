@@ -296,4 +296,10 @@ std::vector<fs::path> Workspace::deck_mains() const {
     return out;
 }
 
+std::vector<const CheckedDeck*> Workspace::checked_decks() const {
+    std::vector<const CheckedDeck*> out;
+    for (const Deck& deck : decks_) out.push_back(&deck.checked);
+    return out;
+}
+
 }  // namespace sphdeck::lsp

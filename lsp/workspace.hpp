@@ -55,6 +55,9 @@ public:
     };
     std::optional<Located> locate(const std::filesystem::path& path) const;
 
+    // Every deck checked now (workspace/symbol), in the order they were first checked. Call flush() first.
+    std::vector<const CheckedDeck*> checked_decks() const;
+
     // The text of an open document (tests).
     const std::string* text(const std::string& uri) const;
     // The main files of the decks checked now, in the order they were first checked (tests).

@@ -516,7 +516,7 @@ TEST_CASE("lsp features: the server's table answers every feature and announces 
                             "documentSymbolProvider", "foldingRangeProvider", "codeActionProvider"})
         CHECK(capabilities.contains(key));
     const auto deck = check(kDeck);
-    CHECK_FALSE(lsp::answer_feature("textDocument/rename", deck, 0, nlohmann::json::object()).handled);
+    CHECK_FALSE(lsp::answer_feature("textDocument/typeDefinition", deck, 0, nlohmann::json::object()).handled);
     // A request without a position is answered, with nothing.
     CHECK(ask(deck, "textDocument/hover", nlohmann::json::object()).is_null());
     CHECK(ask(deck, "textDocument/definition", {{"position", "x"}}).is_null());
@@ -588,6 +588,7 @@ TEST_CASE("lsp features: every request on every line of the test decks answers v
         std::size_t failed = 0;
         for (grammar::FileId file = 0; file < sources.size(); ++file) {
             const std::uint32_t lines = sources.line_count(file);
+            int renames = 0;
             for (std::uint32_t line = 0; line <= lines; ++line)
                 for (std::uint32_t character : {0u, 9u, 19u, 200u}) {
                     const nlohmann::json params = {{"position", {{"line", line}, {"character", character}}},
@@ -601,8 +602,25 @@ TEST_CASE("lsp features: every request on every line of the test decks answers v
                             ++failed;
                         }
                     }
+                    // Rename: a refusal is a FeatureError with its reason; a few renames a file are carried out.
+                    try {
+                        auto prepared = lsp::answer_feature("textDocument/prepareRename", deck, file, params);
+                        failed += !prepared.handled || prepared.result.dump().empty();
+                        if (!prepared.result.is_null() && renames < 3) {
+                            ++renames;
+                            nlohmann::json with_name = params;
+                            with_name["newName"] = "77";
+                            auto renamed = lsp::answer_feature("textDocument/rename", deck, file, with_name);
+                            failed += !renamed.result.contains("changes");
+                        }
+                    } catch (const lsp::FeatureError& e) {
+                        failed += std::string(e.what()).empty();
+                    } catch (const std::exception&) {
+                        ++failed;
+                    }
                 }
-            for (const char* method : {"textDocument/documentSymbol", "textDocument/foldingRange"})
+            for (const char* method : {"textDocument/documentSymbol", "textDocument/foldingRange",
+                                       "textDocument/documentLink", "textDocument/codeLens"})
                 try {
                     failed += lsp::answer_feature(method, deck, file, nlohmann::json::object()).result.dump().empty();
                 } catch (const std::exception&) {

@@ -1,7 +1,8 @@
 -- The editor test of issue 16: Debian's Neovim, headless, with editors/neovim/lua/sphdeck.lua, talks
 -- to `sphdeck lsp`: open a deck with a known finding, wait for its diagnostic, hover a field, ask
 -- for semantic tokens and inlay hints (issue 29), fix the
--- finding with an edit, wait for the diagnostic to go, shut the server down.
+-- finding with an edit, wait for the diagnostic to go; then on a deck with an include (issue 45):
+-- document links, workspace symbols, code lens and a rename across the include; shut the server down.
 --   SPHDECK=build/sphdeck nvim --headless --clean -u tests/editor/neovim_lsp_test.lua
 -- (tests/editor/run_neovim_test.sh sets it up.) Exit 0 on success; otherwise a printed reason and
 -- exit 1 (a check failed) or 3 (the global time limit passed). Every wait is bounded.
@@ -214,6 +215,68 @@ say(("inlay hints: %d, ENDTIM and ENDCYC named"):format(#hints))
 vim.api.nvim_buf_set_lines(buf, 5, 6, false, { "     0.002     10000" })
 wait_for("the DK002 diagnostic to go after the fix", function() return dk002() == nil end)
 say("diagnostic gone after the edit")
+
+-- 3b. Issue 45: a deck with an include (tests/editor/rename_main.k): document links, workspace symbols,
+-- code lens, and a rename across the include applied as Neovim applies it (the buffers change, nothing
+-- is saved); a new id too wide for its field is refused with the reason.
+local main_deck = source_dir .. "/tests/editor/rename_main.k"
+local section_deck = source_dir .. "/tests/editor/rename_section.k"
+vim.cmd("edit " .. vim.fn.fnameescape(main_deck))
+local main_buf = vim.api.nvim_get_current_buf()
+wait_for("the server to attach to rename_main.k", function()
+  local clients = vim.lsp.get_clients and vim.lsp.get_clients({ bufnr = main_buf }) or vim.lsp.buf_get_clients(main_buf)
+  for _, client in pairs(clients) do
+    if client.id == client_id then return true end
+  end
+  return false
+end)
+local function ask_main(method, request_params)
+  local answers, ask_err = vim.lsp.buf_request_sync(main_buf, method, request_params, math.min(5000, remaining_ms()))
+  if not answers or not answers[client_id] then
+    fail("no answer to " .. method .. ": " .. tostring(ask_err))
+  end
+  return answers[client_id]
+end
+local main_document = { uri = vim.uri_from_bufnr(main_buf) }
+local links = ask_main("textDocument/documentLink", { textDocument = main_document }).result
+if not links or #links ~= 1 or links[1].target ~= vim.uri_from_fname(section_deck) or links[1].range.start.line ~= 4 then
+  fail("document links of rename_main.k: " .. vim.inspect(links))
+end
+say("document link: " .. links[1].target)
+local symbols = ask_main("workspace/symbol", { query = "sect" }).result or {}
+local found_section = false
+for _, s in ipairs(symbols) do
+  if s.name == "SECTION 3" and s.location.uri == vim.uri_from_fname(section_deck) then found_section = true end
+end
+if not found_section then
+  fail("workspace symbols for 'sect' do not list SECTION 3 of the include: " .. vim.inspect(symbols))
+end
+say(("workspace symbols: %d for 'sect'"):format(#symbols))
+local lenses = ask_main("textDocument/codeLens", { textDocument = main_document }).result or {}
+local lens_titles = {}
+for _, l in ipairs(lenses) do table.insert(lens_titles, l.command and l.command.title or "?") end
+if #lenses ~= 2 or lens_titles[1] ~= "used by 0" or lens_titles[2] ~= "used by 1" then
+  fail("code lenses of rename_main.k (PART 1, MAT 5): " .. vim.inspect(lens_titles))
+end
+say("code lens: " .. table.concat(lens_titles, ", "))
+local secid = { textDocument = main_document, position = { line = 8, character = 19 } }
+local refused = ask_main("textDocument/rename", vim.tbl_extend("force", secid, { newName = "12345678901" }))
+if not refused.error or not refused.error.message:find("does not fit the 10-column field SECID", 1, true) then
+  fail("a too wide id was not refused with its reason: " .. vim.inspect(refused))
+end
+say("rename refused: " .. refused.error.message)
+local renamed = ask_main("textDocument/rename", vim.tbl_extend("force", secid, { newName = "42" }))
+if renamed.error or not renamed.result then
+  fail("rename answered " .. vim.inspect(renamed))
+end
+vim.lsp.util.apply_workspace_edit(renamed.result, "utf-16")
+local section_buf = vim.fn.bufnr(section_deck)
+local part_line = vim.api.nvim_buf_get_lines(main_buf, 8, 9, false)[1]
+local section_line = section_buf > 0 and vim.api.nvim_buf_get_lines(section_buf, 3, 4, false)[1] or nil
+if part_line ~= "         1        42         5" or section_line ~= "        42       1.2" then
+  fail(("rename across the include gave %q and %q"):format(tostring(part_line), tostring(section_line)))
+end
+say("renamed section 3 to 42 in rename_main.k and its include")
 
 -- 4. Shutdown and exit: the server must end by itself with exit code 0.
 vim.lsp.stop_client(client_id)
