@@ -3,7 +3,7 @@
 #include <doctest/doctest.h>
 
 #include "engine/check.hpp"
-#include "engine/id_index.hpp"
+#include "engine/id_lookup.hpp"
 #include "grammar/keywords/id_kinds.hpp"
 #include "test_support.hpp"
 

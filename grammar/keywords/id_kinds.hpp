@@ -1,5 +1,5 @@
 // Which fields define or name which kind of id, declared once beside the layouts: read by the REF rules
-// (model/id_links.cpp, lint/rules_references_links.cpp) and by the editor's id look-ups (engine/id_index.cpp:
+// (model/id_links.cpp, lint/rules_references_links.cpp) and by the editor's id look-ups (engine/id_lookup.cpp:
 // definition, references, hover, completion, semantic tokens), so the two cannot disagree. Kinds are
 // spelled like the generated layouts' links (FieldSpec::refers_to): "PART", "SECTION", "MAT", "EOS",
 // "HOURGLASS", "SET_NODE", "SET_PART", "DEFINE_CURVE", "DEFINE_BOX"...

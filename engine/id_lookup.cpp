@@ -1,4 +1,4 @@
-#include "engine/id_index.hpp"
+#include "engine/id_lookup.hpp"
 
 #include <algorithm>
 #include <array>
