@@ -3,7 +3,9 @@
 // read, so an id the rules accept as defined is one the editor goes to, and one they reject it cannot find.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "engine/check.hpp"
 #include "grammar/radioss/id_kinds.hpp"
@@ -166,7 +168,8 @@ TEST_CASE("radioss id kinds: go to the definition of a table, sensor, frame, smo
     CHECK(definition_line(deck, temp, 8) == static_cast<int>(line_of(kDeck, "/TABLE/1/13")));
     CHECK(definition_line(deck, temp, 18) == static_cast<int>(line_of(kDeck, "/SENSOR/TIME/5")));
     CHECK(definition_line(deck, temp, 28) == static_cast<int>(line_of(kDeck, "/GRNOD/NODE/6")));
-    CHECK(definition_line(deck, line_of(kDeck, "        14"), 8) == static_cast<int>(line_of(kDeck, "/FUNCT_SMOOTH/14")));
+    CHECK(definition_line(deck, line_of(kDeck, "        14"), 8) ==
+          static_cast<int>(line_of(kDeck, "/FUNCT_SMOOTH/14")));
     const std::uint32_t acc = line_of(kDeck, "        12         X");
     CHECK(definition_line(deck, acc, 8) == static_cast<int>(line_of(kDeck, "/FUNCT/12")));
     CHECK(definition_line(deck, acc, 28) == static_cast<int>(line_of(kDeck, "/FRAME/FIX/3")));  // a skew id

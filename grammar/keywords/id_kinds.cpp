@@ -99,7 +99,8 @@ std::string_view kind_named_by(std::string_view keyword, std::string_view field)
 }
 
 std::optional<IdRole> id_role(std::string_view keyword, const FieldSpec& field) {
-    if (field.type == FieldType::Unused || (field.type == FieldType::Real && !field.pydyna_integer)) return std::nullopt;
+    const bool integer = field.type != FieldType::Real || field.pydyna_integer;
+    if (field.type == FieldType::Unused || !integer) return std::nullopt;
     if (const IdDefinition* d = defining_field(keyword, field.name)) return IdRole{d->kind, true};
     if (!field.refers_to.empty()) return IdRole{id_space(field.refers_to), false};
     const std::string_view kind = kind_named_by(keyword, field.name);

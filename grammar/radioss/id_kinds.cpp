@@ -91,7 +91,8 @@ constexpr std::array<NameAlias, 10> kAliases{{
 constexpr std::array<std::string_view, 2> kNotIds{"MAT_IDEL", "MAT_IDAM"};
 
 bool all_digits(std::string_view s) {
-    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+    const auto digit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
+    return !s.empty() && std::all_of(s.begin(), s.end(), digit);
 }
 
 }  // namespace
