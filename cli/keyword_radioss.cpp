@@ -7,6 +7,7 @@
 
 #include "grammar/radioss/cell_names.hpp"
 #include "grammar/radioss/generated_layouts.hpp"
+#include "grammar/radioss/id_kinds.hpp"
 #include "grammar/radioss/keyword_lookup.hpp"
 
 namespace sphdeck::cli {
@@ -40,17 +41,8 @@ int columns_version(const rad::KeywordSpec& keyword, std::size_t k) {
 
 // What a generated cell's id names (FieldSpec::link).
 std::string link_note(char link) {
-    switch (link) {
-        case 'F': return "id of a /FUNCT or /TABLE";
-        case 'S': return "id of a /SENSOR";
-        case 'Y': return "id of a /SKEW or /FRAME";
-        case 'G': return "id of a /GRNOD";
-        case 'U': return "id of a /SURF";
-        case 'M': return "id of a /MAT";
-        case 'P': return "id of a /PROP";
-        case 'C': return "id of a /PART";
-    }
-    return {};
+    const std::string_view defined_by = rad::defined_by(rad::linked_kind(link));
+    return defined_by.empty() ? std::string() : fmt::format("id of a {}", defined_by);
 }
 
 std::string card_notes(const rad::KeywordSpec& keyword, const rad::FormatSpec& format, std::size_t i) {

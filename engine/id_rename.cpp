@@ -7,7 +7,7 @@
 #include <tuple>
 
 #include "engine/field_at_column.hpp"
-#include "engine/id_index.hpp"
+#include "engine/id_lookup.hpp"
 #include "engine/position_index.hpp"
 #include "grammar/fields.hpp"
 #include "grammar/value.hpp"

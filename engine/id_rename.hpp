@@ -1,4 +1,4 @@
-// Renaming an id (a part, section, material, EOS, set, curve, node... of engine/id_index.hpp) or a
+// Renaming an id (a part, section, material, EOS, set, curve, node... of engine/id_lookup.hpp) or a
 // *PARAMETER name everywhere the deck and its includes name it: the same places references finds.
 // Only the id fields change, and each keeps its columns: a fixed-format value stays right-aligned
 // (or left-aligned, as written) within its field, a free-format value is replaced where it stands.

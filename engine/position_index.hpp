@@ -1,6 +1,6 @@
 // The position index, "what is under this position": the block of a file line, the card line of a
 // block, and the card spec and decoded fields of that line, for LS-DYNA and Radioss decks. The editor's
-// features (hover, completion, definition, code actions) ask here (engine/id_index.hpp for ids); nothing is
+// features (hover, completion, definition, code actions) ask here (engine/id_lookup.hpp for ids); nothing is
 // indexed in advance, despite the name, so a request costs a walk of one block (a repeated card such as *NODE or *ELEMENT_SPH is found without walking its lines).
 #pragma once
 

@@ -3,30 +3,30 @@
 // starter deck's headers define; a group may be a /SET of its id. A deck with //SUBMODEL is not judged: submodels offset ids.
 #include <fmt/format.h>
 
+#include "grammar/radioss/id_kinds.hpp"
 #include "lint/rules_radioss.hpp"
 
 namespace sphdeck::lint::radioss {
 namespace {
 
-struct LinkKind {
-    char kind;
+namespace rad = grammar::radioss;
+
+// The rule that judges the ids of each CFG type a generated cell links (FieldSpec::link; its kind and
+// the headers that define it: grammar/radioss/id_kinds.hpp).
+struct LinkRule {
+    char link;
     const char* code;
-    const char* what;  // the headers that define such ids
 };
+constexpr LinkRule rules[] = {{'F', "REF009"}, {'S', "REF009"}, {'Y', "REF009"}, {'G', "REF008"},
+                              {'U', "REF008"}, {'M', "REF004"}, {'P', "REF003"}, {'C', "REF002"}};
 
-constexpr LinkKind kinds[] = {
-    {'F', "REF009", "/FUNCT or /TABLE"}, {'S', "REF009", "/SENSOR"},  {'Y', "REF009", "/SKEW or /FRAME"},
-    {'G', "REF008", "/GRNOD or /SET"},   {'U', "REF008", "/SURF or /SET"}, {'M', "REF004", "/MAT"},
-    {'P', "REF003", "/PROP"},            {'C', "REF002", "/PART"}};
-
-bool defines(const model::RadiossFacts& f, char kind, long long id) {
-    const auto defined = f.header_ids.find(kind);
-    if (defined != f.header_ids.end() && defined->second.count(id)) return true;
-    // A group (node group, surface) may be a /SET of that id: the starter turns the set into the
-    // groups the options ask for (starter fill_igr.F, one group per kind with the set's id).
-    const bool group = kind == 'G' || kind == 'U';
-    const auto sets = f.header_ids.find('T');
-    return group && sets != f.header_ids.end() && sets->second.count(id);
+// Whether a header of the starter deck defines `id` of the kind `link` names or of a kind of its space:
+// a /SET for a node group or a surface (the starter turns the set into the groups the options ask for:
+// fill_igr.F, one group per kind with the set's id). Skews and frames are one CFG type, 'Y'.
+bool defines(const model::RadiossFacts& f, char link, long long id) {
+    for (const auto& [defined, ids] : f.header_ids)
+        if (rad::ids_meet(rad::linked_kind(defined), rad::linked_kind(link)) && ids.count(id)) return true;
+    return false;
 }
 
 }  // namespace
@@ -35,11 +35,13 @@ void check_generated_references(RuleContext& c) {
     const model::RadiossFacts& f = *c.model.radioss;
     if (f.submodels) return;
     for (const model::RadiossIdUse& use : f.id_uses) {
-        for (const LinkKind& k : kinds) {
-            if (k.kind != use.kind) continue;
+        for (const LinkRule& rule : rules) {
+            if (rule.link != use.kind) continue;
             if (defines(f, use.kind, use.id)) break;
-            c.report(k.code, use.span,
-                     fmt::format("{} {} of {} names no {} of the deck", use.field, use.id, use.keyword, k.what));
+            const std::string_view kind = rad::linked_kind(use.kind);
+            c.report(rule.code, use.span,
+                     fmt::format("{} {} of {} names no {}{} of the deck", use.field, use.id, use.keyword,
+                                 rad::defined_by(kind), rad::is_group(kind) ? " or /SET" : ""));
             break;
         }
     }

@@ -5,7 +5,7 @@
 #include "model/radioss_decoder.hpp"
 
 namespace sphdeck::lsp {
-using namespace engine;  // the position index: engine/position_index.hpp, engine/id_index.hpp
+using namespace engine;  // the position index: engine/position_index.hpp, engine/id_lookup.hpp
 namespace {
 
 // A block this long is decoded line by line when only part of it is asked for.

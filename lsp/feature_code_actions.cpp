@@ -21,7 +21,7 @@
 
 namespace sphdeck::lsp {
 
-using namespace engine;  // the position index: engine/position_index.hpp, engine/id_index.hpp
+using namespace engine;  // the position index: engine/position_index.hpp, engine/id_lookup.hpp
 namespace {
 
 nlohmann::json position(std::uint32_t line, std::uint32_t character) {

@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "engine/id_index.hpp"
+#include "engine/id_lookup.hpp"
 #include "engine/position_index.hpp"
 #include "lsp/features.hpp"
 

@@ -10,7 +10,7 @@
 #include "grammar/radioss/generated_layouts.hpp"
 #include "grammar/parameters.hpp"
 #include "engine/field_at_column.hpp"
-#include "engine/id_index.hpp"
+#include "engine/id_lookup.hpp"
 #include "engine/position_index.hpp"
 #include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
@@ -18,7 +18,7 @@
 
 namespace sphdeck::lsp {
 
-using namespace engine;  // the position index: engine/position_index.hpp, engine/id_index.hpp
+using namespace engine;  // the position index: engine/position_index.hpp, engine/id_lookup.hpp
 namespace {
 
 namespace rad = grammar::radioss;

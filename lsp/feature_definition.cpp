@@ -3,14 +3,14 @@
 #include <algorithm>
 #include <cctype>
 
-#include "engine/id_index.hpp"
+#include "engine/id_lookup.hpp"
 #include "engine/position_index.hpp"
 #include "lsp/features.hpp"
 #include "lsp/uri.hpp"
 
 namespace sphdeck::lsp {
 
-using namespace engine;  // the position index: engine/position_index.hpp, engine/id_index.hpp
+using namespace engine;  // the position index: engine/position_index.hpp, engine/id_lookup.hpp
 namespace {
 
 // Particle lines listed as references of a part at most: a 1M-particle part is no list to read.

@@ -6,7 +6,7 @@
 
 namespace sphdeck::lsp {
 
-using namespace engine;  // the position index: engine/position_index.hpp, engine/id_index.hpp
+using namespace engine;  // the position index: engine/position_index.hpp, engine/id_lookup.hpp
 namespace {
 
 // A comment line of the deck's format: `$` in LS-DYNA decks; `#` (not `#include`) or `$` in Radioss.

@@ -9,7 +9,7 @@
 #include "grammar/keywords/schema.hpp"
 #include "grammar/number_cast.hpp"
 #include "grammar/value.hpp"
-#include "engine/id_index.hpp"
+#include "engine/id_lookup.hpp"
 #include "engine/position_index.hpp"
 #include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
@@ -18,7 +18,7 @@
 
 namespace sphdeck::lsp {
 
-using namespace engine;  // the position index: engine/position_index.hpp, engine/id_index.hpp
+using namespace engine;  // the position index: engine/position_index.hpp, engine/id_lookup.hpp
 namespace {
 
 using keywords::FieldSpec;

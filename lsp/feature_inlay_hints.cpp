@@ -12,7 +12,7 @@
 #include "lsp/features.hpp"
 
 namespace sphdeck::lsp {
-using namespace engine;  // the position index: engine/position_index.hpp, engine/id_index.hpp
+using namespace engine;  // the position index: engine/position_index.hpp, engine/id_lookup.hpp
 namespace {
 
 constexpr int kHintType = 1;       // InlayHintKind.Type: a value

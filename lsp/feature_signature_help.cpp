@@ -12,7 +12,7 @@
 #include "model/radioss_decoder.hpp"
 
 namespace sphdeck::lsp {
-using namespace engine;  // the position index: engine/position_index.hpp, engine/id_index.hpp
+using namespace engine;  // the position index: engine/position_index.hpp, engine/id_lookup.hpp
 namespace {
 
 namespace rad = grammar::radioss;

@@ -10,7 +10,7 @@
 
 namespace sphdeck::lsp {
 
-using namespace engine;  // the position index: engine/position_index.hpp, engine/id_index.hpp
+using namespace engine;  // the position index: engine/position_index.hpp, engine/id_lookup.hpp
 namespace {
 
 // LSP SymbolKind values.

@@ -7,7 +7,7 @@
 #include <string>
 #include <tuple>
 
-#include "engine/id_index.hpp"
+#include "engine/id_lookup.hpp"
 #include "lsp/features.hpp"
 #include "lsp/uri.hpp"
 

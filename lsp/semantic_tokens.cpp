@@ -5,10 +5,10 @@
 #include <optional>
 #include <unordered_map>
 
-#include "engine/id_index.hpp"
+#include "engine/id_lookup.hpp"
 
 namespace sphdeck::lsp {
-using namespace engine;  // the position index: engine/position_index.hpp, engine/id_index.hpp
+using namespace engine;  // the position index: engine/position_index.hpp, engine/id_lookup.hpp
 namespace {
 
 namespace rad = grammar::radioss;

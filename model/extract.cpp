@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "grammar/fields.hpp"
+#include "grammar/keywords/id_kinds.hpp"
 #include "grammar/keywords/schema.hpp"
 #include "grammar/number_cast.hpp"
 #include "grammar/value.hpp"
@@ -379,7 +380,8 @@ void extract_unknown_definitions(const grammar::RawDeck& deck, Model& m) {
         if (starts_with(b.keyword, "*CONTROL_MPP")) m.controls.mpp_keywords.push_back(b.span);
         const bool section = starts_with(b.keyword, "*SECTION_") && !starts_with(b.keyword, "*SECTION_SPH");
         const bool material = is_material_keyword(b.keyword);
-        const bool part_variant = starts_with(b.keyword, "*PART_");
+        // Only the *PART_ keywords that define parts (grammar/keywords/id_kinds.hpp): *PART_SENSOR names them.
+        const bool part_variant = starts_with(b.keyword, "*PART_") && keywords::defines_kind(b.keyword, "PART");
         const bool eos = starts_with(b.keyword, "*EOS_");
         if (!section && !material && !eos && !part_variant) continue;
         if (auto known = keywords::find_keyword(b.keyword);

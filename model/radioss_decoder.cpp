@@ -7,6 +7,7 @@
 #include <map>
 
 #include "grammar/radioss/cards.hpp"
+#include "grammar/radioss/id_kinds.hpp"
 #include "grammar/radioss/keyword_lookup.hpp"
 #include "grammar/radioss/reader.hpp"
 #include "grammar/value.hpp"
@@ -137,30 +138,16 @@ private:
         }
     }
 
-    // The ids a starter header defines for the REF rules of generated cards: the integer segments
-    // after the name, by the kind of id its family is. A /SET ('T') stands for every group kind:
-    // the starter makes a group of each kind an option uses from it, of the set's id (fill_igr.F).
+    // The id a starter header defines, for the REF rules of generated cards: kept under the CFG type
+    // letter of its kind (grammar/radioss/id_kinds.hpp: /TABLE/1/12 a function 'F', /FRAME/FIX/3 a
+    // system 'Y', /SET/GENERAL/5 a set 'T'); kinds no generated cell links are not kept.
     void note_header_ids(const grammar::Block& block) {
-        const auto segments = rad::path_segments(block.keyword);
-        if (segments.empty()) return;
-        const std::string_view first = trim(segments.front());
         RadiossFacts& facts = builder_.facts();
-        if (first == "SUBMODEL") facts.submodels = true;
-        const char kind = first.rfind("FUNCT", 0) == 0 || first.rfind("TABLE", 0) == 0 || first == "MOVE_FUNCT" ? 'F'
-                          : first == "SENSOR"                                  ? 'S'
-                          : first == "SKEW" || first == "FRAME"                ? 'Y'
-                          : first == "GRNOD"                                   ? 'G'
-                          : first == "SURF"                                    ? 'U'
-                          : first == "SET"                                     ? 'T'
-                          : first == "MAT"                                     ? 'M'
-                          : first == "PROP"                                    ? 'P'
-                          : first == "PART"                                    ? 'C'
-                                                                               : 0;
-        if (!kind) return;
-        for (std::size_t k = 1; k < segments.size(); ++k) {
-            const grammar::IntegerValue v = grammar::parse_integer(trim(segments[k]));
-            if (v.status == grammar::NumberStatus::Ok) facts.header_ids[kind].insert(v.value);
-        }
+        const auto segments = rad::path_segments(block.keyword);
+        if (!segments.empty() && trim(segments.front()) == "SUBMODEL") facts.submodels = true;
+        const auto header = rad::header_id(block.keyword);
+        if (!header || !header->role || !header->role->defines) return;
+        if (const char link = rad::link_of(header->role->kind)) facts.header_ids[link].insert(header->id);
     }
 
     void walk(const grammar::Block& block) {

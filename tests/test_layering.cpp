@@ -96,14 +96,14 @@ TEST_CASE("layering: every part named in the table is a folder of the tree") {
 
 TEST_CASE("layering: the editor server keeps the protocol; what is at a position comes from engine/") {
     // Which card and field is at line:column and which ids are named where is the engine's position
-    // index (engine/position_index.hpp, engine/id_index.hpp), shared by every feature: lsp/ does not
+    // index (engine/position_index.hpp, engine/id_lookup.hpp), shared by every feature: lsp/ does not
     // walk card sequences or decode card lines itself (issue 27 item 5).
     const fs::path root(SPHDECK_SOURCE_DIR);
     const std::set<std::string> decoding = {"model/card_decoder.hpp", "model/radioss_card_decoder.hpp",
                                             "model/radioss_card_sequence.hpp", "model/deck_check.hpp"};
     const std::regex include(R"(^\s*#\s*include\s*"([^"]*)\")");
     CHECK(fs::is_regular_file(root / "engine" / "position_index.hpp"));
-    CHECK(fs::is_regular_file(root / "engine" / "id_index.hpp"));
+    CHECK(fs::is_regular_file(root / "engine" / "id_lookup.hpp"));
     for (const auto& entry : fs::directory_iterator(root / "lsp")) {
         std::ifstream in(entry.path());
         std::string text;

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "engine/check.hpp"
-#include "engine/id_index.hpp"
+#include "engine/id_lookup.hpp"
 #include "grammar/radioss/generated_layouts.hpp"
 #include "grammar/radioss/keyword_lookup.hpp"
 #include "test_support.hpp"

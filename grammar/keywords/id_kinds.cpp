@@ -56,11 +56,17 @@ std::string_view without_digits(std::string_view name) {
     return name;
 }
 
+// Keywords of a defining family that define no id of it: they add to a material, or name parts.
+constexpr std::array<std::string_view, 7> kDefineNone{"*MAT_ADD_",  "*PART_MODES",           "*PART_SENSOR",
+                                                      "*PART_MOVE", "*PART_ANNEAL",          "*PART_ADAPTIVE_FAILURE",
+                                                      "*PART_DUPLICATE"};
+
 }  // namespace
 
 bool IdDefinition::holds_for(std::string_view keyword) const {
     if (!starts_with(keyword, family)) return false;
-    if (starts_with(keyword, "*MAT_ADD_")) return false;  // adds to material MID: defines none
+    for (std::string_view none : kDefineNone)
+        if (starts_with(keyword, none)) return false;
     return match == Prefix || keyword.size() == family.size() || keyword[family.size()] == '_';
 }
 
@@ -90,6 +96,16 @@ std::string_view kind_named_by(std::string_view keyword, std::string_view field)
     for (const NamedKind& n : kNamedKinds)
         if (name == n.field) return n.kind;
     return {};
+}
+
+std::optional<IdRole> id_role(std::string_view keyword, const FieldSpec& field) {
+    const bool integer = field.type != FieldType::Real || field.pydyna_integer;
+    if (field.type == FieldType::Unused || !integer) return std::nullopt;
+    if (const IdDefinition* d = defining_field(keyword, field.name)) return IdRole{d->kind, true};
+    if (!field.refers_to.empty()) return IdRole{id_space(field.refers_to), false};
+    const std::string_view kind = kind_named_by(keyword, field.name);
+    if (kind.empty()) return std::nullopt;
+    return IdRole{kind, false};
 }
 
 }  // namespace sphdeck::keywords

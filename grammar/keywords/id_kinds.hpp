@@ -1,12 +1,15 @@
 // Which fields define or name which kind of id, declared once beside the layouts: read by the REF rules
-// (model/id_links.cpp, lint/rules_references_links.cpp) and by the editor's id look-ups (engine/id_index.cpp:
+// (model/id_links.cpp, lint/rules_references_links.cpp) and by the editor's id look-ups (engine/id_lookup.cpp:
 // definition, references, hover, completion, semantic tokens), so the two cannot disagree. Kinds are
 // spelled like the generated layouts' links (FieldSpec::refers_to): "PART", "SECTION", "MAT", "EOS",
 // "HOURGLASS", "SET_NODE", "SET_PART", "DEFINE_CURVE", "DEFINE_BOX"...
 #pragma once
 
+#include <optional>
 #include <span>
 #include <string_view>
+
+#include "grammar/keywords/schema.hpp"
 
 namespace sphdeck::keywords {
 
@@ -24,7 +27,9 @@ struct IdDefinition {
     bool holds_for(std::string_view keyword) const;  // whether `keyword` is of this family
 };
 
-// Every family that defines ids. *MAT_ADD_ blocks add to material MID and define none.
+// Every family that defines ids. *MAT_ADD_ blocks add to material MID and define none; neither do the
+// *PART_ keywords that name parts made elsewhere (*PART_MODES, *PART_SENSOR, *PART_MOVE, *PART_ANNEAL,
+// *PART_ADAPTIVE_FAILURE: PID on their first card, no heading; *PART_DUPLICATE).
 std::span<const IdDefinition> id_definitions();
 
 // The family row when `field` of `keyword` (canonical schema name) holds the block's own id, else nullptr.
@@ -41,5 +46,15 @@ std::string_view id_space(std::string_view kind);
 // layouts say it in FieldSpec::refers_to): SECID a section, LCID a curve, NSID a node set; PID1..PID8 of
 // *SET_PART_LIST name parts. *ELEMENT_SPH names its node (NID) and part (PID) only. Empty when none.
 std::string_view kind_named_by(std::string_view keyword, std::string_view field);
+
+// What a field of `keyword` (canonical schema name) does with ids: defines one of `kind` (the field that
+// holds a block's own id, defining_field) or names one (the layout's link, refers_to, in its id space; else
+// kind_named_by). Integer fields only, pydyna's integers read as reals included (*DEFINE_TABLE TBID,
+// *DEFINE_VECTOR VID: FieldSpec::pydyna_integer). nullopt when the field is no id.
+struct IdRole {
+    std::string_view kind;
+    bool defines = false;
+};
+std::optional<IdRole> id_role(std::string_view keyword, const FieldSpec& field);
 
 }  // namespace sphdeck::keywords

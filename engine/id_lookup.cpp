@@ -1,4 +1,4 @@
-#include "engine/id_index.hpp"
+#include "engine/id_lookup.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "grammar/keywords/id_kinds.hpp"
+#include "grammar/radioss/id_kinds.hpp"
 #include "grammar/value.hpp"
 #include "engine/field_at_column.hpp"
 #include "engine/position_index.hpp"
@@ -20,46 +21,19 @@ namespace rad = grammar::radioss;
 
 bool starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
 
-// A Radioss header's family ("/PROP/SPH/7" -> "PROP") and its id segment with its columns.
+// A Radioss header's id with its role (grammar/radioss/id_kinds.hpp) and its columns.
 struct HeaderId {
-    std::string family;
+    IdRole role;
     std::string id;
     grammar::Span span;
 };
 std::optional<HeaderId> header_id(const grammar::Block& block) {
-    const std::string_view header = block.keyword;
-    HeaderId out;
-    std::size_t i = 0, segment = 0;
-    while (i < header.size()) {
-        if (header[i] == '/') {
-            ++i;
-            continue;
-        }
-        std::size_t end = std::min(header.find('/', i), header.size());
-        const std::string_view s = header.substr(i, end - i);
-        if (segment++ == 0) {
-            out.family = std::string(s);
-        } else if (std::all_of(s.begin(), s.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); })) {
-            out.id = model::normalise_id(s);
-            out.span = grammar::Span{block.span.file, block.span.line, block.span.column + static_cast<std::uint32_t>(i),
-                                     block.span.column + static_cast<std::uint32_t>(end)};
-            return out;
-        }
-        i = end;
-    }
-    return std::nullopt;
-}
-
-// Radioss header families: those that define an id, and those whose id names another block's.
-std::optional<IdRole> header_role(std::string_view family) {
-    static constexpr std::array<std::string_view, 11> defines{"PART", "PROP",  "MAT",    "GRNOD", "GRPART", "FRAME",
-                                                              "SKEW", "SURF", "FUNCT", "SUBSET", "SET"};
-    static constexpr std::array<std::string_view, 9> of_part{"SPHCEL", "BRICK", "TETRA4", "TETRA10", "PENTA6",
-                                                             "SHELL",  "SH3N",  "BEAM",   "SPRING"};
-    if (std::find(defines.begin(), defines.end(), family) != defines.end()) return IdRole{std::string(family), true};
-    if (std::find(of_part.begin(), of_part.end(), family) != of_part.end()) return IdRole{"PART", false};
-    if (family == "EOS") return IdRole{"MAT", false};  // an /EOS carries the id of its material
-    return std::nullopt;
+    const auto found = rad::header_id(block.keyword);
+    if (!found || !found->role) return std::nullopt;
+    return HeaderId{IdRole{std::string(found->role->kind), found->role->defines}, std::to_string(found->id),
+                    grammar::Span{block.span.file, block.span.line,
+                                  block.span.column + static_cast<std::uint32_t>(found->begin),
+                                  block.span.column + static_cast<std::uint32_t>(found->end)}};
 }
 
 // Bulk blocks: millions of lines whose ids are nodes and particles.
@@ -92,14 +66,11 @@ void collect_dyna(const CheckResult& deck, const grammar::Block& block, std::vec
 
 void collect_radioss(const CheckResult& deck, const grammar::Block& block, int version, std::vector<IdUse>& out) {
     const auto& raw = deck.deck;
-    auto header = header_id(block);
     std::string title;
-    if (header) {
-        if (auto role = header_role(header->family)) {
-            if (role->defines && block.line_count > 0 && !rad::is_v4(version))
-                title = std::string(grammar::trim_blanks(raw.text(*raw.begin_lines(block))));
-            out.push_back({role->kind, header->id, header->span, role->defines, &block, title});
-        }
+    if (auto header = header_id(block)) {
+        if (header->role.defines && block.line_count > 0 && !rad::is_v4(version))
+            title = std::string(grammar::trim_blanks(raw.text(*raw.begin_lines(block))));
+        out.push_back({header->role.kind, header->id, header->span, header->role.defines, &block, title});
     }
     if (bulk_block(block)) return;
     walk_radioss_block(raw, block, version, [&](const grammar::CardLine&, const RadiossCard& card) {
@@ -117,45 +88,18 @@ void collect_radioss(const CheckResult& deck, const grammar::Block& block, int v
 }  // namespace
 
 std::optional<IdRole> dyna_id_role(std::string_view keyword, const keywords::FieldSpec& field) {
-    if (field.type == keywords::FieldType::Real || field.type == keywords::FieldType::Unused) return std::nullopt;
-    if (const keywords::IdDefinition* d = keywords::defining_field(keyword, field.name))
-        return IdRole{std::string(d->kind), true};
-    if (!field.refers_to.empty()) return IdRole{std::string(keywords::id_space(field.refers_to)), false};
-    const std::string_view kind = keywords::kind_named_by(keyword, field.name);
-    if (kind.empty()) return std::nullopt;
-    return IdRole{std::string(kind), false};
+    const auto role = keywords::id_role(keyword, field);
+    if (!role) return std::nullopt;
+    return IdRole{std::string(role->kind), role->defines};
 }
 
 std::optional<IdRole> radioss_id_role(const rad::FieldSpec& field) {
-    if (field.cell != rad::Cell::Int) return std::nullopt;
-    // The CFG's own type of the cell first (/RBODY grnd_ID, /INTER's secondary and main ids).
-    if (field.link == 'G') return IdRole{"GRNOD", false};
-    if (field.link == 'U') return IdRole{"SURF", false};
-    std::string_view name = field.name;
-    const std::size_t at = name.rfind("_ID");
-    if (at == std::string_view::npos || at == 0) return std::nullopt;
-    std::string prefix(name.substr(0, at));
-    for (char& c : prefix) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    if (prefix == "FCT") prefix = "FUNCT";
-    if (prefix == "BRICK" || prefix == "TETRA" || prefix == "PENTA") return std::nullopt;
-    return IdRole{prefix, false};
+    std::string kind = rad::kind_named_by(field);
+    if (kind.empty()) return std::nullopt;
+    return IdRole{std::move(kind), false};
 }
 
-std::optional<std::string> radioss_header_kind(std::string_view header) {
-    grammar::Block b;
-    b.keyword = std::string(header);
-    auto id = header_id(b);
-    if (!id) return std::nullopt;
-    auto role = header_role(id->family);
-    if (!role || !role->defines) return std::nullopt;
-    return role->kind;
-}
-
-bool ids_meet(std::string_view a, std::string_view b) {
-    if (a == b) return true;
-    const auto group = [](std::string_view k) { return starts_with(k, "GR") || k == "SURF" || k == "LINE"; };
-    return (a == "SET" && group(b)) || (group(a) && b == "SET");
-}
+bool ids_meet(std::string_view a, std::string_view b) { return rad::ids_meet(a, b); }
 
 std::string id_text(const model::FieldValue& v) {
     if (!v.spec || !v.explicit_value) return {};
@@ -196,9 +140,7 @@ std::optional<IdUse> id_at(const CheckResult& deck, grammar::FileId file, std::u
     if (radioss && line == block->span.line) {
         auto header = header_id(*block);
         if (!header || column < header->span.column || column >= header->span.end_column) return std::nullopt;
-        auto role = header_role(header->family);
-        if (!role) return std::nullopt;
-        return IdUse{role->kind, header->id, header->span, role->defines, block, ""};
+        return IdUse{header->role.kind, header->id, header->span, header->role.defines, block, ""};
     }
     const grammar::CardLine* card_line = card_line_at(raw, *block, line);
     if (!card_line) return std::nullopt;
@@ -309,7 +251,8 @@ std::vector<IdUse> definitions_of(const CheckResult& deck, const std::string& ki
         std::vector<IdUse> found;
         if (radioss) {
             auto header = header_id(block);
-            if (!header || !ids_meet(header->family, kind) || (id && header->id != *id)) continue;
+            if (!header || !header->role.defines || !ids_meet(header->role.kind, kind) || (id && header->id != *id))
+                continue;
             collect_radioss(deck, block, version, found);
         } else {
             if (!keywords::defines_kind(block.keyword, kind) || bulk_block(block)) continue;

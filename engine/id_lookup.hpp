@@ -1,11 +1,11 @@
 // Id look-ups for the editor: the id a field defines or names (a *PART's PID, a part's SECID, the id of
 // a Radioss /PROP header), the uses of an id and its definitions, so that definition, references, hover
 // and completion can follow them. No index is built (model/id_index.hpp is the index of node and particle
-// ids): each question walks the deck's blocks again. Which LS-DYNA fields define or name which kind is
-// declared in grammar/keywords/id_kinds.hpp, which the REF rules read too; kinds are spelled like the
-// generated layouts' links: "PART", "SECTION", "MAT", "EOS", "HOURGLASS", "SET_NODE", "SET_PART",
-// "DEFINE_CURVE", "DEFINE_BOX"; Radioss kinds are their header families: "PART", "PROP", "MAT",
-// "GRNOD", "FRAME", "SKEW".
+// ids): each question walks the deck's blocks again. Which fields define or name which kind of id is
+// declared once, read by the REF rules too: grammar/keywords/id_kinds.hpp for LS-DYNA (kinds spelled like
+// the generated layouts' links: "PART", "SECTION", "MAT", "SET_NODE", "DEFINE_CURVE"...),
+// grammar/radioss/id_kinds.hpp for OpenRadioss (kinds are header families: "PART", "PROP", "MAT", "FUNCT",
+// "SENSOR", "SKEW", "GRNOD", "SURF", "SET"...).
 #pragma once
 
 #include <optional>
@@ -27,18 +27,14 @@ struct IdRole {
     bool defines = false;
 };
 
-// The id role of an LS-DYNA field of a keyword (canonical schema name), or nullopt: the field that holds a
-// block's own id defines one (keywords::defining_field); a field the layout links (refers_to) or whose name
-// names a kind (keywords::kind_named_by) names one.
+// The id role of an LS-DYNA field of a keyword (canonical schema name), or nullopt (keywords::id_role).
 std::optional<IdRole> dyna_id_role(std::string_view keyword, const keywords::FieldSpec& field);
-// The id role of a Radioss card field ("prop_ID" names a PROP), or nullopt.
+// The id role of a Radioss card field ("prop_ID" names a PROP), or nullopt (grammar::radioss::kind_named_by).
 std::optional<IdRole> radioss_id_role(const grammar::radioss::FieldSpec& field);
-// The kind a Radioss header defines an id of (its first numeric segment): "/PROP/SPH/7" -> PROP.
-std::optional<std::string> radioss_header_kind(std::string_view header);
 
-// Whether ids of kind `a` and kind `b` are one space: the same kind, or a Radioss group kind
-// (GRNOD, GRPART, SURF, LINE...) and SET, since the starter makes a group of each kind from a /SET
-// of that id (starter fill_igr.F).
+// Whether ids of kind `a` and kind `b` are one space: the same kind; for Radioss also SKEW and FRAME, and
+// a group kind (GRNOD, GRPART, SURF, LINE...) and SET (grammar::radioss::ids_meet). LS-DYNA kinds meet
+// themselves only: their spaces are folded when the role is read (keywords::id_space).
 bool ids_meet(std::string_view a, std::string_view b);
 
 // The id a decoded field holds ("7", a label), empty when blank, zero or unreadable.
