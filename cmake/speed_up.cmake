@@ -1,4 +1,4 @@
-# Build speed, one call a target: sphdeck_speed_up(<target> [HEADERS <header>...]).
+# Build speed, one call a target: sphdeck_speed_up(<target> [HEADERS <header>...] [PCH_FROM <target>]).
 #
 # A unity build compiles a target's sources in batches (one generated file that #includes up to 16 of
 # them), so the standard library and the third-party headers are parsed, and their inline functions
@@ -50,7 +50,7 @@ if(SPHDECK_PCH)
 endif()
 
 function(sphdeck_speed_up target)
-  cmake_parse_arguments(ARG "" "" "HEADERS" ${ARGN})
+  cmake_parse_arguments(ARG "" "PCH_FROM" "HEADERS" ${ARGN})
   get_target_property(sources ${target} SOURCES)
   get_target_property(source_dir ${target} SOURCE_DIR)
   # Files with compile options of their own (the SIMD units, -ffp-contract=off) already stay out of
@@ -100,7 +100,13 @@ function(sphdeck_speed_up target)
     endif()
   endif()
   if(SPHDECK_PCH)
-    target_precompile_headers(${target} PRIVATE ${SPHDECK_PCH_COMMON} ${ARG_HEADERS})
+    if(ARG_PCH_FROM)
+      # Several small libraries with the same compile options can share one PCH (some 7 CPU seconds
+      # each to build); a mismatch is an error (-Winvalid-pch with -Werror), not a silent slow-down.
+      target_precompile_headers(${target} REUSE_FROM ${ARG_PCH_FROM})
+    else()
+      target_precompile_headers(${target} PRIVATE ${SPHDECK_PCH_COMMON} ${ARG_HEADERS})
+    endif()
     if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
       # No build time in the PCH, so that ccache can reuse what uses it (ccache manual).
       target_compile_options(${target} PRIVATE "SHELL:-Xclang -fno-pch-timestamp")
