@@ -24,12 +24,12 @@ std::string shown(const nlohmann::ordered_json& value) {
     return value.dump();
 }
 
-std::string where(const engine::DiffLocation& at) {
+std::string diff_location(const engine::DiffLocation& at) {
     if (at.line == 0) return at.file.empty() ? "default" : at.file + " (default)";
     return at.column > 0 ? fmt::format("{}:{}:{}", at.file, at.line, at.column) : fmt::format("{}:{}", at.file, at.line);
 }
 
-std::string ids(const std::vector<long long>& list, std::size_t count) {
+std::string id_list(const std::vector<long long>& list, std::size_t count) {
     std::string out;
     for (long long id : list) out += fmt::format("{}{}", out.empty() ? "" : ", ", id);
     if (count > list.size()) out += fmt::format(", ... {} more", count - list.size());
@@ -39,27 +39,27 @@ std::string ids(const std::vector<long long>& list, std::size_t count) {
 void print_bulk(std::string_view what, std::string_view changed_word, const engine::BulkChange& b, bool nodes) {
     if (b.equal()) return;
     std::string line = fmt::format("{}: {} -> {}", what, b.before_count, b.after_count);
-    if (b.added) line += fmt::format("; {} added ({})", b.added, ids(b.added_ids, b.added));
-    if (b.removed) line += fmt::format("; {} removed ({})", b.removed, ids(b.removed_ids, b.removed));
-    if (b.changed) line += fmt::format("; {} {} ({})", b.changed, changed_word, ids(b.changed_ids, b.changed));
+    if (b.added) line += fmt::format("; {} added ({})", b.added, id_list(b.added_ids, b.added));
+    if (b.removed) line += fmt::format("; {} removed ({})", b.removed, id_list(b.removed_ids, b.removed));
+    if (b.changed) line += fmt::format("; {} {} ({})", b.changed, changed_word, id_list(b.changed_ids, b.changed));
     if (nodes && b.changed)
         line += fmt::format("; largest displacement {:.6g} at node {}", b.largest_displacement, b.largest_displacement_id);
     fmt::print("{}\n", line);
 }
 
-void print_text(const engine::DeckDiff& diff) {
+void print_diff(const engine::DeckDiff& diff) {
     using Kind = engine::KeywordChange::Kind;
     for (const auto& k : diff.keywords) {
         const std::string name = k.id.empty() ? k.name : k.name + " " + k.id;
         if (k.kind == Kind::Added) {
-            fmt::print("added {} ({})\n", name, where(k.after_at));
+            fmt::print("added {} ({})\n", name, diff_location(k.after_at));
         } else if (k.kind == Kind::Removed) {
-            fmt::print("removed {} ({})\n", name, where(k.before_at));
+            fmt::print("removed {} ({})\n", name, diff_location(k.before_at));
         } else {
-            fmt::print("{} ({} -> {})\n", name, where(k.before_at), where(k.after_at));
+            fmt::print("{} ({} -> {})\n", name, diff_location(k.before_at), diff_location(k.after_at));
             for (const auto& f : k.fields)
-                fmt::print("  {}: {} -> {}  ({} -> {})\n", f.field, shown(f.before), shown(f.after), where(f.before_at),
-                           where(f.after_at));
+                fmt::print("  {}: {} -> {}  ({} -> {})\n", f.field, shown(f.before), shown(f.after), diff_location(f.before_at),
+                           diff_location(f.after_at));
         }
     }
     print_bulk("nodes", "moved", diff.nodes, true);
@@ -87,7 +87,7 @@ int run_diff(const DiffArgs& args) {
     if (args.format == "json") {
         fmt::print("{}\n", engine::to_json(diff).dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
     } else {
-        print_text(diff);
+        print_diff(diff);
     }
     return diff.equal() ? exit_clean : exit_findings;
 }

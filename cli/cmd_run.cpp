@@ -100,7 +100,7 @@ private:
     std::vector<io::PvdEntry> entries_;
 };
 
-std::string where(const grammar::Span& span, const grammar::SourceMap& sources, const std::string& deck) {
+std::string span_location(const grammar::Span& span, const grammar::SourceMap& sources, const std::string& deck) {
     return diag::detail::has_location(span, sources) ? diag::detail::location(span, sources) : deck;
 }
 
@@ -113,7 +113,7 @@ bool print_unsupported(const std::vector<refsolver::Unsupported>& items, const e
         fatal = fatal || stops;
         const char* severity = stops ? "error" : u.fatal ? "warning" : "note";
         if (!args.quiet || stops)
-            fmt::print(stderr, "{}: {}: {}{}\n", where(u.span, r.deck.sources, args.deck), severity,
+            fmt::print(stderr, "{}: {}: {}{}\n", span_location(u.span, r.deck.sources, args.deck), severity,
                        diag::detail::printable(u.what), u.fatal && !u.blocking && args.ignore_unsupported ? " (ignored)" : "");
     }
     return fatal;

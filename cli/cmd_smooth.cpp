@@ -192,7 +192,7 @@ std::string_view settings_source(const SmoothArgs& args, bool control_sph) {
     return control_sph ? ", from *CONTROL_SPH" : ", default: no *CONTROL_SPH";
 }
 
-void print_text(const SmoothArgs& args, const preproc::Preview& p, bool control_sph) {
+void print_smooth(const SmoothArgs& args, const preproc::Preview& p, bool control_sph) {
     const model::IniMode mode = p.parts.empty() ? model::IniMode::BucketSort : p.parts.front().ini;
     if (p.radioss)  // no INI: h as the OpenRadioss starter computes it
         fmt::print("{}: {} particles in {} part(s), {}D, OpenRadioss deck (h0: the starter's rule, spinih.F)\n\n",
@@ -273,7 +273,7 @@ int run_smooth(const SmoothArgs& args) {
         out["mesh_boxes"] = mesh_boxes_json(r, boxes);
         fmt::print("{}\n", out.dump(2));
     } else {
-        print_text(args, preview, model.controls.sph.present);
+        print_smooth(args, preview, model.controls.sph.present);
         print_mesh_boxes(r, boxes);
     }
     std::fflush(stdout);

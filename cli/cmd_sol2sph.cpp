@@ -30,9 +30,9 @@ bool part_passes(const preproc::Sol2sphPart& p) {
     return p.ndir >= 1 && p.ndir <= 9 && std::abs(p.relative_difference()) < mass_tolerance;
 }
 
-std::string g4(double v) { return fmt::format("{:.4g}", v); }
+std::string format_g4(double v) { return fmt::format("{:.4g}", v); }
 
-std::vector<io::Column> columns(const preproc::Sol2sphParticles& p, std::vector<long long>& ids) {
+std::vector<io::Column> particle_columns(const preproc::Sol2sphParticles& p, std::vector<long long>& ids) {
     ids.resize(p.size());
     for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = static_cast<long long>(i + 1);
     return {{"index", std::span<const long long>(ids)},
@@ -44,14 +44,14 @@ std::vector<io::Column> columns(const preproc::Sol2sphParticles& p, std::vector<
             {"volume", std::span<const double>(p.volume)}};
 }
 
-std::string where(const engine::CheckResult& r, std::uint32_t line) {
+std::string line_location(const engine::CheckResult& r, std::uint32_t line) {
     if (line >= r.deck.lines.size()) return r.model.radioss ? r.model.radioss->run_name : "";
     const grammar::CardLine& l = r.deck.lines[line];
     return fmt::format("{}:{}", r.deck.sources.file(l.file).display_name, l.line);
 }
 
 // "file:line:column" of a span, for findings about a part.
-std::string where(const engine::CheckResult& r, const grammar::Span& span) {
+std::string line_location(const engine::CheckResult& r, const grammar::Span& span) {
     if (!span.valid()) return r.model.radioss ? r.model.radioss->run_name : "";
     return fmt::format("{}:{}:{}", r.deck.sources.file(span.file).display_name, span.line, span.column);
 }
@@ -65,14 +65,14 @@ std::string check_word(const preproc::Sol2sphPart& p) {
 std::string guidance(const preproc::Sol2sphPart& p) {
     std::string s = fmt::format("pitch {}: h {} to {} (1.25 to 1.5 x pitch, docs/radioss.md: SOL2SPH); h_1D 3 "
                                 "with hcst 1.2 gives {}",
-                                g4(p.pitch), g4(1.25 * p.pitch), g4(1.5 * p.pitch), g4(1.2 * p.pitch));
+                                format_g4(p.pitch), format_g4(1.25 * p.pitch), format_g4(1.5 * p.pitch), format_g4(1.2 * p.pitch));
     if (p.sph_h_1d == 3) s += fmt::format("; SPH part {} uses h_1D 3", p.sph_part);
-    else if (p.sph_h > 0) s += fmt::format("; SPH part {} gives h {} = {} x pitch", p.sph_part, g4(p.sph_h), g4(p.sph_h / p.pitch));
+    else if (p.sph_h > 0) s += fmt::format("; SPH part {} gives h {} = {} x pitch", p.sph_part, format_g4(p.sph_h), format_g4(p.sph_h / p.pitch));
     else s += fmt::format("; SPH part {} gives no h: the starter takes (sqrt2 mp / rho)^(1/3), not the pitch", p.sph_part);
     return s;
 }
 
-nlohmann::ordered_json to_json(const Sol2sphArgs& args, const engine::CheckResult& r, const preproc::Sol2sph& s) {
+nlohmann::ordered_json sol2sph_json(const Sol2sphArgs& args, const engine::CheckResult& r, const preproc::Sol2sph& s) {
     nlohmann::ordered_json parts = nlohmann::ordered_json::array(), issues = nlohmann::ordered_json::array();
     for (const preproc::Sol2sphPart& p : s.parts)
         parts.push_back({{"solid_part", p.solid_part},
@@ -95,23 +95,23 @@ nlohmann::ordered_json to_json(const Sol2sphArgs& args, const engine::CheckResul
                          {"starter_relative_difference", p.starter_relative_difference()},
                          {"mass_check", p.no_particles.empty() ? nlohmann::ordered_json(part_passes(p))
                                                                : nlohmann::ordered_json(nullptr)},
-                         {"location", where(r, p.span)},
+                         {"location", line_location(r, p.span)},
                          {"warnings", p.no_particles.empty() ? std::vector<std::string>{}
                                                              : std::vector<std::string>{p.no_particles}},
                          {"notes", p.notes}});
     for (const preproc::Sol2sphIssue& i : s.issues)
-        issues.push_back({{"element", i.element}, {"location", where(r, i.line)}, {"message", i.message}});
+        issues.push_back({{"element", i.element}, {"location", line_location(r, i.line)}, {"message", i.message}});
     return {{"version", SPHDECK_VERSION}, {"deck", args.deck}, {"particles", s.particles.size()},
             {"parts", std::move(parts)}, {"issues", std::move(issues)}};
 }
 
-void print_text(const Sol2sphArgs& args, const engine::CheckResult& r, const preproc::Sol2sph& s) {
+void print_sol2sph(const Sol2sphArgs& args, const engine::CheckResult& r, const preproc::Sol2sph& s) {
     fmt::print("{}: {} SOL2SPH part(s), {} particle(s)\n\n", args.deck, s.parts.size(), s.particles.size());
     std::vector<std::vector<std::string>> rows = {{"part", "Ndir", "SPH part", "bricks", "tetras", "particles",
                                                     "pitch", "element mass", "particle mass", "rel. diff", "check"}};
     for (const preproc::Sol2sphPart& p : s.parts)
         rows.push_back({std::to_string(p.solid_part), std::to_string(p.ndir), std::to_string(p.sph_part),
-                        std::to_string(p.bricks), std::to_string(p.tetras), std::to_string(p.particles), g4(p.pitch),
+                        std::to_string(p.bricks), std::to_string(p.tetras), std::to_string(p.particles), format_g4(p.pitch),
                         fmt::format("{:.6g}", p.element_mass), fmt::format("{:.6g}", p.particle_mass),
                         fmt::format("{:.1e}", p.relative_difference()), check_word(p)});
     std::vector<std::size_t> width(rows[0].size(), 0);
@@ -132,9 +132,9 @@ void print_text(const Sol2sphArgs& args, const engine::CheckResult& r, const pre
                        p.solid_part, p.starter_mass, p.starter_relative_difference());
         for (const std::string& note : p.notes) fmt::print("part {}: {}\n", p.solid_part, note);
         if (!p.no_particles.empty())
-            fmt::print("{}: warning: part {}: {}\n", where(r, p.span), p.solid_part, p.no_particles);
+            fmt::print("{}: warning: part {}: {}\n", line_location(r, p.span), p.solid_part, p.no_particles);
     }
-    for (const preproc::Sol2sphIssue& i : s.issues) fmt::print("{}: error: {}\n", where(r, i.line), i.message);
+    for (const preproc::Sol2sphIssue& i : s.issues) fmt::print("{}: error: {}\n", line_location(r, i.line), i.message);
 }
 
 int run_sol2sph(const Sol2sphArgs& args) {
@@ -148,10 +148,10 @@ int run_sol2sph(const Sol2sphArgs& args) {
     }
     const preproc::Sol2sph s = preproc::generate_sol2sph(r.model);
     const bool json = args.format == "json";
-    if (json) fmt::print("{}\n", to_json(args, r, s).dump(2));
+    if (json) fmt::print("{}\n", sol2sph_json(args, r, s).dump(2));
     else if (s.parts.empty())
         fmt::print("{}: no SOL2SPH solids (a /PROP/TYPE14 or /PROP/TYPE6 with Ndir > 0 used by a part)\n", args.deck);
-    else print_text(args, r, s);
+    else print_sol2sph(args, r, s);
     std::fflush(stdout);
 
     std::string csv = args.csv, vtk = args.vtk;
@@ -163,7 +163,7 @@ int run_sol2sph(const Sol2sphArgs& args) {
     }
     std::FILE* notes = json ? stderr : stdout;
     std::vector<long long> ids;
-    const std::vector<io::Column> cols = columns(s.particles, ids);
+    const std::vector<io::Column> cols = particle_columns(s.particles, ids);
     if (!csv.empty()) {
         std::vector<io::Column> with_xyz = cols;
         with_xyz.insert(with_xyz.begin() + 1, {{"x", std::span<const double>(s.particles.x)},

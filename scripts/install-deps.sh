@@ -12,6 +12,7 @@ build_packages=(
   build-essential cmake
   tao-pegtl-dev libeigen3-dev libfmt-dev libcli11-dev doctest-dev nlohmann-json3-dev
   libtomlplusplus-dev
+  python3        # forms the unity batches at configure time (cmake/speed_up.cmake)
 )
 test_packages=(
   python3 python3-jsonschema python3-yaml

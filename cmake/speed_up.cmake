@@ -1,0 +1,118 @@
+# Build speed, one call a target: sphdeck_speed_up(<target> [HEADERS <header>...] [PCH_FROM <target>]).
+#
+# A unity build compiles a target's sources in batches (one generated file that #includes up to 16 of
+# them), so the standard library and the third-party headers are parsed, and their inline functions
+# optimised, once a batch instead of once a file; a precompiled header (PCH) holds the headers nearly
+# every file includes (HEADERS adds the target's own costly ones), parsed once a target. -ftime-trace on
+# the heaviest units: two thirds of a unit's time is the optimiser on inline code from headers (CLI11 in
+# each cli/cmd_*.cpp, nlohmann-json in the renderers and lsp/, fmt everywhere), which only batching
+# shares; the header parse is the rest, which both share.
+#
+# Options: -DSPHDECK_UNITY_BUILD=OFF compiles file by file (quicker rebuilds while editing one file),
+# -DSPHDECK_PCH=OFF leaves the precompiled headers out (then each file must include what it uses: build a
+# tree that way now and then).
+#
+# Safety: a batch keeps whatever a file declares at namespace scope in sight of the files after it. A clash
+# is a compile error at best; at worst a later file's unqualified name finds an earlier file's helper
+# instead of a header's (rules_preview.cpp's file-local `max_listed = 20` once replaced particle_groups.hpp's
+# 5 in rules_references.cpp). So the batches are formed here, at configure time, by
+# scripts/check_unity_clashes.py --group: no file shares a batch with a file that spells one of its
+# file-local names where that name would be found, and the users of CLI11 or nlohmann-json go side by
+# side. The ctest `unity-clashes` checks the batches CMake wrote (a helper added since the last configure:
+# re-run cmake, or rename the helper). A file that must never be batched goes in SPHDECK_UNITY_ALONE.
+option(SPHDECK_UNITY_BUILD "Compile each target's sources in batches (cmake/speed_up.cmake)" ON)
+option(SPHDECK_PCH "Precompiled headers for the standard and third-party headers (cmake/speed_up.cmake)" ON)
+set(SPHDECK_UNITY_BATCH_SIZE 16 CACHE STRING "Sources per unity batch (cmake/speed_up.cmake)")
+if(SPHDECK_UNITY_BUILD)
+  find_package(Python3 COMPONENTS Interpreter)  # forms the batches (scripts/check_unity_clashes.py)
+endif()
+
+# Files that compile alone, with why.
+set(SPHDECK_UNITY_ALONE
+  tests/main.cpp  # defines DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN before doctest.h: must come first, without the PCH
+)
+list(TRANSFORM SPHDECK_UNITY_ALONE PREPEND ${PROJECT_SOURCE_DIR}/)
+
+# The headers that most of the project's files include (counted over the sources): in every PCH.
+set(SPHDECK_PCH_COMMON
+  <algorithm> <array> <cmath> <cstddef> <cstdint> <filesystem> <functional> <map> <memory> <optional>
+  <set> <span> <string> <string_view> <vector> <fmt/format.h>)
+
+# ccache caches compiles that use a PCH only when told that the PCH's macros and __TIME__ need no check
+# (ccache manual, "Precompiled headers"); the setting travels with each compile, the user's ccache.conf
+# stays as it is.
+if(SPHDECK_PCH)
+  get_filename_component(_sphdeck_launcher_name "${CMAKE_CXX_COMPILER_LAUNCHER}" NAME)
+  if(_sphdeck_launcher_name STREQUAL "ccache")
+    set(SPHDECK_PCH_LAUNCHER ${CMAKE_COMMAND} -E env CCACHE_SLOPPINESS=pch_defines,time_macros
+        ${CMAKE_CXX_COMPILER_LAUNCHER})
+  endif()
+endif()
+
+function(sphdeck_speed_up target)
+  cmake_parse_arguments(ARG "" "PCH_FROM" "HEADERS" ${ARGN})
+  get_target_property(sources ${target} SOURCES)
+  get_target_property(source_dir ${target} SOURCE_DIR)
+  # Files with compile options of their own (the SIMD units, -ffp-contract=off) already stay out of
+  # batches (CMake); they stay out of the PCH too, which was built with the target's options.
+  set(own_options "")
+  foreach(src IN LISTS sources)
+    get_filename_component(path ${src} ABSOLUTE BASE_DIR ${source_dir})
+    get_source_file_property(options ${path} TARGET_DIRECTORY ${target} COMPILE_OPTIONS)
+    if(options OR path IN_LIST SPHDECK_UNITY_ALONE)
+      list(APPEND own_options ${path})
+    endif()
+  endforeach()
+  if(own_options)
+    set_source_files_properties(${own_options} TARGET_DIRECTORY ${target}
+      PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON SKIP_PRECOMPILE_HEADERS ON)
+  endif()
+  if(SPHDECK_UNITY_BUILD)
+    # The batches: formed by scripts/check_unity_clashes.py so that no file shares one with a file that
+    # spells one of its file-local names (in a namespace where the name would be found).
+    set(batched "")
+    foreach(src IN LISTS sources)
+      get_filename_component(path ${src} ABSOLUTE BASE_DIR ${source_dir})
+      if(path MATCHES "\\.cpp$" AND NOT path IN_LIST own_options)
+        list(APPEND batched ${path})
+      endif()
+    endforeach()
+    execute_process(
+      COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_unity_clashes.py
+              --batch-size ${SPHDECK_UNITY_BATCH_SIZE} --source ${PROJECT_SOURCE_DIR} --group ${batched}
+      OUTPUT_VARIABLE batches RESULT_VARIABLE status)
+    if(status EQUAL 0 AND Python3_Interpreter_FOUND)
+      string(REPLACE "\n" ";" batches "${batches}")
+      foreach(line IN LISTS batches)
+        if(line MATCHES "^([0-9]+)[|](.+)$")
+          set_source_files_properties(${CMAKE_MATCH_2} TARGET_DIRECTORY ${target}
+            PROPERTIES UNITY_GROUP ${target}_${CMAKE_MATCH_1})
+        endif()
+      endforeach()
+      set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_MODE GROUP)
+      # GCC 12 at -O3 inlines std::string copies deeper in a batch and then reports bounds it cannot
+      # know (GCC bugs 105329, 105651): false -Warray-bounds and -Wstringop-overflow in <string>.
+      if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)
+        target_compile_options(${target} PRIVATE -Wno-array-bounds -Wno-stringop-overflow -Wno-stringop-overread)
+      endif()
+    else()
+      message(WARNING "${target}: compiled file by file (scripts/check_unity_clashes.py: ${status})")
+    endif()
+  endif()
+  if(SPHDECK_PCH)
+    if(ARG_PCH_FROM)
+      # Several small libraries with the same compile options can share one PCH (some 7 CPU seconds
+      # each to build); a mismatch is an error (-Winvalid-pch with -Werror), not a silent slow-down.
+      target_precompile_headers(${target} REUSE_FROM ${ARG_PCH_FROM})
+    else()
+      target_precompile_headers(${target} PRIVATE ${SPHDECK_PCH_COMMON} ${ARG_HEADERS})
+    endif()
+    if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+      # No build time in the PCH, so that ccache can reuse what uses it (ccache manual).
+      target_compile_options(${target} PRIVATE "SHELL:-Xclang -fno-pch-timestamp")
+    endif()
+    if(SPHDECK_PCH_LAUNCHER)
+      set_target_properties(${target} PROPERTIES CXX_COMPILER_LAUNCHER "${SPHDECK_PCH_LAUNCHER}")
+    endif()
+  endif()
+endfunction()
