@@ -19,7 +19,7 @@
 #include "io/pvd_writer.hpp"
 #include "io/vtp_writer.hpp"
 #include "engine/check.hpp"
-#include "grammar/read_deck.hpp"
+#include "text/source_map.hpp"
 #include "refsolver/simulation.hpp"
 
 namespace sphdeck::cli {

@@ -1,8 +1,11 @@
 #include "refsolver/radioss_time_step.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+
+#include "refsolver/kernel.hpp"
 
 namespace sphdeck::refsolver {
 
@@ -15,6 +18,45 @@ double approach(const Particles& s, std::size_t i, std::size_t j) {
     if (r2 >= 4 * d * d) return 0;
     const double vr = (s.vx[i] - s.vx[j]) * dx + (s.vy[i] - s.vy[j]) * dy + (s.vz[i] - s.vz[j]) * dz;
     return -d * vr / (r2 + 0.01 * d * d);
+}
+
+// One pair (i, j) within the support: g = grad_i W_ij at d_ij (kernel.hpp, the engine's weight.F),
+// v_ij, x_ij. `inside` false beyond the support.
+struct Pair {
+    bool inside = false;
+    double r = 0, d = 0, g[3]{}, v[3]{}, x[3]{};
+};
+
+Pair pair(const Particles& s, std::size_t i, std::size_t j) {
+    Pair p;
+    p.x[0] = s.x[i] - s.x[j], p.x[1] = s.y[i] - s.y[j], p.x[2] = s.z[i] - s.z[j];
+    const double r2 = p.x[0] * p.x[0] + p.x[1] * p.x[1] + p.x[2] * p.x[2];
+    p.d = 0.5 * (s.h[i] + s.h[j]);
+    if (!(r2 < 4 * p.d * p.d)) return p;
+    p.inside = true;
+    p.r = std::sqrt(r2);
+    const double f = CubicSpline{3}.gradient_factor(p.r, p.d);
+    for (int a = 0; a < 3; ++a) p.g[a] = f * p.x[a];
+    p.v[0] = s.vx[i] - s.vx[j], p.v[1] = s.vy[i] - s.vy[j], p.v[2] = s.vz[i] - s.vz[j];
+    return p;
+}
+
+// The stiffness the pair (i, j) adds to particle i (spforcp.F "nodal stability"; header).
+double pair_stiffness(const Particles& s, std::size_t i, std::size_t j, const Pair& p, double fi, double fj, double qa,
+                      double qb) {
+    const double vi = s.m[i] / s.rho[i], vj = s.m[j] / s.rho[j];
+    const double g2 = p.g[0] * p.g[0] + p.g[1] * p.g[1] + p.g[2] * p.g[2];
+    double k = 2 * (s.m[i] * s.c[i] * s.c[i] * vj * vj * g2 + s.m[j] * s.c[j] * s.c[j] * vi * vi * g2);
+    const double v_dot_x = p.v[0] * p.x[0] + p.v[1] * p.x[1] + p.v[2] * p.x[2];
+    double mu = std::min(0.0, p.d * v_dot_x / (p.r * p.r + 0.01 * p.d * p.d));
+    mu *= 0.5 * (fi + fj);
+    const double c = 0.5 * (s.c[i] + s.c[j]);
+    const double pi = (qa * mu * mu - qb * c * mu) * 2 / std::max(1e-20, s.rho[i] + s.rho[j]);
+    const double rate = std::max(1e-20, std::abs(v_dot_x) / std::max(1e-20, p.r));  // dl/dt
+    const double damping = s.m[i] * s.m[j] * std::abs(pi) * std::sqrt(g2) / rate;
+    const double z = damping / std::max(1e-20, std::sqrt(2 * k * s.m[i]));
+    const double shrink = std::sqrt(1 + z * z) - z;
+    return k / std::max(1e-20, shrink * shrink);
 }
 
 }  // namespace
@@ -41,6 +83,76 @@ double radioss_particle_time_step(const Particles& s, const NeighbourList& list,
         const double speed = q + std::sqrt(q * q + s.c[i] * s.c[i]);
         if (speed > 0) smallest = std::min(smallest, s.h[i] / speed);
     }
+    return smallest;
+}
+
+RadiossGradient radioss_velocity_gradient(const Particles& s, const NeighbourList& list, double dt1) {
+    const std::size_t n = s.real;
+    // Per real particle: div v, rot v and sum_j V_j^2 |v_ij|^2 |g_ij|^2 (grad v_i = -sum_j V_j v_ij (x) g_ij).
+    std::vector<std::array<double, 5>> sums(n, {0, 0, 0, 0, 0});
+    // j's share of i's sums, V_j the volume; seen from j, v and g both change sign, so the same
+    // products with V_i.
+    auto add = [&](std::size_t i, double volume, const Pair& p) {
+        sums[i][0] -= volume * (p.v[0] * p.g[0] + p.v[1] * p.g[1] + p.v[2] * p.g[2]);
+        sums[i][1] += volume * (p.v[1] * p.g[2] - p.v[2] * p.g[1]);
+        sums[i][2] += volume * (p.v[2] * p.g[0] - p.v[0] * p.g[2]);
+        sums[i][3] += volume * (p.v[0] * p.g[1] - p.v[1] * p.g[0]);
+        sums[i][4] += volume * volume * (p.v[0] * p.v[0] + p.v[1] * p.v[1] + p.v[2] * p.v[2]) *
+                      (p.g[0] * p.g[0] + p.g[1] * p.g[1] + p.g[2] * p.g[2]);
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!s.interacting[i]) continue;
+        for (std::uint32_t k = list.forward_offsets[i]; k < list.forward_offsets[i + 1]; ++k) {
+            const std::uint32_t j = list.forward[k];
+            if (!s.interacting[j]) continue;
+            const Pair p = pair(s, i, j);
+            if (!p.inside) continue;
+            add(i, s.m[j] / s.rho[j], p), add(j, s.m[i] / s.rho[i], p);
+        }
+        for (std::uint32_t k = list.ghost_offsets[i]; k < list.ghost_offsets[i + 1]; ++k) {
+            const std::uint32_t j = list.ghost[k];
+            if (!s.interacting[j]) continue;
+            const Pair p = pair(s, i, j);
+            if (p.inside) add(i, s.m[j] / s.rho[j], p);
+        }
+    }
+    RadiossGradient out{std::vector<double>(n, 0.0), std::vector<double>(n, 0.0)};
+    for (std::size_t i = 0; i < n; ++i) {
+        out.second_order[i] = -0.5 * dt1 * sums[i][4];
+        const double div = std::abs(sums[i][0] + out.second_order[i]);
+        const double rot = std::sqrt(sums[i][1] * sums[i][1] + sums[i][2] * sums[i][2] + sums[i][3] * sums[i][3]);
+        out.f[i] = div / std::max(1e-20, div + rot);
+    }
+    return out;
+}
+
+double radioss_nodal_time_step(const Particles& s, const NeighbourList& list, const std::vector<double>& f, double qa,
+                               double qb, int threads) {
+    const std::size_t n = s.real;
+    std::vector<double> stiffness(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!s.interacting[i]) continue;
+        for (std::uint32_t k = list.forward_offsets[i]; k < list.forward_offsets[i + 1]; ++k) {
+            const std::uint32_t j = list.forward[k];
+            if (!s.interacting[j]) continue;
+            const Pair p = pair(s, i, j);
+            if (!p.inside) continue;
+            stiffness[i] += pair_stiffness(s, i, j, p, f[i], f[j], qa, qb);
+            Pair q = p;  // the same pair seen from j: x and v reversed, g reversed (|g| alike)
+            for (int a = 0; a < 3; ++a) q.x[a] = -p.x[a], q.v[a] = -p.v[a], q.g[a] = -p.g[a];
+            stiffness[j] += pair_stiffness(s, j, i, q, f[j], f[i], qa, qb);
+        }
+        for (std::uint32_t k = list.ghost_offsets[i]; k < list.ghost_offsets[i + 1]; ++k) {
+            const std::uint32_t j = list.ghost[k];
+            if (!s.interacting[j]) continue;
+            const Pair p = pair(s, i, j);
+            if (p.inside) stiffness[i] += pair_stiffness(s, i, j, p, f[i], f[s.ghost_source[j - n]], qa, qb);
+        }
+    }
+    double smallest = std::numeric_limits<double>::infinity();
+#pragma omp parallel for schedule(static) reduction(min : smallest) num_threads(threads)
+    for (std::size_t i = 0; i < n; ++i)
+        if (s.interacting[i] && stiffness[i] > 0) smallest = std::min(smallest, std::sqrt(2 * s.m[i] / stiffness[i]));
     return smallest;
 }
 

@@ -45,7 +45,7 @@ template <int Dimension, bool Renormalise>
     const double dvx = a.vx - b.vx, dvy = a.vy - b.vy, dvz = a.vz - b.vz;
     const double v_dot_g = dvx * gx + dvy * gy + dvz * gz;
     const double v_dot_x = dvx * dx + dvy * dy + dvz * dz;
-    const double pi_ij = viscosity.pi(v_dot_x, r2, hij, 0.5 * (a.c + b.c), 0.5 * (a.rho + b.rho));
+    const double pi_ij = viscosity.pi(v_dot_x, r2, hij, 0.5 * (a.c + b.c), 0.5 * (a.rho + b.rho), 0.5 * (a.f + b.f));
     return {gx, gy, gz, v_dot_g, momentum_factor<Renormalise>(a.s6, a.s7, a.rho, b.s6, b.s7, b.rho, pi_ij), pi_ij};
 }
 
@@ -167,7 +167,7 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
 
     // The SIMD rows (pair_rows.hpp) for fluid decks when the CPU runs them; the scalar loop below
     // then has nothing to do.
-    const PairRowsPath fast = !Solid && rp.simd ? best_pair_rows(rp.avx512) : PairRowsPath{};
+    const PairRowsPath fast = !Solid && rp.simd && !rp.viscosity_switch ? best_pair_rows(rp.avx512) : PairRowsPath{};
     const PairRows view = fast.run ? pair_rows_view<Dimension, Renormalise>(s, list, rp, scratch) : PairRows{};
     const std::size_t scalar_end = fast.run ? 0 : real;
 
@@ -272,7 +272,9 @@ void compute_rates(Particles& s, const NeighbourList& list, const RateParameters
     // and V = m / rho once per particle.
     // The SIMD loop reads the same values from two arrays (rates.hpp), the scalar loop from one.
     const std::size_t n = s.total();
-    const bool simd = parameters.simd && !parameters.solid && best_pair_rows(parameters.avx512).run;
+    const bool simd = parameters.simd && !parameters.solid && !parameters.viscosity_switch &&
+                      best_pair_rows(parameters.avx512).run;
+    const double* switches = parameters.viscosity_switch ? parameters.viscosity_switch->data() : nullptr;
     if (simd) scratch.positions.resize(n), scratch.positions_f.resize(n), scratch.records.resize(n);
     else scratch.packed.resize(n);
     PackedParticle* packed = scratch.packed.data();
@@ -291,7 +293,8 @@ void compute_rates(Particles& s, const NeighbourList& list, const RateParameters
             largest = std::max({largest, std::abs(s.x[i]), std::abs(s.y[i]), std::abs(s.z[i])});
             records[i] = {s.vx[i], s.vy[i], s.vz[i], m, s.rho[i], s.c[i], f.s6, f.s7};
         } else {
-            packed[i] = {s.x[i], s.y[i], s.z[i], s.vx[i], s.vy[i], s.vz[i], s.h[i], m, s.rho[i], s.c[i], f.s6, f.s7, volume};
+            const double sw = !switches ? 1.0 : switches[i < s.real ? i : s.ghost_source[i - s.real]];
+            packed[i] = {s.x[i], s.y[i], s.z[i], s.vx[i], s.vy[i], s.vz[i], s.h[i], m, s.rho[i], s.c[i], f.s6, f.s7, volume, sw};
         }
     }
     // Rounding a coordinate to float moves it by at most 2^-24 of `largest`; a separation in single

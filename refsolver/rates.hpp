@@ -25,7 +25,7 @@ namespace sphdeck::refsolver {
 struct RateParameters {
     CubicSpline kernel;
     MonaghanViscosity viscosity;
-    bool renormalise = false;  // FORM 1
+    bool renormalise = false;  // the volume-weighted equations (FORM 1, OpenRadioss decks); s.correction is I unless FORM 1
     SmoothingLengthRule h_rule = SmoothingLengthRule::Divergence;
     std::array<double, 3> body{0, 0, 0};  // body acceleration (body_load.hpp)
     int threads = 1;
@@ -36,6 +36,9 @@ struct RateParameters {
     // The SIMD pair loop (pair_rows.hpp) when the CPU runs one and the deck is fluid-only; false:
     // the scalar loop (the reference the tests compare it with).
     bool simd = true;
+    // OpenRadioss decks: the viscosity switch f of each real particle (viscosity.hpp; ghosts take
+    // their source's); null: f = 1. Runs the scalar loop.
+    const std::vector<double>* viscosity_switch = nullptr;
     bool avx512 = true;  // with simd: false keeps the SIMD loop at AVX2 (to compare the two)
 };
 

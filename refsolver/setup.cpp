@@ -253,7 +253,11 @@ SetupResult build_setup(const model::Model& m, const RunOptions& options) {
         massless += !(in.m[i] > 0);
     }
     if (n == 0) {
-        out.push_back({"the deck has no SPH particles (*ELEMENT_SPH): nothing to run", {}, true, true});
+        out.push_back({radioss ? "the deck has no SPH particles (/SPHCEL): nothing to run"
+                               : "the deck has no SPH particles (*ELEMENT_SPH): nothing to run",
+                       {},
+                       true,
+                       true});
         runnable = false;
     }
     if (unlocated)

@@ -31,10 +31,15 @@ struct PartSetup {
 
 struct SolverInput {
     int dimension = 3;
-    bool renormalise = false;  // FORM 1
+    bool renormalise = false;  // FORM 1: the corrected gradient, and the volume-weighted equations
+    // The volume-weighted density and momentum (FORM 1's equations, continuity.hpp and momentum.hpp)
+    // without the correction: OpenRadioss decks, whose engine runs them at every Order (spdens.F,
+    // spforcp.F: d rho_i / dt = rho_i sum_j V_j v_ij . grad W, F_i = sum_j V_i V_j (sigma_i + sigma_j) grad W).
+    bool volume_weighted = false;
     SmoothingLengthRule h_rule = SmoothingLengthRule::Divergence;
     double q1 = 1.5, q2 = 0.06, tssfac = 0.9;
-    bool radioss_step = false;  // OpenRadioss decks: the engine's particle step (radioss_time_step.hpp)
+    // OpenRadioss decks: the engine's particle step, or with /DT/NODA its nodal step (radioss_time_step.hpp).
+    bool radioss_step = false, radioss_nodal_step = false;
     double end_time = 0;
     long long end_cycle = 0;  // *CONTROL_TERMINATION ENDCYC, 0: none
     long long ncbs = 1;
@@ -42,6 +47,7 @@ struct SolverInput {
     double maxv = 1e15;                      // <= 0: no velocity check
     std::optional<std::array<double, 6>> box;  // *CONTROL_SPH BOXID
     std::vector<SymmetryPlane> planes;
+    unsigned planes_per_image = 3;  // corner images across up to 3 planes; OpenRadioss decks 1 (spsym.F)
     std::vector<BodyLoad> loads;
     std::vector<PartSetup> parts;
     // Per particle, model order.

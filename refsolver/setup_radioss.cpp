@@ -93,16 +93,11 @@ std::vector<Unsupported> radioss_unsupported(const model::Model& m, const model:
                                  s.id),
                 s.ilev.span, false);
     }
-    // The engine's pair loop weights the viscosity by (f_i + f_j) / 2, f = |div v| / (|div v| +
-    // |rot v|) (spforcp.F); the solver applies it in full.
-    if (!m.particles.part.empty())
-        add(out, "the viscosity's divergence/rotation switch of the engine (spforcp.F) is not applied: full qa/qb "
-                 "viscosity in every approaching pair",
-            {}, false);
-    if (const model::RadiossDt* dt = f.time_step(model::DtKind::Nodal))
-        add(out, fmt::format("{}: the engine's nodal step sqrt(2 m / K*) (dtnoda.F) is not computed; the engine's "
-                             "particle step d / (q + sqrt(q^2 + c^2)) (mdtsph.F) is scaled by {}",
-                             dt->keyword, m.controls.tssfac.value),
+    // /DT/NODA/CST (and /DT/NODA/SET...) with a minimum step adds mass to keep the step (dtnoda.F).
+    if (const model::RadiossDt* dt = f.time_step(model::DtKind::Nodal); dt && dt->dtmin.value > 0)
+        add(out, fmt::format("{}: the minimum step {} is not enforced (the engine adds nodal mass or stops there): "
+                             "the solver runs the nodal step as computed",
+                             dt->keyword, dt->dtmin.value),
             dt->span, false);
     return out;
 }
@@ -338,9 +333,12 @@ void setup_radioss_controls(const model::Model& m, const model::RadiossRunInput&
     bool order1 = false;
     for (const model::RadiossSphProperty& p : f.sph_properties) order1 = order1 || p.order.value == 1;
     in.renormalise = order1;
+    in.volume_weighted = true;
+    in.planes_per_image = 1;  // the engine's single images (spsym.F), no corner images  // the engine's equations at every Order (spdens.F, spforcp.F)
     in.h_rule = SmoothingLengthRule::Divergence;  // h follows the volume: dh/dt = h div v / 3, h ~ rho^(-1/3) (h_1D 0)
     in.tssfac = m.controls.tssfac.value > 0 ? m.controls.tssfac.value : 0.9;
     in.radioss_step = true;
+    in.radioss_nodal_step = f.time_step(model::DtKind::Nodal) != nullptr;  // /DT/NODA: dtnoda.F
     in.end_time = options.end_time.value_or(run.end_time.value_or(0.0));
     in.ncbs = 1;
     in.maxv = 0;  // no velocity check in Radioss

@@ -82,12 +82,27 @@ struct Simulation::Impl {
 
     void initialise();
     void step();
+    // OpenRadioss decks: the engine's central differences (radioss_cycle below).
+    double dt12 = 0;              // (dt_{n-1/2} + dt_{n+1/2}) / 2 of the last cycle: the velocity update's step
+    double dt1 = 0;               // dt_{n-1/2}, the step that led to the current cycle (0 at cycle 0)
+    // The velocity at the current time: v^(n-1/2) + dt1 / 2 a^n for OpenRadioss decks (the engine's
+    // listing, ecrit.F), the leapfrog's v otherwise.
+    std::array<double, 3> velocity(std::size_t k) const {
+        const double w = in.radioss_step ? 0.5 * dt1 : 0.0;
+        return {s.vx[k] + w * s.ax[k], s.vy[k] + w * s.ay[k], s.vz[k] + w * s.az[k]};
+    }
+    std::vector<double> heating;  // per real particle: the viscous power per unit mass of the last cycle
+    std::vector<double> switches;  // per real particle: the engine's viscosity switch (viscosity.hpp)
+    void radioss_cycle(double dt1);
+    void radioss_step();
     void evaluate();  // EOS, lists, corrections, rates at the current (predicted) state
     void update_eos();
     void apply_kinematic();
-    // TSSFAC times `smallest` (time_step.hpp), or for OpenRadioss decks the engine's particle step.
+    // TSSFAC times `smallest` (time_step.hpp), or for OpenRadioss decks the engine's particle or
+    // nodal step (/DT/NODA).
     double next_time_step(double smallest) const {
-        if (in.radioss_step) smallest = radioss_particle_time_step(s, list, in.q1, in.q2, rates.threads);
+        if (in.radioss_nodal_step) smallest = radioss_nodal_time_step(s, list, switches, in.q1, in.q2, rates.threads);
+        else if (in.radioss_step) smallest = radioss_particle_time_step(s, list, in.q1, in.q2, rates.threads);
         return in.tssfac * smallest;
     }
     void update_interacting();
@@ -125,9 +140,9 @@ void Simulation::Impl::rebuild() {
     if (!(h_max > 0)) h_max = 1;
     skin = skin_share * h_max;
     const double radius = CubicSpline::support_factor * h_max + skin;
-    build_ghosts(s, in.planes, radius, rates.threads);
+    build_ghosts(s, in.planes, radius, rates.threads, in.planes_per_image);
     // Also sorts the real particles into cell order; FORM 1 reads the full lists too.
-    list.build(s, radius, rates.threads, rates.renormalise);
+    list.build(s, radius, rates.threads, in.renormalise);
     const std::size_t n = s.real;
 #pragma omp parallel for schedule(static) num_threads(rates.threads)
     for (std::size_t i = 0; i < n; ++i) s.x_built[i] = s.x[i], s.y_built[i] = s.y[i], s.z_built[i] = s.z[i];
@@ -204,7 +219,7 @@ void Simulation::Impl::evaluate() {
     update_eos();
     if (needs_rebuild()) rebuild();
     else update_ghosts(s, in.planes, rates.threads);
-    if (rates.renormalise) {
+    if (in.renormalise) {  // FORM 1 (volume_weighted alone keeps the corrections at I)
         compute_corrections(s, list, rates.kernel, rates.threads);
         update_ghosts(s, in.planes, rates.threads);
     }
@@ -244,7 +259,7 @@ void Simulation::Impl::initialise() {
     }
     rates.kernel.dimension = in.dimension;
     rates.viscosity = {in.q1, in.q2};
-    rates.renormalise = in.renormalise;
+    rates.renormalise = in.renormalise || in.volume_weighted;  // the volume-weighted equations
     rates.h_rule = in.h_rule;
     deactivation.maxv = in.maxv, deactivation.box = in.box, deactivation.dimension = in.dimension;
     const auto t0 = Clock::now();
@@ -253,8 +268,12 @@ void Simulation::Impl::initialise() {
     since_rebuild = static_cast<std::size_t>(in.ncbs);  // the first evaluation builds the lists
     s.x_built.assign(n, std::numeric_limits<double>::infinity());
     s.y_built = s.x_built, s.z_built = s.x_built;
-    evaluate();
-    dt_next = std::min(next_time_step(stable_time_step(s, 1.0, rates.threads)), in.end_time - time);
+    if (in.radioss_step) {
+        radioss_cycle(0.0);  // cycle 0: no density update yet (dt_{-1/2} = 0)
+    } else {
+        evaluate();
+        dt_next = std::min(next_time_step(stable_time_step(s, 1.0, rates.threads)), in.end_time - time);
+    }
     dt = dt_next;
     timings.total += seconds_since(t0);
     check_finite();
@@ -275,6 +294,7 @@ void Simulation::Impl::report_non_finite(bool finite) {
 }
 
 void Simulation::Impl::step() {
+    if (in.radioss_step) return radioss_step();
     const auto t0 = Clock::now();
     dt = std::min(dt_next, in.end_time - time);
     if (!(dt > 0) || !std::isfinite(dt)) {
@@ -332,6 +352,98 @@ void Simulation::Impl::step() {
     dt_next = next_time_step(smallest);
     timings.total += seconds_since(t0);
     report_non_finite(finite);
+}
+
+// OpenRadioss decks: one cycle of the engine at the current positions x^n and velocities
+// v^(n-1/2), dt1 = dt_(n-1/2) the step that led here (0 at cycle 0). The engine's order (resol.F,
+// forintp.F; learnt from, not copied; OpenRadioss, AGPL-3.0):
+//   1. the density at x^n, v^(n-1/2) with the old density: rho^n = rho^(n-1) (1 - dt1 div v), div v
+//      with spdens.F's second-order term (radioss_time_step.hpp); the energy by the trapezoid of the
+//      pressure over that volume change (the EOS update of eosmain),
+//      de = -(p^(n-1) + p^n) / 2 d(1/rho); a solid's deviatoric stress by dt1 times its rate;
+//   2. the forces at x^n, v^(n-1/2) with p^n (spforcp.F);
+//   3. the next step dt2 (dtnoda.F or mdtsph.F) and the viscous heating over
+//      dt12 = (dt1 + dt2) / 2 (spwfvis.F: the work of the viscous pair forces goes into the energy);
+//   4. h follows the volume: h += dt1 h div v / 3 (spadah.F).
+// radioss_step then moves: v^(n+1/2) = v^(n-1/2) + dt12 a^n, x^(n+1) = x^n + dt2 v^(n+1/2) (resol.F).
+// So after a step the state is the engine's listing at that cycle: the internal energy with the
+// viscous heating up to dt12 ahead, and the kinetic energy and momentum (totals(), state()) of the
+// velocity synchronised to t^n, v^(n-1/2) + dt1 / 2 a^n (ecrit.F).
+void Simulation::Impl::radioss_cycle(double dt1) {
+    update_interacting();
+    update_eos();
+    if (needs_rebuild()) rebuild();
+    else update_ghosts(s, in.planes, rates.threads);
+    if (in.renormalise) {  // Order 1: the corrections once per cycle, before the density (spcompl.F)
+        compute_corrections(s, list, rates.kernel, rates.threads);
+        update_ghosts(s, in.planes, rates.threads);
+    }
+    rates.body = body_acceleration(in.loads, time);
+    rates.viscosity_switch = nullptr;  // 1 reads only the density, h and stress rates (the SIMD rows may run)
+    compute_rates(s, list, rates, scratch);  // 1: d rho/dt and dh/dt at the old density
+    RadiossGradient gradient = radioss_velocity_gradient(s, list, dt1);
+    const std::size_t n = s.real;
+    s.h_half.resize(n);
+#pragma omp parallel for schedule(static) num_threads(rates.threads)
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!s.active[i]) continue;
+        const PartSetup& part = in.parts[s.part[i]];
+        const double rho_old = s.rho[i], p_old = s.p[i];
+        const double div_extra = gradient.second_order[i];  // spdens.F's second-order term of div v
+        s.rho[i] = rho_old + dt1 * (s.drho[i] - rho_old * div_extra);
+        const double dv = 1 / rho_old - 1 / s.rho[i];  // -d(1/rho): > 0 in compression
+        double p = 0, c = 0;
+        part.eos.evaluate(s.rho[i], s.e[i] + p_old * dv, p, c);  // p^n with the energy predicted
+        s.e[i] += 0.5 * (p_old + p) * dv;
+        const double dh = s.dh[i] + (in.h_rule == SmoothingLengthRule::Divergence ? s.h[i] * div_extra / 3 : 0.0);
+        s.h_half[i] = clamp_smoothing_length(s.h[i] + dt1 * dh, s.h_low[i], s.h_high[i]);  // 4, applied below
+        if (s.solid)
+            for (int k = 0; k < 6; ++k) s.stress[i][k] += dt1 * s.dstress[i][k];
+    }
+    update_eos();
+    update_ghosts(s, in.planes, rates.threads);
+    switches = std::move(gradient.f);
+    rates.viscosity_switch = &switches;
+    compute_rates(s, list, rates, scratch);  // 2
+    if (!in.kinematic.empty()) apply_kinematic();
+    heating.assign(n, 0.0);
+#pragma omp parallel for schedule(static) num_threads(rates.threads)
+    for (std::size_t i = 0; i < n; ++i)  // de/dt less the own pdV work (energy.hpp): the viscous heating
+        if (s.active[i]) heating[i] = s.de[i] - s.p[i] * s.drho[i] / (s.rho[i] * s.rho[i]);
+    dt_next = std::min(next_time_step(0.0), in.end_time - time);  // 3
+    dt12 = 0.5 * (dt1 + dt_next);
+    bool finite = true;
+#pragma omp parallel for schedule(static) reduction(&& : finite) num_threads(rates.threads)
+    for (std::size_t i = 0; i < n; ++i) {
+        if (s.active[i]) s.e[i] += dt12 * heating[i], s.h[i] = s.h_half[i];
+        finite = finite && is_finite(s, i);
+    }
+    state_valid = false;
+    report_non_finite(finite);
+}
+
+void Simulation::Impl::radioss_step() {
+    const auto t0 = Clock::now();
+    dt = std::min(dt_next, in.end_time - time);
+    if (!(dt > 0) || !std::isfinite(dt)) {
+        failure = "the time step collapsed to " + std::to_string(dt) + " at time " + std::to_string(time);
+        return;
+    }
+    if (core_share) rates.threads = core_share->threads();
+    const std::size_t n = s.real;
+#pragma omp parallel for schedule(static) num_threads(rates.threads)
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!s.active[i]) continue;
+        s.vx[i] += dt12 * s.ax[i], s.vy[i] += dt12 * s.ay[i], s.vz[i] += dt12 * s.az[i];
+        s.x[i] += dt * s.vx[i], s.y[i] += dt * s.vy[i], s.z[i] += dt * s.vz[i];
+    }
+    reflect_crossed(s, in.planes, rates.threads);
+    time += dt;
+    deactivation.apply(s);
+    dt1 = dt;
+    radioss_cycle(dt);
+    ++steps, ++since_rebuild;
+    timings.total += seconds_since(t0);
 }
 
 Simulation::Setup Simulation::create(const model::Model& model, const RunOptions& options) {
@@ -404,7 +516,8 @@ const ParticleState& Simulation::state() const {
     for (std::size_t k = 0; k < n; ++k) {
         const std::size_t i = s.model_index[k];
         out.x[i] = s.x[k], out.y[i] = s.y[k], out.z[i] = s.z[k];
-        out.vx[i] = s.vx[k], out.vy[i] = s.vy[k], out.vz[i] = s.vz[k];
+        const std::array<double, 3> v = m.velocity(k);
+        out.vx[i] = v[0], out.vy[i] = v[1], out.vz[i] = v[2];
         out.rho[i] = s.rho[k], out.e[i] = s.e[k], out.h[i] = s.h[k], out.mass[i] = s.m[k];
         out.p[i] = m.in.parts[s.part[k]].eos.pressure(s.rho[k], s.e[k]);  // at the final rho, e
         out.part[i] = s.part[k], out.active[i] = s.active[k];
@@ -423,9 +536,10 @@ Totals Simulation::totals() const {
         if (!s.active[i]) continue;
         const double mass = s.m[i];
         t.mass += mass;
-        t.kinetic += 0.5 * mass * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] + s.vz[i] * s.vz[i]);
+        const std::array<double, 3> v = m.velocity(i);
+        t.kinetic += 0.5 * mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
         t.internal += mass * s.e[i];
-        t.momentum[0] += mass * s.vx[i], t.momentum[1] += mass * s.vy[i], t.momentum[2] += mass * s.vz[i];
+        t.momentum[0] += mass * v[0], t.momentum[1] += mass * v[1], t.momentum[2] += mass * v[2];
         ++t.active;
     }
     t.total = t.kinetic + t.internal;

@@ -32,11 +32,10 @@ std::array<double, 6> mirror_tensor(const SymmetryPlane& q, const std::array<dou
     return {out[0][0], out[1][1], out[2][2], out[0][1], out[0][2], out[1][2]};
 }
 
-constexpr unsigned max_planes_per_image = 3;
-
 }  // namespace
 
-void build_ghosts(Particles& s, const std::vector<SymmetryPlane>& planes, double radius, int threads) {
+void build_ghosts(Particles& s, const std::vector<SymmetryPlane>& planes, double radius, int threads,
+                  unsigned max_planes_per_image) {
     s.ghost_source.clear(), s.ghost_planes.clear();
     const std::size_t count = std::min<std::size_t>(planes.size(), 8);
     for (std::size_t i = 0; i < s.real; ++i) {
@@ -47,7 +46,7 @@ void build_ghosts(Particles& s, const std::vector<SymmetryPlane>& planes, double
             const double dd = s.x[i] * q.normal[0] + s.y[i] * q.normal[1] + s.z[i] * q.normal[2] - q.offset;
             if (dd <= radius) near |= 1u << k;
         }
-        // Every non-empty subset of the near planes, up to three planes per image.
+        // Every non-empty subset of the near planes, up to max_planes_per_image planes per image.
         for (unsigned subset = near; subset; subset = (subset - 1) & near) {
             if (static_cast<unsigned>(std::popcount(subset)) > max_planes_per_image) continue;
             s.ghost_source.push_back(static_cast<std::uint32_t>(i));

@@ -33,7 +33,10 @@ struct SymmetryPlane {
 
 // Rebuilds the ghost list: sources, planes mirrored, and the pair-array sizes. `radius`: the
 // neighbour search radius.
-void build_ghosts(Particles& s, const std::vector<SymmetryPlane>& planes, double radius, int threads = 1);
+// `max_planes_per_image` 1: single images only, as the OpenRadioss engine builds them (spsym.F:
+// one image per /SPHBCS and particle).
+void build_ghosts(Particles& s, const std::vector<SymmetryPlane>& planes, double radius, int threads = 1,
+                  unsigned max_planes_per_image = 3);
 // Copies the sources' current state into their ghosts (every step, before the pair loops).
 void update_ghosts(Particles& s, const std::vector<SymmetryPlane>& planes, int threads = 1);
 // Puts real particles found behind a plane back into the body, reversing the normal velocity

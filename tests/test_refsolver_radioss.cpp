@@ -87,9 +87,10 @@ TEST_CASE("refsolver radioss: /RUN, /DT/NODA, /INIVEL and a TIED plane whose gro
     CHECK(sim.totals().mass == doctest::Approx(45.0));
     const refsolver::ParticleState& s0 = sim.state();
     for (std::size_t i = 0; i < s0.size(); ++i) CHECK(s0.vz[i] == (s0.z[i] == 0 ? 0.0 : -0.1));
-    // c = sqrt(C1 / rho) = 5, h0 = (sqrt2 mp / rho)^(1/3) = 2^(1/6); dt = 0.67 h / (c + |v|) at most.
-    CHECK(sim.dt() <= 0.67 * std::pow(2.0, 1.0 / 6) / 5.0 + 1e-12);
-    CHECK(listed(setup, "/DT/NODA/CST/0: the engine's nodal step", false));
+    // /DT/NODA: the engine's nodal step 0.67 sqrt(2 m / K) (radioss_time_step.hpp), not the particle
+    // step 0.67 h / (q + sqrt(q^2 + c^2)), c = sqrt(C1 / rho) = 5, h0 = (sqrt2 mp / rho)^(1/3) = 2^(1/6).
+    CHECK(sim.dt() > 0.67 * std::pow(2.0, 1.0 / 6) / (5.0 * (1 + std::sqrt(2.0))));
+    CHECK_FALSE(listed(setup, "/DT/NODA", false));  // computed, and its minimum step is 0
     const double e0 = sim.totals().total;
     sim.run();
     CHECK(sim.failure().empty());
@@ -106,14 +107,17 @@ TEST_CASE("refsolver radioss: /RUN, /DT/NODA, /INIVEL and a TIED plane whose gro
     }
     CHECK(pressure > 0);  // the cube is compressed against the plane: p = C1 mu > 0
     CHECK(sim.totals().internal > 0);  // kinetic turned into internal energy
-    // TIED ghosts move against their reals (spadasm.F): the wall's pair forces do work on sideways
-    // motion, so the total is not kept (6 % here, 9 steps); mirrored (SLIDE) ghosts keep it.
-    CHECK(std::abs(sim.totals().total - e0) > 0.02 * e0);
+    // The engine's central differences (simulation.cpp, radioss_cycle) keep the total only to their
+    // time-step error: about 4 % in these 4 steps near the stability limit (the engine's own listing of
+    // WavesCompression drifts 2 % in 44 cycles, and `verify radioss-waves` follows it to its digits).
+    CHECK(std::abs(sim.totals().total - e0) < 0.1 * e0);
     auto slide = solve(dir, cube_starter("", "HYDPLA", "SLIDE"));
     REQUIRE(slide.simulation);
     const double slide_e0 = slide.simulation->totals().total;
     slide.simulation->run();
-    CHECK(std::abs(slide.simulation->totals().total - slide_e0) < 0.01 * slide_e0);
+    CHECK(slide.simulation->failure().empty());
+    CHECK(slide.simulation->totals().internal > 0);
+    CHECK(std::abs(slide.simulation->totals().total - slide_e0) < 0.1 * slide_e0);
 }
 
 TEST_CASE("refsolver radioss: what the solver does not model is refused, the rest runs") {
@@ -135,11 +139,11 @@ TEST_CASE("refsolver radioss: sphdeck run writes history.csv, .vtp and .pvd for 
     TempDir dir;
     std::ofstream(dir.path() / "cube_0000.rad") << cube_starter();
     std::ofstream(dir.path() / "cube_0001.rad") << cube_engine;
-    const Run r = run_sphdeck(dir, "run cube_0000.rad --out out --every 5 --progress-every 0");
+    const Run r = run_sphdeck(dir, "run cube_0000.rad --out out --every 2 --progress-every 0");
     CHECK_MESSAGE(r.exit_code == 0, r.err);
     CHECK(std::filesystem::exists(dir.path() / "out" / "history.csv"));
     CHECK(std::filesystem::exists(dir.path() / "out" / "particles.pvd"));
-    CHECK(std::filesystem::exists(dir.path() / "out" / "particles_000005.vtp"));
+    CHECK(std::filesystem::exists(dir.path() / "out" / "particles_000002.vtp"));
     CHECK(r.err.find("run: step 1, t = ") != std::string::npos);  // the progress line
     CHECK(r.out.find("27 particles, 3D, end time 0.5") != std::string::npos);
 }
@@ -157,10 +161,10 @@ TEST_CASE("refsolver radioss: the radioss-waves decks check clean and keep the s
     }
 }
 
-// The quick variant of `sphdeck verify radioss-waves` (docs/verification.md §6): the energies of the
-// first 7 listed cycles and the mass are within the case's gates; the time step is not (the engine's
-// nodal step is not computed), so the case as a whole reports FAIL and is not asserted here.
-TEST_CASE("refsolver radioss: radioss-waves --quick, energies and mass against the engine's listing") {
+// The quick variant of `sphdeck verify radioss-waves` (docs/verification.md §6): the first 7 listed
+// cycles of the engine. The solver follows the engine's time steps and energies to their printed
+// digits, far inside the case's gates.
+TEST_CASE("refsolver radioss: radioss-waves --quick, energies, time steps and mass against the engine's listing") {
     verify::CaseOptions options;
     options.decks = std::filesystem::path(SPHDECK_SOURCE_DIR) / "decks" / "verification";
     options.quick = true;
@@ -173,4 +177,10 @@ TEST_CASE("refsolver radioss: radioss-waves --quick, energies and mass against t
     CHECK(r.checks[1].passed());  // internal energy
     CHECK(r.checks[4].passed());  // mass
     CHECK(r.checks[4].value == doctest::Approx(597.9076).epsilon(1e-6));
+    CHECK(r.checks[0].error < 0.001);  // kinetic energy, share of E_total(0)
+    CHECK(r.checks[1].error < 0.001);  // internal energy
+    CHECK(r.checks[2].quantity.starts_with("time step, worst of 6 cycles"));
+    CHECK(r.checks[2].error < 0.001);  // dt at cycles 0..5, the first 0.8008
+    CHECK(r.checks[3].error == 0);     // 6 cycles to the engine's time of cycle 6
+    CHECK(r.passed());
 }

@@ -50,6 +50,7 @@ struct CaseResult {
     std::vector<Check> checks;
     std::vector<std::string> method;  // how the figures were obtained (Markdown bullet points)
     std::string svg;                  // the figure: solution against reference
+    std::string details;              // Markdown after the method (radioss-waves: its per-cycle table), may be empty
     std::string failure;              // non-empty when the case could not run (unreadable deck, refused)
 
     bool ran() const { return failure.empty(); }

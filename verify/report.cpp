@@ -77,6 +77,7 @@ std::string case_markdown(const CaseResult& result, bool quick, std::string_view
     md += "\n## Checks\n\n" + markdown_table(check_table(result));
     md += "\n## Method\n\n";
     for (const std::string& line : result.method) md += fmt::format("- {}\n", line);
+    if (!result.details.empty()) md += "\n" + result.details;
     if (!figure.empty()) md += fmt::format("\n![{}]({})\n", result.name, figure);
     return md;
 }
