@@ -5,7 +5,7 @@ JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
 PREFIX ?= /usr/local
 
-.PHONY: all deps deps-build build build-cli demo test test-asan corpus mistakes bench verify install package clean
+.PHONY: all deps deps-build build build-cli python install-python demo test test-asan corpus mistakes bench verify install package clean
 
 all: build
 
@@ -24,6 +24,18 @@ build: deps $(BUILD)/CMakeCache.txt
 # Only the command-line program: what the demo runs (the test binary and benchmarks take most of a build).
 build-cli: deps-build $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS) --target sphdeck
+
+# The Python module sphdeck (python/, README "From Python") into $(BUILD)/python/: import it with
+# PYTHONPATH=$(BUILD)/python. The option is set here, since a tree configured before pybind11-dev was
+# installed has it off.
+python: deps $(BUILD)/CMakeCache.txt
+	cmake -S . -B $(BUILD) -DSPHDECK_PYTHON=ON
+	cmake --build $(BUILD) -j $(JOBS) --target sphdeck_python
+
+# The module into Python's site-packages (SPHDECK_PYTHON_SITE, /usr/local/lib/python3.11/dist-packages on
+# Debian 12; DESTDIR honoured): a copy of one file, no network.
+install-python: python
+	cmake --install $(BUILD) --component python
 
 # check on a deck with typical mistakes (its findings are the point), then the smoothing-length preview.
 demo: build-cli

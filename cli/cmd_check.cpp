@@ -27,8 +27,8 @@
 #include "diag/render_text.hpp"
 #include "edit/fix_session.hpp"
 #include "engine/check.hpp"
+#include "engine/check_named.hpp"
 #include "engine/config_file.hpp"
-#include "engine/include_context.hpp"
 #include "lint/rule_catalog.hpp"
 
 namespace sphdeck::cli {
@@ -134,31 +134,20 @@ struct InputOutcome {
     std::string error;        // the message when the input could not be read
 };
 
-// A named file checked as part of the decks around it that include it (engine/include_context.hpp):
-// each result then holds only the file's findings. A file no deck includes is checked on its own.
+// A named file checked as part of the decks around it that include it (engine/check_named.hpp).
 // Prints nothing: it may run on any thread (--jobs).
 InputOutcome check_named_file(const CheckInput& input, const engine::CheckOptions& options, const CheckArgs& args) {
-    const std::string& path = input.path;
     InputOutcome out;
-    if (path == "-") {  // standard input: named and resolved as --stdin-filename says
-        out.checked.push_back(check_deck_input(path, args.stdin_filename, options));
+    if (input.path == "-") {  // standard input: named and resolved as --stdin-filename says
+        out.checked.push_back(check_deck_input(input.path, args.stdin_filename, options));
         return out;
     }
     // A deck found in a folder is checked alone: the decks of the folder that include it were dropped
     // from the list or are checked themselves (check_inputs.hpp).
-    if (!args.alone && !input.found_in_folder) {
-        engine::IncludeContext context = engine::check_in_context(path, engine::Documents{}, options);
-        if (!context.decks.empty()) {
-            for (std::size_t k = 0; k < context.decks.size(); ++k) {
-                out.included_by += fmt::format("{}{}", k == 0 ? "" : ", ",
-                                               context.decks[k].deck.sources.file(0).display_name);
-                context.decks[k].diagnostics = std::move(context.findings[k]);
-            }
-            out.checked = std::move(context.decks);
-            return out;
-        }
-    }
-    out.checked.push_back(engine::check_file(path, options));
+    engine::NamedCheck named = engine::check_named_file(input.path, options, !args.alone && !input.found_in_folder);
+    for (std::size_t k = 0; k < named.included_by.size(); ++k)
+        out.included_by += fmt::format("{}{}", k == 0 ? "" : ", ", named.included_by[k]);
+    out.checked = std::move(named.checked);
     return out;
 }
 

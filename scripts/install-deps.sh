@@ -19,6 +19,8 @@ test_packages=(
   python3-vtk9   # VTK's own reader checks the .vtp/.pvd files we write (tests/test_io_writers.cpp)
   neovim
   man-db         # `man sphdeck-check` on the installed pages (tests/ci/test_install.py)
+  # The Python module (python/, ctest python-module): pybind11's headers, Python's, pytest.
+  pybind11-dev python3-pybind11 python3-dev python3-pytest
 )
 # node and npm from Debian, unless another install already provides the commands (NodeSource's nodejs
 # carries npm and conflicts with Debian's npm package).

@@ -10,6 +10,8 @@ print (stdout and stderr together, as a terminal shows them):
   - times (`in 0.01 s`, `0.3 s`), the version and the scratch folder are normalised;
   - a command followed directly by another `$` line, or by the block's end, must print nothing.
 A block right after the line `<!-- example: not run -->` is not run (say why next to the marker).
+The examples that `import sphdeck` (the Python module, README "From Python") run with `python3` being
+--python and the module found in --pythonpath; without --pythonpath they are skipped, and said so.
 Exit 0 when every example prints what it shows; 1 with a diff of each one that drifted.
 """
 import argparse
@@ -105,7 +107,11 @@ def output_matches(expected: list, actual: list) -> bool:
     return match(0, 0)
 
 
-def make_scratch(repo: Path, sphdeck: Path) -> tuple:
+def uses_python_module(example: Example) -> bool:
+    return any("import sphdeck" in command.text for command in example.commands)
+
+
+def make_scratch(repo: Path, sphdeck: Path, python: Path = None) -> tuple:
     scratch = tempfile.mkdtemp(prefix="sphdeck-readme-")
     shutil.copytree(repo / "decks", Path(scratch) / "decks", symlinks=True)
     (Path(scratch) / "docs").mkdir()
@@ -113,13 +119,19 @@ def make_scratch(repo: Path, sphdeck: Path) -> tuple:
     bin_dir = Path(scratch) / ".bin"
     bin_dir.mkdir()
     (bin_dir / "sphdeck").symlink_to(sphdeck.resolve())
+    if python:
+        (bin_dir / "python3").symlink_to(python)
     return scratch, bin_dir
 
 
-def run_example(example: Example, repo: Path, sphdeck: Path, verbose: bool = False) -> list:
+def run_example(example: Example, repo: Path, sphdeck: Path, verbose: bool = False, python: Path = None,
+                pythonpath: Path = None) -> list:
     """The drifted commands of one example as (command, expected, actual) triples."""
-    scratch, bin_dir = make_scratch(repo, sphdeck)
+    scratch, bin_dir = make_scratch(repo, sphdeck, python)
     env = dict(os.environ, PATH=f"{bin_dir}:{os.environ.get('PATH', '')}", NO_COLOR="1", COLUMNS="120")
+    if pythonpath:
+        env["PYTHONPATH"] = str(pythonpath.resolve())
+        env["PYTHONDONTWRITEBYTECODE"] = "1"
     env.pop("CI", None)  # progress lines follow the terminal rules, not CI's
     cwd = scratch
     drifted = []
@@ -155,15 +167,22 @@ def main() -> int:
     parser.add_argument("--sphdeck", required=True, type=Path, help="the binary under test")
     parser.add_argument("--repo", type=Path, default=Path(__file__).resolve().parents[2])
     parser.add_argument("--verbose", action="store_true", help="print each command's time on stderr")
+    parser.add_argument("--python", type=Path, help="the python3 the Python module's examples run with")
+    parser.add_argument("--pythonpath", type=Path, help="the folder holding the built Python module sphdeck")
     parser.add_argument("files", nargs="*", type=Path, help="Markdown files (default: README.md, docs/*.md)")
     args = parser.parse_args()
     files = args.files or [args.repo / "README.md", *sorted((args.repo / "docs").glob("*.md"))]
     examples = [example for path in files for example in parse_examples(path)]
+    skipped = 0
+    if not args.pythonpath:
+        skipped = sum(1 for example in examples if uses_python_module(example))
+        examples = [example for example in examples if not uses_python_module(example)]
     failures = 0
     commands = 0
     for example in examples:
         commands += len(example.commands)
-        for text, expected, actual in run_example(example, args.repo, args.sphdeck, args.verbose):
+        for text, expected, actual in run_example(example, args.repo, args.sphdeck, args.verbose, args.python,
+                                                  args.pythonpath):
             failures += 1
             where = os.path.relpath(example.source, args.repo)
             print(f"{where}:{example.line}: `$ {text}` prints other than the example shows")
@@ -173,6 +192,8 @@ def main() -> int:
             print("\n".join("    " + line for line in actual) or "    (nothing)")
     print(f"{commands - failures} passed, {failures} failed "
           f"({len(examples)} console examples, {commands} commands)")
+    if skipped:
+        print(f"{skipped} examples of the Python module skipped: no --pythonpath (the module is not built)")
     return 1 if failures else 0
 
 
