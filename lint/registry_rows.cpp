@@ -3,6 +3,8 @@
 // row. Sorted by code; codes are never reused.
 #include "lint/registry.hpp"
 
+// clang-format off (a table laid out by hand, one row per line)
+
 namespace sphdeck::lint::detail {
 namespace {
 
@@ -422,3 +424,4 @@ constexpr RuleInfo kRows[] = {
 std::span<const RuleInfo> rule_rows() { return kRows; }
 
 }  // namespace sphdeck::lint::detail
+// clang-format on

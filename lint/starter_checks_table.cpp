@@ -9,6 +9,8 @@
 #include "grammar/radioss/cards_build.hpp"
 #include "lint/starter_checks.hpp"
 
+// clang-format off (a table laid out by hand, one row per line)
+
 namespace sphdeck::lint::radioss {
 
 namespace rad = grammar::radioss;
@@ -282,3 +284,4 @@ const StarterLaw* starter_law_of(std::string_view header) {
 }
 
 }  // namespace sphdeck::lint::radioss
+// clang-format on

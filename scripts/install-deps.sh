@@ -21,6 +21,7 @@ test_packages=(
   man-db         # `man sphdeck-check` on the installed pages (tests/ci/test_install.py)
   # The Python module (python/, ctest python-module): pybind11's headers, Python's, pytest.
   pybind11-dev python3-pybind11 python3-dev python3-pytest
+  clang-format-14  # the sources keep .clang-format's layout (ctest sources-formatted)
 )
 # node and npm from Debian, unless another install already provides the commands (NodeSource's nodejs
 # carries npm and conflicts with Debian's npm package).

@@ -8,6 +8,8 @@
 
 #include <array>
 
+// clang-format off (a table laid out by hand, one row per line)
+
 namespace sphdeck::verify::radioss_waves {
 
 struct ListingRow {
@@ -68,3 +70,4 @@ inline constexpr std::array<ListingRow, 45> listing = {{
 }};
 
 }  // namespace sphdeck::verify::radioss_waves
+// clang-format on
