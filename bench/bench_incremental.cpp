@@ -83,9 +83,9 @@ std::uint32_t line_of(const std::vector<std::string_view>& lines, std::string_vi
 }
 
 nlohmann::json replace_change(std::uint32_t line, std::uint32_t from, std::uint32_t to, const std::string& text) {
-    return nlohmann::json::array({{{"range", {{"start", {{"line", line}, {"character", from}}},
-                                              {"end", {{"line", line}, {"character", to}}}}},
-                                   {"text", text}}});
+    return nlohmann::json::array(
+        {{{"range", {{"start", {{"line", line}, {"character", from}}}, {"end", {{"line", line}, {"character", to}}}}},
+          {"text", text}}});
 }
 
 // A workspace holding one open deck; `published` counts the publishDiagnostics it sent.
@@ -115,8 +115,8 @@ struct Editor {
 
 void figure(const char* what, const Timed& times, double goal_ms) {
     const double m = median(times.wall);
-    std::printf("%-58s median %8.1f ms (min %8.1f max %8.1f, n=%zu; CPU median %8.1f ms)  goal %5.0f ms %s\n", what,
-                m, *std::min_element(times.wall.begin(), times.wall.end()),
+    std::printf("%-58s median %8.1f ms (min %8.1f max %8.1f, n=%zu; CPU median %8.1f ms)  goal %5.0f ms %s\n", what, m,
+                *std::min_element(times.wall.begin(), times.wall.end()),
                 *std::max_element(times.wall.begin(), times.wall.end()), times.wall.size(), median(times.cpu), goal_ms,
                 m <= goal_ms ? "met" : "NOT MET");
 }
@@ -158,7 +158,8 @@ void profile(const std::string& path, const std::string& text) {
         lint::RuleContext context(model, deck, no_geometry, out);
         start = Clock::now(), cpu = cpu_ms();
         lint::run_rules(context);
-        std::printf("  %-44s %9.1f ms wall %9.1f ms CPU\n", "rules without the geometry (lint/)", ms_since(start), cpu_ms() - cpu);
+        std::printf("  %-44s %9.1f ms wall %9.1f ms CPU\n", "rules without the geometry (lint/)", ms_since(start),
+                    cpu_ms() - cpu);
     }
     start = Clock::now(), cpu = cpu_ms();
     auto preview = lint::compute_rules_preview(model);
@@ -166,11 +167,12 @@ void profile(const std::string& path, const std::string& text) {
     preview.reset();
     start = Clock::now(), cpu = cpu_ms();
     engine::CheckResult result = engine::check_buffer(copy, path, options);
-    std::printf("  %-44s %9.1f ms wall %9.1f ms CPU\n", "whole check (engine::check_buffer)", ms_since(start), cpu_ms() - cpu);
+    std::printf("  %-44s %9.1f ms wall %9.1f ms CPU\n", "whole check (engine::check_buffer)", ms_since(start),
+                cpu_ms() - cpu);
     start = Clock::now(), cpu = cpu_ms();
     auto json = lsp::findings_by_file(result, [](const auto&, const std::string& p) { return p; });
-    std::printf("  %-44s %9.1f ms wall %9.1f ms CPU (%zu findings)\n", "findings as LSP JSON", ms_since(start), cpu_ms() - cpu,
-                result.diagnostics.size());
+    std::printf("  %-44s %9.1f ms wall %9.1f ms CPU (%zu findings)\n", "findings as LSP JSON", ms_since(start),
+                cpu_ms() - cpu, result.diagnostics.size());
 }
 
 }  // namespace
@@ -194,8 +196,9 @@ int main(int argc, char** argv) {
         const std::string open_body =
             nlohmann::json{{"jsonrpc", "2.0"},
                            {"method", "textDocument/didOpen"},
-                           {"params", {{"textDocument", {{"uri", sphdeck::lsp::uri_from_path(big_path)},
-                                                         {"version", 1}, {"text", big}}}}}}
+                           {"params",
+                            {{"textDocument",
+                              {{"uri", sphdeck::lsp::uri_from_path(big_path)}, {"version", 1}, {"text", big}}}}}}
                 .dump();
         for (int run = 0; run < runs; ++run) {
             Editor editor;

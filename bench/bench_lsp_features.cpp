@@ -71,7 +71,8 @@ int main(int argc, char** argv) {
                               {"context", {{"includeDeclaration", true}}}};
     };
     auto lines = [](std::uint32_t first, std::uint32_t last) {
-        return nlohmann::json{{"range", {{"start", {{"line", first}, {"character", 0}}}, {"end", {{"line", last}, {"character", 0}}}}}};
+        return nlohmann::json{
+            {"range", {{"start", {{"line", first}, {"character", 0}}}, {"end", {{"line", last}, {"character", 0}}}}}};
     };
     auto bulk = [&](std::uint32_t first, std::uint32_t last) {
         nlohmann::json params = lines(first, last);
@@ -99,9 +100,11 @@ int main(int argc, char** argv) {
         {"documentSymbol", "textDocument/documentSymbol", nlohmann::json::object()},
         {"foldingRange", "textDocument/foldingRange", nlohmann::json::object()},
         // Issue 29: a screenful (60 lines) mid particles, the head of the deck, the whole file (capped).
-        {"semanticTokens/range, 60 lines mid particles", "textDocument/semanticTokens/range", lines(middle, middle + 60)},
+        {"semanticTokens/range, 60 lines mid particles", "textDocument/semanticTokens/range",
+         lines(middle, middle + 60)},
         {"semanticTokens/range, first 200 lines", "textDocument/semanticTokens/range", lines(0, 200)},
-        {"semanticTokens/full (capped: bulk values left out)", "textDocument/semanticTokens/full", nlohmann::json::object()},
+        {"semanticTokens/full (capped: bulk values left out)", "textDocument/semanticTokens/full",
+         nlohmann::json::object()},
         {"inlayHint, 60 lines mid particles (off there)", "textDocument/inlayHint", lines(middle, middle + 60)},
         {"inlayHint, 60 lines mid particles, bulkBlocks", "textDocument/inlayHint", bulk(middle, middle + 60)},
         {"inlayHint, first 200 lines", "textDocument/inlayHint", lines(0, 200)},
@@ -122,12 +125,12 @@ int main(int argc, char** argv) {
                 result = nlohmann::json::array({e.what()});
             }
         });
-        std::string answer = result.is_array() ? std::to_string(result.size()) + " items"
+        std::string answer = result.is_array()  ? std::to_string(result.size()) + " items"
                              : result.is_null() ? "null"
                              : result.contains("changes") && !result["changes"].empty()
                                  ? std::to_string(result["changes"].begin()->size()) + " edits"
                              : result.contains("data") ? std::to_string(result["data"].size() / 5) + " tokens"
-                                                : "object";
+                                                       : "object";
         std::printf("%-45s %10.2f  %s\n", r.what, ms, answer.c_str());
         if (std::getenv("BENCH_SHOW")) std::printf("%s\n", result.dump().substr(0, 600).c_str());
     }

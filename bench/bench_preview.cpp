@@ -41,7 +41,8 @@ model::Model lattice(int nx, int ny, int nz, double dx, double jitter) {
         for (int j = 0; j < ny; ++j)
             for (int i = 0; i < nx; ++i, ++id) {
                 m.nodes.id.push_back(id);
-                m.nodes.x.push_back(i * dx + u(rng)), m.nodes.y.push_back(j * dx + u(rng)), m.nodes.z.push_back(k * dx + u(rng));
+                m.nodes.x.push_back(i * dx + u(rng)), m.nodes.y.push_back(j * dx + u(rng)),
+                    m.nodes.z.push_back(k * dx + u(rng));
                 m.particles.node.push_back(id), m.particles.part.push_back(1);
                 m.particles.mass.push_back(1000.0 * dx * dx * dx), m.particles.volume.push_back(0);
                 m.particles.line.push_back(0);

@@ -187,13 +187,14 @@ int main(int argc, char** argv) {
     const std::size_t n = deck.model.particles.size();
     const char* scalar = std::getenv("BENCH_SCALAR");
     const char* avx2 = std::getenv("BENCH_AVX2");
-    fmt::print("3D dam break in motion: {} particles, spacing {} m; {} warm-up + {} timed steps x {} repetitions "
-               "per thread count; pair loop {}; load average {}\n",
-               n, dx, warm_up, steps, repetitions,
-               scalar && std::string(scalar) == "1" ? "scalar (BENCH_SCALAR=1)"
-               : avx2 && std::string(avx2) == "1"   ? refsolver::best_pair_rows(false).name
-                                                    : refsolver::best_pair_rows().name,
-               load_average());
+    fmt::print(
+        "3D dam break in motion: {} particles, spacing {} m; {} warm-up + {} timed steps x {} repetitions "
+        "per thread count; pair loop {}; load average {}\n",
+        n, dx, warm_up, steps, repetitions,
+        scalar && std::string(scalar) == "1" ? "scalar (BENCH_SCALAR=1)"
+        : avx2 && std::string(avx2) == "1"   ? refsolver::best_pair_rows(false).name
+                                             : refsolver::best_pair_rows().name,
+        load_average());
     bool met = true;
     double alone_one_thread = 0;
     // BENCH_THREADS=1 (or 2): that thread count only, for profiling and quick comparisons.
@@ -210,20 +211,22 @@ int main(int argc, char** argv) {
         }
         const double r = median(rate), s = median(share);
         const double baseline = threads == 1 ? baseline_one_thread : baseline_two_threads;
-        fmt::print("threads {}: {:.3g} particle updates/s (issue-7 baseline {:.2g} on another host, x{:.1f}; {:.3g} per "
-                   "CPU second); rebuild "
-                   "share {:.1f}% ({} rebuilds in {} steps; one rebuild costs {:.2f} steps)\n",
-                   threads, r, baseline, r / baseline, median(cpu_rate), 100 * s, median(rebuilds), steps,
-                   median(rebuild_in_steps));
+        fmt::print(
+            "threads {}: {:.3g} particle updates/s (issue-7 baseline {:.2g} on another host, x{:.1f}; {:.3g} per "
+            "CPU second); rebuild "
+            "share {:.1f}% ({} rebuilds in {} steps; one rebuild costs {:.2f} steps)\n",
+            threads, r, baseline, r / baseline, median(cpu_rate), 100 * s, median(rebuilds), steps,
+            median(rebuild_in_steps));
         if (threads == 2) met = r >= 1e6 && s <= 0.05;
         if (threads == 1) alone_one_thread = r;
-        fmt::print("  per core: {:.3g} updates/s, x{:.2f} the scalar loop on the EPYC VM ({:.3g} per core, 1 thread; "
-                   "goal x2)\n",
-                   r / threads, r / threads / scalar_one_thread_epyc, scalar_one_thread_epyc);
+        fmt::print(
+            "  per core: {:.3g} updates/s, x{:.2f} the scalar loop on the EPYC VM ({:.3g} per core, 1 thread; "
+            "goal x2)\n",
+            r / threads, r / threads / scalar_one_thread_epyc, scalar_one_thread_epyc);
     }
     if (thread_counts.size() > 1)
-        fmt::print("goal (2 threads: >= 1e6 updates/s, rebuild <= 5%): {}; load average now {}\n", met ? "met" : "not met",
-                   load_average());
+        fmt::print("goal (2 threads: >= 1e6 updates/s, rebuild <= 5%): {}; load average now {}\n",
+                   met ? "met" : "not met", load_average());
     const char* loaded = std::getenv("BENCH_LOADED");
     if ((loaded && std::string(loaded) == "0") || thread_counts.size() == 1) return 0;
     // The automatic choice may use 2 threads; forced 2 threads is what a run did before it.
@@ -242,8 +245,9 @@ int main(int argc, char** argv) {
     forced.push_back(measure(deck.model, 2, 1, std::max(1, steps / 8)).rate);  // slow: one short repetition
     stop_busy_loop(busy);
     const double ratio = alone_one_thread / median(automatic), forced_ratio = alone_one_thread / median(forced);
-    fmt::print("loaded machine (a busy loop on one core): automatic threads ({} at the end) {:.3g} updates/s, {:.2f}x the time of 1 "
-               "thread alone (goal <= 1.2x: {}); 2 threads forced {:.3g} updates/s, {:.2f}x\n",
-               chosen, median(automatic), ratio, ratio <= 1.2 ? "met" : "not met", median(forced), forced_ratio);
+    fmt::print(
+        "loaded machine (a busy loop on one core): automatic threads ({} at the end) {:.3g} updates/s, {:.2f}x the time of 1 "
+        "thread alone (goal <= 1.2x: {}); 2 threads forced {:.3g} updates/s, {:.2f}x\n",
+        chosen, median(automatic), ratio, ratio <= 1.2 ? "met" : "not met", median(forced), forced_ratio);
     return 0;
 }

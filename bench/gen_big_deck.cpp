@@ -23,9 +23,9 @@
 
 namespace {
 
-constexpr double kSpacing = 1.0e-3;   // m
-constexpr double kDensity = 1000.0;   // kg/m^3 (water)
-constexpr double kJitter = 0.1;       // max displacement per axis, in spacings
+constexpr double kSpacing = 1.0e-3;          // m
+constexpr double kDensity = 1000.0;          // kg/m^3 (water)
+constexpr double kJitter = 0.1;              // max displacement per axis, in spacings
 constexpr long long kMaxNodes = 99'999'999;  // largest id an I8 field holds
 
 // Buffered writer: lines are formatted into one large buffer and flushed with fwrite.
@@ -80,9 +80,7 @@ void put_e16(char* p, double v) {
 }
 
 // Uniform in [-1, 1) from 24 bits of one mt19937 draw: the same numbers on every platform.
-double jitter(std::mt19937& rng) {
-    return static_cast<double>(rng() >> 8) * (2.0 / 16777216.0) - 1.0;
-}
+double jitter(std::mt19937& rng) { return static_cast<double>(rng() >> 8) * (2.0 / 16777216.0) - 1.0; }
 
 void write_header(Out& out, long long nodes) {
     const double gamma = 7.0;
@@ -170,8 +168,8 @@ int main(int argc, char** argv) {
         const std::string_view s = argv[2];
         auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), nodes);
         if (ec != std::errc() || end != s.data() + s.size() || nodes < 1 || nodes > kMaxNodes) {
-            std::fprintf(stderr, "gen_big_deck: NODES must be an integer from 1 to %lld, got '%s'\n",
-                         kMaxNodes, argv[2]);
+            std::fprintf(stderr, "gen_big_deck: NODES must be an integer from 1 to %lld, got '%s'\n", kMaxNodes,
+                         argv[2]);
             return 2;
         }
     }

@@ -99,8 +99,10 @@ void one_check(const std::string& path) {
     const std::span<const double> x = m.nodes.x, y = m.nodes.y, z = m.nodes.z;
     if (x.size() < 2) return;
     const double spacing = preproc::estimated_spacing(x, y, z);
-    timed("  preview part: grid binning (cell = spacing)", [&] { return preproc::NeighbourGrid(x, y, z, spacing).size(); });
-    timed("  preview part: nearest neighbours (grid included)", [&] { return preproc::nearest_neighbours_grid(x, y, z).distance.size(); });
+    timed("  preview part: grid binning (cell = spacing)",
+          [&] { return preproc::NeighbourGrid(x, y, z, spacing).size(); });
+    timed("  preview part: nearest neighbours (grid included)",
+          [&] { return preproc::nearest_neighbours_grid(x, y, z).distance.size(); });
     const std::vector<std::uint32_t> group(x.size(), 0);
     const double support[] = {2.4 * spacing}, tolerance[] = {1e-9 * spacing};
     timed("  preview part: neighbour counts (grid included)", [&] {

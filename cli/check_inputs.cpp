@@ -102,7 +102,8 @@ ExpandedInputs expand_inputs(const std::vector<std::string>& given, const std::v
                 it.disable_recursion_pending();  // .git, .vscode ..., and folders --exclude names
                 continue;
             }
-            if (it->is_regular_file(ec) && grammar::is_deck_to_check(it->path()) && !excluded(it->path(), path, exclude))
+            if (it->is_regular_file(ec) && grammar::is_deck_to_check(it->path()) &&
+                !excluded(it->path(), path, exclude))
                 found.push_back(it->path().string());
         }
         if (found.empty()) {

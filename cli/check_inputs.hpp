@@ -11,7 +11,7 @@
 namespace sphdeck::cli {
 
 struct CheckInput {
-    std::string path;             // as given or found ("-" for standard input)
+    std::string path;              // as given or found ("-" for standard input)
     bool found_in_folder = false;  // found by searching a folder, not named
 };
 

@@ -23,7 +23,8 @@ void FindingStatistics::add(const std::string& file, const std::vector<diag::Dia
 std::string FindingStatistics::file_summary(const std::string& file) const {
     const auto it = by_file_.find(file);
     const diag::Counts counts = it == by_file_.end() ? diag::Counts{} : it->second;
-    return fmt::format("{}: {} error(s), {} warning(s), {} info(s)", file, counts.errors, counts.warnings, counts.infos);
+    return fmt::format("{}: {} error(s), {} warning(s), {} info(s)", file, counts.errors, counts.warnings,
+                       counts.infos);
 }
 
 std::string FindingStatistics::table(const diag::RuleCatalog& catalog) const {

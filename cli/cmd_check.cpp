@@ -49,7 +49,7 @@ struct CheckArgs {
     std::string stdin_filename;
     bool statistics = false, exit_zero = false;
     std::string output_file;
-    unsigned jobs = 0;  // decks checked at once; 0: one per core
+    unsigned jobs = 0;                     // decks checked at once; 0: one per core
     CLI::Option* select_option = nullptr;  // to tell "--select" absent from empty
 };
 
@@ -57,9 +57,12 @@ struct CheckArgs {
 void print_text(const engine::CheckResult& r, const CheckArgs& args, bool colour) {
     diag::RenderOptions options{colour};
     for (const TextItem& item : fold_for_text(r.diagnostics, r.deck, args.max_per_code)) {
-        if (!item.finding) fmt::print("{}{}", item.line, args.format == "concise" ? "" : "\n");
-        else if (args.format == "concise") fmt::print("{}", diag::render_concise(*item.finding, r.deck.sources));
-        else fmt::print("{}\n", diag::render_full(*item.finding, r.deck.sources, options));
+        if (!item.finding)
+            fmt::print("{}{}", item.line, args.format == "concise" ? "" : "\n");
+        else if (args.format == "concise")
+            fmt::print("{}", diag::render_concise(*item.finding, r.deck.sources));
+        else
+            fmt::print("{}\n", diag::render_full(*item.finding, r.deck.sources, options));
     }
 }
 
@@ -159,8 +162,8 @@ struct FixTotals {
 
 // --fix: mends the deck read from `path` and its includes (edit::fix_deck) and writes the files that
 // changed; --diff prints their diff instead and writes nothing. Returns the check of the fixed texts.
-engine::CheckResult fix_deck(const std::string& path, engine::Documents& documents,
-                             const engine::CheckOptions& options, const CheckArgs& args, FixTotals& totals) {
+engine::CheckResult fix_deck(const std::string& path, engine::Documents& documents, const engine::CheckOptions& options,
+                             const CheckArgs& args, FixTotals& totals) {
     if (path == "-") throw std::runtime_error("--fix and --diff mend files, not standard input");
     const edit::FixLevel level = args.unsafe_fixes ? edit::FixLevel::Unsafe : edit::FixLevel::Safe;
     edit::FixOutcome outcome = edit::fix_deck(path, documents, options, level);
@@ -231,7 +234,8 @@ int run_check(const CheckArgs& args) {
     const bool text_format = args.format == "full" || args.format == "concise";
     // --fix mends the decks one after the other: each sees the texts the ones before mended.
     const unsigned jobs = fixing ? 1u : args.jobs > 0 ? args.jobs : std::max(1u, std::thread::hardware_concurrency());
-    const unsigned decks_at_once = static_cast<unsigned>(std::min<std::size_t>(jobs, std::max<std::size_t>(inputs.size(), 1)));
+    const unsigned decks_at_once =
+        static_cast<unsigned>(std::min<std::size_t>(jobs, std::max<std::size_t>(inputs.size(), 1)));
     const int threads_per_deck = std::max(1, omp_get_max_threads() / static_cast<int>(decks_at_once));
     const auto check_input = [&](std::size_t i) {
         InputOutcome out;
@@ -271,7 +275,8 @@ int run_check(const CheckArgs& args) {
             } else if (report) {
                 report->add(r.deck.sources, r.diagnostics);
             } else if (args.format == "github") {
-                for (const diag::Diagnostic& d : r.diagnostics) fmt::print("{}", diag::render_github(d, r.deck.sources));
+                for (const diag::Diagnostic& d : r.diagnostics)
+                    fmt::print("{}", diag::render_github(d, r.deck.sources));
             } else {
                 print_text(r, args, colour);
             }
@@ -356,8 +361,7 @@ std::function<int()> setup_check(CLI::App& app) {
         ->check(rule_selector());
     app.add_option("--solver", args->solver, "the run type, for rules that depend on it")
         ->check(CLI::IsMember({"smp", "mpp"}));
-    app.add_option("--fail-on", args->fail_on,
-                   "exit with 1 when a finding has at least this severity [default: error]")
+    app.add_option("--fail-on", args->fail_on, "exit with 1 when a finding has at least this severity [default: error]")
         ->check(CLI::IsMember({"error", "warning", "info", "never"}));
     auto* config = app.add_option("--config", args->config_file,
                                   "read this configuration file instead of searching for sphdeck.toml");

@@ -26,7 +26,8 @@ std::string shown(const nlohmann::ordered_json& value) {
 
 std::string diff_location(const engine::DiffLocation& at) {
     if (at.line == 0) return at.file.empty() ? "default" : at.file + " (default)";
-    return at.column > 0 ? fmt::format("{}:{}:{}", at.file, at.line, at.column) : fmt::format("{}:{}", at.file, at.line);
+    return at.column > 0 ? fmt::format("{}:{}:{}", at.file, at.line, at.column)
+                         : fmt::format("{}:{}", at.file, at.line);
 }
 
 std::string id_list(const std::vector<long long>& list, std::size_t count) {
@@ -43,7 +44,8 @@ void print_bulk(std::string_view what, std::string_view changed_word, const engi
     if (b.removed) line += fmt::format("; {} removed ({})", b.removed, id_list(b.removed_ids, b.removed));
     if (b.changed) line += fmt::format("; {} {} ({})", b.changed, changed_word, id_list(b.changed_ids, b.changed));
     if (nodes && b.changed)
-        line += fmt::format("; largest displacement {:.6g} at node {}", b.largest_displacement, b.largest_displacement_id);
+        line +=
+            fmt::format("; largest displacement {:.6g} at node {}", b.largest_displacement, b.largest_displacement_id);
     fmt::print("{}\n", line);
 }
 
@@ -58,8 +60,8 @@ void print_diff(const engine::DeckDiff& diff) {
         } else {
             fmt::print("{} ({} -> {})\n", name, diff_location(k.before_at), diff_location(k.after_at));
             for (const auto& f : k.fields)
-                fmt::print("  {}: {} -> {}  ({} -> {})\n", f.field, shown(f.before), shown(f.after), diff_location(f.before_at),
-                           diff_location(f.after_at));
+                fmt::print("  {}: {} -> {}  ({} -> {})\n", f.field, shown(f.before), shown(f.after),
+                           diff_location(f.before_at), diff_location(f.after_at));
         }
     }
     print_bulk("nodes", "moved", diff.nodes, true);
@@ -100,7 +102,9 @@ std::function<int()> setup_diff(CLI::App& app) {
         ->required();
     app.add_option("after", args->after, "the second deck, or - for standard input")->required();
     app.add_option("--stdin-filename", args->stdin_filename, stdin_help);
-    app.add_option("--format", args->format, "output format")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
+    app.add_option("--format", args->format, "output format")
+        ->check(CLI::IsMember({"text", "json"}))
+        ->capture_default_str();
     app.add_option("--rtol", args->rtol, "numbers closer than this relative tolerance are equal")
         ->check(CLI::NonNegativeNumber)
         ->capture_default_str();

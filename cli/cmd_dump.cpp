@@ -40,8 +40,8 @@ int run_dump(const DumpArgs& args) {
     options.reader.include_paths = args.include_paths;
     engine::CheckResult r = check_deck_input(args.deck, args.stdin_filename, options);
     if (grammar::format_of(r.deck) == grammar::DeckFormat::Radioss) {
-        nlohmann::ordered_json out = model::radioss_to_json(model::read_radioss_records(r.deck), r.model, r.deck,
-                                                                  args.particles);
+        nlohmann::ordered_json out =
+            model::radioss_to_json(model::read_radioss_records(r.deck), r.model, r.deck, args.particles);
         print(out, r.deck, args.cards);
         return exit_clean;
     }

@@ -55,7 +55,8 @@ std::vector<std::string> include_paths_for(const std::string& deck, const Format
     std::vector<std::string> paths = args.include_paths;
     if (auto found = engine::find_config(deck)) {
         lint::Config config;
-        if (!engine::load_config(found->string(), config)) paths.insert(paths.end(), config.include_paths.begin(), config.include_paths.end());
+        if (!engine::load_config(found->string(), config))
+            paths.insert(paths.end(), config.include_paths.begin(), config.include_paths.end());
     }
     return paths;
 }
@@ -153,9 +154,10 @@ int run_format(FormatArgs& args) {
     const char* verb = args.check || args.diff ? "would reformat" : "reformatted";
     fmt::print(stderr, "{} {} of {} file{}{}{}\n", verb, totals.changed, totals.files, totals.files == 1 ? "" : "s",
                how.empty() ? "" : " (lines: " + how + ")",
-               totals.kept == 0 ? ""
-                                : fmt::format("; {} card line{} left as written{}", totals.kept,
-                                              totals.kept == 1 ? "" : "s", args.verbose ? "" : " (--verbose lists them)"));
+               totals.kept == 0
+                   ? ""
+                   : fmt::format("; {} card line{} left as written{}", totals.kept, totals.kept == 1 ? "" : "s",
+                                 args.verbose ? "" : " (--verbose lists them)"));
     // --check and --diff exit 1 when a file would change, as `check --diff` does.
     return (args.check || args.diff) && changed ? exit_findings : exit_clean;
 }
@@ -173,7 +175,8 @@ std::function<int()> setup_format(CLI::App& app) {
         ->allow_extra_args(false);
     app.add_option("--stdin-filename", args->stdin_filename, stdin_help);
     app.add_flag("--check", args->check, "write nothing; exit 1 when a file would change (CI, pre-commit)");
-    app.add_flag("--diff", args->diff, "write nothing; print a unified diff of the changes (exit 1 when a file would change)");
+    app.add_flag("--diff", args->diff,
+                 "write nothing; print a unified diff of the changes (exit 1 when a file would change)");
     app.add_flag("--includes", args->options.includes, "format the included files too (else only the named decks)");
     app.add_flag("--headers", args->options.headers, "write a `$#` line naming the fields above each card");
     app.add_option("--to", args->to, "rewrite free (comma) lines in fixed columns when every value fits")

@@ -201,8 +201,7 @@ std::string suggestion(std::string_view name) {
     const auto similar = keywords::similar_keywords(name);
     if (similar.empty()) return "";
     if (similar.size() == 1) return fmt::format("; did you mean {}?", similar[0]);
-    return fmt::format("; did you mean {} or {}?", fmt::join(similar.begin(), similar.end() - 1, ", "),
-                       similar.back());
+    return fmt::format("; did you mean {} or {}?", fmt::join(similar.begin(), similar.end() - 1, ", "), similar.back());
 }
 
 CardFormat format_of(const std::string& s) {

@@ -54,7 +54,8 @@ int run_lsp() {
 
 std::function<int()> setup_lsp(CLI::App& app) {
     auto stdio = std::make_shared<bool>(false);  // accepted and ignored
-    app.add_flag("--stdio", *stdio, "talk over standard input and output (the default and only transport; editors pass it)");
+    app.add_flag("--stdio", *stdio,
+                 "talk over standard input and output (the default and only transport; editors pass it)");
     return [stdio] { return run_lsp(); };
 }
 

@@ -48,11 +48,18 @@ struct History {
     }
     void write(const std::string& path) const {
         using D = std::span<const double>;
-        const std::vector<io::Column> columns = {
-            {"step", std::span<const long long>(step)}, {"time", D(time)}, {"dt", D(dt)},
-            {"kinetic", D(kinetic)}, {"internal", D(internal)}, {"total", D(total)},
-            {"external_work", D(work)}, {"momentum_x", D(mx)}, {"momentum_y", D(my)}, {"momentum_z", D(mz)},
-            {"mass", D(mass)}, {"active", std::span<const long long>(active)}};
+        const std::vector<io::Column> columns = {{"step", std::span<const long long>(step)},
+                                                 {"time", D(time)},
+                                                 {"dt", D(dt)},
+                                                 {"kinetic", D(kinetic)},
+                                                 {"internal", D(internal)},
+                                                 {"total", D(total)},
+                                                 {"external_work", D(work)},
+                                                 {"momentum_x", D(mx)},
+                                                 {"momentum_y", D(my)},
+                                                 {"momentum_z", D(mz)},
+                                                 {"mass", D(mass)},
+                                                 {"active", std::span<const long long>(active)}};
         io::write_csv_file(path, columns);
     }
 };
@@ -70,9 +77,15 @@ public:
         std::vector<std::uint32_t> active(s.active.begin(), s.active.end());
         for (std::size_t i = 0; i < n; ++i) part[i] = sim.part_ids()[s.part[i]];
         using D = std::span<const double>;
-        io::VtpPoints points{s.x, s.y, s.z,
-                             {{"density", D(s.rho)}, {"pressure", D(s.p)}, {"energy", D(s.e)}, {"h", D(s.h)},
-                              {"mass", D(s.mass)}, {"part", std::span<const long long>(part)},
+        io::VtpPoints points{s.x,
+                             s.y,
+                             s.z,
+                             {{"density", D(s.rho)},
+                              {"pressure", D(s.p)},
+                              {"energy", D(s.e)},
+                              {"h", D(s.h)},
+                              {"mass", D(s.mass)},
+                              {"part", std::span<const long long>(part)},
                               {"active", std::span<const std::uint32_t>(active)}},
                              {{"velocity", {D(s.vx), D(s.vy), D(s.vz)}, {"X", "Y", "Z"}}}};
         // Solids (*MAT_ELASTIC): the Cauchy stress sigma = S - p I as a symmetric tensor in VTK's
@@ -114,7 +127,8 @@ bool print_unsupported(const std::vector<refsolver::Unsupported>& items, const e
         const char* severity = stops ? "error" : u.fatal ? "warning" : "note";
         if (!args.quiet || stops)
             fmt::print(stderr, "{}: {}: {}{}\n", span_location(u.span, r.deck.sources, args.deck), severity,
-                       diag::detail::printable(u.what), u.fatal && !u.blocking && args.ignore_unsupported ? " (ignored)" : "");
+                       diag::detail::printable(u.what),
+                       u.fatal && !u.blocking && args.ignore_unsupported ? " (ignored)" : "");
     }
     return fatal;
 }
@@ -139,8 +153,8 @@ void print_summary(const refsolver::Simulation& sim, const refsolver::Totals& st
     // Drift of the energy balance: total - work of the body loads should stay at its start value.
     const double imbalance = end.total - end.external_work - start.total;
     const double scale = std::max({std::abs(start.total), std::abs(end.external_work), std::abs(end.total)});
-    fmt::print("work of the body loads: {:.6g}; energy drift (total - work - total at start): {:.6g}", end.external_work,
-               imbalance);
+    fmt::print("work of the body loads: {:.6g}; energy drift (total - work - total at start): {:.6g}",
+               end.external_work, imbalance);
     if (scale > 0) fmt::print(" ({:.3g}% of {:.6g})", 100.0 * imbalance / scale, scale);
     fmt::print("\n");
 }
@@ -207,7 +221,8 @@ int run_deck(const RunArgs& args) {
         history.write(args.out + "/history.csv");
     }
     print_summary(sim, start, end, wall, particles);
-    if (!args.out.empty()) fmt::print("wrote {0}/history.csv, particles_*.vtp and {0}/particles.pvd (open it in ParaView)\n", args.out);
+    if (!args.out.empty())
+        fmt::print("wrote {0}/history.csv, particles_*.vtp and {0}/particles.pvd (open it in ParaView)\n", args.out);
     if (!sim.failure().empty()) {
         fmt::print(stderr, "sphdeck: error: {}: the run stopped: {}\n", args.deck, sim.failure());
         return exit_findings;
@@ -219,9 +234,13 @@ int run_deck(const RunArgs& args) {
 
 std::function<int()> setup_run(CLI::App& app) {
     auto args = std::make_shared<RunArgs>();
-    app.add_option("deck", args->deck, "LS-DYNA keyword deck, or OpenRadioss starter deck <run>_0000.rad (its engine deck <run>_0001.rad beside it)")->required();
-    app.add_option("--out", args->out, "folder for history.csv (one row per step), particles_NNNNNN.vtp "
-                                       "snapshots and particles.pvd, their time series for ParaView (created if missing)");
+    app.add_option(
+           "deck", args->deck,
+           "LS-DYNA keyword deck, or OpenRadioss starter deck <run>_0000.rad (its engine deck <run>_0001.rad beside it)")
+        ->required();
+    app.add_option("--out", args->out,
+                   "folder for history.csv (one row per step), particles_NNNNNN.vtp "
+                   "snapshots and particles.pvd, their time series for ParaView (created if missing)");
     app.add_option("--every", args->every, "write a snapshot every N steps (0: only the first and the last)")
         ->capture_default_str();
     app.add_option("--end-time", args->end_time, "end time, instead of *CONTROL_TERMINATION ENDTIM (OpenRadioss: /RUN)")

@@ -25,7 +25,7 @@ namespace sphdeck::cli {
 namespace {
 
 struct SmoothArgs {
-    std::string deck;  // as shown in the output: the path, or --stdin-filename for `-`
+    std::string deck;   // as shown in the output: the path, or --stdin-filename for `-`
     std::string input;  // as given: a path or `-`
     std::string stdin_filename;
     std::string format = "table";
@@ -52,7 +52,7 @@ struct ParticleTable {
     std::vector<double> x, y, z, mass, nn_distance, h;
     std::vector<std::uint32_t> neighbours;
     std::vector<std::uint32_t> planes;  // Radioss: symmetry planes each particle lies on (else empty)
-    std::size_t left_out = 0;  // particles without a *NODE
+    std::size_t left_out = 0;           // particles without a *NODE
 
     std::vector<io::Column> columns() const {
         std::vector<io::Column> out = {{"id", std::span<const long long>(id)},
@@ -107,9 +107,12 @@ void write_plot(const std::string& path, const std::string& deck, const preproc:
     for (std::size_t q = 0; q < p.parts.size(); ++q) {
         const long long id = p.parts[q].part;
         io::HistogramPanel ratio{fmt::format("part {}: h / nearest-neighbour distance", id),
-                                 "h / nn distance", {}, false};
+                                 "h / nn distance",
+                                 {},
+                                 false};
         io::HistogramPanel count{fmt::format("part {}: neighbours", id),
-                                 fmt::format("particles within {} of each particle", g4(p.parts[q].support)), {},
+                                 fmt::format("particles within {} of each particle", g4(p.parts[q].support)),
+                                 {},
                                  true};
         const preproc::ParticlePreview& pp = p.particles;
         for (std::size_t i = 0; i < pp.x.size(); ++i) {
@@ -146,13 +149,13 @@ nlohmann::ordered_json to_json(const SmoothArgs& args, const preproc::Preview& p
     nlohmann::ordered_json parts = nlohmann::ordered_json::array();
     for (const preproc::PartPreview& pv : p.parts) parts.push_back(preproc::part_preview_json(pv));
     nlohmann::ordered_json out = {{"version", SPHDECK_VERSION},
-            {"deck", args.deck},
-            {"dimension", p.dimension},
-            {"particles", p.particles.x.size()},
-            {"ini_forced", args.ini.has_value()},
-            {"coincident_pairs", p.coincident.size()},
-            {"neighbour_sample_stride", p.neighbour_sample_stride},
-            {"parts", std::move(parts)}};
+                                  {"deck", args.deck},
+                                  {"dimension", p.dimension},
+                                  {"particles", p.particles.x.size()},
+                                  {"ini_forced", args.ini.has_value()},
+                                  {"coincident_pairs", p.coincident.size()},
+                                  {"neighbour_sample_stride", p.neighbour_sample_stride},
+                                  {"parts", std::move(parts)}};
     if (p.radioss) out["radioss"] = preproc::radioss_preview_json(*p.radioss);
     return out;
 }
@@ -160,8 +163,9 @@ nlohmann::ordered_json to_json(const SmoothArgs& args, const preproc::Preview& p
 // The Radioss values (docs/radioss.md): h rule, symmetry mass split, ghosts, time steps.
 void print_radioss(const preproc::Preview& p) {
     const preproc::RadiossPreview& g = *p.radioss;
-    fmt::print("OpenRadioss parts: h0 is the median of the particles' h; h_min, h_max: hmin*h0, hmax*h0 with "
-               "h_1D 3, h0 with h_1D 2 (constant), 0 when h is unbounded (h_1D 0, 1)\n");
+    fmt::print(
+        "OpenRadioss parts: h0 is the median of the particles' h; h_min, h_max: hmin*h0, hmax*h0 with "
+        "h_1D 3, h0 with h_1D 2 (constant), 0 when h is unbounded (h_1D 0, 1)\n");
     fmt::print("\nOpenRadioss (docs/radioss.md): alpha_sort {}, particle step scale {}{}{}\n", g4(g.alpha_sort),
                g4(g.dt_scale_particle), g.nodal ? fmt::format(", /DT/NODA scale {}", g4(g.dt_scale_nodal)) : "",
                g.engine_deck ? "" : " (no engine deck read: default scale)");
@@ -211,9 +215,10 @@ void print_smooth(const SmoothArgs& args, const preproc::Preview& p, bool contro
                         fmt::format("{}{}", static_cast<int>(pv.ini), pv.sphini_given ? " (SPHINI)" : "")});
     }
     print_table(rows, WordColumn::Last);
-    fmt::print("\nmass: total per part; spacing: median nearest-neighbour distance; h_min, h_max: HMIN*h0, "
-               "HMAX*h0;\nneighbours: min/median/max particles within the kernel support; dt: TSSFAC*h0/c, "
-               "'-' when the sound speed c is unknown\n");
+    fmt::print(
+        "\nmass: total per part; spacing: median nearest-neighbour distance; h_min, h_max: HMIN*h0, "
+        "HMAX*h0;\nneighbours: min/median/max particles within the kernel support; dt: TSSFAC*h0/c, "
+        "'-' when the sound speed c is unknown\n");
     for (const preproc::PartPreview& pv : p.parts)
         for (const std::string& note : preproc::split_notes(pv.notes)) fmt::print("part {}: {}\n", pv.part, note);
     if (!p.coincident.empty())
@@ -226,8 +231,10 @@ void print_mesh_boxes(const engine::CheckResult& r, const preproc::MeshBoxPartic
     for (const preproc::MeshBox& b : boxes.boxes) {
         const std::string where = box_location(r, b);
         if (b.skipped.empty())
-            fmt::print("{}: *DEFINE_SPH_MESH_BOX: {} particles of part {} ({} x {} x {}, cells {} x {} x {}) "
-                       "included above\n", where, b.particles, b.part, b.nx, b.ny, b.nz, g4(b.dx), g4(b.dy), g4(b.dz));
+            fmt::print(
+                "{}: *DEFINE_SPH_MESH_BOX: {} particles of part {} ({} x {} x {}, cells {} x {} x {}) "
+                "included above\n",
+                where, b.particles, b.part, b.nx, b.ny, b.nz, g4(b.dx), g4(b.dy), g4(b.dz));
         else
             fmt::print("{}: *DEFINE_SPH_MESH_BOX of part {}: not previewed: {}\n", where, b.part, b.skipped);
     }
@@ -309,17 +316,22 @@ std::function<int()> setup_smooth(CLI::App& app) {
     app.add_option("--format", args->format, "output format")
         ->check(CLI::IsMember({"table", "json"}))
         ->capture_default_str();
-    app.add_option("--ini", args->ini, "initial smoothing length mode, instead of the deck's *CONTROL_SPH INI: "
-                                       "0 bucket sort, 1 global search, 2 from the mass")
+    app.add_option("--ini", args->ini,
+                   "initial smoothing length mode, instead of the deck's *CONTROL_SPH INI: "
+                   "0 bucket sort, 1 global search, 2 from the mass")
         ->check(CLI::Range(0, 2));
-    app.add_option("--csv", args->csv, "write one row per particle: id, part, x, y, z, mass, nn_distance, h, "
-                                       "neighbours");
-    app.add_option("--vtk", args->vtk, "write the particles and the same point data as VTK XML PolyData (.vtp) "
-                                       "for ParaView");
-    app.add_flag("--vtk-binary", args->vtk_binary, "store the .vtp arrays base64-encoded: smaller and faster "
-                                                   "to load than ASCII");
-    app.add_option("--plot", args->plot, "write histograms of h / nearest-neighbour distance and neighbour "
-                                         "counts per part (.svg)");
+    app.add_option("--csv", args->csv,
+                   "write one row per particle: id, part, x, y, z, mass, nn_distance, h, "
+                   "neighbours");
+    app.add_option("--vtk", args->vtk,
+                   "write the particles and the same point data as VTK XML PolyData (.vtp) "
+                   "for ParaView");
+    app.add_flag("--vtk-binary", args->vtk_binary,
+                 "store the .vtp arrays base64-encoded: smaller and faster "
+                 "to load than ASCII");
+    app.add_option("--plot", args->plot,
+                   "write histograms of h / nearest-neighbour distance and neighbour "
+                   "counts per part (.svg)");
     app.add_option("-I,--include-path", args->include_paths, "extra folder searched for *INCLUDE files")
         ->allow_extra_args(false);
     return [args] {

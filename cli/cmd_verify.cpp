@@ -110,7 +110,10 @@ int run_verify(const VerifyArgs& args) {
         all_passed = all_passed && r.passed();
     }
     fmt::print("{} case(s): {}; reports in {}\n", results.size(),
-               !all_ran ? "some did not run" : all_passed ? "all passed" : "some failed", args.out);
+               !all_ran     ? "some did not run"
+               : all_passed ? "all passed"
+                            : "some failed",
+               args.out);
     if (!all_ran) return exit_usage;
     return all_passed ? exit_clean : exit_findings;
 }
@@ -129,9 +132,10 @@ std::function<int()> setup_verify(CLI::App& app) {
                    "else under the source tree the binary was built in, else the installed "
                    "share/sphdeck/decks/verification)");
     app.add_option("--threads", args->threads, "OpenMP threads (0: the OpenMP default)")->check(CLI::NonNegativeNumber);
-    app.footer("Exit status: 0 when every gated check of every case passes (reference rows, such as the dam "
-               "break's experiments, are reported, not gated), 1 when a case fails, 2 on bad usage or a deck that "
-               "cannot be read or run.");
+    app.footer(
+        "Exit status: 0 when every gated check of every case passes (reference rows, such as the dam "
+        "break's experiments, are reported, not gated), 1 when a case fails, 2 on bad usage or a deck that "
+        "cannot be read or run.");
     return [args] { return run_verify(*args); };
 }
 

@@ -69,10 +69,12 @@ std::string cards_json(const grammar::RawDeck& deck) {
             return v.spec->cell == grammar::radioss::Cell::Skip || v.spec->cell == grammar::radioss::Cell::Skip20;
         };
         for (const grammar::Block& block : deck.blocks)
-            engine::walk_radioss_block(deck, block, version, [&](const grammar::CardLine& line, const engine::RadiossCard& c) {
-                append_card(out, block.keyword, c.title ? "title" : "card", line, c.values, skipped);
-                return true;
-            });
+            engine::walk_radioss_block(deck, block, version,
+                                       [&](const grammar::CardLine& line, const engine::RadiossCard& c) {
+                                           append_card(out, block.keyword, c.title ? "title" : "card", line, c.values,
+                                                       skipped);
+                                           return true;
+                                       });
     } else {
         const auto skipped = [](const model::FieldValue& v) { return v.spec->type == keywords::FieldType::Unused; };
         std::vector<diag::Diagnostic> dropped;

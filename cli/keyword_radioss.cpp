@@ -21,7 +21,6 @@ std::string upper(std::string_view s) {
     return out;
 }
 
-
 // The deck versions (Invers of /BEGIN) that read format `k` of the keyword (formats newest first).
 std::string versions_text(const rad::KeywordSpec& keyword, std::size_t k) {
     const int since = keyword.formats[k].since;
@@ -48,9 +47,10 @@ std::string link_note(char link) {
 std::string card_notes(const rad::KeywordSpec& keyword, const rad::FormatSpec& format, std::size_t i) {
     const rad::CardSpec& card = format.cards[i];
     if (!card.count.empty())
-        return fmt::format("LIST: {} values in all, {} a line, as field {} of the group's first card says; no "
-                           "line for 0",
-                           card.count, card.fields.size(), card.count);
+        return fmt::format(
+            "LIST: {} values in all, {} a line, as field {} of the group's first card says; no "
+            "line for 0",
+            card.count, card.fields.size(), card.count);
     if (card.repeat == rad::Repeat::Once && (card.present_if || !card.when.empty()))
         return fmt::format("once, only when {}; an absent card takes every default", card.condition);
     if (card.repeat == rad::Repeat::Once) return keyword.engine ? "once" : "once; an absent card takes every default";
@@ -70,19 +70,19 @@ void print_card(const rad::CardSpec& card, int version, bool engine) {
     for (std::size_t i = 0; i < card.fields.size() && i < cells.size(); ++i) {
         const rad::FieldSpec& f = card.fields[i];
         const bool to_end = f.cell == rad::Cell::Line;
-        std::string columns = engine ? std::to_string(i + 1)
+        std::string columns = engine   ? std::to_string(i + 1)
                               : to_end ? fmt::format("{}-", cells[i].start + 1)
                                        : fmt::format("{}-{}", cells[i].start + 1, cells[i].start + cells[i].width);
-        rows.push_back({std::move(columns), f.name.empty() ? "-" : std::string(f.name), std::string(rad::cell_kind_name(f.cell)),
-                        f.link ? link_note(f.link) : std::string(f.note)});
+        rows.push_back({std::move(columns), f.name.empty() ? "-" : std::string(f.name),
+                        std::string(rad::cell_kind_name(f.cell)), f.link ? link_note(f.link) : std::string(f.note)});
     }
     if (engine) rows[0][0] = "value";
     std::array<std::size_t, 3> width{};
     for (const auto& row : rows)
         for (std::size_t c = 0; c < width.size(); ++c) width[c] = std::max(width[c], row[c].size());
     for (const auto& row : rows) {
-        std::string line = fmt::format("  {:<{}}  {:<{}}  {:<{}}  {}", row[0], width[0], row[1], width[1], row[2],
-                                       width[2], row[3]);
+        std::string line =
+            fmt::format("  {:<{}}  {:<{}}  {:<{}}  {}", row[0], width[0], row[1], width[1], row[2], width[2], row[3]);
         while (!line.empty() && line.back() == ' ') line.pop_back();
         fmt::print("{}\n", line);
     }
@@ -144,8 +144,8 @@ std::vector<std::pair<std::string, std::string>> radioss_list_rows() {
         std::size_t segments = 0;
         const rad::KeywordSpec* hand = rad::find_keyword(k.name, &segments);
         if (hand && hand->name == k.name) continue;  // the hand-written table's row says it
-        rows.emplace_back(std::string(k.name), fmt::format("[radioss {}, from the CFG files]",
-                                                           k.engine ? "engine" : "starter"));
+        rows.emplace_back(std::string(k.name),
+                          fmt::format("[radioss {}, from the CFG files]", k.engine ? "engine" : "starter"));
     }
     std::sort(rows.begin(), rows.end());
     return rows;

@@ -53,15 +53,15 @@ std::string reworded(const std::string& what) {
     if (std::regex_match(what, m, std::regex(R"((\S+) excludes (\S+))")))
         return fmt::format("{} and {} cannot be given together", m[1].str(), m[2].str());
     std::string text = what;
-    if (!text.empty() && std::isupper(static_cast<unsigned char>(text[0])) && !std::isupper(static_cast<unsigned char>(text[1])))
+    if (!text.empty() && std::isupper(static_cast<unsigned char>(text[0])) &&
+        !std::isupper(static_cast<unsigned char>(text[1])))
         text[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(text[0])));
     return text;
 }
 
 }  // namespace
 
-std::string parse_error_message(const CLI::App& app, const CLI::ParseError& error, int argc,
-                                const char* const* argv) {
+std::string parse_error_message(const CLI::App& app, const CLI::ParseError& error, int argc, const char* const* argv) {
     const std::string command = command_of(app, argc, argv);
     const std::string program = command.empty() ? "sphdeck" : "sphdeck " + command;
     return fmt::format("{}: {}; try '{} --help'", program, reworded(error.what()), program);

@@ -9,7 +9,6 @@ namespace sphdeck::cli {
 
 // The message for a failed parse of `argv` by `app` (help and version requests are not errors and are
 // left to CLI11): "sphdeck check: no deck given; try 'sphdeck check --help'".
-std::string parse_error_message(const CLI::App& app, const CLI::ParseError& error, int argc,
-                                const char* const* argv);
+std::string parse_error_message(const CLI::App& app, const CLI::ParseError& error, int argc, const char* const* argv);
 
 }  // namespace sphdeck::cli

@@ -9,8 +9,8 @@
 
 namespace sphdeck::cli {
 namespace {
-constexpr double show_after = 0.5;   // seconds before the first drawing
-constexpr double redraw_every = 0.1; // seconds between drawings
+constexpr double show_after = 0.5;    // seconds before the first drawing
+constexpr double redraw_every = 0.1;  // seconds between drawings
 constexpr int bar_width = 30;
 }  // namespace
 

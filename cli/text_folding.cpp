@@ -41,7 +41,9 @@ private:
     struct Range {
         std::uint32_t first, last;
         std::size_t block;
-        bool operator<(const Range& o) const { return std::tie(first, last, block) < std::tie(o.first, o.last, o.block); }
+        bool operator<(const Range& o) const {
+            return std::tie(first, last, block) < std::tie(o.first, o.last, o.block);
+        }
     };
     std::map<grammar::FileId, std::vector<Range>> ranges_;
 };
@@ -80,17 +82,16 @@ std::vector<TextItem> fold_for_text(const std::vector<diag::Diagnostic>& finding
                 if (k == kShownPerBlock + 1 && shown[d.code] >= max_per_code) {
                     hidden[d.code] += r.count - kShownPerBlock;
                     first_hidden.try_emplace(d.code, &d);
-                }
-                else if (k == kShownPerBlock + 1) {
+                } else if (k == kShownPerBlock + 1) {
                     std::string lines;
                     for (std::size_t n = 0; n < r.folded_lines.size(); ++n)
                         lines += (n ? ", " : "") + std::to_string(r.folded_lines[n]);
                     if (r.count - kShownPerBlock > r.folded_lines.size()) lines += ", ...";
-                    out.push_back({nullptr, fmt::format("{}: note: {} more {} finding(s) on the lines of this {} "
-                                                        "block: lines {} (--max-per-code 0 shows all) [{}]\n",
-                                                        diag::detail::location(d.span, deck.sources),
-                                                        r.count - kShownPerBlock, d.code,
-                                                        deck.blocks[block[i]].keyword, lines, d.code)});
+                    out.push_back(
+                        {nullptr, fmt::format("{}: note: {} more {} finding(s) on the lines of this {} "
+                                              "block: lines {} (--max-per-code 0 shows all) [{}]\n",
+                                              diag::detail::location(d.span, deck.sources), r.count - kShownPerBlock,
+                                              d.code, deck.blocks[block[i]].keyword, lines, d.code)});
                 }
                 continue;
             }
@@ -106,10 +107,10 @@ std::vector<TextItem> fold_for_text(const std::vector<diag::Diagnostic>& finding
     // In the concise pattern (file:line:col: severity: message [CODE]) at the first finding not shown, so
     // that grep, problem matchers and CI parsers read the fold line as any other.
     for (const auto& [code, n] : hidden)
-        out.push_back({nullptr, fmt::format("{}: note: {} more {} finding(s) not shown (--max-per-code 0 shows all) "
-                                            "[{}]\n",
-                                            diag::detail::location(first_hidden.at(code)->span, deck.sources), n,
-                                            code, code)});
+        out.push_back(
+            {nullptr, fmt::format("{}: note: {} more {} finding(s) not shown (--max-per-code 0 shows all) "
+                                  "[{}]\n",
+                                  diag::detail::location(first_hidden.at(code)->span, deck.sources), n, code, code)});
     return out;
 }
 

@@ -15,9 +15,18 @@ std::string_view to_string(Severity s) {
 }
 
 bool parse_severity(std::string_view word, Severity& out) {
-    if (word == "info" || word == "note") { out = Severity::Info; return true; }
-    if (word == "warning") { out = Severity::Warning; return true; }
-    if (word == "error") { out = Severity::Error; return true; }
+    if (word == "info" || word == "note") {
+        out = Severity::Info;
+        return true;
+    }
+    if (word == "warning") {
+        out = Severity::Warning;
+        return true;
+    }
+    if (word == "error") {
+        out = Severity::Error;
+        return true;
+    }
     return false;
 }
 

@@ -30,7 +30,7 @@ struct Diagnostic {
     std::string code;  // rule code, e.g. "DK010"
     Severity severity = Severity::Error;
     std::string message;  // short lower-case fragment naming the value found and what was expected
-    text::Span span;   // primary location; invalid for deck-wide findings
+    text::Span span;      // primary location; invalid for deck-wide findings
     std::vector<Note> notes;
     std::vector<Fix> fixes = {};  // mends the finding offers, most likely first; empty when none is mechanical
 };

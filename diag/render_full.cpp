@@ -34,9 +34,12 @@ std::size_t utf8_length(std::string_view s, std::size_t i) {
     const unsigned char lead = byte(i);
     std::size_t n = 0;
     char32_t cp = 0;
-    if (lead >= 0xC2 && lead <= 0xDF) n = 2, cp = lead & 0x1F;
-    else if (lead >= 0xE0 && lead <= 0xEF) n = 3, cp = lead & 0x0F;
-    else if (lead >= 0xF0 && lead <= 0xF4) n = 4, cp = lead & 0x07;
+    if (lead >= 0xC2 && lead <= 0xDF)
+        n = 2, cp = lead & 0x1F;
+    else if (lead >= 0xE0 && lead <= 0xEF)
+        n = 3, cp = lead & 0x0F;
+    else if (lead >= 0xF0 && lead <= 0xF4)
+        n = 4, cp = lead & 0x07;
     if (n == 0 || i + n > s.size()) return 0;
     for (std::size_t k = 1; k < n; ++k) {
         if ((byte(i + k) & 0xC0) != 0x80) return 0;
@@ -87,8 +90,7 @@ Excerpt make_excerpt(std::string_view line, const text::Span& span) {
     const std::size_t b0 = span.column > 0 ? span.column - 1 : 0;
     const std::size_t b1 = std::max<std::size_t>(span.end_column > 0 ? span.end_column - 1 : 0, b0 + 1);
     Excerpt whole = render_window(line, 0, b0, b1);
-    if (whole.caret_width > 0 && (!whole.truncated || whole.caret_start + right_context <= max_cells))
-        return whole;
+    if (whole.caret_width > 0 && (!whole.truncated || whole.caret_start + right_context <= max_cells)) return whole;
     std::size_t from = b0, budget = left_context - ellipsis.size();
     while (from > 0) {
         const std::size_t cost = from - 1 < line.size() && line[from - 1] == '\t' ? tab_stop : 1;
@@ -141,8 +143,8 @@ struct Frame {
         for (std::size_t level = 0; level < sources.size(); ++level) {
             const text::SourceFile& file = sources.file(id);
             if (file.parent >= sources.size()) break;  // also no_file
-            equals_note(fmt::format("included from {}:{}", detail::file_name(sources.file(file.parent)),
-                                    file.include_line));
+            equals_note(
+                fmt::format("included from {}:{}", detail::file_name(sources.file(file.parent)), file.include_line));
             id = file.parent;
         }
     }

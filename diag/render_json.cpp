@@ -25,8 +25,8 @@ json include_chain(const text::Span& span, const text::SourceMap& sources) {
     if (!detail::has_location(span, sources)) return chain;
     const std::vector<text::FileId> files = sources.include_chain(span.file);
     for (std::size_t i = 0; i + 1 < files.size(); ++i)
-        chain.push_back({{"file", detail::file_name(sources.file(files[i]))},
-                         {"line", sources.file(files[i + 1]).include_line}});
+        chain.push_back(
+            {{"file", detail::file_name(sources.file(files[i]))}, {"line", sources.file(files[i + 1]).include_line}});
     return chain;
 }
 

@@ -30,8 +30,10 @@ std::string percent_encoded(std::string_view path) {
     std::string out;
     for (char c : path) {
         const auto byte = static_cast<unsigned char>(c);
-        if (std::isalnum(byte) || c == '-' || c == '.' || c == '_' || c == '~' || c == '/') out += c;
-        else out += fmt::format("%{:02X}", byte);
+        if (std::isalnum(byte) || c == '-' || c == '.' || c == '_' || c == '~' || c == '/')
+            out += c;
+        else
+            out += fmt::format("%{:02X}", byte);
     }
     return out;
 }
@@ -75,12 +77,11 @@ json fixes_of(const Diagnostic& d, const text::SourceMap& sources) {
         std::vector<text::FileId> files;
         for (const TextEdit& edit : fix.edits) {
             if (!detail::has_location(edit.span, sources)) continue;
-            json replacement = {
-                {"deletedRegion",
-                 {{"startLine", edit.span.line},
-                  {"startColumn", edit.span.column},
-                  {"endColumn", std::max(edit.span.end_column, edit.span.column)}}},
-                {"insertedContent", {{"text", edit.replacement}}}};
+            json replacement = {{"deletedRegion",
+                                 {{"startLine", edit.span.line},
+                                  {"startColumn", edit.span.column},
+                                  {"endColumn", std::max(edit.span.end_column, edit.span.column)}}},
+                                {"insertedContent", {{"text", edit.replacement}}}};
             std::size_t k = 0;
             while (k < files.size() && files[k] != edit.span.file) ++k;
             if (k == files.size()) {

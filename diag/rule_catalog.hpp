@@ -14,14 +14,14 @@
 namespace sphdeck::diag {
 
 struct RuleMeta {
-    std::string code;      // "SPH030"
-    std::string name;      // "iavis-solid-in-2d"
+    std::string code;                       // "SPH030"
+    std::string name;                       // "iavis-solid-in-2d"
     Severity severity = Severity::Warning;  // the default level
-    std::string summary;   // one line
-    std::string what;      // the "what it does" paragraph
-    std::string help_text;      // the whole documentation as plain text
-    std::string help_markdown;  // the same as Markdown
-    std::string url;            // where the documentation is published
+    std::string summary;                    // one line
+    std::string what;                       // the "what it does" paragraph
+    std::string help_text;                  // the whole documentation as plain text
+    std::string help_markdown;              // the same as Markdown
+    std::string url;                        // where the documentation is published
 };
 
 struct RuleCatalog {

@@ -70,9 +70,8 @@ FixRound choose_fixes(const grammar::SourceMap& sources, const std::vector<diag:
                 break;
             }
             const std::size_t length = sources.line_text(s.file, s.line).size();
-            placed.push_back({&keys[s.file],
-                              Placed{s.line, std::min<std::size_t>(s.column - 1, length),
-                                     std::min<std::size_t>(s.end_column - 1, length), &e.replacement}});
+            placed.push_back({&keys[s.file], Placed{s.line, std::min<std::size_t>(s.column - 1, length),
+                                                    std::min<std::size_t>(s.end_column - 1, length), &e.replacement}});
         }
         if (!usable) {
             ++round.unusable;
@@ -82,8 +81,10 @@ FixRound choose_fixes(const grammar::SourceMap& sources, const std::vector<diag:
         for (const auto& [path, p] : placed) {
             bool known = false;
             for (const Placed& t : taken[*path]) {
-                if (same(t, p)) known = true;
-                else if (overlaps(t, p)) conflict = true;
+                if (same(t, p))
+                    known = true;
+                else if (overlaps(t, p))
+                    conflict = true;
             }
             all_known = all_known && known;
         }

@@ -31,14 +31,15 @@ CardLineState format_card_line(const FormatScope& scope, const grammar::CardLine
                                bool free_allowed, std::string& buffer, LineChanges& out, bool no_comma_or_tab) {
     if (no_comma_or_tab && already_laid_out(text, slots, kinds)) return CardLineState::Fixed;
     if (grammar::is_blank(text)) return CardLineState::Blank;  // a blank card: every default, kept as written
-    if (!free_allowed) return CardLineState::Fixed;  // titles, headings, file names: their text as written
+    if (!free_allowed) return CardLineState::Fixed;            // titles, headings, file names: their text as written
     if (const std::string_view* code = scope.doubt(line.file, line.line)) {
         out.keep(line.file, line.line, std::string("finding ") + std::string(*code));
         return CardLineState::Kept;
     }
     const bool free = free_allowed && grammar::is_free_format(text);
     if (free && !scope.options.to_fixed) return CardLineState::Free;  // free lines stay free
-    const LineLayout laid = free ? free_to_fixed(text, slots, kinds, buffer) : layout_fixed_line(text, slots, kinds, buffer);
+    const LineLayout laid =
+        free ? free_to_fixed(text, slots, kinds, buffer) : layout_fixed_line(text, slots, kinds, buffer);
     if (laid.verdict == LineVerdict::Doubt) {
         out.keep(line.file, line.line, laid.doubt);
         return CardLineState::Kept;

@@ -17,7 +17,6 @@ using keywords::CardRepeat;
 using keywords::CardSpec;
 using keywords::FieldType;
 
-
 using model::CardSequence;
 using model::read_by_reader;
 
@@ -119,7 +118,7 @@ void keyword_case(const grammar::Block& block, KeywordLines& lines, LineChanges&
 std::string_view line_before(const grammar::RawDeck& deck, const grammar::CardLine& line) {
     const std::string_view text = deck.sources.file(line.file).text;
     if (line.offset == 0) return {};
-    std::size_t end = line.offset - 1;  // its '\n'
+    std::size_t end = line.offset - 1;                                       // its '\n'
     const std::size_t begin = end == 0 ? 0 : text.rfind('\n', end - 1) + 1;  // npos + 1 == 0
     if (end > begin && text[end - 1] == '\r') --end;
     return text.substr(begin, end - begin);
@@ -144,7 +143,8 @@ void header_above(const FormatScope& scope, const grammar::CardLine& line, std::
         }
     }
     const std::string_view eol = line_break(scope.deck, line, text.size());
-    if (!out.changes.empty() && out.changes.back().span.file == line.file && out.changes.back().span.line == line.line) {
+    if (!out.changes.empty() && out.changes.back().span.file == line.file &&
+        out.changes.back().span.line == line.line) {
         out.changes.back().replacement.insert(0, header + std::string(eol));
         ++out.counts[static_cast<std::size_t>(FormatChange::Header)];
         return;

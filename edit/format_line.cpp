@@ -43,8 +43,8 @@ LineLayout doubt(std::string_view why) { return {LineVerdict::Doubt, why}; }
 
 }  // namespace
 
-LineLayout layout_fixed_line(std::string_view text, std::span<const FixedField> slots,
-                             std::span<const CellKind> kinds, std::string& out) {
+LineLayout layout_fixed_line(std::string_view text, std::span<const FixedField> slots, std::span<const CellKind> kinds,
+                             std::string& out) {
     out.clear();
     if (text.find('\t') != std::string_view::npos) return doubt("a tab on the line");
     const std::size_t n = std::min(slots.size(), kinds.size());

@@ -18,14 +18,12 @@
 
 namespace sphdeck::edit::detail {
 
-inline std::uint64_t line_key(grammar::FileId file, std::uint32_t line) {
-    return (std::uint64_t{file} << 32) | line;
-}
+inline std::uint64_t line_key(grammar::FileId file, std::uint32_t line) { return (std::uint64_t{file} << 32) | line; }
 
 struct FormatScope {
     const grammar::RawDeck& deck;
     const FormatOptions& options;
-    std::unordered_set<grammar::FileId> files;  // the files formatted
+    std::unordered_set<grammar::FileId> files;                     // the files formatted
     std::unordered_map<std::uint64_t, std::string_view> doubtful;  // line key -> the finding's code
 
     bool formats(grammar::FileId file) const { return files.count(file) != 0; }
@@ -64,8 +62,7 @@ struct LineChanges {
 enum class CardLineState { Blank, Kept, Free, Fixed };
 CardLineState format_card_line(const FormatScope& scope, const grammar::CardLine& line, std::string_view text,
                                std::span<const grammar::FixedField> slots, std::span<const CellKind> kinds,
-                               bool free_allowed, std::string& buffer, LineChanges& out,
-                               bool no_comma_or_tab = false);
+                               bool free_allowed, std::string& buffer, LineChanges& out, bool no_comma_or_tab = false);
 
 void format_dyna(const FormatScope& scope, LineChanges& out);
 void format_radioss(const FormatScope& scope, LineChanges& out);

@@ -59,7 +59,8 @@ diag::Fix suppress_in_file(const grammar::SourceMap& sources, grammar::FileId fi
             return insertion(std::move(description), file, l, *end, fmt::format(",{}", code));
     std::uint32_t line = 1;
     if (comment == '#' && sources.line_text(file, 1).rfind("#RADIOSS", 0) == 0) line = 2;
-    return insertion(std::move(description), file, line, 1, fmt::format("{} sphdeck: disable-file={}\n", comment, code));
+    return insertion(std::move(description), file, line, 1,
+                     fmt::format("{} sphdeck: disable-file={}\n", comment, code));
 }
 
 }  // namespace sphdeck::edit

@@ -18,7 +18,8 @@ struct ChangedLine {
     std::string new_text;
 };
 
-std::vector<ChangedLine> changed_lines(std::string_view text, const text::LineIndex& lines, const text::PlacedEdits& placed) {
+std::vector<ChangedLine> changed_lines(std::string_view text, const text::LineIndex& lines,
+                                       const text::PlacedEdits& placed) {
     std::vector<ChangedLine> changed;
     for (std::size_t i = 0; i < placed.edits.size();) {
         const std::uint32_t line = placed.edits[i].line;

@@ -92,7 +92,9 @@ CheckResult recheck_deck(const std::string& path, const Documents& documents, co
     with_documents.rules.keep_preview = true;  // for the next re-check
     return finish(
         grammar::read_deck(path, with_documents.reader), with_documents,
-        [&](const grammar::dyna::ReaderOptions& reader, const grammar::RawDeck&) { return grammar::read_deck(path, reader); },
+        [&](const grammar::dyna::ReaderOptions& reader, const grammar::RawDeck&) {
+            return grammar::read_deck(path, reader);
+        },
         &previous);
 }
 

@@ -25,7 +25,8 @@ namespace sphdeck::engine {
 struct CheckOptions {
     grammar::dyna::ReaderOptions reader;  // its `overlay` is set by check_deck from the documents
     lint::RuleOptions rules;
-    lint::Config config;  // sphdeck.toml merged with the command line; engine::options_for copies the solver into `rules`
+    lint::Config
+        config;  // sphdeck.toml merged with the command line; engine::options_for copies the solver into `rules`
 };
 
 struct CheckResult {
@@ -33,7 +34,7 @@ struct CheckResult {
     std::vector<diag::Diagnostic> diagnostics;  // sorted by location
     model::DeckSummary summary;
     model::Model model;
-    IncludeGraph includes;  // the files the deck pulled in
+    IncludeGraph includes;                            // the files the deck pulled in
     std::shared_ptr<const preproc::Preview> preview;  // when CheckOptions::rules.keep_preview (else null)
 };
 

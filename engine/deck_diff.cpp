@@ -306,9 +306,13 @@ json location_json(const DiffLocation& at) {
 }
 
 json bulk_json(const BulkChange& b, bool nodes) {
-    json out = {{"before", b.before_count}, {"after", b.after_count}, {"added", b.added},
-                {"removed", b.removed},     {nodes ? "moved" : "changed", b.changed},
-                {"added_ids", b.added_ids}, {"removed_ids", b.removed_ids},
+    json out = {{"before", b.before_count},
+                {"after", b.after_count},
+                {"added", b.added},
+                {"removed", b.removed},
+                {nodes ? "moved" : "changed", b.changed},
+                {"added_ids", b.added_ids},
+                {"removed_ids", b.removed_ids},
                 {nodes ? "moved_ids" : "changed_ids", b.changed_ids}};
     if (nodes && b.changed > 0)
         out["largest_displacement"] = {{"node", b.largest_displacement_id}, {"distance", b.largest_displacement}};
@@ -373,8 +377,11 @@ nlohmann::ordered_json to_json(const DeckDiff& diff) {
         if (k.kind == KeywordChange::Kind::Changed) {
             json fields = json::array();
             for (const FieldChange& f : k.fields)
-                fields.push_back({{"field", f.field}, {"before", f.before}, {"after", f.after},
-                                  {"before_at", location_json(f.before_at)}, {"after_at", location_json(f.after_at)}});
+                fields.push_back({{"field", f.field},
+                                  {"before", f.before},
+                                  {"after", f.after},
+                                  {"before_at", location_json(f.before_at)},
+                                  {"after_at", location_json(f.after_at)}});
             entry["fields"] = std::move(fields);
         }
         keywords.push_back(std::move(entry));

@@ -23,7 +23,7 @@ struct DiffLocation {
 };
 
 struct FieldChange {
-    std::string field;            // "FORM", or "card 3 A1" for a repeated card
+    std::string field;                     // "FORM", or "card 3 A1" for a repeated card
     nlohmann::ordered_json before, after;  // null where the side has no such field
     DiffLocation before_at, after_at;
 };
@@ -41,7 +41,7 @@ struct KeywordChange {
 struct BulkChange {
     std::size_t before_count = 0, after_count = 0, added = 0, removed = 0, changed = 0;
     std::vector<long long> added_ids, removed_ids, changed_ids;  // the first kMostIdsListed of each, ascending
-    double largest_displacement = 0.0;  // nodes only
+    double largest_displacement = 0.0;                           // nodes only
     long long largest_displacement_id = 0;
     bool equal() const { return added == 0 && removed == 0 && changed == 0; }
 };

@@ -26,7 +26,8 @@ std::optional<std::size_t> dyna_field_at_column(const keywords::CardSpec& card, 
         return i < values.size() && values[i].spec && values[i].spec->type != keywords::FieldType::Unused;
     };
     for (std::size_t i = 0; i < values.size(); ++i)
-        if (used(i) && values[i].explicit_value && column >= values[i].span.column && column < values[i].span.end_column)
+        if (used(i) && values[i].explicit_value && column >= values[i].span.column &&
+            column < values[i].span.end_column)
             return i;
     if (grammar::is_free_format(text)) {
         const std::size_t item = comma_item(text, column - 1);
@@ -44,7 +45,8 @@ std::optional<std::size_t> dyna_field_at_column(const keywords::CardSpec& card, 
     return std::nullopt;
 }
 
-std::optional<std::size_t> radioss_field_at_column(const RadiossCard& card, std::string_view text, std::uint32_t column) {
+std::optional<std::size_t> radioss_field_at_column(const RadiossCard& card, std::string_view text,
+                                                   std::uint32_t column) {
     const auto used = [&](std::size_t i) {
         if (i >= card.values.size() || !card.values[i].spec) return false;
         const auto cell = card.values[i].spec->cell;

@@ -25,6 +25,7 @@ std::optional<std::size_t> dyna_field_at_column(const keywords::CardSpec& card, 
                                                 std::uint32_t column);
 
 // The same for a Radioss card line (fixed cells, or commas in free format).
-std::optional<std::size_t> radioss_field_at_column(const RadiossCard& card, std::string_view text, std::uint32_t column);
+std::optional<std::size_t> radioss_field_at_column(const RadiossCard& card, std::string_view text,
+                                                   std::uint32_t column);
 
 }  // namespace sphdeck::engine

@@ -103,7 +103,8 @@ bool ids_meet(std::string_view a, std::string_view b) { return rad::ids_meet(a, 
 
 std::string id_text(const model::FieldValue& v) {
     if (!v.spec || !v.explicit_value) return {};
-    if (v.spec->type == keywords::FieldType::Label && grammar::classify_value(v.text).shape == grammar::ValueShape::Other)
+    if (v.spec->type == keywords::FieldType::Label &&
+        grammar::classify_value(v.text).shape == grammar::ValueShape::Other)
         return model::normalise_id(v.text);
     if (!v.valid || v.number == 0.0 || v.number != std::trunc(v.number) || model::exceeds_integer_range(v.number))
         return {};
@@ -215,8 +216,7 @@ std::vector<IdUse> node_definitions(const CheckResult& deck, long long id) {
     for (const grammar::Block& b : raw.blocks) {
         if (b.keyword != "*NODE") continue;
         if (position < b.line_count) {
-            if (auto use = node_on_line(raw, b.first_line + static_cast<std::uint32_t>(position), id))
-                return {*use};
+            if (auto use = node_on_line(raw, b.first_line + static_cast<std::uint32_t>(position), id)) return {*use};
             break;
         }
         position -= b.line_count;

@@ -98,7 +98,8 @@ std::optional<Slot> slot_of(const CheckResult& deck, const grammar::Span& span) 
 }
 
 bool all_digits(std::string_view s) {
-    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+    return !s.empty() &&
+           std::all_of(s.begin(), s.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
 }
 
 bool name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
@@ -180,7 +181,8 @@ std::vector<grammar::Span> parameter_places(const CheckResult& deck, const std::
 std::optional<grammar::Span> bare_use_in_expression(const CheckResult& deck, const std::string& name) {
     const auto& raw = deck.deck;
     for (const grammar::Block& block : raw.blocks) {
-        if (!starts_with(block.keyword, "*PARAMETER") || block.keyword.find("EXPRESSION") == std::string::npos) continue;
+        if (!starts_with(block.keyword, "*PARAMETER") || block.keyword.find("EXPRESSION") == std::string::npos)
+            continue;
         const std::size_t width = block.format == grammar::CardFormat::Long ? 20 : 10;
         for (const grammar::CardLine* l = raw.begin_lines(block); l != raw.end_lines(block); ++l) {
             const std::string_view text = raw.text(*l);
@@ -259,7 +261,8 @@ std::optional<RenameTarget> rename_target_at(const CheckResult& deck, grammar::F
     auto use = id_at(deck, file, line, column);
     if (!use) return std::nullopt;
     if (radioss && use->kind == "NODE") {
-        if (refusal) *refusal = "renaming a Radioss node is not supported: its /SPHCEL and element lines are not indexed";
+        if (refusal)
+            *refusal = "renaming a Radioss node is not supported: its /SPHCEL and element lines are not indexed";
         return std::nullopt;
     }
     return RenameTarget{use->kind, use->id, use->span};
@@ -285,8 +288,8 @@ RenamePlan plan_rename(const CheckResult& deck, const RenameTarget& target, std:
                 return plan;
             }
         if (auto bare = bare_use_in_expression(deck, target.name)) {
-            plan.refusal = fmt::format("{} is named without '&' in an expression at {}: rename it by hand",
-                                       target.name, where(sources, *bare));
+            plan.refusal = fmt::format("{} is named without '&' in an expression at {}: rename it by hand", target.name,
+                                       where(sources, *bare));
             return plan;
         }
         places = parameter_places(deck, target.name);
@@ -297,7 +300,8 @@ RenamePlan plan_rename(const CheckResult& deck, const RenameTarget& target, std:
         if (value == target.name) return plan;
         const auto existing = find_definitions(deck, target.kind, value);
         if (!existing.empty()) {
-            plan.refusal = fmt::format("{} {} already exists: {}", target.kind, value, describe(deck, existing.front()));
+            plan.refusal =
+                fmt::format("{} {} already exists: {}", target.kind, value, describe(deck, existing.front()));
             return plan;
         }
         places = id_places(deck, target);
@@ -331,8 +335,8 @@ RenamePlan plan_rename(const CheckResult& deck, const RenameTarget& target, std:
         // A reference on a line no layout reads (an unknown keyword): replaced in place when it does not grow.
         if (!slot && parameter && value.size() <= target.name.size()) slot = Slot{0, 0, true, false, ""};
         if (!slot) {
-            plan.refusal = fmt::format("no field holds {} {} at {}: not renamed", target.kind, target.name,
-                                       where(sources, span));
+            plan.refusal =
+                fmt::format("no field holds {} {} at {}: not renamed", target.kind, target.name, where(sources, span));
             plan.edits.clear();
             return plan;
         }
@@ -365,8 +369,8 @@ RenamePlan plan_rename(const CheckResult& deck, const RenameTarget& target, std:
             plan.edits.clear();
             return plan;
         }
-        const FieldReplacement r =
-            replace_in_field(text, slot->start, slot->fixed ? slot->width : 0, start, end, new_value, slot->free_format);
+        const FieldReplacement r = replace_in_field(text, slot->start, slot->fixed ? slot->width : 0, start, end,
+                                                    new_value, slot->free_format);
         if (r.start == r.end && r.text.empty()) continue;
         plan.edits.push_back({grammar::Span{span.file, span.line, static_cast<std::uint32_t>(r.start + 1),
                                             static_cast<std::uint32_t>(r.end + 1)},

@@ -18,9 +18,9 @@ namespace sphdeck::engine {
 
 // What the position of a rename request names.
 struct RenameTarget {
-    std::string kind;        // an id kind ("PART", "NODE"...), or "PARAMETER"
-    std::string name;        // the id ("7") or the parameter's name
-    grammar::Span span;      // where it stands under the cursor (a parameter reference: the name, no '&')
+    std::string kind;    // an id kind ("PART", "NODE"...), or "PARAMETER"
+    std::string name;    // the id ("7") or the parameter's name
+    grammar::Span span;  // where it stands under the cursor (a parameter reference: the name, no '&')
 };
 
 // One replacement in a file's text: bytes [column, end_column) of the line become `text`.

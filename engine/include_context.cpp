@@ -105,8 +105,10 @@ std::vector<fs::path> candidate_decks(const fs::path& file, const std::vector<st
     if (!roots.empty()) {
         for (const std::string& root : roots) {
             std::error_code ec;
-            if (fs::is_directory(root, ec)) add_deck_files(root, out);
-            else if (fs::is_regular_file(root, ec)) out.emplace_back(root);
+            if (fs::is_directory(root, ec))
+                add_deck_files(root, out);
+            else if (fs::is_regular_file(root, ec))
+                out.emplace_back(root);
         }
     } else {
         const auto chain = folders_up_to_root(as_reached(file));
@@ -130,7 +132,8 @@ IncludeContext check_in_context(const fs::path& file, const Documents& documents
     // The candidates that name the file, or name a candidate that does (an include of an include):
     // grown until nothing new is named.
     std::vector<grammar::SourceText> texts(candidates.size());
-    for (std::size_t i = 0; i < candidates.size(); ++i) texts[i] = text_of(candidates[i], documents, options.reader.cache);
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+        texts[i] = text_of(candidates[i], documents, options.reader.cache);
     std::vector<bool> reached(candidates.size(), false);
     std::vector<std::string> names;
     add_names(file, names);

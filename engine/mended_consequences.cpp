@@ -25,7 +25,9 @@ bool is_cause(const diag::Diagnostic& d) {
            (d.fixes.front().safe || judged_cause(d)) && !d.fixes.front().edits.empty();
 }
 
-bool is_cause_code(const std::string& code) { return code == "DK029" || code == "DK030" || code == "DK032" || code == "DK033"; }
+bool is_cause_code(const std::string& code) {
+    return code == "DK029" || code == "DK030" || code == "DK032" || code == "DK033";
+}
 
 using Place = std::tuple<std::string, grammar::FileId, std::uint32_t, std::uint32_t>;
 Place place_of(const diag::Diagnostic& d) { return {d.code, d.span.file, d.span.line, d.span.column}; }
@@ -79,7 +81,8 @@ void fold_mended_consequences(const grammar::RawDeck& deck, std::vector<diag::Di
         // A finding the re-check folds into a cause of its own line (a shift the mended deck's habit now shows)
         // is not gone: it stays, on that line.
         std::set<std::pair<grammar::FileId, std::uint32_t>> cause_lines;
-        for (const diag::Diagnostic& d : recheck(mended_files(deck, diagnostics[cause_at[k]].fixes.front(), documents))) {
+        for (const diag::Diagnostic& d :
+             recheck(mended_files(deck, diagnostics[cause_at[k]].fixes.front(), documents))) {
             after.insert(place_of(d));
             if (is_cause_code(d.code) || is_cause(d)) cause_lines.insert({d.span.file, d.span.line});
         }

@@ -18,7 +18,6 @@ using keywords::CardRepeat;
 using keywords::CardSpec;
 namespace rad = grammar::radioss;
 
-
 using model::CardSequence;
 using model::read_by_reader;
 
@@ -226,8 +225,9 @@ std::vector<ParameterReference> parameter_references(std::string_view text, gram
         std::size_t end = at + 1;
         while (end < text.size() && name_char(text[end])) ++end;
         if (end == at + 1) continue;
-        out.push_back({std::string(text.substr(at + 1, end - at - 1)),
-                       grammar::Span{file, line, static_cast<std::uint32_t>(at + 1), static_cast<std::uint32_t>(end + 1)}});
+        out.push_back(
+            {std::string(text.substr(at + 1, end - at - 1)),
+             grammar::Span{file, line, static_cast<std::uint32_t>(at + 1), static_cast<std::uint32_t>(end + 1)}});
     }
     return out;
 }

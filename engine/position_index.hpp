@@ -1,7 +1,8 @@
 // The position index, "what is under this position": the block of a file line, the card line of a
 // block, and the card spec and decoded fields of that line, for LS-DYNA and Radioss decks. The editor's
 // features (hover, completion, definition, code actions) ask here (engine/id_lookup.hpp for ids); nothing is
-// indexed in advance, despite the name, so a request costs a walk of one block (a repeated card such as *NODE or *ELEMENT_SPH is found without walking its lines).
+// indexed in advance, despite the name, so a request costs a walk of one block (a repeated card such as *NODE or
+// *ELEMENT_SPH is found without walking its lines).
 #pragma once
 
 #include <cstdint>
@@ -90,8 +91,8 @@ std::optional<grammar::FileId> included_file(const grammar::SourceMap& sources, 
 
 // A `&name` parameter reference (LS-DYNA; Radioss also `[name]`) on a line of a file.
 struct ParameterReference {
-    std::string name;   // without '&'
-    grammar::Span span; // '&' and the name
+    std::string name;    // without '&'
+    grammar::Span span;  // '&' and the name
 };
 // The reference under 1-based byte `column` of line `line`, or nullopt.
 std::optional<ParameterReference> parameter_reference_at(const grammar::SourceMap& sources, grammar::FileId file,

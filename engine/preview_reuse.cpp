@@ -37,8 +37,9 @@ bool same(const model::Part& a, const model::Part& b) {  // the heading is not r
 }
 
 bool same(const model::FieldRecord& a, const model::FieldRecord& b) {
-    return a.name == b.name && a.type == b.type && (a.number == b.number || (a.number != a.number && b.number != b.number)) &&
-           a.text == b.text && a.explicit_value == b.explicit_value && a.valid == b.valid;
+    return a.name == b.name && a.type == b.type &&
+           (a.number == b.number || (a.number != a.number && b.number != b.number)) && a.text == b.text &&
+           a.explicit_value == b.explicit_value && a.valid == b.valid;
 }
 
 // The keyword records a material or an EOS points at (their moduli give the sound speed).
@@ -51,7 +52,8 @@ bool same_record(const model::Model& ma, std::optional<std::size_t> a, const mod
     if (!in_a) return true;
     const model::KeywordRecord& ra = ma.records[*a];
     const model::KeywordRecord& rb = mb.records[*b];
-    if (ra.schema != rb.schema || ra.keyword != rb.keyword || ra.options != rb.options || ra.rows.size() != rb.rows.size())
+    if (ra.schema != rb.schema || ra.keyword != rb.keyword || ra.options != rb.options ||
+        ra.rows.size() != rb.rows.size())
         return false;
     for (std::size_t row = 0; row < ra.rows.size(); ++row)
         if (!std::equal(ra.rows[row].begin(), ra.rows[row].end(), rb.rows[row].begin(), rb.rows[row].end(),

@@ -19,12 +19,40 @@ void dyna(std::set<std::string>& out) {
         for (const auto& card : k.cards)
             for (const auto& f : card.fields) out.emplace(f.name);
     }
-    for (const char* token : {"*KEYWORD", "*END", "*INCLUDE", "*INCLUDE_PATH", "*INCLUDE_PATH_RELATIVE",
-                              "*INCLUDE_TRANSFORM", "*PARAMETER", "*PARAMETER_EXPRESSION", "*PARAMETER_LOCAL",
-                              "*PARAMETER_DUPLICATION", "*COMMENT", "*TITLE", "&", "-&", "$", "$#", ",", " +",
-                              "long=y", "i10=y", "memory2=", "1e15", "1e300", "-1e300", "nan", "inf", "1.0D+00",
-                              "-BEGIN PGP MESSAGE-", "-END PGP MESSAGE-", "$ sphdeck: disable=",
-                              "$ sphdeck: disable-next-line=", "$ sphdeck: enable=", " -- ", "         1"})
+    for (const char* token : {"*KEYWORD",
+                              "*END",
+                              "*INCLUDE",
+                              "*INCLUDE_PATH",
+                              "*INCLUDE_PATH_RELATIVE",
+                              "*INCLUDE_TRANSFORM",
+                              "*PARAMETER",
+                              "*PARAMETER_EXPRESSION",
+                              "*PARAMETER_LOCAL",
+                              "*PARAMETER_DUPLICATION",
+                              "*COMMENT",
+                              "*TITLE",
+                              "&",
+                              "-&",
+                              "$",
+                              "$#",
+                              ",",
+                              " +",
+                              "long=y",
+                              "i10=y",
+                              "memory2=",
+                              "1e15",
+                              "1e300",
+                              "-1e300",
+                              "nan",
+                              "inf",
+                              "1.0D+00",
+                              "-BEGIN PGP MESSAGE-",
+                              "-END PGP MESSAGE-",
+                              "$ sphdeck: disable=",
+                              "$ sphdeck: disable-next-line=",
+                              "$ sphdeck: enable=",
+                              " -- ",
+                              "         1"})
         out.emplace(token);
 }
 
@@ -33,31 +61,49 @@ void radioss(std::set<std::string>& out) {
         out.emplace(k.name);
         for (auto alias : k.aliases) out.emplace(alias);
     }
-    for (const char* token : {"#RADIOSS STARTER", "/BEGIN", "/END", "#include", "#enddata", "/PARAMETER/GLOBAL/REAL",
-                              "/PARAMETER/GLOBAL/INTEGER", "/PARAMETER/LOCAL", "[", "]", "#", "#-", "2026", "2024",
-                              "44", "1e15", "1e300", "nan", "                   1", "# sphdeck: disable=",
+    for (const char* token : {"#RADIOSS STARTER",
+                              "/BEGIN",
+                              "/END",
+                              "#include",
+                              "#enddata",
+                              "/PARAMETER/GLOBAL/REAL",
+                              "/PARAMETER/GLOBAL/INTEGER",
+                              "/PARAMETER/LOCAL",
+                              "[",
+                              "]",
+                              "#",
+                              "#-",
+                              "2026",
+                              "2024",
+                              "44",
+                              "1e15",
+                              "1e300",
+                              "nan",
+                              "                   1",
+                              "# sphdeck: disable=",
                               "# sphdeck: disable-next-line="})
         out.emplace(token);
 }
 
 void expression(std::set<std::string>& out) {
-    for (const char* token : {"sin(", "cos(", "tan(", "asin(", "acos(", "atan(", "atan2(", "sqrt(", "abs(", "exp(",
-                              "log(", "log10(", "min(", "max(", "int(", "nint(", "pi", "**", "&a", "&big", "&zero",
-                              "&tiny", "&neg", "&inf", "1e308", "1.0D+300", "(", ")", ","})
+    for (const char* token :
+         {"sin(",  "cos(",   "tan(", "asin(", "acos(", "atan(",    "atan2(", "sqrt(", "abs(", "exp(",
+          "log(",  "log10(", "min(", "max(",  "int(",  "nint(",    "pi",     "**",    "&a",   "&big",
+          "&zero", "&tiny",  "&neg", "&inf",  "1e308", "1.0D+300", "(",      ")",     ","})
         out.emplace(token);
 }
 
 void keyword_arguments(std::set<std::string>& out) {
-    for (const char* token : {"memory=", "memory2=", "ncpu=", "long=y", "long=s", "i10=y", "m", "mw", "g", "k",
-                              "100m", "9999999999999999999", "="})
+    for (const char* token : {"memory=", "memory2=", "ncpu=", "long=y", "long=s", "i10=y", "m", "mw", "g", "k", "100m",
+                              "9999999999999999999", "="})
         out.emplace(token);
 }
 
 void lsp_messages(std::set<std::string>& out) {
     for (const char* token : {"Content-Length: ", "Content-Type: application/vscode-jsonrpc; charset=utf-8", "\r\n",
-                              "\r\n\r\n", "{\"jsonrpc\":\"2.0\",", "\"id\":", "\"method\":", "\"params\":",
-                              "\"initialize\"", "\"textDocument/didChange\"", "\"contentChanges\"", "\"range\"",
-                              "[", "]", "{", "}", "\\u00e9", "99999999999999999999"})
+                              "\r\n\r\n", "{\"jsonrpc\":\"2.0\",",
+                              "\"id\":", "\"method\":", "\"params\":", "\"initialize\"", "\"textDocument/didChange\"",
+                              "\"contentChanges\"", "\"range\"", "[", "]", "{", "}", "\\u00e9", "99999999999999999999"})
         out.emplace(token);
 }
 
@@ -66,8 +112,10 @@ void lsp_messages(std::set<std::string>& out) {
 void print(std::string_view token) {
     std::fputc('"', stdout);
     for (unsigned char c : token) {
-        if (c == '"' || c == '\\' || c < 0x20 || c > 0x7e) std::printf("\\x%02X", c);
-        else std::fputc(c, stdout);
+        if (c == '"' || c == '\\' || c < 0x20 || c > 0x7e)
+            std::printf("\\x%02X", c);
+        else
+            std::fputc(c, stdout);
     }
     std::fputs("\"\n", stdout);
 }
@@ -80,13 +128,18 @@ int main(int argc, char** argv) {
     // dyna_read and format_dyna read LS-DYNA decks as dyna_check does: the same words.
     if (target == "dyna_check" || target == "dyna_read" || target == "format_dyna")
         dyna(tokens), expression(tokens), keyword_arguments(tokens);
-    else if (target == "radioss_check" || target == "radioss_read") radioss(tokens);
-    else if (target == "expression") expression(tokens);
-    else if (target == "keyword_arguments") keyword_arguments(tokens);
-    else if (target == "lsp_messages") lsp_messages(tokens);
+    else if (target == "radioss_check" || target == "radioss_read")
+        radioss(tokens);
+    else if (target == "expression")
+        expression(tokens);
+    else if (target == "keyword_arguments")
+        keyword_arguments(tokens);
+    else if (target == "lsp_messages")
+        lsp_messages(tokens);
     else {
-        std::fprintf(stderr, "usage: fuzz_dictionary dyna_read|dyna_check|format_dyna|radioss_read|radioss_check|"
-                             "expression|keyword_arguments|lsp_messages\n");
+        std::fprintf(stderr,
+                     "usage: fuzz_dictionary dyna_read|dyna_check|format_dyna|radioss_read|radioss_check|"
+                     "expression|keyword_arguments|lsp_messages\n");
         return 2;
     }
     tokens.erase("");

@@ -51,8 +51,8 @@ void render_all(const engine::CheckResult& r) {
 void check(const std::uint8_t* data, std::size_t size, const char* name, grammar::DeckFormat format) {
     engine::CheckOptions options;
     options.rules.geometry = true;
-    engine::CheckResult r = engine::check_buffer(text_of(data, size), std::string(no_folder) + "/" + name, options,
-                                             format, no_folder);
+    engine::CheckResult r =
+        engine::check_buffer(text_of(data, size), std::string(no_folder) + "/" + name, options, format, no_folder);
     render_all(r);
 }
 
@@ -63,7 +63,7 @@ void read_and_decode(const std::uint8_t* data, std::size_t size, const char* nam
         grammar::read_deck_buffer(text_of(data, size), std::string(no_folder) + "/" + name, no_folder, options, format);
     std::vector<diag::Diagnostic> found = deck.diagnostics;
     const model::Model model = format == grammar::DeckFormat::Radioss ? model::build_radioss_model(deck, found)
-                                                                       : model::build_model(deck, found);
+                                                                      : model::build_model(deck, found);
     volatile std::size_t sink = found.size() + model.particles.size();  // keep the decoding from being optimised away
     (void)sink;
 }
@@ -131,7 +131,8 @@ void format_dyna_deck(const std::uint8_t* data, std::size_t size) {
     }
     const std::string formatted = format(before, text);
     if (formatted == text) return;
-    const engine::CheckResult after = engine::check_buffer(formatted, name, check, grammar::DeckFormat::LsDyna, no_folder);
+    const engine::CheckResult after =
+        engine::check_buffer(formatted, name, check, grammar::DeckFormat::LsDyna, no_folder);
     if (!engine::diff_decks(before, after, 0.0).equal()) __builtin_trap();  // a value changed
     if (format(after, formatted) != formatted) __builtin_trap();            // not idempotent
 }

@@ -28,7 +28,8 @@ std::string radioss_kind(std::string_view header) {
         const std::size_t slash = header.rfind('/');
         if (slash == 0 || slash == std::string_view::npos) break;
         const std::string_view last = header.substr(slash + 1);
-        if (last.empty() || !std::all_of(last.begin(), last.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+        if (last.empty() ||
+            !std::all_of(last.begin(), last.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
             break;
         header = header.substr(0, slash);
     }
@@ -61,15 +62,19 @@ std::optional<diag::Diagnostic> DroppedAfterEnd::finding(std::string_view end_wo
                                           "that included it)"
                                         : "LS-DYNA stops reading the deck here")
                              : "the starter stops reading the deck here";
-    diag::Diagnostic d{"DK017", diag::Severity::Warning,
+    diag::Diagnostic d{"DK017",
+                       diag::Severity::Warning,
                        std::string(end_word) + " before " + std::to_string(count_) + " keyword block" +
                            (count_ == 1 ? "" : "s") + ": " + where + "; " + (count_ == 1 ? "it is" : "they are") +
                            " never read (" + kinds + ")",
-                       end_, {}};
+                       end_,
+                       {}};
     constexpr std::uint32_t whole_line = 1u << 30;  // clamped to the line's end (text/apply_edits.hpp)
     // Judgement: the blocks after it may be meant to be dropped (a deck kept for reference).
-    d.fixes.push_back({"comment out the " + std::string(end_word) + " line, so that the blocks after it are read", false,
-                       {{Span{end_.file, end_.line, 1, whole_line}, std::string(dyna ? "$ " : "# ") + std::string(end_word)}}});
+    d.fixes.push_back(
+        {"comment out the " + std::string(end_word) + " line, so that the blocks after it are read",
+         false,
+         {{Span{end_.file, end_.line, 1, whole_line}, std::string(dyna ? "$ " : "# ") + std::string(end_word)}}});
     return d;
 }
 

@@ -118,9 +118,12 @@ bool tab_pulls_values_off_fields(std::string_view text, std::span<const FixedFie
             before = true;
         } else {
             const auto start_end = field_end_of(i);
-            if (!field_end || !start_end || *start_end != *field_end) misread = true;  // across a boundary
-            else if (last_field_after && *last_field_after == *field_end) misread = true;  // two in one field
-            else if (field_index != none && field_index < unused.size() && unused[field_index]) misread = true;  // lost
+            if (!field_end || !start_end || *start_end != *field_end)
+                misread = true;  // across a boundary
+            else if (last_field_after && *last_field_after == *field_end)
+                misread = true;  // two in one field
+            else if (field_index != none && field_index < unused.size() && unused[field_index])
+                misread = true;  // lost
             last_field_after = field_end;
         }
         i = end;

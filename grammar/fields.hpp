@@ -32,9 +32,9 @@ struct Field {
 
 struct CutReport {
     bool free_format = false;
-    bool has_tab = false;             // DK016 (fixed format only)
-    Span beyond;                      // DK006: text past the significant width, or extra free values
-    std::uint32_t extra_values = 0;   // free format: values beyond the card's fields
+    bool has_tab = false;                 // DK016 (fixed format only)
+    Span beyond;                          // DK006: text past the significant width, or extra free values
+    std::uint32_t extra_values = 0;       // free format: values beyond the card's fields
     std::vector<std::uint32_t> too_long;  // DK005: indices of free tokens longer than their field
 };
 
@@ -54,8 +54,8 @@ bool is_blank(std::string_view s);
 std::string_view trim_blanks(std::string_view s);
 
 // A tab where a run of blanks was meant (DK016 even when both tab readings agree): every value before the
-// tab ends at its field's end, and after it a value spans two fields, shares one with another or lands in an unused one.
-// `unused`: per field, whether the reader ignores it (a value moved into one is lost).
+// tab ends at its field's end, and after it a value spans two fields, shares one with another or lands in an unused
+// one. `unused`: per field, whether the reader ignores it (a value moved into one is lost).
 bool tab_pulls_values_off_fields(std::string_view text, std::span<const FixedField> positions,
                                  std::span<const unsigned char> unused = {});
 

@@ -44,8 +44,10 @@ void tally_alignment(std::string_view text, std::span<const FixedField> slots, s
     for (const LineToken& t : line_tokens(text)) {
         const std::size_t s = field_of(t.begin, t.end, slots, fields);
         if (s == fields || !tallied_field(types[s], judged)) continue;
-        if (t.end == slot_end(slots[s])) ++tally.right;
-        else ++tally.other;
+        if (t.end == slot_end(slots[s]))
+            ++tally.right;
+        else
+            ++tally.other;
     }
 }
 
@@ -83,12 +85,11 @@ std::optional<LoneShift> find_lone_shift(std::string_view text, std::span<const 
         });
         if (!at_ends) continue;
         if (found) return std::nullopt;  // two readings: not certain
-        const auto first_judged = std::find_if(moved.begin(), moved.end(), [&](const LineToken& t) {
-            return judged_field(types[t.slot], judged);
-        });
+        const auto first_judged = std::find_if(moved.begin(), moved.end(),
+                                               [&](const LineToken& t) { return judged_field(types[t.slot], judged); });
         const LineToken& first = first_judged != moved.end() ? *first_judged : moved.front();
         found = LoneShift{static_cast<int>(n), first.slot, field_of(first.begin, first.end, slots, fields),
-                          first.begin, first.end, judged == Judged::Integers ? judged_values : tokens.size(),
+                          first.begin,         first.end,  judged == Judged::Integers ? judged_values : tokens.size(),
                           std::nullopt};
     }
     if (found && tokens.front().begin >= static_cast<std::size_t>(found->columns)) {

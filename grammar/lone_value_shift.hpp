@@ -34,11 +34,11 @@ void tally_alignment(std::string_view text, std::span<const FixedField> slots,
                      Judged judged = Judged::Numbers);
 
 struct LoneShift {
-    int columns = 0;         // > 0: right of the field it was meant for
-    std::size_t meant = 0;   // that field
-    std::size_t read = 0;    // the field it is read in
-    std::size_t begin = 0, end = 0;  // 0-based [begin, end) of the (first) value
-    std::size_t values = 1;          // on the line
+    int columns = 0;                       // > 0: right of the field it was meant for
+    std::size_t meant = 0;                 // that field
+    std::size_t read = 0;                  // the field it is read in
+    std::size_t begin = 0, end = 0;        // 0-based [begin, end) of the (first) value
+    std::size_t values = 1;                // on the line
     std::optional<std::string> realigned;  // the line moved `columns` left, when it has the blanks
 };
 
@@ -48,7 +48,6 @@ struct LoneShift {
 // `Judged::Integers`: the line's integers (two at least) are judged so; its reals need only stay whole
 // in fields that read them, and `meant`/`read` are those of the first integer.
 std::optional<LoneShift> find_lone_shift(std::string_view text, std::span<const FixedField> slots,
-                                         std::span<const keywords::FieldType> types,
-                                         Judged judged = Judged::Numbers);
+                                         std::span<const keywords::FieldType> types, Judged judged = Judged::Numbers);
 
 }  // namespace sphdeck::grammar

@@ -14,12 +14,12 @@ namespace sphdeck::grammar {
 enum class ParameterType : std::uint8_t { Real, Integer, Character };
 
 struct Parameter {
-    std::string name;        // as written (without the type letter)
+    std::string name;  // as written (without the type letter)
     ParameterType type = ParameterType::Real;
-    double number = 0.0;     // R and I
-    std::string text;        // C
-    std::uint32_t scope = 0; // 0 = global; otherwise the FileId + 1 of the file with *PARAMETER_LOCAL
-    Span span;               // the name field
+    double number = 0.0;      // R and I
+    std::string text;         // C
+    std::uint32_t scope = 0;  // 0 = global; otherwise the FileId + 1 of the file with *PARAMETER_LOCAL
+    Span span;                // the name field
 };
 
 // *PARAMETER_DUPLICATION DFLAG: what a second definition of a name does.

@@ -28,14 +28,14 @@ struct CardLine {
 
 // One keyword (or Radioss header) and the data lines that follow it up to the next keyword.
 struct Block {
-    std::string keyword;          // upper case, with the leading '*', without suffix: "*CONTROL_SPH"
-    std::string arguments;        // text after the name on the keyword line (trimmed)
+    std::string keyword;                       // upper case, with the leading '*', without suffix: "*CONTROL_SPH"
+    std::string arguments;                     // text after the name on the keyword line (trimmed)
     CardFormat format = CardFormat::Standard;  // effective format of its data cards
-    char suffix = 0;              // '+', '-', '%' or 0 as written on the keyword line
-    Span span;                    // the keyword name on its line
-    std::uint32_t first_line = 0; // index into RawDeck::lines
+    char suffix = 0;                           // '+', '-', '%' or 0 as written on the keyword line
+    Span span;                                 // the keyword name on its line
+    std::uint32_t first_line = 0;              // index into RawDeck::lines
     std::uint32_t line_count = 0;
-    std::uint32_t scope = 0;      // parameter scope (include instance) the block was read in
+    std::uint32_t scope = 0;            // parameter scope (include instance) the block was read in
     std::uint32_t parameter_epoch = 0;  // parameters defined before this block (use-before-definition)
 };
 

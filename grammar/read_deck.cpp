@@ -47,7 +47,8 @@ RawDeck read_deck(const std::string& path, const dyna::ReaderOptions& options, s
     // The first bytes tell the format and whether this is text at all: a binary file is refused
     // before the line grammar walks through gigabytes of it.
     const std::string prefix = read_file_prefix(path, 64 * 1024, options.overlay);
-    if (auto why = text::binary_or_empty(prefix)) throw std::runtime_error("'" + path + "' is not a keyword deck: " + *why);
+    if (auto why = text::binary_or_empty(prefix))
+        throw std::runtime_error("'" + path + "' is not a keyword deck: " + *why);
     if (!format) format = detect_format(prefix, path);
     RawDeck deck = *format == DeckFormat::Radioss ? radioss::read_file(path, options) : dyna::read_file(path, options);
     if (deck.blocks.empty() && !names_includes(deck)) {

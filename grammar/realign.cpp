@@ -26,8 +26,10 @@ std::optional<std::string> realign_card(std::string_view text, const keywords::C
             const std::size_t hi = std::min<std::size_t>(t.end, slots[s].start + slots[s].width);
             const std::size_t overlap = hi > lo ? hi - lo : 0;
             if (overlap == 0) continue;
-            if (overlap > best_overlap) best = s, best_overlap = overlap, tie = false;
-            else if (overlap == best_overlap) tie = true;
+            if (overlap > best_overlap)
+                best = s, best_overlap = overlap, tie = false;
+            else if (overlap == best_overlap)
+                tie = true;
         }
         if (best == slots.size() || tie || taken[best]) return std::nullopt;
         const auto& field = card.fields[best];

@@ -16,9 +16,7 @@ bool text_card(const keywords::CardSpec& card) {
     return !card.fields.empty() && card.fields[0].type == FieldType::Text && card.fields[0].width >= 70;
 }
 
-bool cuttable(std::string_view text) {
-    return text.find('\t') == std::string_view::npos && !is_free_format(text);
-}
+bool cuttable(std::string_view text) { return text.find('\t') == std::string_view::npos && !is_free_format(text); }
 bool cuttable(std::string_view text, const keywords::CardSpec& card) { return cuttable(text) && !text_card(card); }
 
 std::size_t slot_end(const FixedField& f) { return std::size_t{f.start} + f.width; }
@@ -28,7 +26,8 @@ bool aligned(const std::vector<LineToken>& tokens, std::span<const FixedField> s
     return std::all_of(tokens.begin(), tokens.end(), [&](const LineToken& t) {
         const auto b = static_cast<std::ptrdiff_t>(t.begin) - shift, e = static_cast<std::ptrdiff_t>(t.end) - shift;
         const FixedField& s = slots[t.slot];
-        return e == static_cast<std::ptrdiff_t>(slot_end(s)) || (!right_only && b == static_cast<std::ptrdiff_t>(s.start));
+        return e == static_cast<std::ptrdiff_t>(slot_end(s)) ||
+               (!right_only && b == static_cast<std::ptrdiff_t>(s.start));
     });
 }
 
@@ -62,8 +61,9 @@ bool same_reading(std::string_view a, std::string_view b, std::span<const FixedF
 }
 
 bool same_slots(std::span<const FixedField> a, std::span<const FixedField> b) {
-    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
-                      [](const FixedField& x, const FixedField& y) { return x.start == y.start && x.width == y.width; });
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const FixedField& x, const FixedField& y) {
+        return x.start == y.start && x.width == y.width;
+    });
 }
 
 // Standard widths with every 10-column field written in 8 (offsets follow).
@@ -121,7 +121,9 @@ bool place_tokens(std::string_view text, std::vector<LineToken>& tokens, std::sp
         const auto b = static_cast<std::ptrdiff_t>(t.begin) - shift, e = static_cast<std::ptrdiff_t>(t.end) - shift;
         if (b < 0) return false;
         std::size_t s = 0;
-        while (s < fields && !(static_cast<std::ptrdiff_t>(slots[s].start) <= b && e <= static_cast<std::ptrdiff_t>(slot_end(slots[s])))) ++s;
+        while (s < fields && !(static_cast<std::ptrdiff_t>(slots[s].start) <= b &&
+                               e <= static_cast<std::ptrdiff_t>(slot_end(slots[s]))))
+            ++s;
         if (s == fields || taken[s] || types[s] == FieldType::Unused) return false;
         if (!reads_as(text.substr(t.begin, t.end - t.begin), types[s])) return false;
         taken[s] = true;
@@ -182,8 +184,8 @@ std::optional<Straddle> find_straddle(std::string_view text, std::span<const Fix
         if (found || s + 1 >= fields || slots[s + 1].start != slot_end(slots[s])) return std::nullopt;
         if (t.begin == slots[s].start || t.end >= slot_end(slots[s + 1]) || t.end - t.begin > slots[s].width)
             return std::nullopt;
-        const bool number_field = types[s] == FieldType::Integer || types[s] == FieldType::Real ||
-                                  types[s] == FieldType::Label;
+        const bool number_field =
+            types[s] == FieldType::Integer || types[s] == FieldType::Real || types[s] == FieldType::Label;
         if (!number_field || types[s + 1] == FieldType::Text || taken[s + 1]) return std::nullopt;
         const std::string_view whole = text.substr(t.begin, t.end - t.begin);
         if (parse_real(whole).status != NumberStatus::Ok || !reads_as(whole, types[s])) return std::nullopt;

@@ -25,8 +25,7 @@ std::size_t letter_bound(std::string_view a, std::string_view b, bool fold_case)
 }
 }  // namespace
 
-std::size_t typing_distance(std::string_view a, std::string_view b, bool fold_case, std::size_t limit,
-                            SwapCost swap) {
+std::size_t typing_distance(std::string_view a, std::string_view b, bool fold_case, std::size_t limit, SwapCost swap) {
     const auto swap_cost = static_cast<std::size_t>(swap);
     if (letter_bound(a, b, fold_case) > limit) return limit + 1;
     // Optimal string alignment with weights: three rows suffice, kept per thread (no allocation per call).
@@ -65,8 +64,8 @@ std::size_t close_enough(std::string_view known) {
     return 2 * edits;
 }
 
-std::vector<std::string> closest_names(std::string_view typed, std::span<const std::string> candidates,
-                                       std::size_t max, bool fold_case) {
+std::vector<std::string> closest_names(std::string_view typed, std::span<const std::string> candidates, std::size_t max,
+                                       bool fold_case) {
     std::vector<std::pair<std::size_t, const std::string*>> found;
     for (const std::string& c : candidates) {
         const std::size_t limit = close_enough(c);

@@ -36,8 +36,10 @@ std::string expand_tabs(std::string_view text, std::size_t stop) {
     std::string out;
     out.reserve(text.size() + 16);
     for (char c : text) {
-        if (c == '\t') out.append(stop - out.size() % stop, ' ');
-        else out += c;
+        if (c == '\t')
+            out.append(stop - out.size() % stop, ' ');
+        else
+            out += c;
     }
     return out;
 }

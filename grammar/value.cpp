@@ -16,8 +16,9 @@ using namespace fast_number;  // short_integer, short_real, starts_like_c_number
 
 template <typename Rule>
 bool matches(std::string_view text) {
-    pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf, const char*> in(
-        text.data(), text.data() + text.size(), "field");
+    pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf, const char*> in(text.data(),
+                                                                                         text.data() + text.size(),
+                                                                                         "field");
     return pegtl::parse<Rule>(in);
 }
 
@@ -71,7 +72,6 @@ bool normalise_real(std::string_view text, char* out, std::size_t capacity, std:
     return true;
 }
 
-
 bool fast_classify(ValueToken& token, ValueShape expected) {
     if (!starts_like_c_number(token.text)) return false;
     const char* begin = token.text.data();
@@ -107,7 +107,6 @@ bool fast_classify(ValueToken& token, ValueShape expected) {
 }
 
 }  // namespace
-
 
 ValueToken classify_value(std::string_view field, ValueShape expected) {
     ValueToken token;
@@ -163,8 +162,8 @@ IntegerValue to_integer(const ValueToken& token) {
         if (digits.front() == '+') digits.remove_prefix(1);
         auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), result.value);
         if (ec == std::errc::result_out_of_range) return {NumberStatus::Overflow, 0, false};
-        result.status = (ec == std::errc() && end == digits.data() + digits.size()) ? NumberStatus::Ok
-                                                                                    : NumberStatus::Invalid;
+        result.status =
+            (ec == std::errc() && end == digits.data() + digits.size()) ? NumberStatus::Ok : NumberStatus::Invalid;
         return result;
     }
     if (token.shape == ValueShape::Real) {

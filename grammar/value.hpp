@@ -18,10 +18,10 @@ enum class ValueShape : std::uint8_t {
 
 struct ValueToken {
     ValueShape shape = ValueShape::Blank;
-    std::string_view text;    // trimmed
-    std::size_t offset = 0;   // of `text` within the field
-    bool negated = false;     // -&name
-    std::string_view name;    // parameter name for Parameter
+    std::string_view text;   // trimmed
+    std::size_t offset = 0;  // of `text` within the field
+    bool negated = false;    // -&name
+    std::string_view name;   // parameter name for Parameter
     // Set when classification already converted the number (the fast path), so the
     // conversion is not done twice.
     bool converted = false;

@@ -23,9 +23,8 @@ inline bool starts_like_c_number(std::string_view t) {
 }
 
 // Exact powers of ten: every 10^k with k <= 22 is a double.
-inline constexpr double exact_powers_of_ten[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
-                                                 1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
-                                                 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+inline constexpr double exact_powers_of_ten[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                                 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
 inline bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
@@ -51,13 +50,13 @@ inline bool short_integer(const char* p, const char* end, long long& out) {
 inline bool eight_digits(const char* p, std::uint64_t& value) {
     std::uint64_t v;
     std::memcpy(&v, p, 8);
-    if ((((v & 0xF0F0F0F0F0F0F0F0u) | (((v + 0x0606060606060606u) & 0xF0F0F0F0F0F0F0F0u) >> 4))) !=
-        0x3333333333333333u)
+    if ((((v & 0xF0F0F0F0F0F0F0F0u) | (((v + 0x0606060606060606u) & 0xF0F0F0F0F0F0F0F0u) >> 4))) != 0x3333333333333333u)
         return false;
     v -= 0x3030303030303030u;
     v = v * 10 + (v >> 8);  // pairs of digits
     value = (((v & 0x000000FF000000FFu) * (100 + (1000000ull << 32))) +
-             (((v >> 16) & 0x000000FF000000FFu) * (1 + (10000ull << 32)))) >> 32;
+             (((v >> 16) & 0x000000FF000000FFu) * (1 + (10000ull << 32)))) >>
+            32;
     return true;
 }
 

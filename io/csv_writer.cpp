@@ -44,7 +44,8 @@ void write_csv(std::ostream& out, std::span<const Column> columns) {
     const std::size_t rows = columns.empty() ? 0 : columns.front().size();
     for (const Column& c : columns)
         if (c.size() != rows)
-            throw std::invalid_argument(fmt::format("csv column '{}' has {} values, expected {}", c.name, c.size(), rows));
+            throw std::invalid_argument(
+                fmt::format("csv column '{}' has {} values, expected {}", c.name, c.size(), rows));
     fmt::memory_buffer buffer;
     for (std::size_t i = 0; i < columns.size(); ++i) {
         if (i > 0) buffer.push_back(',');

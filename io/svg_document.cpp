@@ -10,7 +10,8 @@
 
 namespace sphdeck::io {
 
-std::string svg_panel_grid(const SvgGrid& grid, const std::function<void(std::string&, std::size_t, const SvgBox&)>& draw) {
+std::string svg_panel_grid(const SvgGrid& grid,
+                           const std::function<void(std::string&, std::size_t, const SvgBox&)>& draw) {
     const int columns = std::max(1, std::min<int>(grid.columns, std::max<int>(1, static_cast<int>(grid.panels))));
     const int rows = static_cast<int>((grid.panels + static_cast<std::size_t>(columns) - 1) / columns);
     const double head = grid.title.empty() ? 0.0 : 36.0;
@@ -21,15 +22,16 @@ std::string svg_panel_grid(const SvgGrid& grid, const std::function<void(std::st
                    "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                    "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\">\n",
                    width, height);
-    svg += "<style>\n"
-           "text { font-family: sans-serif; fill: #222; }\n"
-           ".heading { font-size: 18px; font-weight: bold; text-anchor: middle; }\n"
-           ".title { font-size: 14px; font-weight: bold; text-anchor: middle; }\n"
-           ".label { font-size: 12px; text-anchor: middle; }\n"
-           ".xtick { font-size: 10px; text-anchor: middle; }\n"
-           ".ytick { font-size: 10px; text-anchor: end; }\n"
-           ".axis { stroke: #222; stroke-width: 1; fill: none; }\n"
-           ".grid { stroke: #ddd; stroke-width: 1; }\n";
+    svg +=
+        "<style>\n"
+        "text { font-family: sans-serif; fill: #222; }\n"
+        ".heading { font-size: 18px; font-weight: bold; text-anchor: middle; }\n"
+        ".title { font-size: 14px; font-weight: bold; text-anchor: middle; }\n"
+        ".label { font-size: 12px; text-anchor: middle; }\n"
+        ".xtick { font-size: 10px; text-anchor: middle; }\n"
+        ".ytick { font-size: 10px; text-anchor: end; }\n"
+        ".axis { stroke: #222; stroke-width: 1; fill: none; }\n"
+        ".grid { stroke: #ddd; stroke-width: 1; }\n";
     svg += grid.styles;
     svg += "</style>\n";
     fmt::format_to(out, "<rect x=\"0\" y=\"0\" width=\"{}\" height=\"{}\" fill=\"white\"/>\n", width, height);

@@ -19,8 +19,8 @@ struct SvgGrid {
     int columns = 2;  // at most; fewer when there are fewer panels
     int panel_width = 420;
     int panel_height = 300;
-    std::string title;          // heading above the grid, none when empty
-    std::string_view styles;    // CSS rules of the figure, after the common ones
+    std::string title;        // heading above the grid, none when empty
+    std::string_view styles;  // CSS rules of the figure, after the common ones
 };
 
 // The grid of `panels` panels laid out by a figure's options (columns, panel_width, panel_height, title).
@@ -30,7 +30,8 @@ SvgGrid grid_for(std::size_t panels, const Options& options, std::string_view st
 }
 
 // The whole document: `draw(svg, i, box)` appends panel i.
-std::string svg_panel_grid(const SvgGrid& grid, const std::function<void(std::string&, std::size_t, const SvgBox&)>& draw);
+std::string svg_panel_grid(const SvgGrid& grid,
+                           const std::function<void(std::string&, std::size_t, const SvgBox&)>& draw);
 
 // Writes `svg` to `path`; throws std::runtime_error when it cannot.
 void write_text_file(const std::string& path, const std::string& svg);

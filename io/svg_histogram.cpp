@@ -25,7 +25,6 @@ double nice_step(double raw, bool integer) {
     return 10.0 * p;
 }
 
-
 std::string number(double v) {
     if (std::abs(v) < 1e-300) v = 0.0;  // no "-0"
     return fmt::format("{:.4g}", v);
@@ -50,8 +49,8 @@ void draw_panel(std::string& svg, const HistogramPanel& panel, const Box& box, s
         subtitle += fmt::format(", min {}, median {}, max {}", number(*mn), number(*mid), number(*mx));
     }
     if (bins.skipped > 0) subtitle += fmt::format(", {} non-finite left out", bins.skipped);
-    fmt::format_to(out, "<text x=\"{:.1f}\" y=\"{:.1f}\" class=\"subtitle\">{}</text>\n", box.x + box.w / 2,
-                   box.y + 37, xml_escape(subtitle));
+    fmt::format_to(out, "<text x=\"{:.1f}\" y=\"{:.1f}\" class=\"subtitle\">{}</text>\n", box.x + box.w / 2, box.y + 37,
+                   xml_escape(subtitle));
 
     const double x0 = box.x + 64, y0 = box.y + 56, pw = box.w - 64 - 24, ph = box.h - 56 - 52;
     const double ybase = y0 + ph;
@@ -173,7 +172,9 @@ Bins make_bins(std::span<const double> values, bool integer_bins, std::size_t ma
     for (double v : values) {
         if (!std::isfinite(v)) continue;
         const double k = std::floor((v - bins.lo) / bins.width);
-        const std::size_t i = !(k > 0) ? 0 : k >= static_cast<double>(count - 1) ? count - 1 : static_cast<std::size_t>(k);
+        const std::size_t i = !(k > 0)                              ? 0
+                              : k >= static_cast<double>(count - 1) ? count - 1
+                                                                    : static_cast<std::size_t>(k);
         ++bins.counts[i];
     }
     return bins;

@@ -18,16 +18,16 @@ struct HistogramPanel {
 };
 
 struct SvgOptions {
-    std::string title;           // heading of the page
-    int columns = 2;             // panels per row
+    std::string title;  // heading of the page
+    int columns = 2;    // panels per row
     int panel_width = 460, panel_height = 300;
     std::size_t max_bins = 24;
 };
 
 struct Bins {
-    double lo = 0, width = 1;          // bin i is [lo + i*width, lo + (i+1)*width)
+    double lo = 0, width = 1;  // bin i is [lo + i*width, lo + (i+1)*width)
     std::vector<std::size_t> counts;
-    std::size_t skipped = 0;           // NaN or infinite values
+    std::size_t skipped = 0;  // NaN or infinite values
 };
 
 // Bins with round edges (1, 2, 2.5, 5 times a power of ten) covering every finite value; a

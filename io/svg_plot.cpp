@@ -115,7 +115,8 @@ void draw_panel(std::string& svg, const PlotPanel& panel, const Box& box, std::s
         if (s.style == SeriesStyle::Line)
             fmt::format_to(out, "<path d=\"M{:.1f} {:.1f}h18\" class=\"line\" stroke=\"{}\"/>\n", lx, ly - 4, colour);
         else if (s.style == SeriesStyle::Dots)
-            fmt::format_to(out, "<path d=\"M{:.1f} {:.1f}h0\" class=\"dots\" stroke=\"{}\"/>\n", lx + 9, ly - 4, colour);
+            fmt::format_to(out, "<path d=\"M{:.1f} {:.1f}h0\" class=\"dots\" stroke=\"{}\"/>\n", lx + 9, ly - 4,
+                           colour);
         else
             fmt::format_to(out, "<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"4\" class=\"marker\" stroke=\"{}\"/>\n",
                            lx + 9, ly - 4, colour);

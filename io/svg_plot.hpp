@@ -14,7 +14,7 @@ namespace sphdeck::io {
 enum class SeriesStyle { Line, Dots, Markers };  // Markers: larger open circles, for a few data points
 
 struct PlotSeries {
-    std::string name;  // legend entry
+    std::string name;          // legend entry
     std::vector<double> x, y;  // same length; non-finite points are skipped (and break a line)
     SeriesStyle style = SeriesStyle::Line;
     std::string colour;  // CSS colour; empty: the next of a fixed palette

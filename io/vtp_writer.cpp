@@ -90,7 +90,7 @@ struct Block {
     std::string name;
     std::string_view type;
     int components = 1;
-    std::size_t values = 0;       // tuples * components
+    std::size_t values = 0;  // tuples * components
     std::size_t value_bytes = 8;
     std::function<void(Sink&)> emit;
     std::vector<std::string> component_names = {};
@@ -99,7 +99,6 @@ struct Block {
         return 4 * ((sizeof(std::uint64_t) + 2) / 3) + 4 * ((values * value_bytes + 2) / 3);
     }
 };
-
 
 Block column_block(const Column& c) {
     Block b;
@@ -120,7 +119,11 @@ Block column_block(const Column& c) {
 
 Block tuple_block(const TupleColumn& c, std::size_t n) {
     const int k = static_cast<int>(c.components.size());
-    return {c.name, "Float64", k, n * c.components.size(), 8,
+    return {c.name,
+            "Float64",
+            k,
+            n * c.components.size(),
+            8,
             [&c, n](Sink& s) {
                 for (std::size_t i = 0; i < n; ++i)
                     for (std::span<const double> component : c.components) s.put(component[i]);
@@ -162,8 +165,7 @@ std::string base64(std::span<const unsigned char> bytes) {
 
 void write_vtp(std::ostream& out, const VtpPoints& points, VtpEncoding encoding) {
     const std::size_t n = points.x.size();
-    if (points.y.size() != n || points.z.size() != n)
-        throw std::invalid_argument("vtp coordinates differ in length");
+    if (points.y.size() != n || points.z.size() != n) throw std::invalid_argument("vtp coordinates differ in length");
     for (const Column& c : points.point_data)
         if (c.size() != n)
             throw std::invalid_argument(fmt::format("vtp array '{}' has {} values, expected {}", c.name, c.size(), n));
@@ -196,12 +198,14 @@ void write_vtp(std::ostream& out, const VtpPoints& points, VtpEncoding encoding)
             sink.raw(fmt::format(" format=\"appended\" offset=\"{}\"/>\n", offsets[i]));
         }
     };
-    sink.raw(fmt::format("<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"{}\" "
-                         "header_type=\"UInt64\">\n  <PolyData>\n",
-                         std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian"));
-    sink.raw(fmt::format("    <Piece NumberOfPoints=\"{0}\" NumberOfVerts=\"{0}\" NumberOfLines=\"0\" "
-                         "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n",
-                         n));
+    sink.raw(
+        fmt::format("<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"{}\" "
+                    "header_type=\"UInt64\">\n  <PolyData>\n",
+                    std::endian::native == std::endian::little ? "LittleEndian" : "BigEndian"));
+    sink.raw(
+        fmt::format("    <Piece NumberOfPoints=\"{0}\" NumberOfVerts=\"{0}\" NumberOfLines=\"0\" "
+                    "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n",
+                    n));
     const std::size_t arrays = points.point_data.size() + points.tuple_data.size();
     sink.raw("      <PointData>\n");
     for (std::size_t i = 0; i < arrays; ++i) header(i, "        ");

@@ -1,4 +1,5 @@
-// sphdeck.toml: parsing with toml++, validation, and applying the rule settings (engine/config_file finds and reads the file).
+// sphdeck.toml: parsing with toml++, validation, and applying the rule settings (engine/config_file finds and reads the
+// file).
 #include "lint/config.hpp"
 
 #include <toml++/toml.h>
@@ -55,19 +56,21 @@ std::optional<ConfigError> read_selectors(const std::string& file, std::string_v
 
 std::optional<ConfigError> read_severity_table(const std::string& file, const toml::node& node, Config& out) {
     const toml::table* table = node.as_table();
-    if (!table) return error_at(file, node.source(), "'severity' must be a table such as [severity] SPH032 = \"error\"");
+    if (!table)
+        return error_at(file, node.source(), "'severity' must be a table such as [severity] SPH032 = \"error\"");
     for (auto&& [key, value] : *table) {
         const RuleInfo* rule = find_rule(key.str());
         if (!rule) {
             auto unknown = check_selector(key.str());  // a valid prefix still names no single rule
             return error_at(file, key.source(),
-                            unknown ? *unknown : "'" + std::string(key.str()) + "' is not one rule: give a code or name");
+                            unknown ? *unknown
+                                    : "'" + std::string(key.str()) + "' is not one rule: give a code or name");
         }
         diag::Severity severity{};
         auto word = value.value<std::string>();
         if (!value.is_string() || !word || *word == "note" || !diag::parse_severity(*word, severity))
-            return error_at(file, value.source(), "severity of " + std::string(rule->code) +
-                                                      " must be \"error\", \"warning\" or \"info\"");
+            return error_at(file, value.source(),
+                            "severity of " + std::string(rule->code) + " must be \"error\", \"warning\" or \"info\"");
         out.severity[std::string(rule->code)] = severity;
     }
     return std::nullopt;
@@ -159,11 +162,16 @@ std::optional<std::string> check_selector(std::string_view selector) {
 }
 
 bool parse_fail_on(std::string_view word, FailOn& out) {
-    if (word == "error") out = FailOn::Error;
-    else if (word == "warning") out = FailOn::Warning;
-    else if (word == "info") out = FailOn::Info;
-    else if (word == "never") out = FailOn::Never;
-    else return false;
+    if (word == "error")
+        out = FailOn::Error;
+    else if (word == "warning")
+        out = FailOn::Warning;
+    else if (word == "info")
+        out = FailOn::Info;
+    else if (word == "never")
+        out = FailOn::Never;
+    else
+        return false;
     return true;
 }
 

@@ -25,8 +25,8 @@ struct Config {
     std::vector<std::string> select;
     std::vector<std::string> ignore;
     std::map<std::string, diag::Severity, std::less<>> severity;  // rule code -> replaced default
-    std::optional<std::string> solver;  // "smp" or "mpp"; unset when the run type is not known
-    std::optional<FailOn> fail_on;      // unset: error
+    std::optional<std::string> solver;       // "smp" or "mpp"; unset when the run type is not known
+    std::optional<FailOn> fail_on;           // unset: error
     std::vector<std::string> include_paths;  // made absolute against the config file's folder
     // The main decks, or folders of them, in which an include file checked on its own is looked for
     // (engine/include_context.hpp); made absolute like include_paths. Empty: the folders around the file.

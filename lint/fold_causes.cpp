@@ -17,7 +17,8 @@ struct Cause {
 };
 
 // The lines of the block whose first data line is `at` (DK030's place).
-std::optional<std::pair<std::uint32_t, std::uint32_t>> block_lines(const grammar::RawDeck& deck, const grammar::Span& at) {
+std::optional<std::pair<std::uint32_t, std::uint32_t>> block_lines(const grammar::RawDeck& deck,
+                                                                   const grammar::Span& at) {
     for (const grammar::Block& b : deck.blocks) {
         if (b.line_count == 0) continue;
         const grammar::CardLine& first = deck.lines[b.first_line];
@@ -36,7 +37,8 @@ void sort_notes(std::vector<diag::Note>& notes) {
             return std::tuple{1, 0u, static_cast<std::uint32_t>(std::strtoul(n.message.c_str() + 7, nullptr, 10))};
         return std::tuple{0, 0u, 0u};
     };
-    std::stable_sort(notes.begin(), notes.end(), [&](const diag::Note& a, const diag::Note& b) { return key(a) < key(b); });
+    std::stable_sort(notes.begin(), notes.end(),
+                     [&](const diag::Note& a, const diag::Note& b) { return key(a) < key(b); });
 }
 
 }  // namespace

@@ -64,9 +64,12 @@ void summarize_fragment_ids(const grammar::RawDeck& deck, std::vector<diag::Diag
     std::map<std::string_view, std::size_t> undefined_by_kind;
     std::size_t unused = 0, settings = 0;
     for (const auto& d : folded) {
-        if (d.code == "REF007") ++unused;
-        else if (about_the_deck(d)) ++settings;
-        else ++undefined_by_kind[undefined_kind(d.code)];
+        if (d.code == "REF007")
+            ++unused;
+        else if (about_the_deck(d))
+            ++settings;
+        else
+            ++undefined_by_kind[undefined_kind(d.code)];
     }
     std::string named;
     std::size_t undefined = 0;
@@ -77,11 +80,14 @@ void summarize_fragment_ids(const grammar::RawDeck& deck, std::vector<diag::Diag
     std::string message = "this file has no ";
     message += grammar::format_of(deck) == grammar::DeckFormat::Radioss ? "/BEGIN" : "*KEYWORD";
     message += ", so it is an include fragment checked on its own:";
-    if (undefined > 0) message += fmt::format(" {} {} named here {} defined elsewhere ({})", undefined,
-                                              undefined == 1 ? "id" : "ids", undefined == 1 ? "is" : "are", named);
-    if (unused > 0) message += fmt::format("{} {} defined here {} used elsewhere", undefined > 0 ? ";" : "",
-                                           plural(unused, "id"), unused == 1 ? "is" : "are");
-    if (settings > 0) message += fmt::format("{} the *CONTROL_SPH of its deck is not seen", undefined + unused > 0 ? ";" : "");
+    if (undefined > 0)
+        message += fmt::format(" {} {} named here {} defined elsewhere ({})", undefined, undefined == 1 ? "id" : "ids",
+                               undefined == 1 ? "is" : "are", named);
+    if (unused > 0)
+        message += fmt::format("{} {} defined here {} used elsewhere", undefined > 0 ? ";" : "", plural(unused, "id"),
+                               unused == 1 ? "is" : "are");
+    if (settings > 0)
+        message += fmt::format("{} the *CONTROL_SPH of its deck is not seen", undefined + unused > 0 ? ";" : "");
     message += "; check the deck that includes it";
     diag::Diagnostic summary{"REF010", diag::Severity::Info, std::move(message), folded.front().span, {}};
     for (std::size_t i = 0; i < folded.size() && i < kMostNotes; ++i)

@@ -15,7 +15,8 @@ namespace sphdeck::lint {
 bool is_include_fragment(const grammar::RawDeck& deck);
 
 // Folds the fragment's REF001-REF005, REF007, REF008 and REF009 findings (and SPH120, SPH121: they judge
-// the including deck's *CONTROL_SPH) into one REF010 note at the first of them (their messages and places become its notes); nothing when the deck is no fragment.
+// the including deck's *CONTROL_SPH) into one REF010 note at the first of them (their messages and places become its
+// notes); nothing when the deck is no fragment.
 void summarize_fragment_ids(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& diagnostics);
 
 }  // namespace sphdeck::lint

@@ -35,8 +35,8 @@ struct PartGroups {
 
     void add(long long part, std::size_t i) { by_part[part].add(i); }
     bool flood() const { return by_part.size() > max_listed; }
-    ParticleGroup merged() const;    // every particle of every part, in deck order of the groups
-    std::string part_list() const;   // "1, 2, 3, 4, 5, ..."
+    ParticleGroup merged() const;   // every particle of every part, in deck order of the groups
+    std::string part_list() const;  // "1, 2, 3, 4, 5, ..."
 };
 
 // Notes at the lines of a group's particles after the first (the primary span shows the first),

@@ -29,10 +29,10 @@ bool iequals(std::string_view a, std::string_view b) {
 
 std::string_view to_string(Fixable f) {
     switch (f) {
-    case Fixable::Safe: return "safe";
-    case Fixable::Unsafe: return "unsafe";
-    case Fixable::Mixed: return "safe or unsafe";
-    case Fixable::None: break;
+        case Fixable::Safe: return "safe";
+        case Fixable::Unsafe: return "unsafe";
+        case Fixable::Mixed: return "safe or unsafe";
+        case Fixable::None: break;
     }
     return "none";
 }

@@ -42,8 +42,8 @@ std::string_view to_string(Fixable f);  // "none", "safe", "unsafe", "safe or un
 // (tests/test_rule_rows.cpp) holds every row to this: each named file reports the code, each rule has
 // its page, a firing and a silent deck or the reason why not; ctest runs each rule's decks as rule-CODE.
 struct RuleHome {
-    std::string_view check;  // "lint/rules_control_sph_form.cpp"; several separated by blanks, main first
-    std::string_view decks;  // "sph": folders under decks/tests/, several separated by blanks ("dk rad")
+    std::string_view check;                // "lint/rules_control_sph_form.cpp"; several separated by blanks, main first
+    std::string_view decks;                // "sph": folders under decks/tests/, several separated by blanks ("dk rad")
     std::string_view no_firing_deck = {};  // why no deck fires it, and which unit test does instead
     std::string_view no_silent_deck = {};  // why no deck must stay silent, and which unit test shows it
 };
@@ -57,17 +57,17 @@ enum class Layout {
 };
 
 struct RuleInfo {
-    std::string_view code;    // "SPH030"
-    std::string_view name;    // "iavis-solid-in-2d" (kebab-case, as in the catalogue)
-    diag::Severity severity;  // default severity; for "error/warning" rules the stronger one, and
-                              // `what` says when a finding is reported lower
-    std::string_view since;   // "0.1.0"
-    std::string_view source;  // "CONTROL_SPH R2e", "reader", "SPHBCS", ... as in the catalogue
-    RuleHome home;            // its check and its decks
-    std::string_view summary;  // one line: the catalogue's condition in plain words
-    Fixable fix = Fixable::None;  // whether its findings carry fixes (a test compares with the deck tests)
+    std::string_view code;            // "SPH030"
+    std::string_view name;            // "iavis-solid-in-2d" (kebab-case, as in the catalogue)
+    diag::Severity severity;          // default severity; for "error/warning" rules the stronger one, and
+                                      // `what` says when a finding is reported lower
+    std::string_view since;           // "0.1.0"
+    std::string_view source;          // "CONTROL_SPH R2e", "reader", "SPHBCS", ... as in the catalogue
+    RuleHome home;                    // its check and its decks
+    std::string_view summary;         // one line: the catalogue's condition in plain words
+    Fixable fix = Fixable::None;      // whether its findings carry fixes (a test compares with the deck tests)
     Layout layout = Layout::Trusted;  // Doubtful: the formatter leaves a line with its finding as written
-    RuleDoc doc{};            // empty in the rows; the registry fills it from docs/rules/CODE.md
+    RuleDoc doc{};                    // empty in the rows; the registry fills it from docs/rules/CODE.md
 };
 
 // "docs/rules/SPH030.md": the page a rule's documentation is read from.

@@ -53,8 +53,12 @@ const model::IdSet* find_set(std::unique_ptr<std::unordered_map<model::Id, const
 }
 }  // namespace
 
-const model::IdSet* RuleContext::node_set(const model::Id& id) const { return find_set(node_sets_, model.node_sets, id); }
-const model::IdSet* RuleContext::part_set(const model::Id& id) const { return find_set(part_sets_, model.part_sets, id); }
+const model::IdSet* RuleContext::node_set(const model::Id& id) const {
+    return find_set(node_sets_, model.node_sets, id);
+}
+const model::IdSet* RuleContext::part_set(const model::Id& id) const {
+    return find_set(part_sets_, model.part_sets, id);
+}
 
 namespace {
 grammar::Span whole_line(const grammar::RawDeck& deck, std::uint32_t index) {
@@ -73,14 +77,18 @@ std::map<long long, std::vector<grammar::Span>> RuleContext::node_lines(const st
     if (ids.empty()) return found;
     for (const grammar::Block& b : deck.blocks) {
         if (b.keyword != "*NODE") continue;
-        const std::uint32_t width = b.format == grammar::CardFormat::Long ? 20 : b.format == grammar::CardFormat::I10 ? 10 : 8;
+        const std::uint32_t width = b.format == grammar::CardFormat::Long  ? 20
+                                    : b.format == grammar::CardFormat::I10 ? 10
+                                                                           : 8;
         for (const grammar::CardLine* l = deck.begin_lines(b); l != deck.end_lines(b); ++l) {
             std::string_view text = deck.text(*l);
-            std::string_view first = grammar::is_free_format(text) ? text.substr(0, text.find(','))
-                                                                   : text.substr(0, std::min<std::size_t>(text.size(), width));
+            std::string_view first = grammar::is_free_format(text)
+                                         ? text.substr(0, text.find(','))
+                                         : text.substr(0, std::min<std::size_t>(text.size(), width));
             grammar::IntegerValue id = grammar::parse_integer(first);
             if (id.status == grammar::NumberStatus::Ok && ids.count(id.value))
-                found[id.value].push_back(grammar::Span{l->file, l->line, 1, static_cast<std::uint32_t>(text.size()) + 1});
+                found[id.value].push_back(
+                    grammar::Span{l->file, l->line, 1, static_cast<std::uint32_t>(text.size()) + 1});
         }
     }
     return found;

@@ -117,9 +117,12 @@ public:
                 break;
             }
         }
-        if (state == Before) problem(section.number, "expected a ```text block");
-        else if (state == Inside) problem(section.number, "the ```text block is not closed");
-        else if (out.empty()) problem(section.number, "the example is empty");
+        if (state == Before)
+            problem(section.number, "expected a ```text block");
+        else if (state == Inside)
+            problem(section.number, "the ```text block is not closed");
+        else if (out.empty())
+            problem(section.number, "the example is empty");
         return out;
     }
 
@@ -163,8 +166,10 @@ RuleDocPage parse_rule_doc_page(std::string_view file, std::string_view text) {
             sections.push_back({trimmed(line.text.substr(3)), line.number, {}});
         } else {
             if (fenced ? closes_fence(line.text) : opens_fence(line.text)) fenced = !fenced;
-            if (!sections.empty()) sections.back().body.push_back(line);
-            else if (!trimmed(line.text).empty()) reader.problem(line.number, "text before the first '## ' section");
+            if (!sections.empty())
+                sections.back().body.push_back(line);
+            else if (!trimmed(line.text).empty())
+                reader.problem(line.number, "text before the first '## ' section");
         }
     }
     if (!titled) reader.problem(1, "the page must start with '# CODE name'");

@@ -62,8 +62,7 @@ std::string md(std::string_view text, bool table = false) {
         if (c == '`') code = !code;
         // '_' only opens emphasis at the start of a word: CONTROL_SPH stays readable.
         bool word_start_underscore = c == '_' && !std::isalnum(static_cast<unsigned char>(previous));
-        if (!code && (c == '*' || c == '<' || c == '\\' || word_start_underscore || (table && c == '|')))
-            out += '\\';
+        if (!code && (c == '*' || c == '<' || c == '\\' || word_start_underscore || (table && c == '|'))) out += '\\';
         out += c;
         previous = c;
     }
@@ -79,18 +78,18 @@ std::string fenced(std::string_view deck) {
 // The table's word: blank for none, so the rules that can fix stand out.
 std::string_view fix_column(Fixable f) {
     switch (f) {
-    case Fixable::None: return "";
-    case Fixable::Mixed: return "mixed";
-    default: return to_string(f);
+        case Fixable::None: return "";
+        case Fixable::Mixed: return "mixed";
+        default: return to_string(f);
     }
 }
 
 std::string fix_sentence(Fixable f) {
     switch (f) {
-    case Fixable::Safe: return "safe (applied by `sphdeck check --fix` where the finding carries one)";
-    case Fixable::Unsafe: return "unsafe (a judgement: applied by `sphdeck check --fix --unsafe-fixes` only)";
-    case Fixable::Mixed: return "safe or unsafe, per finding (`--fix` applies the safe ones)";
-    case Fixable::None: break;
+        case Fixable::Safe: return "safe (applied by `sphdeck check --fix` where the finding carries one)";
+        case Fixable::Unsafe: return "unsafe (a judgement: applied by `sphdeck check --fix --unsafe-fixes` only)";
+        case Fixable::Mixed: return "safe or unsafe, per finding (`--fix` applies the safe ones)";
+        case Fixable::None: break;
     }
     return "none";
 }
@@ -137,8 +136,7 @@ std::string render_rules_table() {
 std::string rule_markdown_body(const RuleInfo& rule) {
     std::string out = fmt::format("**Severity:** {} · **Fix:** {} · **Source:** {} · **Since:** {}\n\n{}{}\n",
                                   diag::to_string(rule.severity), to_string(rule.fix), md(rule.source), rule.since,
-                                  md(rule.summary),
-                                  rule.summary.ends_with('.') ? "" : ".");
+                                  md(rule.summary), rule.summary.ends_with('.') ? "" : ".");
     out += "\n### What it does\n\n" + md(rule.doc.what) + "\n";
     out += "\n### Why it matters\n\n" + md(rule.doc.why) + "\n";
     out += "\n### How to fix\n\n" + md(rule.doc.fix) + "\n";

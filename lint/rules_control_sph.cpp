@@ -92,7 +92,7 @@ RunKind run_kind(const RuleContext& c) {
         const char* word = k.solver == Solver::Mpp ? "mpp" : "smp";
         const std::string& source = c.options.solver_source;
         k.why = source.empty() || source == "--solver" ? fmt::format("--solver {}", word)
-                                                        : fmt::format("solver = \"{}\" in {}", word, source);
+                                                       : fmt::format("solver = \"{}\" in {}", word, source);
         return k;
     }
     if (!c.model.controls.mpp_keywords.empty()) {

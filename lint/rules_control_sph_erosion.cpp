@@ -20,8 +20,8 @@ void check_fluid_form(RuleContext& c, const std::vector<const model::Part*>& par
         if (!mat || !seen.insert(mat->id).second) continue;
         if (auto criterion = material_failure(c.model, *mat))
             c.report("SPH033", form.span,
-                     fmt::format("{} smooths pressure but part {} has failure: {}; expected FORM 1", form_label(form.value),
-                                 p->id, criterion->what))
+                     fmt::format("{} smooths pressure but part {} has failure: {}; expected FORM 1",
+                                 form_label(form.value), p->id, criterion->what))
                 .notes.push_back({criterion->span, "failure criterion given here"});
     }
 }
@@ -33,7 +33,8 @@ void check_ierod(RuleContext& c, const std::vector<const model::Part*>& parts) {
     if (ierod.value == model::ErosionMode::StayActive) {
         if (auto criterion = erosion_criterion(c.model, &parts))
             c.report("SPH040", ierod.span,
-                     fmt::format("IEROD 0 keeps particles active despite {}; expected IEROD 1, 2 or 3", criterion->what))
+                     fmt::format("IEROD 0 keeps particles active despite {}; expected IEROD 1, 2 or 3",
+                                 criterion->what))
                 .notes.push_back({criterion->span, "erosion criterion given here"});
     } else if (!erosion_criterion(c.model, nullptr)) {
         c.report("SPH041", ierod.span,

@@ -27,7 +27,8 @@ void check_mpp_only(RuleContext& c, const RunKind& run) {
         c.report("SPH010", Severity::Error, form.span, fmt::format("{}; the run is SMP ({})", what, run.why));
     else
         c.report("SPH010", Severity::Info, form.span,
-                 fmt::format("{}; nothing shows this is an MPP run (no --solver, no *CONTROL_MPP_*, no memory2=)", what));
+                 fmt::format("{}; nothing shows this is an MPP run (no --solver, no *CONTROL_MPP_*, no memory2=)",
+                             what));
 }
 
 // SPH011-SPH013: FORM 12 wants a constant h; ISTAB and QL serve FORM 12 only.
@@ -39,13 +40,14 @@ void check_mls(RuleContext& c) {
             if (!s.sph || (!differs(s.hmin.value, 1.0) && !differs(s.hmax.value, 1.0))) continue;
             const grammar::Span at = differs(s.hmin.value, 1.0) ? s.hmin.span : s.hmax.span;
             c.report("SPH011", at,
-                     fmt::format("section {} has HMIN {} and HMAX {} with {}; expected 1.0 for both (constant h)",
-                                 s.id, number(s.hmin.value), number(s.hmax.value), form_label(sph.form.value)))
+                     fmt::format("section {} has HMIN {} and HMAX {} with {}; expected 1.0 for both (constant h)", s.id,
+                                 number(s.hmin.value), number(s.hmax.value), form_label(sph.form.value)))
                 .notes.push_back({sph.form.span, "FORM 12 is set here"});
         }
         if (sph.ql.value < 0.001 || sph.ql.value > 0.1)
             c.report("SPH013", sph.ql.span,
-                     fmt::format("QL {} is outside the manual's range; expected 0.001 to 0.1 (default 0.01)", number(sph.ql.value)));
+                     fmt::format("QL {} is outside the manual's range; expected 0.001 to 0.1 (default 0.01)",
+                                 number(sph.ql.value)));
         return;
     }
     const std::string form = fmt::format("FORM is {}", static_cast<int>(sph.form.value));
@@ -62,8 +64,8 @@ void check_asph(RuleContext& c, const std::vector<const model::Part*>& parts, co
     for (const model::Section& s : c.model.sections) {
         if (!s.ellipse || asph) continue;
         auto& d = c.report("SPH023", s.span,
-                           fmt::format("section {} is *SECTION_SPH_ELLIPSE but FORM is {}; expected FORM 9 or 10",
-                                       s.id, static_cast<int>(sph.form.value)));
+                           fmt::format("section {} is *SECTION_SPH_ELLIPSE but FORM is {}; expected FORM 9 or 10", s.id,
+                                       static_cast<int>(sph.form.value)));
         if (sph.present) d.notes.push_back({sph.form.span, "FORM is set here"});
     }
     if (!asph) return;
@@ -81,7 +83,8 @@ void check_asph(RuleContext& c, const std::vector<const model::Part*>& parts, co
                  fmt::format("{} is 3D only; IDIM is {}; expected IDIM 3", label, static_cast<int>(sph.idim.value)))
             .notes.push_back({sph.idim.span, "IDIM is set here"});
     if (run.solver == Solver::Mpp) {
-        auto& d = c.report("SPH022", sph.form.span, fmt::format("{} runs only in SMP; the run is MPP ({})", label, run.why));
+        auto& d =
+            c.report("SPH022", sph.form.span, fmt::format("{} runs only in SMP; the run is MPP ({})", label, run.why));
         if (run.evidence.valid()) d.notes.push_back({run.evidence, "this makes it an MPP run"});
     }
 }

@@ -78,9 +78,8 @@ Speed largest_initial_speed(const RuleContext& c) {
         if (nsid && nsid->explicit_value && nsid->valid && nsid->number != 0) {
             const model::IdSet* set = c.node_set(model::normalise_id(nsid->text));
             // The particle index only when a set asks: 4 bytes a particle, kept to the end of the rules.
-            if (!set || std::none_of(set->members.begin(), set->members.end(), [&](long long node) {
-                    return c.particle_index().find(node).has_value();
-                }))
+            if (!set || std::none_of(set->members.begin(), set->members.end(),
+                                     [&](long long node) { return c.particle_index().find(node).has_value(); }))
                 continue;
         }
         auto value = [&](std::string_view name) {

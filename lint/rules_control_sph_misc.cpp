@@ -44,14 +44,17 @@ void check_viscosity(RuleContext& c, const std::vector<const model::Part*>& part
     bool bulk = false;
     std::set<model::Id> used;
     for (const model::Part* p : parts) {
-        if (!p->hourglass.value.empty() && hourglasses.count(p->hourglass.value)) used.insert(p->hourglass.value);
-        else bulk = true;
+        if (!p->hourglass.value.empty() && hourglasses.count(p->hourglass.value))
+            used.insert(p->hourglass.value);
+        else
+            bulk = true;
     }
     if (bulk && !(is_one(ctl.q1.value) && is_one(ctl.q2.value))) {
         if (ctl.bulk_viscosity_present)
             c.report("SPH050", is_one(ctl.q1.value) ? ctl.q2.span : ctl.q1.span,
-                     fmt::format("IAVIS 0 (Monaghan) with Q1 {} and Q2 {} on *CONTROL_BULK_VISCOSITY; expected 1.0 for both",
-                                 number(ctl.q1.value), number(ctl.q2.value)))
+                     fmt::format(
+                         "IAVIS 0 (Monaghan) with Q1 {} and Q2 {} on *CONTROL_BULK_VISCOSITY; expected 1.0 for both",
+                         number(ctl.q1.value), number(ctl.q2.value)))
                 .notes.push_back({iavis.span, "IAVIS 0 is set here"});
         else
             c.report("SPH050", iavis.span,
@@ -64,9 +67,10 @@ void check_viscosity(RuleContext& c, const std::vector<const model::Part*>& part
         const double q1 = h.q1->valid && h.q1->explicit_value ? h.q1->number : 1.5;
         const double q2 = h.q2->valid && h.q2->explicit_value ? h.q2->number : 0.06;
         if (is_one(q1) && is_one(q2)) continue;
-        c.report("SPH050", is_one(q1) ? h.q2->span : h.q1->span,
-                 fmt::format("IAVIS 0 (Monaghan) with Q1 {} and Q2 {} on *HOURGLASS {} of SPH parts; expected 1.0 for both",
-                             number(q1), number(q2), id))
+        c.report(
+             "SPH050", is_one(q1) ? h.q2->span : h.q1->span,
+             fmt::format("IAVIS 0 (Monaghan) with Q1 {} and Q2 {} on *HOURGLASS {} of SPH parts; expected 1.0 for both",
+                         number(q1), number(q2), id))
             .notes.push_back({iavis.span, "IAVIS 0 is set here"});
     }
 }
@@ -118,7 +122,8 @@ bool has_token(std::string_view keyword, std::string_view token) {
 }
 
 // Whether the SURFA (slave) side of a contact, given by SSID and SSTYP on card 1, holds particles.
-bool holds_particles(const RuleContext& c, const std::vector<const model::Part*>& parts, long long ssid, long long sstyp) {
+bool holds_particles(const RuleContext& c, const std::vector<const model::Part*>& parts, long long ssid,
+                     long long sstyp) {
     auto sph_part = [&](long long pid) {
         for (const model::Part* p : parts)
             if (p->id == std::to_string(pid)) return true;
@@ -128,17 +133,19 @@ bool holds_particles(const RuleContext& c, const std::vector<const model::Part*>
     switch (sstyp) {
         case 2:  // part set
             if (const auto* m = members(c.part_set(std::to_string(ssid))))
-                for (long long pid : *m) if (sph_part(pid)) return true;
+                for (long long pid : *m)
+                    if (sph_part(pid)) return true;
             return false;
         case 3: return sph_part(ssid);
         case 4:  // node set
             if (const auto* m = members(c.node_set(std::to_string(ssid)))) {
                 const model::IdIndex& particles = c.particle_index();
-                for (long long node : *m) if (particles.find(node)) return true;
+                for (long long node : *m)
+                    if (particles.find(node)) return true;
             }
             return false;
         case 5:
-        case 6: return true;      // all parts, or all but an exempted set
+        case 6: return true;        // all parts, or all but an exempted set
         default: return ssid == 0;  // segment or shell sets hold no particles; 0 = everything
     }
 }
@@ -180,7 +187,8 @@ void check_ithk(RuleContext& c, const std::vector<const model::Part*>& parts) {
         grammar::RealValue sst = grammar::parse_real(fields[2].text);
         if (sst.status != grammar::NumberStatus::Ok || sst.value == 0.0) continue;
         c.report("SPH093", ithk.span,
-                 fmt::format("ITHK 1 is ignored where {} gives SST {}; expected SST 0 or ITHK 0", b.keyword, number(sst.value)))
+                 fmt::format("ITHK 1 is ignored where {} gives SST {}; expected SST 0 or ITHK 0", b.keyword,
+                             number(sst.value)))
             .notes.push_back({fields[2].span, "SST given here"});
     }
 }
@@ -194,7 +202,8 @@ void check_misc(RuleContext& c, const std::vector<const model::Part*>& parts) {
     check_ithk(c, parts);
     const auto& ncbs = c.model.controls.sph.ncbs;
     if (ncbs.value < 1)  // SPH094: cycles between particle sorts
-        c.report("SPH094", ncbs.span, fmt::format("NCBS {} is below 1; expected a positive number of cycles", ncbs.value));
+        c.report("SPH094", ncbs.span,
+                 fmt::format("NCBS {} is below 1; expected a positive number of cycles", ncbs.value));
 }
 
 }  // namespace sphdeck::lint::control_sph

@@ -66,8 +66,10 @@ void check_radioss_densities(RuleContext& c) {
 }  // namespace
 
 void check_densities(RuleContext& c) {
-    if (c.model.radioss) check_radioss_densities(c);
-    else check_lsdyna_densities(c);
+    if (c.model.radioss)
+        check_radioss_densities(c);
+    else
+        check_lsdyna_densities(c);
 }
 
 }  // namespace sphdeck::lint

@@ -57,7 +57,7 @@ void check_planar_3d(RuleContext& c) {
     if (flat < 0) return;
     const char axis = static_cast<char>('x' + flat);
     const double at = 0.5 * (lo[flat] + hi[flat]);
-    const std::string run = !sph.present ? "a 3D run (no *CONTROL_SPH)"
+    const std::string run = !sph.present              ? "a 3D run (no *CONTROL_SPH)"
                             : sph.idim.explicit_value ? "a 3D run (IDIM 3)"
                                                       : "a 3D run (IDIM blank)";
     const std::string expected = flat == 2 ? "IDIM 2 (plane strain) or -2 (axisymmetric) in *CONTROL_SPH"

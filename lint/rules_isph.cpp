@@ -23,7 +23,8 @@ std::vector<std::vector<model::FieldValue>> decoded_cards(const grammar::RawDeck
     const auto cards = keywords::cards_for(match);
     std::size_t next = 0;
     for (const grammar::CardLine* l = deck.begin_lines(b); l != deck.end_lines(b) && next < cards.size(); ++l, ++next) {
-        if (cards[next]->unknown_layout || cards[next]->present_if || cards[next]->repeat == keywords::CardRepeat::Repeated)
+        if (cards[next]->unknown_layout || cards[next]->present_if ||
+            cards[next]->repeat == keywords::CardRepeat::Repeated)
             break;
         decoder.decode(b, *l, *cards[next], out.emplace_back());
     }
@@ -41,7 +42,7 @@ const model::FieldValue* value(const std::vector<std::vector<model::FieldValue>>
 
 void check_isph(RuleContext& c) {
     if (c.model.radioss || include_missing(c)) return;  // a missing include may hold the fluid materials
-    std::optional<grammar::Span> htc;  // IHTC 1 of *CONTROL_SPH_INCOMPRESSIBLE
+    std::optional<grammar::Span> htc;                   // IHTC 1 of *CONTROL_SPH_INCOMPRESSIBLE
     struct Fluid {
         grammar::Span where;
         std::string id;

@@ -24,7 +24,7 @@ using model::Id;
 
 // What the particles of one part tell SPH117: their largest initial speed and their extent.
 struct PartStats {
-    double speed = 0.0;           // largest initial speed from *INITIAL_VELOCITY
+    double speed = 0.0;  // largest initial speed from *INITIAL_VELOCITY
     const model::KeywordRecord* speed_record = nullptr;
     double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
 };
@@ -37,7 +37,8 @@ double number(const model::KeywordRecord& r, std::string_view field, double fall
 // Runs `f(particle, part stats)` over particles [from, to), looking a part up once per run of equal ids
 // (particles come in blocks of one part).
 template <typename F>
-void for_each_particle(const model::Particles& p, std::size_t from, std::size_t to, std::map<Id, PartStats>& parts, F f) {
+void for_each_particle(const model::Particles& p, std::size_t from, std::size_t to, std::map<Id, PartStats>& parts,
+                       F f) {
     long long last = 0;
     PartStats* stats = nullptr;
     for (std::size_t i = from; i < to; ++i) {

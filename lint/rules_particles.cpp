@@ -130,8 +130,10 @@ void check_mass(RuleContext& c) {
     const model::Particles& p = c.model.particles;
     PartGroups zero, volume;
     for (std::size_t i = 0; i < p.size(); ++i) {
-        if (p.mass[i] == 0.0) zero.add(p.part[i], i);
-        else if (p.mass[i] < 0.0 && !p.volume[i]) volume.add(p.part[i], i);
+        if (p.mass[i] == 0.0)
+            zero.add(p.part[i], i);
+        else if (p.mass[i] < 0.0 && !p.volume[i])
+            volume.add(p.part[i], i);
     }
     auto mass_span = [&](std::size_t i) {
         return field_span(c.deck, p.line[i], "*ELEMENT_SPH", "MASS", c.particle_span(i));
@@ -148,14 +150,17 @@ void check_mass(RuleContext& c) {
             return;
         }
         const Group all = groups.merged();
-        report_one(all, fmt::format("{} particles of {} parts (parts {}; particles {})", all.count, groups.by_part.size(),
-                                    groups.part_list(), all.ids(p)),
+        report_one(all,
+                   fmt::format("{} particles of {} parts (parts {}; particles {})", all.count, groups.by_part.size(),
+                               groups.part_list(), all.ids(p)),
                    true);
     };
     each(zero, [&](const Group& g, const std::string& text, bool merged) {
         auto& d = c.report("SPH112", diag::Severity::Error, mass_span(g.first.front()),
                            fmt::format("MASS 0 or blank on {}; expected a mass > 0, or a volume < 0", text));
-        if (merged) add_line_notes(c, d, g, [&](std::size_t i) { return fmt::format("particle {} has MASS 0 or blank", p.node[i]); });
+        if (merged)
+            add_line_notes(c, d, g,
+                           [&](std::size_t i) { return fmt::format("particle {} has MASS 0 or blank", p.node[i]); });
     });
     each(volume, [&](const Group& g, const std::string& text, bool merged) {
         auto& d = c.report("SPH112", diag::Severity::Info, mass_span(g.first.front()),
@@ -163,7 +168,9 @@ void check_mass(RuleContext& c) {
                                        "material density",
                                        p.mass[g.first.front()], text));
         if (merged)
-            add_line_notes(c, d, g, [&](std::size_t i) { return fmt::format("particle {} has MASS {:g}", p.node[i], p.mass[i]); });
+            add_line_notes(c, d, g, [&](std::size_t i) {
+                return fmt::format("particle {} has MASS {:g}", p.node[i], p.mass[i]);
+            });
     });
 }
 

@@ -56,10 +56,12 @@ void check_memory(RuleContext& c, const Preview& p) {
                              "up to {} neighbours within the kernel support {:.4g}",
                              memory.value, cap, worst->part, largest, worst->support));
     else
-        c.report("SPH090", diag::Severity::Info, memory.span,
-                 fmt::format("MEMORY {} is below the {} neighbours estimated for part {} (within the kernel support {:.4g}); the "
-                             "arrays will grow during the run",
-                             memory.value, largest, worst->part, worst->support));
+        c.report(
+            "SPH090", diag::Severity::Info, memory.span,
+            fmt::format(
+                "MEMORY {} is below the {} neighbours estimated for part {} (within the kernel support {:.4g}); the "
+                "arrays will grow during the run",
+                memory.value, largest, worst->part, worst->support));
 }
 
 // SPH113: particle mass against rho * spacing^d, reported at the part's first particle whose mass
@@ -103,7 +105,8 @@ void check_coincident(RuleContext& c, const Preview& p) {
     for (std::size_t k = 0; k < p.coincident.size() && k < max_listed; ++k) {
         const auto [a, b] = p.coincident[k];
         const auto [x, y, z] = particle_position(c, p, b);
-        std::string total = k == 0 && p.coincident.size() > 1 ? fmt::format(" ({} pairs in all)", p.coincident.size()) : "";
+        std::string total =
+            k == 0 && p.coincident.size() > 1 ? fmt::format(" ({} pairs in all)", p.coincident.size()) : "";
         c.report("SPH114", c.particle_span(b),
                  fmt::format("particle {} is at the same position as particle {} ({:.6g}, {:.6g}, {:.6g}){}", ids[b],
                              ids[a], x, y, z, total))
@@ -118,12 +121,11 @@ void check_stray(RuleContext& c, const Preview& p) {
     for (std::size_t i = 0; i < pp.part.size(); ++i) {
         const std::uint32_t q = pp.part[i];
         const PartPreview& part = p.parts[q];
-        if (part.spacing <= 0 || !pp.located[i] || !(pp.nn_distance[i] > 3.0 * part.spacing) ||
-            listed[q] == max_listed)
+        if (part.spacing <= 0 || !pp.located[i] || !(pp.nn_distance[i] > 3.0 * part.spacing) || listed[q] == max_listed)
             continue;
         ++listed[q];
-        const bool sets_h0 = !part.sphini_given && part.ini != model::IniMode::FromMass &&
-                             pp.nn_distance[i] == part.nn_distance.max;
+        const bool sets_h0 =
+            !part.sphini_given && part.ini != model::IniMode::FromMass && pp.nn_distance[i] == part.nn_distance.max;
         const std::string effect = sets_h0 ? fmt::format("; it sets h0 = {:.4g} for the whole part", part.h0) : "";
         c.report("SPH115", c.particle_span(i),
                  fmt::format("particle {} is {:.4g} from its nearest particle of part {}, {:.3g} times the part's "
@@ -160,9 +162,12 @@ void check_few_neighbours(RuleContext& c, const Preview& p) {
         grammar::Span where;
         const model::Part* def = c.model.part(std::to_string(part.part));
         const model::Section* section = def ? c.model.section(def->section.value) : nullptr;
-        if (section && section->sph) where = smoothing_span(c, *section, part.sphini_given);
-        else if (def) where = def->span;
-        else if (std::size_t i = first_particle(p, q); i < p.particles.part.size()) where = c.particle_span(i);
+        if (section && section->sph)
+            where = smoothing_span(c, *section, part.sphini_given);
+        else if (def)
+            where = def->span;
+        else if (std::size_t i = first_particle(p, q); i < p.particles.part.size())
+            where = c.particle_span(i);
         c.report("SPH118", where,
                  fmt::format("part {}: about {:.3g} neighbours per particle (median) within the kernel support "
                              "{:.4g} (h0 {:.4g}, spacing {:.4g}); at least {} are needed in {}D",

@@ -76,7 +76,7 @@ std::vector<double> element_sizes(const model::Model& m, const std::vector<long 
     static const int brick_edges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
                                            {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
     static const int tetra_edges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
-    auto measure = [&](const model::RadiossSolids& s, const int (*edges)[2], int count) {
+    auto measure = [&](const model::RadiossSolids& s, const int(*edges)[2], int count) {
         for (std::size_t e = 0; e < s.size(); ++e) {
             if (!wanted.count(s.part[e])) continue;
             double total = 0;
@@ -205,8 +205,8 @@ void check_geometry(RuleContext& c, const Positions& at, const std::vector<doubl
             c.report("RAD008", c.particle_span(i),
                      fmt::format("{} particle{} start{} behind the /SPHBCS {} plane ({}): {}; the deepest is {:.4g} "
                                  "on the wrong side; expected every particle on the side the normal points to",
-                                 r.behind.count, r.behind.count == 1 ? "" : "s", r.behind.count == 1 ? "s" : "",
-                                 s.id, plane_text(s), r.behind.ids(p), -r.worst))
+                                 r.behind.count, r.behind.count == 1 ? "" : "s", r.behind.count == 1 ? "s" : "", s.id,
+                                 plane_text(s), r.behind.ids(p), -r.worst))
                 .notes.push_back({s.span, "the symmetry plane is defined here"});
         }
         if (s.ilev.value != 1 || !r.on_plane.count) continue;
@@ -222,12 +222,14 @@ void check_geometry(RuleContext& c, const Positions& at, const std::vector<doubl
             if (r.on[i] && !members.count(p.node[i])) missing.add(i);
         if (!missing.count) continue;
         const grammar::Span where = s.grnod_id.value != 0 ? s.grnod_id.span : s.ilev.span;
-        auto& d = c.report("RAD006", where,
-                 fmt::format("Ilev 1 on /SPHBCS {}: {} particle{} on the plane at time 0 carr{} no kinematic "
-                             "condition ({}): {}",
-                             s.id, missing.count, missing.count == 1 ? "" : "s", missing.count == 1 ? "ies" : "y",
-                             s.grnod_id.value == 0 ? "grnod_ID is 0" : fmt::format("not in node group {}", s.grnod_id.value),
-                             missing.ids(p)));
+        auto& d =
+            c.report("RAD006", where,
+                     fmt::format("Ilev 1 on /SPHBCS {}: {} particle{} on the plane at time 0 carr{} no kinematic "
+                                 "condition ({}): {}",
+                                 s.id, missing.count, missing.count == 1 ? "" : "s", missing.count == 1 ? "ies" : "y",
+                                 s.grnod_id.value == 0 ? "grnod_ID is 0"
+                                                       : fmt::format("not in node group {}", s.grnod_id.value),
+                                 missing.ids(p)));
         if (s.grnod_id.value != 0) d.notes.push_back({s.ilev.span, "Ilev 1 here"});
     }
 }
@@ -241,11 +243,11 @@ void check_corners(RuleContext& c, const std::vector<std::uint8_t>& planes_of) {
         if (planes_of[i] > 2) many.add(i), most = std::max(most, planes_of[i]);
     if (!many.count) return;
     const std::size_t i = many.first.front();
-    auto& d = c.report("RAD007", c.particle_span(i),
-                       fmt::format("{} particle{} lie{} on {} symmetry planes at time 0: {}; the starter gives such a "
-                                   "particle m/(1 + n) of its mass, and mass and energy output will be off",
-                                   many.count, many.count == 1 ? "" : "s", many.count == 1 ? "s" : "", most,
-                                   many.ids(p)));
+    auto& d =
+        c.report("RAD007", c.particle_span(i),
+                 fmt::format("{} particle{} lie{} on {} symmetry planes at time 0: {}; the starter gives such a "
+                             "particle m/(1 + n) of its mass, and mass and energy output will be off",
+                             many.count, many.count == 1 ? "" : "s", many.count == 1 ? "s" : "", most, many.ids(p)));
     for (const RadiossSymmetry& s : c.model.radioss->symmetries)
         if (s.plane) d.notes.push_back({s.span, fmt::format("symmetry plane {}", s.id)});
 }
@@ -266,7 +268,8 @@ void check_symmetry(RuleContext& c) {
     long long last = 0;
     double h = 0;
     for (std::size_t i = 0; i < tolerance.size(); ++i) {
-        if (i == 0 || c.model.particles.part[i] != last) last = c.model.particles.part[i], h = reference_h(c.model, last);
+        if (i == 0 || c.model.particles.part[i] != last)
+            last = c.model.particles.part[i], h = reference_h(c.model, last);
         tolerance[i] = h > 0 ? 1e-3 * h : std::max(1e-9 * extent, 1e-12);
     }
     std::vector<std::uint8_t> planes_of(c.model.particles.size(), 0);

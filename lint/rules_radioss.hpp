@@ -52,9 +52,9 @@ double median(std::vector<double> v);
 grammar::Span cell_field_span(const RuleContext& c, std::size_t particle, std::string_view field);
 
 // Rules by group (rules_radioss*.cpp).
-void check_symmetry(RuleContext& c);     // RAD002-RAD008
-void check_sol2sph(RuleContext& c);      // RAD010-RAD016, RAD021
-void check_properties(RuleContext& c);   // RAD020, RAD022-RAD024, RAD026-RAD029, DK018 for /SPHGLO
+void check_symmetry(RuleContext& c);        // RAD002-RAD008
+void check_sol2sph(RuleContext& c);         // RAD010-RAD016, RAD021
+void check_properties(RuleContext& c);      // RAD020, RAD022-RAD024, RAD026-RAD029, DK018 for /SPHGLO
 void check_sph_references(RuleContext& c);  // REF001, REF002: /SPH/INOUT and /INISPHCEL ids
 // REF002-REF004, REF008, REF009: ids named by generated cards (model::RadiossIdUse).
 void check_generated_references(RuleContext& c);

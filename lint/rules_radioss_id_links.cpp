@@ -1,6 +1,7 @@
 // Ids named by the cards of generated OpenRadioss layouts (the CFG's ATTRIBUTES types: FUNCT,
 // SENSOR, SYSTEM, SETS of /SETS/GRNOD or /SETS/SURF, MAT, PROP, COMPONENT) against the ids the
-// starter deck's headers define; a group may be a /SET of its id. A deck with //SUBMODEL is not judged: submodels offset ids.
+// starter deck's headers define; a group may be a /SET of its id. A deck with //SUBMODEL is not judged: submodels
+// offset ids.
 #include <fmt/format.h>
 
 #include "grammar/radioss/id_kinds.hpp"

@@ -27,8 +27,8 @@ void check_mass(RuleContext& c, const RadiossSphProperty& p) {
     for (const auto& r : f.reserves) reserves += parts.count(r.part);
     if (!users && !reserves) return;
     std::string who = users == 1 ? std::string("1 particle takes its mass from it")
-                      : users     ? fmt::format("{} particles take their mass from it", users)
-                            : "the reserve particles of its inlet take their mass from it";
+                      : users    ? fmt::format("{} particles take their mass from it", users)
+                                 : "the reserve particles of its inlet take their mass from it";
     c.report("RAD023", p.mp.span,
              fmt::format("mp {:g} on /PROP/SPH {}: {}; the starter replaces it by 1.0 (warning 138)", p.mp.written,
                          p.id, who));
@@ -54,7 +54,8 @@ void check_modes(RuleContext& c, const RadiossSphProperty& p) {
                  fmt::format("h_1D {} is not 0, 1, 2 or 3: the engine silently treats it as 0 (3D dilatation)", h1d));
     if (order < -1 || order > 1)
         c.report("RAD028", p.order.span,
-                 fmt::format("Order {} is not -1, 0 or 1: the engine puts these particles in no correction list", order));
+                 fmt::format("Order {} is not -1, 0 or 1: the engine puts these particles in no correction list",
+                             order));
 }
 
 // RAD026: /SPHCEL Type 1 (mass) or 2 (volume) with MASS <= 0, one finding per part and type.
@@ -121,7 +122,9 @@ void check_dimension(RuleContext& c) {
     if (f.analysis == 0 || !sph) return;
     c.report("RAD029", f.analysis_span,
              fmt::format("/ANALY N2D3D {} ({}) with SPH particles: Radioss SPH is 3D only", f.analysis,
-                         f.analysis == 1 ? "axisymmetric" : f.analysis == 2 ? "plane strain" : "not 3D"));
+                         f.analysis == 1   ? "axisymmetric"
+                         : f.analysis == 2 ? "plane strain"
+                                           : "not 3D"));
 }
 
 }  // namespace

@@ -52,7 +52,8 @@ void check_ndir(RuleContext& c, const RadiossSolidProperty& p) {
                              p.sph_part.value, p.ndir.value == 0 ? " (0 creates no particle)" : ""));
     if (p.ndir.value != 0 && p.sph_part.value == 0)
         c.report("DK008", diag::Severity::Error, p.sph_part.span,
-                 fmt::format("sphpartID is required with Ndir {}: the particles would belong to no part", p.ndir.value));
+                 fmt::format("sphpartID is required with Ndir {}: the particles would belong to no part",
+                             p.ndir.value));
     if (p.sph_part.value != 0 && !c.model.part(std::to_string(p.sph_part.value)))
         c.report("REF002", p.sph_part.span,
                  fmt::format("sphpartID {} names no /PART (starter error 1037)", p.sph_part.value));
@@ -151,8 +152,9 @@ void check_pitch(RuleContext& c, const std::vector<const RadiossSolidProperty*>&
     for (long long part : std::set<long long>(c.model.particles.part.begin(), c.model.particles.part.end()))
         if (double pitch = particle_pitch(c.model, at, part); pitch > 0) genuine.emplace_back(part, pitch);
     for (const Pitch& s : sol2sph) {
-        const std::string own = fmt::format("SOL2SPH property {} gives a pitch of {:.4g} (element size {:.4g} / Ndir {})",
-                                            s.prop->id, s.pitch, s.size, s.prop->ndir.value);
+        const std::string own =
+            fmt::format("SOL2SPH property {} gives a pitch of {:.4g} (element size {:.4g} / Ndir {})", s.prop->id,
+                        s.pitch, s.size, s.prop->ndir.value);
         if (!genuine.empty()) {
             for (const auto& [part, pitch] : genuine) {
                 if (std::max(pitch, s.pitch) / std::min(pitch, s.pitch) <= 1.2) continue;
@@ -175,10 +177,11 @@ void check_pitch(RuleContext& c, const std::vector<const RadiossSolidProperty*>&
         if (!sph || sph->h_1d.value == 3) continue;  // h_1D 3 derives h from the particle distance
         const double h = sph->h.value;
         if (h <= 0)
-            c.report("RAD016", sph->h.span,
-                     fmt::format("h 0 on the SPH property {} of SOL2SPH particles: give h (about {:.4g}-{:.4g}, 1.25-1.5 "
-                                 "times the pitch {:.4g}) or h_1D 3",
-                                 sph->id, 1.25 * s.pitch, 1.5 * s.pitch, s.pitch));
+            c.report(
+                "RAD016", sph->h.span,
+                fmt::format("h 0 on the SPH property {} of SOL2SPH particles: give h (about {:.4g}-{:.4g}, 1.25-1.5 "
+                            "times the pitch {:.4g}) or h_1D 3",
+                            sph->id, 1.25 * s.pitch, 1.5 * s.pitch, s.pitch));
         else if (h < 1.0 * s.pitch || h > 2.0 * s.pitch)
             c.report("RAD016", sph->h.span,
                      fmt::format("h {:.4g} is {:.3g} times the SOL2SPH pitch {:.4g}; expected about 1.25-1.5 times "
@@ -222,7 +225,8 @@ double element_length(const model::Model& m, const model::IdIndex& nodes, const 
         const double volume = std::abs(dot(sub(p[1], p[0]), cross(sub(p[2], p[0]), sub(p[3], p[0])))) / 6;
         static const int faces[4][3] = {{0, 1, 2}, {0, 1, 3}, {1, 2, 3}, {0, 2, 3}};
         double area = 0;
-        for (const auto& f : faces) area = std::max(area, length(cross(sub(p[f[1]], p[f[0]]), sub(p[f[2]], p[f[0]]))) / 2);
+        for (const auto& f : faces)
+            area = std::max(area, length(cross(sub(p[f[1]], p[f[0]]), sub(p[f[2]], p[f[0]]))) / 2);
         return area > 0 ? 3 * volume / area : 0;
     }
     // Hexahedron: volume from six tetrahedra around the diagonal 1-7, faces by their diagonals.

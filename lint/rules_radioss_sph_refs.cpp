@@ -1,7 +1,7 @@
 // Ids the SPH cards name, checked as the starter checks them: /SPH/INOUT (hm_read_sphio.F) its
-// part (error 437), its surface among the /SURF headers (error 438) and the three nodes of a frontier given by nodes (USR2SYS in sysfus.F: error
-// 78; format 140 on); /INISPHCEL/FULL (hm_read_inistate_d00.F) its particles (UEL2SYS over the
-// /SPHCEL cells: an id not found is skipped, warning 3045).
+// part (error 437), its surface among the /SURF headers (error 438) and the three nodes of a frontier given by nodes
+// (USR2SYS in sysfus.F: error 78; format 140 on); /INISPHCEL/FULL (hm_read_inistate_d00.F) its particles (UEL2SYS over
+// the /SPHCEL cells: an id not found is skipped, warning 3045).
 #include <fmt/format.h>
 
 #include "lint/rules_radioss.hpp"

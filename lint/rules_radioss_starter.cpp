@@ -86,7 +86,7 @@ private:
         const grammar::CardLine* line = c_.deck.begin_lines(block_);
         const grammar::CardLine* end = c_.deck.end_lines(block_);
         if (!rad::is_v4(version_) && line != end) ++line;  // the title
-        std::vector<diag::Diagnostic> ignored;  // the model's reading reported them
+        std::vector<diag::Diagnostic> ignored;             // the model's reading reported them
         model::RadiossCardDecoder decoder(c_.deck, ignored);
         model::RadiossCardSequence sequence(format_.cards);
         decoded_.assign(format_.cards.size(), false);
@@ -118,14 +118,15 @@ private:
             fmt::format("the starter stops (starter message {}: \"{}\")", check.message, check.text);
         if (v) {
             const std::string written = v->explicit_value ? std::string(v->text) : std::string("blank (0)");
-            report(v->span, fmt::format("{} {} in {}: {}; expected {} {}", check.label, written, block_.keyword,
-                                        starter, check.label, expected(check.allowed)),
+            report(v->span,
+                   fmt::format("{} {} in {}: {}; expected {} {}", check.label, written, block_.keyword, starter,
+                               check.label, expected(check.allowed)),
                    check);
             return;
         }
         // The block ends before the card: its fields read as blanks.
-        const grammar::Span at = last_ ? grammar::Span{last_->file, last_->line, 1, c_.deck.length(*last_) + 1}
-                                       : block_.span;
+        const grammar::Span at =
+            last_ ? grammar::Span{last_->file, last_->line, 1, c_.deck.length(*last_) + 1} : block_.span;
         report(at,
                fmt::format("{} ends before card {} (the one with {}): {} reads 0 and {}; add the card with {} {}",
                            block_.keyword, card_number(format_, card, read_), check.label, check.label, starter,

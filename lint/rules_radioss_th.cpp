@@ -23,9 +23,9 @@ namespace {
 namespace rad = grammar::radioss;
 
 struct ThKind {
-    std::string_view selection;  // the keyword's second segment, as the starter matches it (a prefix)
+    std::string_view selection;                // the keyword's second segment, as the starter matches it (a prefix)
     std::vector<std::string_view> defined_by;  // first segments of the headers whose lines or ids define them
-    bool by_header = false;      // ids are the header's integer segments (/PART/5), not the lines' first cells
+    bool by_header = false;  // ids are the header's integer segments (/PART/5), not the lines' first cells
     diag::Severity severity = diag::Severity::Error;
     int message = 69;
     std::string_view what;
@@ -36,7 +36,11 @@ const std::vector<ThKind>& kinds() {
     static const std::vector<ThKind> all = {
         {"NODE", {"NODE", "CNODE"}, false, Severity::Error, 78, "node"},
         {"SPHCEL", {"SPHCEL"}, false, Severity::Error, 69, "SPH cell"},
-        {"BRIC", {"BRICK", "BRIC20", "TETRA4", "TETRA10", "PENTA6", "SHEL16"}, false, Severity::Error, 69,
+        {"BRIC",
+         {"BRICK", "BRIC20", "TETRA4", "TETRA10", "PENTA6", "SHEL16"},
+         false,
+         Severity::Error,
+         69,
          "solid element"},
         {"SHEL", {"SHELL"}, false, Severity::Error, 69, "4-node shell"},
         {"SH3N", {"SH3N"}, false, Severity::Error, 69, "3-node shell"},

@@ -47,7 +47,8 @@ std::string undefined_part_hint(const RuleContext& c, const PartGroups& missing,
     std::size_t particles = 0;
     for (const auto& [id, g] : missing.by_part) particles += g.count;
     if (part_is_node && particles > 2) return "the part id equals the node id on every line: columns swapped?";
-    if (c.model.parts.empty()) return fmt::format("the deck defines no {}: a mesh without its parts (a missing include?)", words(c).part);
+    if (c.model.parts.empty())
+        return fmt::format("the deck defines no {}: a mesh without its parts (a missing include?)", words(c).part);
     return "";
 }
 
@@ -72,7 +73,8 @@ void report_undefined_parts(RuleContext& c, const PartGroups& missing, bool part
     auto& d = c.report("REF002", c.particle_span(all.first.front()),
                        fmt::format("{} particles name {} parts that are not defined: parts {}; particles {}", all.count,
                                    missing.by_part.size(), missing.part_list(), all.ids(p)));
-    add_line_notes(c, d, all, [&](std::size_t i) { return fmt::format("particle {} names part {}", p.node[i], p.part[i]); });
+    add_line_notes(c, d, all,
+                   [&](std::size_t i) { return fmt::format("particle {} names part {}", p.node[i], p.part[i]); });
     if (!hint.empty()) d.notes.push_back({{}, hint});
 }
 
@@ -134,7 +136,8 @@ void check_particles(RuleContext& c, const model::IdIndex& nodes) {
             continue;
         }
         ++shown;
-        c.report("REF001", c.particle_span(first.first), fmt::format("particle {} has no {} {}", id, words(c).node, id));
+        c.report("REF001", c.particle_span(first.first),
+                 fmt::format("particle {} has no {} {}", id, words(c).node, id));
     }
     if (more > 0)
         c.report("REF001", c.particle_span(std::next(missing_node.begin(), max_listed)->second.first),
@@ -203,8 +206,8 @@ bool needs_no_structural_material(const RuleContext& c, const model::Part& part)
 
 // SECID and MID are ids, and LS-DYNA ids are positive: a 0 written there names no section or
 // material 0, it leaves the part without one (pydyna and LS-PrePost write 0 for "not set").
-std::string missing_reference(const model::Part& part, std::string_view field, std::string_view what,
-                              const Id& id, std::string_view keyword) {
+std::string missing_reference(const model::Part& part, std::string_view field, std::string_view what, const Id& id,
+                              std::string_view keyword) {
     if (id == "0") return fmt::format("part {} has no {} ({} 0)", part.id, what, field);
     return fmt::format("part {} names {} {}, which no {} defines", part.id, what, id, keyword);
 }
@@ -243,8 +246,8 @@ public:
             }
             diag::Diagnostic& d = c.report(m.code, n.front().place, std::move(message));
             for (std::size_t k = 1; k < n.size() && k <= listed_notes; ++k)
-                d.notes.push_back({n[k].place, fmt::format("part {} {} too", n[k].part->id,
-                                                           m.id == "0" ? "has none" : "names it")});
+                d.notes.push_back(
+                    {n[k].place, fmt::format("part {} {} too", n[k].part->id, m.id == "0" ? "has none" : "names it")});
         }
     }
 
@@ -268,7 +271,8 @@ void check_part_references(RuleContext& c, std::set<Id>& used_sections, std::set
                         missing_reference(part, words(c).section_field, "section", s.value, words(c).section));
         used_sections.insert(s.value);
         const auto& m = part.material;
-        if (m.explicit_value && !c.model.material(m.value) && !(m.value == "0" && needs_no_structural_material(c, part)))
+        if (m.explicit_value && !c.model.material(m.value) &&
+            !(m.value == "0" && needs_no_structural_material(c, part)))
             missing.add("REF004", m.value, part, m.span,
                         missing_reference(part, words(c).material_field, "material", m.value, words(c).material));
         used_materials.insert(m.value);
@@ -343,13 +347,15 @@ grammar::Span member_span(const RuleContext& c, const model::IdSet& set, long lo
 void check_set_members(RuleContext& c, const model::IdIndex& nodes) {
     for (const auto& s : c.model.node_sets) {
         std::vector<long long> missing;
-        for (long long id : s.members) if (!nodes.find(id)) missing.push_back(id);
+        for (long long id : s.members)
+            if (!nodes.find(id)) missing.push_back(id);
         if (!missing.empty())
             c.report("REF001", s.span, fmt::format("node set {} names undefined node(s) {}", s.id, list_ids(missing)));
     }
     for (const auto& s : c.model.part_sets) {
         std::vector<long long> missing;
-        for (long long id : s.members) if (!c.model.part(std::to_string(id))) missing.push_back(id);
+        for (long long id : s.members)
+            if (!c.model.part(std::to_string(id))) missing.push_back(id);
         // At the member that names the first missing part: the line a person edits (the SID is a note).
         if (!missing.empty())
             c.report("REF002", member_span(c, s, missing.front()),
@@ -410,7 +416,8 @@ void check_references(RuleContext& c) {
     check_part_references(c, sections, materials, eos);
     // *DEFINE_ADAPTIVE_SOLID_TO_SPH gives its new particles a section of their own (ISSPH).
     for (const model::KeywordRecord& r : c.model.records)
-        if (const model::FieldRecord* f = r.schema->name == "*DEFINE_ADAPTIVE_SOLID_TO_SPH" ? r.field("ISSPH") : nullptr)
+        if (const model::FieldRecord* f =
+                r.schema->name == "*DEFINE_ADAPTIVE_SOLID_TO_SPH" ? r.field("ISSPH") : nullptr)
             if (f->explicit_value) sections.insert(model::normalise_id(f->text));
     // Sections and materials that generated keywords name (*DEFINE_SPH_MESH_SURFACE SPHXID...) are used.
     for (const model::IdReference& r : c.model.id_references) {

@@ -24,10 +24,12 @@ struct Definitions {
 
 // The first field of a card line as an integer; nullopt when it is not one.
 std::optional<long long> first_integer(std::string_view text, grammar::CardFormat format) {
-    std::string_view field = text.substr(0, std::min<std::size_t>(text.size(), format == grammar::CardFormat::Long ? 20 : 10));
+    std::string_view field =
+        text.substr(0, std::min<std::size_t>(text.size(), format == grammar::CardFormat::Long ? 20 : 10));
     if (grammar::is_free_format(text)) field = text.substr(0, text.find(','));
     while (!field.empty() && (field.front() == ' ' || field.front() == '\t')) field.remove_prefix(1);
-    while (!field.empty() && (field.back() == ' ' || field.back() == '\t' || field.back() == '\r')) field.remove_suffix(1);
+    while (!field.empty() && (field.back() == ' ' || field.back() == '\t' || field.back() == '\r'))
+        field.remove_suffix(1);
     long long n = 0;
     auto [end, ec] = std::from_chars(field.data(), field.data() + field.size(), n);
     if (ec != std::errc() || end != field.data() + field.size()) return std::nullopt;
@@ -47,8 +49,10 @@ Definitions definitions_of(const grammar::RawDeck& deck, std::string_view kind) 
         const grammar::CardLine* line = deck.begin_lines(b);
         line += keywords::title_lines(b.keyword);
         if (line >= deck.end_lines(b)) continue;
-        if (auto id = first_integer(deck.text(*line), b.format)) d.ids.insert(*id);
-        else d.unreadable = true;
+        if (auto id = first_integer(deck.text(*line), b.format))
+            d.ids.insert(*id);
+        else
+            d.unreadable = true;
         if (several_per_block(kind))
             for (++line; line < deck.end_lines(b); ++line)
                 if (auto id = first_integer(deck.text(*line), b.format)) d.ids.insert(*id);
@@ -62,8 +66,10 @@ Definitions ids_of(const std::vector<T>& items) {
     for (const T& item : items) {
         long long n = 0;
         auto [end, ec] = std::from_chars(item.id.data(), item.id.data() + item.id.size(), n);
-        if (ec == std::errc() && end == item.id.data() + item.id.size()) d.ids.insert(n);
-        else if (!item.id.empty()) d.unreadable = true;
+        if (ec == std::errc() && end == item.id.data() + item.id.size())
+            d.ids.insert(n);
+        else if (!item.id.empty())
+            d.unreadable = true;
     }
     return d;
 }
@@ -129,8 +135,10 @@ void check_followed_references(RuleContext& c, std::set<model::Id>& boxes) {
         auto it = known.find(kind);
         if (it != known.end()) return it->second;
         Definitions d;
-        if (kind == "PART") d = ids_of(c.model.parts);
-        else if (kind == "SECTION") d = ids_of(c.model.sections);
+        if (kind == "PART")
+            d = ids_of(c.model.parts);
+        else if (kind == "SECTION")
+            d = ids_of(c.model.sections);
         else if (kind == "MAT") {
             d = ids_of(c.model.materials);
             // Thermal materials (*MAT_THERMAL_..., the TMID of a part) are not in model.materials.
@@ -138,10 +146,13 @@ void check_followed_references(RuleContext& c, std::set<model::Id>& boxes) {
                 if (starts_with(b.keyword, "*MAT_THERMAL_") && c.deck.begin_lines(b) < c.deck.end_lines(b)) {
                     const grammar::CardLine* line = c.deck.begin_lines(b) + keywords::title_lines(b.keyword);
                     if (line >= c.deck.end_lines(b)) continue;
-                    if (auto id = first_integer(c.deck.text(*line), b.format)) d.ids.insert(*id);
-                    else d.unreadable = true;
+                    if (auto id = first_integer(c.deck.text(*line), b.format))
+                        d.ids.insert(*id);
+                    else
+                        d.unreadable = true;
                 }
-        } else if (kind != "NODE") d = definitions_of(c.deck, keywords::id_space(kind));
+        } else if (kind != "NODE")
+            d = definitions_of(c.deck, keywords::id_space(kind));
         return known.emplace(kind, std::move(d)).first->second;
     };
     std::set<std::string_view> hinted;  // kinds with the "defines none" note already given
@@ -165,8 +176,8 @@ void check_followed_references(RuleContext& c, std::set<model::Id>& boxes) {
                                        w.what, r.id, w.defined, more));
         const bool none = r.kind == "NODE" ? c.model.nodes.id.empty() : definitions(r.kind).ids.empty();
         if (none && hinted.insert(r.kind).second)
-            d.notes.push_back({{}, fmt::format("the deck defines no {}: a fragment of a model (a missing include?)",
-                                               w.defined)});
+            d.notes.push_back(
+                {{}, fmt::format("the deck defines no {}: a fragment of a model (a missing include?)", w.defined)});
     }
 }
 

@@ -55,8 +55,8 @@ void check_bounds(RuleContext& c, const Section& s) {
     const auto& primary = low_bad ? s.hmin : s.hmax;
     const auto& other = low_bad ? s.hmax : s.hmin;
     std::string what = low_bad && hmin > hmax ? fmt::format("HMIN {:g} is above 1 and above HMAX {:g}", hmin, hmax)
-                       : low_bad             ? fmt::format("HMIN {:g} is above 1", hmin)
-                                             : fmt::format("HMAX {:g} is below 1", hmax);
+                       : low_bad              ? fmt::format("HMIN {:g} is above 1", hmin)
+                                              : fmt::format("HMAX {:g} is below 1", hmax);
     auto& d = c.report("SPH101", primary.span, what + "; expected HMIN <= 1 <= HMAX");
     if (hmin > hmax)
         d.notes.push_back({other.span, fmt::format("{} {:g} here", low_bad ? "HMAX" : "HMIN", other.value)});

@@ -18,15 +18,15 @@ namespace sphdeck::lint::radioss {
 
 // What the starter accepts. Each names the values that make it stop.
 enum class Allowed : unsigned char {
-    Positive,          // fires on v <= 0
-    AboveMinusOne,     // fires on v <= -1
-    NotZero,           // fires on v == 0
-    ZeroToOne,         // fires on v < 0 or v > 1
-    AtMostOne,         // fires on v > 1
-    ZeroToHalf,        // fires on v < 0 or v >= 0.5
-    AtMostHundred,     // fires on v > 100
-    AboveOne,          // fires on v <= 1
-    NotNegative,       // fires on v < 0
+    Positive,       // fires on v <= 0
+    AboveMinusOne,  // fires on v <= -1
+    NotZero,        // fires on v == 0
+    ZeroToOne,      // fires on v < 0 or v > 1
+    AtMostOne,      // fires on v > 1
+    ZeroToHalf,     // fires on v < 0 or v >= 0.5
+    AtMostHundred,  // fires on v > 100
+    AboveOne,       // fires on v <= 1
+    NotNegative,    // fires on v < 0
 };
 
 bool allowed(Allowed a, double value);
@@ -34,17 +34,17 @@ bool allowed(Allowed a, double value);
 std::string_view expected(Allowed a);
 
 struct StarterCheck {
-    std::string_view field;    // the CFG field name in the layout ("MAT_SIGY")
-    std::string_view label;    // as the deck's comment line names it ("a")
+    std::string_view field;  // the CFG field name in the layout ("MAT_SIGY")
+    std::string_view label;  // as the deck's comment line names it ("a")
     Allowed allowed;
     // The value the reader puts in place of 0 (or a blank) before it tests; 0: none.
     double zero_means = 0.0;
     // The check runs only when this holds on the block's other fields ("MAT_SRC!0": c written
     // not 0), in the syntax of the generated layouts' conditions; empty: always.
     std::string_view when = {};
-    int message = 0;           // the starter message id
-    std::string_view text;     // its text (starter_message_description.txt)
-    std::string_view source;   // reader file:line of the test, under reader_folder()
+    int message = 0;          // the starter message id
+    std::string_view text;    // its text (starter_message_description.txt)
+    std::string_view source;  // reader file:line of the test, under reader_folder()
     // Another rule that already reports it ("SPH119" for the density): RAD040 leaves it to that one.
     std::string_view reported_by = {};
 };
@@ -56,7 +56,7 @@ struct StarterCheck {
 // generated layout of the first name is used.
 struct StarterLaw {
     std::vector<std::string_view> names;
-    std::string_view reader;   // "hm_read_mat02_jc.F90"
+    std::string_view reader;  // "hm_read_mat02_jc.F90"
     std::vector<StarterCheck> checks;
     std::vector<grammar::radioss::FormatSpec> layout = {};
 };

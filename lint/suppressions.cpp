@@ -27,8 +27,11 @@ std::uint32_t skip_blanks(std::string_view text, std::uint32_t i) {
 
 diag::Diagnostic bad(grammar::FileId file, std::uint32_t line, std::uint32_t begin, std::uint32_t end,
                      std::string message) {
-    return diag::Diagnostic{"DK028", diag::Severity::Warning, std::move(message),
-                            grammar::Span{file, line, begin + 1, std::max(end, begin + 1) + 1}, {}};
+    return diag::Diagnostic{"DK028",
+                            diag::Severity::Warning,
+                            std::move(message),
+                            grammar::Span{file, line, begin + 1, std::max(end, begin + 1) + 1},
+                            {}};
 }
 
 // A directive and the lines of its file it covers (first == 0: none, e.g. at the end of the file).
@@ -104,7 +107,8 @@ void place_directives(const grammar::SourceFile& source, grammar::FileId file, L
 
 bool covers(const Placed& p, const grammar::Span& span) {
     if (p.file != span.file) return false;
-    return p.directive.scope == Suppression::Scope::File || (p.first != 0 && p.first <= span.line && span.line <= p.last);
+    return p.directive.scope == Suppression::Scope::File ||
+           (p.first != 0 && p.first <= span.line && span.line <= p.last);
 }
 
 // Marks the items that silence `d`; true if any does.
@@ -125,7 +129,7 @@ std::string unused_message(const Placed& p, const SuppressionItem& item) {
     std::string what = item.code == "all" ? std::string("all rules") : item.code;
     if (const RuleInfo* rule = find_rule(item.code)) what += " (" + std::string(rule->name) + ")";
     const char* why = p.directive.scope == Suppression::Scope::File ? "no such finding in this file"
-                      : p.first == 0 ? "no line follows it"
+                      : p.first == 0                                ? "no line follows it"
                       : p.directive.scope == Suppression::Scope::NextBlock && p.last > p.first
                           ? "no such finding in the block it covers"
                           : "no such finding on the line it covers";
@@ -148,9 +152,12 @@ bool parse_suppression(std::string_view comment, grammar::FileId file, std::uint
     std::uint32_t j = action_begin;
     while (j < comment.size() && comment[j] != '=' && !is_blank(comment[j])) ++j;
     const std::string_view action = comment.substr(action_begin, j - action_begin);
-    if (action == "disable") out.scope = Suppression::Scope::NextBlock;
-    else if (action == "disable-next-line") out.scope = Suppression::Scope::NextLine;
-    else if (action == "disable-file") out.scope = Suppression::Scope::File;
+    if (action == "disable")
+        out.scope = Suppression::Scope::NextBlock;
+    else if (action == "disable-next-line")
+        out.scope = Suppression::Scope::NextLine;
+    else if (action == "disable-file")
+        out.scope = Suppression::Scope::File;
     else {
         problems.push_back(bad(file, line, action_begin, j,
                                "unknown suppression '" + std::string(action) +
@@ -159,7 +166,8 @@ bool parse_suppression(std::string_view comment, grammar::FileId file, std::uint
     }
     j = skip_blanks(comment, j);
     if (j >= comment.size() || comment[j] != '=') {
-        problems.push_back(bad(file, line, action_begin, j, "expected '=' and rule codes after '" + std::string(action) + "'"));
+        problems.push_back(
+            bad(file, line, action_begin, j, "expected '=' and rule codes after '" + std::string(action) + "'"));
         return true;
     }
     // The list runs up to " --" (the reason) or the end of the line.
@@ -179,16 +187,17 @@ bool parse_suppression(std::string_view comment, grammar::FileId file, std::uint
         if (word.empty()) {
             problems.push_back(bad(file, line, col, end_col, "empty rule code in suppression list"));
         } else if (word.find_first_of(" \t") != std::string_view::npos) {
-            problems.push_back(bad(file, line, col, end_col,
-                                   "expected ',' between rule codes, or ' -- ' before the reason, in '" +
-                                       std::string(word) + "'"));
+            problems.push_back(
+                bad(file, line, col, end_col,
+                    "expected ',' between rule codes, or ' -- ' before the reason, in '" + std::string(word) + "'"));
         } else if (word == "all") {
             out.items.push_back({"all", col + 1, end_col + 1});
         } else if (const RuleInfo* rule = find_rule(word)) {
             out.items.push_back({std::string(rule->code), col + 1, end_col + 1});
         } else {
-            problems.push_back(bad(file, line, col, end_col,
-                                   "unknown rule '" + std::string(word) + "' in suppression" + did_you_mean_rule(word)));
+            problems.push_back(
+                bad(file, line, col, end_col,
+                    "unknown rule '" + std::string(word) + "' in suppression" + did_you_mean_rule(word)));
         }
         item_begin = item_end + 1;
     } while (item_begin <= list.size());
@@ -223,8 +232,11 @@ void apply_suppressions(const grammar::SourceMap& sources, std::vector<diag::Dia
         for (std::size_t i = 0; i < p.directive.items.size(); ++i) {
             const SuppressionItem& item = p.directive.items[i];
             Where key{canonical(p.file), p.directive.line, item.column, item.code};
-            diag::Diagnostic d{"DK026", diag::Severity::Info, unused_message(p, item),
-                               grammar::Span{p.file, p.directive.line, item.column, item.end_column}, {}};
+            diag::Diagnostic d{"DK026",
+                               diag::Severity::Info,
+                               unused_message(p, item),
+                               grammar::Span{p.file, p.directive.line, item.column, item.end_column},
+                               {}};
             auto [it, fresh] = unused.try_emplace(key, std::move(d), p.used[i]);
             if (!fresh) it->second.second = it->second.second || p.used[i];
         }
@@ -240,7 +252,8 @@ void apply_suppressions(const grammar::SourceMap& sources, std::vector<diag::Dia
         bool silenced = false;
         for (const Placed& p : placed)
             if (p.directive.scope == Suppression::Scope::File && covers(p, d.span))
-                for (const SuppressionItem& item : p.directive.items) silenced |= item.code == "all" || item.code == d.code;
+                for (const SuppressionItem& item : p.directive.items)
+                    silenced |= item.code == "all" || item.code == d.code;
         if (!silenced) diagnostics.push_back(std::move(d));
     }
     diag::sort_by_location(diagnostics);

@@ -26,7 +26,7 @@
 namespace sphdeck::lint {
 
 struct SuppressionItem {
-    std::string code;  // canonical rule code, or "all"
+    std::string code;                          // canonical rule code, or "all"
     std::uint32_t column = 0, end_column = 0;  // where the item stands on the comment line
 };
 
@@ -37,8 +37,8 @@ struct Suppression {
 };
 
 // Parses one comment line. Returns false when the line is no directive (does not start with
-// "$ sphdeck:" or "# sphdeck:"; the caller decides which lines are comments); otherwise fills `out` with the valid items and `problems` with DK028 findings for
-// the rest (their spans carry `file` and `line`).
+// "$ sphdeck:" or "# sphdeck:"; the caller decides which lines are comments); otherwise fills `out` with the valid
+// items and `problems` with DK028 findings for the rest (their spans carry `file` and `line`).
 bool parse_suppression(std::string_view comment, grammar::FileId file, std::uint32_t line, Suppression& out,
                        std::vector<diag::Diagnostic>& problems);
 

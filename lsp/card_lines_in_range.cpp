@@ -12,7 +12,8 @@ namespace {
 constexpr std::uint32_t kWalkWholeBlockBelow = 512;
 
 // The first card line of `block` at or after `line` (card lines are in line order).
-const grammar::CardLine* first_line_from(const grammar::RawDeck& deck, const grammar::Block& block, std::uint32_t line) {
+const grammar::CardLine* first_line_from(const grammar::RawDeck& deck, const grammar::Block& block,
+                                         std::uint32_t line) {
     return std::lower_bound(deck.begin_lines(block), deck.end_lines(block), line,
                             [](const grammar::CardLine& l, std::uint32_t n) { return l.line < n; });
 }
@@ -31,8 +32,10 @@ void visit_dyna(const grammar::RawDeck& deck, const grammar::Block& block, LineR
     if (partial && only_repeated_card(block)) {
         for (const grammar::CardLine* l = first_line_from(deck, block, range.first);
              l != deck.end_lines(block) && l->line <= range.last; ++l)
-            if (l->file != block.span.file) continue;
-            else if (auto card = dyna_card_at(deck, block, *l)) visit({&block, l, &*card, nullptr});
+            if (l->file != block.span.file)
+                continue;
+            else if (auto card = dyna_card_at(deck, block, *l))
+                visit({&block, l, &*card, nullptr});
         return;
     }
     walk_dyna_block(deck, block, [&](const DynaCard& card) {
@@ -63,15 +66,16 @@ void visit_radioss(const grammar::RawDeck& deck, const grammar::Block& block, Li
 
 bool is_bulk_block(const grammar::Block& block, bool radioss) {
     if (!radioss) return only_repeated_card(block);
-    static constexpr std::string_view kBulk[] = {"/NODE", "/SPHCEL", "/BRICK", "/SHELL", "/SH3N", "/TETRA4",
-                                                 "/TETRA10", "/BEAM", "/SPRING", "/TRUSS", "/INISPHCEL"};
+    static constexpr std::string_view kBulk[] = {"/NODE",    "/SPHCEL", "/BRICK",  "/SHELL", "/SH3N",     "/TETRA4",
+                                                 "/TETRA10", "/BEAM",   "/SPRING", "/TRUSS", "/INISPHCEL"};
     return std::any_of(std::begin(kBulk), std::end(kBulk), [&](std::string_view name) {
         return block.keyword.rfind(name, 0) == 0 &&
                (block.keyword.size() == name.size() || block.keyword[name.size()] == '/');
     });
 }
 
-std::vector<const grammar::Block*> blocks_in_range(const grammar::RawDeck& deck, grammar::FileId file, LineRange range) {
+std::vector<const grammar::Block*> blocks_in_range(const grammar::RawDeck& deck, grammar::FileId file,
+                                                   LineRange range) {
     std::vector<const grammar::Block*> out;
     for (const grammar::Block& block : deck.blocks) {
         if (block.span.file != file || block.span.line > range.last) continue;

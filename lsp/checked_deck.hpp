@@ -13,8 +13,8 @@
 namespace sphdeck::lsp {
 
 struct CheckedDeck {
-    std::filesystem::path main;   // the deck's main file, keyed like engine::Documents::key
-    engine::CheckResult result;   // raw deck, model, findings, include graph
+    std::filesystem::path main;  // the deck's main file, keyed like engine::Documents::key
+    engine::CheckResult result;  // raw deck, model, findings, include graph
 };
 
 // The first file instance of the deck read from `path` (compared by engine::Documents::key), or

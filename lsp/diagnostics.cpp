@@ -34,8 +34,9 @@ nlohmann::json lsp_diagnostic(const diag::Diagnostic& d, const grammar::SourceMa
     nlohmann::json related = nlohmann::json::array();
     for (const diag::Note& note : d.notes) {
         if (located(note.span, sources)) {
-            related.push_back({{"location", {{"uri", uri_of_file(note.span.file)}, {"range", range_json(sources, note.span)}}},
-                               {"message", note.message}});
+            related.push_back(
+                {{"location", {{"uri", uri_of_file(note.span.file)}, {"range", range_json(sources, note.span)}}},
+                 {"message", note.message}});
         } else {
             message += "\nnote: " + note.message;  // what `check` prints as "= note: ..."
         }

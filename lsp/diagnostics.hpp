@@ -21,7 +21,7 @@ namespace sphdeck::lsp {
 using UriOf = std::function<std::string(const std::filesystem::path& key, const std::string& path)>;
 
 struct FileFindings {
-    std::string path;                              // as the reader opened it
+    std::string path;                                      // as the reader opened it
     nlohmann::json diagnostics = nlohmann::json::array();  // Diagnostic[]
 };
 

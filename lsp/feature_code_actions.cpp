@@ -30,7 +30,8 @@ nlohmann::json position(std::uint32_t line, std::uint32_t character) {
 
 nlohmann::json text_edit(std::uint32_t line, std::uint32_t start, std::uint32_t end_line, std::uint32_t end,
                          std::string text) {
-    return {{"range", {{"start", position(line, start)}, {"end", position(end_line, end)}}}, {"newText", std::move(text)}};
+    return {{"range", {{"start", position(line, start)}, {"end", position(end_line, end)}}},
+            {"newText", std::move(text)}};
 }
 
 struct Request {

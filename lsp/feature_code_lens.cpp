@@ -55,7 +55,8 @@ nlohmann::json code_lenses(const CheckedDeck& deck, grammar::FileId file, const 
         std::size_t on_particles = 0;
         if (d.kind == "PART") {
             try {
-                if (auto found = particles.find(std::stoll(d.id)); found != particles.end()) on_particles = found->second;
+                if (auto found = particles.find(std::stoll(d.id)); found != particles.end())
+                    on_particles = found->second;
             } catch (const std::exception&) {  // a label: no particle names it
             }
         }
@@ -76,7 +77,8 @@ nlohmann::json code_lenses(const CheckedDeck& deck, grammar::FileId file, const 
                 for (std::size_t i = 0; i < defined.size(); ++i) counts[i] += same_name(r.name, defined[i]->name);
         }
     }
-    for (std::size_t i = 0; i < defined.size(); ++i) out.push_back(lens(sources, defined[i]->span, used_by(counts[i], 0)));
+    for (std::size_t i = 0; i < defined.size(); ++i)
+        out.push_back(lens(sources, defined[i]->span, used_by(counts[i], 0)));
     return out;
 }
 

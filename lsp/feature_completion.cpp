@@ -32,7 +32,7 @@ constexpr int kReference = 18;
 constexpr int kValue = 12;
 
 struct Edit {
-    std::uint32_t line = 0;       // 0-based
+    std::uint32_t line = 0;            // 0-based
     std::uint32_t start = 0, end = 0;  // UTF-16 characters
 };
 
@@ -90,9 +90,11 @@ nlohmann::json keyword_items(std::string_view typed, const Edit& edit) {
 nlohmann::json radioss_keyword_items(std::string_view typed, const Edit& edit) {
     nlohmann::json items = nlohmann::json::array();
     for (const auto& k : rad::all_keywords()) {
-        if (starts_with_upper(k.name, typed)) items.push_back(item(std::string(k.name), kKeyword, std::string(k.summary), edit));
+        if (starts_with_upper(k.name, typed))
+            items.push_back(item(std::string(k.name), kKeyword, std::string(k.summary), edit));
         for (auto alias : k.aliases)
-            if (starts_with_upper(alias, typed)) items.push_back(item(std::string(alias), kKeyword, std::string(k.summary), edit));
+            if (starts_with_upper(alias, typed))
+                items.push_back(item(std::string(alias), kKeyword, std::string(k.summary), edit));
     }
     // The other keywords of the starter's CFG files (grammar/radioss/generated/), after the tables'.
     std::size_t generated = 0;
@@ -157,8 +159,8 @@ std::optional<std::size_t> typed_field(const keywords::CardSpec& card, grammar::
     return std::nullopt;
 }
 
-nlohmann::json field_items(const CheckedDeck& deck, const grammar::Block& block, std::uint32_t line,
-                           std::uint32_t byte, const Edit& edit) {
+nlohmann::json field_items(const CheckedDeck& deck, const grammar::Block& block, std::uint32_t line, std::uint32_t byte,
+                           const Edit& edit) {
     const auto& raw = deck.result.deck;
     const grammar::CardLine* card_line = card_line_at(raw, block, line);
     const keywords::CardSpec* card = nullptr;
@@ -192,7 +194,8 @@ nlohmann::json field_items(const CheckedDeck& deck, const grammar::Block& block,
         choice["sortText"] = fmt::format("{:05}", items.size());
         items.push_back(std::move(choice));
     }
-    for (auto word : field.text_choices) items.push_back(item(std::string(word), kValue, std::string(field.name), edit));
+    for (auto word : field.text_choices)
+        items.push_back(item(std::string(word), kValue, std::string(field.name), edit));
     if (auto role = dyna_id_role(match->schema->name, field); role && !role->defines)
         id_items(deck, role->kind, edit, items);
     return list(std::move(items), false);

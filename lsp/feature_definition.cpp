@@ -38,7 +38,8 @@ nlohmann::json definition(const CheckedDeck& deck, grammar::FileId file, TextPos
                 {"range", {{"start", {{"line", 0}, {"character", 0}}}, {"end", {{"line", 0}, {"character", 0}}}}}};
     if (auto reference = parameter_reference_at(sources, file, at.line, at.column)) {
         const grammar::Block* block = block_at(raw, file, at.line);
-        auto found = raw.parameters.find(reference->name, file, block ? block->parameter_epoch : raw.parameters.epoch());
+        auto found =
+            raw.parameters.find(reference->name, file, block ? block->parameter_epoch : raw.parameters.epoch());
         if (!found.parameter) found = raw.parameters.find(reference->name, file, raw.parameters.epoch());
         if (!found.parameter) return nullptr;
         return location(sources, found.parameter->span);
@@ -86,7 +87,8 @@ nlohmann::json references(const CheckedDeck& deck, grammar::FileId file, TextPos
             out.push_back(location(sources, u.span));
     // Nodes are defined in the bulk *NODE blocks, which the walk of the deck leaves out.
     if (include_declaration && use->kind == "NODE")
-        for (const auto& d : find_definitions(deck.result, use->kind, use->id)) out.push_back(location(sources, d.span));
+        for (const auto& d : find_definitions(deck.result, use->kind, use->id))
+            out.push_back(location(sources, d.span));
     for (const auto& span : particle_spans(deck.result, use->kind, use->id, kMaxParticleReferences))
         out.push_back(location(sources, span));
     return out;

@@ -86,8 +86,9 @@ nlohmann::json feature_capabilities() {
     capabilities["documentLinkProvider"] = {{"resolveProvider", false}};
     capabilities["codeLensProvider"] = {{"resolveProvider", false}};
     capabilities["workspaceSymbolProvider"] = true;  // answered by the server across decks (workspace_symbols)
-    capabilities["semanticTokensProvider"] = {
-        {"legend", semantic_tokens_legend()}, {"range", true}, {"full", {{"delta", true}}}};
+    capabilities["semanticTokensProvider"] = {{"legend", semantic_tokens_legend()},
+                                              {"range", true},
+                                              {"full", {{"delta", true}}}};
     return capabilities;
 }
 

@@ -30,7 +30,8 @@ constexpr std::size_t kMaxChoices = 24;  // enum values listed in a hover; the r
 std::string number(double v) { return fmt::format("{:g}", v); }
 
 nlohmann::json hover_json(std::string markdown, const grammar::SourceMap& sources, const grammar::Span& span) {
-    return {{"contents", {{"kind", "markdown"}, {"value", display_text(markdown)}}}, {"range", range_json(sources, span)}};
+    return {{"contents", {{"kind", "markdown"}, {"value", display_text(markdown)}}},
+            {"range", range_json(sources, span)}};
 }
 
 std::string default_text(const FieldSpec& f) {
@@ -60,7 +61,8 @@ std::string effective_value(const model::FieldValue& v) {
         grammar::parse_real(v.text).status == grammar::NumberStatus::Ok && grammar::parse_real(v.text).value == 0.0)
         return fmt::format("{} (default: 0 means the default)", value);
     // No conversion of a value outside long long (1e20 in FORM: undefined behaviour, issue 32).
-    if (const std::optional<long long> n = grammar::checked_integer<long long>(v.number); n && v.number == std::trunc(v.number))
+    if (const std::optional<long long> n = grammar::checked_integer<long long>(v.number);
+        n && v.number == std::trunc(v.number))
         if (const auto* choice = f.choice(*n)) value += fmt::format(": {}", choice->meaning);
     return value;
 }
@@ -75,7 +77,8 @@ std::string allowed_text(const FieldSpec& f) {
                 out += fmt::format("\n- ... {} more", f.choices.size() - kMaxChoices);
                 break;
             }
-            out += fmt::format("\n- `{}`: {}{}", c.value, c.meaning, c.since.empty() ? "" : fmt::format(" (since {})", c.since));
+            out += fmt::format("\n- `{}`: {}{}", c.value, c.meaning,
+                               c.since.empty() ? "" : fmt::format(" (since {})", c.since));
         }
     } else if (!f.text_choices.empty()) {
         out += fmt::format("\n\nallowed values: {}", fmt::join(f.text_choices, ", "));
@@ -91,7 +94,8 @@ std::string id_text_of(const CheckedDeck& deck, const std::optional<IdRole>& rol
     if (role->defines) return fmt::format("\n\ndefines {} {}", role->kind, id);
     const auto definitions = find_definitions(deck.result, role->kind, id);
     if (definitions.empty()) return fmt::format("\n\nnames {} {}, which the deck does not define", role->kind, id);
-    return fmt::format("\n\nnames {} {}: `{}`", role->kind, id, display_text(describe(deck.result, definitions.front())));
+    return fmt::format("\n\nnames {} {}: `{}`", role->kind, id,
+                       display_text(describe(deck.result, definitions.front())));
 }
 
 // The cards of a keyword and their fields, one line a card ("Card 1: NCBS, BOXID, DT..."), up to
@@ -118,7 +122,8 @@ nlohmann::json dyna_keyword_hover(const CheckedDeck& deck, const grammar::Block&
     auto match = keywords::find_keyword(block.keyword);
     if (!match || !match->unknown_options.empty()) {
         std::string text = fmt::format("`{}`: unknown keyword (LS-DYNA stops at it), not checked", block.keyword);
-        if (auto better = keywords::suggest_keyword(block.keyword)) text += fmt::format("; did you mean `{}`?", *better);
+        if (auto better = keywords::suggest_keyword(block.keyword))
+            text += fmt::format("; did you mean `{}`?", *better);
         return hover_json(std::move(text), sources, block.span);
     }
     const auto& schema = *match->schema;
@@ -129,7 +134,8 @@ nlohmann::json dyna_keyword_hover(const CheckedDeck& deck, const grammar::Block&
         if (!option->doc.empty()) text += fmt::format("\n- `_{}`: {}", option->suffix, option->doc);
     if (schema.unique) text += "\n\nat most once per deck";
     text += card_overview(*match);
-    if (block.format != grammar::CardFormat::Standard) text += fmt::format("\n\ncards in {} format", to_string(block.format));
+    if (block.format != grammar::CardFormat::Standard)
+        text += fmt::format("\n\ncards in {} format", to_string(block.format));
     return hover_json(std::move(text), sources, block.span);
 }
 
@@ -159,7 +165,6 @@ nlohmann::json dyna_field_hover(const CheckedDeck& deck, const grammar::Block& b
     }
     return hover_json(std::move(text), raw.sources, span);
 }
-
 
 nlohmann::json radioss_hover(const CheckedDeck& deck, const grammar::Block& block, std::uint32_t line,
                              std::uint32_t column) {
@@ -197,7 +202,8 @@ nlohmann::json radioss_hover(const CheckedDeck& deck, const grammar::Block& bloc
     if (!card->engine && !grammar::is_free_format(raw.text(*card_line))) {
         const auto cells = rad::layout(*card->card, card->version);
         columns = fmt::format(", columns {}-{}", cells[*index].start + 1, cells[*index].start + cells[*index].width);
-        if (!v.explicit_value) span.column = cells[*index].start + 1, span.end_column = span.column + cells[*index].width;
+        if (!v.explicit_value)
+            span.column = cells[*index].start + 1, span.end_column = span.column + cells[*index].width;
     }
     std::string text = fmt::format("**{}** (`{}`, format {}): {}{}", v.spec->name, spec->name,
                                    spec->format_for(card->version).since, rad::cell_kind_name(v.spec->cell), columns);
@@ -228,8 +234,10 @@ nlohmann::json hover(const CheckedDeck& deck, grammar::FileId file, TextPosition
     const LineColumn at = line_column(raw.sources, file, position);
     if (auto child = included_file(raw.sources, file, at.line)) {
         const auto& f = raw.sources.file(*child);
-        const grammar::Span span{file, at.line, 1, static_cast<std::uint32_t>(raw.sources.line_text(file, at.line).size()) + 1};
-        return hover_json(fmt::format("includes `{}` ({} lines)", f.path, raw.sources.line_count(*child)), raw.sources, span);
+        const grammar::Span span{file, at.line, 1,
+                                 static_cast<std::uint32_t>(raw.sources.line_text(file, at.line).size()) + 1};
+        return hover_json(fmt::format("includes `{}` ({} lines)", f.path, raw.sources.line_count(*child)), raw.sources,
+                          span);
     }
     const grammar::Block* block = block_at(raw, file, at.line);
     if (!block) return nullptr;

@@ -70,7 +70,8 @@ public:
             const model::FieldValue& v = card.values[i];
             if (!v.spec || v.spec->type == keywords::FieldType::Unused) continue;
             if (v.explicit_value) {
-                add(line.line, v.span.column, fmt::format("{}:", v.spec->name), kHintParameter, false, false, v.spec->doc);
+                add(line.line, v.span.column, fmt::format("{}:", v.spec->name), kHintParameter, false, false,
+                    v.spec->doc);
                 if (settings_.parameter_values && !v.text.empty() && v.text[0] == '&')
                     parameter_value(block, line.line, v);
                 continue;
@@ -106,7 +107,8 @@ private:
         const auto found = raw_.parameters.find(name, file_, block.parameter_epoch);
         if (!found.parameter) return;
         const grammar::Parameter& p = *found.parameter;
-        std::string value = p.type == grammar::ParameterType::Character ? fmt::format("\"{}\"", p.text) : number(p.number);
+        std::string value =
+            p.type == grammar::ParameterType::Character ? fmt::format("\"{}\"", p.text) : number(p.number);
         add(line, v.span.end_column, "= " + value, kHintType, true, false,
             fmt::format("*PARAMETER line {}", p.span.line));
     }

@@ -34,7 +34,8 @@ nlohmann::json rename(const CheckedDeck& deck, grammar::FileId file, const nlohm
     auto target = engine::rename_target_at(deck.result, file, at.line, at.column, &refusal);
     if (!target)
         throw FeatureError{error_code::request_failed,
-                           refusal.empty() ? "nothing to rename here: put the cursor on an id or a &parameter" : refusal};
+                           refusal.empty() ? "nothing to rename here: put the cursor on an id or a &parameter"
+                                           : refusal};
     const engine::RenamePlan plan = engine::plan_rename(deck.result, *target, name->get<std::string>());
     if (!plan.refusal.empty()) throw FeatureError{error_code::request_failed, "cannot rename: " + plan.refusal};
     nlohmann::json changes = nlohmann::json::object();

@@ -14,7 +14,8 @@ namespace {
 constexpr std::uint32_t kFullRequestLines = 100000;
 constexpr std::uint32_t kBigBlock = 1000;
 
-nlohmann::json encode(const grammar::SourceMap& sources, grammar::FileId file, const std::vector<SemanticToken>& tokens) {
+nlohmann::json encode(const grammar::SourceMap& sources, grammar::FileId file,
+                      const std::vector<SemanticToken>& tokens) {
     std::vector<std::uint32_t> data;
     data.reserve(tokens.size() * 5);
     std::uint32_t previous_line = 0, previous_start = 0;  // 0-based
@@ -59,7 +60,8 @@ nlohmann::json semantic_tokens_delta(const CheckedDeck& deck, grammar::FileId fi
     nlohmann::json tokens = whole_file(deck, file);
     // Unchanged since the id the client holds: an empty delta; otherwise the whole set (LSP allows
     // answering a delta request with SemanticTokens).
-    if (params.is_object() && params.value("previousResultId", std::string()) == tokens.value("resultId", std::string()))
+    if (params.is_object() &&
+        params.value("previousResultId", std::string()) == tokens.value("resultId", std::string()))
         return {{"resultId", tokens["resultId"]}, {"edits", nlohmann::json::array()}};
     return tokens;
 }

@@ -22,7 +22,8 @@ struct Parameter {
     std::string documentation;
 };
 
-nlohmann::json signature(std::string title, const std::vector<Parameter>& parameters, std::optional<std::size_t> active) {
+nlohmann::json signature(std::string title, const std::vector<Parameter>& parameters,
+                         std::optional<std::size_t> active) {
     std::string label = title + ":";
     nlohmann::json params = nlohmann::json::array();
     for (const Parameter& p : parameters) {

@@ -26,7 +26,7 @@ nlohmann::json line_range(const grammar::SourceMap& sources, grammar::FileId fil
 // The model's sections, materials, EOS and parts of one file by the line of their id field, so
 // each block finds its own with a lookup (decks of thousands of parts have thousands of blocks).
 struct FileItems {
-    std::map<std::uint32_t, std::string> ids;            // line -> "id 3"
+    std::map<std::uint32_t, std::string> ids;                // line -> "id 3"
     std::multimap<std::uint32_t, const model::Part*> parts;  // line -> part
 
     FileItems(const model::Model& m, grammar::FileId file) {
@@ -49,7 +49,8 @@ nlohmann::json dyna_symbol(const CheckedDeck& deck, const grammar::Block& block,
                              {"range", line_range(raw.sources, block.span.file, block.span.line, last)},
                              {"selectionRange", range_json(raw.sources, block.span)}};
     std::string detail;
-    if (auto id = items.ids.lower_bound(block.span.line); id != items.ids.end() && id->first <= last) detail = id->second;
+    if (auto id = items.ids.lower_bound(block.span.line); id != items.ids.end() && id->first <= last)
+        detail = id->second;
     if (block.keyword.rfind("*PART", 0) == 0) {
         nlohmann::json children = nlohmann::json::array();
         for (auto it = items.parts.lower_bound(block.span.line); it != items.parts.end() && it->first <= last; ++it) {
@@ -62,8 +63,8 @@ nlohmann::json dyna_symbol(const CheckedDeck& deck, const grammar::Block& block,
                                 {"range", line_range(raw.sources, block.span.file, first, part.span.line)},
                                 {"selectionRange", range_json(raw.sources, part.span)}});
         }
-        if (children.size() == 1) detail = children[0]["name"].get<std::string>() + " " +
-                                           children[0]["detail"].get<std::string>();
+        if (children.size() == 1)
+            detail = children[0]["name"].get<std::string>() + " " + children[0]["detail"].get<std::string>();
         if (!children.empty()) symbol["children"] = std::move(children);
     }
     if (!detail.empty()) symbol["detail"] = display_text(detail);

@@ -38,13 +38,20 @@ bool append_checked(std::string_view raw, std::string& out) {
             return p + i < end && p[i] >= low && p[i] <= high;
         };
         std::size_t length = 0;
-        if (c >= 0xC2 && c <= 0xDF) length = continuation(1) ? 2 : 0;
-        else if (c == 0xE0) length = continuation(1, 0xA0) && continuation(2) ? 3 : 0;
-        else if ((c >= 0xE1 && c <= 0xEC) || c == 0xEE || c == 0xEF) length = continuation(1) && continuation(2) ? 3 : 0;
-        else if (c == 0xED) length = continuation(1, 0x80, 0x9F) && continuation(2) ? 3 : 0;
-        else if (c == 0xF0) length = continuation(1, 0x90) && continuation(2) && continuation(3) ? 4 : 0;
-        else if (c >= 0xF1 && c <= 0xF3) length = continuation(1) && continuation(2) && continuation(3) ? 4 : 0;
-        else if (c == 0xF4) length = continuation(1, 0x80, 0x8F) && continuation(2) && continuation(3) ? 4 : 0;
+        if (c >= 0xC2 && c <= 0xDF)
+            length = continuation(1) ? 2 : 0;
+        else if (c == 0xE0)
+            length = continuation(1, 0xA0) && continuation(2) ? 3 : 0;
+        else if ((c >= 0xE1 && c <= 0xEC) || c == 0xEE || c == 0xEF)
+            length = continuation(1) && continuation(2) ? 3 : 0;
+        else if (c == 0xED)
+            length = continuation(1, 0x80, 0x9F) && continuation(2) ? 3 : 0;
+        else if (c == 0xF0)
+            length = continuation(1, 0x90) && continuation(2) && continuation(3) ? 4 : 0;
+        else if (c >= 0xF1 && c <= 0xF3)
+            length = continuation(1) && continuation(2) && continuation(3) ? 4 : 0;
+        else if (c == 0xF4)
+            length = continuation(1, 0x80, 0x8F) && continuation(2) && continuation(3) ? 4 : 0;
         if (length == 0) return false;
         p += length;
     }
@@ -58,7 +65,8 @@ bool decode(std::string_view raw, std::string& out) {
     std::size_t at = 0;
     while (at < raw.size()) {
         const void* found = std::memchr(raw.data() + at, '\\', raw.size() - at);
-        const std::size_t escape = found ? static_cast<std::size_t>(static_cast<const char*>(found) - raw.data()) : raw.size();
+        const std::size_t escape =
+            found ? static_cast<std::size_t>(static_cast<const char*>(found) - raw.data()) : raw.size();
         if (!append_checked(raw.substr(at, escape - at), out)) return false;
         if (escape == raw.size()) break;
         if (escape + 1 >= raw.size()) return false;
@@ -83,7 +91,8 @@ bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; 
 void restore(nlohmann::json& value, std::vector<std::string>& strings, std::vector<bool>& restored, bool& ok) {
     if (value.is_string()) {
         const std::string& text = value.get_ref<const std::string&>();
-        if (text.size() <= kParsedPlaceholder.size() || text.compare(0, kParsedPlaceholder.size(), kParsedPlaceholder) != 0)
+        if (text.size() <= kParsedPlaceholder.size() ||
+            text.compare(0, kParsedPlaceholder.size(), kParsedPlaceholder) != 0)
             return;
         std::size_t index = 0;
         for (std::size_t i = kParsedPlaceholder.size(); i < text.size(); ++i) {

@@ -48,9 +48,12 @@ bool nesting_within(std::string_view text, int bound) {
     bool in_string = false, escaped = false;
     for (char c : text) {
         if (in_string) {
-            if (escaped) escaped = false;
-            else if (c == '\\') escaped = true;
-            else if (c == '"') in_string = false;
+            if (escaped)
+                escaped = false;
+            else if (c == '\\')
+                escaped = true;
+            else if (c == '"')
+                in_string = false;
         } else if (c == '"') {
             in_string = true;
         } else if (c == '[' || c == '{') {
@@ -68,9 +71,9 @@ int MessageReader::get() {
     std::streambuf* buf = in_.rdbuf();
     if (!buf) return -1;
     const auto c = buf->sbumpc();
-    return std::char_traits<char>::eq_int_type(c, std::char_traits<char>::eof()) ? -1
-                                                                                 : std::char_traits<char>::to_int_type(
-                                                                                       static_cast<char>(c));
+    return std::char_traits<char>::eq_int_type(c, std::char_traits<char>::eof())
+               ? -1
+               : std::char_traits<char>::to_int_type(static_cast<char>(c));
 }
 
 bool MessageReader::more_available() {
@@ -179,7 +182,8 @@ ReadResult MessageReader::next() {
         if (*length > max_body_) {
             discard(*length);
             return {ReadStatus::too_large, nullptr,
-                    "message of " + std::to_string(*length) + " bytes skipped (bound " + std::to_string(max_body_) + ")"};
+                    "message of " + std::to_string(*length) + " bytes skipped (bound " + std::to_string(max_body_) +
+                        ")"};
         }
         std::string body;
         if (!read_body(*length, body)) return {ReadStatus::end, nullptr, "the stream ended inside a message"};

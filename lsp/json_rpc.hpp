@@ -37,17 +37,17 @@ inline constexpr std::size_t default_max_body = std::size_t{1} << 30;
 
 // What one read gives.
 enum class ReadStatus {
-    message,       // `message` holds a JSON object
-    parse_error,   // the body is not JSON (answer -32700, id null)
-    too_large,     // the body was above the bound and was skipped
-    bad_header,    // a header block without a usable Content-Length (skipped)
-    end,           // the stream ended (possibly inside a message)
+    message,      // `message` holds a JSON object
+    parse_error,  // the body is not JSON (answer -32700, id null)
+    too_large,    // the body was above the bound and was skipped
+    bad_header,   // a header block without a usable Content-Length (skipped)
+    end,          // the stream ended (possibly inside a message)
 };
 
 struct ReadResult {
     ReadStatus status = ReadStatus::end;
     nlohmann::json message;
-    std::string error;  // what was wrong, for the log
+    std::string error;      // what was wrong, for the log
     std::size_t bytes = 0;  // the body's length (what holding the message costs)
 };
 

@@ -31,9 +31,14 @@ std::pair<std::size_t, std::size_t> trimmed(std::string_view text, std::size_t f
 class Collector {
 public:
     Collector(const CheckedDeck& deck, grammar::FileId file, LineRange range)
-        : deck_(deck), raw_(deck.result.deck), file_(file), range_(range), radioss_(deck.result.model.radioss.has_value()) {}
+        : deck_(deck),
+          raw_(deck.result.deck),
+          file_(file),
+          range_(range),
+          radioss_(deck.result.model.radioss.has_value()) {}
 
-    void add(std::uint32_t line, std::uint32_t column, std::uint32_t length, TokenType type, std::uint32_t modifiers = 0) {
+    void add(std::uint32_t line, std::uint32_t column, std::uint32_t length, TokenType type,
+             std::uint32_t modifiers = 0) {
         if (length == 0 || !range_.holds(line)) return;
         tokens_.push_back({line, column, length, type, modifiers});
     }
@@ -52,8 +57,8 @@ public:
             if (radioss_ && starts_with_nocase(text, "#include")) continue;  // an include line: includes()
             if (c == '$' || (radioss_ && c == '#')) {
                 const auto [begin, end] = trimmed(text);
-                add(line, static_cast<std::uint32_t>(begin) + 1, static_cast<std::uint32_t>(end - begin), TokenType::Comment,
-                    text.size() > 1 && text[1] == '#' && c == '$' ? kHeader : 0);
+                add(line, static_cast<std::uint32_t>(begin) + 1, static_cast<std::uint32_t>(end - begin),
+                    TokenType::Comment, text.size() > 1 && text[1] == '#' && c == '$' ? kHeader : 0);
             }
         }
     }
@@ -123,7 +128,8 @@ private:
     void radioss_line(const grammar::CardLine& line, const RadiossCard& card) {
         if (card.title) {
             const auto [begin, end] = trimmed(raw_.text(line));
-            add(line.line, static_cast<std::uint32_t>(begin) + 1, static_cast<std::uint32_t>(end - begin), TokenType::String);
+            add(line.line, static_cast<std::uint32_t>(begin) + 1, static_cast<std::uint32_t>(end - begin),
+                TokenType::String);
             return;
         }
         for (std::size_t i = 0; i < card.values.size(); ++i) {

@@ -18,8 +18,8 @@ namespace sphdeck::lsp {
 // The legend, in the order of the numbers sent (the server's capabilities announce it). "real" is
 // sphdeck's own type (VS Code: superType number); the rest are LSP's standard names.
 enum class TokenType : std::uint8_t { Keyword, Comment, String, Number, Real, Variable, EnumMember, Parameter };
-inline constexpr std::array<std::string_view, 8> kTokenTypes = {"keyword",  "comment",    "string",   "number",
-                                                                 "real",     "variable",   "enumMember", "parameter"};
+inline constexpr std::array<std::string_view, 8> kTokenTypes = {"keyword", "comment",  "string",     "number",
+                                                                "real",    "variable", "enumMember", "parameter"};
 // Modifier bits: declaration (an id or parameter defined here), oddField (the 2nd, 4th... field of
 // its card), header (a `$#` column-header comment), include (an include file name).
 inline constexpr std::uint32_t kDeclaration = 1, kOddField = 2, kHeader = 4, kInclude = 8;

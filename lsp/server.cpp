@@ -19,13 +19,24 @@ struct RpcError {
 };
 
 // The document requests the features answer; with no deck reading the file their answer is null.
-constexpr std::array<std::string_view, 18> kDocumentFeatures = {
-    "textDocument/hover",          "textDocument/definition",   "textDocument/references",
-    "textDocument/completion",     "textDocument/documentSymbol", "textDocument/foldingRange",
-    "textDocument/codeAction",     "textDocument/semanticTokens/full", "textDocument/semanticTokens/full/delta",
-    "textDocument/semanticTokens/range", "textDocument/inlayHint", "textDocument/signatureHelp",
-    "textDocument/formatting",     "textDocument/rangeFormatting", "textDocument/prepareRename",
-    "textDocument/rename",         "textDocument/documentLink", "textDocument/codeLens"};
+constexpr std::array<std::string_view, 18> kDocumentFeatures = {"textDocument/hover",
+                                                                "textDocument/definition",
+                                                                "textDocument/references",
+                                                                "textDocument/completion",
+                                                                "textDocument/documentSymbol",
+                                                                "textDocument/foldingRange",
+                                                                "textDocument/codeAction",
+                                                                "textDocument/semanticTokens/full",
+                                                                "textDocument/semanticTokens/full/delta",
+                                                                "textDocument/semanticTokens/range",
+                                                                "textDocument/inlayHint",
+                                                                "textDocument/signatureHelp",
+                                                                "textDocument/formatting",
+                                                                "textDocument/rangeFormatting",
+                                                                "textDocument/prepareRename",
+                                                                "textDocument/rename",
+                                                                "textDocument/documentLink",
+                                                                "textDocument/codeLens"};
 
 // The "inlayHints" object of initializationOptions or of didChangeConfiguration's settings, also
 // under a "sphdeck" section; null when there is none.
@@ -62,10 +73,9 @@ bool is_cancel(const ReadResult& read) {
 }  // namespace
 
 Server::Server(std::istream& in, std::ostream& out, ServerOptions options)
-    : reader_(in, options.max_body),
-      out_(out),
-      options_(options),
-      workspace_([this](const nlohmann::json& params) { send(notification("textDocument/publishDiagnostics", params)); }) {}
+    : reader_(in, options.max_body), out_(out), options_(options), workspace_([this](const nlohmann::json& params) {
+          send(notification("textDocument/publishDiagnostics", params));
+      }) {}
 
 void Server::send(const nlohmann::json& message) { write_message(out_, message); }
 
@@ -121,17 +131,16 @@ void Server::handle(ReadResult& read) {
             // No id to answer, and it may have been a didOpen: say so where the user looks.
             log(read.error);
             send(notification("window/showMessage",
-                              {{"type", 1}, {"message", "sphdeck: " + read.error +
-                                                            "; a deck this big is not checked in the editor: run "
-                                                            "`sphdeck check` on it"}}));
+                              {{"type", 1},
+                               {"message", "sphdeck: " + read.error +
+                                               "; a deck this big is not checked in the editor: run "
+                                               "`sphdeck check` on it"}}));
             return;
         case ReadStatus::bad_header:
             log(read.error);  // no id to answer: skipped
             return;
-        case ReadStatus::end:
-            return;
-        case ReadStatus::message:
-            break;
+        case ReadStatus::end: return;
+        case ReadStatus::message: break;
     }
     const nlohmann::json& message = read.message;
     if (!message.is_object()) {
@@ -217,8 +226,9 @@ void Server::handle_notification(const std::string& method, nlohmann::json& para
             understood = document && changes && workspace_.change(uri, version_of(*document), *changes);
         } else if (method == "textDocument/didSave") {
             const nlohmann::json* text = member(params, "text");
-            understood = workspace_.save(uri, text && text->is_string() ? std::optional<std::string>(text->get<std::string>())
-                                                                         : std::nullopt);
+            understood =
+                workspace_.save(uri, text && text->is_string() ? std::optional<std::string>(text->get<std::string>())
+                                                               : std::nullopt);
         } else if (method == "textDocument/didClose") {
             understood = workspace_.close(uri);
         } else if (method == "workspace/didChangeWatchedFiles") {
@@ -269,7 +279,8 @@ nlohmann::json Server::initialize(const nlohmann::json& params) {
     nlohmann::json capabilities = feature_capabilities();
     capabilities["positionEncoding"] = "utf-16";
     capabilities["textDocumentSync"] = {{"openClose", true}, {"change", 2}, {"save", {{"includeText", false}}}};
-    return {{"capabilities", std::move(capabilities)}, {"serverInfo", {{"name", "sphdeck"}, {"version", SPHDECK_VERSION}}}};
+    return {{"capabilities", std::move(capabilities)},
+            {"serverInfo", {{"name", "sphdeck"}, {"version", SPHDECK_VERSION}}}};
 }
 
 nlohmann::json Server::document_request(const std::string& method, const nlohmann::json& params) {
@@ -277,7 +288,8 @@ nlohmann::json Server::document_request(const std::string& method, const nlohman
     const std::string uri = document ? string_member(*document, "uri") : std::string();
     if (uri.empty()) throw RpcError{error_code::invalid_params, "textDocument.uri is missing"};
     workspace_.flush();  // answers read the buffers as they are now
-    const bool feature = std::find(kDocumentFeatures.begin(), kDocumentFeatures.end(), method) != kDocumentFeatures.end();
+    const bool feature =
+        std::find(kDocumentFeatures.begin(), kDocumentFeatures.end(), method) != kDocumentFeatures.end();
     const std::filesystem::path path = path_from_uri(uri);
     const auto located = path.empty() ? std::nullopt : workspace_.locate(path);
     if (located) {

@@ -50,8 +50,8 @@ private:
     Workspace workspace_;
     bool initialized_ = false, shut_down_ = false, exited_ = false;
     nlohmann::json inlay_settings_ = nlohmann::json::object();  // the client's "inlayHints" settings
-    bool watch_dynamically_ = false;  // the client registers file watchers on request
-    std::set<std::string> cancelled_;  // ids (dumped) of waiting requests the client cancelled
+    bool watch_dynamically_ = false;                            // the client registers file watchers on request
+    std::set<std::string> cancelled_;                           // ids (dumped) of waiting requests the client cancelled
 };
 
 }  // namespace sphdeck::lsp

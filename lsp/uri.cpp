@@ -17,8 +17,8 @@ int hex_value(char c) {
 // sub-delimiters clients leave alone.
 bool keeps(unsigned char c) {
     return std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~' || c == '/' || c == '!' || c == '$' ||
-           c == '&' || c == '\'' || c == '(' || c == ')' || c == '*' || c == '+' || c == ',' || c == ';' ||
-           c == '=' || c == '@';
+           c == '&' || c == '\'' || c == '(' || c == ')' || c == '*' || c == '+' || c == ',' || c == ';' || c == '=' ||
+           c == '@';
 }
 }  // namespace
 

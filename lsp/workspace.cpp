@@ -80,8 +80,10 @@ bool Workspace::change(const std::string& uri, std::int64_t version, const nlohm
     bool all_applied = true;
     for (const nlohmann::json& change : content_changes) {
         auto next = changed_text(text ? std::string_view(*text) : std::string_view(*current), change);
-        if (next) text = std::move(next);
-        else all_applied = false;
+        if (next)
+            text = std::move(next);
+        else
+            all_applied = false;
     }
     if (text) documents_.set(key, std::move(*text));
     document->second.version = version;
@@ -141,9 +143,8 @@ Workspace::Deck Workspace::check(const fs::path& main, const engine::CheckResult
         if (!text || !blank(*text)) findings.diagnostics.push_back(unreadable(e.what()));
         return out;
     }
-    out.findings = findings_by_file(out.checked.result, [this](const fs::path& key, const std::string& path) {
-        return uri_of(key, path);
-    });
+    out.findings = findings_by_file(out.checked.result,
+                                    [this](const fs::path& key, const std::string& path) { return uri_of(key, path); });
     if (settings.error) {
         FileFindings& findings = out.findings[main];
         if (findings.path.empty()) findings.path = main.string();
@@ -155,7 +156,7 @@ Workspace::Deck Workspace::check(const fs::path& main, const engine::CheckResult
 std::optional<Workspace::Deck> Workspace::check_in_context(const fs::path& include, const fs::path& known_main,
                                                            const engine::CheckResult* previous) const {
     DeckSettings settings = settings_for(include, roots_);
-    if (settings.error) return std::nullopt;  // checked on its own, which reports the bad settings
+    if (settings.error) return std::nullopt;     // checked on its own, which reports the bad settings
     settings.options.rules.keep_preview = true;  // for the next re-check
     const ThreadsForDeck threads(deck_bytes(known_main.empty() ? include : known_main, documents_, previous));
     engine::CheckResult result;
@@ -266,7 +267,8 @@ void Workspace::publish(const std::set<fs::path>& files) {
             params["uri"] = previous != published_.end() ? previous->second : uri_of(key, key.string());
             published_.erase(key);
         }
-        if (const auto document = open_.find(key); document != open_.end()) params["version"] = document->second.version;
+        if (const auto document = open_.find(key); document != open_.end())
+            params["version"] = document->second.version;
         params["diagnostics"] = std::move(diagnostics);
         publish_(params);
     }

@@ -2,8 +2,8 @@
 // (engine::Documents), so a deck reads its edited includes as the editor holds them. An open file
 // that is a deck is checked as one, unless an open deck includes it: then that deck's check covers
 // it; an open file no open deck reads is checked as part of a deck on disk that includes it, if there is
-// one (`sphdeck check` does the same). Changes are collected and re-checked on flush(), which publishes the diagnostics of every
-// file a re-checked deck read (an empty list for a clean file and for a file no deck reads any more).
+// one (`sphdeck check` does the same). Changes are collected and re-checked on flush(), which publishes the diagnostics
+// of every file a re-checked deck read (an empty list for a clean file and for a file no deck reads any more).
 #pragma once
 
 #include <cstdint>
@@ -90,11 +90,11 @@ private:
 
     Publish publish_;
     std::vector<std::filesystem::path> roots_;
-    engine::Documents documents_;                          // the open buffers, by key
+    engine::Documents documents_;                         // the open buffers, by key
     std::map<std::filesystem::path, OpenDocument> open_;  // by key
     std::uint64_t opened_ = 0;
-    std::vector<Deck> decks_;                        // in the order they were first checked
-    std::set<std::filesystem::path> dirty_;          // keys of files changed since the last flush
+    std::vector<Deck> decks_;                                 // in the order they were first checked
+    std::set<std::filesystem::path> dirty_;                   // keys of files changed since the last flush
     std::map<std::filesystem::path, std::string> published_;  // files a deck read when last published -> URI
 };
 

@@ -20,8 +20,9 @@ json deck_schema_properties(std::string_view what) {
             {"text", {{"type", "string"}, {"description", "the " + w + "'s text, instead of a path"}}},
             {"name",
              {{"type", "string"},
-              {"description", "with text: the file name it stands for, in the first root (default deck.k; "
-                              "name_0000.rad for an OpenRadioss starter deck); relative includes are found from there"}}}};
+              {"description",
+               "with text: the file name it stands for, in the first root (default deck.k; "
+               "name_0000.rad for an OpenRadioss starter deck); relative includes are found from there"}}}};
 }
 
 namespace {

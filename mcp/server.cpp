@@ -61,8 +61,9 @@ void Server::log(const std::string& line) {
 void Server::handle(const LineResult& read) {
     if (read.status == LineStatus::parse_error || read.status == LineStatus::too_large) {
         log(read.error);
-        send(lsp::error_response(nullptr, read.status == LineStatus::parse_error ? error_code::parse_error
-                                                                                  : error_code::invalid_request,
+        send(lsp::error_response(nullptr,
+                                 read.status == LineStatus::parse_error ? error_code::parse_error
+                                                                        : error_code::invalid_request,
                                  read.error));
         return;
     }
@@ -79,8 +80,10 @@ void Server::handle(const LineResult& read) {
         return;
     }
     if (!m.contains("method")) {
-        if (has_id && (m.contains("result") || m.contains("error"))) handle_response(m);
-        else send(lsp::error_response(has_id && valid_id(id) ? id : json(), error_code::invalid_request, "no method"));
+        if (has_id && (m.contains("result") || m.contains("error")))
+            handle_response(m);
+        else
+            send(lsp::error_response(has_id && valid_id(id) ? id : json(), error_code::invalid_request, "no method"));
         return;
     }
     if (!m["method"].is_string() || (has_id && !valid_id(id)) ||
@@ -164,9 +167,8 @@ json Server::call_tool(const json& params) {
     const ToolContext context{tool->reads_files ? roots() : none};
     try {
         ToolResult result = tool->run(args, context);
-        const std::string text = result.text.empty()
-                                     ? result.structured.dump(2, ' ', false, json::error_handler_t::replace)
-                                     : result.text;
+        const std::string text =
+            result.text.empty() ? result.structured.dump(2, ' ', false, json::error_handler_t::replace) : result.text;
         return tool_result(text, std::move(result.structured), false);
     } catch (const InvalidParams&) {
         throw;

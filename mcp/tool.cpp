@@ -44,9 +44,12 @@ void check_enum(const std::string& name, const json& value, const json& property
 }  // namespace
 
 Arguments::Arguments(const json& arguments, const json& schema) {
-    if (arguments.is_null()) values_ = json::object();
-    else if (arguments.is_object()) values_ = arguments;
-    else throw InvalidParams("the tool's arguments must be an object");
+    if (arguments.is_null())
+        values_ = json::object();
+    else if (arguments.is_object())
+        values_ = arguments;
+    else
+        throw InvalidParams("the tool's arguments must be an object");
     const json& properties = schema["properties"];
     for (const auto& [name, value] : values_.items()) {
         if (!properties.contains(name)) {
@@ -89,8 +92,8 @@ std::vector<std::string> Arguments::strings(std::string_view name) const {
 }
 
 const std::vector<Tool>& tools() {
-    static const std::vector<Tool> table = {check_deck_tool(),       fix_deck_tool(),       format_deck_tool(),
-                                            explain_rule_tool(),     keyword_layout_tool(), smoothing_preview_tool(),
+    static const std::vector<Tool> table = {check_deck_tool(),   fix_deck_tool(),       format_deck_tool(),
+                                            explain_rule_tool(), keyword_layout_tool(), smoothing_preview_tool(),
                                             diff_decks_tool()};
     return table;
 }

@@ -15,8 +15,9 @@ json schema() {
                             {"description", "check only these rules: codes, names or prefixes such as SPH"}};
     properties["ignore"] = {{"type", "array"}, {"items", {{"type", "string"}}}, {"description", "skip these rules"}};
     properties["geometry"] = {{"type", "boolean"},
-                              {"description", "run the rules that need particle neighbours (default true; false "
-                                              "for a quick check of a very large deck)"}};
+                              {"description",
+                               "run the rules that need particle neighbours (default true; false "
+                               "for a quick check of a very large deck)"}};
     return {{"type", "object"}, {"properties", std::move(properties)}, {"additionalProperties", false}};
 }
 

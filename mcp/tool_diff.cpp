@@ -27,17 +27,17 @@ ToolResult run(const Arguments& args, const ToolContext& context) {
 }  // namespace
 
 Tool diff_decks_tool() {
-    json schema = {
-        {"type", "object"},
-        {"properties",
-         {{"before", {{"type", "string"}, {"description", "path of the first deck, relative to the first root"}}},
-          {"after", {{"type", "string"}, {"description", "path of the second deck"}}},
-          {"rtol",
-           {{"type", "number"},
-            {"minimum", 0},
-            {"description", "numbers closer than this relative tolerance are equal (default 1e-12)"}}}}},
-        {"required", {"before", "after"}},
-        {"additionalProperties", false}};
+    json schema = {{"type", "object"},
+                   {"properties",
+                    {{"before",
+                      {{"type", "string"}, {"description", "path of the first deck, relative to the first root"}}},
+                     {"after", {{"type", "string"}, {"description", "path of the second deck"}}},
+                     {"rtol",
+                      {{"type", "number"},
+                       {"minimum", 0},
+                       {"description", "numbers closer than this relative tolerance are equal (default 1e-12)"}}}}},
+                   {"required", {"before", "after"}},
+                   {"additionalProperties", false}};
     return {"diff_decks", "Compare two decks",
             "Tells what the solver reads differently in two decks, as `sphdeck diff` does: keywords added, removed or "
             "changed (each field's effective value before and after, with its location), nodes and particles "

@@ -40,7 +40,8 @@ ToolResult run(const Arguments& args, const ToolContext& context) {
     std::string diff;
     json files = json::array();
     for (const edit::FixedFile& file : outcome.files) {
-        diff += edit::unified_diff(shown(file.path), file.original, edit::line_edits_between(file.original, file.fixed));
+        diff +=
+            edit::unified_diff(shown(file.path), file.original, edit::line_edits_between(file.original, file.fixed));
         files.push_back(shown(file.path));
     }
     if (write) {

@@ -11,7 +11,8 @@ using json = nlohmann::json;
 
 json schema() {
     json properties = deck_schema_properties("deck");
-    properties["headers"] = {{"type", "boolean"}, {"description", "write a `$#` line naming the fields above each card"}};
+    properties["headers"] = {{"type", "boolean"},
+                             {"description", "write a `$#` line naming the fields above each card"}};
     properties["to_fixed"] = {{"type", "boolean"},
                               {"description", "rewrite free (comma) lines in fixed columns when every value fits"}};
     return {{"type", "object"}, {"properties", std::move(properties)}, {"additionalProperties", false}};

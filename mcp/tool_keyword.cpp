@@ -7,7 +7,6 @@ namespace sphdeck::mcp {
 namespace {
 using json = nlohmann::json;
 
-
 grammar::CardFormat format_of(const std::string& s) {
     if (s == "long") return grammar::CardFormat::Long;
     if (s == "i10") return grammar::CardFormat::I10;
@@ -19,8 +18,10 @@ json field_json(const keywords::FieldSpec& f, const keywords::FieldSlot& slot) {
                 {"columns", {slot.start + 1, slot.start + slot.width}},
                 {"type", keywords::to_string(f.type)},
                 {"doc", f.doc}};
-    if (f.default_value) out["default"] = *f.default_value;
-    else if (!f.default_text.empty()) out["default"] = f.default_text;
+    if (f.default_value)
+        out["default"] = *f.default_value;
+    else if (!f.default_text.empty())
+        out["default"] = f.default_text;
     if (f.zero_is_default) out["zero_is_default"] = true;
     if (f.required) out["required"] = true;
     if (!f.choices.empty()) {
@@ -64,8 +65,12 @@ ToolResult run(const Arguments& args, const ToolContext&) {
     }
     json options = json::array();
     for (const auto& o : k.options) options.push_back({{"suffix", o.suffix}, {"doc", o.doc}});
-    json structured = {{"keyword", title},    {"doc", k.doc},         {"unique", k.unique},
-                       {"free_text", k.free_text}, {"options", std::move(options)}, {"cards", std::move(cards)}};
+    json structured = {{"keyword", title},
+                       {"doc", k.doc},
+                       {"unique", k.unique},
+                       {"free_text", k.free_text},
+                       {"options", std::move(options)},
+                       {"cards", std::move(cards)}};
     return {std::move(structured), {}};
 }
 }  // namespace
@@ -83,10 +88,13 @@ Tool keyword_layout_tool() {
             {"description", "the card format whose columns are given (default standard)"}}}}},
         {"required", {"name"}},
         {"additionalProperties", false}};
-    return {"keyword_layout", "An LS-DYNA keyword's card layout",
+    return {"keyword_layout",
+            "An LS-DYNA keyword's card layout",
             "Gives an LS-DYNA keyword's cards: per field its columns, type, default, allowed values and meaning, as "
             "`sphdeck keyword` prints them. Use it to write a card in the right columns.",
-            std::move(schema), run, /*reads_files=*/false};
+            std::move(schema),
+            run,
+            /*reads_files=*/false};
 }
 
 }  // namespace sphdeck::mcp

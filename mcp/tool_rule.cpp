@@ -24,13 +24,17 @@ ToolResult run(const Arguments& args, const ToolContext&) {
 Tool explain_rule_tool() {
     json schema = {{"type", "object"},
                    {"properties",
-                    {{"rule", {{"type", "string"}, {"description", "rule code (SPH030) or name (iavis-solid-in-2d)"}}}}},
+                    {{"rule",
+                      {{"type", "string"}, {"description", "rule code (SPH030) or name (iavis-solid-in-2d)"}}}}},
                    {"required", {"rule"}},
                    {"additionalProperties", false}};
-    return {"explain_rule", "Explain a rule",
+    return {"explain_rule",
+            "Explain a rule",
             "Explains one of sphdeck's rules (the code of a finding, such as SPH030): what it checks, why it matters, "
             "how to fix it, and an example.",
-            std::move(schema), run, /*reads_files=*/false};
+            std::move(schema),
+            run,
+            /*reads_files=*/false};
 }
 
 }  // namespace sphdeck::mcp

@@ -21,7 +21,8 @@ ToolResult run(const Arguments& args, const ToolContext& context) {
     const preproc::MeshBoxParticles boxes = preproc::generate_mesh_box_particles(r.model);
     const model::Model extended = boxes.size() ? preproc::with_mesh_box_particles(r.model, boxes) : model::Model{};
     const model::Model& model = boxes.size() ? extended : r.model;
-    if (model.particles.size() == 0) throw ToolFailure("the deck has no SPH particles (*ELEMENT_SPH): nothing to preview");
+    if (model.particles.size() == 0)
+        throw ToolFailure("the deck has no SPH particles (*ELEMENT_SPH): nothing to preview");
     std::shared_ptr<const preproc::Preview> preview = boxes.size() ? nullptr : r.preview;
     if (!preview) {
         preproc::PreviewOptions preview_options;
@@ -44,8 +45,9 @@ Tool smoothing_preview_tool() {
     properties["ini"] = {{"type", "integer"},
                          {"minimum", 0},
                          {"maximum", 2},
-                         {"description", "initial smoothing length mode instead of the deck's *CONTROL_SPH INI: 0 "
-                                         "bucket sort, 1 global search, 2 from the mass"}};
+                         {"description",
+                          "initial smoothing length mode instead of the deck's *CONTROL_SPH INI: 0 "
+                          "bucket sort, 1 global search, 2 from the mass"}};
     json schema = {{"type", "object"}, {"properties", std::move(properties)}, {"additionalProperties", false}};
     return {"smoothing_preview", "Preview smoothing lengths",
             "Previews what the solver will compute at the start, per SPH part, as `sphdeck smooth` does: particle "

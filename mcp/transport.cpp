@@ -31,7 +31,8 @@ LineResult LineReader::next() {
         if (!any) return {LineStatus::end, nullptr, {}};
         if (dropped)
             return {LineStatus::too_large, nullptr,
-                    "message of " + std::to_string(length) + " bytes dropped (bound " + std::to_string(max_line_) + ")"};
+                    "message of " + std::to_string(length) + " bytes dropped (bound " + std::to_string(max_line_) +
+                        ")"};
         if (!line.empty() && line.back() == '\r') line.pop_back();  // a client on Windows
         if (line.find_first_not_of(" \t") == std::string::npos) continue;
         auto parsed = lsp::parse_body(line);

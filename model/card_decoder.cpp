@@ -52,9 +52,10 @@ std::string run_on_note(std::string_view text, const grammar::Span& at, std::str
         while (stop < text.size() && glued(text[stop])) ++stop;
         const std::string whole(text.substr(from, stop - from));
         if (grammar::parse_real(whole).status == NumberStatus::Ok)
-            return fmt::format("'{}' of the field before runs on into this one at column {}: the field before "
-                               "holds only '{}'",
-                               whole, begin + 1, text.substr(from, begin - from));
+            return fmt::format(
+                "'{}' of the field before runs on into this one at column {}: the field before "
+                "holds only '{}'",
+                whole, begin + 1, text.substr(from, begin - from));
     }
     return {};
 }
@@ -104,13 +105,13 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
     const auto& positions_ = layout.positions;
     std::string_view text = deck_.text(line);
     line_text_ = text;
-    grammar::CutReport cut = grammar::cut_fields(text, line, positions_, layout.significant, fields_, !layout.text_card);
+    grammar::CutReport cut =
+        grammar::cut_fields(text, line, positions_, layout.significant, fields_, !layout.text_card);
     glued_ = !cut.free_format && !layout.text_card && grammar::may_straddle(text, positions_);
     const std::size_t fields_end = positions_.empty() ? 0 : positions_.back().start + positions_.back().width;
-    past_fields_ = !cut.free_format && !layout.text_card && layout.significant > fields_end &&
-                   text.size() > fields_end &&
-                   text.substr(fields_end, layout.significant - fields_end).find_first_not_of(" \r") !=
-                       std::string_view::npos;
+    past_fields_ =
+        !cut.free_format && !layout.text_card && layout.significant > fields_end && text.size() > fields_end &&
+        text.substr(fields_end, layout.significant - fields_end).find_first_not_of(" \r") != std::string_view::npos;
 
     if (cut.has_tab) {
         std::size_t tab = text.find('\t');
@@ -118,11 +119,11 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
                grammar::Span{line.file, line.line, static_cast<std::uint32_t>(tab + 1),
                              static_cast<std::uint32_t>(tab + 2)});
         if (auto expanded = grammar::expand_tabs_if_certain(text, positions_))
-            out_.back().fixes.push_back({"replace the tabs by the blanks an editor shows (tab stops every 8 columns)",
-                                         true,
-                                         {{grammar::Span{line.file, line.line, 1,
-                                                         static_cast<std::uint32_t>(text.size() + 1)},
-                                           std::move(*expanded)}}});
+            out_.back().fixes.push_back(
+                {"replace the tabs by the blanks an editor shows (tab stops every 8 columns)",
+                 true,
+                 {{grammar::Span{line.file, line.line, 1, static_cast<std::uint32_t>(text.size() + 1)},
+                   std::move(*expanded)}}});
     }
     // A title or heading longer than its 80 (70) columns is cut in the solver's output and loses
     // nothing else: no value can slip out of a card that holds one text field. A file name (*INCLUDE)
@@ -140,11 +141,11 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
         // A number field holding no number is DK003, which names the value: one finding per field.
         const grammar::ValueToken token = grammar::classify_value(fields_[i].text);
         const FieldType type = card.fields[i].type;
-        if (token.shape == grammar::ValueShape::Other && (type == FieldType::Integer || type == FieldType::Real)) continue;
+        if (token.shape == grammar::ValueShape::Other && (type == FieldType::Integer || type == FieldType::Real))
+            continue;
         report("DK005", diag::Severity::Error,
-               fmt::format("free-format value '{}' is longer than its {}-column field {}",
-                           shown(token.text), positions_[i].width,
-                           card.fields[i].name),
+               fmt::format("free-format value '{}' is longer than its {}-column field {}", shown(token.text),
+                           positions_[i].width, card.fields[i].name),
                fields_[i].span);
     }
 
@@ -158,8 +159,9 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
         v.span = fields_[i].span;
         v.valid = false;
         v.number = 0.0;
-        grammar::ValueToken token = grammar::classify_value(
-            fields_[i].text, spec.type == FieldType::Real ? grammar::ValueShape::Real : grammar::ValueShape::Integer);
+        grammar::ValueToken token =
+            grammar::classify_value(fields_[i].text, spec.type == FieldType::Real ? grammar::ValueShape::Real
+                                                                                  : grammar::ValueShape::Integer);
         v.text = token.text;
         v.explicit_value = token.shape != grammar::ValueShape::Blank;
         if (v.explicit_value && token.offset > 0 && !cut.free_format) {
@@ -169,9 +171,7 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
         }
         switch (spec.type) {
             case FieldType::Unused: break;
-            case FieldType::Text:
-                check_text(block, spec, v);
-                break;
+            case FieldType::Text: check_text(block, spec, v); break;
             case FieldType::Label:
                 // An id: a number, or since 971 R7.1 an alphanumeric label (lsdyna-format.md §10).
                 if (token.shape == grammar::ValueShape::Other) {
@@ -200,7 +200,8 @@ void CardDecoder::offer_realign(const keywords::CardSpec& card, grammar::CardFor
         if ((d.code != "DK002" && d.code != "DK003") || d.span.line != line.line || d.span.file != line.file) continue;
         if (!realigned) realigned = grammar::realign_card(line_text_, card, format);
         if (!*realigned) return;
-        d.fixes.push_back({"move the values of the line into their fields", true,
+        d.fixes.push_back({"move the values of the line into their fields",
+                           true,
                            {text::whole_line_edit(line.file, line.line, line_text_.size(), **realigned)}});
     }
 }
@@ -242,9 +243,10 @@ void CardDecoder::decode_number(const grammar::Block& block, const keywords::Fie
     if (token.shape == grammar::ValueShape::Parameter) {
         auto found = deck_.parameters.find(token.name, v.span.file, block.parameter_epoch);
         if (!found.parameter) {
-            out_.push_back(grammar::undefined_parameter(
-                deck_.parameters, grammar::reference_in_field(token, field.text, field.span, fixed_width), v.span,
-                v.span.file, block.parameter_epoch));
+            out_.push_back(
+                grammar::undefined_parameter(deck_.parameters,
+                                             grammar::reference_in_field(token, field.text, field.span, fixed_width),
+                                             v.span, v.span.file, block.parameter_epoch));
             return;
         }
         // A reference differing from its definition only by case resolves silently: LS-DYNA reads
@@ -332,10 +334,9 @@ void CardDecoder::check_text(const grammar::Block& block, const keywords::FieldS
         text = found.parameter->text;
     }
     for (std::string_view choice : spec.text_choices)
-        if (choice.size() == text.size() &&
-            std::equal(choice.begin(), choice.end(), text.begin(),
-                       [](char a, char b) { return std::toupper(static_cast<unsigned char>(a)) ==
-                                                   std::toupper(static_cast<unsigned char>(b)); }))
+        if (choice.size() == text.size() && std::equal(choice.begin(), choice.end(), text.begin(), [](char a, char b) {
+                return std::toupper(static_cast<unsigned char>(a)) == std::toupper(static_cast<unsigned char>(b));
+            }))
             return;
     std::string allowed;
     for (std::string_view c : spec.text_choices) allowed += (allowed.empty() ? "" : ", ") + std::string(c);

@@ -35,7 +35,7 @@ inline double condition_value(const FieldValue& v) {
 // long long, and beyond 2^53 neither holds the value exactly; converting a larger double (or NaN)
 // to an integer is undefined. Both decoders report larger values (DK007) and leave them unused.
 inline constexpr double max_exact_integer = 9007199254740992.0;  // 2^53
-bool exceeds_integer_range(double number);                        // |number| > 2^53, or NaN
+bool exceeds_integer_range(double number);                       // |number| > 2^53, or NaN
 std::string integer_range_message(std::string_view field, double number);
 
 class CardDecoder {

@@ -23,6 +23,7 @@ inline bool read_by_reader(const std::string& keyword) {
 class CardSequence {
     using CardSpec = keywords::CardSpec;
     using CardRepeat = keywords::CardRepeat;
+
 public:
     explicit CardSequence(const keywords::KeywordMatch& match)
         : cards_(keywords::cards_for(match)), group_(keywords::repeat_group_size(match)) {}

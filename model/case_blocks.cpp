@@ -4,8 +4,10 @@ namespace sphdeck::model {
 
 void track_case(std::string_view keyword, std::string& current) {
     constexpr std::string_view begin = "*CASE_BEGIN_";
-    if (keyword.substr(0, begin.size()) == begin) current = std::string(keyword.substr(begin.size()));
-    else if (keyword.substr(0, 9) == "*CASE_END") current.clear();
+    if (keyword.substr(0, begin.size()) == begin)
+        current = std::string(keyword.substr(begin.size()));
+    else if (keyword.substr(0, 9) == "*CASE_END")
+        current.clear();
 }
 
 CaseBlocks::CaseBlocks(const grammar::RawDeck& deck) : deck_(deck) {

@@ -36,7 +36,8 @@ std::optional<DecimalComma> find_decimal_comma(std::string_view text) {
 diag::Diagnostic decimal_comma_finding(const DecimalComma& comma, const grammar::CardLine& line,
                                        std::string_view solver, std::string_view reading) {
     return diag::Diagnostic{
-        "DK031", diag::Severity::Warning,
+        "DK031",
+        diag::Severity::Warning,
         fmt::format("a comma inside a fixed-format field: {} reads this line as free format{}; a decimal comma? "
                     "write {}",
                     solver, reading.empty() ? "" : fmt::format(" ({})", reading), shown(comma.meant)),

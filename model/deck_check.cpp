@@ -63,8 +63,11 @@ std::size_t count_particles(const grammar::RawDeck& deck, const grammar::CardLin
     std::string_view text = deck.text(line);
     if (text.size() > 40 && !grammar::is_blank(text.substr(40, 2)) && !grammar::is_free_format(text) &&
         !same_nend_both_widths(text, values[3]))
-        out.push_back({"DK023", diag::Severity::Warning,
-                       "NEND reaches columns 41-42; some readers stop NEND at column 40", values[3].span, {}});
+        out.push_back({"DK023",
+                       diag::Severity::Warning,
+                       "NEND reaches columns 41-42; some readers stop NEND at column 40",
+                       values[3].span,
+                       {}});
     return n;
 }
 
@@ -142,8 +145,8 @@ public:
                 return d.code == "DK029" && d.span.file == c.line->file && d.span.line == c.line->line;
             });
             if (reported) continue;
-            out_.push_back(lone_value_finding(deck_, *c.block, *c.line, *c.card, c.shift, layout_of(*c.card, c.block->format),
-                                              c.refused));
+            out_.push_back(lone_value_finding(deck_, *c.block, *c.line, *c.card, c.shift,
+                                              layout_of(*c.card, c.block->format), c.refused));
         }
     }
 
@@ -183,7 +186,8 @@ private:
 
     // Tallies how the line's numbers sit in their fields, or keeps it as a lone shifted value. `refused`: the
     // line as written made an error.
-    void note_alignment(const grammar::Block& block, const grammar::CardLine& line, const CardSpec& card, bool refused) {
+    void note_alignment(const grammar::Block& block, const grammar::CardLine& line, const CardSpec& card,
+                        bool refused) {
         if (card.fields.empty() || (card.fields[0].type == FieldType::Text && card.fields[0].width >= 70)) return;
         const std::string_view text = deck_.text(line);
         const auto slots = layout_of(card, block.format);
@@ -212,8 +216,9 @@ private:
         for (std::size_t i = from; i < out_.size() && suspects_.size() < max_suspect_lines; ++i) {
             const grammar::Span& at = out_[i].span;
             if (!suspects_.empty() && suspects_.back().line->line == at.line) continue;
-            const grammar::CardLine* l = std::lower_bound(
-                begin, end, at.line, [](const grammar::CardLine& c, std::uint32_t n) { return c.line < n; });
+            const grammar::CardLine* l =
+                std::lower_bound(begin, end, at.line,
+                                 [](const grammar::CardLine& c, std::uint32_t n) { return c.line < n; });
             if (l != end && l->line == at.line && l->file == at.file) suspects_.push_back({l, &card});
         }
     }
@@ -229,8 +234,7 @@ private:
 
     // Every line of `block` is one `card`: contiguous ranges of lines go to the threads, and their
     // findings are appended range after range, so the order is the same as on one thread.
-    void walk_in_parallel(const grammar::Block& block, const CardSpec& card, DeckSummary& summary,
-                          FloodBound& bound) {
+    void walk_in_parallel(const grammar::Block& block, const CardSpec& card, DeckSummary& summary, FloodBound& bound) {
         const std::size_t n = block.line_count;
         const int threads = available_threads();
         const bool particles = block.keyword.rfind("*ELEMENT_SPH", 0) == 0;
@@ -270,7 +274,8 @@ private:
                 std::optional<std::string> refused;
                 if (particles) {
                     refused = ranges_.check_alone(range_extra(values));
-                    if (refused) values[3].valid = false;
+                    if (refused)
+                        values[3].valid = false;
                     else if (std::size_t extra = range_extra(values))
                         ranges[static_cast<std::size_t>(t)].push_back({i, extra, values[3].span});
                 }
@@ -293,16 +298,16 @@ private:
                 }
             // Back to line order, each refusal last among its line's findings (as in the serial walk).
             if (refused)
-                std::stable_sort(found[t].begin(), found[t].end(), [](const diag::Diagnostic& a,
-                                                                       const diag::Diagnostic& b) {
-                    return a.span.line < b.span.line;
-                });
+                std::stable_sort(found[t].begin(), found[t].end(),
+                                 [](const diag::Diagnostic& a, const diag::Diagnostic& b) {
+                                     return a.span.line < b.span.line;
+                                 });
         }
         bulk_->end(block);
         summary.particles += std::accumulate(counted.begin(), counted.end(), std::size_t{0});
         const std::size_t merged_from = out_.size();
-        for (auto& part : found) out_.insert(out_.end(), std::make_move_iterator(part.begin()),
-                                             std::make_move_iterator(part.end()));
+        for (auto& part : found)
+            out_.insert(out_.end(), std::make_move_iterator(part.begin()), std::make_move_iterator(part.end()));
         note_bulk_suspects(block, card, merged_from);
         for (const SuspectLine& s : suspects_) note_lost_asterisk(*s.line, false);  // a keyword name misread as a line
     }
@@ -327,16 +332,21 @@ private:
         if (all_blank) return;
         for (const grammar::CardLine* l = &line; l != deck_.end_lines(block); ++l) note_lost_asterisk(*l, false);
         std::size_t extra = static_cast<std::size_t>(deck_.end_lines(block) - &line);
-        out_.push_back({"DK009", diag::Severity::Warning,
+        out_.push_back({"DK009",
+                        diag::Severity::Warning,
                         fmt::format("{} takes {} card(s); {} more line(s) ignored", block.keyword, expected, extra),
-                        grammar::Span{line.file, line.line, 1, 2}, {}});
+                        grammar::Span{line.file, line.line, 1, 2},
+                        {}});
     }
 
     // A mandatory card the block ended before (optional and repeated cards may be absent).
     void report_missing(const grammar::Block& block, const CardSpec& missing) {
-        out_.push_back({"DK008", diag::Severity::Error,
-                        fmt::format("{} is missing its {}", block.keyword, missing.name.empty() ? "card" : missing.name),
-                        block.span, {}});
+        out_.push_back(
+            {"DK008",
+             diag::Severity::Error,
+             fmt::format("{} is missing its {}", block.keyword, missing.name.empty() ? "card" : missing.name),
+             block.span,
+             {}});
     }
 
     const grammar::RawDeck& deck_;
@@ -376,15 +386,19 @@ const CaseSpan* first_in_run(const std::vector<CaseSpan>& seen, const std::strin
 diag::Diagnostic duplicate_control(const grammar::RawDeck& deck, const keywords::KeywordSchema& schema,
                                    const grammar::Span& again, const grammar::Span& first) {
     if (again.file == first.file)
-        return {"DK018", diag::Severity::Error, fmt::format("{} appears more than once", schema.name), again,
+        return {"DK018",
+                diag::Severity::Error,
+                fmt::format("{} appears more than once", schema.name),
+                again,
                 {{first, "first defined here"}}};
     const auto& first_file = deck.sources.file(first.file).display_name;
-    return {"DK018", diag::Severity::Warning,
+    return {"DK018",
+            diag::Severity::Warning,
             fmt::format("{} appears again, after the copy in {}: this copy, read last, is the one that takes effect",
                         schema.name, first_file),
             again,
-            {{first, fmt::format("{} set here first; every value of it is replaced by the copy read later",
-                                 schema.name)}}};
+            {{first,
+              fmt::format("{} set here first; every value of it is replaced by the copy read later", schema.name)}}};
 }
 
 bool skip_cards(const std::string& keyword) {
@@ -420,14 +434,17 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
         // Only *CONTROL_ keywords: every include file legitimately starts with its own *KEYWORD.
         if (match->schema->unique && match->schema->name.rfind("*CONTROL_", 0) == 0) {
             auto& seen = seen_unique[match->schema];
-            if (const CaseSpan* first = first_in_run(seen, current_case)) out.push_back(duplicate_control(deck, *match->schema, block.span, first->span));
+            if (const CaseSpan* first = first_in_run(seen, current_case))
+                out.push_back(duplicate_control(deck, *match->schema, block.span, first->span));
             seen.push_back({current_case, block.span});
         }
         if (block.keyword == "*COMMENT" || block.keyword.rfind("*PARAMETER", 0) == 0) {
             // Lines the reader takes (parameters) or keeps as text: a keyword name among them lost its '*'.
             std::vector<LostAsteriskLine> lost;
-            if (block.keyword == "*COMMENT") note_lost_in_comment(deck, block, lost);
-            else if (block.line_count > 0) note_lost_in_unread(deck, block, deck.begin_lines(block), lost);
+            if (block.keyword == "*COMMENT")
+                note_lost_in_comment(deck, block, lost);
+            else if (block.line_count > 0)
+                note_lost_in_unread(deck, block, deck.begin_lines(block), lost);
             diagnose_lost_asterisks(deck, block, lost, out, out.size());
         }
         if (skip_cards(block.keyword) || match->schema->free_text) continue;

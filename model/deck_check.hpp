@@ -14,14 +14,13 @@
 namespace sphdeck::model {
 
 struct DeckSummary {
-    std::size_t particles = 0;        // *ELEMENT_SPH particles, NEND ranges expanded
-    std::size_t unknown_keywords = 0; // blocks without a schema
+    std::size_t particles = 0;         // *ELEMENT_SPH particles, NEND ranges expanded
+    std::size_t unknown_keywords = 0;  // blocks without a schema
 };
 
 // Called for every decoded card: the block, its keyword match, the card spec and the values.
-using CardVisitor = std::function<void(const grammar::Block&, const keywords::KeywordMatch&,
-                                       const keywords::CardSpec&, const grammar::CardLine&,
-                                       const std::vector<FieldValue>&)>;
+using CardVisitor = std::function<void(const grammar::Block&, const keywords::KeywordMatch&, const keywords::CardSpec&,
+                                       const grammar::CardLine&, const std::vector<FieldValue>&)>;
 
 // Receives the cards of big blocks made of one repeated card (*NODE, *ELEMENT_SPH: millions of
 // lines), which check_deck decodes on several threads. begin() and end() run on the calling
@@ -42,7 +41,7 @@ public:
 // Decodes every card of every known block, reporting into `out` in deck order; `visit` (optional)
 // sees each decoded card in deck order, which is how the model is built without decoding twice.
 // Blocks that `bulk` wants skip `visit` and go to `bulk` instead, decoded in parallel.
-DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out,
-                       const CardVisitor& visit = {}, BulkVisitor* bulk = nullptr);
+DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, const CardVisitor& visit = {},
+                       BulkVisitor* bulk = nullptr);
 
 }  // namespace sphdeck::model

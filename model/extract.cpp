@@ -273,7 +273,8 @@ std::optional<RawField> raw_field(const grammar::RawDeck& deck, const grammar::B
     if (!known) return std::nullopt;
     // Generated layouts list the title card (of _TITLE) first: the card with the id is the data card.
     const auto& cards = known->schema->cards;
-    auto card = std::find_if(cards.begin(), cards.end(), [&](const keywords::CardSpec& c) { return c.field(id_field); });
+    auto card =
+        std::find_if(cards.begin(), cards.end(), [&](const keywords::CardSpec& c) { return c.field(id_field); });
     if (card == cards.end()) return std::nullopt;
     std::size_t k = 0;
     while (k < card->fields.size() && card->fields[k].name != name) ++k;
@@ -337,8 +338,10 @@ Material raw_material(const grammar::RawDeck& deck, const grammar::Block& b, con
         return mat;
     }
     const grammar::RealValue ro = grammar::to_real(token);
-    if (ro.status == grammar::NumberStatus::Ok) mat.density = {ro.value, true, mat.density.span};
-    else if (token.shape != grammar::ValueShape::Blank) mat.has_density = false;  // DK003 says what is wrong
+    if (ro.status == grammar::NumberStatus::Ok)
+        mat.density = {ro.value, true, mat.density.span};
+    else if (token.shape != grammar::ValueShape::Blank)
+        mat.has_density = false;  // DK003 says what is wrong
     return mat;
 }
 
@@ -417,8 +420,11 @@ void extract_typed(const grammar::RawDeck& deck, Model& model, std::vector<diag:
     const ControlSph& sph = model.controls.sph;
     if (sph.present && sph.idim.value == Dimension::Unset) {
         // No default is documented for IDIM (lsdyna-sph-cards.md §1): say so, do not guess.
-        out.push_back({"DK008", diag::Severity::Warning,
-                       "IDIM is blank or 0 and has no documented default; write 3, 2 or -2", sph.idim.span, {}});
+        out.push_back({"DK008",
+                       diag::Severity::Warning,
+                       "IDIM is blank or 0 and has no documented default; write 3, 2 or -2",
+                       sph.idim.span,
+                       {}});
     }
 }
 

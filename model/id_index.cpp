@@ -13,8 +13,10 @@ IdIndex::IdIndex(const std::vector<long long>& ids) {
         dense_.assign(span + 1, absent);
         for (std::size_t i = 0; i < ids.size(); ++i) {
             std::uint32_t& slot = dense_[static_cast<std::size_t>(ids[i] - min_)];
-            if (slot != absent) duplicates_.emplace_back(slot, i);
-            else slot = static_cast<std::uint32_t>(i);
+            if (slot != absent)
+                duplicates_.emplace_back(slot, i);
+            else
+                slot = static_cast<std::uint32_t>(i);
         }
         return;
     }

@@ -13,16 +13,29 @@ bool contains(std::string_view s, std::string_view p) { return s.find(p) != std:
 
 // The kinds whose definitions sphdeck knows; element ids (*ELEMENT_SOLID is not read) and the rest
 // are skipped.
-constexpr std::array<std::string_view, 17> followed_kinds = {
-    "PART", "SECTION", "MAT", "HOURGLASS", "NODE", "SET_PART", "SET_NODE", "SET_SEGMENT", "SET_SOLID",
-    "SET_BEAM", "SET_DISCRETE", "DEFINE_BOX", "DEFINE_CURVE", "DEFINE_CURVE_OR_TABLE", "DEFINE_VECTOR",
-    "DEFINE_COORDINATE_SYSTEM", "DEFINE_TRANSFORMATION"};
+constexpr std::array<std::string_view, 17> followed_kinds = {"PART",
+                                                             "SECTION",
+                                                             "MAT",
+                                                             "HOURGLASS",
+                                                             "NODE",
+                                                             "SET_PART",
+                                                             "SET_NODE",
+                                                             "SET_SEGMENT",
+                                                             "SET_SOLID",
+                                                             "SET_BEAM",
+                                                             "SET_DISCRETE",
+                                                             "DEFINE_BOX",
+                                                             "DEFINE_CURVE",
+                                                             "DEFINE_CURVE_OR_TABLE",
+                                                             "DEFINE_VECTOR",
+                                                             "DEFINE_COORDINATE_SYSTEM",
+                                                             "DEFINE_TRANSFORMATION"};
 
 // Solvers with their own id spaces (*ICFD_PART, *CESE_PART, *ICFD_SECTION, *MESH_VOLUME...): their
 // parts and sections are not *PART's, so pydyna's PART links there cannot be judged against *PART.
 bool own_id_space(std::string_view keyword) {
-    for (std::string_view p : {"*ICFD_", "*CESE_", "*DUALCESE_", "*EM_", "*MESH_", "*CHEMISTRY_", "*LSO_",
-                               "*IGA_", "*STOCHASTIC_", "*RVE_", "*INCLUDE", "*PERTURBATION_"})
+    for (std::string_view p : {"*ICFD_", "*CESE_", "*DUALCESE_", "*EM_", "*MESH_", "*CHEMISTRY_", "*LSO_", "*IGA_",
+                               "*STOCHASTIC_", "*RVE_", "*INCLUDE", "*PERTURBATION_"})
         if (starts_with(keyword, p)) return true;
     return false;
 }
@@ -77,7 +90,9 @@ std::string_view missing_link(std::string_view keyword, std::string_view field) 
 
 // The kinds whose definitions the model reads itself (model/extract.cpp) and the REF rules take from it:
 // a field naming one inside a block of its defining family (*PART_MODES' PID) is followed as a reference.
-bool model_reads(std::string_view kind) { return kind == "PART" || kind == "SECTION" || kind == "MAT" || kind == "NODE"; }
+bool model_reads(std::string_view kind) {
+    return kind == "PART" || kind == "SECTION" || kind == "MAT" || kind == "NODE";
+}
 
 // A field of the same card whose name says it is a type or an option may change what kind of
 // entity an id names (*AIRBAG_PARTICLE STYPE1: part or part set, *INITIAL_VELOCITY_GENERATION STYP):

@@ -22,8 +22,8 @@ struct IdReference {
     grammar::Span span;        // the first field naming it
     std::string_view keyword;  // that field's keyword (schema name) and field name
     std::string_view field;
-    std::string_view why;      // what decided the kind when a type field did: "SURFATYP 3"; else empty
-    std::size_t count = 1;     // fields of the deck naming this kind and id
+    std::string_view why;   // what decided the kind when a type field did: "SURFATYP 3"; else empty
+    std::size_t count = 1;  // fields of the deck naming this kind and id
 };
 
 // The kind a field names in a keyword (empty: not followed). `type` is the value of the field's

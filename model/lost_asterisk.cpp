@@ -101,9 +101,8 @@ void diagnose_lost_asterisks(const grammar::RawDeck& deck, const grammar::Block&
                              std::span<const LostAsteriskLine> lines, std::vector<diag::Diagnostic>& out,
                              std::size_t from) {
     if (lines.empty()) return;
-    const std::uint32_t block_end = block.line_count > 0
-                                        ? deck.lines[block.first_line + block.line_count - 1].line + 1
-                                        : lines.back().line + 1;
+    const std::uint32_t block_end =
+        block.line_count > 0 ? deck.lines[block.first_line + block.line_count - 1].line + 1 : lines.back().line + 1;
     std::vector<diag::Diagnostic> causes;
     std::vector<bool> folded(out.size(), false);
     for (std::size_t k = 0; k < lines.size(); ++k) {
@@ -122,16 +121,18 @@ void diagnose_lost_asterisks(const grammar::RawDeck& deck, const grammar::Block&
             continue;
         const std::size_t after = until - at.line - 1;
         diag::Diagnostic d{
-            "DK033", diag::Severity::Warning,
+            "DK033",
+            diag::Severity::Warning,
             fmt::format("'{}' is the keyword {} without its '*' (did you mean {}?): LS-DYNA reads this line{} as "
                         "more lines of {}, and {} is never read",
-                        at.written, at.keyword, at.keyword, after == 0 ? "" : " and the lines after it up to the next keyword",
-                        block.keyword, at.keyword),
+                        at.written, at.keyword, at.keyword,
+                        after == 0 ? "" : " and the lines after it up to the next keyword", block.keyword, at.keyword),
             grammar::Span{at.file, at.line, 1, static_cast<std::uint32_t>(at.written.size() + 1)},
             {}};
         d.notes.push_back({block.span, fmt::format("the block {} is read on to the next keyword line", block.keyword)});
         // Unsafe: the word may be text the block reads (a title), which the deck's own misreadings only suggest.
-        d.fixes.push_back({fmt::format("write the keyword line {}", at.keyword), false,
+        d.fixes.push_back({fmt::format("write the keyword line {}", at.keyword),
+                           false,
                            {{grammar::Span{at.file, at.line, 1, 1}, "*"}}});
         for (std::size_t i = from; i < out.size(); ++i)
             if (!folded[i] && in_range(out[i], false)) {

@@ -46,7 +46,8 @@ void note_lost_in_comment(const grammar::RawDeck& deck, const grammar::Block& bl
 
 // DK033 for each line, folding the block's reading findings (DK002-DK009) on it and on the lines after it,
 // which belong to the block it meant to open. A plain word read as text is reported only when a line after
-// it misreads (a part heading "NODE" is a heading); a compound name (SECTION_SOLID) always. `from`: the block's findings are out[from, end).
+// it misreads (a part heading "NODE" is a heading); a compound name (SECTION_SOLID) always. `from`: the block's
+// findings are out[from, end).
 void diagnose_lost_asterisks(const grammar::RawDeck& deck, const grammar::Block& block,
                              std::span<const LostAsteriskLine> lines, std::vector<diag::Diagnostic>& out,
                              std::size_t from);

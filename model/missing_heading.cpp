@@ -46,8 +46,7 @@ bool reads_as_integer_card(std::string_view text, std::span<const grammar::Fixed
         if (in == slots.begin() + static_cast<std::ptrdiff_t>(fields)) return false;
         const auto& spec = card.fields[static_cast<std::size_t>(in - slots.begin())];
         const bool integer_field = spec.type == keywords::FieldType::Integer || spec.type == keywords::FieldType::Label;
-        if (!integer_field || !integer_word(text.substr(t.begin, t.end - t.begin)))
-            return false;
+        if (!integer_field || !integer_word(text.substr(t.begin, t.end - t.begin))) return false;
         ++values;
     }
     return values >= min_values;
@@ -65,15 +64,16 @@ void diagnose_missing_heading(const grammar::RawDeck& deck, const grammar::Block
     if (std::none_of(out.begin() + static_cast<std::ptrdiff_t>(from), out.end(), misread)) return;
     const std::string_view text = deck.text(heading);
     const auto first = static_cast<std::uint32_t>(std::min(text.find_first_not_of(' '), text.size()) + 1);
-    diag::Diagnostic d{"DK032", diag::Severity::Warning,
+    diag::Diagnostic d{"DK032",
+                       diag::Severity::Warning,
                        fmt::format("{} heading line missing: this line of integers reads as {}'s {}, but LS-DYNA "
                                    "reads it as the part's heading and the line after it as its {}",
                                    block.keyword, block.keyword, next_card.name, next_card.name),
                        grammar::Span{heading.file, heading.line, first, static_cast<std::uint32_t>(text.size() + 1)},
                        {}};
     // Unsafe: which title the part had is not known; a blank heading is read as none.
-    d.fixes.push_back({"insert a blank heading line above it", false,
-                       {{grammar::Span{heading.file, heading.line, 1, 1}, "\n"}}});
+    d.fixes.push_back(
+        {"insert a blank heading line above it", false, {{grammar::Span{heading.file, heading.line, 1, 1}, "\n"}}});
     std::size_t kept = from;
     for (std::size_t i = from; i < out.size(); ++i) {
         if (misread(out[i])) {

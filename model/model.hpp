@@ -46,9 +46,9 @@ struct FieldRecord {
 // cards (curve points, set ids, parts) are kept in `rows`, one per line.
 struct KeywordRecord {
     const keywords::KeywordSchema* schema = nullptr;
-    std::string keyword;                   // as written, upper case: "*SECTION_SPH_ELLIPSE"
-    std::vector<std::string_view> options; // option suffixes given
-    grammar::Span span;                    // the keyword name
+    std::string keyword;                         // as written, upper case: "*SECTION_SPH_ELLIPSE"
+    std::vector<std::string_view> options;       // option suffixes given
+    grammar::Span span;                          // the keyword name
     std::vector<std::vector<FieldRecord>> rows;  // one per decoded card line
 
     // The first field of that name in the block (over all rows), or nullptr.
@@ -75,20 +75,20 @@ struct ControlSph {
 
 struct Controls {
     ControlSph sph;
-    Setting<double> endtim{0.0};       // *CONTROL_TERMINATION
-    Setting<double> tssfac{0.9};       // *CONTROL_TIMESTEP
-    Setting<long long> erode{0};       // *CONTROL_TIMESTEP ERODE
-    Setting<double> q1{1.5}, q2{0.06}; // *CONTROL_BULK_VISCOSITY
+    Setting<double> endtim{0.0};        // *CONTROL_TERMINATION
+    Setting<double> tssfac{0.9};        // *CONTROL_TIMESTEP
+    Setting<long long> erode{0};        // *CONTROL_TIMESTEP ERODE
+    Setting<double> q1{1.5}, q2{0.06};  // *CONTROL_BULK_VISCOSITY
     bool bulk_viscosity_present = false;
     std::vector<grammar::Span> mpp_keywords;  // *CONTROL_MPP_* blocks: evidence of an MPP run
-    Setting<long long> soln{0};        // *CONTROL_SOLUTION: 0 structural, 1 thermal only, 2 coupled
+    Setting<long long> soln{0};               // *CONTROL_SOLUTION: 0 structural, 1 thermal only, 2 coupled
 };
 
 struct Section {
     Id id;
     std::string keyword;  // "*SECTION_SPH", "*SECTION_SPH_ELLIPSE", "*SECTION_SHELL"...
     bool sph = false, ellipse = false, interaction = false;
-    grammar::Span span;   // the SECID field
+    grammar::Span span;  // the SECID field
     Setting<double> cslh{1.2}, hmin{0.2}, hmax{2.0}, sphini{0.0}, death{1.0e20}, start{0.0};
     Setting<Kernel> kernel{Kernel::CubicSpline};
     long long shell_form = 0;  // *SECTION_SHELL ELFORM as written (12-15: 2D solids), 0 when not read
@@ -147,11 +147,11 @@ struct Nodes {
 };
 
 struct Particles {
-    std::vector<long long> node;        // node id (= element id)
-    std::vector<long long> part;        // PID as an integer (-1 when it could not be read: DK002)
-    std::vector<double> mass;           // > 0 mass; < 0 |mass| is a volume
-    std::vector<std::uint8_t> volume;   // 1 when *ELEMENT_SPH_VOLUME: mass holds a volume
-    std::vector<std::uint32_t> line;    // index into RawDeck::lines
+    std::vector<long long> node;       // node id (= element id)
+    std::vector<long long> part;       // PID as an integer (-1 when it could not be read: DK002)
+    std::vector<double> mass;          // > 0 mass; < 0 |mass| is a volume
+    std::vector<std::uint8_t> volume;  // 1 when *ELEMENT_SPH_VOLUME: mass holds a volume
+    std::vector<std::uint32_t> line;   // index into RawDeck::lines
     std::size_t size() const { return node.size(); }
 };
 
@@ -168,7 +168,7 @@ struct Model {
     std::vector<IdReference> id_references;  // ids named by generated keywords (model/id_links.hpp)
     Nodes nodes;
     Particles particles;
-    bool memory2_given = false;  // memory2= on *KEYWORD: MPP evidence
+    bool memory2_given = false;           // memory2= on *KEYWORD: MPP evidence
     std::optional<RadiossFacts> radioss;  // set for Radioss decks only (model/radioss_facts.hpp)
 
     const Part* part(const Id& id) const;

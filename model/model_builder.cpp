@@ -14,7 +14,8 @@ namespace {
 // ids by text see the id the solver reads (issue 26, class A).
 std::string record_text(const FieldValue& v) {
     const bool id_field = v.spec->type == keywords::FieldType::Integer || v.spec->type == keywords::FieldType::Label;
-    const bool reference = !v.text.empty() && (v.text[0] == '&' || (v.text.size() > 1 && v.text[0] == '-' && v.text[1] == '&'));
+    const bool reference =
+        !v.text.empty() && (v.text[0] == '&' || (v.text.size() > 1 && v.text[0] == '-' && v.text[1] == '&'));
     if (id_field && reference && v.valid) return std::to_string(static_cast<long long>(v.number));
     return std::string(v.text);
 }
@@ -63,9 +64,8 @@ void ModelBuilder::add_particles(const grammar::Block& block, const std::vector<
     }
 }
 
-void ModelBuilder::on_card(const grammar::Block& block, const keywords::KeywordMatch& match,
-                           const keywords::CardSpec&, const grammar::CardLine& line,
-                           const std::vector<FieldValue>& values) {
+void ModelBuilder::on_card(const grammar::Block& block, const keywords::KeywordMatch& match, const keywords::CardSpec&,
+                           const grammar::CardLine& line, const std::vector<FieldValue>& values) {
     // Generated layouts are checked, not read into the model, but the ids they name are followed.
     if (match.schema->generated) return links_.on_card(match, values);
     const std::string_view name = match.schema->name;
@@ -98,8 +98,8 @@ void ModelBuilder::on_card(const grammar::Block& block, const keywords::KeywordM
     row.reserve(values.size());
     for (const FieldValue& v : values) {
         if (v.spec->type == keywords::FieldType::Unused) continue;
-        row.push_back(FieldRecord{v.spec->name, v.spec->type, v.number, record_text(v), v.explicit_value, v.valid,
-                                  v.span});
+        row.push_back(
+            FieldRecord{v.spec->name, v.spec->type, v.number, record_text(v), v.explicit_value, v.valid, v.span});
     }
     model_.records.back().rows.push_back(std::move(row));
 }
@@ -211,10 +211,11 @@ Model ModelBuilder::finish(std::vector<diag::Diagnostic>& out) {
 
 Model build_model(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, DeckSummary* summary) {
     ModelBuilder builder(deck);
-    DeckSummary s = check_deck(deck, out, [&](const grammar::Block& b, const keywords::KeywordMatch& m,
-                                              const keywords::CardSpec& c, const grammar::CardLine& l,
-                                              const std::vector<FieldValue>& v) { builder.on_card(b, m, c, l, v); },
-                               &builder.bulk_visitor());
+    DeckSummary s = check_deck(
+        deck, out,
+        [&](const grammar::Block& b, const keywords::KeywordMatch& m, const keywords::CardSpec& c,
+            const grammar::CardLine& l, const std::vector<FieldValue>& v) { builder.on_card(b, m, c, l, v); },
+        &builder.bulk_visitor());
     if (summary) *summary = s;
     return builder.finish(out);
 }

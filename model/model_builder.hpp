@@ -50,7 +50,7 @@ private:
         ModelBuilder& owner_;
         bool particles_ = false;
         bool volume_ = false;
-        std::size_t base_ = 0;  // first slot of the block in the arrays
+        std::size_t base_ = 0;                           // first slot of the block in the arrays
         std::vector<std::vector<Irregular>> irregular_;  // per thread
     };
 

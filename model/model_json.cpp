@@ -66,8 +66,10 @@ json all_fields(const KeywordRecord& r, json written) {
         for (const keywords::FieldSpec& f : card.fields) {
             const std::string name(f.name);
             if (f.type == keywords::FieldType::Unused || out.contains(name)) continue;
-            if (written.contains(name)) out[name] = std::move(written[name]);
-            else out[name] = {{"value", default_of(f)}, {"explicit", false}, {"line", nullptr}, {"column", nullptr}};
+            if (written.contains(name))
+                out[name] = std::move(written[name]);
+            else
+                out[name] = {{"value", default_of(f)}, {"explicit", false}, {"line", nullptr}, {"column", nullptr}};
         }
     }
     for (auto& item : written.items())
@@ -111,8 +113,8 @@ std::optional<KeywordRecord> unwritten_record(const grammar::Block& b) {
     bool has_fields = false;
     for (const keywords::CardSpec* card : keywords::cards_for(*match))
         for (const keywords::FieldSpec& f : card->fields)
-            has_fields = has_fields || (card->repeat != keywords::CardRepeat::Repeated &&
-                                        f.type != keywords::FieldType::Unused);
+            has_fields =
+                has_fields || (card->repeat != keywords::CardRepeat::Repeated && f.type != keywords::FieldType::Unused);
     if (!has_fields) return std::nullopt;  // *KEYWORD, *END: nothing to show
     KeywordRecord r;
     r.schema = match->schema;

@@ -42,9 +42,10 @@ std::optional<std::string> RangeBudget::take(std::size_t extra) {
     // Twice the nodes: ranges that overlap or run past the last node stay REF006 and REF001
     // findings; only beyond that is the deck asking for memory it cannot mean.
     if (spent_ + extra + 1 > 2 * nodes())
-        return fmt::format("NEND asks for a range of {} particles; with the ranges before it that is more than "
-                           "twice the {} node(s) the deck defines",
-                           extra + 1, nodes());
+        return fmt::format(
+            "NEND asks for a range of {} particles; with the ranges before it that is more than "
+            "twice the {} node(s) the deck defines",
+            extra + 1, nodes());
     spent_ += extra + 1;
     return std::nullopt;
 }

@@ -43,8 +43,10 @@ StarterValue<T> RadiossBuilder::starter(std::string_view name, const RadiossBloc
         s.span = v->span;
         s.explicit_value = v->explicit_value;
         if (v->valid) {
-            if constexpr (std::is_integral_v<T>) s.written = grammar::saturating_integer<T>(v->number);
-            else s.written = static_cast<T>(v->number);
+            if constexpr (std::is_integral_v<T>)
+                s.written = grammar::saturating_integer<T>(v->number);
+            else
+                s.written = static_cast<T>(v->number);
         }
     }
     s.value = s.written;
@@ -89,7 +91,8 @@ void RadiossBuilder::begin(const RadiossBlock& b) {
     block_id_.reset();
     const std::string_view name = b.spec->name;
     // Ids of keywords with repeated lines are needed while the lines are read.
-    if (name == "/SPHCEL") block_id_ = header_id(b, 0, "a part id");
+    if (name == "/SPHCEL")
+        block_id_ = header_id(b, 0, "a part id");
     else if (name == "/BRICK" || name == "/TETRA4" || name == "/TETRA10" || name == "/PENTA6")
         block_id_ = header_id(b, 0, "a part id");
     else if (name == "/NODE" && model_.nodes.id.capacity() < model_.nodes.id.size() + b.block->line_count) {
@@ -114,23 +117,37 @@ void RadiossBuilder::card(const RadiossBlock& b, std::size_t index, std::uint32_
 void RadiossBuilder::end(const RadiossBlock& b) {
     // Law-specific tables (/MAT/LAW2...) are handled as their family (/MAT).
     const std::string_view n = b.spec->family.empty() ? b.spec->name : b.spec->family;
-    if (n == "/BEGIN") end_begin(b);
-    else if (n == "/PART") end_part(b);
+    if (n == "/BEGIN")
+        end_begin(b);
+    else if (n == "/PART")
+        end_part(b);
     else if (n == "/FRAME/FIX" || n == "/SKEW/FIX" || n == "/FRAME/MOV" || n == "/SKEW/MOV" || n == "/FRAME" ||
              n == "/SKEW")
         end_frame(b);
-    else if (n.rfind("/GRNOD", 0) == 0) end_group(b);
-    else if (n == "/PROP/SPH") end_sph_property(b);
-    else if (n == "/PROP/TYPE14") end_solid_property(b, 14);
-    else if (n == "/PROP/TYPE6") end_solid_property(b, 6);
-    else if (n == "/PROP") end_other_property(b);
-    else if (n == "/MAT") end_material(b);
-    else if (n == "/EOS/POLYNOMIAL") end_eos(b);
-    else if (n == "/SPHGLO") end_sphglo(b);
-    else if (n == "/SPHBCS") end_sphbcs(b);
-    else if (n == "/SPH/INOUT") end_inout(b);
-    else if (n == "/SPH/RESERVE") end_reserve(b);
-    else if (n.rfind("/DT", 0) == 0) end_dt(b);
+    else if (n.rfind("/GRNOD", 0) == 0)
+        end_group(b);
+    else if (n == "/PROP/SPH")
+        end_sph_property(b);
+    else if (n == "/PROP/TYPE14")
+        end_solid_property(b, 14);
+    else if (n == "/PROP/TYPE6")
+        end_solid_property(b, 6);
+    else if (n == "/PROP")
+        end_other_property(b);
+    else if (n == "/MAT")
+        end_material(b);
+    else if (n == "/EOS/POLYNOMIAL")
+        end_eos(b);
+    else if (n == "/SPHGLO")
+        end_sphglo(b);
+    else if (n == "/SPHBCS")
+        end_sphbcs(b);
+    else if (n == "/SPH/INOUT")
+        end_inout(b);
+    else if (n == "/SPH/RESERVE")
+        end_reserve(b);
+    else if (n.rfind("/DT", 0) == 0)
+        end_dt(b);
     else if (n == "/ANALY") {
         StarterValue<long long> v = starter<long long>("N2D3D", b);
         facts_.analysis = v.value;
@@ -184,12 +201,14 @@ void RadiossBuilder::add_element(const RadiossBlock& b, std::size_t card, std::u
                                  const std::vector<RadiossValue>& v) {
     if (!block_id_) return;
     const std::string_view name = b.spec->name;
-    RadiossSolids& s = name == "/BRICK" ? facts_.bricks : name == "/TETRA4" ? facts_.tetra4
-                       : name == "/TETRA10"                                  ? facts_.tetra10
-                                                                             : facts_.penta6;
+    RadiossSolids& s = name == "/BRICK"     ? facts_.bricks
+                       : name == "/TETRA4"  ? facts_.tetra4
+                       : name == "/TETRA10" ? facts_.tetra10
+                                            : facts_.penta6;
     if (name == "/TETRA10") {
         if (card == 0) {  // the id line; its nodes follow on the next line
-            pending_tetra10_.assign(1, v.empty() || !v[0].valid ? 0 : grammar::saturating_integer<long long>(v[0].number));
+            pending_tetra10_.assign(1,
+                                    v.empty() || !v[0].valid ? 0 : grammar::saturating_integer<long long>(v[0].number));
             pending_tetra10_line_ = line;
             return;
         }
@@ -207,8 +226,9 @@ void RadiossBuilder::add_element(const RadiossBlock& b, std::size_t card, std::u
     s.part.push_back(*block_id_);
     s.line.push_back(line);
     for (int k = 1; k <= s.nodes_per_element; ++k)
-        s.nodes.push_back(static_cast<std::size_t>(k) < v.size() && v[k].valid ? grammar::saturating_integer<long long>(v[k].number)
-                                                                                 : 0);
+        s.nodes.push_back(static_cast<std::size_t>(k) < v.size() && v[k].valid
+                              ? grammar::saturating_integer<long long>(v[k].number)
+                              : 0);
 }
 
 void RadiossBuilder::add_group_members(const std::vector<RadiossValue>& v) {

@@ -32,13 +32,12 @@ int radioss_law(std::string_view name) {
         return name.size() > 3 ? law : -1;
     }
     static const std::map<std::string_view, int> names = {
-        {"VOID", 0},       {"ELAST", 1},      {"PLAS_JOHNS", 2}, {"PLAS_ZERIL", 2}, {"HYDPLA", 3},
-        {"HYD_JCOOK", 4},  {"JWL", 5},        {"HYD_VISC", 6},   {"HYDRO", 6},      {"K-EPS", 6},
-        {"DPRAG1", 10},    {"BOUND", 11},     {"3D_COMP", 12},   {"RIGID", 13},     {"COMPSO", 14},
-        {"DPRAG", 21},     {"DAMA", 22},      {"PLAS_DAM", 23},  {"CONC", 24},      {"COMPSH", 25},
-        {"PLAS_BRIT", 27}, {"HONEYCOMB", 28}, {"HILL", 32},      {"VISC_FOAM", 33}, {"BOLTZMAN", 34},
-        {"FOAM_PLAS", 35}, {"PLAS_TAB", 36},  {"VISC_TAB", 38},  {"KELVINMAX", 40}, {"OGDEN", 42},
-        {"COWPER", 44},    {"STEINB", 49},    {"FOAM_TAB", 70}};
+        {"VOID", 0},      {"ELAST", 1},      {"PLAS_JOHNS", 2}, {"PLAS_ZERIL", 2}, {"HYDPLA", 3},     {"HYD_JCOOK", 4},
+        {"JWL", 5},       {"HYD_VISC", 6},   {"HYDRO", 6},      {"K-EPS", 6},      {"DPRAG1", 10},    {"BOUND", 11},
+        {"3D_COMP", 12},  {"RIGID", 13},     {"COMPSO", 14},    {"DPRAG", 21},     {"DAMA", 22},      {"PLAS_DAM", 23},
+        {"CONC", 24},     {"COMPSH", 25},    {"PLAS_BRIT", 27}, {"HONEYCOMB", 28}, {"HILL", 32},      {"VISC_FOAM", 33},
+        {"BOLTZMAN", 34}, {"FOAM_PLAS", 35}, {"PLAS_TAB", 36},  {"VISC_TAB", 38},  {"KELVINMAX", 40}, {"OGDEN", 42},
+        {"COWPER", 44},   {"STEINB", 49},    {"FOAM_TAB", 70}};
     auto it = names.find(name);
     return it == names.end() ? -1 : it->second;
 }
@@ -51,9 +50,8 @@ void RadiossBuilder::add_particle(const RadiossBlock&, std::uint32_t line, const
     p.mass.push_back(v[2].valid ? v[2].number : 0.0);  // resolved in finish: the property mp may apply
     p.volume.push_back(0);
     p.line.push_back(line);
-    facts_.cells.type.push_back(static_cast<std::uint8_t>(v[1].valid && v[1].number >= 0 && v[1].number < 256
-                                                              ? v[1].number
-                                                              : 255));
+    facts_.cells.type.push_back(
+        static_cast<std::uint8_t>(v[1].valid && v[1].number >= 0 && v[1].number < 256 ? v[1].number : 255));
     facts_.cells.mass.push_back(v[2].valid ? v[2].number : 0.0);
     facts_.cells.from_property.push_back(0);
 }
@@ -163,8 +161,9 @@ void RadiossBuilder::end_material(const RadiossBlock& b) {
     mat.span = b.arg_spans[id_arg];
     mat.density = setting_of(rho);
     // The starter requires RHO_I > 0 of every law but these (hm_read_mat.F90, message 683 'DENSITY').
-    static const std::set<std::string_view> no_density_check = {
-        "VOID", "LAW0", "BIMAT", "LAW20", "MULTIMAT", "LAW51", "SPR_GENE", "LAW108", "MULTIFLUID", "LAW151", "GAS"};
+    static const std::set<std::string_view> no_density_check = {"VOID",       "LAW0",   "BIMAT",    "LAW20",
+                                                                "MULTIMAT",   "LAW51",  "SPR_GENE", "LAW108",
+                                                                "MULTIFLUID", "LAW151", "GAS"};
     mat.has_density = value(rho_name) != nullptr && !no_density_check.count(b.args[0]);
     model_.materials.push_back(std::move(mat));
     facts_.materials.push_back(std::move(m));
@@ -210,9 +209,12 @@ void RadiossBuilder::add_initial_state(const RadiossBlock& b, std::size_t card, 
     }
     if (states.empty() || states.back().line > line) return;
     RadiossInitialState& s = states.back();
-    if (card == 1) s.eint = num(0), s.rho = num(1), s.h = num(2);
-    else if (card == 2) s.sigma = {num(0), num(1), num(2)};
-    else if (card == 3) s.epsp = num(0);
+    if (card == 1)
+        s.eint = num(0), s.rho = num(1), s.h = num(2);
+    else if (card == 2)
+        s.sigma = {num(0), num(1), num(2)};
+    else if (card == 3)
+        s.epsp = num(0);
 }
 
 void RadiossBuilder::end_sphglo(const RadiossBlock& b) {
@@ -237,7 +239,8 @@ void RadiossBuilder::end_sphglo(const RadiossBlock& b) {
 
 void RadiossBuilder::end_sphbcs(const RadiossBlock& b) {
     if (b.args.empty()) {
-        report("DK008", diag::Severity::Error, "/SPHBCS needs a type and an id: /SPHBCS/SLIDE|TIED/<id>", b.block->span);
+        report("DK008", diag::Severity::Error, "/SPHBCS needs a type and an id: /SPHBCS/SLIDE|TIED/<id>",
+               b.block->span);
         return;
     }
     RadiossSymmetry s;
@@ -251,11 +254,13 @@ void RadiossBuilder::end_sphbcs(const RadiossBlock& b) {
     }
     // The starter compares the first five letters with SLIDE and the first four with TIED.
     const std::string& t = b.args[0];
-    s.kind = t.rfind("SLIDE", 0) == 0 ? SymmetryKind::Slide : t.rfind("TIED", 0) == 0 ? SymmetryKind::Tied
-                                                                                       : SymmetryKind::Invalid;
+    s.kind = t.rfind("SLIDE", 0) == 0  ? SymmetryKind::Slide
+             : t.rfind("TIED", 0) == 0 ? SymmetryKind::Tied
+                                       : SymmetryKind::Invalid;
     s.dir = text("Dir", b);
     if (!s.dir.explicit_value) s.dir.value = "X";
-    const char axis = s.dir.value.empty() ? 'X' : static_cast<char>(std::toupper(static_cast<unsigned char>(s.dir.value[0])));
+    const char axis =
+        s.dir.value.empty() ? 'X' : static_cast<char>(std::toupper(static_cast<unsigned char>(s.dir.value[0])));
     s.axis = s.dir.value.size() == 1 && axis >= 'X' && axis <= 'Z' ? axis - 'X' : -1;
     s.frame_id = starter<long long>("frame_ID", b);
     s.grnod_id = starter<long long>("grnod_ID", b);
@@ -309,7 +314,7 @@ void RadiossBuilder::end_dt(const RadiossBlock& b) {
     facts_.engine_deck = true;
     RadiossDt d;
     const std::string& k = b.block->keyword;
-    d.kind = b.spec->name == "/DT/SPHCEL" ? DtKind::SphCell
+    d.kind = b.spec->name == "/DT/SPHCEL"  ? DtKind::SphCell
              : b.spec->name == "/DT/NODA"  ? DtKind::Nodal
              : b.spec->name == "/DT/BRICK" ? DtKind::Brick
              : b.args.empty()              ? DtKind::Global

@@ -19,13 +19,13 @@ namespace sphdeck::model {
 struct RadiossBlock {
     const grammar::Block* block = nullptr;
     const grammar::radioss::KeywordSpec* spec = nullptr;
-    std::vector<std::string> args;          // upper case: /SPHBCS/SLIDE/1 → {"SLIDE", "1"}
-    std::vector<std::string> written;       // as written
-    std::vector<grammar::Span> arg_spans;   // their columns on the header line
+    std::vector<std::string> args;         // upper case: /SPHBCS/SLIDE/1 → {"SLIDE", "1"}
+    std::vector<std::string> written;      // as written
+    std::vector<grammar::Span> arg_spans;  // their columns on the header line
     std::string title;
-    int format = 0;                         // `since` of the card format read
-    int version = 0;                        // the deck's version
-    bool engine = false;                    // in the engine deck
+    int format = 0;       // `since` of the card format read
+    int version = 0;      // the deck's version
+    bool engine = false;  // in the engine deck
 };
 
 class RadiossBuilder {
@@ -91,9 +91,9 @@ private:
     std::vector<diag::Diagnostic>& out_;
     Model model_;
     RadiossFacts facts_;
-    std::optional<long long> block_id_;            // the id of the open block, when it has one
-    std::vector<long long> pending_members_;       // /GRNOD members of the open block
-    std::vector<long long> pending_tetra10_;       // /TETRA10: the id line waiting for its nodes
+    std::optional<long long> block_id_;       // the id of the open block, when it has one
+    std::vector<long long> pending_members_;  // /GRNOD members of the open block
+    std::vector<long long> pending_tetra10_;  // /TETRA10: the id line waiting for its nodes
     std::uint32_t pending_tetra10_line_ = 0;
     std::vector<std::pair<long long, std::vector<long long>>> part_groups_;  // /GRNOD/PART: id → parts
 };

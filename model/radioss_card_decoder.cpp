@@ -59,8 +59,10 @@ void RadiossCardDecoder::report(const char* code, diag::Severity s, std::string 
 void RadiossCardDecoder::decode(const grammar::CardLine& line, const grammar::radioss::CardSpec& card, int version,
                                 bool list_directed, std::vector<RadiossValue>& values, std::string_view newer,
                                 bool trailing_checked, std::uint32_t quiet_until) {
-    if (list_directed) decode_tokens(line, card, values);
-    else decode_fixed(line, card, version, values, newer, trailing_checked, quiet_until);
+    if (list_directed)
+        decode_tokens(line, card, values);
+    else
+        decode_fixed(line, card, version, values, newer, trailing_checked, quiet_until);
 }
 
 const std::vector<grammar::FixedField>& RadiossCardDecoder::layout_of(const grammar::radioss::CardSpec& card,
@@ -91,7 +93,8 @@ void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const gramm
                                       bool trailing_checked, std::uint32_t quiet_until) {
     const std::size_t found_before = out_.size();
     const std::vector<grammar::FixedField>& positions = layout_of(card, version);
-    const std::uint32_t end = positions.empty() ? 0 : positions.back().start + std::min(positions.back().width, 1u << 20);
+    const std::uint32_t end =
+        positions.empty() ? 0 : positions.back().start + std::min(positions.back().width, 1u << 20);
     const bool text_card = !card.fields.empty() && card.fields.front().cell == Cell::Line;
     const std::string_view text = deck_.text(line);
     const grammar::CutReport cut = grammar::cut_fields(text, line, positions, end, fields_, !text_card);
@@ -127,7 +130,8 @@ void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const gramm
             last = at + lead + t.size();
         }
         if (first != std::string_view::npos) {
-            std::string message = fmt::format("text after column {} is past the card's last field and is ignored", from);
+            std::string message =
+                fmt::format("text after column {} is past the card's last field and is ignored", from);
             if (!newer.empty()) message += fmt::format(" ({}; the deck's Invers is {})", newer, version);
             report("DK006", diag::Severity::Warning, std::move(message), columns(line, first, last));
         }
@@ -146,10 +150,10 @@ void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const gramm
     if (!text_card && !cut.free_format && !cut.has_tab) {
         const std::string_view header = header_above(deck_, line, "#");
         if (out_.size() > found_before || glued_across_cells(text, positions) || !header.empty())
-            diagnose_radioss_line(
-                line, text, card, positions,
-                block_ < deck_.blocks.size() ? std::string_view(deck_.blocks[block_].keyword) : "its card", header,
-                out_, found_before);
+            diagnose_radioss_line(line, text, card, positions,
+                                  block_ < deck_.blocks.size() ? std::string_view(deck_.blocks[block_].keyword)
+                                                               : "its card",
+                                  header, out_, found_before);
         if (out_.size() == found_before && block_ < deck_.blocks.size())
             lone_shifts_.note(line, text, card, positions, deck_.blocks[block_].keyword);
     }
@@ -241,12 +245,12 @@ void RadiossCardDecoder::read_value(RadiossValue& v, std::string_view field, boo
         if (auto value = parameters_->value_of(*ref, block_, integer, v.spec->name, v.span, out_)) {
             v.number = integer ? std::trunc(*value) : *value;
             v.valid = !(integer && exceeds_integer_range(v.number));
-            if (!v.valid)
-                report("DK007", diag::Severity::Error, integer_range_message(v.spec->name, v.number), v.span);
+            if (!v.valid) report("DK007", diag::Severity::Error, integer_range_message(v.spec->name, v.number), v.span);
         }
         return;
     }
-    grammar::ValueToken t = grammar::classify_value(token, integer ? grammar::ValueShape::Integer : grammar::ValueShape::Real);
+    grammar::ValueToken t =
+        grammar::classify_value(token, integer ? grammar::ValueShape::Integer : grammar::ValueShape::Real);
     if (t.shape == grammar::ValueShape::Parameter) return;  // not reached: references are read above
     if (integer) {
         grammar::IntegerValue n = grammar::to_integer(t);
@@ -257,7 +261,8 @@ void RadiossCardDecoder::read_value(RadiossValue& v, std::string_view field, boo
         }
         if (n.written_as_real)
             report("DK004", diag::Severity::Warning,
-                   fmt::format("integer field {} written as real '{}'; read as {}", v.spec->name, shown(token), n.value),
+                   fmt::format("integer field {} written as real '{}'; read as {}", v.spec->name, shown(token),
+                               n.value),
                    v.span);
         v.number = static_cast<double>(n.value);
         if (exceeds_integer_range(v.number)) {

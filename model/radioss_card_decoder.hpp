@@ -44,9 +44,9 @@ public:
     // such text silently (KeywordSpec::trailing_checked).
     // `quiet_until` > 0: text between the card's last field and that column is read silently (a
     // generated layout's older format, which often ends before columns decks of its version fill).
-    void decode(const grammar::CardLine& line, const grammar::radioss::CardSpec& card, int version,
-                bool list_directed, std::vector<RadiossValue>& values, std::string_view newer = {},
-                bool trailing_checked = true, std::uint32_t quiet_until = 0);
+    void decode(const grammar::CardLine& line, const grammar::radioss::CardSpec& card, int version, bool list_directed,
+                std::vector<RadiossValue>& values, std::string_view newer = {}, bool trailing_checked = true,
+                std::uint32_t quiet_until = 0);
 
     // DK029 for lines whose integers were all pushed into the next cells (model/radioss_lone_shifts.hpp):
     // decided once the whole deck is read.

@@ -23,7 +23,8 @@ RadiossCardSequence::RadiossCardSequence(const std::vector<rad::CardSpec>& cards
             list_ = k;
             break;
         }
-    for (std::size_t k = 0; k < first_repeated_; ++k) conditional_ = conditional_ || cards[k].present_if || !cards[k].when.empty();
+    for (std::size_t k = 0; k < first_repeated_; ++k)
+        conditional_ = conditional_ || cards[k].present_if || !cards[k].when.empty();
     skip_absent();
 }
 

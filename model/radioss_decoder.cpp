@@ -110,8 +110,8 @@ private:
         }
         auto cached = suggestions_.find(name);
         if (cached == suggestions_.end())
-            cached = suggestions_.emplace(name, suggestions_.size() < 64 ? rad::suggest_keyword(name)
-                                                                         : std::nullopt).first;
+            cached =
+                suggestions_.emplace(name, suggestions_.size() < 64 ? rad::suggest_keyword(name) : std::nullopt).first;
         const std::optional<std::string>& better = cached->second;
         std::string message = fmt::format("unknown keyword {}: {}", name,
                                           engine ? "the engine stops at a keyword it does not know"
@@ -153,8 +153,7 @@ private:
     void walk(const grammar::Block& block) {
         if (block.keyword == "/END" || block.keyword == "/END/ENGINE") return;
         const std::size_t index = static_cast<std::size_t>(&block - deck_.blocks.data());
-        const bool engine =
-            (block.span.file < engine_.size() && engine_[block.span.file]) || engine_block_[index];
+        const bool engine = (block.span.file < engine_.size() && engine_[block.span.file]) || engine_block_[index];
         if (!engine) note_header_ids(block);
         const rad::KeywordLookup found = rad::lookup_keyword(block.keyword);
         std::size_t prefix = found.prefix_segments;
@@ -165,24 +164,28 @@ private:
         if (engine && rad::is_engine_key(block.keyword) && (!spec || !spec->engine)) return;
         if (!found.known && !(spec && spec->engine)) {
             if (!engine && rad::is_engine_only_key(block.keyword)) {
-                out_.push_back({"DK001", diag::Severity::Info,
+                out_.push_back({"DK001",
+                                diag::Severity::Info,
                                 fmt::format("{} is an engine keyword: the starter ignores it; it belongs in the "
                                             "engine deck <run>_0001.rad",
                                             keyword_name(block.keyword)),
-                                block.span, {}});
+                                block.span,
+                                {}});
                 return;
             }
             report_unknown(block, engine);
         }
         if (!spec) return;  // known by name, nothing to read (/SUBMODEL, /ENDSUB)
         if (spec->engine != engine) {
-            out_.push_back({"DK001", diag::Severity::Info,
+            out_.push_back({"DK001",
+                            diag::Severity::Info,
                             spec->engine ? fmt::format("{} is an engine keyword: the starter ignores it; it belongs "
                                                        "in the engine deck <run>_0001.rad",
                                                        keyword_name(block.keyword))
                                          : fmt::format("{} is a starter keyword: the engine deck ignores it",
                                                        keyword_name(block.keyword)),
-                            block.span, {}});
+                            block.span,
+                            {}});
             return;
         }
         if (!spec->decoded) return;
@@ -243,8 +246,8 @@ private:
             decoder_.decode(*line, cards[next.index], b.version, b.engine, values_, newer, table.trailing_checked,
                             quiet_until);
             if (table.generated && out_.size() > found_before)
-                settle_trailing_text(out_, found_before, *line, deck_.text(*line), table, format, next.index,
-                                     b.version, version_known_);
+                settle_trailing_text(out_, found_before, *line, deck_.text(*line), table, format, next.index, b.version,
+                                     version_known_);
             sequence.advance(next.index, values_);
             if (!b.engine) note_id_uses(table);
             if (to_builder)
@@ -292,8 +295,11 @@ private:
         std::string message = fmt::format("{} takes {} card(s) in format {}; {} more line(s) ignored", table.name,
                                           format.cards.size(), format.since, extra);
         if (!newer.empty()) message += fmt::format(" ({}; the deck's Invers is {})", newer, version);
-        out_.push_back({"DK009", diag::Severity::Warning, std::move(message),
-                        grammar::Span{line.file, line.line, 1, std::max<std::uint32_t>(deck_.length(line), 1) + 1}, {}});
+        out_.push_back({"DK009",
+                        diag::Severity::Warning,
+                        std::move(message),
+                        grammar::Span{line.file, line.line, 1, std::max<std::uint32_t>(deck_.length(line), 1) + 1},
+                        {}});
     }
 
     const grammar::RawDeck& deck_;
@@ -304,7 +310,7 @@ private:
     RadiossCardDecoder decoder_;
     RadiossParameters parameters_;
     std::vector<RadiossValue> values_;
-    std::vector<bool> engine_;  // per file: part of the engine deck
+    std::vector<bool> engine_;        // per file: part of the engine deck
     std::vector<bool> engine_block_;  // per block: before /END/ENGINE in a one-file deck
     RadiossReading* reading_ = nullptr;
     std::map<std::string, std::pair<grammar::Span, std::size_t>> unknown_;

@@ -33,17 +33,17 @@ struct RadiossField {
     grammar::Span span;
 };
 struct RadiossRecord {
-    std::string header;   // as written, upper case: "/PROP/SPH/7"
+    std::string header;        // as written, upper case: "/PROP/SPH/7"
     std::string_view keyword;  // the table's name: "/PROP/SPH"
     std::string title;
     grammar::Span span;
-    int format = 0;       // the card format read (its first version)
+    int format = 0;                    // the card format read (its first version)
     std::vector<RadiossField> fields;  // cards read once, in order
     std::size_t repeated_lines = 0;
 };
 struct RadiossReading {
-    std::vector<RadiossRecord> records;              // decoded blocks, in deck order
-    std::map<std::string, std::size_t> unknown;      // keyword name without ids → blocks
+    std::vector<RadiossRecord> records;          // decoded blocks, in deck order
+    std::map<std::string, std::size_t> unknown;  // keyword name without ids → blocks
 };
 // Reads the deck again as build_radioss_model does, keeping what each block said.
 RadiossReading read_radioss_records(const grammar::RawDeck& deck);

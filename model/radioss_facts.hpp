@@ -45,8 +45,8 @@ struct RadiossSphProperty {
     long long id = 0;
     std::string keyword;  // "/PROP/SPH" or "/PROP/TYPE34" as written (upper case)
     std::string title;
-    grammar::Span span;   // the header
-    int format = 0;       // the card format read (2026, 2019, 130, 51 or 44)
+    grammar::Span span;  // the header
+    int format = 0;      // the card format read (2026, 2019, 130, 51 or 44)
     StarterValue<double> mp, qa, qb, alpha_cs, h, xi_stab, hmin, hmax, hcst;
     StarterValue<long long> skew_id, h_1d, order;
     bool hmin_hmax_hcst_read = false;  // false when the format has no such fields (before 2026)
@@ -55,19 +55,19 @@ struct RadiossSphProperty {
 // /PROP/TYPE14 (SOLID) and /PROP/TYPE6 (SOL_ORTH) with their SOL2SPH fields (§5.8).
 struct RadiossSolidProperty {
     long long id = 0;
-    int type = 14;                     // 14 or 6
+    int type = 14;  // 14 or 6
     std::string keyword;
     grammar::Span span;
-    StarterValue<long long> isolid, iframe;  // value: 0 resolved through /DEF_SOLID (else 1)
-    StarterValue<long long> ndir, sph_part;  // SOL2SPH: particles per direction, the SPH part
-    bool sol2sph_card = false;         // the Ndir card is present
+    StarterValue<long long> isolid, iframe;           // value: 0 resolved through /DEF_SOLID (else 1)
+    StarterValue<long long> ndir, sph_part;           // SOL2SPH: particles per direction, the SPH part
+    bool sol2sph_card = false;                        // the Ndir card is present
     bool sol2sph() const { return ndir.value != 0; }  // the starter's pre-read switches SOL2SPH on
 };
 
 // /SPHCEL cells, parallel to Model::particles (same index).
 struct RadiossCells {
-    std::vector<std::uint8_t> type;    // Type as written: 0, 1, 2 (other values kept)
-    std::vector<double> mass;          // MASS as written (mass for Type 1, volume for Type 2)
+    std::vector<std::uint8_t> type;           // Type as written: 0, 1, 2 (other values kept)
+    std::vector<double> mass;                 // MASS as written (mass for Type 1, volume for Type 2)
     std::vector<std::uint8_t> from_property;  // 1: the particle takes mp from its property
 };
 
@@ -76,11 +76,11 @@ enum class SymmetryKind : std::uint8_t { Slide, Tied, Invalid };
 // /SPHBCS/<type>/<id> (§5.3).
 struct RadiossSymmetry {
     long long id = 0;
-    grammar::Span span;       // the header
+    grammar::Span span;  // the header
     SymmetryKind kind = SymmetryKind::Invalid;
-    std::string type_text;    // the word after /SPHBCS/ as written
-    grammar::Span type_span;  // its columns on the header line
-    int axis = -1;            // 0, 1, 2 for X, Y, Z; -1 when Dir is not one of them
+    std::string type_text;          // the word after /SPHBCS/ as written
+    grammar::Span type_span;        // its columns on the header line
+    int axis = -1;                  // 0, 1, 2 for X, Y, Z; -1 when Dir is not one of them
     StarterValue<std::string> dir;  // value "X" when blank (CFG default)
     StarterValue<long long> frame_id, grnod_id, ilev;
     std::optional<std::size_t> plane;  // index into Model::symmetry_planes when the plane is known
@@ -90,20 +90,20 @@ struct RadiossSymmetry {
 struct RadiossSphGlobal {
     bool present = false;
     grammar::Span span;
-    StarterValue<double> alpha_sort;   // 0 → 0.25
-    StarterValue<long long> maxsph, lneigh, nneigh;  // lneigh, nneigh: the starter's values
+    StarterValue<double> alpha_sort;                    // 0 → 0.25
+    StarterValue<long long> maxsph, lneigh, nneigh;     // lneigh, nneigh: the starter's values
     StarterValue<long long> isol2sph{1, 0, false, {}};  // 1 without a /SPHGLO or when 0 (hm_read_sphglo.F)
-    std::vector<grammar::Span> ignored;  // headers of the later /SPHGLO blocks
+    std::vector<grammar::Span> ignored;                 // headers of the later /SPHGLO blocks
 };
 
 // /SKEW and /FRAME (ids; fixed ones with their axes, moving ones with their nodes).
 struct RadiossFrame {
     long long id = 0;
-    bool skew = false;        // /SKEW (else /FRAME)
-    bool moving = false;      // anything but /FIX: not a fixed system
+    bool skew = false;    // /SKEW (else /FRAME)
+    bool moving = false;  // anything but /FIX: not a fixed system
     std::string keyword;
     grammar::Span span;
-    bool geometry = false;    // origin and axes known (fixed, or moving with located nodes)
+    bool geometry = false;  // origin and axes known (fixed, or moving with located nodes)
     std::array<double, 3> origin{};
     std::array<std::array<double, 3>, 3> axes{};  // unit X', Y', Z'
     std::array<long long, 3> nodes{};             // moving: node_ID1-3
@@ -121,13 +121,13 @@ struct RadiossNodeGroup {
 // /MAT/<law>/<id>: the law and what the sound speed needs.
 struct RadiossMaterial {
     long long id = 0;
-    int law = -1;             // -1 when the name is not known
-    std::string keyword;      // "/MAT/LAW6", "/MAT/HYD_VISC"...
+    int law = -1;         // -1 when the name is not known
+    std::string keyword;  // "/MAT/LAW6", "/MAT/HYD_VISC"...
     grammar::Span span;
-    grammar::Span law_span;   // the law segment of the header
-    double density = 0;       // RHO_I
+    grammar::Span law_span;         // the law segment of the header
+    double density = 0;             // RHO_I
     double young = 0, poisson = 0;  // elastic laws (card 2), 0 when not read
-    double bulk = 0;          // C1 of a law's own polynomial (LAW3/4/6 long forms), 0 when absent
+    double bulk = 0;                // C1 of a law's own polynomial (LAW3/4/6 long forms), 0 when absent
 };
 
 // /EOS/POLYNOMIAL/mat_ID.
@@ -152,9 +152,9 @@ struct RadiossInout {
     long long id = 0;
     grammar::Span span;
     StarterValue<long long> itype, part, surface;
-    StarterValue<double> dist;                  // Dist: particle control distance from the surface
+    StarterValue<double> dist;                     // Dist: particle control distance from the surface
     std::array<StarterValue<long long>, 3> nodes;  // node_ID1-3 (format 140 on): the frontier by nodes
-    StarterValue<double> fcut;                  // Fcut (format 140 on): Butterworth corner frequency
+    StarterValue<double> fcut;                     // Fcut (format 140 on): Butterworth corner frequency
     // The cards of its Itype (hm_read_sphio.F): functions of time and their scales (a scale 0
     // with a function is 1), the frontier's characteristic length (Itype 3), and from format 140
     // the three points M, M1, M2 of a frontier given by coordinates.
@@ -177,12 +177,12 @@ struct RadiossReserve {
 // /INISPHCEL/FULL (hm_read_inistate_d00.F): the initial state of one particle, named by its
 // /SPHCEL node id; the starter skips ids it does not find (warning 3045).
 struct RadiossInitialState {
-    long long cell = 0;                  // sphcel_ID
-    grammar::Span span;                  // its cell
-    std::uint32_t line = 0;              // index into RawDeck::lines
-    long long nvar = 0;                  // nvarsph: auxiliary values that follow
+    long long cell = 0;      // sphcel_ID
+    grammar::Span span;      // its cell
+    std::uint32_t line = 0;  // index into RawDeck::lines
+    long long nvar = 0;      // nvarsph: auxiliary values that follow
     double eint = 0, rho = 0, h = 0, epsp = 0;
-    std::array<double, 3> sigma{};       // Sigma1-3 (the starter sets the shear stresses to 0)
+    std::array<double, 3> sigma{};  // Sigma1-3 (the starter sets the shear stresses to 0)
 };
 
 enum class DtKind : std::uint8_t { SphCell, Nodal, Brick, Global, Other };
@@ -190,29 +190,29 @@ enum class DtKind : std::uint8_t { SphCell, Nodal, Brick, Global, Other };
 // An engine /DT card (§5.7), from the engine deck <run>_0001.rad.
 struct RadiossDt {
     DtKind kind = DtKind::Other;
-    std::string keyword;       // "/DT/SPHCEL/STOP"
-    std::string keyword3;      // "STOP", "DEL", "CST", ... ("" for /DT)
-    long long iflag = 0;       // /DT/NODA/CST/1, /DT/BRICK/DEL/1
+    std::string keyword;   // "/DT/SPHCEL/STOP"
+    std::string keyword3;  // "STOP", "DEL", "CST", ... ("" for /DT)
+    long long iflag = 0;   // /DT/NODA/CST/1, /DT/BRICK/DEL/1
     grammar::Span span;
     StarterValue<double> dtsca, dtmin;  // dtsca.value: 0 → the global /DT factor (0.9 in 3D)
-    bool in_starter = false;   // written in the starter deck, where the starter ignores it
+    bool in_starter = false;            // written in the starter deck, where the starter ignores it
 };
 
 // An id a generated card's cell names (FieldSpec::link), for the REF rules.
 struct RadiossIdUse {
-    char kind = 0;              // FieldSpec::link
+    char kind = 0;  // FieldSpec::link
     long long id = 0;
     grammar::Span span;
     std::string field, keyword;  // "grnd_ID1", "/RWALL/PLANE"
 };
 
 struct RadiossFacts {
-    int version = 2026;               // Invers of /BEGIN (the latest when absent)
+    int version = 2026;  // Invers of /BEGIN (the latest when absent)
     bool begin_present = false;
     grammar::Span version_span;
     std::string run_name;
     std::array<std::string, 3> input_units{"kg", "m", "s"}, work_units{"kg", "m", "s"};
-    long long analysis = 0;           // /ANALY N2D3D: 0 3D, 1 axisymmetric, 2 plane strain
+    long long analysis = 0;  // /ANALY N2D3D: 0 3D, 1 axisymmetric, 2 plane strain
     grammar::Span analysis_span;
     long long def_isolid = 0, def_iframe = 0;  // /DEF_SOLID (0 when absent)
 
@@ -229,11 +229,11 @@ struct RadiossFacts {
         penta6{6, {}, {}, {}, {}};
     std::vector<RadiossInout> inouts;
     std::vector<RadiossSurface> surfaces;
-    bool surfaces_known = true;       // false: a /SURF header without a readable id (ids unchecked)
+    bool surfaces_known = true;  // false: a /SURF header without a readable id (ids unchecked)
     std::vector<RadiossReserve> reserves;
     std::vector<RadiossInitialState> initial_states;
     std::vector<RadiossDt> time_steps;
-    bool engine_deck = false;         // an engine deck was read
+    bool engine_deck = false;  // an engine deck was read
     // Ids named by generated cards, and the ids the headers of the starter deck define per kind
     // (the integer segments after the name: /FUNCT/12, /GRNOD/NODE/5); a //SUBMODEL offsets ids,
     // so then none is judged.

@@ -26,15 +26,14 @@ json record_json(const RadiossRecord& r, const grammar::RawDeck& deck) {
     for (const RadiossField& f : r.fields) {
         const std::string name(f.name);
         if (fields.contains(name)) continue;  // first occurrence, as for LS-DYNA
-        fields[name] = {{"value", value_of(f)}, {"explicit", f.explicit_value}, {"line", f.span.line},
+        fields[name] = {{"value", value_of(f)},
+                        {"explicit", f.explicit_value},
+                        {"line", f.span.line},
                         {"column", f.span.column}};
     }
-    json out = {{"name", r.header},
-                {"keyword", r.keyword},
-                {"title", r.title},
-                {"file", deck.sources.file(r.span.file).display_name},
-                {"line", r.span.line},
-                {"card_format", r.format},
+    json out = {{"name", r.header},           {"keyword", r.keyword},
+                {"title", r.title},           {"file", deck.sources.file(r.span.file).display_name},
+                {"line", r.span.line},        {"card_format", r.format},
                 {"fields", std::move(fields)}};
     if (r.repeated_lines > 0) out["records"] = r.repeated_lines;  // nodes, particles, ids, rows
     return out;
@@ -42,8 +41,8 @@ json record_json(const RadiossRecord& r, const grammar::RawDeck& deck) {
 
 }  // namespace
 
-nlohmann::ordered_json radioss_to_json(const RadiossReading& reading, const Model& model,
-                                       const grammar::RawDeck& deck, bool list_particles) {
+nlohmann::ordered_json radioss_to_json(const RadiossReading& reading, const Model& model, const grammar::RawDeck& deck,
+                                       bool list_particles) {
     json keywords = json::array();
     for (const RadiossRecord& r : reading.records) keywords.push_back(record_json(r, deck));
     return {{"format", "radioss"},

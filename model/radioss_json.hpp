@@ -11,7 +11,7 @@
 namespace sphdeck::model {
 
 // `list_particles`: as dump --particles, every particle in `particles.list`.
-nlohmann::ordered_json radioss_to_json(const RadiossReading& reading, const Model& model,
-                                       const grammar::RawDeck& deck, bool list_particles = false);
+nlohmann::ordered_json radioss_to_json(const RadiossReading& reading, const Model& model, const grammar::RawDeck& deck,
+                                       bool list_particles = false);
 
 }  // namespace sphdeck::model

@@ -39,9 +39,13 @@ void RadiossLoneShifts::note(const grammar::CardLine& line, std::string_view tex
         if (auto shift = grammar::find_lone_shift(text, positions, types_, grammar::Judged::Integers)) {
             const auto end = static_cast<std::uint32_t>(text.size() + 1);
             const auto first = static_cast<std::uint32_t>(text.find_first_not_of(' ') + 1);
-            Candidate c{grammar::Span{line.file, line.line, first, end}, end, std::string(keyword), std::string(card.fields[shift->meant].name),
+            Candidate c{grammar::Span{line.file, line.line, first, end},
+                        end,
+                        std::string(keyword),
+                        std::string(card.fields[shift->meant].name),
                         std::string(card.fields[shift->read].name),
-                        std::string(text.substr(shift->begin, shift->end - shift->begin)), std::move(*shift)};
+                        std::string(text.substr(shift->begin, shift->end - shift->begin)),
+                        std::move(*shift)};
             candidates_.push_back(std::move(c));
             return;
         }
@@ -54,20 +58,22 @@ void RadiossLoneShifts::report(std::vector<diag::Diagnostic>& out) const {
     for (const Candidate& c : candidates_) {
         const int n = c.shift.columns;
         diag::Diagnostic d{
-            "DK029", diag::Severity::Error,
+            "DK029",
+            diag::Severity::Error,
             fmt::format("line shifted {} column{} right of the cells of {}: its {} integers end {} column{} past "
                         "the ends of their cells ('{}' is read as {}, not {})",
                         n, n == 1 ? "" : "s", c.keyword, c.shift.values, n, n == 1 ? "" : "s", c.value, c.read,
                         c.meant),
-            c.span, {}};
-        d.notes.push_back({grammar::Span{}, "nothing straddles a cell end; the deck's other integers end at their "
-                                            "cells' ends (right-aligned), these do not"});
+            c.span,
+            {}};
+        d.notes.push_back({grammar::Span{},
+                           "nothing straddles a cell end; the deck's other integers end at their "
+                           "cells' ends (right-aligned), these do not"});
         if (c.shift.realigned)
-            d.fixes.push_back(diag::Fix{fmt::format("move the values {} column{} left into their cells", n,
-                                                    n == 1 ? "" : "s"),
-                                        false,
-                                        {text::whole_line_edit(c.span.file, c.span.line, c.line_end - 1,
-                                                               *c.shift.realigned)}});
+            d.fixes.push_back(
+                diag::Fix{fmt::format("move the values {} column{} left into their cells", n, n == 1 ? "" : "s"),
+                          false,
+                          {text::whole_line_edit(c.span.file, c.span.line, c.line_end - 1, *c.shift.realigned)}});
         out.push_back(std::move(d));
     }
 }

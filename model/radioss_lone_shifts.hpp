@@ -36,7 +36,7 @@ public:
 
 private:
     struct Candidate {
-        grammar::Span span;  // the line, from its first value
+        grammar::Span span;          // the line, from its first value
         std::uint32_t line_end = 0;  // one past its last column
         std::string keyword, meant, read, value;
         grammar::LoneShift shift;

@@ -25,8 +25,8 @@ std::optional<OtherFormatField> field_of_other_format(const rad::KeywordSpec& ta
 }
 
 void settle_trailing_text(std::vector<diag::Diagnostic>& out, std::size_t from, const grammar::CardLine& line,
-                          std::string_view text, const rad::KeywordSpec& table, const rad::FormatSpec& format, std::size_t card, int version,
-                          bool version_known) {
+                          std::string_view text, const rad::KeywordSpec& table, const rad::FormatSpec& format,
+                          std::size_t card, int version, bool version_known) {
     for (std::size_t k = from; k < out.size();) {
         diag::Diagnostic& d = out[k];
         if (d.code != "DK006" || d.span.file != line.file || d.span.line != line.line || d.span.column == 0) {
@@ -41,7 +41,8 @@ void settle_trailing_text(std::vector<diag::Diagnostic>& out, std::size_t from, 
                 const auto in = field_of_other_format(table, format, card, first, first + 1, version);
                 if (!in) break;
                 past = in->last_column;
-                first = static_cast<std::uint32_t>(std::min<std::size_t>(text.find_first_not_of(" \t", past), text.size()));
+                first =
+                    static_cast<std::uint32_t>(std::min<std::size_t>(text.find_first_not_of(" \t", past), text.size()));
             }
             if (held || first >= d.span.end_column - 1) {
                 out.erase(out.begin() + static_cast<std::ptrdiff_t>(k));

@@ -32,7 +32,8 @@ std::optional<OtherFormatField> field_of_other_format(const grammar::radioss::Ke
 // false, the text other formats read as fields is left out of them (a finding of nothing else is
 // dropped); else an info when an older format reads the text as a field.
 void settle_trailing_text(std::vector<diag::Diagnostic>& out, std::size_t from, const grammar::CardLine& line,
-                          std::string_view text, const grammar::radioss::KeywordSpec& table, const grammar::radioss::FormatSpec& format,
-                          std::size_t card, int version, bool version_known);
+                          std::string_view text, const grammar::radioss::KeywordSpec& table,
+                          const grammar::radioss::FormatSpec& format, std::size_t card, int version,
+                          bool version_known);
 
 }  // namespace sphdeck::model

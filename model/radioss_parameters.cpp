@@ -71,11 +71,13 @@ const RadiossParameter* RadiossParameters::find(std::string_view name) const {
 
 void RadiossParameters::define(RadiossParameter p, std::vector<diag::Diagnostic>& out) {
     if (const RadiossParameter* first = find(p.name)) {
-        diag::Diagnostic d{"DK014", diag::Severity::Warning,
+        diag::Diagnostic d{"DK014",
+                           diag::Severity::Warning,
                            fmt::format("parameter '{}' is defined twice; the starter's choice is not documented, "
                                        "sphdeck keeps the first definition",
                                        p.name),
-                           p.span, {}};
+                           p.span,
+                           {}};
         d.notes.push_back({first->span, "first defined here"});
         out.push_back(std::move(d));
         return;
@@ -156,11 +158,13 @@ std::optional<double> RadiossParameters::value_of(const RadiossParameterReferenc
         return std::nullopt;
     }
     if (p->block >= block) {
-        diag::Diagnostic d{"DK012", diag::Severity::Error,
+        diag::Diagnostic d{"DK012",
+                           diag::Severity::Error,
                            fmt::format("parameter '{}' is used before its definition; the starter needs the "
                                        "/PARAMETER first (reader message 100106)",
                                        ref.name),
-                           span, {}};
+                           span,
+                           {}};
         d.notes.push_back({p->span, "defined here"});
         out.push_back(std::move(d));
         return std::nullopt;

@@ -61,7 +61,8 @@ public:
     // The value of `ref` for a cell of block `block`, or nullopt when it has none. Reports
     // DK012 / DK013 at `span`; `field` names the cell in messages.
     std::optional<double> value_of(const RadiossParameterReference& ref, std::size_t block, bool integer_cell,
-                                   std::string_view field, grammar::Span span, std::vector<diag::Diagnostic>& out) const;
+                                   std::string_view field, grammar::Span span,
+                                   std::vector<diag::Diagnostic>& out) const;
 
     const std::vector<RadiossParameter>& definitions() const { return definitions_; }
 
@@ -69,7 +70,7 @@ private:
     const RadiossParameter* find(std::string_view name) const;
     void define(RadiossParameter p, std::vector<diag::Diagnostic>& out);
 
-    std::vector<RadiossParameter> definitions_;  // first definition of each name, in reading order
+    std::vector<RadiossParameter> definitions_;             // first definition of each name, in reading order
     std::unordered_map<std::string, std::size_t> by_name_;  // into definitions_: cells look names up often
 };
 

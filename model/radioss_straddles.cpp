@@ -42,13 +42,13 @@ std::vector<Straddle> straddles(std::string_view text, const grammar::radioss::C
         if (i + 1 < positions.size() && positions[i + 1].start != b) continue;  // not adjacent
         // A one-column cell (the /BCS dof flags '111 110') is always filled from its first column: a run
         // from it into a wider cell (dof6 '10' over columns 10-11) is still one value across the boundary.
-        const bool flag_into_wider =
-            positions[i].width == 1 && i + 1 < positions.size() && positions[i + 1].width > 1;
+        const bool flag_into_wider = positions[i].width == 1 && i + 1 < positions.size() && positions[i + 1].width > 1;
         std::size_t s = b, e = b;
         while (s > 0 && !blank(text[s - 1])) --s;
         while (e < text.size() && !blank(text[e])) ++e;
-        const bool packed = (s == positions[i].start && !flag_into_wider) ||
-                            (i + 1 < positions.size() && e == std::size_t{positions[i + 1].start} + positions[i + 1].width);
+        const bool packed =
+            (s == positions[i].start && !flag_into_wider) ||
+            (i + 1 < positions.size() && e == std::size_t{positions[i + 1].start} + positions[i + 1].width);
         if (packed || grammar::parse_real(text.substr(s, e - s)).status != grammar::NumberStatus::Ok) continue;
         // A zero across the boundary ('.000000000' read as '.00000' and '0000') changes no value, unless
         // the next cell holds a value of its own that the lost zeros are then read with (BS '0.0' one
@@ -60,8 +60,9 @@ std::vector<Straddle> straddles(std::string_view text, const grammar::radioss::C
             i + 1 < positions.size() ? std::size_t{positions[i + 1].start} + positions[i + 1].width : e;
         // The next cell's own value, read with the lost zeros: harmless when it is blank or zero too
         // ('0000      .000000000' is 0 either way).
-        const std::string_view own =
-            e >= text.size() ? std::string_view{} : grammar::trim_blanks(text.substr(e, next_end > e ? next_end - e : 0));
+        const std::string_view own = e >= text.size()
+                                         ? std::string_view{}
+                                         : grammar::trim_blanks(text.substr(e, next_end > e ? next_end - e : 0));
         const grammar::RealValue own_value = grammar::parse_real(own);
         const bool next_clear =
             own.empty() || (own_value.status == grammar::NumberStatus::Ok && own_value.value == 0.0);
@@ -73,7 +74,9 @@ std::vector<Straddle> straddles(std::string_view text, const grammar::radioss::C
     return out;
 }
 
-std::string cell_columns(const grammar::FixedField& f) { return fmt::format("columns {}-{}", f.start + 1, f.start + f.width); }
+std::string cell_columns(const grammar::FixedField& f) {
+    return fmt::format("columns {}-{}", f.start + 1, f.start + f.width);
+}
 
 diag::Diagnostic straddle_finding(const grammar::CardLine& line, std::string_view text,
                                   const grammar::radioss::CardSpec& card,
@@ -90,20 +93,20 @@ diag::Diagnostic straddle_finding(const grammar::CardLine& line, std::string_vie
     else
         where = fmt::format("'{}' is read as the start of {} ({})", lost, card.fields[s.cell + 1].name,
                             cell_columns(positions[s.cell + 1]));
-    diag::Diagnostic d{
-        "RAD030", diag::Severity::Error,
-        fmt::format("'{}' straddles the end of cell {} ({}): the starter reads {} as '{}' and {}", whole, here.name,
-                    cell_columns(positions[s.cell]), here.name, kept, where),
-        grammar::Span{line.file, line.line, static_cast<std::uint32_t>(s.begin + 1),
-                      static_cast<std::uint32_t>(s.end + 1)},
-        {}};
+    diag::Diagnostic d{"RAD030",
+                       diag::Severity::Error,
+                       fmt::format("'{}' straddles the end of cell {} ({}): the starter reads {} as '{}' and {}", whole,
+                                   here.name, cell_columns(positions[s.cell]), here.name, kept, where),
+                       grammar::Span{line.file, line.line, static_cast<std::uint32_t>(s.begin + 1),
+                                     static_cast<std::uint32_t>(s.end + 1)},
+                       {}};
     // Safe fix: the number moved left by the columns it overruns, to end at its cell's end, when blanks
     // of its own cell stand before it: it is then read whole in its cell and nothing else moves.
     const std::size_t overrun = s.end - s.boundary;
     if (s.begin >= positions[s.cell].start + overrun &&
         text.substr(s.begin - overrun, overrun).find_first_not_of(' ') == std::string_view::npos)
-        d.fixes.push_back({fmt::format("move '{}' {} column{} left, to end at column {}, the end of {}", whole,
-                                       overrun, overrun == 1 ? "" : "s", s.boundary, here.name),
+        d.fixes.push_back({fmt::format("move '{}' {} column{} left, to end at column {}, the end of {}", whole, overrun,
+                                       overrun == 1 ? "" : "s", s.boundary, here.name),
                            true,
                            {{grammar::Span{line.file, line.line, static_cast<std::uint32_t>(s.begin - overrun + 1),
                                            static_cast<std::uint32_t>(s.end + 1)},
@@ -112,8 +115,8 @@ diag::Diagnostic straddle_finding(const grammar::CardLine& line, std::string_vie
 }
 
 bool within(const diag::Diagnostic& d, const grammar::CardLine& line, std::size_t begin, std::size_t end) {
-    return d.span.file == line.file && d.span.line == line.line && d.span.column >= 1 &&
-           d.span.column - 1 >= begin && d.span.column - 1 < end;
+    return d.span.file == line.file && d.span.line == line.line && d.span.column >= 1 && d.span.column - 1 >= begin &&
+           d.span.column - 1 < end;
 }
 
 // Moves the findings of out[from, end) that `take` accepts into notes of `cause`, then appends it.
@@ -121,8 +124,10 @@ template <class Take>
 void fold_and_add(std::vector<diag::Diagnostic>& out, std::size_t from, diag::Diagnostic cause, Take take) {
     std::vector<diag::Diagnostic> kept;
     for (std::size_t i = from; i < out.size(); ++i) {
-        if (take(out[i])) fold_into(cause, std::move(out[i]));
-        else kept.push_back(std::move(out[i]));
+        if (take(out[i]))
+            fold_into(cause, std::move(out[i]));
+        else
+            kept.push_back(std::move(out[i]));
     }
     out.erase(out.begin() + static_cast<std::ptrdiff_t>(from), out.end());
     for (auto& d : kept) out.push_back(std::move(d));
@@ -155,10 +160,9 @@ bool one_value_moved(std::string_view text, const std::vector<Straddle>& glued,
 
 }  // namespace
 
-void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
-                           const grammar::radioss::CardSpec& card, std::span<const grammar::FixedField> positions,
-                           std::string_view keyword, std::string_view header, std::vector<diag::Diagnostic>& out,
-                           std::size_t from) {
+void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text, const grammar::radioss::CardSpec& card,
+                           std::span<const grammar::FixedField> positions, std::string_view keyword,
+                           std::string_view header, std::vector<diag::Diagnostic>& out, std::size_t from) {
     auto glued = straddles(text, card, positions);
     const bool suspect = !glued.empty() || out.size() > from;
     if (!suspect && header.empty()) return;
@@ -202,7 +206,8 @@ void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
     if (shift && !suspect && !shift->changes_reading) return;
     if (shift) {
         const int n = std::abs(shift->columns);
-        diag::Diagnostic d{"DK029", shift->changes_reading ? diag::Severity::Error : diag::Severity::Warning,
+        diag::Diagnostic d{"DK029",
+                           shift->changes_reading ? diag::Severity::Error : diag::Severity::Warning,
                            fmt::format("line shifted {} column{} {} of the cells of {}", n, n == 1 ? "" : "s",
                                        shift->columns > 0 ? "right" : "left", keyword),
                            grammar::Span{line.file, line.line,
@@ -211,11 +216,11 @@ void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
                            {}};
         if (shift->from_header)
             d.notes.push_back({grammar::Span{}, "the `#` comment above names the cells at their columns"});
-        d.fixes.push_back(diag::Fix{fmt::format("move the values {} column{} {} into their cells", n,
-                                                n == 1 ? "" : "s", shift->columns > 0 ? "left" : "right"),
-                                    true,
-                                    {text::whole_line_edit(line.file, line.line, text.size(),
-                                                           std::move(shift->realigned))}});
+        d.fixes.push_back(
+            diag::Fix{fmt::format("move the values {} column{} {} into their cells", n, n == 1 ? "" : "s",
+                                  shift->columns > 0 ? "left" : "right"),
+                      true,
+                      {text::whole_line_edit(line.file, line.line, text.size(), std::move(shift->realigned))}});
         const bool explains = d.severity == diag::Severity::Error;  // a shift that changes no value explains nothing
         fold_and_add(out, from, std::move(d), [&](const diag::Diagnostic&) { return explains; });
         return;

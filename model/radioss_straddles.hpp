@@ -32,9 +32,8 @@ inline bool glued_across_cells(std::string_view text, std::span<const grammar::F
 // with it a line whose values all end a few columns past the ends of the cells it names is shifted, when
 // that changes what the starter reads (a one-column shift reads every value in the next cell, silently).
 // Cheap when nothing is glued across a boundary, nothing was found and there is no header.
-void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
-                           const grammar::radioss::CardSpec& card, std::span<const grammar::FixedField> positions,
-                           std::string_view keyword, std::string_view header, std::vector<diag::Diagnostic>& out,
-                           std::size_t from);
+void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text, const grammar::radioss::CardSpec& card,
+                           std::span<const grammar::FixedField> positions, std::string_view keyword,
+                           std::string_view header, std::vector<diag::Diagnostic>& out, std::size_t from);
 
 }  // namespace sphdeck::model

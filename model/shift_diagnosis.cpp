@@ -76,7 +76,8 @@ std::optional<diag::Diagnostic> straddling_value(const grammar::RawDeck& deck, c
         next.type == keywords::FieldType::Unused
             ? fmt::format("read as {} {}; '{}' falls in an unused field and is lost", here.name, kept, lost)
             : fmt::format("read as {} {} and {} {}", here.name, kept, next.name, lost);
-    diag::Diagnostic d{"DK029", diag::Severity::Error,
+    diag::Diagnostic d{"DK029",
+                       diag::Severity::Error,
                        fmt::format("'{}' runs across the end of {} (columns {}-{}) of {} {}: {}", whole, here.name,
                                    left.start + 1, boundary, block.keyword, card_name(*s.card), reading),
                        grammar::Span{s.line->file, s.line->line, static_cast<std::uint32_t>(found->begin + 1),
@@ -87,7 +88,8 @@ std::optional<diag::Diagnostic> straddling_value(const grammar::RawDeck& deck, c
         d.fixes.push_back(diag::Fix{fmt::format("move the line {} column{} left: '{}' then ends at column {}, the "
                                                 "end of {}",
                                                 n, n == 1 ? "" : "s", whole, boundary, here.name),
-                                    true, {whole_line_edit(deck, *s.line, std::move(*found->realigned))}});
+                                    true,
+                                    {whole_line_edit(deck, *s.line, std::move(*found->realigned))}});
     else
         d.notes.push_back({grammar::Span{}, fmt::format("moved {} column{} left, '{}' would end at column {}, the "
                                                         "end of {}",
@@ -103,27 +105,29 @@ std::optional<diag::Diagnostic> shifted_line(const grammar::RawDeck& deck, const
     if (!shift) return straddling_value(deck, block, s, text, slots);
     const int n = std::abs(shift->columns);
     const char* side = shift->columns > 0 ? "right" : "left";
-    diag::Diagnostic d{"DK029", shift->changes_reading ? diag::Severity::Error : diag::Severity::Warning,
+    diag::Diagnostic d{"DK029",
+                       shift->changes_reading ? diag::Severity::Error : diag::Severity::Warning,
                        fmt::format("line shifted {} column{} {} of the fields of {} {}", n, n == 1 ? "" : "s", side,
                                    block.keyword, card_name(*s.card)),
-                       line_span(deck, *s.line, true), {}};
+                       line_span(deck, *s.line, true),
+                       {}};
     if (auto note = reading_note(text, shift->realigned, slots, *s.card); !note.empty())
         d.notes.push_back({grammar::Span{}, std::move(note)});
     if (shift->from_header)
         d.notes.push_back({grammar::Span{}, "the `$#` header above names the fields at their columns"});
     d.fixes.push_back(diag::Fix{fmt::format("move the values {} column{} {} into their fields", n, n == 1 ? "" : "s",
                                             shift->columns > 0 ? "left" : "right"),
-                                true, {whole_line_edit(deck, *s.line, std::move(shift->realigned))}});
+                                true,
+                                {whole_line_edit(deck, *s.line, std::move(shift->realigned))}});
     return d;
 }
 
 // Every line of the block written in `written` and not read cleanly as is (at `read`), rewritten in
 // the columns every reader takes.
 std::vector<diag::TextEdit> rewrite_block(const grammar::RawDeck& deck, const grammar::Block& block,
-                                             const keywords::CardSpec& card,
-                                             std::span<const grammar::FixedField> written,
-                                             std::span<const grammar::FixedField> read,
-                                             std::span<const grammar::FixedField> to_write) {
+                                          const keywords::CardSpec& card, std::span<const grammar::FixedField> written,
+                                          std::span<const grammar::FixedField> read,
+                                          std::span<const grammar::FixedField> to_write) {
     std::vector<diag::TextEdit> edits;
     if (block.line_count > max_fix_lines) return edits;
     for (const grammar::CardLine* l = deck.begin_lines(block); l != deck.end_lines(block); ++l) {
@@ -152,10 +156,12 @@ std::optional<diag::Diagnostic> wrong_widths(const grammar::RawDeck& deck, const
         const auto read = keywords::layout(*s.card, block.format);
         const auto to_write = keywords::layout_to_write(block.keyword, *s.card, block.format);
         const grammar::CardLine& first = deck.lines[block.first_line];
-        diag::Diagnostic d{"DK030", diag::Severity::Error,
+        diag::Diagnostic d{"DK030",
+                           diag::Severity::Error,
                            fmt::format("lines written in {} where {} reads {}", written->described, block.keyword,
                                        grammar::describe_widths(read)),
-                           line_span(deck, first, true), {}};
+                           line_span(deck, first, true),
+                           {}};
         if (block.format != grammar::CardFormat::Standard)
             d.notes.push_back({block.span, fmt::format("the block is in {} format", grammar::to_string(block.format))});
         auto edits = rewrite_block(deck, block, *s.card, written->slots, read, to_write);
@@ -201,17 +207,19 @@ diag::Diagnostic lone_value_finding(const grammar::RawDeck& deck, const grammar:
                           n == 1 ? "" : "s", meant.name, f.start + 1, f.start + f.width, read.name)
             : fmt::format("its {} values end {} column{} past the ends of their fields ('{}' is read as {}, not {})",
                           shift.values, n, n == 1 ? "" : "s", value, read.name, meant.name);
-    diag::Diagnostic d{"DK029", diag::Severity::Error, fmt::format("{}: {}", head, what), line_span(deck, line, true),
-                       {}};
+    diag::Diagnostic d{
+        "DK029", diag::Severity::Error, fmt::format("{}: {}", head, what), line_span(deck, line, true), {}};
     if (auto note = reading_note(text, shift.realigned.value_or(std::string{}), slots, card);
         shift.realigned && !note.empty())
         d.notes.push_back({grammar::Span{}, std::move(note)});
-    d.notes.push_back({grammar::Span{}, "nothing straddles a field end; the deck's other numbers end at their fields' "
-                                        "ends (right-aligned), these do not"});
+    d.notes.push_back({grammar::Span{},
+                       "nothing straddles a field end; the deck's other numbers end at their fields' "
+                       "ends (right-aligned), these do not"});
     if (shift.realigned)
-        d.fixes.push_back(diag::Fix{fmt::format("move the values {} column{} left into their fields", n,
-                                                n == 1 ? "" : "s"),
-                                    refused, {whole_line_edit(deck, line, *shift.realigned)}});
+        d.fixes.push_back(
+            diag::Fix{fmt::format("move the values {} column{} left into their fields", n, n == 1 ? "" : "s"),
+                      refused,
+                      {whole_line_edit(deck, line, *shift.realigned)}});
     return d;
 }
 
@@ -253,16 +261,20 @@ void diagnose_shifts(const grammar::RawDeck& deck, const grammar::Block& block, 
             continue;
         }
         if (widths && d.span.line >= first.line && d.span.line <= last.line) {
-            if (causes[0].notes.size() < max_width_notes) fold_into(causes[0], std::move(d));
-            else ++hidden;
+            if (causes[0].notes.size() < max_width_notes)
+                fold_into(causes[0], std::move(d));
+            else
+                ++hidden;
             continue;
         }
         // A shift that changes nothing read (a warning) explains none of the line's findings.
         auto cause = std::find_if(causes.begin(), causes.end(), [&](const diag::Diagnostic& c) {
             return c.span.line == d.span.line && c.severity == diag::Severity::Error;
         });
-        if (!widths && cause != causes.end()) fold_into(*cause, std::move(d));
-        else kept.push_back(std::move(d));
+        if (!widths && cause != causes.end())
+            fold_into(*cause, std::move(d));
+        else
+            kept.push_back(std::move(d));
     }
     if (hidden > 0)
         causes[0].notes.push_back(

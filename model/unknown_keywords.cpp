@@ -31,27 +31,31 @@ void UnknownKeywords::add(const grammar::RawDeck& deck, const grammar::Block& bl
         return;
     }
     if (auto known = keywords::known_with_options(block.keyword)) {
-        out.push_back({"DK001", diag::Severity::Warning,
+        out.push_back({"DK001",
+                       diag::Severity::Warning,
                        fmt::format("{} is {} with {} sphdeck's tables do not give it ({}): its cards are "
                                    "not checked, and LS-DYNA stops here if it does not accept {} either",
                                    block.keyword, known->base, known->options.size() > 1 ? "options" : "an option",
                                    fmt::join(known->options, ", "), known->options.size() > 1 ? "them" : "the option"),
-                       block.span, {}});
+                       block.span,
+                       {}});
         return;
     }
     const std::optional<std::string>& better = suggestion(block.keyword);
     std::string message = fmt::format("unknown keyword {}: LS-DYNA stops at a keyword it does not know", block.keyword);
     if (better) message += fmt::format("; did you mean {}?", *better);
     diag::Diagnostic d{"DK001", diag::Severity::Error, std::move(message), block.span, {}};
-    d.notes.push_back({grammar::Span{}, "sphdeck reads the deck without this block: its cards are not checked, "
-                                        "and what they define or set is missing from the model"});
+    d.notes.push_back({grammar::Span{},
+                       "sphdeck reads the deck without this block: its cards are not checked, "
+                       "and what they define or set is missing from the model"});
     if (better) {
         // The name as written (the span covers '*' and the name, not a format suffix or arguments).
         const std::string_view line = deck.sources.line_text(block.span.file, block.span.line);
         const std::size_t from = block.span.column - 1;
         const std::size_t to = std::min<std::size_t>(block.span.end_column - 1, line.size());
         const std::string_view written = from < to ? line.substr(from, to - from) : std::string_view(block.keyword);
-        d.fixes.push_back({fmt::format("replace {} with {}", block.keyword, *better), false,
+        d.fixes.push_back({fmt::format("replace {} with {}", block.keyword, *better),
+                           false,
                            {{block.span, keywords::keyword_replacement(written, *better)}}});
     }
     out.push_back(std::move(d));

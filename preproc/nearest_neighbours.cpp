@@ -172,33 +172,33 @@ NearestNeighbours nearest_neighbours_grid(std::span<const double> x, std::span<c
     const std::size_t cells = g.occupied();
 #pragma omp parallel for num_threads(threads) schedule(static, 1) if (threads > 1)
     for (int t = 0; t < threads; ++t) {
-    const std::size_t from = cells * static_cast<std::size_t>(t) / static_cast<std::size_t>(threads);
-    const std::size_t to = cells * static_cast<std::size_t>(t + 1) / static_cast<std::size_t>(threads);
-    g.for_each_cell_rows(block_rows, from, to, [&](std::size_t o, NeighbourGrid::Cell at, const auto& block) {
-        const auto [first, last] = g.occupied_range(o);
-        const NeighbourGrid::BlockBounds block_bounds = g.block_bounds(at, 1);  // the cell's, not per point
-        for (std::uint32_t k = first; k < last; ++k) {
-            double best2 = std::numeric_limits<double>::infinity();
-            std::uint32_t best = NearestNeighbours::none;
-            for (auto [b, e] : block) scan(g, k, b, e, best2, best);
-            // Widen shell by shell until nothing outside the searched block can be closer; when the
-            // next block would hold more cells than there are points, scan all points instead.
-            for (std::uint32_t reach = 1; !g.block_covers_grid(at, reach); ++reach) {
-                const double clear = reach == 1 ? block_bounds.clearance(g.x()[k], g.y()[k], g.z()[k])
-                                                : g.block_clearance(g.x()[k], g.y()[k], g.z()[k], at, reach);
-                if (clear > 0 && best2 <= clear * clear) break;
-                if (g.block_cells(at, reach + 1) > static_cast<double>(n)) {
-                    scan(g, k, 0, static_cast<std::uint32_t>(n), best2, best);
-                    break;
+        const std::size_t from = cells * static_cast<std::size_t>(t) / static_cast<std::size_t>(threads);
+        const std::size_t to = cells * static_cast<std::size_t>(t + 1) / static_cast<std::size_t>(threads);
+        g.for_each_cell_rows(block_rows, from, to, [&](std::size_t o, NeighbourGrid::Cell at, const auto& block) {
+            const auto [first, last] = g.occupied_range(o);
+            const NeighbourGrid::BlockBounds block_bounds = g.block_bounds(at, 1);  // the cell's, not per point
+            for (std::uint32_t k = first; k < last; ++k) {
+                double best2 = std::numeric_limits<double>::infinity();
+                std::uint32_t best = NearestNeighbours::none;
+                for (auto [b, e] : block) scan(g, k, b, e, best2, best);
+                // Widen shell by shell until nothing outside the searched block can be closer; when the
+                // next block would hold more cells than there are points, scan all points instead.
+                for (std::uint32_t reach = 1; !g.block_covers_grid(at, reach); ++reach) {
+                    const double clear = reach == 1 ? block_bounds.clearance(g.x()[k], g.y()[k], g.z()[k])
+                                                    : g.block_clearance(g.x()[k], g.y()[k], g.z()[k], at, reach);
+                    if (clear > 0 && best2 <= clear * clear) break;
+                    if (g.block_cells(at, reach + 1) > static_cast<double>(n)) {
+                        scan(g, k, 0, static_cast<std::uint32_t>(n), best2, best);
+                        break;
+                    }
+                    for_each_shell_range(g, at, reach + 1,
+                                         [&](std::uint32_t b, std::uint32_t e) { scan(g, k, b, e, best2, best); });
                 }
-                for_each_shell_range(g, at, reach + 1,
-                                     [&](std::uint32_t b, std::uint32_t e) { scan(g, k, b, e, best2, best); });
+                const std::uint32_t i = g.order()[k];
+                out.distance[i] = std::sqrt(best2);
+                out.index[i] = best == NearestNeighbours::none ? best : g.order()[best];
             }
-            const std::uint32_t i = g.order()[k];
-            out.distance[i] = std::sqrt(best2);
-            out.index[i] = best == NearestNeighbours::none ? best : g.order()[best];
-        }
-    });
+        });
     }
     return out;
 }
@@ -243,8 +243,7 @@ constexpr std::uint32_t count_reach = 1;
 // the clones are the non-template wrappers below. Not under the sanitizers: the ifunc resolver
 // runs before their runtime is set up.
 #if defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(undefined_behavior_sanitizer) || \
-    __has_feature(coverage_sanitizer)
+#if __has_feature(address_sanitizer) || __has_feature(undefined_behavior_sanitizer) || __has_feature(coverage_sanitizer)
 #define SPHDECK_NO_CLONES 1
 #endif
 #endif
@@ -344,8 +343,10 @@ void count_symmetric(const NeighbourGrid& g, std::span<const double> support, do
         std::size_t lo = bound.back(), hi = cells;  // first cell whose points start at or after target
         while (lo < hi) {
             const std::size_t mid = lo + (hi - lo) / 2;
-            if (g.occupied_range(mid).first < target) lo = mid + 1;
-            else hi = mid;
+            if (g.occupied_range(mid).first < target)
+                lo = mid + 1;
+            else
+                hi = mid;
         }
         while (lo < cells && lo > 0 && g.occupied_cell(lo)[2] == g.occupied_cell(lo - 1)[2]) ++lo;
         bound.push_back(std::max(lo, bound.back()));
@@ -460,14 +461,16 @@ NeighbourCounts count_neighbours(std::span<const double> x, std::span<const doub
     // Coincident pairs: the few points with a pair inside the largest tolerance, checked exactly.
     for (std::uint32_t k : close_points) {
         const std::uint32_t i = order[k];
-        g.for_each_block_range(g.cell_of(g.x()[k], g.y()[k], g.z()[k]), count_reach, [&](std::uint32_t b, std::uint32_t e) {
-            for (std::uint32_t j = b; j < e; ++j) {
-                const double dx = g.x()[k] - g.x()[j], dy = g.y()[k] - g.y()[j], dz = g.z()[k] - g.z()[j];
-                const double t = std::max(tolerance_of(i), tolerance_of(order[j]));
-                if (j != k && dx * dx + dy * dy + dz * dz <= t * t)
-                    out.coincident.emplace_back(std::min(i, order[j]), std::max(i, order[j]));
-            }
-        });
+        g.for_each_block_range(g.cell_of(g.x()[k], g.y()[k], g.z()[k]), count_reach,
+                               [&](std::uint32_t b, std::uint32_t e) {
+                                   for (std::uint32_t j = b; j < e; ++j) {
+                                       const double dx = g.x()[k] - g.x()[j], dy = g.y()[k] - g.y()[j],
+                                                    dz = g.z()[k] - g.z()[j];
+                                       const double t = std::max(tolerance_of(i), tolerance_of(order[j]));
+                                       if (j != k && dx * dx + dy * dy + dz * dz <= t * t)
+                                           out.coincident.emplace_back(std::min(i, order[j]), std::max(i, order[j]));
+                                   }
+                               });
     }
     std::sort(out.coincident.begin(), out.coincident.end());
     out.coincident.erase(std::unique(out.coincident.begin(), out.coincident.end()), out.coincident.end());

@@ -28,8 +28,8 @@ namespace sphdeck::preproc {
 
 struct NearestNeighbours {
     static constexpr std::uint32_t none = 0xFFFFFFFFu;
-    std::vector<double> distance;       // per point; 0 when the set has no other point
-    std::vector<std::uint32_t> index;   // the nearest other point, `none` when there is none
+    std::vector<double> distance;      // per point; 0 when the set has no other point
+    std::vector<std::uint32_t> index;  // the nearest other point, `none` when there is none
 };
 
 // A typical spacing of the points: (bounding-box measure / count)^(1/d) over the axes the points

@@ -75,8 +75,10 @@ NeighbourGrid::NeighbourGrid(std::span<const double> x, std::span<const double> 
         dense_cells *= n_[a];
     }
     hashed_ = dense_cells > 2.0 * static_cast<double>(n) + 64.0;
-    if (hashed_) bin_hashed(x, y, z);
-    else bin_dense(x, y, z);
+    if (hashed_)
+        bin_hashed(x, y, z);
+    else
+        bin_dense(x, y, z);
 }
 
 NeighbourGrid::Cell NeighbourGrid::cell_of(double px, double py, double pz) const {
@@ -124,7 +126,8 @@ void NeighbourGrid::bin_dense(std::span<const double> x, std::span<const double>
         }
         run_total[static_cast<std::size_t>(t) + 1] = c1 > c0 ? start_[c1] : 0;
     }
-    for (int t = 0; t < threads; ++t) run_total[static_cast<std::size_t>(t) + 1] += run_total[static_cast<std::size_t>(t)];
+    for (int t = 0; t < threads; ++t)
+        run_total[static_cast<std::size_t>(t) + 1] += run_total[static_cast<std::size_t>(t)];
 #pragma omp parallel for num_threads(threads) schedule(static, 1)
     for (int t = 0; t < threads; ++t) {
         const auto [c0, c1] = share(cells, t, threads);
@@ -177,8 +180,11 @@ void NeighbourGrid::gather(std::span<const double> x, std::span<const double> y,
     const int threads = bin_threads(n);
     std::vector<std::size_t> bound(static_cast<std::size_t>(threads) + 1, slots);  // before any cursor moves
     for (int t = 0; t < threads; ++t)  // the first cell starting at or after the run's first point
-        bound[static_cast<std::size_t>(t)] = t == 0 ? 0 : static_cast<std::size_t>(std::lower_bound(
-            start_.begin(), start_.end() - 1, share(n, t, threads).first) - start_.begin());
+        bound[static_cast<std::size_t>(t)] =
+            t == 0
+                ? 0
+                : static_cast<std::size_t>(
+                      std::lower_bound(start_.begin(), start_.end() - 1, share(n, t, threads).first) - start_.begin());
 #pragma omp parallel for num_threads(threads) schedule(static, 1) if (threads > 1)
     for (int t = 0; t < threads; ++t) {
         const std::size_t c0 = bound[static_cast<std::size_t>(t)], c1 = bound[static_cast<std::size_t>(t) + 1];

@@ -30,8 +30,7 @@ public:
     NeighbourGrid() = default;
     // Bins the points (x[i], y[i], z[i]); `cell_size` > 0 is the cell edge wanted. Non-finite
     // coordinates are binned into the border cells.
-    NeighbourGrid(std::span<const double> x, std::span<const double> y, std::span<const double> z,
-                  double cell_size);
+    NeighbourGrid(std::span<const double> x, std::span<const double> y, std::span<const double> z, double cell_size);
 
     std::size_t size() const { return order_.size(); }
     double cell_size() const { return cell_; }
@@ -49,8 +48,7 @@ public:
     std::size_t occupied() const { return occupied_.size(); }
     Cell occupied_cell(std::size_t o) const { return decode(occupied_[o]); }
     Range occupied_range(std::size_t o) const {
-        return hashed_ ? Range{start_[o], start_[o + 1]}
-                       : Range{start_[occupied_[o]], start_[occupied_[o] + 1]};
+        return hashed_ ? Range{start_[o], start_[o + 1]} : Range{start_[occupied_[o]], start_[occupied_[o] + 1]};
     }
 
     // Cell coordinates of a point, clamped into the grid.
@@ -181,8 +179,8 @@ private:
     std::array<double, 3> origin_{};
     Cell n_{1, 1, 1};
     bool hashed_ = false;
-    std::vector<std::uint32_t> start_;     // dense: per cell + 1; hashed: per occupied cell + 1
-    std::vector<std::uint64_t> occupied_;  // dense: cell index; hashed: key; in cell order
+    std::vector<std::uint32_t> start_;       // dense: per cell + 1; hashed: per occupied cell + 1
+    std::vector<std::uint64_t> occupied_;    // dense: cell index; hashed: key; in cell order
     std::vector<std::uint64_t> table_keys_;  // hashed: open addressing, key + 1 (0 = empty)
     std::vector<std::uint32_t> table_ids_;
     std::vector<std::uint32_t> order_;

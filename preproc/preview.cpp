@@ -27,7 +27,8 @@ Stats stats_of(std::vector<T> v) {
     const std::size_t mid = v.size() / 2;
     std::nth_element(v.begin(), v.begin() + mid, v.end());
     s.median = static_cast<double>(v[mid]);
-    if (v.size() % 2 == 0) s.median = 0.5 * (s.median + static_cast<double>(*std::max_element(v.begin(), v.begin() + mid)));
+    if (v.size() % 2 == 0)
+        s.median = 0.5 * (s.median + static_cast<double>(*std::max_element(v.begin(), v.begin() + mid)));
     return s;
 }
 
@@ -126,7 +127,8 @@ void preview_part(const model::Model& m, const ParticlePositions& at, const Part
         if (!pp.located[i]) continue;
         ++count;
         masses.push_back(mass);
-        if (mode == model::IniMode::FromMass) volumes.push_back(particle_volume(particles.mass[i], volume_flag, pv.density));
+        if (mode == model::IniMode::FromMass)
+            volumes.push_back(particle_volume(particles.mass[i], volume_flag, pv.density));
     }
     if (count < pv.particles)
         add_note(pv.notes, fmt::format("{} particles without a *NODE left out", pv.particles - count));
@@ -146,8 +148,10 @@ void preview_part(const model::Model& m, const ParticlePositions& at, const Part
     // Positions: the model's own arrays when the part is every particle in node order, else a
     // copy of the part's located ones.
     PointCopy copy;
-    if (!whole) copy = at.gather(located);
-    else if (!at.in_place()) copy = at.gather_all();
+    if (!whole)
+        copy = at.gather(located);
+    else if (!at.in_place())
+        copy = at.gather_all();
     const PointSpans points = whole && at.in_place() ? at.all() : copy.spans();
     NearestNeighbours nn = mode == model::IniMode::Global
                                ? nearest_neighbours_all_pairs(points.x, points.y, points.z, progress)
@@ -226,8 +230,10 @@ void count_all_neighbours(const ParticlePositions& at, Preview& out) {
     // Positions: the model's own arrays when every particle has a node and they come in node
     // order (the usual case, and 24 bytes a particle less at the peak), else a copy.
     PointCopy copy;
-    if (!all_located) copy = at.gather(located);
-    else if (!at.in_place()) copy = at.gather_all();
+    if (!all_located)
+        copy = at.gather(located);
+    else if (!at.in_place())
+        copy = at.gather_all();
     const PointSpans points = all_located && at.in_place() ? at.all() : copy.spans();
     // Groups: the parts (pp.part itself when every particle is located), or every particle its
     // own group on Radioss decks.
@@ -268,7 +274,8 @@ void count_all_neighbours(const ParticlePositions& at, Preview& out) {
                                  counts.sample_stride));
     }
     for (auto [a, b] : counts.coincident)
-        out.coincident.emplace_back(static_cast<std::uint32_t>(model_index(a)), static_cast<std::uint32_t>(model_index(b)));
+        out.coincident.emplace_back(static_cast<std::uint32_t>(model_index(a)),
+                                    static_cast<std::uint32_t>(model_index(b)));
 }
 
 }  // namespace

@@ -21,10 +21,12 @@
 #include "model/model.hpp"
 #include "preproc/radioss_preview_types.hpp"
 namespace sphdeck::preproc {
-struct Stats { double min = 0, median = 0, max = 0; };
+struct Stats {
+    double min = 0, median = 0, max = 0;
+};
 struct PreviewOptions {
-    std::optional<model::IniMode> ini;            // --ini: forces the mode for every part
-    std::function<void(double fraction)> progress; // optional, called now and then with 0..1
+    std::optional<model::IniMode> ini;              // --ini: forces the mode for every part
+    std::function<void(double fraction)> progress;  // optional, called now and then with 0..1
     // ParticlePreview's x, y, z, mass, h and neighbours (smooth, the solver). Without them (the
     // rules' preview) they stay empty on LS-DYNA decks, 44 bytes a particle less: part, located
     // and nn_distance are always there, and Radioss decks always get every array.
@@ -34,33 +36,33 @@ struct PartPreview {
     long long part = 0;
     std::size_t particles = 0;
     double mass_total = 0;
-    double spacing = 0;          // median nearest-neighbour distance
-    double h0 = 0, h_min = 0, h_max = 0;   // h0 and HMIN*h0, HMAX*h0
+    double spacing = 0;                   // median nearest-neighbour distance
+    double h0 = 0, h_min = 0, h_max = 0;  // h0 and HMIN*h0, HMAX*h0
     Stats nn_distance, neighbours;
-    double sound_speed = 0;      // 0 when the material/EOS gives none
-    double dt_estimate = 0;      // CFL: TSSFAC * h0 / c (0 when c unknown)
-    double dt_radioss = 0;       // OpenRadioss particle time step at rest
+    double sound_speed = 0;  // 0 when the material/EOS gives none
+    double dt_estimate = 0;  // CFL: TSSFAC * h0 / c (0 when c unknown)
+    double dt_radioss = 0;   // OpenRadioss particle time step at rest
     model::IniMode ini = model::IniMode::BucketSort;
     bool sphini_given = false;
-    long long memory = 150;      // MEMORY of *CONTROL_SPH
-    std::string notes;           // why a value is missing, in words
+    long long memory = 150;  // MEMORY of *CONTROL_SPH
+    std::string notes;       // why a value is missing, in words
     // Added beyond the shared interface:
-    double support = 0;          // kernel support radius: support factor (2 cubic, 3 quintic) * h0
-    double density = 0;          // rho0 of the part's material (0 when unknown)
-    double mass_median = 0;      // median particle mass
-    std::string sound_source;    // where the sound speed comes from ("*EOS_MURNAGHAN", ...)
+    double support = 0;                         // kernel support radius: support factor (2 cubic, 3 quintic) * h0
+    double density = 0;                         // rho0 of the part's material (0 when unknown)
+    double mass_median = 0;                     // median particle mass
+    std::string sound_source;                   // where the sound speed comes from ("*EOS_MURNAGHAN", ...)
     std::optional<RadiossPartPreview> radioss;  // Radioss decks only (docs/radioss.md)
 };
-struct ParticlePreview {        // one entry per particle, in model order
+struct ParticlePreview {  // one entry per particle, in model order
     std::vector<double> x, y, z, mass, nn_distance, h;
     std::vector<std::uint32_t> neighbours;
     // Added beyond the shared interface:
-    std::vector<std::uint32_t> part;     // index into Preview::parts
-    std::vector<std::uint8_t> located;   // 0 when the particle's node is missing (then x = y = z = 0)
-    std::vector<std::uint8_t> planes;    // Radioss: /SPHBCS planes the particle lies on at t = 0 (else empty)
+    std::vector<std::uint32_t> part;    // index into Preview::parts
+    std::vector<std::uint8_t> located;  // 0 when the particle's node is missing (then x = y = z = 0)
+    std::vector<std::uint8_t> planes;   // Radioss: /SPHBCS planes the particle lies on at t = 0 (else empty)
 };
 struct Preview {
-    int dimension = 3;           // 2 or 3 (IDIM 2/-2 → 2)
+    int dimension = 3;  // 2 or 3 (IDIM 2/-2 → 2)
     std::vector<PartPreview> parts;
     ParticlePreview particles;
     // Added beyond the shared interface:
@@ -73,4 +75,4 @@ struct Preview {
     std::optional<RadiossPreview> radioss;  // Radioss decks only: planes, ghosts, time-step scales
 };
 Preview compute_preview(const model::Model& model, const PreviewOptions& options = {});
-}
+}  // namespace sphdeck::preproc

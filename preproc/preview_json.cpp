@@ -17,8 +17,10 @@ nlohmann::ordered_json radioss_part_json(const RadiossPartPreview& r) {
             {"h_rule", r.h_rule},
             {"h_evolution", r.h_evolution},
             {"h", {{"min", r.h_smallest}, {"median", r.h_median}, {"max", r.h_largest}}},
-            {"cells", {{"from_property", r.cells_from_property}, {"with_mass", r.cells_with_mass},
-                       {"with_volume", r.cells_with_volume}}},
+            {"cells",
+             {{"from_property", r.cells_from_property},
+              {"with_mass", r.cells_with_mass},
+              {"with_volume", r.cells_with_volume}}},
             {"mass_before_symmetry", r.mass_before},
             {"mass_after_symmetry", r.mass_after},
             {"on_planes", r.on_planes},
@@ -71,8 +73,13 @@ nlohmann::ordered_json part_preview_json(const PartPreview& pv) {
 nlohmann::ordered_json radioss_preview_json(const RadiossPreview& r) {
     nlohmann::ordered_json planes = nlohmann::ordered_json::array();
     for (const RadiossPlanePreview& p : r.planes)
-        planes.push_back({{"id", p.id}, {"type", p.type}, {"origin", p.origin}, {"normal", p.normal},
-                          {"on_plane", p.on_plane}, {"ghosts", p.ghosts}, {"ghosts_coded", p.ghosts_coded}});
+        planes.push_back({{"id", p.id},
+                          {"type", p.type},
+                          {"origin", p.origin},
+                          {"normal", p.normal},
+                          {"on_plane", p.on_plane},
+                          {"ghosts", p.ghosts},
+                          {"ghosts_coded", p.ghosts_coded}});
     return {{"alpha_sort", r.alpha_sort},
             {"h_max", r.h_max},
             {"dt_scale_particle", r.dt_scale_particle},

@@ -7,9 +7,7 @@
 
 namespace sphdeck::preproc {
 
-double radioss_h_from_volume(double volume) {
-    return volume > 0 ? std::cbrt(std::sqrt(2.0) * volume) : 0.0;
-}
+double radioss_h_from_volume(double volume) { return volume > 0 ? std::cbrt(std::sqrt(2.0) * volume) : 0.0; }
 
 RadiossCellH radioss_cell_h(int type, double cell_value, bool from_property, double property_h, double mp,
                             double density) {
@@ -28,13 +26,9 @@ double radioss_symmetry_reference_h(double property_h, double mp, double density
     return density > 0 ? radioss_h_from_volume(mp / density) : 0.0;
 }
 
-bool radioss_on_plane(double signed_distance, double reference_h) {
-    return signed_distance < 1e-3 * reference_h;
-}
+bool radioss_on_plane(double signed_distance, double reference_h) { return signed_distance < 1e-3 * reference_h; }
 
-double radioss_symmetry_mass(double mass, int planes) {
-    return mass / (1.0 + std::max(planes, 0));
-}
+double radioss_symmetry_mass(double mass, int planes) { return mass / (1.0 + std::max(planes, 0)); }
 
 bool radioss_ghost_documented(double signed_distance, double h_i, double largest_neighbour_h, double alpha_sort) {
     const double reach = h_i + largest_neighbour_h;

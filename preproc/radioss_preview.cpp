@@ -84,8 +84,7 @@ RadiossPreview radioss_preview_setup(const model::Model& m) {
     return r;
 }
 
-void radioss_preview_part(const model::Model& m, std::span<const std::uint32_t> members, std::size_t q,
-                          Preview& out) {
+void radioss_preview_part(const model::Model& m, std::span<const std::uint32_t> members, std::size_t q, Preview& out) {
     const model::RadiossFacts& f = *m.radioss;
     RadiossPreview& glob = *out.radioss;
     PartPreview& pv = out.parts[q];
@@ -121,14 +120,17 @@ void radioss_preview_part(const model::Model& m, std::span<const std::uint32_t> 
         const bool from_property = f.cells.from_property[i] != 0;
         const RadiossCellH h = radioss_cell_h(f.cells.type[i], f.cells.mass[i], from_property, r.property_h, r.mp, rho);
         ++by_source[static_cast<std::size_t>(h.source)];
-        if (from_property) ++r.cells_from_property;
-        else if (f.cells.type[i] == 2) ++r.cells_with_volume;
-        else ++r.cells_with_mass;
+        if (from_property)
+            ++r.cells_from_property;
+        else if (f.cells.type[i] == 2)
+            ++r.cells_with_volume;
+        else
+            ++r.cells_with_mass;
         pp.h[i] = from_distance ? r.hcst * largest_nn : h.h;
     }
     if (from_distance) {
-        r.h_rule = fmt::format("hcst {:.4g} x the largest nearest same-part distance {:.4g} (h_1D 3)", r.hcst,
-                               largest_nn);
+        r.h_rule =
+            fmt::format("hcst {:.4g} x the largest nearest same-part distance {:.4g} (h_1D 3)", r.hcst, largest_nn);
         if (!(largest_nn > 0))
             add_note(pv.notes, "h_1D 3 with no nearest-neighbour distance (one particle, or all at one place): h 0");
     } else {
@@ -139,9 +141,8 @@ void radioss_preview_part(const model::Model& m, std::span<const std::uint32_t> 
                                "unknown (no density)"};
         for (std::size_t k = 0; k < by_source.size(); ++k)
             if (by_source[k] > 0)
-                rules.push_back(sources > 1
-                                    ? fmt::format("{} ({} cells)", words[k], by_source[k])
-                                    : std::string(words[k]));
+                rules.push_back(sources > 1 ? fmt::format("{} ({} cells)", words[k], by_source[k])
+                                            : std::string(words[k]));
         for (std::size_t k = 0; k < rules.size(); ++k) r.h_rule += (k ? "; " : "") + rules[k];
         if (by_source[static_cast<std::size_t>(RadiossHSource::Unknown)] > 0)
             add_note(pv.notes, "the material density is not positive: h from the mass is unknown");
@@ -191,9 +192,12 @@ void radioss_preview_part(const model::Model& m, std::span<const std::uint32_t> 
     // take h from each particle's mass or volume (INI 2); a property h is SPHINI.
     pv.ini = from_distance ? model::IniMode::BucketSort : model::IniMode::FromMass;
     pv.support = 2.0 * pv.h0;  // the cubic spline, the only OpenRadioss kernel (§1.1)
-    if (r.h_1d == 3) pv.h_min = r.hmin * pv.h0, pv.h_max = r.hmax * pv.h0;
-    else if (r.h_1d == 2) pv.h_min = pv.h_max = pv.h0;
-    else pv.h_min = pv.h_max = 0;  // unbounded: docs/radioss.md
+    if (r.h_1d == 3)
+        pv.h_min = r.hmin * pv.h0, pv.h_max = r.hmax * pv.h0;
+    else if (r.h_1d == 2)
+        pv.h_min = pv.h_max = pv.h0;
+    else
+        pv.h_min = pv.h_max = 0;  // unbounded: docs/radioss.md
 
     // Sound speed and time steps at rest (§7.2, §7.3, §10).
     const RadiossSoundSpeed c = radioss_sound_speed(f, material);

@@ -59,7 +59,9 @@ double tetra_volume(const std::array<Vec, 4>& p) {
     const Vec a{p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
     const Vec b{p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
     const Vec c{p[3][0] - p[0][0], p[3][1] - p[0][1], p[3][2] - p[0][2]};
-    return (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+    return (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+            a[2] * (b[0] * c[1] - b[1] * c[0])) /
+           6;
 }
 
 struct PartSetup {
@@ -86,9 +88,10 @@ public:
                 if (n == 0) continue;
                 part.summary.skipped += n;
                 unsupported += n;
-                part.summary.notes.push_back(fmt::format("{} {} element(s) get no particles: SOL2SPH covers 8-node "
-                                                         "bricks and 4-node tetras only",
-                                                         n, other == &f_.tetra10 ? "/TETRA10" : "/PENTA6"));
+                part.summary.notes.push_back(
+                    fmt::format("{} {} element(s) get no particles: SOL2SPH covers 8-node "
+                                "bricks and 4-node tetras only",
+                                n, other == &f_.tetra10 ? "/TETRA10" : "/PENTA6"));
             }
             explain_no_particles(part.summary, unsupported);
             std::vector<double>& v = part.pitches;
@@ -108,9 +111,10 @@ private:
         if (s.skipped == 0)
             s.no_particles = "no particles are generated: the part has no elements";
         else if (unsupported == s.skipped)
-            s.no_particles = fmt::format("no particles are generated: its {} element(s) are all of kinds SOL2SPH does "
-                                         "not convert (it takes 8-node bricks and 4-node tetras)",
-                                         unsupported);
+            s.no_particles = fmt::format(
+                "no particles are generated: its {} element(s) are all of kinds SOL2SPH does "
+                "not convert (it takes 8-node bricks and 4-node tetras)",
+                unsupported);
         else
             s.no_particles = "no particles are generated: every element of the part was rejected";
     }
@@ -136,17 +140,18 @@ private:
             const model::Part* sph = m_.part(std::to_string(sum.sph_part));
             if (!sph) {
                 sum.sph_density = sum.solid_density;
-                sum.notes.push_back(fmt::format("SPH part {} is not defined: the solid's density is used",
-                                                sum.sph_part));
+                sum.notes.push_back(
+                    fmt::format("SPH part {} is not defined: the solid's density is used", sum.sph_part));
             } else {
                 sum.sph_density = density_of(*sph);
                 for (const auto& p : f_.sph_properties)
                     if (std::to_string(p.id) == sph->section.value) sum.sph_h = p.h.value, sum.sph_h_1d = p.h_1d.value;
             }
             if (sum.sph_density != sum.solid_density)
-                sum.notes.push_back(fmt::format("the SPH part's density {:.6g} differs from the solid's {:.6g}: the "
-                                                "particles do not carry the element mass",
-                                                sum.sph_density, sum.solid_density));
+                sum.notes.push_back(
+                    fmt::format("the SPH part's density {:.6g} differs from the solid's {:.6g}: the "
+                                "particles do not carry the element mass",
+                                sum.sph_density, sum.solid_density));
             parts.push_back(std::move(s));
         }
         return parts;
@@ -185,8 +190,8 @@ private:
             }
             if (missing) continue;
             if (distinct.size() < 4) {
-                issue(part, solids, e, fmt::format("{} {} has {} distinct nodes: no volume", kind, solids.id[e],
-                                                   distinct.size()));
+                issue(part, solids, e,
+                      fmt::format("{} {} has {} distinct nodes: no volume", kind, solids.id[e], distinct.size()));
             } else if (distinct.size() == 4) {
                 std::array<Vec, 4> corners;
                 std::size_t c = 0;
@@ -255,7 +260,10 @@ private:
         const double volume = brick_volume(p, -1, 1, -1, 1, -1, 1);
         const auto centre = sol2sph_brick_abscissae(n);
         const double half = 1.0 / n, weight = 8.0 / (n * n * n);
-        struct Sub { Vec x; double volume, starter; };
+        struct Sub {
+            Vec x;
+            double volume, starter;
+        };
         std::vector<Sub> subs;
         for (double r : centre)
             for (double s : centre)
@@ -293,9 +301,7 @@ double relative(double value, double reference) {
 
 }  // namespace
 
-std::size_t sol2sph_brick_count(int ndir) {
-    return ndir > 0 ? static_cast<std::size_t>(ndir) * ndir * ndir : 0;
-}
+std::size_t sol2sph_brick_count(int ndir) { return ndir > 0 ? static_cast<std::size_t>(ndir) * ndir * ndir : 0; }
 
 std::size_t sol2sph_tetra_count(int ndir) {
     return ndir > 0 ? static_cast<std::size_t>(ndir) * (ndir + 1) * (ndir + 2) / 6 : 0;

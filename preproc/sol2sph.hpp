@@ -31,7 +31,7 @@ std::vector<std::array<double, 4>> sol2sph_tetra_barycentrics(int ndir);
 
 struct Sol2sphIssue {
     long long element = 0;
-    std::uint32_t line = 0;   // index into RawDeck::lines (the element's line)
+    std::uint32_t line = 0;  // index into RawDeck::lines (the element's line)
     std::string message;
 };
 
@@ -39,16 +39,16 @@ struct Sol2sphPart {
     long long solid_part = 0, sph_part = 0, property = 0;
     int ndir = 0;
     std::size_t bricks = 0, tetras = 0, particles = 0;
-    std::size_t skipped = 0;              // elements without particles (issues, unsupported kinds)
+    std::size_t skipped = 0;  // elements without particles (issues, unsupported kinds)
     double solid_density = 0, sph_density = 0;
-    double element_mass = 0;              // solid density x exact volume of the elements used
-    double particle_mass = 0;             // sum of `mass`
-    double starter_mass = 0;              // sum of `mass_starter`
-    double pitch = 0;                     // median over elements of (V / particles per element)^(1/3)
-    double sph_h = 0;                     // the SPH part's /PROP/SPH h (0: not given)
+    double element_mass = 0;   // solid density x exact volume of the elements used
+    double particle_mass = 0;  // sum of `mass`
+    double starter_mass = 0;   // sum of `mass_starter`
+    double pitch = 0;          // median over elements of (V / particles per element)^(1/3)
+    double sph_h = 0;          // the SPH part's /PROP/SPH h (0: not given)
     long long sph_h_1d = 0;
-    grammar::Span span;                   // the part's /PART header id, for messages about the part
-    double relative_difference() const;   // (particle_mass - element_mass) / element_mass
+    grammar::Span span;                  // the part's /PART header id, for messages about the part
+    double relative_difference() const;  // (particle_mass - element_mass) / element_mass
     double starter_relative_difference() const;
     std::vector<std::string> notes;
     // Set when Ndir is valid but the part gets no particle at all (only /TETRA10 or /PENTA6
@@ -65,7 +65,7 @@ struct Sol2sphParticles {
 struct Sol2sph {
     std::vector<Sol2sphPart> parts;
     Sol2sphParticles particles;
-    std::vector<Sol2sphIssue> issues;     // elements that got no particles, and why
+    std::vector<Sol2sphIssue> issues;  // elements that got no particles, and why
 };
 
 Sol2sph generate_sol2sph(const model::Model& model);

@@ -72,8 +72,10 @@ SoundSpeed sound_speed(const model::Model& m, const model::Material* material, c
     const std::string& kw = material->keyword;
     const bool elastic = kw == "*MAT_ELASTIC" || kw == "*MAT_PLASTIC_KINEMATIC" || kw == "*MAT_JOHNSON_COOK";
     double young = number(r, "E"), poisson = number(r, "PR"), shear = 0;
-    if (kw == "*MAT_JOHNSON_COOK") shear = number(r, "G");
-    else if (elastic && young > 0 && poisson > -1) shear = young / (2 * (1 + poisson));
+    if (kw == "*MAT_JOHNSON_COOK")
+        shear = number(r, "G");
+    else if (elastic && young > 0 && poisson > -1)
+        shear = young / (2 * (1 + poisson));
 
     if (eos) {
         const double bulk = eos_sound_speed(m, *eos, rho0, out.note);
@@ -95,8 +97,10 @@ SoundSpeed sound_speed(const model::Model& m, const model::Material* material, c
         out.note = kw + ": no sound speed formula";
         return out;
     }
-    if (out.c > 0) out.source = kw;
-    else out.note = kw + " " + material->id + ": no positive sound speed from its moduli";
+    if (out.c > 0)
+        out.source = kw;
+    else
+        out.note = kw + " " + material->id + ": no positive sound speed from its moduli";
     return out;
 }
 

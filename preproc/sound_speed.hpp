@@ -19,9 +19,9 @@ double linear_polynomial_sound_speed(const double (&c)[7], double e0, double rho
 double elastic_sound_speed(double young, double poisson, double rho0);
 
 struct SoundSpeed {
-    double c = 0;         // 0 when unknown
-    std::string source;   // "*EOS_MURNAGHAN", "*MAT_ELASTIC", ...
-    std::string note;     // why c is missing or approximate, in words
+    double c = 0;        // 0 when unknown
+    std::string source;  // "*EOS_MURNAGHAN", "*MAT_ELASTIC", ...
+    std::string note;    // why c is missing or approximate, in words
 };
 
 // The sound speed of a part's material and EOS (either may be missing: nullptr).

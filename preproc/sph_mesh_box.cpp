@@ -29,8 +29,9 @@ MeshBox read_box(const model::KeywordRecord& r) {
     b.x0 = number(r, "XMIN"), b.y0 = number(r, "YMIN"), b.z0 = number(r, "ZMIN");
     const double lx = number(r, "XLEN"), ly = number(r, "YLEN"), lz = number(r, "ZLEN");
     if (number(r, "IDSEG") != 0)
-        b.skipped = "IDSEG is set: the solver removes the particles on one side of the segment set, which the "
-                    "preview does not follow";
+        b.skipped =
+            "IDSEG is set: the solver removes the particles on one side of the segment set, which the "
+            "preview does not follow";
     else if (b.nx == 0 || b.ny == 0 || b.nz == 0)
         b.skipped = "NX, NY and NZ must be whole numbers of at least 1";
     else if (!(lx > 0 && ly > 0 && lz > 0))
@@ -52,8 +53,8 @@ MeshBoxParticles generate_mesh_box_particles(const model::Model& model, std::siz
             // Counts are at most 1e9 each: compare in double before multiplying integers.
             const double n = static_cast<double>(b.nx) * static_cast<double>(b.ny) * static_cast<double>(b.nz);
             if (n > static_cast<double>(max_particles - std::min(max_particles, out.size())))
-                b.skipped = fmt::format("{:.0f} particles exceed what the preview generates ({} in all)", n,
-                                        max_particles);
+                b.skipped =
+                    fmt::format("{:.0f} particles exceed what the preview generates ({} in all)", n, max_particles);
         }
         if (b.skipped.empty()) {
             const double cell = b.dx * b.dy * b.dz;

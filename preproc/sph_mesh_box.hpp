@@ -23,9 +23,9 @@ struct MeshBox {
     long long part = 0;
     long long nx = 0, ny = 0, nz = 0;
     double x0 = 0, y0 = 0, z0 = 0, dx = 0, dy = 0, dz = 0;  // minimum corner, cell sizes
-    std::size_t particles = 0;                               // generated (0 when skipped)
-    grammar::Span span;                                      // the keyword
-    std::string skipped;                                     // why no particles, else empty
+    std::size_t particles = 0;                              // generated (0 when skipped)
+    grammar::Span span;                                     // the keyword
+    std::string skipped;                                    // why no particles, else empty
 };
 
 struct MeshBoxParticles {

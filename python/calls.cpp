@@ -48,8 +48,8 @@ std::optional<grammar::DeckFormat> format_of(const std::string& name) {
 // readable (the process's own permissions are the only bound, as for the command line).
 mcp::Roots unconfined_roots() {
     std::error_code ec;
-    const json list = {{"roots",
-                        {{{"uri", lsp::uri_from_path(fs::current_path(ec))}}, {{"uri", lsp::uri_from_path("/")}}}}};
+    const json list = {
+        {"roots", {{{"uri", lsp::uri_from_path(fs::current_path(ec))}}, {{"uri", lsp::uri_from_path("/")}}}}};
     return mcp::Roots::from_list(list);
 }
 

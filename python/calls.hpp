@@ -34,7 +34,7 @@ struct ConfigChoice {
 struct CheckRequest {
     DeckSource deck;
     std::optional<std::vector<std::string>> select;  // replaces the config's list
-    std::vector<std::string> ignore;                  // added to the config's list
+    std::vector<std::string> ignore;                 // added to the config's list
     ConfigChoice config;
 };
 

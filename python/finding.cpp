@@ -23,8 +23,9 @@ constexpr Attribute kAttributes[] = {
     {"column", "1-based column (bytes) where the finding's span starts; 0 when file is None"},
     {"end_column", "the column after the span's last character (exclusive); 0 when file is None"},
     {"notes", "secondary remarks: dicts of message, file, line, column, end_column"},
-    {"fixes", "mends the finding offers: dicts of description, safe and edits (file, line, column, "
-              "end_column, replacement)"},
+    {"fixes",
+     "mends the finding offers: dicts of description, safe and edits (file, line, column, "
+     "end_column, replacement)"},
     {"include_chain", "the files that include file, main deck first: dicts of file and line"},
     {"url", "the rule's section of docs/rules.md"},
 };
@@ -34,9 +35,9 @@ std::string text_of(const py::handle& value) { return py::str(value).cast<std::s
 // "deck.k:20:70: error: IAVIS 1 ... [SPH030]", as `sphdeck check --format concise` writes the finding.
 std::string concise(const Finding& f) {
     const py::object file = f.fields["file"];
-    const std::string where = file.is_none() ? "sphdeck"
-                                             : text_of(file) + ":" + text_of(f.fields["line"]) + ":" +
-                                                   text_of(f.fields["column"]);
+    const std::string where = file.is_none()
+                                  ? "sphdeck"
+                                  : text_of(file) + ":" + text_of(f.fields["line"]) + ":" + text_of(f.fields["column"]);
     return where + ": " + text_of(f.fields["severity"]) + ": " + text_of(f.fields["message"]) + " [" +
            text_of(f.fields["code"]) + "]";
 }
@@ -55,8 +56,9 @@ void bind_finding(py::module_& module) {
         finding.def_property_readonly(
             a.name, [name](const Finding& f) { return py::object(f.fields[py::str(name)]); }, a.doc);
     }
-    finding.def("to_dict", [](const Finding& f) { return py::dict(f.fields.attr("copy")()); },
-                "The finding as the dict of its JSON object (a copy).");
+    finding.def(
+        "to_dict", [](const Finding& f) { return py::dict(f.fields.attr("copy")()); },
+        "The finding as the dict of its JSON object (a copy).");
     finding.def("__str__", &concise);
     finding.def("__repr__", [](const Finding& f) { return "<Finding " + concise(f) + ">"; });
     finding.def("__eq__", [](const Finding& f, const py::object& other) {

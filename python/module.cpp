@@ -32,9 +32,7 @@ auto without_gil(Work&& work) {
     }
 }
 
-bool is_path_like(const py::handle& value) {
-    return py::hasattr(value, "__fspath__");
-}
+bool is_path_like(const py::handle& value) { return py::hasattr(value, "__fspath__"); }
 
 std::string fspath(const py::handle& value) {
     return py::module_::import("os").attr("fspath")(value).cast<std::string>();
@@ -90,7 +88,7 @@ ConfigChoice config_choice(const py::object& value) {
 }
 
 py::list check_deck(const py::object& path_or_text, const py::object& format, const py::object& select,
-               const py::object& ignore, const py::object& config, const std::string& name) {
+                    const py::object& ignore, const py::object& config, const std::string& name) {
     CheckRequest request;
     request.deck = deck_source(path_or_text, name, format);
     request.select = selectors(select);
@@ -114,8 +112,9 @@ py::list smooth_deck(const py::object& path_or_text, std::optional<int> ini, con
 PYBIND11_MODULE(sphdeck, m) {
     using namespace sphdeck::python;
     using namespace pybind11::literals;
-    m.doc() = "sphdeck: checks, fixes, formats and previews LS-DYNA and OpenRadioss SPH decks (the engine of the "
-              "sphdeck command line).";
+    m.doc() =
+        "sphdeck: checks, fixes, formats and previews LS-DYNA and OpenRadioss SPH decks (the engine of the "
+        "sphdeck command line).";
     m.attr("__version__") = SPHDECK_VERSION;
     py::register_exception<Failure>(m, "Error").attr("__doc__") =
         "What makes the sphdeck command exit 2: a deck that cannot be read, a bad sphdeck.toml, an unknown rule "

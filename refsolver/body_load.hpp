@@ -17,8 +17,8 @@ struct LoadCurve {
 };
 
 struct BodyLoad {
-    int axis = 1;       // 0 x, 1 y, 2 z
-    double scale = 1;   // SF
+    int axis = 1;      // 0 x, 1 y, 2 z
+    double scale = 1;  // SF
     LoadCurve curve;
 };
 

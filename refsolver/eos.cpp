@@ -64,7 +64,8 @@ void EquationOfState::evaluate(double rho, double e, double& p, double& c_out) c
     switch (kind) {
         case Kind::LinearPolynomial: {
             const bool expansion = mu < 0;
-            dp_dmu = c[1] + (expansion ? 0 : 2 * c[2] * mu) + 3 * c[3] * mu * mu + (c[5] + (expansion ? 0 : 2 * c[6] * mu)) * E;
+            dp_dmu = c[1] + (expansion ? 0 : 2 * c[2] * mu) + 3 * c[3] * mu * mu +
+                     (c[5] + (expansion ? 0 : 2 * c[6] * mu)) * E;
             dp_dE = c[4] + c[5] * mu + (expansion ? 0 : c[6] * mu * mu);
             break;
         }

@@ -24,8 +24,10 @@ struct CubicSpline {
     double value(double r, double h) const {
         const double q = r / h;
         double theta = 0;
-        if (q <= 1) theta = 1 - 1.5 * q * q + 0.75 * q * q * q;
-        else if (q < 2) theta = 0.25 * (2 - q) * (2 - q) * (2 - q);
+        if (q <= 1)
+            theta = 1 - 1.5 * q * q + 0.75 * q * q * q;
+        else if (q < 2)
+            theta = 0.25 * (2 - q) * (2 - q) * (2 - q);
         return normalisation() / h_power(h) * theta;
     }
 

@@ -67,8 +67,10 @@ std::vector<std::size_t> split_cells(const NeighbourGrid& grid, std::size_t poin
         std::size_t lo = 0, hi = grid.occupied();
         while (lo < hi) {  // first cell whose range starts at or after `target`
             const std::size_t mid = (lo + hi) / 2;
-            if (grid.occupied_range(mid).first < target) lo = mid + 1;
-            else hi = mid;
+            if (grid.occupied_range(mid).first < target)
+                lo = mid + 1;
+            else
+                hi = mid;
         }
         first[static_cast<std::size_t>(t)] = lo;
     }
@@ -106,11 +108,13 @@ void NeighbourList::build(Particles& s, double search_radius, int threads, bool 
     const double half = 0.5 * std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
     const float r2 = static_cast<float>(std::pow(radius + 4e-6 * (half + radius), 2));
     ScanCandidates &reals = reals_, &images = images_;
-    fill(reals, grid, centre, team, [&](std::size_t q) { return s.active[q]; },
-         [](std::size_t q) { return static_cast<std::uint32_t>(q); });
-    fill(images, ghost_grid, centre, team,
-         [&](std::size_t q) { return s.active[s.ghost_source[ghost_grid.order()[q]]]; },
-         [&](std::size_t q) { return static_cast<std::uint32_t>(real + ghost_grid.order()[q]); });
+    fill(
+        reals, grid, centre, team, [&](std::size_t q) { return s.active[q]; },
+        [](std::size_t q) { return static_cast<std::uint32_t>(q); });
+    fill(
+        images, ghost_grid, centre, team,
+        [&](std::size_t q) { return s.active[s.ghost_source[ghost_grid.order()[q]]]; },
+        [&](std::size_t q) { return static_cast<std::uint32_t>(real + ghost_grid.order()[q]); });
 
     const std::vector<std::size_t> first_cell = split_cells(grid, real, team);
     forward_offsets.assign(real + 1, 0);
@@ -136,7 +140,8 @@ void NeighbourList::build(Particles& s, double search_radius, int threads, bool 
                     if (dz == 0 && dy <= 0) continue;
                     const long long iy = static_cast<long long>(c[1]) + dy, iz = static_cast<long long>(c[2]) + dz;
                     if (iy < 0 || iy >= n[1] || iz >= n[2]) continue;
-                    rows[row_count++] = grid.row_range(x0, x1, static_cast<std::uint32_t>(iy), static_cast<std::uint32_t>(iz));
+                    rows[row_count++] =
+                        grid.row_range(x0, x1, static_cast<std::uint32_t>(iy), static_cast<std::uint32_t>(iz));
                 }
             const std::uint32_t own_row_end = grid.row_range(c[0], x1, c[1], c[2]).second;
             for (std::uint32_t i = first; i < last; ++i) {
@@ -144,7 +149,8 @@ void NeighbourList::build(Particles& s, double search_radius, int threads, bool 
                     const float p[3] = {reals.x[i], reals.y[i], reals.z[i]};
                     // Same row: the rest of this cell and the next two cells along x.
                     scan(reals, i + 1, own_row_end, p, r2, mine.forward, fu);
-                    for (int r = 0; r < row_count; ++r) scan(reals, rows[r].first, rows[r].second, p, r2, mine.forward, fu);
+                    for (int r = 0; r < row_count; ++r)
+                        scan(reals, rows[r].first, rows[r].second, p, r2, mine.forward, fu);
                     if (near_plane[i])
                         ghost_grid.for_each_block_range(ghost_grid.cell_of(s.x[i], s.y[i], s.z[i]), 2,
                                                         [&](std::uint32_t b, std::uint32_t e) {
@@ -177,8 +183,10 @@ void NeighbourList::build(Particles& s, double search_radius, int threads, bool 
         forward.resize(forward_used[0]), ghost.resize(ghost_used[0]);
         for (auto [spare, list] : {std::pair{&chunks_[0].forward, &forward}, {&chunks_[0].ghost, &ghost}})
             spare->resize(std::max(spare->capacity(), list->size() + list->size() / 4 + 64));
-        if (full) fill_full_lists();
-        else offsets.clear(), neighbours.clear();
+        if (full)
+            fill_full_lists();
+        else
+            offsets.clear(), neighbours.clear();
         return;
     }
     forward.resize(forward_base.back());
@@ -190,12 +198,16 @@ void NeighbourList::build(Particles& s, double search_radius, int threads, bool 
             forward_offsets[i + 1] += static_cast<std::uint32_t>(forward_base[t]);
             ghost_offsets[i + 1] += static_cast<std::uint32_t>(ghost_base[t]);
         }
-        std::copy_n(chunks_[t].forward.begin(), forward_used[t], forward.begin() + static_cast<std::ptrdiff_t>(forward_base[t]));
-        std::copy_n(chunks_[t].ghost.begin(), ghost_used[t], ghost.begin() + static_cast<std::ptrdiff_t>(ghost_base[t]));
+        std::copy_n(chunks_[t].forward.begin(), forward_used[t],
+                    forward.begin() + static_cast<std::ptrdiff_t>(forward_base[t]));
+        std::copy_n(chunks_[t].ghost.begin(), ghost_used[t],
+                    ghost.begin() + static_cast<std::ptrdiff_t>(ghost_base[t]));
     }
     // Cells hold at least one particle, so every particle belongs to a thread; offsets[0] = 0.
-    if (full) fill_full_lists();
-    else offsets.clear(), neighbours.clear();
+    if (full)
+        fill_full_lists();
+    else
+        offsets.clear(), neighbours.clear();
 }
 
 // Full lists from the half lists: particle i lists its backward partners (ascending), then its
@@ -205,12 +217,14 @@ void NeighbourList::fill_full_lists() {
     offsets.assign(real + 1, 0);
     for (std::uint32_t j : forward) ++offsets[j + 1];  // backward partners of j
     for (std::size_t i = 0; i < real; ++i)
-        offsets[i + 1] += offsets[i] + (forward_offsets[i + 1] - forward_offsets[i]) + (ghost_offsets[i + 1] - ghost_offsets[i]);
+        offsets[i + 1] +=
+            offsets[i] + (forward_offsets[i + 1] - forward_offsets[i]) + (ghost_offsets[i + 1] - ghost_offsets[i]);
     neighbours.resize(offsets[real]);
     std::vector<std::uint32_t> cursor(offsets.begin(), offsets.end() - 1);
     for (std::size_t i = 0; i < real; ++i) {
         // Every backward partner of i is smaller than i, so it has been placed already.
-        for (std::uint32_t k = forward_offsets[i]; k < forward_offsets[i + 1]; ++k) neighbours[cursor[i]++] = forward[k];
+        for (std::uint32_t k = forward_offsets[i]; k < forward_offsets[i + 1]; ++k)
+            neighbours[cursor[i]++] = forward[k];
         for (std::uint32_t k = ghost_offsets[i]; k < ghost_offsets[i + 1]; ++k) neighbours[cursor[i]++] = ghost[k];
         for (std::uint32_t k = forward_offsets[i]; k < forward_offsets[i + 1]; ++k)
             neighbours[cursor[forward[k]]++] = static_cast<std::uint32_t>(i);

@@ -85,8 +85,10 @@ inline void gather_position_f(const float* positions, const std::uint32_t* j, VF
     const __m256 r0 = row(0), r1 = row(1), r2 = row(2), r3 = row(3);
     const __m256 t0 = _mm256_unpacklo_ps(r0, r1), t1 = _mm256_unpackhi_ps(r0, r1);  // x0 x1 y0 y1, z0 z1 h0 h1
     const __m256 t2 = _mm256_unpacklo_ps(r2, r3), t3 = _mm256_unpackhi_ps(r2, r3);
-    x = reinterpret_cast<VF>(_mm256_shuffle_ps(t0, t2, 0x44)), y = reinterpret_cast<VF>(_mm256_shuffle_ps(t0, t2, 0xEE));
-    z = reinterpret_cast<VF>(_mm256_shuffle_ps(t1, t3, 0x44)), h = reinterpret_cast<VF>(_mm256_shuffle_ps(t1, t3, 0xEE));
+    x = reinterpret_cast<VF>(_mm256_shuffle_ps(t0, t2, 0x44)),
+    y = reinterpret_cast<VF>(_mm256_shuffle_ps(t0, t2, 0xEE));
+    z = reinterpret_cast<VF>(_mm256_shuffle_ps(t1, t3, 0x44)),
+    h = reinterpret_cast<VF>(_mm256_shuffle_ps(t1, t3, 0xEE));
 }
 
 // The five shares of 4 partners added to their received sums: the first four of each lane as one

@@ -98,11 +98,13 @@ void row(const PairRows& p, std::size_t i, OwnSums& own) {
     const double* at = p.positions + 4 * i;  // x y z h of particle i
     std::uint32_t* inside = p.inside;
     const std::size_t forward = within_support(p, i, p.forward, p.forward_offsets[i], p.forward_offsets[i + 1], inside);
-    const std::size_t n = forward + within_support(p, i, p.ghost, p.ghost_offsets[i], p.ghost_offsets[i + 1], inside + forward);
+    const std::size_t n =
+        forward + within_support(p, i, p.ghost, p.ghost_offsets[i], p.ghost_offsets[i + 1], inside + forward);
     if (n == 0) return;
     for (std::size_t k = n; k < n + lanes; ++k) inside[k] = inside[n - 1];  // padding lanes, masked below
 
-    const V x = splat(at[0]), y = splat(at[1]), z = splat(at[2]), vx = splat(me.vx), vy = splat(me.vy), vz = splat(me.vz);
+    const V x = splat(at[0]), y = splat(at[1]), z = splat(at[2]), vx = splat(me.vx), vy = splat(me.vy),
+            vz = splat(me.vz);
     // s6, s7: p / rho and V under FORM 1, p V^2 and 1 / m under FORM 0 (packed_particle.hpp).
     const V h = splat(at[3]), m = splat(me.m), rho = splat(me.rho), c = splat(me.c), s6 = splat(me.s6);
     const V s7 = splat(me.s7), own_work = s6 * s7, norm = splat(p.norm), q1 = splat(p.q1), q2 = splat(p.q2);
@@ -118,7 +120,8 @@ void row(const PairRows& p, std::size_t i, OwnSums& own) {
         gather_position(p.positions, inside + k, ox, oy, oz, oh);
         gather(p.records, inside + k, o);
         if (k + lanes < n)  // the next partners' records, while this batch computes
-            for (int l = 0; l < lanes; ++l) __builtin_prefetch(p.records + inside[k + lanes + static_cast<std::size_t>(l)]);
+            for (int l = 0; l < lanes; ++l)
+                __builtin_prefetch(p.records + inside[k + lanes + static_cast<std::size_t>(l)]);
         const V dx = x - ox, dy = y - oy, dz = z - oz;
         const V r2 = dx * dx + dy * dy + dz * dz;
         // pair_terms: grad_i W_ij = F x_ij (kernel.hpp).
@@ -129,8 +132,8 @@ void row(const PairRows& p, std::size_t i, OwnSums& own) {
         // square root), the viscosity's phi and 1 / rho_ij, and momentum.hpp's 1 / (rho_i rho_j) under
         // FORM 1 (FORM 0 passes 1: its 1 / m come precomputed in s7).
         const V visc_den = r2 + splat(0.01) * hij2;
-        const Reciprocals inv = reciprocals(hij, select((M)(r2 > hij2), r2, hij2), visc_den, rho + o[4],
-                                            Renormalise ? rho * o[4] : one);
+        const Reciprocals inv =
+            reciprocals(hij, select((M)(r2 > hij2), r2, hij2), visc_den, rho + o[4], Renormalise ? rho * o[4] : one);
         const V inv_h = inv.a, q = r * inv_h;
         const V inv_h2 = inv_h * inv_h;
         const V scale = norm * (Dimension == 2 ? inv_h2 * inv_h2 : inv_h2 * inv_h2 * inv_h);
@@ -140,7 +143,7 @@ void row(const PairRows& p, std::size_t i, OwnSums& own) {
         const V f = select((M)(r2 < splat(4.0) * hij2), select((M)(q <= one), inner, outer), zero);
         V gx = f * dx, gy = f * dy, gz = f * dz;
         if constexpr (Renormalise) {  // the mean of the two corrections (renormalisation.hpp)
-            double mean[6][lanes];  // built in memory: lane stores into vectors trip GCC 12's -Wmaybe-uninitialized
+            double mean[6][lanes];    // built in memory: lane stores into vectors trip GCC 12's -Wmaybe-uninitialized
             for (int e = 0; e < 6; ++e)
                 for (int l = 0; l < lanes; ++l) mean[e][l] = 0.5 * (ci[e] + p.correction[6 * inside[k + l] + e]);
             V b[6];
@@ -194,8 +197,10 @@ void rows(const PairRows& p, std::size_t first, std::size_t last) {
 }
 
 void rows_for_deck(const PairRows& p, std::size_t first, std::size_t last) {
-    if (p.dimension == 2) p.renormalise ? rows<2, true>(p, first, last) : rows<2, false>(p, first, last);
-    else p.renormalise ? rows<3, true>(p, first, last) : rows<3, false>(p, first, last);
+    if (p.dimension == 2)
+        p.renormalise ? rows<2, true>(p, first, last) : rows<2, false>(p, first, last);
+    else
+        p.renormalise ? rows<3, true>(p, first, last) : rows<3, false>(p, first, last);
 }
 
 }  // namespace

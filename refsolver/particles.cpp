@@ -65,7 +65,8 @@ void Particles::permute(const std::vector<std::uint32_t>& order, int threads) {
     spares.interacting.resize(interacting.size()), spares.active.resize(active.size());
     spares.correction.resize(correction.size());
     spares.stress.resize(stress.size()), spares.stress_half.resize(stress_half.size());  // empty for fluids
-    spares.part.resize(part.size()), spares.model_index.resize(model_index.size()), spares.renumber.resize(order.size());
+    spares.part.resize(part.size()), spares.model_index.resize(model_index.size()),
+        spares.renumber.resize(order.size());
 #pragma omp parallel num_threads(threads)
     {
         for (std::size_t a = 0; a < arrays.size(); ++a) gather_into(spares.doubles[a], *arrays[a], order);

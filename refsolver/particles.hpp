@@ -19,16 +19,16 @@ struct Particles {
 
     // Read by the pair loop: real + ghost entries.
     std::vector<double> x, y, z, vx, vy, vz, rho, p, c, h, m;
-    std::vector<std::uint8_t> interacting;  // 1: active and inside its SPH time window
+    std::vector<std::uint8_t> interacting;          // 1: active and inside its SPH time window
     std::vector<std::array<double, 6>> correction;  // FORM 1: B^-1 as xx yy zz xy xz yz
     std::vector<SymmetricTensor> stress;            // solid: deviatoric stress S (stress.hpp), 0 for fluids
 
     // Real particles only.
-    std::vector<double> e;                      // specific internal energy
-    std::vector<double> h_low, h_high;          // HMIN h0, HMAX h0
-    std::vector<std::uint32_t> part;            // index into the solver's parts
-    std::vector<std::uint32_t> model_index;     // position in the deck's particle order
-    std::vector<std::uint8_t> active;           // 0 once deactivated (BOXID, MAXV)
+    std::vector<double> e;                   // specific internal energy
+    std::vector<double> h_low, h_high;       // HMIN h0, HMAX h0
+    std::vector<std::uint32_t> part;         // index into the solver's parts
+    std::vector<std::uint32_t> model_index;  // position in the deck's particle order
+    std::vector<std::uint8_t> active;        // 0 once deactivated (BOXID, MAXV)
     // Rates of the last evaluation, and the half-step state of the leapfrog.
     std::vector<double> ax, ay, az, drho, de, dh;
     std::vector<double> vx_half, vy_half, vz_half, rho_half, e_half, h_half;

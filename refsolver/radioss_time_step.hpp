@@ -14,7 +14,8 @@
 //   K_ij = 2 (m_i c_i^2 V_j^2 |g|^2 + m_j c_j^2 V_i^2 |g|^2) / s^2,   V = m / rho, g = grad_i W_ij,
 //   s = sqrt(1 + z^2) - z,   z = C_ij / sqrt(2 K_ij m_i)   (the viscosity's damping, before / s^2),
 //   C_ij = m_i m_j |Pi_ij| |g| / (|v_ij.x_ij| / r_ij),
-//   Pi_ij = (qa mu^2 - qb c_ij mu) 2 / (rho_i + rho_j),  mu = min(0, d_ij v_ij.x_ij / (r^2 + 0.01 d_ij^2)) (f_i + f_j) / 2,
+//   Pi_ij = (qa mu^2 - qb c_ij mu) 2 / (rho_i + rho_j),  mu = min(0, d_ij v_ij.x_ij / (r^2 + 0.01 d_ij^2)) (f_i + f_j)
+//   / 2,
 // f_i = |div v_i| / (|div v_i| + |rot v_i|) the engine's viscosity switch (spdens.F's velocity
 // gradient: grad v_i = -sum_j V_j v_ij (x) g_ij; spforcp.F). c is the sound speed (the engine's
 // SSP_EQ, which adds the material viscosity: none for the laws the solver runs). A ghost adds

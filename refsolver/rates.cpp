@@ -26,8 +26,10 @@ struct PairTerms {
 // (1 / h_ij and the outer-shell 1 / r) and one for the momentum factor; p / rho comes precomputed per
 // particle.
 template <int Dimension, bool Renormalise>
-[[gnu::always_inline]] inline PairTerms pair_terms(const PackedParticle& a, const PackedParticle& b, const Correction& ba, const Correction& bb,
-                     double dx, double dy, double dz, double r2, double norm, const MonaghanViscosity& viscosity) {
+[[gnu::always_inline]] inline PairTerms pair_terms(const PackedParticle& a, const PackedParticle& b,
+                                                   const Correction& ba, const Correction& bb, double dx, double dy,
+                                                   double dz, double r2, double norm,
+                                                   const MonaghanViscosity& viscosity) {
     // grad_i W_ij = F x_ij (kernel.hpp), F = C_d / h^(d+2) theta'(q) / q.
     const double hij = 0.5 * (a.h + b.h);
     const double inv_h = 1.0 / hij, r = std::sqrt(r2), q = r * inv_h;
@@ -108,8 +110,9 @@ inline void add_stress(Sums& sums, GradientSums& gradient, const StressTerms& st
 // The neighbours of `me` in list[first, last) that lie within the support, into `inside`.
 // Branch-free: the Verlet lists hold about a third more than the support, and a branch on
 // in/out would be mispredicted often.
-[[gnu::always_inline]] inline std::size_t within_support(const PackedParticle& me, const PackedParticle* nb, const std::uint32_t* list,
-                           std::uint32_t first, std::uint32_t last, std::vector<std::uint32_t>& inside) {
+[[gnu::always_inline]] inline std::size_t within_support(const PackedParticle& me, const PackedParticle* nb,
+                                                         const std::uint32_t* list, std::uint32_t first,
+                                                         std::uint32_t last, std::vector<std::uint32_t>& inside) {
     if (inside.size() < last - first) inside.resize(2 * (last - first));
     std::size_t n = 0;
     for (std::uint32_t k = first; k < last; ++k) {
@@ -195,14 +198,15 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
             const Correction& bi = correction[i];
             Sums own{rp.body[0], rp.body[1], rp.body[2], 0, 0};
             GradientSums own_gradient{};
-            const std::size_t pairs =
-                within_support(me, nb, list.forward.data(), list.forward_offsets[i], list.forward_offsets[i + 1], inside);
+            const std::size_t pairs = within_support(me, nb, list.forward.data(), list.forward_offsets[i],
+                                                     list.forward_offsets[i + 1], inside);
             for (std::size_t k = 0; k < pairs; ++k) {
                 const std::uint32_t j = inside[k];
                 const PackedParticle& o = nb[j];
                 const double dx = me.x - o.x, dy = me.y - o.y, dz = me.z - o.z;
-                const PairTerms terms = pair_terms<Dimension, Renormalise>(
-                    me, o, bi, correction[j], dx, dy, dz, dx * dx + dy * dy + dz * dz, norm, viscosity);
+                const PairTerms terms =
+                    pair_terms<Dimension, Renormalise>(me, o, bi, correction[j], dx, dy, dz,
+                                                       dx * dx + dy * dy + dz * dz, norm, viscosity);
                 add_to<Renormalise>(own, terms, me, o);
                 add_reverse<Renormalise>(received[j], terms, me, o);
                 if constexpr (Solid) {
@@ -218,8 +222,9 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
                 const std::uint32_t j = inside[k];
                 const PackedParticle& o = nb[j];
                 const double dx = me.x - o.x, dy = me.y - o.y, dz = me.z - o.z;
-                const PairTerms terms = pair_terms<Dimension, Renormalise>(me, o, bi, correction[j], dx, dy, dz,
-                                                                           dx * dx + dy * dy + dz * dz, norm, viscosity);
+                const PairTerms terms =
+                    pair_terms<Dimension, Renormalise>(me, o, bi, correction[j], dx, dy, dz,
+                                                       dx * dx + dy * dy + dz * dz, norm, viscosity);
                 add_to<Renormalise>(own, terms, me, o);
                 if constexpr (Solid)
                     add_stress(own, own_gradient, stress_terms(stress[i], stress[j], me, o, terms, dx, dy, dz), o.m,
@@ -247,7 +252,8 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
                 const double shear = interacting[i] ? rp.shear[s.part[i]] : 0.0;
                 if (shear > 0) {
                     Tensor P, Q;
-                    std::copy(sum.begin(), sum.begin() + 9, P.begin()), std::copy(sum.begin() + 9, sum.end(), Q.begin());
+                    std::copy(sum.begin(), sum.begin() + 9, P.begin()),
+                        std::copy(sum.begin() + 9, sum.end(), Q.begin());
                     s.dstress[i] = jaumann_stress_rate(velocity_gradient(P, Q, Dimension), s.stress[i], shear);
                 } else {
                     s.dstress[i] = SymmetricTensor{};
@@ -272,11 +278,13 @@ void compute_rates(Particles& s, const NeighbourList& list, const RateParameters
     // and V = m / rho once per particle.
     // The SIMD loop reads the same values from two arrays (rates.hpp), the scalar loop from one.
     const std::size_t n = s.total();
-    const bool simd = parameters.simd && !parameters.solid && !parameters.viscosity_switch &&
-                      best_pair_rows(parameters.avx512).run;
+    const bool simd =
+        parameters.simd && !parameters.solid && !parameters.viscosity_switch && best_pair_rows(parameters.avx512).run;
     const double* switches = parameters.viscosity_switch ? parameters.viscosity_switch->data() : nullptr;
-    if (simd) scratch.positions.resize(n), scratch.positions_f.resize(n), scratch.records.resize(n);
-    else scratch.packed.resize(n);
+    if (simd)
+        scratch.positions.resize(n), scratch.positions_f.resize(n), scratch.records.resize(n);
+    else
+        scratch.packed.resize(n);
     PackedParticle* packed = scratch.packed.data();
     std::array<double, 4>* positions = scratch.positions.data();
     std::array<float, 4>* positions_f = scratch.positions_f.data();
@@ -294,7 +302,8 @@ void compute_rates(Particles& s, const NeighbourList& list, const RateParameters
             records[i] = {s.vx[i], s.vy[i], s.vz[i], m, s.rho[i], s.c[i], f.s6, f.s7};
         } else {
             const double sw = !switches ? 1.0 : switches[i < s.real ? i : s.ghost_source[i - s.real]];
-            packed[i] = {s.x[i], s.y[i], s.z[i], s.vx[i], s.vy[i], s.vz[i], s.h[i], m, s.rho[i], s.c[i], f.s6, f.s7, volume, sw};
+            packed[i] = {s.x[i], s.y[i],   s.z[i], s.vx[i], s.vy[i], s.vz[i], s.h[i],
+                         m,      s.rho[i], s.c[i], f.s6,    f.s7,    volume,  sw};
         }
     }
     // Rounding a coordinate to float moves it by at most 2^-24 of `largest`; a separation in single
@@ -310,12 +319,20 @@ void compute_rates(Particles& s, const NeighbourList& list, const RateParameters
             const double inv = 1.0 / (s.rho[i] * s.rho[i]);
             for (int k = 0; k < 6; ++k) sr2[i][k] = s.stress[i][k] * inv;
         }
-        if (parameters.renormalise) two ? pair_loop<2, true, true>(s, list, parameters, scratch) : pair_loop<3, true, true>(s, list, parameters, scratch);
-        else two ? pair_loop<2, false, true>(s, list, parameters, scratch) : pair_loop<3, false, true>(s, list, parameters, scratch);
+        if (parameters.renormalise)
+            two ? pair_loop<2, true, true>(s, list, parameters, scratch)
+                : pair_loop<3, true, true>(s, list, parameters, scratch);
+        else
+            two ? pair_loop<2, false, true>(s, list, parameters, scratch)
+                : pair_loop<3, false, true>(s, list, parameters, scratch);
         return;
     }
-    if (parameters.renormalise) two ? pair_loop<2, true, false>(s, list, parameters, scratch) : pair_loop<3, true, false>(s, list, parameters, scratch);
-    else two ? pair_loop<2, false, false>(s, list, parameters, scratch) : pair_loop<3, false, false>(s, list, parameters, scratch);
+    if (parameters.renormalise)
+        two ? pair_loop<2, true, false>(s, list, parameters, scratch)
+            : pair_loop<3, true, false>(s, list, parameters, scratch);
+    else
+        two ? pair_loop<2, false, false>(s, list, parameters, scratch)
+            : pair_loop<3, false, false>(s, list, parameters, scratch);
 }
 
 }  // namespace sphdeck::refsolver

@@ -25,7 +25,8 @@ namespace sphdeck::refsolver {
 struct RateParameters {
     CubicSpline kernel;
     MonaghanViscosity viscosity;
-    bool renormalise = false;  // the volume-weighted equations (FORM 1, OpenRadioss decks); s.correction is I unless FORM 1
+    bool renormalise =
+        false;  // the volume-weighted equations (FORM 1, OpenRadioss decks); s.correction is I unless FORM 1
     SmoothingLengthRule h_rule = SmoothingLengthRule::Divergence;
     std::array<double, 3> body{0, 0, 0};  // body acceleration (body_load.hpp)
     int threads = 1;
@@ -41,7 +42,6 @@ struct RateParameters {
     const std::vector<double>* viscosity_switch = nullptr;
     bool avx512 = true;  // with simd: false keeps the SIMD loop at AVX2 (to compare the two)
 };
-
 
 // Work arrays of compute_rates, kept between steps so that no step allocates.
 struct RateScratch {
@@ -61,8 +61,8 @@ struct RateScratch {
     std::vector<std::array<double, 18>> gradient, received_gradient;
 };
 
-// Fills ax, ay, az, drho, de, dh (and dstress when parameters.solid) of the real particles. Deterministic for a given thread count
-// (static schedule); another thread count changes the order of the sums (last-digit round-off).
+// Fills ax, ay, az, drho, de, dh (and dstress when parameters.solid) of the real particles. Deterministic for a given
+// thread count (static schedule); another thread count changes the order of the sums (last-digit round-off).
 void compute_rates(Particles& s, const NeighbourList& list, const RateParameters& parameters, RateScratch& scratch);
 
 }  // namespace sphdeck::refsolver

@@ -38,7 +38,8 @@ void compute_corrections(Particles& s, const NeighbourList& list, const CubicSpl
                 b[3] += w * dx * dy, b[4] += w * dx * dz, b[5] += w * dy * dz;
             }
         }
-        s.correction[i] = s.interacting[i] ? inverse_correction(b, kernel.dimension) : std::array<double, 6>{1, 1, 1, 0, 0, 0};
+        s.correction[i] =
+            s.interacting[i] ? inverse_correction(b, kernel.dimension) : std::array<double, 6>{1, 1, 1, 0, 0, 0};
     }
 }
 

@@ -222,7 +222,9 @@ SetupResult build_setup(const model::Model& m, const RunOptions& options) {
         if (!(preview.parts[q].h0 > 0)) {
             out.push_back({fmt::format("part {}: no initial smoothing length ({}); give SPHINI on its *SECTION_SPH",
                                        preview.parts[q].part, preview.parts[q].notes),
-                           {}, true, true});
+                           {},
+                           true,
+                           true});
             runnable = false;
         }
     }
@@ -236,7 +238,8 @@ SetupResult build_setup(const model::Model& m, const RunOptions& options) {
     // The EOS's V0 and E0 per part, looked up once (not per particle).
     std::vector<std::array<double, 2>> v0_e0(preview.parts.size(), {1.0, 0.0});
     for (std::size_t q = 0; q < preview.parts.size(); ++q)
-        if (radioss) v0_e0[q] = {1.0, radioss_e0[q]};
+        if (radioss)
+            v0_e0[q] = {1.0, radioss_e0[q]};
         else if (!in.parts[q].solid())
             initial_eos_state(m, m.part(std::to_string(preview.parts[q].part)), v0_e0[q][0], v0_e0[q][1]);
     std::size_t unlocated = 0, massless = 0;
@@ -264,9 +267,11 @@ SetupResult build_setup(const model::Model& m, const RunOptions& options) {
         out.push_back({fmt::format("{} particle(s) have no *NODE: no position", unlocated), {}, true, true}),
             runnable = false;
     if (massless)
-        out.push_back({fmt::format("{} particle(s) have no positive mass (MASS 0, or a volume without a density)",
-                                   massless),
-                       {}, true, true}),
+        out.push_back(
+            {fmt::format("{} particle(s) have no positive mass (MASS 0, or a volume without a density)", massless),
+             {},
+             true,
+             true}),
             runnable = false;
 
     if (radioss) {

@@ -22,7 +22,7 @@ namespace sphdeck::refsolver {
 
 struct PartSetup {
     long long id = 0;
-    EquationOfState eos;  // *MAT_ELASTIC: C1 = K (p = K mu)
+    EquationOfState eos;    // *MAT_ELASTIC: C1 = K (p = K mu)
     ElasticModuli elastic;  // *MAT_ELASTIC; shear 0 for a fluid
     double wave_speed = 0;  // *MAT_ELASTIC: sqrt((K + 4 G / 3) / rho0), the particles' c
     bool solid() const { return elastic.shear > 0; }
@@ -43,8 +43,8 @@ struct SolverInput {
     double end_time = 0;
     long long end_cycle = 0;  // *CONTROL_TERMINATION ENDCYC, 0: none
     long long ncbs = 1;
-    double sph_start = 0, sph_death = 1e20;  // *CONTROL_SPH START, DT
-    double maxv = 1e15;                      // <= 0: no velocity check
+    double sph_start = 0, sph_death = 1e20;    // *CONTROL_SPH START, DT
+    double maxv = 1e15;                        // <= 0: no velocity check
     std::optional<std::array<double, 6>> box;  // *CONTROL_SPH BOXID
     std::vector<SymmetryPlane> planes;
     unsigned planes_per_image = 3;  // corner images across up to 3 planes; OpenRadioss decks 1 (spsym.F)

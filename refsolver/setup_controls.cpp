@@ -10,7 +10,8 @@ namespace sphdeck::refsolver {
 
 namespace {
 
-void note(std::vector<Unsupported>& out, std::string what, grammar::Span span, bool fatal = true, bool blocking = false) {
+void note(std::vector<Unsupported>& out, std::string what, grammar::Span span, bool fatal = true,
+          bool blocking = false) {
     Unsupported u{std::move(what), span, fatal};
     u.blocking = blocking;
     out.push_back(std::move(u));
@@ -46,17 +47,22 @@ LoadCurve read_curve(const model::KeywordRecord& r) {
 void setup_loads(const model::Model& m, SolverInput& in, std::vector<Unsupported>& out) {
     for (const model::KeywordRecord& r : m.records) {
         int axis = -1;
-        if (keyword_is(r, "*LOAD_BODY_X")) axis = 0;
-        else if (keyword_is(r, "*LOAD_BODY_Y")) axis = 1;
-        else if (keyword_is(r, "*LOAD_BODY_Z")) axis = 2;
+        if (keyword_is(r, "*LOAD_BODY_X"))
+            axis = 0;
+        else if (keyword_is(r, "*LOAD_BODY_Y"))
+            axis = 1;
+        else if (keyword_is(r, "*LOAD_BODY_Z"))
+            axis = 2;
         if (axis < 0) continue;
         if (record_number(&r, "CID") != 0)
-            note(out, fmt::format("{} CID {}: local coordinate systems are not supported", r.keyword,
-                                  record_number(&r, "CID")),
+            note(out,
+                 fmt::format("{} CID {}: local coordinate systems are not supported", r.keyword,
+                             record_number(&r, "CID")),
                  record_field(&r, "CID")->span);
         if (record_number(&r, "LCIDDR") != 0)
-            note(out, fmt::format("{} LCIDDR {}: there is no dynamic relaxation phase; the curve is not used",
-                                  r.keyword, record_number(&r, "LCIDDR")),
+            note(out,
+                 fmt::format("{} LCIDDR {}: there is no dynamic relaxation phase; the curve is not used", r.keyword,
+                             record_number(&r, "LCIDDR")),
                  record_field(&r, "LCIDDR")->span, false);
         const long long lcid = record_integer(&r, "LCID");
         const model::KeywordRecord* curve = find_curve(m, lcid);
@@ -70,8 +76,9 @@ void setup_loads(const model::Model& m, SolverInput& in, std::vector<Unsupported
         if (load.curve.t.empty())
             note(out, fmt::format("*DEFINE_CURVE {} has no points", lcid), curve->span, true, true);
         if (record_number(curve, "DATTYP") != 0)
-            note(out, fmt::format("*DEFINE_CURVE {} DATTYP {} is not supported: points are read as time, value",
-                                  lcid, record_number(curve, "DATTYP")),
+            note(out,
+                 fmt::format("*DEFINE_CURVE {} DATTYP {} is not supported: points are read as time, value", lcid,
+                             record_number(curve, "DATTYP")),
                  record_field(curve, "DATTYP")->span);
         in.loads.push_back(std::move(load));
     }
@@ -87,9 +94,10 @@ void setup_planes(const model::Model& m, SolverInput& in, std::vector<Unsupporte
         }
         for (double& v : n) v /= length;
         if (in.dimension == 2 && std::abs(n[2]) > 1e-12) {
-            note(out, fmt::format("*BOUNDARY_SPH_SYMMETRY_PLANE normal ({:.3g}, {:.3g}, {:.3g}) leaves the x-y plane "
-                                  "of a 2D model",
-                                  n[0], n[1], n[2]),
+            note(out,
+                 fmt::format("*BOUNDARY_SPH_SYMMETRY_PLANE normal ({:.3g}, {:.3g}, {:.3g}) leaves the x-y plane "
+                             "of a 2D model",
+                             n[0], n[1], n[2]),
                  q.span, true, true);
             continue;
         }
@@ -117,14 +125,16 @@ void setup_controls(const model::Model& m, const RunOptions& options, SolverInpu
     for (const model::KeywordRecord& r : m.records)
         if (keyword_is(r, "*CONTROL_TERMINATION")) in.end_cycle = record_integer(&r, "ENDCYC");
     if (!(in.end_time > 0))
-        note(out, fmt::format("end time {} is not positive: give *CONTROL_TERMINATION ENDTIM or --end-time",
-                              in.end_time),
+        note(out,
+             fmt::format("end time {} is not positive: give *CONTROL_TERMINATION ENDTIM or --end-time", in.end_time),
              c.endtim.span, true, true);
     if (sph.boxid.value != 0) {
         const model::Box* box = m.box(std::to_string(sph.boxid.value));
-        if (box) in.box = box->bounds;
-        else note(out, fmt::format("*CONTROL_SPH BOXID {} is not defined (*DEFINE_BOX)", sph.boxid.value),
-                  sph.boxid.span, true, true);
+        if (box)
+            in.box = box->bounds;
+        else
+            note(out, fmt::format("*CONTROL_SPH BOXID {} is not defined (*DEFINE_BOX)", sph.boxid.value),
+                 sph.boxid.span, true, true);
     }
     setup_planes(m, in, out);
     setup_loads(m, in, out);

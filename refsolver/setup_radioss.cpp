@@ -63,13 +63,15 @@ std::vector<Unsupported> radioss_unsupported(const model::Model& m, const model:
                 (b.keyword.size() == r.prefix.size() || b.keyword[r.prefix.size()] == '/'))
                 add(out, fmt::format("{}: {}", b.keyword, r.why), b.span, r.fatal);
     if (f.analysis != 0)
-        add(out, fmt::format("/ANALY N2D3D {} (2D) is not supported for OpenRadioss decks: the solver runs them in 3D",
-                             f.analysis),
+        add(out,
+            fmt::format("/ANALY N2D3D {} (2D) is not supported for OpenRadioss decks: the solver runs them in 3D",
+                        f.analysis),
             f.analysis_span);
     for (const model::RadiossInout& io : f.inouts)
         add(out, fmt::format("/SPH/INOUT {}: particle inlets and outlets are not modelled", io.id), io.span);
     for (const model::RadiossReserve& r : f.reserves)
-        add(out, fmt::format("/SPH/RESERVE for part {}: reserve particles stay inactive (no inlet releases them)", r.part),
+        add(out,
+            fmt::format("/SPH/RESERVE for part {}: reserve particles stay inactive (no inlet releases them)", r.part),
             r.span, false);
     for (const model::RadiossSolidProperty& p : f.solid_properties)
         if (p.sol2sph())
@@ -82,22 +84,25 @@ std::vector<Unsupported> radioss_unsupported(const model::Model& m, const model:
             f.initial_states.front().span);
     for (const model::RadiossSymmetry& s : f.symmetries) {
         if (!s.plane) {
-            add(out, fmt::format("/SPHBCS {}: its plane is not known (frame {} or direction '{}')", s.id,
-                                 s.frame_id.value, s.dir.value),
+            add(out,
+                fmt::format("/SPHBCS {}: its plane is not known (frame {} or direction '{}')", s.id, s.frame_id.value,
+                            s.dir.value),
                 s.span, true, true);
             continue;
         }
         if (s.ilev.value == 0)
-            add(out, fmt::format("/SPHBCS {} Ilev 0: particles crossing the plane are put back with their normal "
-                                 "velocity reversed (Ilev 1), not dropped",
-                                 s.id),
+            add(out,
+                fmt::format("/SPHBCS {} Ilev 0: particles crossing the plane are put back with their normal "
+                            "velocity reversed (Ilev 1), not dropped",
+                            s.id),
                 s.ilev.span, false);
     }
     // /DT/NODA/CST (and /DT/NODA/SET...) with a minimum step adds mass to keep the step (dtnoda.F).
     if (const model::RadiossDt* dt = f.time_step(model::DtKind::Nodal); dt && dt->dtmin.value > 0)
-        add(out, fmt::format("{}: the minimum step {} is not enforced (the engine adds nodal mass or stops there): "
-                             "the solver runs the nodal step as computed",
-                             dt->keyword, dt->dtmin.value),
+        add(out,
+            fmt::format("{}: the minimum step {} is not enforced (the engine adds nodal mass or stops there): "
+                        "the solver runs the nodal step as computed",
+                        dt->keyword, dt->dtmin.value),
             dt->span, false);
     return out;
 }
@@ -105,8 +110,8 @@ std::vector<Unsupported> radioss_unsupported(const model::Model& m, const model:
 namespace {
 
 // The /EOS/POLYNOMIAL of a material (or the law's own C1 when no /EOS names it).
-bool read_polynomial(const model::RadiossFacts& f, const model::RadiossMaterial& mat, long long part,
-                     PartSetup& ps, double& e0, std::vector<Unsupported>& out) {
+bool read_polynomial(const model::RadiossFacts& f, const model::RadiossMaterial& mat, long long part, PartSetup& ps,
+                     double& e0, std::vector<Unsupported>& out) {
     EquationOfState& eos = ps.eos;
     eos.kind = EquationOfState::Kind::LinearPolynomial;
     eos.rho0 = mat.density;
@@ -145,7 +150,8 @@ bool read_radioss_part(const model::Model& m, long long id, PartSetup& ps, doubl
     const model::RadiossFacts& f = *m.radioss;
     const model::Part* part = m.part(std::to_string(id));
     if (!part) {
-        add(out, fmt::format("particles name part {}, which no /PART defines: no material for them", id), {}, true, true);
+        add(out, fmt::format("particles name part {}, which no /PART defines: no material for them", id), {}, true,
+            true);
         return false;
     }
     long long prop_id = 0, mat_id = 0;
@@ -160,26 +166,29 @@ bool read_radioss_part(const model::Model& m, long long id, PartSetup& ps, doubl
         return false;
     }
     if (prop->order.value == 0)
-        add(out, fmt::format("part {}: /PROP/TYPE34 {} Order 0 (zeroth-order correction) is not supported: the solver "
-                             "runs Order -1 (none) and 1 (first order)",
-                             id, prop->id),
+        add(out,
+            fmt::format("part {}: /PROP/TYPE34 {} Order 0 (zeroth-order correction) is not supported: the solver "
+                        "runs Order -1 (none) and 1 (first order)",
+                        id, prop->id),
             prop->order.span);
     if (prop->xi_stab.value != 0)
-        add(out, fmt::format("part {}: /PROP/TYPE34 {} Xi_Stab {} (tensile instability correction) is not modelled",
-                             id, prop->id, prop->xi_stab.value),
+        add(out,
+            fmt::format("part {}: /PROP/TYPE34 {} Xi_Stab {} (tensile instability correction) is not modelled", id,
+                        prop->id, prop->xi_stab.value),
             prop->xi_stab.span);
     if (prop->alpha_cs.value != 0)
-        add(out, fmt::format("part {}: /PROP/TYPE34 {} alpha_cs {} (conservative smoothing) is not modelled", id,
-                             prop->id, prop->alpha_cs.value),
+        add(out,
+            fmt::format("part {}: /PROP/TYPE34 {} alpha_cs {} (conservative smoothing) is not modelled", id, prop->id,
+                        prop->alpha_cs.value),
             prop->alpha_cs.span);
     if (prop->h_1d.value == 1)
-        add(out, fmt::format("part {}: /PROP/TYPE34 {} h_1D 1 is not supported: h follows the volume change", id,
-                             prop->id),
+        add(out,
+            fmt::format("part {}: /PROP/TYPE34 {} h_1D 1 is not supported: h follows the volume change", id, prop->id),
             prop->h_1d.span);
     const model::RadiossMaterial* mat = f.material(mat_id);
     if (!mat) {
-        add(out, fmt::format("part {}: material '{}' is not defined", id, part->material.value),
-            part->material.span, true, true);
+        add(out, fmt::format("part {}: material '{}' is not defined", id, part->material.value), part->material.span,
+            true, true);
         return false;
     }
     if (!(mat->density > 0)) {
@@ -188,50 +197,55 @@ bool read_radioss_part(const model::Model& m, long long id, PartSetup& ps, doubl
         return false;
     }
     switch (mat->law) {
-    case 1: {  // LAW1 elastic: as *MAT_ELASTIC
-        if (!(mat->young > 0) || !(mat->poisson > -1 && mat->poisson < 0.5)) {
-            add(out, fmt::format("part {}: {} {} needs E > 0 and -1 < nu < 0.5 (E {}, nu {})", id, mat->keyword,
-                                 mat->id, mat->young, mat->poisson),
-                mat->span, true, true);
-            return false;
-        }
-        run_elastic(*mat, ps);
-        return true;
-    }
-    case 2:
-        add(out, fmt::format("part {}: {} {} (Johnson-Cook plasticity) is not supported: with --ignore-unsupported "
-                             "it runs elastic (E, nu)",
-                             id, mat->keyword, mat->id),
-            mat->law_span);
-        if (mat->young > 0 && mat->poisson > -1 && mat->poisson < 0.5) {
+        case 1: {  // LAW1 elastic: as *MAT_ELASTIC
+            if (!(mat->young > 0) || !(mat->poisson > -1 && mat->poisson < 0.5)) {
+                add(out,
+                    fmt::format("part {}: {} {} needs E > 0 and -1 < nu < 0.5 (E {}, nu {})", id, mat->keyword, mat->id,
+                                mat->young, mat->poisson),
+                    mat->span, true, true);
+                return false;
+            }
             run_elastic(*mat, ps);
             return true;
         }
-        add(out, fmt::format("part {}: {} {} has no E and nu the solver can run", id, mat->keyword, mat->id),
-            mat->span, true, true);
-        return false;
-    case 3:  // HYDPLA: the polynomial EOS; with E = 0 no deviatoric stress (a fluid)
-    case 6:  // HYD_VISC: the polynomial EOS and a physical viscosity
-        if (mat->law == 3 && mat->young != 0)
-            add(out, fmt::format("part {}: {} {} E {}: the deviatoric stress and plastic flow (a, b, n) are not "
-                                 "modelled; the part runs as a fluid",
-                                 id, mat->keyword, mat->id, mat->young),
-                mat->span);
-        if (mat->law == 6)
-            add(out, fmt::format("part {}: {} {}: the physical viscosity is not modelled (only qa/qb)", id,
-                                 mat->keyword, mat->id),
-                mat->span);
-        return read_polynomial(f, *mat, id, ps, e0, out);
-    case 0:
-        add(out, fmt::format("part {}: {} {} (void) gives particles no material", id, mat->keyword, mat->id),
-            mat->law_span, true, true);
-        return false;
-    default:
-        add(out, fmt::format("part {}: {} {} is not supported: the solver runs LAW1 (elastic), LAW3 (HYDPLA) and LAW6 "
-                             "(HYD_VISC) with /EOS/POLYNOMIAL",
-                             id, mat->keyword, mat->id),
-            mat->law_span, true, true);
-        return false;
+        case 2:
+            add(out,
+                fmt::format("part {}: {} {} (Johnson-Cook plasticity) is not supported: with --ignore-unsupported "
+                            "it runs elastic (E, nu)",
+                            id, mat->keyword, mat->id),
+                mat->law_span);
+            if (mat->young > 0 && mat->poisson > -1 && mat->poisson < 0.5) {
+                run_elastic(*mat, ps);
+                return true;
+            }
+            add(out, fmt::format("part {}: {} {} has no E and nu the solver can run", id, mat->keyword, mat->id),
+                mat->span, true, true);
+            return false;
+        case 3:  // HYDPLA: the polynomial EOS; with E = 0 no deviatoric stress (a fluid)
+        case 6:  // HYD_VISC: the polynomial EOS and a physical viscosity
+            if (mat->law == 3 && mat->young != 0)
+                add(out,
+                    fmt::format("part {}: {} {} E {}: the deviatoric stress and plastic flow (a, b, n) are not "
+                                "modelled; the part runs as a fluid",
+                                id, mat->keyword, mat->id, mat->young),
+                    mat->span);
+            if (mat->law == 6)
+                add(out,
+                    fmt::format("part {}: {} {}: the physical viscosity is not modelled (only qa/qb)", id, mat->keyword,
+                                mat->id),
+                    mat->span);
+            return read_polynomial(f, *mat, id, ps, e0, out);
+        case 0:
+            add(out, fmt::format("part {}: {} {} (void) gives particles no material", id, mat->keyword, mat->id),
+                mat->law_span, true, true);
+            return false;
+        default:
+            add(out,
+                fmt::format("part {}: {} {} is not supported: the solver runs LAW1 (elastic), LAW3 (HYDPLA) and LAW6 "
+                            "(HYD_VISC) with /EOS/POLYNOMIAL",
+                            id, mat->keyword, mat->id),
+                mat->law_span, true, true);
+            return false;
     }
 }
 
@@ -267,8 +281,8 @@ void setup_symmetry(const model::Model& m, SolverInput& in, std::vector<Unsuppor
         if (s.grnod_id.value <= 0) continue;
         const model::IdSet* group = node_group(m, s.grnod_id.value);
         if (!group) {
-            add(out, fmt::format("/SPHBCS {}: node group {} is not defined: no kinematic condition", s.id,
-                                 s.grnod_id.value),
+            add(out,
+                fmt::format("/SPHBCS {}: node group {} is not defined: no kinematic condition", s.id, s.grnod_id.value),
                 s.grnod_id.span, true, true);
             continue;
         }
@@ -323,18 +337,22 @@ void setup_radioss_controls(const model::Model& m, const model::RadiossRunInput&
     // *CONTROL_BULK_VISCOSITY Q1/Q2. One pair for the run: the first SPH property's.
     std::set<std::pair<double, double>> pairs;
     for (const model::RadiossSphProperty& p : f.sph_properties) pairs.insert({p.qa.value, p.qb.value});
-    if (!f.sph_properties.empty()) in.q1 = f.sph_properties.front().qa.value, in.q2 = f.sph_properties.front().qb.value;
-    else in.q1 = 2.0, in.q2 = 1.0;  // hm_read_prop34.F defaults
+    if (!f.sph_properties.empty())
+        in.q1 = f.sph_properties.front().qa.value, in.q2 = f.sph_properties.front().qb.value;
+    else
+        in.q1 = 2.0, in.q2 = 1.0;  // hm_read_prop34.F defaults
     if (pairs.size() > 1)
-        add(out, fmt::format("{} different qa/qb pairs: the solver uses the first property's (qa {}, qb {}) for every "
-                             "pair",
-                             pairs.size(), in.q1, in.q2),
+        add(out,
+            fmt::format("{} different qa/qb pairs: the solver uses the first property's (qa {}, qb {}) for every "
+                        "pair",
+                        pairs.size(), in.q1, in.q2),
             f.sph_properties[1].span);
     bool order1 = false;
     for (const model::RadiossSphProperty& p : f.sph_properties) order1 = order1 || p.order.value == 1;
     in.renormalise = order1;
     in.volume_weighted = true;
-    in.planes_per_image = 1;  // the engine's single images (spsym.F), no corner images  // the engine's equations at every Order (spdens.F, spforcp.F)
+    in.planes_per_image = 1;  // the engine's single images (spsym.F), no corner images  // the engine's equations at
+                              // every Order (spdens.F, spforcp.F)
     in.h_rule = SmoothingLengthRule::Divergence;  // h follows the volume: dh/dt = h div v / 3, h ~ rho^(-1/3) (h_1D 0)
     in.tssfac = m.controls.tssfac.value > 0 ? m.controls.tssfac.value : 0.9;
     in.radioss_step = true;

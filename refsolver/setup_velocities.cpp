@@ -103,8 +103,10 @@ public:
 
     void run() {
         for (const model::KeywordRecord& r : m_.records) {
-            if (keyword_is(r, "*INITIAL_VELOCITY")) initial_velocity(r);
-            else if (keyword_is(r, "*INITIAL_VELOCITY_GENERATION")) generation(r);
+            if (keyword_is(r, "*INITIAL_VELOCITY"))
+                initial_velocity(r);
+            else if (keyword_is(r, "*INITIAL_VELOCITY_GENERATION"))
+                generation(r);
         }
         for (const model::KeywordRecord& r : m_.records)
             if (keyword_is(r, "*INITIAL_VELOCITY_NODE")) node(r);
@@ -130,8 +132,9 @@ private:
         return true;
     }
     void rotational_note(const model::KeywordRecord& r, const model::FieldRecord& row_field) {
-        note(out_, fmt::format("{} {} {}: particles have no rotational degrees of freedom", r.keyword,
-                               row_field.name, row_field.number),
+        note(out_,
+             fmt::format("{} {} {}: particles have no rotational degrees of freedom", r.keyword, row_field.name,
+                         row_field.number),
              row_field.span, false);
     }
     void missing_set(const model::KeywordRecord& r, std::string_view field, std::string_view what, long long id) {
@@ -141,8 +144,9 @@ private:
     // *INITIAL_VELOCITY: NSID (0: every node), inside BOXID if given; NSIDEX nodes take card 3.
     void initial_velocity(const model::KeywordRecord& r) {
         if (record_number(&r, "ICID") != 0)
-            note(out_, fmt::format("*INITIAL_VELOCITY ICID {}: local coordinate systems are not supported",
-                                   record_number(&r, "ICID")),
+            note(out_,
+                 fmt::format("*INITIAL_VELOCITY ICID {}: local coordinate systems are not supported",
+                             record_number(&r, "ICID")),
                  span_of(r, "ICID"));
         for (const char* name : {"VXR", "VYR", "VZR"})
             if (record_number(&r, name) != 0) rotational_note(r, *record_field(&r, name));
@@ -183,13 +187,15 @@ private:
     }
     void generation_pair(const model::KeywordRecord& r) {
         if (record_number(&r, "ICID") != 0)
-            note(out_, fmt::format("{} ICID {}: local coordinate systems are not supported", r.keyword,
-                                   record_number(&r, "ICID")),
+            note(out_,
+                 fmt::format("{} ICID {}: local coordinate systems are not supported", r.keyword,
+                             record_number(&r, "ICID")),
                  span_of(r, "ICID"));
         if (record_number(&r, "PHASE") != 0)
-            note(out_, fmt::format("{} PHASE {}: there is no dynamic relaxation phase; the velocities are given at "
-                                   "time 0",
-                                   r.keyword, record_number(&r, "PHASE")),
+            note(out_,
+                 fmt::format("{} PHASE {}: there is no dynamic relaxation phase; the velocities are given at "
+                             "time 0",
+                             r.keyword, record_number(&r, "PHASE")),
                  span_of(r, "PHASE"));
         const auto id = record_integer(&r, "ID");
         const auto styp = record_integer(&r, "STYP", 1);
@@ -199,12 +205,13 @@ private:
         Vec3 n{record_number(&r, "NX"), record_number(&r, "NY"), record_number(&r, "NZ")};
         if (omega != 0 && n[0] == -999) {
             // NY and NZ are real fields holding node ids here: 1e20 names no node, and is not converted.
-            const auto node_a = grammar::checked_integer<long long>(n[1]), node_b = grammar::checked_integer<long long>(n[2]);
+            const auto node_a = grammar::checked_integer<long long>(n[1]),
+                       node_b = grammar::checked_integer<long long>(n[2]);
             const auto a = node_a ? index_.node_position(*node_a) : std::nullopt;
             const auto b = node_b ? index_.node_position(*node_b) : std::nullopt;
             if (!a || !b) {
-                note(out_, fmt::format("{}: the axis nodes {} and {} (NX -999) are not both defined", r.keyword,
-                                       n[1], n[2]),
+                note(out_,
+                     fmt::format("{}: the axis nodes {} and {} (NX -999) are not both defined", r.keyword, n[1], n[2]),
                      span_of(r, "NY"), true, true);
                 return;
             }
@@ -217,17 +224,18 @@ private:
                  span_of(r, "OMEGA"), true, true);
             return;
         }
-        const Vec3 w = omega != 0 ? Vec3{omega * n[0] / length, omega * n[1] / length, omega * n[2] / length}
-                                  : Vec3{0, 0, 0};
+        const Vec3 w =
+            omega != 0 ? Vec3{omega * n[0] / length, omega * n[1] / length, omega * n[2] / length} : Vec3{0, 0, 0};
         if (in_.dimension == 2 && (w[0] != 0 || w[1] != 0))
-            note(out_, fmt::format("{}: the rotation axis ({:.3g}, {:.3g}, {:.3g}) is not the z axis of a 2D model: "
-                                   "the velocities leave the x-y plane (their z parts are dropped)",
-                                   r.keyword, n[0], n[1], n[2]),
+            note(out_,
+                 fmt::format("{}: the rotation axis ({:.3g}, {:.3g}, {:.3g}) is not the z axis of a 2D model: "
+                             "the velocities leave the x-y plane (their z parts are dropped)",
+                             r.keyword, n[0], n[1], n[2]),
                  span_of(r, "NX"));
         const auto give = [&](std::uint32_t i) {
             const Vec3 d{in_.x[i] - c[0], in_.y[i] - c[1], in_.z[i] - c[2]};
-            set(i, {v[0] + w[1] * d[2] - w[2] * d[1], v[1] + w[2] * d[0] - w[0] * d[2],
-                    v[2] + w[0] * d[1] - w[1] * d[0]});
+            set(i,
+                {v[0] + w[1] * d[2] - w[2] * d[1], v[1] + w[2] * d[0] - w[0] * d[2], v[2] + w[0] * d[1] - w[1] * d[0]});
         };
         if (styp == 3) {
             if (!for_node_set(id, give)) missing_set(r, "ID", "node set", id);
@@ -260,8 +268,8 @@ private:
                 return f ? f->number : 0.0;
             };
             if (number("ICID") != 0)
-                note(out_, fmt::format("{} ICID {}: local coordinate systems are not supported", r.keyword,
-                                       number("ICID")),
+                note(out_,
+                     fmt::format("{} ICID {}: local coordinate systems are not supported", r.keyword, number("ICID")),
                      field("ICID")->span);
             for (const char* name : {"VXR", "VYR", "VZR"})
                 if (number(name) != 0) rotational_note(r, *field(name));
@@ -274,8 +282,9 @@ private:
             not_particles += !found;
         }
         if (not_particles)
-            note(out_, fmt::format("{}: {} node(s) are not SPH particles; their velocities are not used", r.keyword,
-                                   not_particles),
+            note(out_,
+                 fmt::format("{}: {} node(s) are not SPH particles; their velocities are not used", r.keyword,
+                             not_particles),
                  r.span, false);
     }
 

@@ -73,7 +73,7 @@ struct Simulation::Impl {
     double time = 0, dt = 0, dt_next = 0, external_work = 0;
     std::size_t steps = 0, since_rebuild = 0, rebuilds = 0;
     double h_max_built = 0, skin = 0;
-    bool rebuild_every_step = false;  // RunOptions::rebuild_every_step
+    bool rebuild_every_step = false;                  // RunOptions::rebuild_every_step
     mutable std::vector<DisplacementBox> skin_cells;  // closing_bound's scratch
     Timings timings;
     std::string failure;
@@ -83,15 +83,15 @@ struct Simulation::Impl {
     void initialise();
     void step();
     // OpenRadioss decks: the engine's central differences (radioss_cycle below).
-    double dt12 = 0;              // (dt_{n-1/2} + dt_{n+1/2}) / 2 of the last cycle: the velocity update's step
-    double dt1 = 0;               // dt_{n-1/2}, the step that led to the current cycle (0 at cycle 0)
+    double dt12 = 0;  // (dt_{n-1/2} + dt_{n+1/2}) / 2 of the last cycle: the velocity update's step
+    double dt1 = 0;   // dt_{n-1/2}, the step that led to the current cycle (0 at cycle 0)
     // The velocity at the current time: v^(n-1/2) + dt1 / 2 a^n for OpenRadioss decks (the engine's
     // listing, ecrit.F), the leapfrog's v otherwise.
     std::array<double, 3> velocity(std::size_t k) const {
         const double w = in.radioss_step ? 0.5 * dt1 : 0.0;
         return {s.vx[k] + w * s.ax[k], s.vy[k] + w * s.ay[k], s.vz[k] + w * s.az[k]};
     }
-    std::vector<double> heating;  // per real particle: the viscous power per unit mass of the last cycle
+    std::vector<double> heating;   // per real particle: the viscous power per unit mass of the last cycle
     std::vector<double> switches;  // per real particle: the engine's viscosity switch (viscosity.hpp)
     void radioss_cycle(double dt1);
     void radioss_step();
@@ -101,8 +101,10 @@ struct Simulation::Impl {
     // TSSFAC times `smallest` (time_step.hpp), or for OpenRadioss decks the engine's particle or
     // nodal step (/DT/NODA).
     double next_time_step(double smallest) const {
-        if (in.radioss_nodal_step) smallest = radioss_nodal_time_step(s, list, switches, in.q1, in.q2, rates.threads);
-        else if (in.radioss_step) smallest = radioss_particle_time_step(s, list, in.q1, in.q2, rates.threads);
+        if (in.radioss_nodal_step)
+            smallest = radioss_nodal_time_step(s, list, switches, in.q1, in.q2, rates.threads);
+        else if (in.radioss_step)
+            smallest = radioss_particle_time_step(s, list, in.q1, in.q2, rates.threads);
         return in.tssfac * smallest;
     }
     void update_interacting();
@@ -204,7 +206,8 @@ bool Simulation::Impl::needs_rebuild() const {
             hx = std::max(hx, d[0]), hy = std::max(hy, d[1]), hz = std::max(hz, d[2]);
         }
     }
-    const double diagonal = lx <= hx ? std::sqrt((hx - lx) * (hx - lx) + (hy - ly) * (hy - ly) + (hz - lz) * (hz - lz)) : 0.0;
+    const double diagonal =
+        lx <= hx ? std::sqrt((hx - lx) * (hx - lx) + (hy - ly) * (hy - ly) + (hz - lz) * (hz - lz)) : 0.0;
     const double grown = CubicSpline::support_factor * (h_max - h_max_built);
     if (grown + std::max(diagonal, towards) < skin) return false;
     // The global bound is spent: the local one (verlet_skin.hpp), which follows only the spread of
@@ -217,8 +220,10 @@ bool Simulation::Impl::needs_rebuild() const {
 void Simulation::Impl::evaluate() {
     update_interacting();
     update_eos();
-    if (needs_rebuild()) rebuild();
-    else update_ghosts(s, in.planes, rates.threads);
+    if (needs_rebuild())
+        rebuild();
+    else
+        update_ghosts(s, in.planes, rates.threads);
     if (in.renormalise) {  // FORM 1 (volume_weighted alone keeps the corrections at I)
         compute_corrections(s, list, rates.kernel, rates.threads);
         update_ghosts(s, in.planes, rates.threads);
@@ -315,8 +320,9 @@ void Simulation::Impl::step() {
         s.rho_half[i] = s.rho[i] + half * s.drho[i], s.e_half[i] = s.e[i] + half * s.de[i];
         s.h_half[i] = clamp_smoothing_length(s.h[i] + half * s.dh[i], s.h_low[i], s.h_high[i]);
         s.x[i] += dt * s.vx_half[i], s.y[i] += dt * s.vy_half[i], s.z[i] += dt * s.vz_half[i];
-        work += s.m[i] * dt * (body_mid[0] * s.vx_half[i] + body_mid[1] * s.vy_half[i] +
-                               (plane_strain ? 0.0 : body_mid[2] * s.vz_half[i]));
+        work += s.m[i] * dt *
+                (body_mid[0] * s.vx_half[i] + body_mid[1] * s.vy_half[i] +
+                 (plane_strain ? 0.0 : body_mid[2] * s.vz_half[i]));
         // Predicted state at the new time, from the old rates.
         s.vx[i] = s.vx_half[i] + half * s.ax[i], s.vy[i] = s.vy_half[i] + half * s.ay[i];
         s.vz[i] = s.vz_half[i] + half * s.az[i];
@@ -372,14 +378,16 @@ void Simulation::Impl::step() {
 void Simulation::Impl::radioss_cycle(double dt1) {
     update_interacting();
     update_eos();
-    if (needs_rebuild()) rebuild();
-    else update_ghosts(s, in.planes, rates.threads);
+    if (needs_rebuild())
+        rebuild();
+    else
+        update_ghosts(s, in.planes, rates.threads);
     if (in.renormalise) {  // Order 1: the corrections once per cycle, before the density (spcompl.F)
         compute_corrections(s, list, rates.kernel, rates.threads);
         update_ghosts(s, in.planes, rates.threads);
     }
     rates.body = body_acceleration(in.loads, time);
-    rates.viscosity_switch = nullptr;  // 1 reads only the density, h and stress rates (the SIMD rows may run)
+    rates.viscosity_switch = nullptr;        // 1 reads only the density, h and stress rates (the SIMD rows may run)
     compute_rates(s, list, rates, scratch);  // 1: d rho/dt and dh/dt at the old density
     RadiossGradient gradient = radioss_velocity_gradient(s, list, dt1);
     const std::size_t n = s.real;
@@ -456,8 +464,9 @@ Simulation::Setup Simulation::create(const model::Model& model, const RunOptions
     // Small runs on one thread unless told: a handful of particles per thread costs more in
     // barriers than it gains (and far more on a loaded machine).
     constexpr std::size_t small_run = 4096;
-    impl->rates.threads = options.threads > 0 ? options.threads
-                          : impl->in.x.size() < small_run ? 1 : omp_get_max_threads();
+    impl->rates.threads = options.threads > 0             ? options.threads
+                          : impl->in.x.size() < small_run ? 1
+                                                          : omp_get_max_threads();
     // Not told how many: as many as the cores other processes leave free, watched while the run goes.
     if (options.threads <= 0 && impl->rates.threads > 1) {
         impl->core_share.emplace(impl->rates.threads);

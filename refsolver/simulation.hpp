@@ -38,12 +38,13 @@ struct Unsupported {
 };
 
 struct RunOptions {
-    std::optional<double> end_time;  // overrides *CONTROL_TERMINATION ENDTIM
-    int threads = 0;                 // OpenMP threads; 0: the OpenMP default
-    bool ignore_unsupported = false; // run anyway, ignoring what cannot be honoured
-    bool simd = true;                // the SIMD pair loop where the CPU has one (false: scalar, for comparison)
-    bool avx512 = true;              // with simd: false keeps it at AVX2 where AVX-512 runs (for comparison)
-    bool rebuild_every_step = false; // rebuild the neighbour lists at every step: the reference the skin test is checked against
+    std::optional<double> end_time;   // overrides *CONTROL_TERMINATION ENDTIM
+    int threads = 0;                  // OpenMP threads; 0: the OpenMP default
+    bool ignore_unsupported = false;  // run anyway, ignoring what cannot be honoured
+    bool simd = true;                 // the SIMD pair loop where the CPU has one (false: scalar, for comparison)
+    bool avx512 = true;               // with simd: false keeps it at AVX2 where AVX-512 runs (for comparison)
+    bool rebuild_every_step =
+        false;  // rebuild the neighbour lists at every step: the reference the skin test is checked against
     // The deck's text, which OpenRadioss decks need besides the Model: the engine deck's /RUN end
     // time and the /INIVEL cards (model/radioss_run_input.hpp). Ignored for LS-DYNA decks.
     const grammar::RawDeck* deck = nullptr;
@@ -51,14 +52,14 @@ struct RunOptions {
 
 // Particle state in model order (structure of arrays).
 struct ParticleState {
-    std::vector<double> x, y, z;     // position
-    std::vector<double> vx, vy, vz;  // velocity
-    std::vector<double> rho;         // density
-    std::vector<double> e;           // specific internal energy (per unit mass)
-    std::vector<double> p;           // pressure from the EOS
-    std::vector<double> h;           // smoothing length
-    std::vector<double> mass;        // constant during the run
-    std::vector<std::uint32_t> part; // index into Simulation::part_ids()
+    std::vector<double> x, y, z;       // position
+    std::vector<double> vx, vy, vz;    // velocity
+    std::vector<double> rho;           // density
+    std::vector<double> e;             // specific internal energy (per unit mass)
+    std::vector<double> p;             // pressure from the EOS
+    std::vector<double> h;             // smoothing length
+    std::vector<double> mass;          // constant during the run
+    std::vector<std::uint32_t> part;   // index into Simulation::part_ids()
     std::vector<std::uint8_t> active;  // 0 once deactivated (BOXID, MAXV, DEATH)
     // Added: deviatoric stress S (xx yy zz xy xz yz) when the deck has *MAT_ELASTIC parts (0 for
     // its fluid particles); empty for fluid-only decks.
@@ -98,16 +99,16 @@ public:
     Simulation(const Simulation&) = delete;
     Simulation& operator=(const Simulation&) = delete;
 
-    void step();                   // one explicit time step
-    bool finished() const;         // time() >= end time
+    void step();            // one explicit time step
+    bool finished() const;  // time() >= end time
     // Steps until finished(); calls `observer` after every step (it may be empty).
     void run(const std::function<void(const Simulation&)>& observer = {});
 
     double time() const;
     double end_time() const;
-    double dt() const;             // the step just taken (the next one before the first step)
+    double dt() const;  // the step just taken (the next one before the first step)
     std::size_t steps() const;
-    int dimension() const;         // 2 or 3
+    int dimension() const;               // 2 or 3
     const ParticleState& state() const;  // model order
     Totals totals() const;
     Timings timings() const;

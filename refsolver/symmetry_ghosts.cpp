@@ -67,8 +67,10 @@ void update_ghosts(Particles& s, const std::vector<SymmetryPlane>& planes, int t
         for (std::size_t q = 0; q < planes.size() && q < 8; ++q) {
             if (!(s.ghost_planes[k] >> q & 1u)) continue;
             mirror_point(planes[q], x, y, z);
-            if (planes[q].tied) vx = -vx, vy = -vy, vz = -vz;
-            else mirror_vector(planes[q], vx, vy, vz);
+            if (planes[q].tied)
+                vx = -vx, vy = -vy, vz = -vz;
+            else
+                mirror_vector(planes[q], vx, vy, vz);
             if (b[3] != 0 || b[4] != 0 || b[5] != 0 || b[0] != b[1] || b[1] != b[2]) b = mirror_tensor(planes[q], b);
         }
         s.x[g] = x, s.y[g] = y, s.z[g] = z, s.vx[g] = vx, s.vy[g] = vy, s.vz[g] = vz;

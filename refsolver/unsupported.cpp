@@ -14,13 +14,35 @@ namespace {
 
 // Keywords the solver reads, or that do not change the physics of an SPH-only run.
 constexpr std::array<std::string_view, 29> understood = {
-    "*KEYWORD", "*TITLE", "*COMMENT", "*END", "*PARAMETER", "*PARAMETER_EXPRESSION", "*PARAMETER_DUPLICATION",
-    "*INCLUDE", "*INCLUDE_PATH", "*INCLUDE_PATH_RELATIVE", "*INCLUDE_TRANSFORM", "*CONTROL_SPH",
-    "*CONTROL_BULK_VISCOSITY", "*CONTROL_TIMESTEP", "*CONTROL_TERMINATION",
-    "*CONTROL_MPP_DECOMPOSITION_SCALE_FACTOR_SPH", "*CONTROL_MPP_DECOMPOSITION_DISTRIBUTE_SPH_ELEMENTS",
-    "*DEFINE_BOX", "*DEFINE_CURVE", "*SET_NODE_LIST", "*SET_PART_LIST", "*PART", "*SECTION_SPH",
-    "*BOUNDARY_SPH_SYMMETRY_PLANE", "*INITIAL_VELOCITY", "*INITIAL_VELOCITY_NODE", "*INITIAL_VELOCITY_GENERATION",
-    "*HOURGLASS", "*DEFINE_BOX_SPH",
+    "*KEYWORD",
+    "*TITLE",
+    "*COMMENT",
+    "*END",
+    "*PARAMETER",
+    "*PARAMETER_EXPRESSION",
+    "*PARAMETER_DUPLICATION",
+    "*INCLUDE",
+    "*INCLUDE_PATH",
+    "*INCLUDE_PATH_RELATIVE",
+    "*INCLUDE_TRANSFORM",
+    "*CONTROL_SPH",
+    "*CONTROL_BULK_VISCOSITY",
+    "*CONTROL_TIMESTEP",
+    "*CONTROL_TERMINATION",
+    "*CONTROL_MPP_DECOMPOSITION_SCALE_FACTOR_SPH",
+    "*CONTROL_MPP_DECOMPOSITION_DISTRIBUTE_SPH_ELEMENTS",
+    "*DEFINE_BOX",
+    "*DEFINE_CURVE",
+    "*SET_NODE_LIST",
+    "*SET_PART_LIST",
+    "*PART",
+    "*SECTION_SPH",
+    "*BOUNDARY_SPH_SYMMETRY_PLANE",
+    "*INITIAL_VELOCITY",
+    "*INITIAL_VELOCITY_NODE",
+    "*INITIAL_VELOCITY_GENERATION",
+    "*HOURGLASS",
+    "*DEFINE_BOX_SPH",
 };
 
 // Keywords that change the physics and that the solver does not model.
@@ -44,31 +66,35 @@ void control_sph_items(const model::Model& m, std::vector<Unsupported>& out) {
     const model::ControlSph& sph = m.controls.sph;
     const model::Form form = sph.form.value;
     if (form != model::Form::Default && form != model::Form::Renormalized)
-        add(out, fmt::format("*CONTROL_SPH FORM {} ({}) is not supported: the solver runs FORM 0 (default) and FORM 1 "
-                             "(renormalization); with --ignore-unsupported it runs FORM 0",
-                             static_cast<int>(form), model::to_string(form)),
+        add(out,
+            fmt::format("*CONTROL_SPH FORM {} ({}) is not supported: the solver runs FORM 0 (default) and FORM 1 "
+                        "(renormalization); with --ignore-unsupported it runs FORM 0",
+                        static_cast<int>(form), model::to_string(form)),
             sph.form.span);
     if (sph.idim.value == model::Dimension::Axisymmetric)
-        add(out, "*CONTROL_SPH IDIM -2 (2D axisymmetric) is not supported: the solver runs IDIM 3 (3D) and 2 (plane "
-                 "strain); with --ignore-unsupported it runs plane strain",
+        add(out,
+            "*CONTROL_SPH IDIM -2 (2D axisymmetric) is not supported: the solver runs IDIM 3 (3D) and 2 (plane "
+            "strain); with --ignore-unsupported it runs plane strain",
             sph.idim.span);
     if (sph.idim.value == model::Dimension::Unset)
         add(out, "*CONTROL_SPH IDIM not given: 3D assumed", sph.idim.span.valid() ? sph.idim.span : sph.keyword, false);
     if (sph.iavis.value != model::ArtificialViscosity::Monaghan)
-        add(out, fmt::format("*CONTROL_SPH IAVIS {} (solid-element bulk viscosity) is not supported: the solver runs "
-                             "IAVIS 0 (Monaghan); with --ignore-unsupported it runs IAVIS 0",
-                             static_cast<int>(sph.iavis.value)),
+        add(out,
+            fmt::format("*CONTROL_SPH IAVIS {} (solid-element bulk viscosity) is not supported: the solver runs "
+                        "IAVIS 0 (Monaghan); with --ignore-unsupported it runs IAVIS 0",
+                        static_cast<int>(sph.iavis.value)),
             sph.iavis.span);
     if (sph.deriv.value != 0 && sph.deriv.value != 1)
-        add(out, fmt::format("*CONTROL_SPH DERIV {} is not supported: 0 or 1 expected; DERIV 0 is run",
-                             sph.deriv.value),
+        add(out,
+            fmt::format("*CONTROL_SPH DERIV {} is not supported: 0 or 1 expected; DERIV 0 is run", sph.deriv.value),
             sph.deriv.span);
     if (sph.ishift.value != 0)
         add(out, fmt::format("*CONTROL_SPH ISHIFT {} (particle shifting) is not supported", sph.ishift.value),
             sph.ishift.span);
     if (sph.ierod.value != model::ErosionMode::StayActive)
-        add(out, fmt::format("*CONTROL_SPH IEROD {} has no effect: the solver evaluates no erosion criteria",
-                             static_cast<int>(sph.ierod.value)),
+        add(out,
+            fmt::format("*CONTROL_SPH IEROD {} has no effect: the solver evaluates no erosion criteria",
+                        static_cast<int>(sph.ierod.value)),
             sph.ierod.span, false);
     std::set<long long> parts(m.particles.part.begin(), m.particles.part.end());
     if (sph.cont.value == 1 && parts.size() > 1)
@@ -82,16 +108,17 @@ void timestep_items(const model::Model& m, std::vector<Unsupported>& out) {
     for (const model::KeywordRecord& r : m.records) {
         if (!r.schema || r.schema->name != "*CONTROL_TIMESTEP") continue;
         if (record_number(&r, "DT2MS") != 0)
-            add(out, fmt::format("*CONTROL_TIMESTEP DT2MS {} (mass scaling) is not supported",
-                                 record_number(&r, "DT2MS")),
+            add(out,
+                fmt::format("*CONTROL_TIMESTEP DT2MS {} (mass scaling) is not supported", record_number(&r, "DT2MS")),
                 record_field(&r, "DT2MS")->span);
         if (record_number(&r, "LCTM") != 0)
-            add(out, fmt::format("*CONTROL_TIMESTEP LCTM {} (time-step limit curve) is not used",
-                                 record_number(&r, "LCTM")),
+            add(out,
+                fmt::format("*CONTROL_TIMESTEP LCTM {} (time-step limit curve) is not used", record_number(&r, "LCTM")),
                 record_field(&r, "LCTM")->span, false);
         if (record_number(&r, "ERODE") != 0)
-            add(out, fmt::format("*CONTROL_TIMESTEP ERODE {} has no effect: particles are never eroded",
-                                 record_number(&r, "ERODE")),
+            add(out,
+                fmt::format("*CONTROL_TIMESTEP ERODE {} has no effect: particles are never eroded",
+                            record_number(&r, "ERODE")),
                 record_field(&r, "ERODE")->span, false);
     }
 }
@@ -103,13 +130,16 @@ void hourglass_items(const model::Model& m, std::vector<Unsupported>& out) {
         for (const model::KeywordRecord& r : m.records) {
             if (!r.schema || r.schema->name != "*HOURGLASS") continue;
             const model::FieldRecord* id = record_field(&r, "HGID");
-            if (!id || model::normalise_id(fmt::format("{}", grammar::saturating_integer<long long>(id->number))) != part.hourglass.value)
+            if (!id || model::normalise_id(fmt::format("{}", grammar::saturating_integer<long long>(id->number))) !=
+                           part.hourglass.value)
                 continue;
-            const double q1 = record_number(&r, "Q1", m.controls.q1.value), q2 = record_number(&r, "Q2", m.controls.q2.value);
+            const double q1 = record_number(&r, "Q1", m.controls.q1.value),
+                         q2 = record_number(&r, "Q2", m.controls.q2.value);
             if (q1 != m.controls.q1.value || q2 != m.controls.q2.value)
-                add(out, fmt::format("part {}: *HOURGLASS {} Q1 {} / Q2 {} per part are not supported: the solver uses "
-                                     "*CONTROL_BULK_VISCOSITY's Q1 {} / Q2 {} for every pair",
-                                     part.id, part.hourglass.value, q1, q2, m.controls.q1.value, m.controls.q2.value),
+                add(out,
+                    fmt::format("part {}: *HOURGLASS {} Q1 {} / Q2 {} per part are not supported: the solver uses "
+                                "*CONTROL_BULK_VISCOSITY's Q1 {} / Q2 {} for every pair",
+                                part.id, part.hourglass.value, q1, q2, m.controls.q1.value, m.controls.q2.value),
                     r.span);
         }
     }

@@ -107,8 +107,8 @@ double closing_bound(const Particles& s, const std::vector<SymmetryPlane>& plane
                             if (dz == 0 && (dy < 0 || (dy == 0 && dx < 0))) continue;
                             const long long ox = static_cast<long long>(x) + dx, oy = static_cast<long long>(y) + dy;
                             const std::size_t oz = z + static_cast<std::size_t>(dz);
-                            if (ox < 0 || oy < 0 || ox >= static_cast<long long>(n[0]) || oy >= static_cast<long long>(n[1]) ||
-                                oz >= n[2])
+                            if (ox < 0 || oy < 0 || ox >= static_cast<long long>(n[0]) ||
+                                oy >= static_cast<long long>(n[1]) || oz >= n[2])
                                 continue;
                             const DisplacementBox& there =
                                 cells[(oz * n[1] + static_cast<std::size_t>(oy)) * n[0] + static_cast<std::size_t>(ox)];

@@ -51,7 +51,8 @@ struct Served {
     nlohmann::json last_published(const std::string& uri) const {
         nlohmann::json out;
         for (const auto& m : messages)
-            if (m.value("method", "") == "textDocument/publishDiagnostics" && m["params"]["uri"] == uri) out = m["params"];
+            if (m.value("method", "") == "textDocument/publishDiagnostics" && m["params"]["uri"] == uri)
+                out = m["params"];
         return out;
     }
     std::size_t publications(const std::string& uri) const {
@@ -79,7 +80,9 @@ inline Served serve(const std::vector<nlohmann::json>& messages, lsp::ServerOpti
     return serve_bytes(input, options);
 }
 
-inline nlohmann::json initialize_request(int id = 1) { return request(id, "initialize", {{"capabilities", nlohmann::json::object()}}); }
+inline nlohmann::json initialize_request(int id = 1) {
+    return request(id, "initialize", {{"capabilities", nlohmann::json::object()}});
+}
 
 inline nlohmann::json did_open(const std::string& uri, const std::string& text, int version = 1) {
     return notify("textDocument/didOpen",

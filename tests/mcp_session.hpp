@@ -32,7 +32,8 @@ inline std::string mcp_request(int id, const std::string& method, const json& pa
     return json{{"jsonrpc", "2.0"}, {"id", id}, {"method", method}, {"params", params}}.dump();
 }
 
-inline std::string mcp_initialize(const json& capabilities = json::object(), const std::string& version = "2025-06-18") {
+inline std::string mcp_initialize(const json& capabilities = json::object(),
+                                  const std::string& version = "2025-06-18") {
     return mcp_request(1, "initialize",
                        {{"protocolVersion", version},
                         {"capabilities", capabilities},

@@ -51,7 +51,7 @@ DeckKind kind_of_deck(const fs::path& deck) {
 
 bool reports_its_rule_lower(const fs::path& deck) {
     const std::string name = deck.filename().string();
-    return name == "DK001_silent_spellings.k"           // infos and warnings for names LS-DYNA may read
+    return name == "DK001_silent_spellings.k"             // infos and warnings for names LS-DYNA may read
            || name == "DK017_silent_hypermesh_0000.rad";  // the info, not the warning: no starter block follows
 }
 

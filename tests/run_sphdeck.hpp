@@ -22,8 +22,8 @@ struct Run {
 // before the binary ("timeout 20 ").
 inline Run run_sphdeck(const TempDir& dir, const std::string& args, const std::string& prefix = "") {
     const std::string out = (dir.path() / "stdout.txt").string(), err = (dir.path() / "stderr.txt").string();
-    const std::string command = "cd '" + dir.path().string() + "' && " + prefix + "'" + SPHDECK_BINARY + "' " + args + " > '" +
-                                out + "' 2> '" + err + "'";
+    const std::string command = "cd '" + dir.path().string() + "' && " + prefix + "'" + SPHDECK_BINARY + "' " + args +
+                                " > '" + out + "' 2> '" + err + "'";
     const int status = std::system(command.c_str());
     auto slurp = [](const std::string& path) {
         std::ifstream in(path, std::ios::binary);

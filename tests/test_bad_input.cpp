@@ -16,8 +16,7 @@ namespace {
 const std::string kGoodDeck = "*KEYWORD\n*CONTROL_TERMINATION\n$#  endtim\n       1.0\n*END\n";
 
 // The subcommands that read a deck, each with the arguments it needs besides the deck.
-const std::vector<std::string> kReaders = {"check", "dump", "smooth", "run --quiet --out out",
-                                           "sol2sph"};
+const std::vector<std::string> kReaders = {"check", "dump", "smooth", "run --quiet --out out", "sol2sph"};
 
 void require_refused(const test::TempDir& dir, const std::string& deck, const std::string& expected,
                      const std::string& expected_by_check = "") {
@@ -43,7 +42,9 @@ TEST_CASE("bad input: an empty file is not a keyword deck") {
 
 TEST_CASE("bad input: a binary file and an all-NUL file are not keyword decks") {
     test::TempDir dir;
-    std::string binary = "\x7f" "ELF\x02\x01\x01";
+    std::string binary =
+        "\x7f"
+        "ELF\x02\x01\x01";
     binary += std::string(3, '\0') + "\xff\xfe*KEYWORD\n\x01\x02";
     dir.write("binary.k", binary);
     dir.write("zeros.k", std::string(100000, '\0'));
@@ -110,9 +111,10 @@ TEST_CASE("bad input: an empty *INCLUDE file is fine") {
 TEST_CASE("bad input: a directory as an OpenRadioss #include target is DK010, not 'not found'") {
     test::TempDir dir;
     std::filesystem::create_directories(dir.path() / "nodes.inc");
-    dir.write("m_0000.rad", "#RADIOSS STARTER\n/BEGIN\nrun\n      2026         0\n"
-                            "                  kg                  mm                  ms\n"
-                            "                  kg                  mm                  ms\n#include nodes.inc\n/END\n");
+    dir.write("m_0000.rad",
+              "#RADIOSS STARTER\n/BEGIN\nrun\n      2026         0\n"
+              "                  kg                  mm                  ms\n"
+              "                  kg                  mm                  ms\n#include nodes.inc\n/END\n");
     test::Run r = test::run_sphdeck(dir, "check --format concise m_0000.rad");
     CHECK(r.out.find("include file 'nodes.inc' cannot be read: '") != std::string::npos);
     CHECK(r.out.find("nodes.inc' is a directory, not a deck file [DK010]") != std::string::npos);

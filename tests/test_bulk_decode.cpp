@@ -18,16 +18,23 @@ namespace {
 std::string big_deck(int n) {
     std::string text = "*KEYWORD\n*NODE\n";
     for (int i = 1; i <= n; ++i) {
-        if (i == 100) text += "     abc     1.0     2.0     3.0\n";             // DK003, line skipped
-        else if (i == 5000) text += fmt::format("{:8d}     1.x     2.0     3.0\n", i);  // DK003 on X
-        else text += fmt::format("{:8d}{:16.6f}{:16.6f}{:16.6f}\n", i, 0.001 * i, 0.002 * i, 0.5);
+        if (i == 100)
+            text += "     abc     1.0     2.0     3.0\n";  // DK003, line skipped
+        else if (i == 5000)
+            text += fmt::format("{:8d}     1.x     2.0     3.0\n", i);  // DK003 on X
+        else
+            text += fmt::format("{:8d}{:16.6f}{:16.6f}{:16.6f}\n", i, 0.001 * i, 0.002 * i, 0.5);
     }
     text += "*ELEMENT_SPH\n";
     for (int i = 1; i <= n; ++i) {
-        if (i == 7) text += fmt::format("{:8d}{:8d}{:16.6f}{:8d}\n", i, 1, 0.25, i + 3);  // NEND range: 7..10
-        else if (i >= 8 && i <= 10) continue;
-        else if (i == 9000) text += "  zz9000       1       1.0\n";                     // DK003, skipped
-        else text += fmt::format("{:8d}{:8d}{:16.6f}\n", i, 1 + i % 3, 1.0 + i);
+        if (i == 7)
+            text += fmt::format("{:8d}{:8d}{:16.6f}{:8d}\n", i, 1, 0.25, i + 3);  // NEND range: 7..10
+        else if (i >= 8 && i <= 10)
+            continue;
+        else if (i == 9000)
+            text += "  zz9000       1       1.0\n";  // DK003, skipped
+        else
+            text += fmt::format("{:8d}{:8d}{:16.6f}\n", i, 1 + i % 3, 1.0 + i);
     }
     text += "*END\n";
     return text;
@@ -60,7 +67,7 @@ TEST_CASE("bulk decode: the parallel walk gives the model and findings of the se
     Built parallel = build(deck, true);
 
     // The serial result is the reference: check it is what the deck says before comparing.
-    CHECK(serial.model.nodes.id.size() == static_cast<std::size_t>(n - 1));  // the "abc" line dropped
+    CHECK(serial.model.nodes.id.size() == static_cast<std::size_t>(n - 1));   // the "abc" line dropped
     CHECK(serial.model.particles.size() == static_cast<std::size_t>(n - 1));  // 7..10 from one line, zz dropped
     CHECK(serial.summary.particles == static_cast<std::size_t>(n - 1 + 1));   // the skipped line still counts
 
@@ -103,8 +110,10 @@ TEST_CASE("bulk decode: NEND ranges the deck's nodes cannot hold are refused ali
     for (int i = 1; i <= n; ++i) text += fmt::format("{:8d}{:16.6f}{:16.6f}{:16.6f}\n", i, 0.001 * i, 0.0, 0.0);
     text += "*ELEMENT_SPH\n";
     for (int i = 1; i <= n; ++i) {
-        if (i == 5) text += fmt::format("{:8d}{:8d}{:16.6f}{:>8}\n", i, 1, 1.0, "1e15");
-        else text += fmt::format("{:8d}{:8d}{:16.6f}{:8d}\n", i, 1, 1.0, i + 2);
+        if (i == 5)
+            text += fmt::format("{:8d}{:8d}{:16.6f}{:>8}\n", i, 1, 1.0, "1e15");
+        else
+            text += fmt::format("{:8d}{:8d}{:16.6f}{:8d}\n", i, 1, 1.0, i + 2);
     }
     text += "*END\n";
     grammar::RawDeck deck = grammar::read_deck_buffer(text, "ranges.k");
@@ -149,37 +158,40 @@ TEST_CASE("bulk decode: lines the lean path must leave to the full decoder") {
     const int n = 12000;
     std::string text = "*KEYWORD\n*PARAMETER\nR XX      2.5\n*NODE\n";
     const char* odd_nodes[] = {
-        "      11,1.0,2.0,3.0",                                               // free format
-        "      12\t       1.0             2.0             3.0",                // tab moving X when expanded
-        "      13            &XX             2.0             3.0",             // parameter
-        "",                                                                    // blank line: NID required
+        "      11,1.0,2.0,3.0",                                     // free format
+        "      12\t       1.0             2.0             3.0",     // tab moving X when expanded
+        "      13            &XX             2.0             3.0",  // parameter
+        "",                                                         // blank line: NID required
         "      15             1.0             2.0             3.0       0       0        junk past 80",  // DK006
-        "   16            1.0D3             2.0             3.0",              // Fortran real
-        "      +17            1.0             2.0             3.0",            // '+' integer (misaligned)
-        "99999999999999999             1.0             2.0",                   // 17 digits > 2^53: DK007
-        "      19             1.0             2.0             3.0      x",    // TC not an integer
-        "      20             1.0             2.0             3.0       1.5", // TC written as real
-        "      21             1.0             2.0             3.0\r",          // CRLF line end
-        "      22             1.x             2.0             3.0",            // DK003
-        "      23     1.0e+400             2.0             3.0",               // overflow
+        "   16            1.0D3             2.0             3.0",                                        // Fortran real
+        "      +17            1.0             2.0             3.0",                         // '+' integer (misaligned)
+        "99999999999999999             1.0             2.0",                                // 17 digits > 2^53: DK007
+        "      19             1.0             2.0             3.0      x",                  // TC not an integer
+        "      20             1.0             2.0             3.0       1.5",               // TC written as real
+        "      21             1.0             2.0             3.0\r",                       // CRLF line end
+        "      22             1.x             2.0             3.0",                         // DK003
+        "      23     1.0e+400             2.0             3.0",                            // overflow
         "      24             1.0             2.0             3.0       0       0  extra",  // columns 73-80
     };
     for (int i = 1; i <= n; ++i) {
-        if (i >= 11 && i <= 24) text += std::string(odd_nodes[i - 11]) + "\n";
-        else if (i == 30) text += "$ a comment inside the block\n";
-        else text += fmt::format("{:8d}{:16.6f}{:16.6f}{:16.6f}\n", i, 0.001 * i, 0.002 * i, 0.5);
+        if (i >= 11 && i <= 24)
+            text += std::string(odd_nodes[i - 11]) + "\n";
+        else if (i == 30)
+            text += "$ a comment inside the block\n";
+        else
+            text += fmt::format("{:8d}{:16.6f}{:16.6f}{:16.6f}\n", i, 0.001 * i, 0.002 * i, 0.5);
     }
     text += "*ELEMENT_SPH\n";
     const char* odd_particles[] = {
-        "      11       1     1.0    &XX",        // parameter in NEND
-        "      12       1  1.0e+00    13",         // NEND range
-        "      14,1,1.0",                          // free format
-        "      15          1.0e+00",               // PID blank: required
-        "      16       1        -",               // a lone '-'
-        "      17       1  1.0e+00      17  7",    // NEND reaches 41-42 (DK023)
-        "      18       1  1.0e+00        x",      // text in an unused column (if any)
-        "      19       1  .5",                    // real without a leading digit
-        "      20       1  5.",                    // real without digits after the point
+        "      11       1     1.0    &XX",             // parameter in NEND
+        "      12       1  1.0e+00    13",             // NEND range
+        "      14,1,1.0",                              // free format
+        "      15          1.0e+00",                   // PID blank: required
+        "      16       1        -",                   // a lone '-'
+        "      17       1  1.0e+00      17  7",        // NEND reaches 41-42 (DK023)
+        "      18       1  1.0e+00        x",          // text in an unused column (if any)
+        "      19       1  .5",                        // real without a leading digit
+        "      20       1  5.",                        // real without digits after the point
         "      21       1        1.000000      1e15",  // NEND range of 1e15 written as real: DK007
     };
     for (int i = 1; i <= n; ++i) {

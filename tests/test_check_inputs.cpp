@@ -51,7 +51,8 @@ TEST_CASE("check inputs: standard input, named by --stdin-filename, resolves inc
     test::TempDir dir;
     dir.write("model/main.k", kMain);
     dir.write("model/include/parts.k", kParts);
-    const test::Run run = test::run_sphdeck(dir, "check --format concise --stdin-filename model/main.k - < model/main.k");
+    const test::Run run =
+        test::run_sphdeck(dir, "check --format concise --stdin-filename model/main.k - < model/main.k");
     CHECK(run.exit_code == 1);
     CHECK(run.out.find("model/include/parts.k:3:30: error: part 1 names material 3") != std::string::npos);
     const test::Run unnamed = test::run_sphdeck(dir, "check --format concise - < model/main.k");

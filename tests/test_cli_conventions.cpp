@@ -17,7 +17,7 @@ using namespace sphdeck;
 namespace {
 
 const std::string kTidy = "*KEYWORD\n*CONTROL_TERMINATION\n       1.0\n*END\n";
-const std::string kUntidy = "*keyword\n*CONTROL_TERMINATION\n1.0\n*END\n";  // DK021, and 1.0 not right-aligned
+const std::string kUntidy = "*keyword\n*CONTROL_TERMINATION\n1.0\n*END\n";         // DK021, and 1.0 not right-aligned
 const std::string kBroken = "*KEYWORD\n*CONTROL_TERMINATION\n       abc\n*END\n";  // DK003
 
 std::string read_file(const test::TempDir& dir, const std::string& name) {
@@ -64,7 +64,8 @@ TEST_CASE("cli conventions: list options joined or repeated; a rule code is neve
     CHECK(test::run_sphdeck(dir, "check --ignore SPH030 --ignore DK003 deck.k").exit_code == 0);
     const test::Run swallowed = test::run_sphdeck(dir, "check --ignore SPH030 DK003 deck.k");
     CHECK(swallowed.exit_code == 2);
-    CHECK(swallowed.err.find("sphdeck check: error: 'DK003' is no file but looks like a rule code") != std::string::npos);
+    CHECK(swallowed.err.find("sphdeck check: error: 'DK003' is no file but looks like a rule code") !=
+          std::string::npos);
     CHECK(swallowed.err.find("--ignore A --ignore B") != std::string::npos);
 }
 
@@ -78,8 +79,9 @@ TEST_CASE("cli conventions: the option parser's errors in sphdeck's words") {
     CHECK(no_deck.err == "sphdeck check: no deck given; try 'sphdeck check --help'\n");
     CHECK(test::run_sphdeck(dir, "smooth").err == "sphdeck smooth: no deck given; try 'sphdeck smooth --help'\n");
     const test::Run choice = test::run_sphdeck(dir, "check --format xml deck.k");
-    CHECK(choice.err ==
-          "sphdeck check: --format: 'xml' is not one of full, concise, json, sarif, github; try 'sphdeck check --help'\n");
+    CHECK(
+        choice.err ==
+        "sphdeck check: --format: 'xml' is not one of full, concise, json, sarif, github; try 'sphdeck check --help'\n");
     const test::Run number = test::run_sphdeck(dir, "run --threads abc deck.k");
     CHECK(number.exit_code == 2);
     CHECK(number.err.rfind("sphdeck run: --threads: 'abc' is not", 0) == 0);

@@ -122,8 +122,8 @@ TEST_CASE("config: command-line options override the file") {
     o.fail_on = lint::FailOn::Never;
     o.include_paths = {"/from/cli"};
     lint::apply_overrides(o, c);
-    CHECK(c.select == std::vector<std::string>{"DK"});                 // replaced
-    CHECK(c.ignore == std::vector<std::string>{"SPH032", "DK001"});   // extended
+    CHECK(c.select == std::vector<std::string>{"DK"});               // replaced
+    CHECK(c.ignore == std::vector<std::string>{"SPH032", "DK001"});  // extended
     CHECK(c.solver == "mpp");
     CHECK(c.fail_on == lint::FailOn::Never);
     CHECK(c.include_paths == std::vector<std::string>{"/from/cli", "/from/file"});  // command line first
@@ -134,7 +134,8 @@ TEST_CASE("config: select, ignore and severity act on findings") {
     c.select = {"SPH03", "bad-real"};
     c.ignore = {"sph032"};
     c.severity["SPH030"] = diag::Severity::Info;
-    std::vector<diag::Diagnostic> ds = {finding("SPH030", diag::Severity::Error), finding("SPH032", diag::Severity::Warning),
+    std::vector<diag::Diagnostic> ds = {finding("SPH030", diag::Severity::Error),
+                                        finding("SPH032", diag::Severity::Warning),
                                         finding("DK003", diag::Severity::Error), finding("DK001", diag::Severity::Info),
                                         finding("SPH100", diag::Severity::Error)};
     lint::apply_rule_settings(c, ds);

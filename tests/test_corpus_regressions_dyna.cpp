@@ -43,25 +43,28 @@ bool has_note(const diag::Diagnostic& d, const std::string& text) {
 }  // namespace
 
 TEST_CASE("corpus: 0 entries padding a set list are empty slots, not undefined ids") {
-    auto silent = engine::check_buffer(kFluid +
-                                         "*SET_NODE_LIST\n         1\n         1         2         0         0\n"
-                                         "*SET_PART_LIST\n         1\n         1         0         0         0\n"
-                                         "*SET_NODE_LIST_GENERATE\n         2\n         1         3         0         0\n",
-                                     "d.k");
+    auto silent =
+        engine::check_buffer(kFluid +
+                                 "*SET_NODE_LIST\n         1\n         1         2         0         0\n"
+                                 "*SET_PART_LIST\n         1\n         1         0         0         0\n"
+                                 "*SET_NODE_LIST_GENERATE\n         2\n         1         3         0         0\n",
+                             "d.k");
     CHECK(count_code(silent.diagnostics, "REF001") == 0);
     CHECK(count_code(silent.diagnostics, "REF002") == 0);
     REQUIRE(silent.model.node_sets.size() == 2);
     CHECK(silent.model.node_sets[0].members == std::vector<long long>{1, 2});
     CHECK(silent.model.node_sets[1].members == std::vector<long long>{1, 2, 3});
-    auto fires = engine::check_buffer(kFluid + "*SET_NODE_LIST\n         1\n         1        99         0         0\n", "d.k");
+    auto fires =
+        engine::check_buffer(kFluid + "*SET_NODE_LIST\n         1\n         1        99         0         0\n", "d.k");
     const diag::Diagnostic* d = find_code(fires.diagnostics, "REF001");
     REQUIRE(d);
     CHECK(d->message == "node set 1 names undefined node(s) 99");
 }
 
 TEST_CASE("corpus: MID 0 on a part of a thermal-only analysis is not a missing material") {
-    const std::string part = "*SECTION_SPH\n         1\n*PART\nwafer\n         1         1         0         0         0"
-                             "         0         0         1\n";
+    const std::string part =
+        "*SECTION_SPH\n         1\n*PART\nwafer\n         1         1         0         0         0"
+        "         0         0         1\n";
     auto thermal = engine::check_buffer("*KEYWORD\n*CONTROL_SOLUTION\n         1\n" + part, "d.k");
     CHECK(count_code(thermal.diagnostics, "REF004") == 0);
     CHECK(thermal.model.controls.soln.value == 1);
@@ -74,9 +77,10 @@ TEST_CASE("corpus: MID 0 on a part of a thermal-only analysis is not a missing m
         }
     }
     SUBCASE("thermal-only without a TMID: still no material at all") {
-        auto r = engine::check_buffer("*KEYWORD\n*CONTROL_SOLUTION\n         1\n*SECTION_SPH\n         1\n*PART\nwafer\n"
-                                    "         1         1         0\n",
-                                    "d.k");
+        auto r = engine::check_buffer(
+            "*KEYWORD\n*CONTROL_SOLUTION\n         1\n*SECTION_SPH\n         1\n*PART\nwafer\n"
+            "         1         1         0\n",
+            "d.k");
         CHECK(count_code(r.diagnostics, "REF004") == 1);
     }
     SUBCASE("SECID 0 is a part without section") {
@@ -94,8 +98,9 @@ TEST_CASE("corpus: a mesh fragment whose particles each name their own part make
     CHECK(r.diagnostics.size() < 10);
     const diag::Diagnostic* ref = find_code(r.diagnostics, "REF002");
     REQUIRE(ref);
-    CHECK(ref->message == "3000 particles name 3000 parts that are not defined: parts 1, 2, 3, 4, 5, ...; particles "
-                          "1, 2, 3, 4, 5, ...");
+    CHECK(ref->message ==
+          "3000 particles name 3000 parts that are not defined: parts 1, 2, 3, 4, 5, ...; particles "
+          "1, 2, 3, 4, 5, ...");
     CHECK(ref->span.line == 3004);
     CHECK(has_note(*ref, "particle 2 names part 2"));
     CHECK(has_note(*ref, "the part id equals the node id on every line: columns swapped?"));
@@ -106,9 +111,9 @@ TEST_CASE("corpus: a mesh fragment whose particles each name their own part make
 
 TEST_CASE("corpus: a few undefined parts keep one finding each; the hint needs its pattern") {
     auto r = engine::check_buffer(particles(70, false), "d.k");  // 70 particles over parts 1000-1006
-    CHECK(count_code(r.diagnostics, "REF002") == 1);           // 7 parts > 5: merged
-    auto few = engine::check_buffer(kFluid + "*ELEMENT_SPH\n       1    1001           0.001\n       2    1002           0.001\n",
-                                  "d.k");
+    CHECK(count_code(r.diagnostics, "REF002") == 1);             // 7 parts > 5: merged
+    auto few = engine::check_buffer(
+        kFluid + "*ELEMENT_SPH\n       1    1001           0.001\n       2    1002           0.001\n", "d.k");
     CHECK(count_code(few.diagnostics, "REF002") == 2);
     for (const auto& d : few.diagnostics) CHECK_FALSE(has_note(d, "columns swapped"));
     auto no_parts = engine::check_buffer(particles(3, false), "d.k");
@@ -119,8 +124,9 @@ TEST_CASE("corpus: a few undefined parts keep one finding each; the hint needs i
 
 TEST_CASE("corpus: a missing include silences undefined and unused references, not duplicates") {
     test::TempDir dir;
-    const std::string body = kFluid + "*SET_NODE_LIST\n         1\n      1001\n*SECTION_SPH\n         7\n"
-                                      "*NODE\n       1\n";
+    const std::string body = kFluid +
+                             "*SET_NODE_LIST\n         1\n      1001\n*SECTION_SPH\n         7\n"
+                             "*NODE\n       1\n";
     auto complete = engine::check_file(dir.write("complete.k", body));
     CHECK(count_code(complete.diagnostics, "REF001") == 1);
     CHECK(count_code(complete.diagnostics, "REF007") == 1);
@@ -135,8 +141,9 @@ TEST_CASE("corpus: QL 0.0 is the default's zero: no SPH012 away from FORM 12, no
     auto deck = [](const std::string& form, const std::string& ql) {
         return "*KEYWORD\n*CONTROL_MPP_DECOMPOSITION_DISTRIBUTE_SPH_ELEMENTS\n*CONTROL_SPH\n         1         0   1.0e+20"
                "         3       150" +
-               form + "\n         0         0         0         0         0         0         0       100\n         0"
-                      "         0" +
+               form +
+               "\n         0         0         0         0         0         0         0       100\n         0"
+               "         0" +
                ql + "\n";
     };
     auto zero = engine::check_buffer(deck("        15", "       0.0"), "d.k");
@@ -158,7 +165,8 @@ TEST_CASE("corpus: a title longer than 80 columns is not DK006; a data card is")
     const std::string long_title(95, 'T');
     auto title = engine::check_buffer("*KEYWORD\n*TITLE\n" + long_title + "\n*END\n", "d.k");
     CHECK(count_code(title.diagnostics, "DK006") == 0);
-    auto card = engine::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n     0.002" + std::string(75, ' ') + "9\n*END\n", "d.k");
+    auto card =
+        engine::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n     0.002" + std::string(75, ' ') + "9\n*END\n", "d.k");
     CHECK(count_code(card.diagnostics, "DK006") == 1);
 }
 
@@ -174,7 +182,8 @@ TEST_CASE("corpus: a mistake repeated on every line of a block is a finding per 
 
 TEST_CASE("flood guard: past the safety bound per code and block, the rest are dropped and counted") {
     std::vector<diag::Diagnostic> out(1, {"DK001", diag::Severity::Info, "before", {}, {}});
-    for (std::uint32_t line = 1; line <= 12; ++line) out.push_back({"DK003", diag::Severity::Error, "bad", {0, line, 1, 2}, {}});
+    for (std::uint32_t line = 1; line <= 12; ++line)
+        out.push_back({"DK003", diag::Severity::Error, "bad", {0, line, 1, 2}, {}});
     out.push_back({"DK002", diag::Severity::Error, "other", {0, 13, 1, 2}, {}});
     model::collapse_block_floods(out, 1, "*NODE", 4);
     REQUIRE(out.size() == 1 + 4 + 1);
@@ -221,17 +230,19 @@ TEST_CASE("corpus: a word too long for a number field is one finding (DK003), a 
 }
 
 TEST_CASE("corpus: a number glued across a field boundary says so in a note on its DK003") {
-    auto r = engine::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n1.000000E-3\n*DEFINE_CURVE\n         1\n"
-                                "       9.99990000E+03     0.00000000E+00\n*END\n",
-                                "d.k");  // O1 in its field: no whole-line shift (that is DK029); ENDTIM
-                                          // from column 1, too long: not one value pushed across (DK029 too)
+    auto r = engine::check_buffer(
+        "*KEYWORD\n*CONTROL_TERMINATION\n1.000000E-3\n*DEFINE_CURVE\n         1\n"
+        "       9.99990000E+03     0.00000000E+00\n*END\n",
+        "d.k");  // O1 in its field: no whole-line shift (that is DK029); ENDTIM
+                 // from column 1, too long: not one value pushed across (DK029 too)
     REQUIRE(count_code(r.diagnostics, "DK003") == 2);
     std::vector<std::string> notes;
     for (const auto& d : r.diagnostics)
         if (d.code == "DK003") notes.push_back(d.notes.empty() ? "" : d.notes.front().message);
     CHECK(notes[0] == "'1.000000E-3' runs on past column 10, so the field holds only '1.000000E-'");
-    CHECK(notes[1] == "'9.99990000E+03' of the field before runs on into this one at column 21: the field before "
-                      "holds only '9.99990000E+0'");
+    CHECK(notes[1] ==
+          "'9.99990000E+03' of the field before runs on into this one at column 21: the field before "
+          "holds only '9.99990000E+0'");
     auto word = engine::check_buffer("*KEYWORD\n*CONTROL_TERMINATION\n     abcdefghij\n*END\n", "d.k");
     const diag::Diagnostic* d = find_code(word.diagnostics, "DK003");
     REQUIRE(d);

@@ -59,7 +59,8 @@ TEST_CASE("diff: two versions of a shipped deck differ by exactly the values cha
     std::string v2 = replaced(deck, "         1         0   1.0e+20         2       150        15",
                               "         1         0   1.0e+20         2       150        12");
     v2 = replaced(v2, "         1       1.2       0.2", "         1       1.3       0.2");
-    v2 = replaced(v2, "       2          0.0225          0.0075", "       2          0.0230          0.0075");  // node 2 moved
+    v2 = replaced(v2, "       2          0.0225          0.0075",
+                  "       2          0.0230          0.0075");  // node 2 moved
     v2 = replaced(v2, "*MAT_NULL", "*PART\nsecond column\n         2         1         1         1\n*MAT_NULL");
     const auto d = diff_texts(deck, v2);
     CHECK_FALSE(d.equal());
@@ -107,11 +108,13 @@ TEST_CASE("diff: the command's exit codes and a value no layout decodes") {
     CHECK(test::run_sphdeck(dir, "diff a.k missing.k").exit_code == 2);
     // An OpenRadioss card past the first of a /MAT law whose CFG reads free lines (LAW30) is not decoded:
     // its text is compared, blanks aside.
-    const std::string rad = "#RADIOSS STARTER\n/BEGIN\nrun\n      2026         0\n                  kg                  mm                  ms\n"
-                            "                  kg                  mm                  ms\n"
-                            "/MAT/LAW30/1\nmat\n               .0078                   0\n                  10                 100                   1\n/END\n";
+    const std::string rad =
+        "#RADIOSS STARTER\n/BEGIN\nrun\n      2026         0\n                  kg                  mm                  ms\n"
+        "                  kg                  mm                  ms\n"
+        "/MAT/LAW30/1\nmat\n               .0078                   0\n                  10                 100                   1\n/END\n";
     dir.write("r1_0000.rad", rad);
-    dir.write("r2_0000.rad", replaced(rad, "                  10                 100", "                  11                 100"));
+    dir.write("r2_0000.rad",
+              replaced(rad, "                  10                 100", "                  11                 100"));
     const test::Run radioss = test::run_sphdeck(dir, "diff r1_0000.rad r2_0000.rad");
     CHECK(radioss.exit_code == 1);
     CHECK(radioss.out.find("not decoded: 10") != std::string::npos);
@@ -120,8 +123,9 @@ TEST_CASE("diff: the command's exit codes and a value no layout decodes") {
 TEST_CASE("diff: a deck and the copy `sphdeck format` writes read the same; two versions differ") {
     test::TempDir dir;
     // Values written off the right edge of their fields (left-aligned, blanks around): format moves them.
-    const std::string deck = "*KEYWORD\n*control_termination\n0.5       0         \n*SECTION_SPH\n1         1.2       "
-                             "0.2       2.0\n*END\n";
+    const std::string deck =
+        "*KEYWORD\n*control_termination\n0.5       0         \n*SECTION_SPH\n1         1.2       "
+        "0.2       2.0\n*END\n";
     dir.write("a.k", deck);
     dir.write("b.k", deck);
     CHECK(test::run_sphdeck(dir, "format b.k").exit_code == 0);

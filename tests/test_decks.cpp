@@ -76,8 +76,10 @@ std::multiset<Expectation> expectations(const grammar::SourceMap& sources) {
 std::multiset<Expectation> found(const engine::CheckResult& r) {
     std::multiset<Expectation> out;
     for (const auto& d : r.diagnostics) {
-        if (d.span.valid()) out.insert({r.deck.sources.file(d.span.file).display_name, d.span.line, d.code});
-        else out.insert({"", 0, d.code});
+        if (d.span.valid())
+            out.insert({r.deck.sources.file(d.span.file).display_name, d.span.line, d.code});
+        else
+            out.insert({"", 0, d.code});
     }
     return out;
 }
@@ -125,8 +127,8 @@ TEST_CASE("decks: every test deck produces exactly the diagnostics it declares")
         const std::string rule = test::rule_of_deck(deck);
         if (rule.empty()) continue;
         CHECK_MESSAGE(lint::find_rule(rule) != nullptr, "no registry row for " << rule);
-        const bool declares_rule = std::any_of(expected.begin(), expected.end(),
-                                               [&](const Expectation& e) { return std::get<2>(e) == rule; });
+        const bool declares_rule =
+            std::any_of(expected.begin(), expected.end(), [&](const Expectation& e) { return std::get<2>(e) == rule; });
         if (test::kind_of_deck(deck) == test::DeckKind::Fires)
             CHECK_MESSAGE(declares_rule, "a firing deck must report " << rule);
         if (test::kind_of_deck(deck) == test::DeckKind::Silent && !test::reports_its_rule_lower(deck))

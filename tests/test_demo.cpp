@@ -16,8 +16,8 @@ using namespace sphdeck;
 TEST_CASE("demo: run_demo.sh shows the mistakes with carets, then the preview table, and exits 0") {
     test::TempDir dir;
     const std::string script = std::string(SPHDECK_SOURCE_DIR) + "/decks/demo/run_demo.sh";
-    const std::string command = "NO_COLOR=1 bash '" + script + "' '" + SPHDECK_BINARY + "' > '" +
-                                (dir.path() / "out.txt").string() + "' 2>&1";
+    const std::string command =
+        "NO_COLOR=1 bash '" + script + "' '" + SPHDECK_BINARY + "' > '" + (dir.path() / "out.txt").string() + "' 2>&1";
     const int status = std::system(command.c_str());
     std::ifstream in(dir.path() / "out.txt");
     const std::string out((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -28,7 +28,7 @@ TEST_CASE("demo: run_demo.sh shows the mistakes with carets, then the preview ta
         CHECK(out.find(std::string("[") + code + "]") != std::string::npos);
     }
     CHECK(out.find("--> decks/demo/sph_mistakes_2d.k:") != std::string::npos);  // paths as the user typed them
-    CHECK(out.find("^^^") != std::string::npos);                                 // carets under the fields
+    CHECK(out.find("^^^") != std::string::npos);                                // carets under the fields
     CHECK(out.find("decks/demo/dam_break_2d.k") != std::string::npos);
     CHECK(out.find("3200") != std::string::npos);  // the preview counts the dam break's particles
 }

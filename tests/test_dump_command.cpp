@@ -88,11 +88,15 @@ TEST_CASE("dump: a keyword with repeated cards keeps them") {
 
 TEST_CASE("dump: Latin-1 text gives valid JSON") {
     test::TempDir dir;
-    dir.write("latin1.k", "*KEYWORD\n*TITLE\nd\xE9" "cembre: barrage \xE0 2 dimensions\n*END\n");
+    dir.write("latin1.k",
+              "*KEYWORD\n*TITLE\nd\xE9"
+              "cembre: barrage \xE0 2 dimensions\n*END\n");
     json doc = dump(dir, "latin1.k");
     CHECK(doc["keywords"][0]["name"] == "*TITLE");
     const std::string title = doc["keywords"][0]["fields"]["TITLE"]["value"];
-    CHECK(title == "d\xEF\xBF\xBD" "cembre: barrage \xEF\xBF\xBD 2 dimensions");
+    CHECK(title ==
+          "d\xEF\xBF\xBD"
+          "cembre: barrage \xEF\xBF\xBD 2 dimensions");
 }
 
 TEST_CASE("dump: an OpenRadioss deck gives its blocks with the fields as read") {

@@ -47,8 +47,8 @@ std::string diff_u(const std::string& before, const std::string& after) {
 
 TEST_CASE("edit: edits apply by line and column, clamped to the line, keeping line breaks") {
     const std::string text = "*KEYWORD\n  1.0  2\r\nlast";
-    const auto result = text::apply_edits(text, {edit_at(2, 1, 99, "1.0       2"), edit_at(3, 5, 5, "!"),
-                                                 edit_at(1, 1, 2, "$")});
+    const auto result =
+        text::apply_edits(text, {edit_at(2, 1, 99, "1.0       2"), edit_at(3, 5, 5, "!"), edit_at(1, 1, 2, "$")});
     CHECK(result.text == "$KEYWORD\n1.0       2\r\nlast!");
     CHECK(result.applied == 3);
     CHECK(result.skipped == 0);
@@ -64,7 +64,8 @@ TEST_CASE("edit: an edit overlapping one taken before it is skipped, touching on
 }
 
 TEST_CASE("edit: edits on lines that do not exist or with reversed columns are skipped") {
-    const auto result = text::apply_edits("a\nb\n", {edit_at(0, 1, 2, "x"), edit_at(4, 1, 2, "x"), edit_at(1, 3, 2, "x")});
+    const auto result =
+        text::apply_edits("a\nb\n", {edit_at(0, 1, 2, "x"), edit_at(4, 1, 2, "x"), edit_at(1, 3, 2, "x")});
     CHECK(result.text == "a\nb\n");
     CHECK(result.skipped == 3);
 }
@@ -111,9 +112,9 @@ TEST_CASE("edit: random edits give the diff diff -u gives") {
             const std::uint32_t line = 1 + next(line_count);
             const std::string unique = "edit " + std::to_string(trial) + "." + std::to_string(e);
             switch (next(3)) {
-                case 0: edits.push_back(edit_at(line, 1, 99, unique)); break;           // replace the line
+                case 0: edits.push_back(edit_at(line, 1, 99, unique)); break;                // replace the line
                 case 1: edits.push_back(edit_at(line, 1, 1, "$# " + unique + "\n")); break;  // a header above
-                default: edits.push_back(edit_at(line, 6, 6, unique)); break;           // insert inside
+                default: edits.push_back(edit_at(line, 6, 6, unique)); break;                // insert inside
             }
         }
         CAPTURE(trial);

@@ -84,7 +84,7 @@ TEST_CASE("expression: fortran number forms") {
     CHECK(value_of("1.0D3") == 1000);
     CHECK(value_of("2.5d-4") == doctest::Approx(2.5e-4));
     CHECK(value_of("2.e1") == 20);
-    CHECK(value_of("1.0+3") == 4);  // '+' is an operator here, not an exponent
+    CHECK(value_of("1.0+3") == 4);   // '+' is an operator here, not an exponent
     CHECK(value_of("1e-400") == 0);  // underflow reads as zero
 }
 
@@ -276,14 +276,14 @@ TEST_CASE("expression: domain errors with offsets") {
 TEST_CASE("expression: deep nesting") {
     CHECK(value_of(std::string(100, '(') + "1" + std::string(100, ')')) == 1);
 
-    for (const std::string& text : {std::string(10000, '(') + "1" + std::string(10000, ')'),
-                                   std::string(10000, '(') + "1",  // unbalanced too
-                                   std::string(10000, '-') + "1",  // unary chains recurse as well
-                                   [] {
-                                       std::string s = "2";
-                                       for (int i = 0; i < 10000; ++i) s += "**2";
-                                       return s;
-                                   }()}) {
+    for (const std::string& text :
+         {std::string(10000, '(') + "1" + std::string(10000, ')'), std::string(10000, '(') + "1",  // unbalanced too
+          std::string(10000, '-') + "1",  // unary chains recurse as well
+          [] {
+              std::string s = "2";
+              for (int i = 0; i < 10000; ++i) s += "**2";
+              return s;
+          }()}) {
         const ExpressionResult r = error_of(text);
         CHECK(r.error == ExpressionError::Syntax);
         CHECK(r.message == "expression nested too deeply");

@@ -45,7 +45,8 @@ const std::string kHeader =
     "*MAT_NULL\n"
     "         1    1000.0\n";
 
-std::string deck(const std::string& parameters, const std::string& includes, const std::string& keyword = "*KEYWORD\n") {
+std::string deck(const std::string& parameters, const std::string& includes,
+                 const std::string& keyword = "*KEYWORD\n") {
     return keyword + parameters + kHeader.substr(std::string("*KEYWORD\n").size()) + includes + "*END\n";
 }
 
@@ -59,7 +60,8 @@ std::vector<std::string> write_decks(const test::TempDir& dir) {
         dir.write("model/a.k", deck("*PARAMETER\nR mass        1.0e-6\n", "*INCLUDE\nmesh/mesh.k\n")),
         dir.write("model/b.k", deck("*PARAMETER\nR mass          -1.0\n", "*INCLUDE\nmesh/mesh.k\n")),
         dir.write("model/c.k", deck("", "*INCLUDE\nmesh/mesh.k\n")),
-        dir.write("model/d.k", deck("*PARAMETER\nR mass        1.0e-6\n", "*INCLUDE\nmesh/mesh.k\n", "*KEYWORD LONG=Y\n")),
+        dir.write("model/d.k",
+                  deck("*PARAMETER\nR mass        1.0e-6\n", "*INCLUDE\nmesh/mesh.k\n", "*KEYWORD LONG=Y\n")),
         dir.write("model/e.k", deck("*PARAMETER\nR mass        1.0e-6\n", "*INCLUDE\nmesh/mesh.k\nmesh/copy.k\n")),
         dir.write("model/f.k", deck("", "*INCLUDE\nmesh/nested.k\n")),
     };
@@ -68,13 +70,16 @@ std::vector<std::string> write_decks(const test::TempDir& dir) {
 // Everything a check says about a deck, as text: blocks, card lines, findings with their notes and fixes.
 std::string describe(const engine::CheckResult& r) {
     std::ostringstream out;
-    const auto span = [](const grammar::Span& s) { return fmt::format("{}:{}:{}-{}", s.file, s.line, s.column, s.end_column); };
+    const auto span = [](const grammar::Span& s) {
+        return fmt::format("{}:{}:{}-{}", s.file, s.line, s.column, s.end_column);
+    };
     for (const grammar::Block& b : r.deck.blocks)
         out << b.keyword << ' ' << static_cast<int>(b.format) << ' ' << b.first_line << '+' << b.line_count << " scope "
             << b.scope << " epoch " << b.parameter_epoch << ' ' << span(b.span) << '\n';
     for (const grammar::CardLine& l : r.deck.lines) out << l.file << ':' << l.line << '@' << l.offset << ' ';
-    out << '\n' << r.deck.stats.files << ' ' << r.deck.stats.bytes << ' ' << r.deck.stats.lines << ' '
-        << r.deck.stats.keywords << ' ' << r.deck.stats.cards << '\n';
+    out << '\n'
+        << r.deck.stats.files << ' ' << r.deck.stats.bytes << ' ' << r.deck.stats.lines << ' ' << r.deck.stats.keywords
+        << ' ' << r.deck.stats.cards << '\n';
     for (const diag::Diagnostic& d : r.diagnostics) {
         out << d.code << ' ' << static_cast<int>(d.severity) << ' ' << span(d.span) << ' ' << d.message << '\n';
         for (const diag::Note& n : d.notes) out << "  note " << span(n.span) << ' ' << n.message << '\n';
@@ -106,8 +111,8 @@ TEST_CASE("file cache: decks that share includes give the findings of each deck 
             CHECK(describe(engine::check_file(decks[i], options)) == alone[i]);
         }
     const grammar::FileCache::Counters counters = cache.counters();
-    CHECK(counters.files_read == 3);              // mesh.k, copy.k, nested.k
-    CHECK(counters.readings_made == 2);           // mesh.k in the standard and in the long format
+    CHECK(counters.files_read == 3);               // mesh.k, copy.k, nested.k
+    CHECK(counters.readings_made == 2);            // mesh.k in the standard and in the long format
     CHECK(counters.readings_shared >= 2 * 6 - 2);  // every other reading of mesh.k or its copy
 }
 

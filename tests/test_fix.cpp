@@ -62,10 +62,10 @@ TEST_CASE("fix: a round takes whole fixes that do not overlap; a file included t
     const auto sources = two_instances_of_one_file();
     std::vector<diag::Diagnostic> found = {
         finding(0, 1, 1, 5, "LINE"),
-        finding(1, 1, 1, 5, "LINE"),   // the same fix through the second include: applied once
-        finding(0, 1, 3, 7, "XXXX"),   // overlaps the first: the next round
-        finding(1, 2, 6, 9, "TWO"),    // another line of the same file, named through the second instance
-        finding(0, 2, 1, 1, "\n"),     // an inserted line: a judgement, taken at the unsafe level only
+        finding(1, 1, 1, 5, "LINE"),        // the same fix through the second include: applied once
+        finding(0, 1, 3, 7, "XXXX"),        // overlaps the first: the next round
+        finding(1, 2, 6, 9, "TWO"),         // another line of the same file, named through the second instance
+        finding(0, 2, 1, 1, "\n"),          // an inserted line: a judgement, taken at the unsafe level only
         finding(0, 1, 6, 9, "ONE", false),  // unsafe: not at the safe level
     };
     edit::FixRound round = edit::choose_fixes(sources, found, edit::FixLevel::Safe);
@@ -95,8 +95,9 @@ TEST_CASE("fix: a fix is taken whole or not at all") {
 
 TEST_CASE("fix: rounds on a deck and its include, line endings and untouched files kept") {
     test::TempDir dir;
-    const std::string deck = dir.write("main.k", "*KEYWORD\n*INCLUDE\ncontrols.k\n*INCLUDE\ncontrols.k\n"
-                                                 "*INCLUDE\nclean.k\n*END\n");
+    const std::string deck = dir.write("main.k",
+                                       "*KEYWORD\n*INCLUDE\ncontrols.k\n*INCLUDE\ncontrols.k\n"
+                                       "*INCLUDE\nclean.k\n*END\n");
     dir.write("controls.k", mistaken_deck);
     dir.write("clean.k", "*KEYWORD\n*CONTROL_SPH\n*END\n");
     engine::Documents documents;
@@ -105,18 +106,19 @@ TEST_CASE("fix: rounds on a deck and its include, line endings and untouched fil
     const edit::FixedFile& file = outcome.files[0];
     CHECK(fs::path(file.path).filename() == "controls.k");
     CHECK(file.original == mistaken_deck);
-    CHECK(file.fixed == "*KEYWORD\r\n"
-                        "*CONTROL_TERMINATION\r\n"
-                        "$#  endtim    endcyc     dtmin    endeng    endmas     nosol\r\n"
-                        "    1.0E-3         0       0.0\r\n"
-                        "*CONTROL_TIMESTPE\r\n"
-                        "       0.0       0.9\r\n"
-                        "*END\r\n");
+    CHECK(file.fixed ==
+          "*KEYWORD\r\n"
+          "*CONTROL_TERMINATION\r\n"
+          "$#  endtim    endcyc     dtmin    endeng    endmas     nosol\r\n"
+          "    1.0E-3         0       0.0\r\n"
+          "*CONTROL_TIMESTPE\r\n"
+          "       0.0       0.9\r\n"
+          "*END\r\n");
     CHECK(outcome.fixed == 4);  // two findings in each instance of the file, whose text is edited once
     CHECK(test::count_code(outcome.remaining.diagnostics, "DK029") == 0);
     CHECK(test::count_code(outcome.remaining.diagnostics, "DK021") == 0);
     CHECK(test::count_code(outcome.remaining.diagnostics, "DK001") == 2);  // unsafe: left, in both instances
-    CHECK(slurp(dir.path() / "controls.k") == mistaken_deck);  // fix_deck writes nothing itself
+    CHECK(slurp(dir.path() / "controls.k") == mistaken_deck);              // fix_deck writes nothing itself
 
     engine::Documents again;
     outcome = edit::fix_deck(deck, again, {}, edit::FixLevel::Unsafe);
@@ -164,8 +166,9 @@ TEST_CASE("fix: DK032's blank heading is inserted by --unsafe-fixes only") {
     CHECK(fixed.find("$ expect: DK032\n\n         1         1         1         1\n") != std::string::npos);
     CHECK(test::count_code(outcome.remaining.diagnostics, "DK032") == 0);
     for (const auto& d : outcome.remaining.diagnostics) CHECK(d.severity == diag::Severity::Info);
-    CHECK(text::apply_edits(outcome.files[0].original,
-                            edit::line_edits_between(outcome.files[0].original, fixed)).text == fixed);
+    CHECK(
+        text::apply_edits(outcome.files[0].original, edit::line_edits_between(outcome.files[0].original, fixed)).text ==
+        fixed);
 }
 
 TEST_CASE("fix: DK016's tab expanded only when the layout it shows is certain") {
@@ -242,10 +245,10 @@ TEST_CASE("fix: every rule whose findings carry fixes in the deck tests says so 
         const auto found = seen.find(std::string(rule.code));
         const std::set<bool> kinds = found == seen.end() ? std::set<bool>{} : found->second;
         switch (rule.fix) {
-        case lint::Fixable::None: CHECK(kinds.empty()); break;
-        case lint::Fixable::Safe: CHECK(kinds == std::set<bool>{true}); break;
-        case lint::Fixable::Unsafe: CHECK(kinds == std::set<bool>{false}); break;
-        case lint::Fixable::Mixed: CHECK(kinds == std::set<bool>{false, true}); break;
+            case lint::Fixable::None: CHECK(kinds.empty()); break;
+            case lint::Fixable::Safe: CHECK(kinds == std::set<bool>{true}); break;
+            case lint::Fixable::Unsafe: CHECK(kinds == std::set<bool>{false}); break;
+            case lint::Fixable::Mixed: CHECK(kinds == std::set<bool>{false, true}); break;
         }
     }
 }

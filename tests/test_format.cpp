@@ -62,10 +62,10 @@ TEST_CASE("format line: the bulk lines' quick test agrees with the layout") {
     using K = edit::CellKind;
     const std::vector<K> kinds{K::Number, K::Number, K::Number};
     std::string out;
-    for (const std::string line : {"       1  1.00000000e-01 -2.00000000e+00", "       1  1.00000000e-01",
-                                   "       1                  -2.00000000e+00", "1         1.00000000e-01",
-                                   "       1  1.00000000e-01 ", "       1 1.0 2", "       1  1.00000000e-01 x",
-                                   "       1-1.00000000e-01"}) {
+    for (const std::string line :
+         {"       1  1.00000000e-01 -2.00000000e+00", "       1  1.00000000e-01",
+          "       1                  -2.00000000e+00", "1         1.00000000e-01", "       1  1.00000000e-01 ",
+          "       1 1.0 2", "       1  1.00000000e-01 x", "       1-1.00000000e-01"}) {
         CAPTURE(line);
         const bool quick = edit::already_laid_out(line, slots, kinds);
         const auto laid = edit::layout_fixed_line(line, slots, kinds, out);

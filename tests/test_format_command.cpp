@@ -64,7 +64,8 @@ TEST_CASE("format command: --check and --diff write nothing; in place, then idem
     r = test::run_sphdeck(dir, "format -v main.k");
     CHECK(r.exit_code == 0);
     CHECK(r.err.find("main.k:7: left as written: finding DK003") != std::string::npos);
-    CHECK(slurp(main) == "*KEYWORD\n*INCLUDE\npart.k\n*CONTROL_TERMINATION\n       1.0\n*CONTROL_TIMESTEP\n   0.0000.9\n*END\n");
+    CHECK(slurp(main) ==
+          "*KEYWORD\n*INCLUDE\npart.k\n*CONTROL_TERMINATION\n       1.0\n*CONTROL_TIMESTEP\n   0.0000.9\n*END\n");
     CHECK(slurp(part) == kPart);  // not named, not formatted
     CHECK(test::run_sphdeck(dir, "format --check main.k").exit_code == 0);
     CHECK(test::run_sphdeck(dir, "format --check --includes main.k").exit_code == 1);

@@ -39,8 +39,8 @@ void compare(const keywords::KeywordSchema& hand, const keywords::KeywordSchema&
     for (const CardSpec& c : gen.cards)
         if (!c.unknown_layout) gen_cards.push_back(&c);
     if (gen_cards.size() != hand.cards.size())
-        out << hand.name << ": " << hand.cards.size() << " card(s) by hand, " << gen_cards.size()
-            << " generated" << (gen.cards.size() != gen_cards.size() ? " before an unknown layout" : "") << "\n";
+        out << hand.name << ": " << hand.cards.size() << " card(s) by hand, " << gen_cards.size() << " generated"
+            << (gen.cards.size() != gen_cards.size() ? " before an unknown layout" : "") << "\n";
     for (std::size_t i = 0; i < std::min(gen_cards.size(), hand.cards.size()); ++i) {
         const CardSpec& h = hand.cards[i];
         const CardSpec& g = *gen_cards[i];
@@ -223,7 +223,8 @@ TEST_CASE("generated layouts: *ELEMENT_SOLID is read in its one-line and two-lin
     // one-line form: columns 17-24 are N1, and the next line is the next element
     auto one = engine::check_buffer(
         "*KEYWORD\n*ELEMENT_SOLID\n       1       1     abc       2       3       4       5       6       7       8\n"
-        "       2       1       1       2       3       4       5       6     xyz       8\n", "d.k");
+        "       2       1       1       2       3       4       5       6     xyz       8\n",
+        "d.k");
     CHECK(has_finding(one, "DK003", "'abc' in integer field N1 is not a number"));
     CHECK(has_finding(one, "DK003", "'xyz' in integer field N7 is not a number"));
 }

@@ -14,7 +14,7 @@ TEST_CASE("id kinds: the field holding a block's own id, by family") {
     const keywords::IdDefinition* part = keywords::defining_field("*PART_INERTIA", "PID");
     REQUIRE(part);
     CHECK(part->kind == "PART");
-    CHECK(keywords::defining_field("*PART", "SECID") == nullptr);  // names a section, defines none
+    CHECK(keywords::defining_field("*PART", "SECID") == nullptr);           // names a section, defines none
     CHECK(keywords::defining_field("*MAT_ADD_EROSION", "MID") == nullptr);  // adds to a material
     CHECK(keywords::defining_field("*MAT_ELASTIC", "MID")->kind == "MAT");
     CHECK(keywords::defining_field("*SET_PART_LIST", "SID")->kind == "SET_PART");

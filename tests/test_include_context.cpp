@@ -109,8 +109,7 @@ TEST_CASE("include context: sphdeck check names the deck and reports only the fi
 }
 
 TEST_CASE("DK018: a copy in the same file is an error, a copy in an include a warning naming the copy used") {
-    const engine::CheckResult r =
-        engine::check_file(std::string(SPHDECK_SOURCE_DIR) + "/decks/tests/dk/DK018_fires.k");
+    const engine::CheckResult r = engine::check_file(std::string(SPHDECK_SOURCE_DIR) + "/decks/tests/dk/DK018_fires.k");
     REQUIRE(count_code(r.diagnostics, "DK018") == 2);
     for (const diag::Diagnostic& d : r.diagnostics) {
         if (d.code != "DK018") continue;

@@ -77,7 +77,9 @@ Places places_of(const std::vector<std::string>& lines) {
 
 // One random edit of `lines` as an LSP change; `lines` becomes the edited text.
 nlohmann::json random_edit(std::vector<std::string>& lines, std::mt19937& random) {
-    const auto pick = [&](std::size_t n) { return static_cast<std::uint32_t>(std::uniform_int_distribution<std::size_t>(0, n - 1)(random)); };
+    const auto pick = [&](std::size_t n) {
+        return static_cast<std::uint32_t>(std::uniform_int_distribution<std::size_t>(0, n - 1)(random));
+    };
     const Places places = places_of(lines);
     // Where: anywhere, inside a bulk block, or on or next to a keyword line.
     std::uint32_t line = pick(lines.size());
@@ -86,8 +88,9 @@ nlohmann::json random_edit(std::vector<std::string>& lines, std::mt19937& random
     if (where == 2 && !places.keywords.empty())
         line = std::min<std::uint32_t>(places.keywords[pick(places.keywords.size())] + pick(3),
                                        static_cast<std::uint32_t>(lines.size() - 1));
-    static const std::vector<std::string> pieces = {"0", "1", "7", "-1", "2.5e-3", " ", "     ", "12345678", "&rho",
-                                                    "abc", ",", "1.0e+20", "*NODE", "*PART", "$ comment", ""};
+    static const std::vector<std::string> pieces = {"0",     "1",        "7",         "-1",  "2.5e-3", " ",
+                                                    "     ", "12345678", "&rho",      "abc", ",",      "1.0e+20",
+                                                    "*NODE", "*PART",    "$ comment", ""};
     const auto range = [](std::uint32_t l1, std::uint32_t c1, std::uint32_t l2, std::uint32_t c2) {
         return nlohmann::json{{"start", {{"line", l1}, {"character", c1}}}, {"end", {{"line", l2}, {"character", c2}}}};
     };
@@ -121,8 +124,10 @@ nlohmann::json random_edit(std::vector<std::string>& lines, std::mt19937& random
             return {{"range", range(line, 0, line, 0)}, {"text", copy + "\n"}};
         }
         default: {  // text across lines removed, keyword lines included
-            const std::uint32_t last = std::min<std::uint32_t>(static_cast<std::uint32_t>(lines.size() - 1), line + 1 + pick(4));
-            const std::uint32_t from = std::min<std::uint32_t>(pick(11), static_cast<std::uint32_t>(lines[line].size()));
+            const std::uint32_t last =
+                std::min<std::uint32_t>(static_cast<std::uint32_t>(lines.size() - 1), line + 1 + pick(4));
+            const std::uint32_t from =
+                std::min<std::uint32_t>(pick(11), static_cast<std::uint32_t>(lines[line].size()));
             const std::uint32_t to = std::min<std::uint32_t>(pick(11), static_cast<std::uint32_t>(lines[last].size()));
             lines[line] = lines[line].substr(0, from) + lines[last].substr(to);
             lines.erase(lines.begin() + line + 1, lines.begin() + last + 1);
@@ -152,7 +157,8 @@ std::string lattice_deck(int n) {
 
 }  // namespace
 
-TEST_CASE("recheck: the geometry preview is kept when an edit leaves its inputs alone, and findings equal a full check") {
+TEST_CASE(
+    "recheck: the geometry preview is kept when an edit leaves its inputs alone, and findings equal a full check") {
     const std::filesystem::path path = std::filesystem::absolute("incremental_lattice.k");
     const std::string text = lattice_deck(20);
     engine::Documents documents;
@@ -184,8 +190,9 @@ TEST_CASE("recheck: the geometry preview is kept when an edit leaves its inputs 
 
     // A coordinate, a mass and CSLH change the preview's inputs: computed again.
     // Pairs, not structured bindings: clang does not let doctest's macros capture a binding.
-    for (const auto& change : std::vector<std::pair<std::string, std::string>>{
-             {"1.00000000e-02", "1.50000000e-02"}, {"1.00000000e-01\n", "2.00000000e-01\n"}, {"1.2", "1.3"}}) {
+    for (const auto& change : std::vector<std::pair<std::string, std::string>>{{"1.00000000e-02", "1.50000000e-02"},
+                                                                               {"1.00000000e-01\n", "2.00000000e-01\n"},
+                                                                               {"1.2", "1.3"}}) {
         const std::string& from = change.first;
         const std::string& to = change.second;
         std::string edited = retitled;

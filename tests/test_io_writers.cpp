@@ -113,8 +113,8 @@ std::string vtk_python() {
 std::string validate_vtp(const std::string& path, std::size_t points, std::string* names) {
     TempDir dir;
     const std::string script = dir.write("check_vtp.py", vtp_check_py), out = (dir.path() / "out.txt").string();
-    const std::string command = "python3 '" + script + "' '" + path + "' " + std::to_string(points) + " > '" + out +
-                                "' 2>&1";
+    const std::string command =
+        "python3 '" + script + "' '" + path + "' " + std::to_string(points) + " > '" + out + "' 2>&1";
     if (std::system(command.c_str()) != 0) return "structure check failed: " + slurp(out);
     std::string found = slurp(out);
     while (!found.empty() && (found.back() == '\n' || found.back() == '\r')) found.pop_back();
@@ -128,8 +128,8 @@ std::string validate_vtp(const std::string& path, std::size_t points, std::strin
     for (char& c : list)
         if (c == ' ') c = ',';
     const std::string vtk_script = dir.write("read_vtp.py", vtp_vtk_py);
-    const std::string vtk_command = py + " '" + vtk_script + "' '" + path + "' " + std::to_string(points) + " '" +
-                                    list + "' > '" + out + "' 2>&1";
+    const std::string vtk_command =
+        py + " '" + vtk_script + "' '" + path + "' " + std::to_string(points) + " '" + list + "' > '" + out + "' 2>&1";
     if (std::system(vtk_command.c_str()) != 0) return "VTK reader: " + slurp(out);
     return "";
 }

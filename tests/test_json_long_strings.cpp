@@ -31,7 +31,10 @@ std::string repeated(std::string_view piece, std::size_t bytes) {
 }  // namespace
 
 TEST_CASE("json long strings: a document's text is lifted, decoded and put back") {
-    const std::string escaped = repeated(R"(       1 -4.94938015e-02 \"q\" \\ a\/b\ttab caf)" "\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x98\x80" R"(\r\n)", 200000);
+    const std::string escaped = repeated(R"(       1 -4.94938015e-02 \"q\" \\ a\/b\ttab caf)"
+                                         "\xC3\xA9 \xE2\x82\xAC \xF0\x9F\x98\x80"
+                                         R"(\r\n)",
+                                         200000);
     const std::string body = did_open(escaped);
     const auto lifted = lsp::lift_long_strings(body);
     REQUIRE(lifted);
@@ -51,8 +54,9 @@ TEST_CASE("json long strings: what the fast scan leaves to nlohmann-json, and wh
     CHECK(*lsp::parse_body(body) == *reference(body));
     // Refused by both: a raw control character, bytes that are not UTF-8, a bad escape, an open string,
     // a lone surrogate, an overlong encoding, a surrogate encoded in UTF-8.
-    for (const std::string& bad : {std::string("a\tb"), std::string("\xC3"), std::string("\\x"), std::string("\xE0\x80\x80"),
-                                  std::string("\xED\xA0\x80"), std::string("\\ud800"), std::string("\xF5\x80\x80\x80")}) {
+    for (const std::string& bad :
+         {std::string("a\tb"), std::string("\xC3"), std::string("\\x"), std::string("\xE0\x80\x80"),
+          std::string("\xED\xA0\x80"), std::string("\\ud800"), std::string("\xF5\x80\x80\x80")}) {
         CAPTURE(bad);
         body = did_open(lines + bad);
         CHECK_FALSE(reference(body));
@@ -76,9 +80,11 @@ TEST_CASE("json long strings: what the fast scan leaves to nlohmann-json, and wh
 
 TEST_CASE("json long strings: random texts give nlohmann-json's answer") {
     std::mt19937 random(29);
-    const std::vector<std::string> pieces = {"a", " ", "1.0e-3", "\\n", "\\r\\n", "\\t", "\\\"", "\\\\", "\\/", "\\b",
-                                             "\\f", "\xC3\xA9", "\xE2\x82\xAC", "\xF0\x9F\x98\x80", "\\u0041", "\"",
-                                             "\\", "\x01", "\xC3", "\xFF", "{", "}", "[", ":", ","};
+    const std::vector<std::string> pieces = {
+        "a",       " ",   "1.0e-3", "\\n",  "\\r\\n",   "\\t",          "\\\"",
+        "\\\\",    "\\/", "\\b",    "\\f",  "\xC3\xA9", "\xE2\x82\xAC", "\xF0\x9F\x98\x80",
+        "\\u0041", "\"",  "\\",     "\x01", "\xC3",     "\xFF",         "{",
+        "}",       "[",   ":",      ","};
     for (int round = 0; round < 200; ++round) {
         std::string text = repeated("*NODE\\n", 11000);
         const int extra = std::uniform_int_distribution<int>(0, 3)(random);

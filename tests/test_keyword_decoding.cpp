@@ -137,7 +137,8 @@ std::vector<std::string> full_values(const CardSpec& card) {
 
 std::string diagnostics_text(const std::vector<diag::Diagnostic>& ds) {
     std::string s;
-    for (const auto& d : ds) s += fmt::format("[{} {}:{}-{} {}] ", d.code, d.span.line, d.span.column, d.span.end_column, d.message);
+    for (const auto& d : ds)
+        s += fmt::format("[{} {}:{}-{} {}] ", d.code, d.span.line, d.span.column, d.span.end_column, d.message);
     return s;
 }
 
@@ -162,8 +163,8 @@ void check_full(const CardSpec& card, const std::vector<std::string>& values, co
 // The span of a diagnostic lies inside field `i`'s columns on the test line.
 bool inside_field(const diag::Diagnostic& d, const CardSpec& card, std::size_t i, CardFormat format) {
     const auto slot = keywords::layout(card, format)[i];
-    return d.span.line == kLine && d.span.column >= slot.start + 1 && d.span.end_column <= slot.start + slot.width + 1 &&
-           d.span.column < d.span.end_column;
+    return d.span.line == kLine && d.span.column >= slot.start + 1 &&
+           d.span.end_column <= slot.start + slot.width + 1 && d.span.column < d.span.end_column;
 }
 
 }  // namespace

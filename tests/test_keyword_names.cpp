@@ -44,7 +44,8 @@ TEST_CASE("keyword names: the second source and names LS-DYNA writes itself are 
     CHECK(std::is_sorted(names.begin(), names.end()));
     CHECK(std::adjacent_find(names.begin(), names.end()) == names.end());
     // Family prefixes that the CFG files only build names from are left out.
-    for (std::string_view prefix : {"*CONTACT", "*MAT", "*AIRBAG", "*CONTACT_2D"}) CHECK_FALSE(keywords::is_keyword971_name(prefix));
+    for (std::string_view prefix : {"*CONTACT", "*MAT", "*AIRBAG", "*CONTACT_2D"})
+        CHECK_FALSE(keywords::is_keyword971_name(prefix));
     CHECK(keywords::known_by_name("*CONTROL_MPP_IO_NOFAIL"));
     CHECK(keywords::known_by_name("*CONTACT_SPOTWELD_WITH_TORSION_PENALTY_MPP_ID"));
     CHECK(keywords::known_by_name("*RVE_INFO"));
@@ -73,7 +74,7 @@ TEST_CASE("keyword names: a known keyword with options of the grammar that no ta
 }
 
 TEST_CASE("keyword names: a did-you-mean replaces no word of the name wholesale") {
-    CHECK_FALSE(keywords::suggest_keyword("*INITIAL_SPH"));  // not *INITIAL_CPG: two of SPH's three letters
+    CHECK_FALSE(keywords::suggest_keyword("*INITIAL_SPH"));              // not *INITIAL_CPG: two of SPH's three letters
     CHECK(keywords::suggest_keyword("*CONTROL_SHP") == "*CONTROL_SPH");  // a swap: half an edit
     CHECK(keywords::suggest_keyword("*SECTON_SPH") == "*SECTION_SPH");
     CHECK(keywords::suggest_keyword("*ELEMENT_SPHH") == "*ELEMENT_SPH");

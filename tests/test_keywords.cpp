@@ -10,11 +10,11 @@
 #include "grammar/keywords/schema.hpp"
 
 using namespace sphdeck;
+using grammar::CardFormat;
 using keywords::CardRepeat;
 using keywords::CardSpec;
 using keywords::FieldType;
 using keywords::KeywordSchema;
-using grammar::CardFormat;
 
 namespace {
 
@@ -144,25 +144,63 @@ TEST_CASE("keywords: names, aliases, conditions and unique flags are consistent"
         // Optional cards only at the end of the base cards.
         bool optional_seen = false;
         for (const CardSpec& c : k.cards) {
-            if (c.repeat == CardRepeat::Optional) optional_seen = true;
-            else if (optional_seen) CHECK(c.repeat != CardRepeat::Once);
+            if (c.repeat == CardRepeat::Optional)
+                optional_seen = true;
+            else if (optional_seen)
+                CHECK(c.repeat != CardRepeat::Once);
         }
     }
 }
 
 TEST_CASE("keywords: every keyword of the SPH card reference is in the tables") {
     const char* expected[] = {
-        "*CONTROL_SPH", "*SECTION_SPH", "*ELEMENT_SPH", "*NODE", "*PART",
-        "*BOUNDARY_SPH_SYMMETRY_PLANE", "*BOUNDARY_SPH_FLOW", "*BOUNDARY_SPH_NON_REFLECTING", "*DEFINE_BOX",
-        "*DEFINE_BOX_SPH", "*DEFINE_SPH_TO_SPH_COUPLING", "*DEFINE_ADAPTIVE_SOLID_TO_SPH",
-        "*CONTROL_BULK_VISCOSITY", "*HOURGLASS", "*CONTROL_TIMESTEP", "*CONTROL_TERMINATION", "*CONTROL_SOLUTION",
-        "*CONTROL_MPP_DECOMPOSITION_SCALE_FACTOR_SPH", "*CONTROL_MPP_DECOMPOSITION_DISTRIBUTE_SPH_ELEMENTS",
-        "*MAT_NULL", "*MAT_ELASTIC", "*MAT_PLASTIC_KINEMATIC", "*MAT_JOHNSON_COOK", "*EOS_GRUNEISEN",
-        "*EOS_LINEAR_POLYNOMIAL", "*EOS_MURNAGHAN", "*MAT_ADD_EROSION", "*SET_NODE_LIST", "*SET_PART_LIST",
-        "*PARAMETER", "*PARAMETER_EXPRESSION", "*PARAMETER_DUPLICATION", "*INCLUDE", "*INCLUDE_PATH",
-        "*INCLUDE_PATH_RELATIVE", "*INCLUDE_TRANSFORM", "*KEYWORD", "*TITLE", "*COMMENT", "*END",
-        "*DEFINE_CURVE", "*LOAD_BODY_X", "*LOAD_BODY_Y", "*LOAD_BODY_Z", "*INITIAL_VELOCITY",
-        "*INITIAL_VELOCITY_NODE", "*INITIAL_VELOCITY_GENERATION",
+        "*CONTROL_SPH",
+        "*SECTION_SPH",
+        "*ELEMENT_SPH",
+        "*NODE",
+        "*PART",
+        "*BOUNDARY_SPH_SYMMETRY_PLANE",
+        "*BOUNDARY_SPH_FLOW",
+        "*BOUNDARY_SPH_NON_REFLECTING",
+        "*DEFINE_BOX",
+        "*DEFINE_BOX_SPH",
+        "*DEFINE_SPH_TO_SPH_COUPLING",
+        "*DEFINE_ADAPTIVE_SOLID_TO_SPH",
+        "*CONTROL_BULK_VISCOSITY",
+        "*HOURGLASS",
+        "*CONTROL_TIMESTEP",
+        "*CONTROL_TERMINATION",
+        "*CONTROL_SOLUTION",
+        "*CONTROL_MPP_DECOMPOSITION_SCALE_FACTOR_SPH",
+        "*CONTROL_MPP_DECOMPOSITION_DISTRIBUTE_SPH_ELEMENTS",
+        "*MAT_NULL",
+        "*MAT_ELASTIC",
+        "*MAT_PLASTIC_KINEMATIC",
+        "*MAT_JOHNSON_COOK",
+        "*EOS_GRUNEISEN",
+        "*EOS_LINEAR_POLYNOMIAL",
+        "*EOS_MURNAGHAN",
+        "*MAT_ADD_EROSION",
+        "*SET_NODE_LIST",
+        "*SET_PART_LIST",
+        "*PARAMETER",
+        "*PARAMETER_EXPRESSION",
+        "*PARAMETER_DUPLICATION",
+        "*INCLUDE",
+        "*INCLUDE_PATH",
+        "*INCLUDE_PATH_RELATIVE",
+        "*INCLUDE_TRANSFORM",
+        "*KEYWORD",
+        "*TITLE",
+        "*COMMENT",
+        "*END",
+        "*DEFINE_CURVE",
+        "*LOAD_BODY_X",
+        "*LOAD_BODY_Y",
+        "*LOAD_BODY_Z",
+        "*INITIAL_VELOCITY",
+        "*INITIAL_VELOCITY_NODE",
+        "*INITIAL_VELOCITY_GENERATION",
         "*DEFINE_SPH_MESH_BOX",  // beyond the reference: read for `sphdeck smooth` (docs/sph-keywords.md)
     };
     for (const char* name : expected) {
@@ -345,7 +383,7 @@ TEST_CASE("keywords: *CONTROL_SPH fields as the reference gives them") {
 TEST_CASE("keywords: layouts in standard, I10 and long format") {
     const CardSpec& node = schema("*NODE").cards[0];
     CHECK(slots(node, CardFormat::Standard) == "0:8 8:16 24:16 40:16 56:8 64:8");
-    CHECK(slots(node, CardFormat::I10) == "0:10 10:16 26:16 42:16 58:10 68:10");   // I10, 3E16, 2I10
+    CHECK(slots(node, CardFormat::I10) == "0:10 10:16 26:16 42:16 58:10 68:10");    // I10, 3E16, 2I10
     CHECK(slots(node, CardFormat::Long) == "0:20 20:20 40:20 60:20 80:20 100:20");  // I20, 3E20, 2I20
 
     const CardSpec& particle = schema("*ELEMENT_SPH").cards[0];

@@ -34,11 +34,13 @@ const std::map<std::string, std::set<std::string>> kAllowed = {
     // The MCP server (`sphdeck mcp`) stands on the editor server: its JSON-RPC reader and file URIs.
     {"mcp", {"lsp", "edit", "engine", "lint", "preproc", "model", "grammar", "diag", "text"}},
     {"verify", {"engine", "refsolver", "lint", "preproc", "model", "grammar", "diag", "text", "io"}},
-    {"cli", {"mcp", "lsp", "edit", "verify", "engine", "refsolver", "lint", "preproc", "model", "grammar", "diag", "text",
-             "io"}},
+    {"cli",
+     {"mcp", "lsp", "edit", "verify", "engine", "refsolver", "lint", "preproc", "model", "grammar", "diag", "text",
+      "io"}},
     // The Python module stands beside cli/ (python/CMakeLists.txt): it reuses the rooms, never cli/.
-    {"python", {"mcp", "lsp", "edit", "verify", "engine", "refsolver", "lint", "preproc", "model", "grammar", "diag",
-                "text", "io"}},
+    {"python",
+     {"mcp", "lsp", "edit", "verify", "engine", "refsolver", "lint", "preproc", "model", "grammar", "diag", "text",
+      "io"}},
 };
 
 struct Violation {

@@ -25,7 +25,9 @@ json range(int l0, int c0, int l1, int c1) {
     return {{"start", {{"line", l0}, {"character", c0}}}, {"end", {{"line", l1}, {"character", c1}}}};
 }
 
-json edit(int l0, int c0, int l1, int c1, const std::string& text) { return {{"range", range(l0, c0, l1, c1)}, {"text", text}}; }
+json edit(int l0, int c0, int l1, int c1, const std::string& text) {
+    return {{"range", range(l0, c0, l1, c1)}, {"text", text}};
+}
 
 // A workspace that keeps what it publishes.
 struct Recorder {
@@ -98,7 +100,8 @@ TEST_CASE("lsp diagnostics: the findings of sphdeck check, with ranges, severiti
         std::ifstream in(path, std::ios::binary);
         text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     }
-    const auto s = test::serve({test::initialize_request(), test::did_open(uri, text, 5), test::request(2, "shutdown")});
+    const auto s =
+        test::serve({test::initialize_request(), test::did_open(uri, text, 5), test::request(2, "shutdown")});
     std::vector<json> got;
     for (const auto& m : s.messages)
         if (m.value("method", "") == "textDocument/publishDiagnostics")
@@ -130,7 +133,8 @@ TEST_CASE("lsp diagnostics: the findings of sphdeck check, with ranges, severiti
     CHECK(with_notes == expected.diagnostics.size());
     CHECK(in_include == 1);  // the include's finding went to the include's URI
     CHECK(s.last_published(uri)["version"] == 5);
-    CHECK_FALSE(s.last_published(lsp::uri_from_path(std::string(SPHDECK_SOURCE_DIR) + "/decks/tests/dk/include/dk018_f_controls.inc"))
+    CHECK_FALSE(s.last_published(lsp::uri_from_path(std::string(SPHDECK_SOURCE_DIR) +
+                                                    "/decks/tests/dk/include/dk018_f_controls.inc"))
                     .contains("version"));  // not open: no version
 }
 
@@ -146,7 +150,8 @@ TEST_CASE("lsp diagnostics: notes without a location join the message; unknown c
 
 TEST_CASE("lsp workspace: an edit fixes a finding, the list empties, versions follow") {
     test::TempDir dir;
-    const std::string deck = dir.write("deck.k", "*KEYWORD\n*CONTROL_TERMINATION\n     0.002\n*CONTROL_TERMINATION\n     0.003\n*END\n");
+    const std::string deck =
+        dir.write("deck.k", "*KEYWORD\n*CONTROL_TERMINATION\n     0.002\n*CONTROL_TERMINATION\n     0.003\n*END\n");
     const std::string uri = lsp::uri_from_path(deck);
     Recorder r;
     // Open with the text on disk, then edit the buffer only.
@@ -286,7 +291,8 @@ TEST_CASE("lsp server: waiting didChange notifications cost one re-check; a requ
 
     const json hover = {{"textDocument", {{"uri", uri}}}, {"position", {{"line", 0}, {"character", 0}}}};
     s = test::serve({test::initialize_request(), test::did_open(uri, text, 1), test::did_change(uri, 2, add_twice),
-                     test::request(7, "textDocument/hover", hover), test::did_change(uri, 3, json::array({json{{"text", text}}}))});
+                     test::request(7, "textDocument/hover", hover),
+                     test::did_change(uri, 3, json::array({json{{"text", text}}}))});
     REQUIRE(s.publications(uri) == 2);
     std::size_t first_list = 0, answer = 0;
     for (std::size_t i = 0; i < s.messages.size(); ++i) {

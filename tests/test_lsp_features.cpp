@@ -30,8 +30,7 @@ At find(const std::string& text, std::string_view needle, std::uint32_t from = 0
         if (end == std::string::npos) end = text.size();
         const std::string_view l(text.data() + start, end - start);
         if (line >= from)
-            if (auto at = l.find(needle); at != std::string_view::npos)
-                return {line, static_cast<std::uint32_t>(at)};
+            if (auto at = l.find(needle); at != std::string_view::npos) return {line, static_cast<std::uint32_t>(at)};
         start = end + 1;
         ++line;
     }
@@ -67,7 +66,9 @@ std::vector<std::string> labels(const nlohmann::json& list) {
     return out;
 }
 
-bool has(const std::vector<std::string>& v, const std::string& s) { return std::find(v.begin(), v.end(), s) != v.end(); }
+bool has(const std::vector<std::string>& v, const std::string& s) {
+    return std::find(v.begin(), v.end(), s) != v.end();
+}
 
 // Applies TextEdits (ASCII text: characters are bytes), last first.
 std::string apply(std::string text, nlohmann::json edits) {
@@ -187,7 +188,8 @@ TEST_CASE("lsp hover: keywords, ids and parameters") {
     const At rho = find(kDeck, "&rho");
     text = hover_text(deck, {rho.line, rho.character + 2});
     CHECK(text.find("parameter **rho** = 1000") != std::string::npos);
-    CHECK(hover_text(deck, {find(kDeck, "R rho").line, 3}).find("parameter **rho** = 1000 (real)") != std::string::npos);
+    CHECK(hover_text(deck, {find(kDeck, "R rho").line, 3}).find("parameter **rho** = 1000 (real)") !=
+          std::string::npos);
     // A comment line says nothing.
     CHECK(ask(deck, "textDocument/hover", {{"position", position(find(kDeck, "$#   secid"))}}).is_null());
 }
@@ -205,8 +207,9 @@ TEST_CASE("lsp definition and references: part -> section, material, EOS; parame
     location = ask(deck, "textDocument/definition", {{"position", position({rho.line, rho.character + 1})}});
     CHECK(location["range"]["start"]["line"] == find(kDeck, "R rho").line);
     // From the definition's name: its one use, and itself with the declaration.
-    auto uses = ask(deck, "textDocument/references",
-                    {{"position", position({find(kDeck, "R rho").line, 3})}, {"context", {{"includeDeclaration", true}}}});
+    auto uses =
+        ask(deck, "textDocument/references",
+            {{"position", position({find(kDeck, "R rho").line, 3})}, {"context", {{"includeDeclaration", true}}}});
     REQUIRE(uses.size() == 2);
     CHECK(uses[0]["range"]["start"]["line"] == rho.line);
 
@@ -345,16 +348,18 @@ TEST_CASE("lsp code actions: suppression comments and the realignment of a value
     // A second code joins the file's directive instead of adding a line.
     const std::string with_directive = "$ sphdeck: disable-file=DK003 -- legacy\n" + text.substr(0);
     const auto deck2 = check(with_directive + "");
-    nlohmann::json other = {{"range", {{"start", {{"line", 3}, {"character", 0}}}, {"end", {{"line", 3}, {"character", 1}}}}},
+    nlohmann::json other = {{"range",
+                             {{"start", {{"line", 3}, {"character", 0}}}, {"end", {{"line", 3}, {"character", 1}}}}},
                             {"code", "DK004"},
                             {"source", "sphdeck"}};
     actions = ask(deck2, "textDocument/codeAction",
                   {{"textDocument", {{"uri", "file:///tmp/main.k"}}}, {"context", {{"diagnostics", {other}}}}});
     REQUIRE(actions.size() == 2);
-    CHECK(apply(with_directive, actions[1]["edit"]["changes"]["file:///tmp/main.k"]).rfind(
-              "$ sphdeck: disable-file=DK003,DK004 -- legacy\n", 0) == 0);
+    CHECK(apply(with_directive, actions[1]["edit"]["changes"]["file:///tmp/main.k"])
+              .rfind("$ sphdeck: disable-file=DK003,DK004 -- legacy\n", 0) == 0);
     // And one above the card.
-    const std::string with_card_directive = "*KEYWORD\n$ sphdeck: disable=DK002\n*CONTROL_TERMINATION\n      1.0E-3\n*END\n";
+    const std::string with_card_directive =
+        "*KEYWORD\n$ sphdeck: disable=DK002\n*CONTROL_TERMINATION\n      1.0E-3\n*END\n";
     const auto deck3 = check(with_card_directive);
     other["range"]["start"]["line"] = 2;
     actions = ask(deck3, "textDocument/codeAction",
@@ -393,9 +398,9 @@ TEST_CASE("lsp realign: only when the result is certain") {
     CHECK(grammar::realign_card("      1.0E-3      2.5", card, CardFormat::Standard) == "    1.0E-3       2.5");
     CHECK_FALSE(grammar::realign_card("       1.0       2.0", card, CardFormat::Standard));  // nothing strays
     CHECK_FALSE(grammar::realign_card("   1.23456789012", card, CardFormat::Standard));      // wider than its field
-    CHECK_FALSE(grammar::realign_card("       1.0E-3", card, CardFormat::Standard));  // 3 and 3 columns: a tie
-    CHECK_FALSE(grammar::realign_card("      1.0,2.0", card, CardFormat::Standard));  // free format
-    CHECK_FALSE(grammar::realign_card("   1.0 2.0  3.0", card, CardFormat::Standard));  // two values for one field
+    CHECK_FALSE(grammar::realign_card("       1.0E-3", card, CardFormat::Standard));         // 3 and 3 columns: a tie
+    CHECK_FALSE(grammar::realign_card("      1.0,2.0", card, CardFormat::Standard));         // free format
+    CHECK_FALSE(grammar::realign_card("   1.0 2.0  3.0", card, CardFormat::Standard));       // two values for one field
 }
 
 TEST_CASE("lsp features on an OpenRadioss deck: header hover, field hover, /PART -> /PROP, /MAT") {
@@ -459,9 +464,10 @@ water
     auto symbols = ask(deck, "textDocument/documentSymbol", nlohmann::json::object());
     CHECK(symbols.size() == deck.result.deck.blocks.size());
     // A suppression in a Radioss deck uses '#', after the #RADIOSS line.
-    nlohmann::json d = {{"range", {{"start", {{"line", ids.line}, {"character", 0}}}, {"end", {{"line", ids.line}, {"character", 1}}}}},
-                        {"code", "RAD001"},
-                        {"source", "sphdeck"}};
+    nlohmann::json d = {
+        {"range", {{"start", {{"line", ids.line}, {"character", 0}}}, {"end", {{"line", ids.line}, {"character", 1}}}}},
+        {"code", "RAD001"},
+        {"source", "sphdeck"}};
     auto actions = ask(deck, "textDocument/codeAction",
                        {{"textDocument", {{"uri", "file:///tmp/lsp_0000.rad"}}}, {"context", {{"diagnostics", {d}}}}});
     REQUIRE(actions.size() == 2);
@@ -538,8 +544,8 @@ TEST_CASE("lsp definition: an *INCLUDE file name opens the file; ids defined in 
     auto location = ask(deck, "textDocument/definition", {{"position", position(find(main_text, "section.k"))}});
     CHECK(location["uri"] == lsp::uri_from_path(dir / "section.k"));
     CHECK(location["range"]["start"]["line"] == 0);
-    CHECK(hover_text(deck, find(main_text, "section.k")).find("includes `" + (dir / "section.k").string() + "` (4 lines)") !=
-          std::string::npos);
+    CHECK(hover_text(deck, find(main_text, "section.k"))
+              .find("includes `" + (dir / "section.k").string() + "` (4 lines)") != std::string::npos);
     const At part = find(main_text, "         1         3");
     location = ask(deck, "textDocument/definition", {{"position", position({part.line, 19})}});
     CHECK(location["uri"] == lsp::uri_from_path(dir / "section.k"));
@@ -552,7 +558,8 @@ TEST_CASE("lsp definition: an *INCLUDE file name opens the file; ids defined in 
 }
 
 TEST_CASE("lsp definition: ids named by the generated layouts (a *LOAD_BODY_Z curve)") {
-    const std::string text = "*KEYWORD\n*DEFINE_CURVE\n         9\n       0.0       1.0\n*LOAD_BODY_Z\n         9\n*END\n";
+    const std::string text =
+        "*KEYWORD\n*DEFINE_CURVE\n         9\n       0.0       1.0\n*LOAD_BODY_Z\n         9\n*END\n";
     const auto deck = check(text);
     const At load = find(text, "         9", find(text, "*LOAD_BODY_Z").line);
     auto location = ask(deck, "textDocument/definition", {{"position", position({load.line, 9})}});
@@ -627,7 +634,8 @@ TEST_CASE("lsp features: every request on every line of the test decks answers v
                     ++failed;
                 }
         }
-        auto actions = lsp::answer_feature("textDocument/codeAction", deck, 0, {{"context", {{"diagnostics", diagnostics}}}});
+        auto actions =
+            lsp::answer_feature("textDocument/codeAction", deck, 0, {{"context", {{"diagnostics", diagnostics}}}});
         CHECK_MESSAGE(failed == 0, entry.path().string());
         CHECK(actions.result.is_array());
     }

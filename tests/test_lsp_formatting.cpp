@@ -44,7 +44,8 @@ TEST_CASE("lsp formatting: the edits of sphdeck format, whole lines, for the fil
     REQUIRE(edits.is_array());
     REQUIRE(edits.size() == 3);
     CHECK(edits[0]["newText"] == "*KEYWORD");
-    CHECK(edits[0]["range"] == nlohmann::json::parse(R"({"start":{"line":0,"character":0},"end":{"line":0,"character":8}})"));
+    CHECK(edits[0]["range"] ==
+          nlohmann::json::parse(R"({"start":{"line":0,"character":0},"end":{"line":0,"character":8}})"));
     CHECK(edits[1]["newText"] == "       1.0");
     CHECK(edits[1]["range"]["start"]["line"] == 2);
     CHECK(edits[2]["newText"] == "         1       1.2");

@@ -76,8 +76,8 @@ TEST_CASE("lsp json-rpc: headers: Content-Type, any case, bare newlines") {
 
 TEST_CASE("lsp json-rpc: a bad or missing Content-Length is skipped and the next message read") {
     for (const char* bad : {"Content-Length: abc\r\n\r\n", "Content-Length: -5\r\n\r\n",
-                                  "Content-Length: 99999999999999999999999\r\n\r\n", "Content-Type: x\r\n\r\n",
-                                  "garbage without colon\r\n\r\n", "{\"jsonrpc\":\"2.0\"}\r\n\r\n"}) {
+                            "Content-Length: 99999999999999999999999\r\n\r\n", "Content-Type: x\r\n\r\n",
+                            "garbage without colon\r\n\r\n", "{\"jsonrpc\":\"2.0\"}\r\n\r\n"}) {
         INFO(bad);
         auto read = read_all(std::string(bad) + test::frame(hello));
         REQUIRE(!read.empty());

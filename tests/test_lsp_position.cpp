@@ -24,8 +24,8 @@ TEST_CASE("lsp positions: UTF-16 units against bytes") {
     CHECK(lsp::byte_offset(ascii, 3) == 3);
     CHECK(lsp::byte_offset(ascii, 99) == 5);
     const std::string_view accented = "$ d\xC3\xA9p\xF0\x9F\x98\x80x";  // "$ dép😀x": é 2 bytes, emoji 4 bytes
-    CHECK(lsp::utf16_offset(accented, 5) == 4);   // after "é"
-    CHECK(lsp::utf16_offset(accented, 10) == 7);  // after the emoji: a surrogate pair
+    CHECK(lsp::utf16_offset(accented, 5) == 4);                         // after "é"
+    CHECK(lsp::utf16_offset(accented, 10) == 7);                        // after the emoji: a surrogate pair
     CHECK(lsp::byte_offset(accented, 7) == 10);
     CHECK(lsp::byte_offset(accented, 4) == 5);
     const std::string_view latin1 = "a\xE9z";  // not UTF-8: one unit per byte

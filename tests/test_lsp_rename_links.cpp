@@ -59,9 +59,7 @@ struct Files {
     ~Files() { fs::remove_all(dir); }
 };
 
-nlohmann::json at(std::uint32_t line, std::uint32_t character) {
-    return {{"line", line}, {"character", character}};
-}
+nlohmann::json at(std::uint32_t line, std::uint32_t character) { return {{"line", line}, {"character", character}}; }
 
 // The server's answers to an open of main.k and then `requests` (ids from 2).
 test::Served serve_on(const Files& files, const std::vector<nlohmann::json>& requests) {
@@ -111,14 +109,15 @@ TEST_CASE("lsp rename: a section id across an include, byte-exact, the deck read
     const Files files("sphdeck_lsp_rename_include");
     const auto before = engine::check_file(files.main.string());
     const auto served = serve_on(files, {
-        test::request(2, "textDocument/prepareRename",
-                      {{"textDocument", {{"uri", lsp::uri_from_path(files.main)}}}, {"position", at(6, 19)}}),
-        rename_request(3, files, at(6, 19), "42"),
-        test::request(4, "textDocument/references",
-                      {{"textDocument", {{"uri", lsp::uri_from_path(files.main)}}},
-                       {"position", at(6, 19)},
-                       {"context", {{"includeDeclaration", true}}}}),
-    });
+                                            test::request(2, "textDocument/prepareRename",
+                                                          {{"textDocument", {{"uri", lsp::uri_from_path(files.main)}}},
+                                                           {"position", at(6, 19)}}),
+                                            rename_request(3, files, at(6, 19), "42"),
+                                            test::request(4, "textDocument/references",
+                                                          {{"textDocument", {{"uri", lsp::uri_from_path(files.main)}}},
+                                                           {"position", at(6, 19)},
+                                                           {"context", {{"includeDeclaration", true}}}}),
+                                        });
     const auto prepared = served.answer(2)["result"];
     CHECK(prepared["placeholder"] == "3");
     CHECK(prepared["range"]["start"] == at(6, 19));
@@ -150,13 +149,15 @@ TEST_CASE("lsp rename: a section id across an include, byte-exact, the deck read
 
 TEST_CASE("lsp rename: a part id in its particles; free format; refusals say why") {
     const Files files("sphdeck_lsp_rename_refused");
-    const auto served = serve_on(files, {
-        rename_request(2, files, at(6, 9), "7"),              // PID 1: the *PART and both particles
-        rename_request(3, files, at(6, 9), "123456789"),      // 9 digits: wider than *ELEMENT_SPH's 8-column PID
-        rename_request(4, files, at(6, 19), "4"),             // section 4 exists
-        rename_request(5, files, at(6, 19), "x1"),            // not an id
-        rename_request(6, files, at(5, 3), "5"),              // a comment: nothing to rename
-    });
+    const auto served =
+        serve_on(files, {
+                            rename_request(2, files, at(6, 9), "7"),  // PID 1: the *PART and both particles
+                            rename_request(3, files, at(6, 9),
+                                           "123456789"),  // 9 digits: wider than *ELEMENT_SPH's 8-column PID
+                            rename_request(4, files, at(6, 19), "4"),   // section 4 exists
+                            rename_request(5, files, at(6, 19), "x1"),  // not an id
+                            rename_request(6, files, at(5, 3), "5"),    // a comment: nothing to rename
+                        });
     const auto changes = served.answer(2)["result"]["changes"][lsp::uri_from_path(files.main)];
     REQUIRE(changes.size() == 3);
     std::string expected = kMain;
@@ -177,7 +178,8 @@ TEST_CASE("lsp rename: a part id in its particles; free format; refusals say why
 
     // Section 4 is written in free format: its id is replaced where it stands.
     lsp::CheckedDeck deck{files.main, engine::check_file(files.main.string())};
-    auto renamed = lsp::answer_feature("textDocument/rename", deck, 1, {{"position", at(4, 0)}, {"newName", "1234567890"}});
+    auto renamed =
+        lsp::answer_feature("textDocument/rename", deck, 1, {{"position", at(4, 0)}, {"newName", "1234567890"}});
     const auto edits = renamed.result["changes"][lsp::uri_from_path(files.section)];
     REQUIRE(edits.size() == 1);
     CHECK(apply(kSection, edits).find("\n1234567890,1.3\n") != std::string::npos);
@@ -210,13 +212,15 @@ TEST_CASE("lsp rename: a *PARAMETER name and its &uses; a Radioss property id in
 TEST_CASE("lsp document links, workspace symbols and code lens") {
     const Files files("sphdeck_lsp_links_symbols");
     const std::string main_uri = lsp::uri_from_path(files.main);
-    const auto served = serve_on(files, {
-        test::request(2, "textDocument/documentLink", {{"textDocument", {{"uri", main_uri}}}}),
-        test::request(3, "workspace/symbol", {{"query", "sec"}}),
-        test::request(4, "workspace/symbol", {{"query", "pt1wat"}}),
-        test::request(5, "textDocument/codeLens", {{"textDocument", {{"uri", main_uri}}}}),
-        test::request(6, "textDocument/codeLens", {{"textDocument", {{"uri", lsp::uri_from_path(files.section)}}}}),
-    });
+    const auto served =
+        serve_on(files, {
+                            test::request(2, "textDocument/documentLink", {{"textDocument", {{"uri", main_uri}}}}),
+                            test::request(3, "workspace/symbol", {{"query", "sec"}}),
+                            test::request(4, "workspace/symbol", {{"query", "pt1wat"}}),
+                            test::request(5, "textDocument/codeLens", {{"textDocument", {{"uri", main_uri}}}}),
+                            test::request(6, "textDocument/codeLens",
+                                          {{"textDocument", {{"uri", lsp::uri_from_path(files.section)}}}}),
+                        });
     const auto initialize = served.answer(1)["result"]["capabilities"];
     CHECK(initialize["renameProvider"]["prepareProvider"] == true);
     CHECK(initialize.contains("documentLinkProvider"));

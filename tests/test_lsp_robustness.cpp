@@ -21,25 +21,39 @@ namespace {
 json random_message(std::mt19937& rng, const std::string& uri) {
     const auto pick = [&](std::size_t n) { return static_cast<std::size_t>(rng() % n); };
     // Not "shutdown" or "exit": the server must stay up to the end.
-    static const char* methods[] = {"initialize", "initialized", "textDocument/hover",
-                                    "textDocument/didOpen", "textDocument/didChange", "textDocument/didClose",
-                                    "textDocument/didSave", "textDocument/definition", "$/cancelRequest",
-                                    "workspace/symbol", "textDocument/completion", "", "x"};
-    static const char* texts[] = {"*KEYWORD\n*CONTROL_TERMINATION\n 1.0\n*END\n", "", "garbage\n",
+    static const char* methods[] = {"initialize",
+                                    "initialized",
+                                    "textDocument/hover",
+                                    "textDocument/didOpen",
+                                    "textDocument/didChange",
+                                    "textDocument/didClose",
+                                    "textDocument/didSave",
+                                    "textDocument/definition",
+                                    "$/cancelRequest",
+                                    "workspace/symbol",
+                                    "textDocument/completion",
+                                    "",
+                                    "x"};
+    static const char* texts[] = {"*KEYWORD\n*CONTROL_TERMINATION\n 1.0\n*END\n",
+                                  "",
+                                  "garbage\n",
                                   "*KEYWORD\n*INCLUDE\nnowhere.inc\n*PART\n\n 1 2 3\n",
-                                  "#RADIOSS STARTER\n/BEGIN\n", "*KEYWORD\n$ d\xc3\xa9j\xc3\xa0 \xf0\x9f\x98\x80\n*END\n"};
+                                  "#RADIOSS STARTER\n/BEGIN\n",
+                                  "*KEYWORD\n$ d\xc3\xa9j\xc3\xa0 \xf0\x9f\x98\x80\n*END\n"};
     json params;
     switch (pick(5)) {
         case 0: params = json::object(); break;
         case 1: params = nullptr; break;
         case 2: params = json::array({1, "two"}); break;
         default:
-            params = {{"textDocument", {{"uri", pick(4) ? json(uri) : json(pick(2) ? "untitled:1" : "file:///nope/%zz")},
-                                        {"version", static_cast<int>(pick(100)) - 5},
-                                        {"text", texts[pick(std::size(texts))]}}},
+            params = {{"textDocument",
+                       {{"uri", pick(4) ? json(uri) : json(pick(2) ? "untitled:1" : "file:///nope/%zz")},
+                        {"version", static_cast<int>(pick(100)) - 5},
+                        {"text", texts[pick(std::size(texts))]}}},
                       {"position", {{"line", pick(10)}, {"character", pick(3) ? json(pick(40)) : json(-1)}}},
-                      {"contentChanges", json::array({{{"range", {{"start", {{"line", pick(8)}, {"character", pick(30)}}},
-                                                                   {"end", {{"line", pick(8)}, {"character", pick(30)}}}}},
+                      {"contentChanges", json::array({{{"range",
+                                                        {{"start", {{"line", pick(8)}, {"character", pick(30)}}},
+                                                         {"end", {{"line", pick(8)}, {"character", pick(30)}}}}},
                                                        {"text", texts[pick(std::size(texts))]}},
                                                       {{"text", texts[pick(std::size(texts))]}}})},
                       {"id", pick(50)}};
@@ -70,17 +84,19 @@ TEST_CASE("lsp robustness: thousands of random and truncated messages, then a va
     for (; sent < 3000; ++sent) {
         const std::string framed = test::frame(random_message(rng, uri));
         switch (rng() % 8) {
-            case 0: input += random_bytes(rng, rng() % 200); break;                       // noise
-            case 1: input += framed.substr(0, rng() % framed.size()); break;              // truncated
-            case 2: {                                                                     // corrupted
+            case 0: input += random_bytes(rng, rng() % 200); break;           // noise
+            case 1: input += framed.substr(0, rng() % framed.size()); break;  // truncated
+            case 2: {                                                         // corrupted
                 std::string bad = framed;
                 for (int k = 0; k < 3; ++k) bad[rng() % bad.size()] = static_cast<char>(rng() % 256);
                 input += bad;
                 break;
             }
-            case 3: input += "Content-Length: " + std::to_string(rng() % 300) + "\r\n\r\n" + random_bytes(rng, rng() % 300); break;
+            case 3:
+                input += "Content-Length: " + std::to_string(rng() % 300) + "\r\n\r\n" + random_bytes(rng, rng() % 300);
+                break;
             case 4: input += "Content-Length: 5000\r\n\r\n" + std::string(5000, '['); break;  // above the bound below
-            default: input += framed; break;                                              // well-formed
+            default: input += framed; break;                                                  // well-formed
         }
     }
     input += "\r\n" + test::frame(json{{"jsonrpc", "2.0"}, {"id", "the-last-one"}, {"method", "no/such/method"}});
@@ -111,10 +127,13 @@ TEST_CASE("lsp binary: sphdeck lsp --stdio through a pipe: initialize, shutdown,
         const std::string output((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         return std::make_pair(WIFEXITED(status) ? WEXITSTATUS(status) : -1, test::messages_in(output));
     };
-    const std::string deck = dir.write("deck.k", "*KEYWORD\n*CONTROL_TERMINATION\n 1.0\n*CONTROL_TERMINATION\n 2.0\n*END\n");
-    const auto [code, messages] = run({test::initialize_request(1), test::notify("initialized"),
-                                       test::did_open(lsp::uri_from_path(deck), "*KEYWORD\n*CONTROL_TERMINATION\n 1.0\n*CONTROL_TERMINATION\n 2.0\n*END\n"),
-                                       test::request(2, "shutdown"), test::notify("exit")});
+    const std::string deck =
+        dir.write("deck.k", "*KEYWORD\n*CONTROL_TERMINATION\n 1.0\n*CONTROL_TERMINATION\n 2.0\n*END\n");
+    const auto [code, messages] =
+        run({test::initialize_request(1), test::notify("initialized"),
+             test::did_open(lsp::uri_from_path(deck),
+                            "*KEYWORD\n*CONTROL_TERMINATION\n 1.0\n*CONTROL_TERMINATION\n 2.0\n*END\n"),
+             test::request(2, "shutdown"), test::notify("exit")});
     CHECK(code == 0);
     REQUIRE(messages.size() == 3);
     CHECK(messages[0]["id"] == 1);

@@ -10,11 +10,14 @@ using test::notify;
 using test::request;
 
 namespace {
-int error_code(const json& answer) { return answer.is_object() && answer.contains("error") ? answer["error"]["code"].get<int>() : 0; }
+int error_code(const json& answer) {
+    return answer.is_object() && answer.contains("error") ? answer["error"]["code"].get<int>() : 0;
+}
 }  // namespace
 
 TEST_CASE("lsp server: initialize announces incremental sync, UTF-16 and the features; shutdown then exit is 0") {
-    const auto s = test::serve({test::initialize_request(1), notify("initialized"), request(2, "shutdown"), notify("exit")});
+    const auto s =
+        test::serve({test::initialize_request(1), notify("initialized"), request(2, "shutdown"), notify("exit")});
     CHECK(s.exit_code == 0);
     const json init = s.answer(1);
     REQUIRE(init.contains("result"));
@@ -41,10 +44,10 @@ TEST_CASE("lsp server: exit without shutdown is 1, and so is the input ending") 
 }
 
 TEST_CASE("lsp server: requests before initialize, after shutdown, unknown methods") {
-    const auto s = test::serve({request(1, "textDocument/hover"), notify("textDocument/didOpen"),
-                                test::initialize_request(2), test::initialize_request(3), request(4, "no/such/method"),
-                                notify("no/such/notification"), request(5, "shutdown"), request(6, "textDocument/hover"),
-                                notify("exit")});
+    const auto s =
+        test::serve({request(1, "textDocument/hover"), notify("textDocument/didOpen"), test::initialize_request(2),
+                     test::initialize_request(3), request(4, "no/such/method"), notify("no/such/notification"),
+                     request(5, "shutdown"), request(6, "textDocument/hover"), notify("exit")});
     CHECK(error_code(s.answer(1)) == lsp::error_code::server_not_initialized);
     CHECK(s.answer(2).contains("result"));
     CHECK(error_code(s.answer(3)) == lsp::error_code::invalid_request);  // initialize only once
@@ -71,9 +74,9 @@ TEST_CASE("lsp server: a cancelled request still waiting is answered RequestCanc
 TEST_CASE("lsp server: bad JSON is -32700 with id null, invalid requests -32600, responses ignored") {
     std::string input = test::frame(test::initialize_request());
     input += "Content-Length: 9\r\n\r\n{\"id\": 1,";  // not JSON
-    for (const json& bad : {json::array({1, 2}), json{{"jsonrpc", "2.0"}, {"id", 5}},
-                           json{{"jsonrpc", "2.0"}, {"id", 6}, {"method", 42}},
-                           json{{"jsonrpc", "2.0"}, {"id", json::array()}, {"method", "x"}}})
+    for (const json& bad :
+         {json::array({1, 2}), json{{"jsonrpc", "2.0"}, {"id", 5}}, json{{"jsonrpc", "2.0"}, {"id", 6}, {"method", 42}},
+          json{{"jsonrpc", "2.0"}, {"id", json::array()}, {"method", "x"}}})
         input += test::frame(bad);
     input += test::frame(json{{"jsonrpc", "2.0"}, {"id", 77}, {"result", nullptr}});  // a response to nothing
     input += test::frame(request(8, "shutdown"));
@@ -91,10 +94,13 @@ TEST_CASE("lsp server: bad JSON is -32700 with id null, invalid requests -32600,
 }
 
 TEST_CASE("lsp server: a request about a file no deck reads answers null, string ids are kept") {
-    const json params = {{"textDocument", {{"uri", "file:///nonexistent/nowhere.k"}}}, {"position", {{"line", 0}, {"character", 0}}}};
-    const auto s = test::serve({test::initialize_request(),
-                                {{"jsonrpc", "2.0"}, {"id", "abc"}, {"method", "textDocument/hover"}, {"params", params}},
-                                request(3, "textDocument/hover", json::object()), request(4, "textDocument/noSuchThing", params)});
+    const json params = {{"textDocument", {{"uri", "file:///nonexistent/nowhere.k"}}},
+                         {"position", {{"line", 0}, {"character", 0}}}};
+    const auto s =
+        test::serve({test::initialize_request(),
+                     {{"jsonrpc", "2.0"}, {"id", "abc"}, {"method", "textDocument/hover"}, {"params", params}},
+                     request(3, "textDocument/hover", json::object()),
+                     request(4, "textDocument/noSuchThing", params)});
     bool answered = false;
     for (const auto& m : s.messages)
         if (m.contains("id") && m["id"] == "abc") {
@@ -110,10 +116,12 @@ TEST_CASE("lsp server: a request about a file no deck reads answers null, string
 TEST_CASE("lsp server: a message above the bound is skipped and the user told; the server goes on") {
     lsp::ServerOptions options;
     options.max_body = 2048;
-    const json open = notify("textDocument/didOpen",
-                             {{"textDocument",
-                               {{"uri", "file:///tmp/huge.k"}, {"languageId", "lsdyna"}, {"version", 1},
-                                {"text", "*KEYWORD\n" + std::string(4096, '$') + "\n*END\n"}}}});
+    const json open =
+        notify("textDocument/didOpen", {{"textDocument",
+                                         {{"uri", "file:///tmp/huge.k"},
+                                          {"languageId", "lsdyna"},
+                                          {"version", 1},
+                                          {"text", "*KEYWORD\n" + std::string(4096, '$') + "\n*END\n"}}}});
     const auto s = test::serve({test::initialize_request(1), open, request(2, "shutdown"), notify("exit")}, options);
     CHECK(s.exit_code == 0);
     std::size_t shown = 0;

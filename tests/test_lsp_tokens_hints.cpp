@@ -82,7 +82,8 @@ std::vector<Token> decode(const nlohmann::json& result) {
         character = delta_line == 0 ? character + data[i + 1].get<std::uint32_t>() : data[i + 1].get<std::uint32_t>();
         line += delta_line;
         out.push_back({line, character, data[i + 2].get<std::uint32_t>(),
-                       std::string(lsp::kTokenTypes.at(data[i + 3].get<std::size_t>())), data[i + 4].get<std::uint32_t>()});
+                       std::string(lsp::kTokenTypes.at(data[i + 3].get<std::size_t>())),
+                       data[i + 4].get<std::uint32_t>()});
     }
     return out;
 }
@@ -102,7 +103,9 @@ std::vector<std::string> hint_labels(const nlohmann::json& hints, std::uint32_t 
         if (h["position"]["line"] == line) out.push_back(h["label"].get<std::string>());
     return out;
 }
-bool has(const std::vector<std::string>& v, const std::string& s) { return std::find(v.begin(), v.end(), s) != v.end(); }
+bool has(const std::vector<std::string>& v, const std::string& s) {
+    return std::find(v.begin(), v.end(), s) != v.end();
+}
 
 }  // namespace
 
@@ -260,15 +263,15 @@ TEST_CASE("lsp server: tokens legend, inlay hint settings from initializationOpt
     std::ofstream(dir / "section.k") << "*SECTION_SPH\n         3       1.2\n";
     const std::string uri = lsp::uri_from_path(dir / "main.k");
     const std::string include_uri = lsp::uri_from_path(dir / "section.k");
-    const nlohmann::json init = test::request(
-        1, "initialize",
-        {{"capabilities", {{"workspace", {{"didChangeWatchedFiles", {{"dynamicRegistration", true}}}}}}},
-         {"initializationOptions", {{"inlayHints", {{"enable", false}}}}}});
+    const nlohmann::json init =
+        test::request(1, "initialize",
+                      {{"capabilities", {{"workspace", {{"didChangeWatchedFiles", {{"dynamicRegistration", true}}}}}}},
+                       {"initializationOptions", {{"inlayHints", {{"enable", false}}}}}});
     // First pass: the include is fine. Then it is broken on disk and the watcher says so.
-    auto served = test::serve({init, test::notify("initialized"), test::did_open(uri, main_text),
-                               test::request(2, "textDocument/inlayHint",
-                                             {{"textDocument", {{"uri", include_uri}}}, {"range", range(0, 2)}}),
-                               test::request(3, "shutdown"), test::notify("exit")});
+    auto served = test::serve(
+        {init, test::notify("initialized"), test::did_open(uri, main_text),
+         test::request(2, "textDocument/inlayHint", {{"textDocument", {{"uri", include_uri}}}, {"range", range(0, 2)}}),
+         test::request(3, "shutdown"), test::notify("exit")});
     const auto capabilities = served.answer(1)["result"]["capabilities"];
     CHECK(capabilities["semanticTokensProvider"]["legend"]["tokenTypes"][0] == "keyword");
     CHECK(capabilities["semanticTokensProvider"]["range"] == true);
@@ -277,8 +280,7 @@ TEST_CASE("lsp server: tokens legend, inlay hint settings from initializationOpt
     REQUIRE(served.answer(2)["result"].is_array());
     CHECK(served.answer(2)["result"].empty());
     bool registered = false;
-    for (const auto& m : served.messages)
-        registered |= m.value("method", "") == "client/registerCapability";
+    for (const auto& m : served.messages) registered |= m.value("method", "") == "client/registerCapability";
     CHECK(registered);
 
     // The include's file name is coloured as one.
@@ -296,12 +298,13 @@ TEST_CASE("lsp server: tokens legend, inlay hint settings from initializationOpt
     lsp::Workspace workspace([&](const nlohmann::json& params) { published.push_back(params); });
     REQUIRE(workspace.open(uri, main_text, 1));
     workspace.flush();
-    const auto bad_real = [&](const std::string& file_uri) {  // DK003 (not a number) in the last publication of the file
-        nlohmann::json last;
-        for (const auto& p : published)
-            if (p["uri"] == file_uri) last = p["diagnostics"];
-        return std::any_of(last.begin(), last.end(), [](const nlohmann::json& d) { return d["code"] == "DK003"; });
-    };
+    const auto bad_real =
+        [&](const std::string& file_uri) {  // DK003 (not a number) in the last publication of the file
+            nlohmann::json last;
+            for (const auto& p : published)
+                if (p["uri"] == file_uri) last = p["diagnostics"];
+            return std::any_of(last.begin(), last.end(), [](const nlohmann::json& d) { return d["code"] == "DK003"; });
+        };
     CHECK_FALSE(bad_real(include_uri));
     std::ofstream(dir / "section.k") << "*SECTION_SPH\n         3       abc\n";
     workspace.flush();
@@ -330,8 +333,10 @@ TEST_CASE("lsp semantic tokens and inlay hints on every test deck: ordered, on t
         for (grammar::FileId file = 0; file < sources.size(); ++file) {
             INFO(entry.path().string() << " file " << file);
             const std::uint32_t lines = sources.line_count(file);
-            const auto full = lsp::answer_feature("textDocument/semanticTokens/full", deck, file, nlohmann::json::object());
-            const auto whole = lsp::answer_feature("textDocument/semanticTokens/range", deck, file, {{"range", range(0, lines)}});
+            const auto full =
+                lsp::answer_feature("textDocument/semanticTokens/full", deck, file, nlohmann::json::object());
+            const auto whole =
+                lsp::answer_feature("textDocument/semanticTokens/range", deck, file, {{"range", range(0, lines)}});
             REQUIRE(full.result.contains("data"));
             CHECK(full.result["data"] == whole.result["data"]);
             const auto tokens = decode(full.result);
@@ -340,7 +345,8 @@ TEST_CASE("lsp semantic tokens and inlay hints on every test deck: ordered, on t
                 CHECK(t.length > 0);
                 CHECK(t.line < lines);
                 CHECK(t.character + t.length <= sources.line_text(file, t.line + 1).size());  // ASCII decks
-                if (i > 0 && tokens[i - 1].line == t.line) CHECK(tokens[i - 1].character + tokens[i - 1].length <= t.character);
+                if (i > 0 && tokens[i - 1].line == t.line)
+                    CHECK(tokens[i - 1].character + tokens[i - 1].length <= t.character);
             }
             const auto hints = lsp::answer_feature("textDocument/inlayHint", deck, file,
                                                    {{"range", range(0, lines)}, {"settings", {{"bulkBlocks", true}}}});
@@ -395,7 +401,8 @@ TEST_CASE("lsp signature help: the card's fields, the one under the cursor activ
     help = ask(typed, "textDocument/signatureHelp", {{"position", {{"line", 2}, {"character", 11}}}});
     REQUIRE(help.is_object());
     CHECK(help["activeParameter"] == 1);  // after the comma: CSLH
-    CHECK(ask(deck, "textDocument/signatureHelp", {{"position", {{"line", line_of(kDeck, "$#    ncbs")}, {"character", 3}}}})
+    CHECK(ask(deck, "textDocument/signatureHelp",
+              {{"position", {{"line", line_of(kDeck, "$#    ncbs")}, {"character", 3}}}})
               .is_null());
 }
 
@@ -407,7 +414,8 @@ TEST_CASE("lsp definition, references and completion: every column of an id fiel
     // SECID: columns 11-20, "         3": every column leads to the section, blanks included.
     for (std::uint32_t character = 10; character < 20; ++character) {
         CAPTURE(character);
-        auto location = ask(deck, "textDocument/definition", {{"position", {{"line", part}, {"character", character}}}});
+        auto location =
+            ask(deck, "textDocument/definition", {{"position", {{"line", part}, {"character", character}}}});
         REQUIRE(location.is_object());
         CHECK(location["range"]["start"]["line"] == section);
     }

@@ -52,19 +52,20 @@ TEST_CASE("mcp: tools/list declares every tool with an object input schema") {
 TEST_CASE("mcp: bad messages get JSON-RPC errors and the server goes on") {
     const auto out = mcp_exchange({
         mcp_initialize(),
-        "{not json",                                          // -32700
-        "[1, 2]",                                             // a batch: -32600
-        R"({"id": 3, "method": "ping"})",                     // no jsonrpc: -32600
+        "{not json",                                                // -32700
+        "[1, 2]",                                                   // a batch: -32600
+        R"({"id": 3, "method": "ping"})",                           // no jsonrpc: -32600
         R"({"jsonrpc": "2.0", "id": {"a": 1}, "method": "ping"})",  // an object id: -32600
-        R"({"jsonrpc": "2.0", "id": 4, "method": 5})",        // a number method: -32600
-        mcp_request(5, "resources/list"),                     // -32601
-        mcp_request(6, "tools/call", {{"name", "no_such_tool"}}),  // -32602
-        mcp_request(7, "tools/call", {{"name", "explain_rule"}, {"arguments", {{"rule", 3}}}}),  // wrong type
+        R"({"jsonrpc": "2.0", "id": 4, "method": 5})",              // a number method: -32600
+        mcp_request(5, "resources/list"),                           // -32601
+        mcp_request(6, "tools/call", {{"name", "no_such_tool"}}),   // -32602
+        mcp_request(7, "tools/call", {{"name", "explain_rule"}, {"arguments", {{"rule", 3}}}}),   // wrong type
         mcp_request(8, "tools/call", {{"name", "explain_rule"}, {"arguments", json::object()}}),  // missing
         mcp_request(9, "tools/call", {{"name", "explain_rule"}, {"arguments", {{"rule", "SPH030"}, {"x", 1}}}}),
-        mcp_request(10, "tools/call", {{"name", "keyword_layout"}, {"arguments", {{"name", "*PART"}, {"format", "wide"}}}}),
+        mcp_request(10, "tools/call",
+                    {{"name", "keyword_layout"}, {"arguments", {{"name", "*PART"}, {"format", "wide"}}}}),
         mcp_request(11, "tools/call", {{"arguments", json::object()}}),  // no name
-        R"({"jsonrpc":"2.0","method":"notifications/unknown"})",  // a notification: no answer
+        R"({"jsonrpc":"2.0","method":"notifications/unknown"})",         // a notification: no answer
         ping,
     });
     REQUIRE(out.size() == 14);
@@ -110,7 +111,8 @@ TEST_CASE("mcp: with the roots capability the server asks roots/list and confine
                                {"id", "sphdeck-roots-1"},
                                {"result", {{"roots", {{{"uri", root_uri}, {"name", "demo"}}}}}}};
     const auto check = [](int id, const std::string& path) {
-        return mcp_request(id, "tools/call", {{"name", "check_deck"}, {"arguments", {{"path", path}, {"geometry", false}}}});
+        return mcp_request(id, "tools/call",
+                           {{"name", "check_deck"}, {"arguments", {{"path", path}, {"geometry", false}}}});
     };
     const auto out = mcp_exchange({
         mcp_initialize({{"roots", {{"listChanged", true}}}}),
@@ -141,7 +143,8 @@ TEST_CASE("mcp: roots/list_changed asks again; an empty list of roots confines e
         R"({"jsonrpc":"2.0","id":"sphdeck-roots-1","result":{"roots":[]}})",
         R"({"jsonrpc":"2.0","method":"notifications/roots/list_changed"})",
         R"({"jsonrpc":"2.0","id":"sphdeck-roots-2","result":{"roots":[]}})",
-        mcp_request(2, "tools/call", {{"name", "check_deck"}, {"arguments", {{"path", "decks/demo/sph_mistakes_2d.k"}}}}),
+        mcp_request(2, "tools/call",
+                    {{"name", "check_deck"}, {"arguments", {{"path", "decks/demo/sph_mistakes_2d.k"}}}}),
     });
     REQUIRE(out.size() == 4);
     CHECK(out[1]["id"] == "sphdeck-roots-1");
@@ -155,7 +158,8 @@ TEST_CASE("mcp: a client that never answers roots/list gets an error, not a hang
         mcp_initialize({{"roots", json::object()}}),
         mcp_initialized,
         mcp_request(2, "tools/call", {{"name", "explain_rule"}, {"arguments", {{"rule", "SPH030"}}}}),  // no file
-        mcp_request(3, "tools/call", {{"name", "check_deck"}, {"arguments", {{"path", "decks/demo/sph_mistakes_2d.k"}}}}),
+        mcp_request(3, "tools/call",
+                    {{"name", "check_deck"}, {"arguments", {{"path", "decks/demo/sph_mistakes_2d.k"}}}}),
     });
     REQUIRE(out.size() == 4);
     CHECK(out[2]["result"]["isError"] == false);

@@ -26,11 +26,11 @@ std::string text_of(const json& answer) { return answer["result"]["content"][0][
 
 TEST_CASE("mcp check_deck: the findings of `sphdeck check --format json`, field for field") {
     // Shipped decks with findings and without, LS-DYNA and OpenRadioss, with includes, with fixes.
-    for (const std::string& deck : {mistakes, std::string("decks/demo/dam_break_2d.k"),
-                                   std::string("decks/demo/water_tank/water_tank.k"),
-                                   std::string("decks/demo/water_tank/include/materials.k"),  // in context
-                                   std::string("decks/sol2sph/bumper_0000.rad"),
-                                   std::string("decks/tests/dk/DK003_fires_realign.k")}) {  // fixes
+    for (const std::string& deck :
+         {mistakes, std::string("decks/demo/dam_break_2d.k"), std::string("decks/demo/water_tank/water_tank.k"),
+          std::string("decks/demo/water_tank/include/materials.k"),  // in context
+          std::string("decks/sol2sph/bumper_0000.rad"),
+          std::string("decks/tests/dk/DK003_fires_realign.k")}) {  // fixes
         CAPTURE(deck);
         const json result = mcp_result("check_deck", {{"path", deck}});
         // The CLI run elsewhere: its file names are absolute, the server's relative to the source folder.

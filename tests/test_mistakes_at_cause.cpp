@@ -66,10 +66,12 @@ TEST_CASE("DK017: text, comments and an *INCLUDE after *END stay information on 
 }
 
 TEST_CASE("DK017: /END before /PART in a starter deck; HyperMesh metadata after /END is information") {
-    const std::string begin = "#RADIOSS STARTER\n/BEGIN\nrun\n      2026\n                  kg                  mm                  ms\n"
-                              "                  kg                  mm                  ms\n";
-    const std::string blocks = "/PART/2\nwater\n         2         3         0\n/MAT/LAW6/3\nwater\n              1.0E-6\n"
-                               "                 0.0                 0.0\n";
+    const std::string begin =
+        "#RADIOSS STARTER\n/BEGIN\nrun\n      2026\n                  kg                  mm                  ms\n"
+        "                  kg                  mm                  ms\n";
+    const std::string blocks =
+        "/PART/2\nwater\n         2         3         0\n/MAT/LAW6/3\nwater\n              1.0E-6\n"
+        "                 0.0                 0.0\n";
     const auto radioss = grammar::DeckFormat::Radioss;
     auto stray = engine::check_buffer(begin + "/END\n" + blocks + "/END\n", "run_0000.rad", {}, radioss);
     const diag::Diagnostic* d = find_code(stray.diagnostics, "DK017");
@@ -120,7 +122,8 @@ TEST_CASE("DK032: a *PART whose heading reads as card 2 is missing its heading; 
     auto fixed = engine::check_buffer(mended(deck, *d), "d.k");
     CHECK(errors_and_warnings(fixed) == 0);
     CHECK(count_code(engine::check_buffer(head + "*PART\n         1         2\n         1         1         1\n" + rest,
-                                          "d.k").diagnostics,
+                                          "d.k")
+                         .diagnostics,
                      "DK032") == 0);  // a heading of numbers, with its card 2 below
 }
 

@@ -27,7 +27,8 @@ TEST_CASE("model: controls, sections, parts and particles of the demo deck") {
 }
 
 TEST_CASE("model: blank fields take defaults and say so; zero means default where documented") {
-    auto r = engine::check_buffer("*KEYWORD\n*CONTROL_SPH\n                              2\n*SECTION_SPH\n         1       0.0\n", "d.k");
+    auto r = engine::check_buffer(
+        "*KEYWORD\n*CONTROL_SPH\n                              2\n*SECTION_SPH\n         1       0.0\n", "d.k");
     const auto& c = r.model.controls.sph;
     CHECK(c.ncbs.value == 1);
     CHECK_FALSE(c.ncbs.explicit_value);

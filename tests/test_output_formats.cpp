@@ -36,7 +36,8 @@ json json_of(const engine::CheckResult& r, const diag::RunSummary& summary = {})
 // A synthetic finding's fixes: a safe realignment (a replacement and an insertion on line 4) and an
 // unsafe did-you-mean on line 2.
 diag::Diagnostic with_fix(diag::Diagnostic d) {
-    d.fixes.push_back({"move the value back into its field", true,
+    d.fixes.push_back({"move the value back into its field",
+                       true,
                        {{grammar::Span{0, 4, 1, 4}, "1.0"}, {grammar::Span{0, 4, 11, 11}, "   "}}});
     d.fixes.push_back({"did you mean *CONTROL_TERMINATION?", false, {{grammar::Span{0, 2, 2, 8}, "CONTROL"}}});
     return d;
@@ -214,7 +215,10 @@ TEST_CASE("output: github annotations escape data and properties") {
     f.path = f.display_name = "dir,x/a:b.k";
     f.text = std::string("*KEYWORD\nabc\n");
     const auto id = map.add(std::move(f));
-    diag::Diagnostic d{"DK003", diag::Severity::Warning, "100% wrong\nreally", grammar::Span{id, 2, 1, 4},
+    diag::Diagnostic d{"DK003",
+                       diag::Severity::Warning,
+                       "100% wrong\nreally",
+                       grammar::Span{id, 2, 1, 4},
                        {{grammar::Span{id, 1, 1, 9}, "see"}}};
     CHECK(diag::render_github(d, map) ==
           "::warning file=dir%2Cx/a%3Ab.k,line=2,col=1,endColumn=4,title=DK003::100%25 wrong%0Areally%0Anote: "
@@ -280,14 +284,16 @@ TEST_CASE("output: every format carries every finding; text folds, every summary
     const test::Run concise = test::run_sphdeck(dir, "check" + only + "--format concise flood.k");
     INFO(concise.out);
     std::size_t shown = 0;
-    for (std::size_t at = concise.out.find("[DK003]"); at != std::string::npos; at = concise.out.find("[DK003]", at + 1))
+    for (std::size_t at = concise.out.find("[DK003]"); at != std::string::npos;
+         at = concise.out.find("[DK003]", at + 1))
         ++shown;
     CHECK(shown == 6);  // five findings and the fold line, which keeps the concise pattern
     CHECK(concise.out.find("flood.k:8:3: note: 25 more DK003 finding(s) on the lines of this *NODE block: lines 8, 9, "
                            "10, 11, 12, ... (--max-per-code 0 shows all) [DK003]") != std::string::npos);
     const std::regex concise_line(R"(^[^:]+:\d+:\d+: (error|warning|info|note): .* \[[A-Z]+[0-9]+\]$)");
     std::istringstream concise_lines(concise.out);
-    for (std::string line; std::getline(concise_lines, line);) CHECK_MESSAGE(std::regex_match(line, concise_line), line);
+    for (std::string line; std::getline(concise_lines, line);)
+        CHECK_MESSAGE(std::regex_match(line, concise_line), line);
     // A code folded across the deck (--max-per-code) points at its first finding not shown.
     const test::Run capped = test::run_sphdeck(dir, "check" + only + "--format concise --max-per-code 2 flood.k");
     std::istringstream capped_lines(capped.out);

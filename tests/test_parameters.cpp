@@ -41,7 +41,8 @@ TEST_CASE("parameters: free format pairs") {
 
 TEST_CASE("parameters: &name and -&name substitute in fields, right-justified references too") {
     auto r = engine::check_buffer(
-        "*PARAMETER\nR tend    2.5\n*CONTROL_TERMINATION\n     &tend\n*CONTROL_TIMESTEP\n         0    -&tend\n", "d.k");
+        "*PARAMETER\nR tend    2.5\n*CONTROL_TERMINATION\n     &tend\n*CONTROL_TIMESTEP\n         0    -&tend\n",
+        "d.k");
     CHECK(count_code(r.diagnostics, "DK012") == 0);
     CHECK(count_code(r.diagnostics, "DK003") == 0);
 }
@@ -108,8 +109,9 @@ TEST_CASE("parameters: *PARAMETER_LOCAL is seen by its file and its includes onl
     dir.write("child.k", "*CONTROL_TERMINATION\n     &loc\n");
     dir.write("local.k", "*PARAMETER_LOCAL\nR loc     1.0\n*INCLUDE\nchild.k\n");
     dir.write("global.k", "*PARAMETER\nR glob    1.0\n");
-    auto main = dir.write("main.k",
-                          "*INCLUDE\nlocal.k\nglobal.k\n*CONTROL_TIMESTEP\n     &glob\n*CONTROL_TERMINATION\n     &loc\n");
+    auto main =
+        dir.write("main.k",
+                  "*INCLUDE\nlocal.k\nglobal.k\n*CONTROL_TIMESTEP\n     &glob\n*CONTROL_TERMINATION\n     &loc\n");
     auto r = engine::check_file(main);
     // The sibling's global parameter is visible; the local one is not, outside local.k's tree.
     REQUIRE(count_code(r.diagnostics, "DK012") == 1);
@@ -118,8 +120,9 @@ TEST_CASE("parameters: *PARAMETER_LOCAL is seen by its file and its includes onl
 }
 
 TEST_CASE("parameters: case-only matches inside *PARAMETER cards resolve, tabs there are reported") {
-    auto deck = read_buffer("*PARAMETER\nR tend    0.002\nR t2      &TEND\n*PARAMETER_EXPRESSION\nR t3      &TEND*2.0\n",
-                            "d.k");
+    auto deck =
+        read_buffer("*PARAMETER\nR tend    0.002\nR t2      &TEND\n*PARAMETER_EXPRESSION\nR t3      &TEND*2.0\n",
+                    "d.k");
     CHECK(count_code(deck.diagnostics, "DK024") == 0);
     CHECK(count_code(deck.diagnostics, "DK012") == 0);
     // A tab that moves the value into the next field when expanded to column 9 (issue 26, class J).

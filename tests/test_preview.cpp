@@ -66,9 +66,7 @@ struct LatticeDeck {
     }
 };
 
-model::Model model_of(const std::string& deck) {
-    return engine::check_buffer(deck, "lattice.k").model;
-}
+model::Model model_of(const std::string& deck) { return engine::check_buffer(deck, "lattice.k").model; }
 
 }  // namespace
 
@@ -108,7 +106,8 @@ TEST_CASE("preview: the grid sorts every point into its cell, in cell order, den
                 const long long y = static_cast<long long>(cell[1]) + rows[r].dy;
                 const long long z = static_cast<long long>(cell[2]) + rows[r].dz;
                 const long long x0 = std::max<long long>(0, static_cast<long long>(cell[0]) + rows[r].dx0);
-                const long long x1 = std::min<long long>(g.cells()[0] - 1, static_cast<long long>(cell[0]) + rows[r].dx1);
+                const long long x1 =
+                    std::min<long long>(g.cells()[0] - 1, static_cast<long long>(cell[0]) + rows[r].dx1);
                 if (y < 0 || z < 0 || y >= g.cells()[1] || z >= g.cells()[2] || x0 > x1) {
                     CHECK(ranges[r].first == ranges[r].second);
                     continue;
@@ -262,7 +261,8 @@ TEST_CASE("preview: INI 2 follows the particle volume, INI 0/1 the geometry") {
     const model::Model m = model_of(text);
     CHECK(compute_preview(m, {.ini = model::IniMode::FromMass, .progress = {}}).parts[0].h0 ==
           doctest::Approx(1.2 * std::cbrt(2.0) * d.dx));
-    CHECK(compute_preview(m, {.ini = model::IniMode::Global, .progress = {}}).parts[0].h0 == doctest::Approx(1.2 * d.dx));
+    CHECK(compute_preview(m, {.ini = model::IniMode::Global, .progress = {}}).parts[0].h0 ==
+          doctest::Approx(1.2 * d.dx));
 }
 
 TEST_CASE("preview: sound speeds and time steps") {
@@ -276,7 +276,8 @@ TEST_CASE("preview: sound speeds and time steps") {
           doctest::Approx(std::sqrt(7.0e10 * 0.67 / (1.33 * 0.34 * 2700.0))));
     CHECK(preproc::cfl_time_step(0.018, 48.0, 0.9) == doctest::Approx(0.9 * 0.018 / 48.0));
     CHECK(preproc::cfl_time_step(0.018, 0.0, 0.9) == 0.0);
-    CHECK(preproc::radioss_particle_time_step(0.018, 48.0, 1.0) == doctest::Approx(0.018 / (48.0 * (1 + std::sqrt(2.0)))));
+    CHECK(preproc::radioss_particle_time_step(0.018, 48.0, 1.0) ==
+          doctest::Approx(0.018 / (48.0 * (1 + std::sqrt(2.0)))));
 
     LatticeDeck d;  // *MAT_NULL + *EOS_MURNAGHAN, rho 8
     const Preview p = compute_preview(model_of(d.text()));
@@ -298,16 +299,17 @@ TEST_CASE("preview: sound speeds and time steps") {
 
 TEST_CASE("preview: parts, missing nodes and progress") {
     // Two parts at different spacings; a particle without a node.
-    std::string s = "*KEYWORD\n*CONTROL_SPH\n         1         0     1e+20         3\n"
-                    "*SECTION_SPH\n         1       1.2\n"
-                    "*PART\na\n         2         1\n*PART\nb\n         1         1\n*NODE\n";
+    std::string s =
+        "*KEYWORD\n*CONTROL_SPH\n         1         0     1e+20         3\n"
+        "*SECTION_SPH\n         1       1.2\n"
+        "*PART\na\n         2         1\n*PART\nb\n         1         1\n*NODE\n";
     int id = 0;
     for (int i = 0; i < 5; ++i)
         for (int j = 0; j < 5; ++j) s += fmt::format("{:>8}{:>16}{:>16}{:>16}\n", ++id, i * 1.0, j * 1.0, 0.0);
     for (int i = 0; i < 5; ++i)
         for (int j = 0; j < 5; ++j) s += fmt::format("{:>8}{:>16}{:>16}{:>16}\n", ++id, 100 + i * 2.0, j * 2.0, 0.0);
-    s += fmt::format("*ELEMENT_SPH\n{:>8}{:>8}{:>16}{:>8}\n{:>8}{:>8}{:>16}{:>8}\n{:>8}{:>8}{:>16}\n*END\n", 1, 2, 1.0, 25,
-                     26, 1, 8.0, 50, 99, 1, 8.0);
+    s += fmt::format("*ELEMENT_SPH\n{:>8}{:>8}{:>16}{:>8}\n{:>8}{:>8}{:>16}{:>8}\n{:>8}{:>8}{:>16}\n*END\n", 1, 2, 1.0,
+                     25, 26, 1, 8.0, 50, 99, 1, 8.0);
     const model::Model m = model_of(s);
     REQUIRE(m.particles.size() == 51);
     std::vector<double> seen;
@@ -337,5 +339,6 @@ TEST_CASE("preview: the demo dam break deck: 20 neighbours inside, no preview fi
     CHECK(p.parts[0].neighbours.max == 20);
     CHECK(p.parts[0].sound_speed == doctest::Approx(std::sqrt(7.0 * 340000.0 / 1000.0)));
     CHECK(p.coincident.empty());
-    for (const char* code : {"SPH090", "SPH113", "SPH114", "SPH115", "SPH118"}) CHECK(test::count_code(r.diagnostics, code) == 0);
+    for (const char* code : {"SPH090", "SPH113", "SPH114", "SPH115", "SPH118"})
+        CHECK(test::count_code(r.diagnostics, code) == 0);
 }

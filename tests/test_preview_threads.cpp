@@ -47,9 +47,11 @@ Points cloud(int side, int clusters, unsigned seed) {
     Points p;
     for (int k = 0; k < side; ++k)
         for (int j = 0; j < side; ++j)
-            for (int i = 0; i < side; ++i) p.x.push_back(i + u(rng)), p.y.push_back(j + u(rng)), p.z.push_back(k + u(rng));
+            for (int i = 0; i < side; ++i)
+                p.x.push_back(i + u(rng)), p.y.push_back(j + u(rng)), p.z.push_back(k + u(rng));
     for (int c = 0; c < clusters; ++c)
-        for (int i = 0; i < 800; ++i) p.x.push_back(5 + 0.01 * u(rng)), p.y.push_back(7 + c), p.z.push_back(3 + 0.01 * u(rng));
+        for (int i = 0; i < 800; ++i)
+            p.x.push_back(5 + 0.01 * u(rng)), p.y.push_back(7 + c), p.z.push_back(3 + 0.01 * u(rng));
     p.x.push_back(3 * side), p.y.push_back(0.5), p.z.push_back(0.5);
     return p;
 }
@@ -104,7 +106,7 @@ model::Model lattice_model(int side, bool shuffled_nodes) {
 }  // namespace
 
 TEST_CASE("preview threads: the grid bins the same on 1 and 4 threads") {
-    const Points p = cloud(40, 3, 11);  // 64,000 lattice points and 2,400 clustered
+    const Points p = cloud(40, 3, 11);             // 64,000 lattice points and 2,400 clustered
     for (double cell : {0.9, 1.5, 2.5, 1000.0}) {  // hashed; dense: about a point per cell, several, one for all
         const GridPicture one = with_threads(1, [&] { return picture(p, cell); });
         const GridPicture four = with_threads(4, [&] { return picture(p, cell); });
@@ -120,7 +122,9 @@ TEST_CASE("preview threads: nearest neighbours and counts are the same on 1 and 
     CHECK(a.index == b.index);
     const std::vector<std::uint32_t> group(p.x.size(), 0);
     const double support[] = {2.4}, tolerance[] = {1e-9};
-    const auto counts = [&] { return preproc::count_neighbours(p.x, p.y, p.z, preproc::GroupedRadii{group, support, tolerance}); };
+    const auto counts = [&] {
+        return preproc::count_neighbours(p.x, p.y, p.z, preproc::GroupedRadii{group, support, tolerance});
+    };
     const preproc::NeighbourCounts c = with_threads(1, counts), d = with_threads(4, counts);
     CHECK(c.count == d.count);
     CHECK(c.coincident == d.coincident);

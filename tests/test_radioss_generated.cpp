@@ -84,7 +84,7 @@ TEST_CASE("radioss generated: the starter reads a name by its characters once th
 
 TEST_CASE("radioss generated: engine keywords by the engine's REDKEY0; each deck says when one is in the other") {
     CHECK(rad::is_engine_key("/RUN/run/1"));
-    CHECK(rad::is_engine_key("/PARITH/ON"));     // PARIT
+    CHECK(rad::is_engine_key("/PARITH/ON"));  // PARIT
     CHECK(rad::is_engine_key("/ANIM/ELEM/EPSP"));
     CHECK_FALSE(rad::is_engine_key("/ANIMATION"));  // ANIMA is not ANIM
     CHECK_FALSE(rad::is_engine_key("/SHELL/1"));
@@ -92,7 +92,8 @@ TEST_CASE("radioss generated: engine keywords by the engine's REDKEY0; each deck
     auto e = check("/RUN/run/1\n0.1\n/PARITH/ON\n/ANIMX/DT\n/SHELL/1\n/END\n", "run_0001.rad");
     CHECK(unknown_errors(e) == 1);
     bool starter_said = false;
-    for (const auto& d : e.diagnostics) starter_said |= d.message.find("/SHELL is a starter keyword") != std::string::npos;
+    for (const auto& d : e.diagnostics)
+        starter_said |= d.message.find("/SHELL is a starter keyword") != std::string::npos;
     CHECK(starter_said);
     // A starter deck: an engine keyword says so (an info: the starter ignores it).
     auto s = check(deck("/TFILE/4\n0.1\n"));
@@ -149,7 +150,8 @@ TEST_CASE("radioss generated: ids the CFG marks as references are followed (REF0
     CHECK(d->message.find("excludeNodeSet_ID 99 of /RWALL/PLANE") != std::string::npos);
     CHECK(d->span.line == 12);
     // Defined: silent; a //SUBMODEL offsets ids, so nothing is judged.
-    auto ok = check(deck(nodes + "/GRNOD/NODE/5\nnodes\n" + i10("1") + "\n/GRNOD/NODE/99\nmore\n" + i10("1") + "\n" + wall));
+    auto ok =
+        check(deck(nodes + "/GRNOD/NODE/5\nnodes\n" + i10("1") + "\n/GRNOD/NODE/99\nmore\n" + i10("1") + "\n" + wall));
     CHECK(count_code(ok.diagnostics, "REF008") == 0);
     auto sub = check(deck(nodes + "//SUBMODEL/1\nsub\n" + wall + "//ENDSUB\n"));
     CHECK(count_code(sub.diagnostics, "REF008") == 0);
@@ -157,10 +159,11 @@ TEST_CASE("radioss generated: ids the CFG marks as references are followed (REF0
 
 TEST_CASE("radioss generated: a generated card's line shifted under its # header is DK029") {
     // /PROP/SHELL card 3 (format 2018) one column right: every value read in the next cell.
-    const std::string prop = "/PROP/SHELL/2\nShell\n" + i10("4") + i10("4") + "\n" + std::string(20, ' ') + "\n" +
-                             "#        N   Istrain               Thick              Ashear              Ithick     Iplas\n" +
-                             " " + i10("1") + i10("1") + std::string(19, ' ') + "3" + std::string(19, ' ') + "0" +
-                             std::string(19, ' ') + "1" + i10("0") + "\n";
+    const std::string prop =
+        "/PROP/SHELL/2\nShell\n" + i10("4") + i10("4") + "\n" + std::string(20, ' ') + "\n" +
+        "#        N   Istrain               Thick              Ashear              Ithick     Iplas\n" + " " +
+        i10("1") + i10("1") + std::string(19, ' ') + "3" + std::string(19, ' ') + "0" + std::string(19, ' ') + "1" +
+        i10("0") + "\n";
     auto r = check(deck(prop, 2019));
     const diag::Diagnostic* d = find_code(r.diagnostics, "DK029");
     REQUIRE(d);

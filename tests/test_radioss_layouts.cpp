@@ -57,9 +57,10 @@ TEST_CASE("radioss layouts: /MAT reads the density and E, nu where it knows the 
     const std::string plas = "/MAT/PLAS_JOHNS/1\nsteel\n" + r20("7.8E-9") + r20("0") + "\n" + r20("210000") +
                              r20("0.3") + i10("2") + i10("0") + "\n" + i10("2") + i10("0") + r20("1") + "\n";
     // LAW44 in a 2017 deck (QA LOI44): card 4 `%20lg%20lg%10d%10d%20lg` is no row of five reals.
-    const std::string cowper = "/MAT/COWPER/2\nc\n     0.780000000E-02      0.00000000\n      2.05000000E+05"
-                               "          0.3\n        400.0                 5.0                  1         0       "
-                               ".000000000E00\n";
+    const std::string cowper =
+        "/MAT/COWPER/2\nc\n     0.780000000E-02      0.00000000\n      2.05000000E+05"
+        "          0.3\n        400.0                 5.0                  1         0       "
+        ".000000000E00\n";
     // LAW30 (its CFG reads free text lines): integers in what a 20-wide grid would cut as one cell.
     const std::string law30 = "/MAT/LAW30/3\nx\n" + r20("1.0") + "\n" + i10("7") + i10("7") + i10("0") + "\n";
     // Gas and multi-material laws have no density card (mat_gas.cfg, mat_law51.cfg).
@@ -79,8 +80,8 @@ TEST_CASE("radioss layouts: /MAT reads the density and E, nu where it knows the 
 }
 
 TEST_CASE("radioss layouts: LAW6 and LAW3 carry C0-C3 up to format 2017 only") {
-    const std::string law6 = "/MAT/HYD_VISC/1\nw\n" + r20("1.0") + "\n" + r20("0.0") + "\n" + r20("0") +
-                             r20("2.2E3") + "\n";
+    const std::string law6 =
+        "/MAT/HYD_VISC/1\nw\n" + r20("1.0") + "\n" + r20("0.0") + "\n" + r20("0") + r20("2.2E3") + "\n";
     CHECK(facts(check(deck(law6, 2017))).material(1)->bulk == 2.2E3);
     CHECK(facts(check(deck(law6, 2019))).material(1)->bulk == 0.0);  // 2018+: /EOS gives it
 }
@@ -88,8 +89,8 @@ TEST_CASE("radioss layouts: LAW6 and LAW3 carry C0-C3 up to format 2017 only") {
 TEST_CASE("radioss layouts: /PROP/TYPE14 and /PROP/TYPE6 by format (prop_p14_solid.cfg, prop_p6_sol_orth.cfg)") {
     // 2017 (format 140): card 3 is dt_min Istrain Imod, no five reals; Iframe in cell 8.
     const std::string card1 = i10("0") + i10("0") + i10("") + i10("0") + i10("") + i10("0") + i10("0") + i10("2");
-    const std::string solid = "/PROP/TYPE14/1\ns\n" + card1 + "\n" + r20("0") + r20("0") + r20("0") + "\n" +
-                              r20("0") + i10("0") + i10("0") + "\n";
+    const std::string solid = "/PROP/TYPE14/1\ns\n" + card1 + "\n" + r20("0") + r20("0") + r20("0") + "\n" + r20("0") +
+                              i10("0") + i10("0") + "\n";
     auto r = check(deck(solid, 2017));
     CHECK(warnings_and_errors(r) == 0);
     CHECK(facts(r).solid_property(1)->iframe.value == 2);
@@ -108,9 +109,9 @@ TEST_CASE("radioss layouts: /EOS/POLYNOMIAL, /ANALY and /DEF_SOLID by format") {
     CHECK(warnings_and_errors(a) == 0);
     CHECK(facts(a).analysis == 1);
     // /DEF_SOLID (def_solid.cfg): Iframe in cell 8 in every format from 51.
-    auto d = check(deck("/DEF_SOLID\n" + i10("14") + i10("") + i10("") + i10("") + i10("") + i10("") + i10("") +
-                            i10("1") + "\n",
-                        100));
+    auto d = check(
+        deck("/DEF_SOLID\n" + i10("14") + i10("") + i10("") + i10("") + i10("") + i10("") + i10("") + i10("1") + "\n",
+             100));
     CHECK(facts(d).def_iframe == 1);
 }
 

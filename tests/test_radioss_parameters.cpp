@@ -30,7 +30,7 @@ std::string integer_parameter(int id, const std::string& name, const std::string
 
 engine::CheckResult check(const std::string& body) {
     return engine::check_buffer("#RADIOSS STARTER\n/BEGIN\nrun\n      2026\n" + body + "/END\n", "deck_0000.rad", {},
-                              grammar::DeckFormat::Radioss);
+                                grammar::DeckFormat::Radioss);
 }
 
 // The x coordinate the model holds for node `id`.
@@ -107,7 +107,8 @@ TEST_CASE("radioss parameters: undefined names, case mismatch, a reference cut b
     CHECK(find_code(r.diagnostics, "DK012")->message.find("did you mean 'width'") != std::string::npos);
 
     // A 10-column id cell cannot hold "[widthwide]": the reference is cut.
-    r = check(integer_parameter(1, "widthwide", "5") + "/NODE\n" + " [widthwide]" + r20("0.0") + r20("0.0") + r20("0.0") + "\n");
+    r = check(integer_parameter(1, "widthwide", "5") + "/NODE\n" + " [widthwide]" + r20("0.0") + r20("0.0") +
+              r20("0.0") + "\n");
     REQUIRE(count_code(r.diagnostics, "DK012") >= 1);
     CHECK(find_code(r.diagnostics, "DK012")->message.find("no closing ']'") != std::string::npos);
 }
@@ -120,8 +121,8 @@ TEST_CASE("radioss parameters: a REAL in an integer cell (DK013)") {
 }
 
 TEST_CASE("radioss parameters: a second definition keeps the first (DK014)") {
-    auto r = check(real_parameter(1, "width", "2.5") + real_parameter(2, "width", "3.5") + "/NODE\n" +
-                   node("1", "[width]"));
+    auto r =
+        check(real_parameter(1, "width", "2.5") + real_parameter(2, "width", "3.5") + "/NODE\n" + node("1", "[width]"));
     REQUIRE(count_code(r.diagnostics, "DK014") == 1);
     const diag::Diagnostic* d = find_code(r.diagnostics, "DK014");
     CHECK(d->severity == diag::Severity::Warning);
@@ -134,7 +135,8 @@ TEST_CASE("radioss parameters: a second definition keeps the first (DK014)") {
 TEST_CASE("radioss parameters: expressions, text and local parameters are not evaluated (DK001)") {
     for (const char* kind : {"GLOBAL/REAL_EXPR", "GLOBAL/INT_EXPR", "LOCAL/REAL", "GLOBAL/TEXT"}) {
         INFO(kind);
-        auto r = check(fmt::format("/PARAMETER/{}/1\ntitle\nhalf      [width] / 2\n", kind) + "/NODE\n" + node("1", "[half]"));
+        auto r = check(fmt::format("/PARAMETER/{}/1\ntitle\nhalf      [width] / 2\n", kind) + "/NODE\n" +
+                       node("1", "[half]"));
         REQUIRE(count_code(r.diagnostics, "DK001") == 1);
         const diag::Diagnostic* d = find_code(r.diagnostics, "DK001");
         CHECK(d->severity == diag::Severity::Info);

@@ -78,7 +78,7 @@ TEST_CASE("radioss preview: formulas of spinih.F and inspcnd.F") {
     CHECK(preproc::radioss_on_plane(-5.0, 1.0));
     CHECK(preproc::radioss_symmetry_reference_h(0.0, 2.0, 1.0) == doctest::Approx(std::sqrt(2.0)));
     // Ghosts: documented d^2 <= 1.25 (h_i + h_j)^2; coded dd <= sqrt(1.25) (h_i + h_max).
-    CHECK(preproc::radioss_ghost_documented(2.2, 1.0, 1.0, 0.25));   // 2.2 <= 2.236
+    CHECK(preproc::radioss_ghost_documented(2.2, 1.0, 1.0, 0.25));  // 2.2 <= 2.236
     CHECK_FALSE(preproc::radioss_ghost_documented(2.3, 1.0, 1.0, 0.25));
     CHECK(preproc::radioss_ghost_documented(-2.2, 1.0, 1.0, 0.25));  // unsigned
     CHECK(preproc::radioss_ghost_coded(-50.0, 1.0, 1.0, 0.25));      // signed: the wrong side always
@@ -205,8 +205,8 @@ m
 TEST_CASE("radioss preview: sphdeck smooth JSON has the LS-DYNA keys plus 'radioss'") {
     test::TempDir dir;
     const auto rad = test::run_sphdeck(dir, "smooth --format json '" + kDecks + "symmetry_corner.rad'");
-    const auto dyna = test::run_sphdeck(
-        dir, "smooth --format json '" + std::string(SPHDECK_SOURCE_DIR) + "/decks/tests/preview/SPH113_silent.k'");
+    const auto dyna = test::run_sphdeck(dir, "smooth --format json '" + std::string(SPHDECK_SOURCE_DIR) +
+                                                 "/decks/tests/preview/SPH113_silent.k'");
     REQUIRE(rad.exit_code == 0);
     REQUIRE(dyna.exit_code == 0);
     const auto a = nlohmann::json::parse(rad.out), b = nlohmann::json::parse(dyna.out);
@@ -235,17 +235,19 @@ namespace {
 // A 3 x 3 x 3 lattice of pitch 1 whose cells take the property's mass; `card2` is the /PROP/SPH
 // Order, h, Xi_Stab line (empty: no such line). Few neighbours either way: SPH118.
 engine::CheckResult sparse_lattice(const std::string& mp, const std::string& card2) {
-    std::string s = "#RADIOSS STARTER\n/BEGIN\nsparse\n      2026\n"  // lines 1-4
-                    "/PART/2\nwater\n         2         3         0\n"   // lines 5-7
-                    "/PROP/SPH/2\nwater particles\n" +                    // lines 8-9
-                    fmt::format("{:>20}                 0.0                 0.0                 0.0         0         0\n",
-                                mp) +                                    // line 10
-                    card2 +                                              // line 11 when given
-                    "/MAT/LAW6/3\nwater\n              1.0E-6\n/NODE\n";
+    std::string s =
+        "#RADIOSS STARTER\n/BEGIN\nsparse\n      2026\n"    // lines 1-4
+        "/PART/2\nwater\n         2         3         0\n"  // lines 5-7
+        "/PROP/SPH/2\nwater particles\n" +                  // lines 8-9
+        fmt::format("{:>20}                 0.0                 0.0                 0.0         0         0\n",
+                    mp) +  // line 10
+        card2 +            // line 11 when given
+        "/MAT/LAW6/3\nwater\n              1.0E-6\n/NODE\n";
     long long id = 1;
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
-            for (int k = 0; k < 3; ++k) s += fmt::format("{:>10}{:>20.1f}{:>20.1f}{:>20.1f}\n", id++, i * 1.0, j * 1.0, k * 1.0);
+            for (int k = 0; k < 3; ++k)
+                s += fmt::format("{:>10}{:>20.1f}{:>20.1f}{:>20.1f}\n", id++, i * 1.0, j * 1.0, k * 1.0);
     s += "/SPHCEL/2\n";
     for (long long n = 1; n < id; ++n) s += fmt::format("{:>10}         0\n", n);
     return engine::check_buffer(s + "/END\n", "sparse_0000.rad", {}, grammar::DeckFormat::Radioss);

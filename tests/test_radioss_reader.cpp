@@ -47,9 +47,10 @@ TEST_CASE("radioss: the line grammar has no infinite loops") {
 }
 
 TEST_CASE("radioss: comment, header and data lines; the header path keeps its ids") {
-    auto d = read_buffer("#RADIOSS STARTER\n$ dollar comment\n/node\n# x\n  # indented hash is data\n"
-                         "         1                 0.0\n/PROP/Sph/7\n",
-                         "d.rad");
+    auto d = read_buffer(
+        "#RADIOSS STARTER\n$ dollar comment\n/node\n# x\n  # indented hash is data\n"
+        "         1                 0.0\n/PROP/Sph/7\n",
+        "d.rad");
     REQUIRE(d.blocks.size() == 2);
     CHECK(d.blocks[0].keyword == "/NODE");
     CHECK(d.blocks[0].line_count == 2);
@@ -112,10 +113,12 @@ TEST_CASE("radioss: an included file's blocks start at its first header, with it
     // and finds an included file's blocks by their headers: the lines of sub/lead.inc before its
     // first header (a licence text, the QA decks' qadiags.inc) belong to no block, silently.
     test::TempDir dir;
-    dir.write("sub/lead.inc", "Copyright> text\n         7                 1.0                 2.0                 3.0\n");
-    dir.write("sub/nodes.inc", "Copyright> text\n/NODE\n         9                 1.0                 2.0                 3.0\n");
-    const std::string main = dir.write(
-        "m_0000.rad", deck("/NODE\n" + i10("1") + "\n#include sub/lead.inc\n" + i10("8") + "\n#include sub/nodes.inc\n"));
+    dir.write("sub/lead.inc",
+              "Copyright> text\n         7                 1.0                 2.0                 3.0\n");
+    dir.write("sub/nodes.inc",
+              "Copyright> text\n/NODE\n         9                 1.0                 2.0                 3.0\n");
+    const std::string main = dir.write("m_0000.rad", deck("/NODE\n" + i10("1") + "\n#include sub/lead.inc\n" +
+                                                          i10("8") + "\n#include sub/nodes.inc\n"));
     auto r = engine::check_file(main);
     REQUIRE(r.model.nodes.id.size() == 3);
     CHECK(r.model.nodes.id[0] == 1);
@@ -168,8 +171,8 @@ TEST_CASE("radioss: #include files read and bytes read are bounded like the LS-D
 
 TEST_CASE("radioss: the engine deck next to the starter is read; /DT cards belong there") {
     test::TempDir dir;
-    const std::string body = kWater + "/PROP/SPH/2\nw\n" + r20("8.0E-6") + "\n\n/NODE\n" + i10("1") + "\n/SPHCEL/2\n" +
-                             i10("1") + "\n";
+    const std::string body =
+        kWater + "/PROP/SPH/2\nw\n" + r20("8.0E-6") + "\n\n/NODE\n" + i10("1") + "\n/SPHCEL/2\n" + i10("1") + "\n";
     const std::string starter = dir.write("run_0000.rad", deck(body));
     dir.write("run_0001.rad", "/RUN/run/1\n  1.0\n/DT/SPHCEL/STOP\n 0.3, 1.0E-7\n/DT/NODA/CST/1\n0.67 0.0\n/END\n");
     auto r = engine::check_file(starter);
@@ -216,7 +219,8 @@ TEST_CASE("radioss: cell widths follow Invers: 10/20 from format 51, 8/16 in V4 
     CHECK(now.model.nodes.y[0] == 2.5);
     CHECK(facts(now).version == 2026);
 
-    auto v4 = check("#RADIOSS STARTER\n/BEGIN\nrun\n      44\n/NODE\n      12             1.5             2.5             3.5\n/END\n");
+    auto v4 = check(
+        "#RADIOSS STARTER\n/BEGIN\nrun\n      44\n/NODE\n      12             1.5             2.5             3.5\n/END\n");
     REQUIRE(v4.model.nodes.id.size() == 1);
     CHECK(facts(v4).version == 44);
     CHECK(v4.model.nodes.id[0] == 12);
@@ -278,8 +282,9 @@ TEST_CASE("radioss: /PROP/SPH in each format, with the starter's defaults") {
     auto f51 = check(deck(kWater + "/PROP/SPH/2\nw\n" + r20("1.0E-5") + "\n" + i10("-1") + r20("2.0") + "\n", 51));
     CHECK(facts(f51).sph_properties.at(0).order.value == -1);
     CHECK(facts(f51).sph_properties.at(0).mp.value == 1.0e-5);
-    auto v4 = check("#RADIOSS STARTER\n/BEGIN\nrun\n      44\n/PROP/TYPE34/2/old water\n"
-                    "          2.0E-5             0.0\n       1             3.0\n/END\n");
+    auto v4 = check(
+        "#RADIOSS STARTER\n/BEGIN\nrun\n      44\n/PROP/TYPE34/2/old water\n"
+        "          2.0E-5             0.0\n       1             3.0\n/END\n");
     const auto& w = facts(v4).sph_properties.at(0);
     CHECK(w.title == "old water");
     CHECK(w.mp.value == 2.0e-5);
@@ -288,10 +293,10 @@ TEST_CASE("radioss: /PROP/SPH in each format, with the starter's defaults") {
 }
 
 TEST_CASE("radioss: /SPHCEL masses as the starter takes them") {
-    const std::string body = kWater + "/PROP/SPH/2\nw\n" + r20("0.0") + "\n\n/NODE\n" + i10("1") + "\n" + i10("2") + "\n" +
-                             i10("3") + "\n" + i10("4") + "\n/SPHCEL/2\n" + i10("1") + i10("1") + r20("4.0E-6") + "\n" +
-                             i10("2") + i10("2") + r20("8.0") + "\n" + i10("3") + i10("0") + r20("5.0E-6") + "\n" +
-                             i10("4") + "\n";
+    const std::string body = kWater + "/PROP/SPH/2\nw\n" + r20("0.0") + "\n\n/NODE\n" + i10("1") + "\n" + i10("2") +
+                             "\n" + i10("3") + "\n" + i10("4") + "\n/SPHCEL/2\n" + i10("1") + i10("1") + r20("4.0E-6") +
+                             "\n" + i10("2") + i10("2") + r20("8.0") + "\n" + i10("3") + i10("0") + r20("5.0E-6") +
+                             "\n" + i10("4") + "\n";
     auto r = check(deck(body));
     const auto& p = r.model.particles;
     REQUIRE(p.size() == 4);
@@ -311,9 +316,9 @@ TEST_CASE("radioss: parts, materials, EOS, groups and elements land in the model
                              "/MAT/PLAS_JOHNS/4\nsteel\n" + r20("7.8E-6") + "\n" + r20("210.0") + r20("0.3") + "\n" +
                              "/GRNOD/NODE/10\nn\n" + i10("1") + i10("2") + "\n" + i10("3") + "\n" +
                              "/GRNOD/PART/11\np\n" + i10("5") + "\n" + "/BRICK/5\n" + i10("1") + i10("1") + i10("2") +
-                             i10("3") + i10("4") + i10("5") + i10("6") + i10("7") + i10("8") + "\n" +
-                             "/TETRA10/5\n" + i10("2") + "\n" + i10("1") + i10("2") + i10("3") + i10("4") + i10("5") +
-                             i10("6") + i10("7") + i10("8") + i10("9") + i10("10") + "\n" + "/PROP/SHELL/9\nshell\n";
+                             i10("3") + i10("4") + i10("5") + i10("6") + i10("7") + i10("8") + "\n" + "/TETRA10/5\n" +
+                             i10("2") + "\n" + i10("1") + i10("2") + i10("3") + i10("4") + i10("5") + i10("6") +
+                             i10("7") + i10("8") + i10("9") + i10("10") + "\n" + "/PROP/SHELL/9\nshell\n";
     auto r = check(deck(body));
     const auto& f = facts(r);
     REQUIRE(r.model.parts.size() == 1);
@@ -339,7 +344,8 @@ TEST_CASE("radioss: /SPHBCS, frames and planes") {
     const std::string frame = "/FRAME/FIX/7\nf\n" + r20("1.0") + r20("0.0") + r20("0.0") + "\n" + r20("0.0") +
                               r20("1.0") + r20("0.0") + "\n" + r20("-1.0") + r20("0.0") + r20("0.0") + "\n";
     const std::string sym = "/SPHBCS/TIED/1\nt\n" + i10("Y") + i10("7") + i10("0") + i10("") + i10("1") + "\n" +
-                            "/SPHBCS/SLIDEX/2\ns\n" + i10("") + "\n" + "/SPHBCS/SLIDE/3\nx\n" + i10("X") + i10("7") + "\n";
+                            "/SPHBCS/SLIDEX/2\ns\n" + i10("") + "\n" + "/SPHBCS/SLIDE/3\nx\n" + i10("X") + i10("7") +
+                            "\n";
     auto r = check(deck(frame + sym));
     const auto& f = facts(r);
     REQUIRE(f.symmetries.size() == 3);
@@ -347,7 +353,7 @@ TEST_CASE("radioss: /SPHBCS, frames and planes") {
     CHECK(f.symmetries[0].axis == 1);
     CHECK(f.symmetries[0].ilev.value == 1);
     CHECK(f.symmetries[1].kind == model::SymmetryKind::Slide);  // the first five letters count
-    CHECK(f.symmetries[1].dir.value == "X");                     // blank Dir: X
+    CHECK(f.symmetries[1].dir.value == "X");                    // blank Dir: X
     REQUIRE(r.model.symmetry_planes.size() == 3);
     // Frame 7 through (1, 0, 0): its lines after the origin are Y' (+y) and Z' (-x), and
     // X' = Y' x Z' = +z (hm_read_frm.F). Plane 1 (Dir Y) has the normal +y, plane 3 (Dir X) +z.
@@ -432,15 +438,16 @@ TEST_CASE("radioss: bad input never crashes the reader or the decoder") {
     std::string binary;
     for (int k = 0; k < 4096; ++k) binary += static_cast<char>((k * 7919) % 256);
     const std::string huge = "/NODE\n" + std::string(2'000'000, '9') + "\n" + std::string(100000, '/') + "\n";
-    const std::string inputs[] = {"",
-                                  "\n\n\n",
-                                  "/",
-                                  "//\n/ /\n/\t\n",
-                                  "#include\n#include   \n#enddata",
-                                  binary,
-                                  huge,
-                                  "#RADIOSS STARTER\n/BEGIN\n\n-5\n/PROP/SPH\n/SPHCEL\n,,,,\n/SPHBCS\n/MAT/LAW6\n/TETRA10/1\n1\n",
-                                  deck("/SPHCEL/x\n1\n/BRICK/2\n1 2 3\n/DT/SPHCEL\n")};
+    const std::string inputs[] = {
+        "",
+        "\n\n\n",
+        "/",
+        "//\n/ /\n/\t\n",
+        "#include\n#include   \n#enddata",
+        binary,
+        huge,
+        "#RADIOSS STARTER\n/BEGIN\n\n-5\n/PROP/SPH\n/SPHCEL\n,,,,\n/SPHBCS\n/MAT/LAW6\n/TETRA10/1\n1\n",
+        deck("/SPHCEL/x\n1\n/BRICK/2\n1 2 3\n/DT/SPHCEL\n")};
     for (const auto& text : inputs) {
         CHECK_NOTHROW(check(text, "fuzz_0000.rad"));
         CHECK_NOTHROW(engine::check_buffer(text, "fuzz.rad", {}, std::nullopt));

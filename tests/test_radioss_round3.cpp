@@ -43,7 +43,8 @@ std::string rbody(const std::string& group) {
 }  // namespace
 
 TEST_CASE("radioss round 3: a /SET of the id is the node group or surface a card names (fill_igr.F)") {
-    const std::string set = "/SET/GENERAL/77\nrigid nodes\n" + right("NODE", 14) + right("1", 11) + right("2", 11) + "\n";
+    const std::string set =
+        "/SET/GENERAL/77\nrigid nodes\n" + right("NODE", 14) + right("1", 11) + right("2", 11) + "\n";
     auto ok = check(deck(nodes + rbody("77") + set));
     CHECK(count_code(ok.diagnostics, "REF008") == 0);
     auto bad = check(deck(nodes + rbody("76") + set));
@@ -120,8 +121,8 @@ TEST_CASE("radioss round 3: /HEAT/MAT IFORM past column 80: obsolete in a 2022 d
     CHECK(count_code(check(deck(heat, 2019)).diagnostics, "DK006") == 0);
     // Alone, without /BEGIN: some version reads IFORM there, so it is no overflow; past it still is.
     CHECK(count_code(check(heat, "heat.inc").diagnostics, "DK006") == 0);
-    const std::string beyond = "/HEAT/MAT/1\n" + r20("293.0") + r20("4.0") + r20("0.1") + r20("0.0") + i10("1") +
-                               i10("7") + "\n";
+    const std::string beyond =
+        "/HEAT/MAT/1\n" + r20("293.0") + r20("4.0") + r20("0.1") + r20("0.0") + i10("1") + i10("7") + "\n";
     CHECK(count_code(check(beyond, "heat.inc").diagnostics, "DK006") == 1);
 }
 

@@ -31,8 +31,8 @@ const model::RadiossFacts& facts(const engine::CheckResult& r) {
 
 // An outlet through three nodes with a cut-off frequency (card 1 of FORMAT(radioss140)).
 const std::string kInout = "/SPH/INOUT/4\noutlet\n" + i10("2") + i10("2") + i10("0") + r20("2.5") + i10("11") +
-                           i10("12") + i10("13") + r20("500.0") + "\n" + std::string(30, ' ') + i10("0") +
-                           r20("1.0") + "\n\n";
+                           i10("12") + i10("13") + r20("500.0") + "\n" + std::string(30, ' ') + i10("0") + r20("1.0") +
+                           "\n\n";
 
 }  // namespace
 
@@ -76,9 +76,8 @@ TEST_CASE("radioss sph cards: /SPHGLO Isol2sph 0 or absent is 1 (hm_read_sphglo.
 
 TEST_CASE("radioss sph cards: /INISPHCEL/FULL states, their LIST of nvarsph values skipped by count") {
     const std::string state_a = i10("1001") + i10("7") + "\n" + r20("5.0") + r20("1.0E-6") + r20("2.4") + "\n" +
-                                r20("-1.0") + r20("-2.0") + r20("-3.0") + "\n" + r20("0.1") + "\n" +
-                                r20("1") + r20("2") + r20("3") + r20("4") + r20("5") + "\n" + r20("6") + r20("7") +
-                                "\n";
+                                r20("-1.0") + r20("-2.0") + r20("-3.0") + "\n" + r20("0.1") + "\n" + r20("1") +
+                                r20("2") + r20("3") + r20("4") + r20("5") + "\n" + r20("6") + r20("7") + "\n";
     const std::string state_b = i10("1002") + i10("0") + "\n" + r20("6.0") + r20("2.0E-6") + r20("3.0") + "\n" +
                                 r20("-4.0") + "\n" + r20("0.2") + "\n";
     const std::string sph = "/NODE\n" + i10("1001") + r20("0") + r20("0") + r20("0") + "\n" + i10("1002") + r20("1") +
@@ -106,13 +105,13 @@ TEST_CASE("radioss sph cards: /INISPHCEL/FULL states, their LIST of nvarsph valu
 TEST_CASE("radioss sph cards: /SPH/INOUT reads the cards of its Itype (sph_inout.cfg, hm_read_sphio.F)") {
     const std::string blank30(30, ' ');
     // Itype 1, an inlet through a surface: density and energy functions, then the velocity's.
-    const std::string inlet = "/SPH/INOUT/1\ninlet\n" + i10("1") + i10("2") + i10("5") + r20("1.5") + "\n" +
-                              i10("11") + r20("0") + blank30 + i10("12") + r20("2.0") + "\n" + i10("13") + "\n";
+    const std::string inlet = "/SPH/INOUT/1\ninlet\n" + i10("1") + i10("2") + i10("5") + r20("1.5") + "\n" + i10("11") +
+                              r20("0") + blank30 + i10("12") + r20("2.0") + "\n" + i10("13") + "\n";
     // Itype 3 from format 140 without surface or nodes: the points M, M1, M2, then its card.
     const std::string frontier = "/SPH/INOUT/2\nfrontier\n" + i10("3") + i10("2") + i10("0") + r20("1.0") + "\n" +
                                  r20("0") + r20("0") + r20("0") + "\n" + r20("1") + r20("0") + r20("0") + "\n" +
-                                 r20("0") + r20("1") + r20("4.5") + "\n" + blank30 + i10("7") + r20("0") +
-                                 r20("0.5") + "\n\n";
+                                 r20("0") + r20("1") + r20("4.5") + "\n" + blank30 + i10("7") + r20("0") + r20("0.5") +
+                                 "\n\n";
     auto r = check(deck(inlet + frontier));
     REQUIRE(facts(r).inouts.size() == 2);
     const auto& in = facts(r).inouts[0];
@@ -133,8 +132,8 @@ TEST_CASE("radioss sph cards: /SPH/INOUT reads the cards of its Itype (sph_inout
     CHECK(count_code(r.diagnostics, "DK002") == 0);
 
     // Format 110 has no points: the Itype 3 card follows card 1.
-    const std::string old = "/SPH/INOUT/3\nfrontier\n" + i10("3") + i10("2") + i10("0") + r20("1.0") + "\n" +
-                            blank30 + i10("8") + r20("3.0") + r20("0.25") + "\n\n";
+    const std::string old = "/SPH/INOUT/3\nfrontier\n" + i10("3") + i10("2") + i10("0") + r20("1.0") + "\n" + blank30 +
+                            i10("8") + r20("3.0") + r20("0.25") + "\n\n";
     auto v110 = check(deck(old, 110));
     REQUIRE(facts(v110).inouts.size() == 1);
     CHECK(!facts(v110).inouts[0].by_points);
@@ -148,8 +147,8 @@ TEST_CASE("radioss sph cards: /SPH/INOUT surf_ID is checked against the /SURF he
     const std::string part = "/PART/2\nwater\n" + i10("2") + i10("3") + "\n";
     CHECK(count_code(check(deck(part + inout)).diagnostics, "REF008") == 1);
     CHECK(count_code(check(deck(part + "/SURF/SEG/7\nface\n" + inout)).diagnostics, "REF008") == 0);
-    CHECK(count_code(check(deck(part + inout + "/SURF/PART/EXT/7\nskin\n" + i10("2") + "\n")).diagnostics,
-                     "REF008") == 0);
+    CHECK(count_code(check(deck(part + inout + "/SURF/PART/EXT/7\nskin\n" + i10("2") + "\n")).diagnostics, "REF008") ==
+          0);
     // A /SURF header whose id cannot be read: surface ids are not checked.
     CHECK(count_code(check(deck(part + "/SURF/PART\nno id\n" + inout)).diagnostics, "REF008") == 0);
 }

@@ -31,9 +31,8 @@ TEST_CASE("includes: search order and *INCLUDE_PATH") {
     dir.write("sub/sibling.k", "*NODE\n       5\n");
     dir.write("lib/shared.k", "*NODE\n       6\n");
     dir.write("rel/relative.k", "*NODE\n       7\n");
-    auto main = dir.write("main.k",
-                          "*INCLUDE_PATH\n" + (dir.path() / "lib").string() +
-                              "\n*INCLUDE_PATH_RELATIVE\nrel\n*INCLUDE\nsub/child.k\nshared.k\nrelative.k\n");
+    auto main = dir.write("main.k", "*INCLUDE_PATH\n" + (dir.path() / "lib").string() +
+                                        "\n*INCLUDE_PATH_RELATIVE\nrel\n*INCLUDE\nsub/child.k\nshared.k\nrelative.k\n");
     auto deck = read_file(main);
     CHECK(deck.diagnostics.empty());
     CHECK(deck.stats.files == 5);
@@ -125,7 +124,7 @@ TEST_CASE("includes: the format passes down and a suffix on *INCLUDE changes it"
     REQUIRE(deck.blocks.size() == 6);
     CHECK(deck.blocks[2].format == grammar::CardFormat::Long);  // *NODE of long.k
     CHECK(deck.blocks[5].format == grammar::CardFormat::I10);   // *NODE of plain.k inherits i10
-    CHECK(count_code(deck.diagnostics, "DK019") == 1);           // long=y inside an include is ignored
+    CHECK(count_code(deck.diagnostics, "DK019") == 1);          // long=y inside an include is ignored
 }
 
 TEST_CASE("includes: a file name over 236 characters is DK025") {

@@ -15,7 +15,8 @@ TEST_CASE("reader: the line grammar has no infinite loops") {
 }
 
 TEST_CASE("reader: comment, keyword and data lines") {
-    auto deck = read_buffer("$ a comment\n*KEYWORD\n*NODE\n$# nid x\n       1     0.0\n       2     1.0\n*END\n", "d.k");
+    auto deck =
+        read_buffer("$ a comment\n*KEYWORD\n*NODE\n$# nid x\n       1     0.0\n       2     1.0\n*END\n", "d.k");
     REQUIRE(deck.blocks.size() == 3);
     CHECK(deck.blocks[0].keyword == "*KEYWORD");
     CHECK(deck.blocks[1].keyword == "*NODE");
@@ -102,8 +103,9 @@ TEST_CASE("reader: *END stops the file; later content is reported once") {
 }
 
 TEST_CASE("reader: encrypted blocks are skipped with a note") {
-    auto deck = read_buffer("*NODE\n-----BEGIN PGP MESSAGE-----\n*NOT_A_KEYWORD\nxyz\n-----END PGP MESSAGE-----\n       1\n",
-                            "d.k");
+    auto deck =
+        read_buffer("*NODE\n-----BEGIN PGP MESSAGE-----\n*NOT_A_KEYWORD\nxyz\n-----END PGP MESSAGE-----\n       1\n",
+                    "d.k");
     CHECK(deck.blocks.size() == 1);
     CHECK(deck.lines.size() == 1);
     CHECK(deck.lines[0].line == 6);
@@ -158,9 +160,10 @@ TEST_CASE("reader: an indented '*' line inside *COMMENT or an expression continu
 }
 
 TEST_CASE("reader: '-' and '/' between letters or digits belong to the keyword name") {
-    auto deck = read_buffer("*CONSTRAINED_TIE-BREAK\n*MAT_SAMP-1 +\n*MAT_SIMPLIFIED_RUBBER/FOAM\n"
-                            "*ALE_MULTI-MATERIAL_GROUP-\n*NODE-\n*NODE -\n*PART-  hint\n*DEFINE_CURVE/\n",
-                            "d.k");
+    auto deck = read_buffer(
+        "*CONSTRAINED_TIE-BREAK\n*MAT_SAMP-1 +\n*MAT_SIMPLIFIED_RUBBER/FOAM\n"
+        "*ALE_MULTI-MATERIAL_GROUP-\n*NODE-\n*NODE -\n*PART-  hint\n*DEFINE_CURVE/\n",
+        "d.k");
     REQUIRE(deck.blocks.size() == 8);
     CHECK(deck.blocks[0].keyword == "*CONSTRAINED_TIE-BREAK");
     CHECK(deck.blocks[0].suffix == 0);

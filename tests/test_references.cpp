@@ -30,8 +30,9 @@ TEST_CASE("references: a missing node include makes a handful of findings, not o
 
 TEST_CASE("references: a huge _GENERATE range is bounded, reported, and fast") {
     auto start = std::chrono::steady_clock::now();
-    auto r = engine::check_buffer(kPart + "*NODE\n       1\n*SET_NODE_LIST_GENERATE\n         1\n         1 200000000\n",
-                                "d.k");
+    auto r =
+        engine::check_buffer(kPart + "*NODE\n       1\n*SET_NODE_LIST_GENERATE\n         1\n         1 200000000\n",
+                             "d.k");
     CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(5));
     REQUIRE(r.model.node_sets.size() == 1);
     CHECK(r.model.node_sets[0].truncated);
@@ -55,20 +56,22 @@ TEST_CASE("references: *MAT_ADD_* and *MAT_THERMAL_* do not define materials") {
 }
 
 TEST_CASE("references: sections of *DEFINE_ADAPTIVE_SOLID_TO_SPH and parts of *PART_CONTACT count") {
-    auto r = engine::check_buffer(kPart +
-                                    "*SECTION_SPH\n         2\n*DEFINE_ADAPTIVE_SOLID_TO_SPH\n         1         0         1"
-                                    "         3         2         0         0\n*PART_CONTACT\nsteel\n         7         1"
-                                    "         1\n       0.1       0.1\n",
-                                "d.k");
+    auto r = engine::check_buffer(
+        kPart +
+            "*SECTION_SPH\n         2\n*DEFINE_ADAPTIVE_SOLID_TO_SPH\n         1         0         1"
+            "         3         2         0         0\n*PART_CONTACT\nsteel\n         7         1"
+            "         1\n       0.1       0.1\n",
+        "d.k");
     CHECK(count_code(r.diagnostics, "REF007") == 0);
     CHECK(r.model.part("7") != nullptr);
 }
 
 TEST_CASE("references: *DEFINE_ADAPTIVE_SOLID_TO_SPH_TITLE is read with its title line") {
-    auto r = engine::check_buffer(kPart +
-                                    "*SECTION_SPH\n         2\n*DEFINE_ADAPTIVE_SOLID_TO_SPH_TITLE\nsolid to particles\n"
-                                    "         1         0         1         3         2         0         0\n",
-                                "d.k");
+    auto r =
+        engine::check_buffer(kPart +
+                                 "*SECTION_SPH\n         2\n*DEFINE_ADAPTIVE_SOLID_TO_SPH_TITLE\nsolid to particles\n"
+                                 "         1         0         1         3         2         0         0\n",
+                             "d.k");
     CHECK(count_code(r.diagnostics, "REF007") == 0);
     const auto match = keywords::find_keyword("*DEFINE_ADAPTIVE_SOLID_TO_SPH_TITLE");
     REQUIRE(match);
@@ -109,22 +112,28 @@ TEST_CASE("references: ids named by generated keywords are followed (REF009 and 
     REQUIRE(count_code(r.diagnostics, "REF009") == 1);
     CHECK(r.model.id_references.size() == 2);  // NID (node 80) and LCID (curve 12)
     // Defined as a *DEFINE_CURVE_TITLE (title line first), a table or a function: the same id space.
-    for (const char* curve : {"*DEFINE_CURVE_TITLE\nload\n        12\n       0.0       1.0\n",
-                              "*DEFINE_TABLE\n        12\n       0.0         1\n", "*DEFINE_FUNCTION\n        12\nf(t)=t\n"})
+    for (const char* curve :
+         {"*DEFINE_CURVE_TITLE\nload\n        12\n       0.0       1.0\n",
+          "*DEFINE_TABLE\n        12\n       0.0         1\n", "*DEFINE_FUNCTION\n        12\nf(t)=t\n"})
         CHECK(count_code(engine::check_buffer(kPart + load + curve, "d.k").diagnostics, "REF009") == 0);
     // A curve defined through a parameter cannot be judged: the kind is skipped.
-    CHECK(count_code(engine::check_buffer(kPart + "*PARAMETER\nI lc              13\n" + load + "*DEFINE_CURVE\n&lc\n", "d.k").diagnostics,
+    CHECK(count_code(engine::check_buffer(kPart + "*PARAMETER\nI lc              13\n" + load + "*DEFINE_CURVE\n&lc\n",
+                                          "d.k")
+                         .diagnostics,
                      "REF009") == 0);
     // Ids in a missing include cannot be matched.
     CHECK(count_code(engine::check_buffer(kPart + load + "*INCLUDE\nmissing.k\n", "d.k").diagnostics, "REF009") == 0);
 }
 
 TEST_CASE("references: a type field decides what a generated keyword's id names") {
-    const std::string contact = "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n         9         1         {}         3\n       0.1\n";
+    const std::string contact =
+        "*CONTACT_AUTOMATIC_NODES_TO_SURFACE\n         9         1         {}         3\n       0.1\n";
     // SURFATYP 3: part 9 (undefined, REF002); 4: node set 9 (REF008); 5: all (not judged);
     // 0 on the node side of a node-to-surface contact: not a segment set.
-    CHECK(count_code(engine::check_buffer(kPart + fmt::format(fmt::runtime(contact), 3), "d.k").diagnostics, "REF002") == 1);
-    CHECK(count_code(engine::check_buffer(kPart + fmt::format(fmt::runtime(contact), 4), "d.k").diagnostics, "REF008") == 1);
+    CHECK(count_code(engine::check_buffer(kPart + fmt::format(fmt::runtime(contact), 3), "d.k").diagnostics,
+                     "REF002") == 1);
+    CHECK(count_code(engine::check_buffer(kPart + fmt::format(fmt::runtime(contact), 4), "d.k").diagnostics,
+                     "REF008") == 1);
     for (int type : {0, 5}) {
         auto r = engine::check_buffer(kPart + fmt::format(fmt::runtime(contact), type), "d.k");
         CHECK(count_code(r.diagnostics, "REF002") + count_code(r.diagnostics, "REF008") == 0);
@@ -135,9 +144,10 @@ TEST_CASE("references: a type field decides what a generated keyword's id names"
 }
 
 TEST_CASE("references: *FREQUENCY_DOMAIN_FRF ids are not followed (pydyna's layout has a card more)") {
-    auto r = engine::check_buffer(kPart + "*FREQUENCY_DOMAIN_FRF\n         0         0         1         1         0"
-                                        "      20.0\n      0.01         0\n         2         1\n",
-                                "d.k");
+    auto r = engine::check_buffer(kPart +
+                                      "*FREQUENCY_DOMAIN_FRF\n         0         0         1         1         0"
+                                      "      20.0\n      0.01         0\n         2         1\n",
+                                  "d.k");
     CHECK(r.model.id_references.empty());
 }
 

@@ -11,11 +11,11 @@ using sphdeck::refsolver::CoreShare;
 
 TEST_CASE("refsolver core share: free cores from the load of other processes") {
     CHECK(CoreShare::free_cores(2, 0.0, 2) == 2);
-    CHECK(CoreShare::free_cores(2, 0.2, 2) == 2);  // a little noise keeps both
-    CHECK(CoreShare::free_cores(2, 1.0, 2) == 1);  // a busy loop on one core: one thread, not a 9x collapse
-    CHECK(CoreShare::free_cores(2, 0.5, 2) == 1);  // a core half taken still stalls a static schedule
-    CHECK(CoreShare::free_cores(2, 3.0, 2) == 1);  // never fewer than one
-    CHECK(CoreShare::free_cores(8, 0.0, 2) == 2);  // never more than allowed (OMP_NUM_THREADS)
+    CHECK(CoreShare::free_cores(2, 0.2, 2) == 2);   // a little noise keeps both
+    CHECK(CoreShare::free_cores(2, 1.0, 2) == 1);   // a busy loop on one core: one thread, not a 9x collapse
+    CHECK(CoreShare::free_cores(2, 0.5, 2) == 1);   // a core half taken still stalls a static schedule
+    CHECK(CoreShare::free_cores(2, 3.0, 2) == 1);   // never fewer than one
+    CHECK(CoreShare::free_cores(8, 0.0, 2) == 2);   // never more than allowed (OMP_NUM_THREADS)
     CHECK(CoreShare::free_cores(2, -0.1, 2) == 2);  // tick jitter can make the others' load negative
 }
 

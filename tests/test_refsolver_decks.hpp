@@ -20,7 +20,7 @@ struct TestDeck {
     double endtim = 1e-3, tssfac = 0.3, q1 = 0, q2 = 0, maxv = 1e15;
     double rho0 = 1.0, sphini = 0, cslh = 1.2, hmin = 0.2, hmax = 2.0;
     std::string eos = "*EOS_LINEAR_POLYNOMIAL\n1,0,0,0,0,0.4,0.4,0\n0,1\n";  // ideal gas, gamma 1.4, E0 = 0
-    std::string extra;  // more keywords
+    std::string extra;                                                       // more keywords
     std::vector<TestParticle> particles;
 
     std::string text() const {

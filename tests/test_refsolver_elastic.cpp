@@ -71,7 +71,8 @@ TEST_CASE("refsolver elastic: the Jaumann rate rotates S with a spin and gives 2
         return r;
     };
     for (int n = 0; n < steps; ++n) {
-        const auto k1 = rate(s), k2 = rate(axpy(s, dt / 2, k1)), k3 = rate(axpy(s, dt / 2, k2)), k4 = rate(axpy(s, dt, k3));
+        const auto k1 = rate(s), k2 = rate(axpy(s, dt / 2, k1)), k3 = rate(axpy(s, dt / 2, k2)),
+                   k4 = rate(axpy(s, dt, k3));
         for (int k = 0; k < 6; ++k) s[k] += dt / 6 * (k1[k] + 2 * k2[k] + 2 * k3[k] + k4[k]);
     }
     const double c = std::cos(1.0), sn = std::sin(1.0);
@@ -131,7 +132,7 @@ TEST_CASE("refsolver elastic: a rigidly rotating block builds no stress (2D and 
                     const double x = i * dx - half, y = j * dx - half, z = dimension == 2 ? 0.0 : k * dx - half;
                     deck.particles.push_back({x, y, z, mass, -omega * y, omega * x, 0});
                 }
-        deck.endtim = 10.0;  // 0.1 rad
+        deck.endtim = 10.0;                            // 0.1 rad
         auto setup = elastic_solver(deck, 1.0, 0.25);  // G = 0.4, c = 1.1: omega R / c < 1 %
         REQUIRE_MESSAGE(setup.simulation, unsupported_text(setup));
         refsolver::Simulation& sim = *setup.simulation;

@@ -119,7 +119,8 @@ TEST_CASE("refsolver initial velocity: axis nodes written beyond any integer (NX
     options.ignore_unsupported = true;
     const refsolver::Simulation::Setup setup = solver_for(deck, options);
     CHECK_FALSE(setup.simulation);
-    CHECK(unsupported_text(setup).find("the axis nodes 1e+20 and 3 (NX -999) are not both defined") != std::string::npos);
+    CHECK(unsupported_text(setup).find("the axis nodes 1e+20 and 3 (NX -999) are not both defined") !=
+          std::string::npos);
 }
 
 TEST_CASE("refsolver initial velocity: one *SET_NODE_LIST + *INITIAL_VELOCITY per particle") {

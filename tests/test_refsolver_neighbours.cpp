@@ -1,7 +1,7 @@
 // The reference solver's neighbour lists against brute force (every pair within the radius once in
-// the half lists (plus at most a few within the single-precision margin), every ghost in range in the ghost lists, the full lists for FORM 1), on any
-// thread count; and the symmetric pair loop: the same results for the same thread count, and
-// round-off agreement between one and two threads.
+// the half lists (plus at most a few within the single-precision margin), every ghost in range in the ghost lists, the
+// full lists for FORM 1), on any thread count; and the symmetric pair loop: the same results for the same thread count,
+// and round-off agreement between one and two threads.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -113,8 +113,7 @@ TEST_CASE("refsolver neighbours: half and ghost lists hold exactly the pairs wit
 
         // In model numbering, the same pairs whatever the thread count.
         Pairs by_model;
-        for (const auto& [i, j] : listed_real)
-            by_model.insert(std::minmax(s.model_index[i], s.model_index[j]));
+        for (const auto& [i, j] : listed_real) by_model.insert(std::minmax(s.model_index[i], s.model_index[j]));
         found_by_threads.push_back(by_model);
     }
     CHECK(found_by_threads[0] == found_by_threads[1]);
@@ -136,12 +135,12 @@ test::TestDeck jittered_box() {
         for (int j = 0; j < side; ++j)
             for (int i = 0; i < side; ++i) {
                 const double jitter = 0.15 * dx * std::sin(12.9898 * i + 78.233 * j + 37.719 * k);
-                deck.particles.push_back(
-                    {(i + 0.5) * dx + jitter, (j + 0.5) * dx - 0.5 * jitter, (k + 0.5) * dx + 0.3 * jitter, dx * dx * dx});
+                deck.particles.push_back({(i + 0.5) * dx + jitter, (j + 0.5) * dx - 0.5 * jitter,
+                                          (k + 0.5) * dx + 0.3 * jitter, dx * dx * dx});
             }
-    for (const std::string& p : {fmt::format("0,0,0,1,0,0"), fmt::format("{},0,0,{},0,0", L, L - 1),
-                                 fmt::format("0,0,0,0,1,0"), fmt::format("0,0,0,0,0,1"),
-                                 fmt::format("0,0,{},0,0,{}", L, L - 1)})
+    for (const std::string& p :
+         {fmt::format("0,0,0,1,0,0"), fmt::format("{},0,0,{},0,0", L, L - 1), fmt::format("0,0,0,0,1,0"),
+          fmt::format("0,0,0,0,0,1"), fmt::format("0,0,{},0,0,{}", L, L - 1)})
         deck.extra += "*BOUNDARY_SPH_SYMMETRY_PLANE\n" + p + "\n";
     deck.extra += "*LOAD_BODY_Y\n1,0.5\n*DEFINE_CURVE\n1\n0,1\n100,1\n";
     deck.endtim = 100.0;
@@ -204,10 +203,11 @@ test::TestDeck stretching_block(double jostle) {
             for (int i = 0; i < side; ++i) {
                 const double x = (i + 0.5) * dx, y = (j + 0.5) * dx, z = (k + 0.5) * dx;
                 const double wobble = jostle * std::sin(12.9898 * i + 78.233 * j + 37.719 * k);
-                deck.particles.push_back({x, y, z, 1000 * dx * dx * dx, U * x / L + wobble, -U * y / L - 0.7 * wobble,
-                                          0.4 * wobble});
+                deck.particles.push_back(
+                    {x, y, z, 1000 * dx * dx * dx, U * x / L + wobble, -U * y / L - 0.7 * wobble, 0.4 * wobble});
             }
-    for (const char* p : {"0,0,0,1,0,0", "0,0,0,0,1,0", "0,0,0,0,0,1"}) deck.extra += fmt::format("*BOUNDARY_SPH_SYMMETRY_PLANE\n{}\n", p);
+    for (const char* p : {"0,0,0,1,0,0", "0,0,0,0,1,0", "0,0,0,0,0,1"})
+        deck.extra += fmt::format("*BOUNDARY_SPH_SYMMETRY_PLANE\n{}\n", p);
     deck.extra += "*LOAD_BODY_Y\n1,9.81\n*DEFINE_CURVE\n1\n0,1\n100,1\n";
     deck.endtim = 100.0;
     return deck;
@@ -233,7 +233,8 @@ TEST_CASE("refsolver neighbours: the skin test never lets a pair within the supp
         for (std::size_t i = 0; i < a.size(); ++i) {
             moved = std::max(moved, std::abs(a.x[i] - deck.particles[i].x));
             gap_rho = std::max(gap_rho, std::abs(a.rho[i] - b.rho[i]) / b.rho[i]);
-            gap_v = std::max({gap_v, std::abs(a.vx[i] - b.vx[i]), std::abs(a.vy[i] - b.vy[i]), std::abs(a.vz[i] - b.vz[i])});
+            gap_v = std::max(
+                {gap_v, std::abs(a.vx[i] - b.vx[i]), std::abs(a.vy[i] - b.vy[i]), std::abs(a.vz[i] - b.vz[i])});
             vmax = std::max({vmax, std::abs(b.vx[i]), std::abs(b.vy[i]), std::abs(b.vz[i])});
         }
         const std::size_t rebuilds = skin.simulation->neighbour_rebuilds();

@@ -26,13 +26,14 @@ std::string f20(double v) { return fmt::format("{:>20}", fmt::format("{:.10g}", 
 // the rest moving down at 0.1 (/INIVEL group 1); `extra` goes before /END.
 std::string cube_starter(const std::string& extra = "", const std::string& law = "HYDPLA",
                          const std::string& plane = "TIED") {
-    std::string s = "#RADIOSS STARTER\n/BEGIN\ncube\n      2019         0\n"
-                    "                  kg                  mm                  ms\n"
-                    "                  kg                  mm                  ms\n";
-    s += "/MAT/" + law + "/1\nm\n" + f20(2.0) + "\n" + f20(law == "HYDPLA" ? 0.0 : 100.0) + f20(0.3) + "\n" +
-         f20(0) + f20(0) + f20(0) + f20(0) + f20(0) + "\n" + f20(0) + "\n";
-    s += "/EOS/POLYNOMIAL/1\neos\n" + f20(0) + f20(50.0) + f20(0) + f20(0) + "\n" + f20(0) + f20(0) + f20(0) +
-         f20(0) + f20(0) + "\n";
+    std::string s =
+        "#RADIOSS STARTER\n/BEGIN\ncube\n      2019         0\n"
+        "                  kg                  mm                  ms\n"
+        "                  kg                  mm                  ms\n";
+    s += "/MAT/" + law + "/1\nm\n" + f20(2.0) + "\n" + f20(law == "HYDPLA" ? 0.0 : 100.0) + f20(0.3) + "\n" + f20(0) +
+         f20(0) + f20(0) + f20(0) + f20(0) + "\n" + f20(0) + "\n";
+    s += "/EOS/POLYNOMIAL/1\neos\n" + f20(0) + f20(50.0) + f20(0) + f20(0) + "\n" + f20(0) + f20(0) + f20(0) + f20(0) +
+         f20(0) + "\n";
     s += "/PART/1\np\n         1         1         0\n";
     s += "/PROP/TYPE34/1\nsph\n" + f20(2.0) + f20(2) + f20(1) + f20(0) + "         0         0\n        -1" + f20(0) +
          f20(0) + "\n";
@@ -105,7 +106,7 @@ TEST_CASE("refsolver radioss: /RUN, /DT/NODA, /INIVEL and a TIED plane whose gro
         }
         pressure = std::max(pressure, s.p[i]);
     }
-    CHECK(pressure > 0);  // the cube is compressed against the plane: p = C1 mu > 0
+    CHECK(pressure > 0);               // the cube is compressed against the plane: p = C1 mu > 0
     CHECK(sim.totals().internal > 0);  // kinetic turned into internal energy
     // The engine's central differences (simulation.cpp, radioss_cycle) keep the total only to their
     // time-step error: about 4 % in these 4 steps near the stability limit (the engine's own listing of

@@ -144,7 +144,9 @@ TEST_CASE("refsolver: under FORM 0 the density follows m_i sum_j W_ij of the pos
     REQUIRE_MESSAGE(setup.simulation, unsupported_text(setup));
     const auto kernel = [](double r) {  // 3D cubic spline at h = 1 (kernel.hpp)
         const double q = r;
-        const double theta = q < 1 ? 1 - 1.5 * q * q + 0.75 * q * q * q : q < 2 ? 0.25 * (2 - q) * (2 - q) * (2 - q) : 0.0;
+        const double theta = q < 1   ? 1 - 1.5 * q * q + 0.75 * q * q * q
+                             : q < 2 ? 0.25 * (2 - q) * (2 - q) * (2 - q)
+                                     : 0.0;
         return theta / std::acos(-1.0);
     };
     refsolver::Simulation& sim = *setup.simulation;
@@ -232,7 +234,7 @@ TEST_CASE("refsolver: BOXID deactivates a particle that leaves the box") {
     REQUIRE_MESSAGE(setup.simulation, unsupported_text(setup));
     setup.simulation->run();
     const auto& st = setup.simulation->state();
-    CHECK(st.active[0] == 0);               // left through x = 1 at t = 0.5
+    CHECK(st.active[0] == 0);  // left through x = 1 at t = 0.5
     CHECK(st.x[0] == doctest::Approx(1.0).epsilon(0.05));
     CHECK(st.active[1] == 1);
     CHECK(setup.simulation->totals().active == 1);

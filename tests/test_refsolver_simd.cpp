@@ -45,7 +45,8 @@ TestDeck jostled_block(int dimension, int form) {
 // The largest difference of a field between two runs, relative to the field's largest magnitude.
 double relative_gap(const std::vector<double>& a, const std::vector<double>& b) {
     double gap = 0, scale = 0;
-    for (std::size_t i = 0; i < a.size(); ++i) gap = std::max(gap, std::abs(a[i] - b[i])), scale = std::max(scale, std::abs(a[i]));
+    for (std::size_t i = 0; i < a.size(); ++i)
+        gap = std::max(gap, std::abs(a[i] - b[i])), scale = std::max(scale, std::abs(a[i]));
     return scale > 0 ? gap / scale : gap;
 }
 
@@ -75,11 +76,14 @@ TEST_CASE("refsolver: the SIMD pair loop equals the scalar loop to round-off") {
                 REQUIRE(a.size() == b.size());
                 // The run did something: particles moved and the density changed by far more than the tolerance.
                 CHECK(relative_gap(a.rho, std::vector<double>(a.size(), 1000.0)) > 1e-6);
-                for (const auto& [member, label] :
-                     {std::pair{&refsolver::ParticleState::x, "x"}, {&refsolver::ParticleState::y, "y"},
-                      {&refsolver::ParticleState::vx, "vx"}, {&refsolver::ParticleState::vy, "vy"},
-                      {&refsolver::ParticleState::vz, "vz"}, {&refsolver::ParticleState::rho, "rho"},
-                      {&refsolver::ParticleState::e, "e"}, {&refsolver::ParticleState::h, "h"}}) {
+                for (const auto& [member, label] : {std::pair{&refsolver::ParticleState::x, "x"},
+                                                    {&refsolver::ParticleState::y, "y"},
+                                                    {&refsolver::ParticleState::vx, "vx"},
+                                                    {&refsolver::ParticleState::vy, "vy"},
+                                                    {&refsolver::ParticleState::vz, "vz"},
+                                                    {&refsolver::ParticleState::rho, "rho"},
+                                                    {&refsolver::ParticleState::e, "e"},
+                                                    {&refsolver::ParticleState::h, "h"}}) {
                     const std::string name = label;  // a copy: clang 14 lambdas (CAPTURE) cannot capture bindings
                     const auto field = member;
                     CAPTURE(name);

@@ -77,9 +77,9 @@ print(len(sets))
 std::string check_series(const TempDir& dir, std::size_t particles, bool stress) {
     const std::string script = dir.write("check_series.py", series_check_py);
     const std::string log = (dir.path() / "series.txt").string();
-    const std::string command = fmt::format("python3 '{}' '{}' {} {} > '{}' 2>&1", script,
-                                            (dir.path() / "out").string(), particles,
-                                            stress ? "stress" : "no-stress", log);
+    const std::string command =
+        fmt::format("python3 '{}' '{}' {} {} > '{}' 2>&1", script, (dir.path() / "out").string(), particles,
+                    stress ? "stress" : "no-stress", log);
     const int status = std::system(command.c_str());
     std::ifstream in(log);
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

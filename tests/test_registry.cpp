@@ -131,14 +131,14 @@ TEST_CASE("registry: the extra reader rules are registered") {
         std::string_view code, name;
         diag::Severity severity;
     };
-    for (const Extra& extra : {Extra{"DK019", "include-format-ignored", diag::Severity::Warning},
-                               Extra{"DK020", "keyword-not-in-column-1", diag::Severity::Warning},
-                               Extra{"DK021", "keyword-case", diag::Severity::Info},
-                               Extra{"DK022", "encrypted-block", diag::Severity::Info},
-                               Extra{"DK023", "nend-wide-column", diag::Severity::Warning},
-                               Extra{"DK024", "parameter-case", diag::Severity::Warning},
-                               Extra{"DK025", "include-path-long", diag::Severity::Error},
-                               Extra{"DK026", "unused-suppression", diag::Severity::Info}}) {
+    for (const Extra& extra :
+         {Extra{"DK019", "include-format-ignored", diag::Severity::Warning},
+          Extra{"DK020", "keyword-not-in-column-1", diag::Severity::Warning},
+          Extra{"DK021", "keyword-case", diag::Severity::Info}, Extra{"DK022", "encrypted-block", diag::Severity::Info},
+          Extra{"DK023", "nend-wide-column", diag::Severity::Warning},
+          Extra{"DK024", "parameter-case", diag::Severity::Warning},
+          Extra{"DK025", "include-path-long", diag::Severity::Error},
+          Extra{"DK026", "unused-suppression", diag::Severity::Info}}) {
         INFO(extra.code);
         const RuleInfo* rule = lint::find_rule(extra.code);
         REQUIRE(rule != nullptr);

@@ -18,10 +18,15 @@ using grammar::Span;
 
 namespace {
 
-grammar::FileId add(grammar::SourceMap& map, std::string name, std::string text, grammar::FileId parent = grammar::no_file,
-                    std::uint32_t include_line = 0) {
-    return map.add(SourceFile{.path = "/decks/" + name, .display_name = name, .text = std::move(text),
-                              .parent = parent, .include_line = include_line, .depth = 0, .line_starts = {}});
+grammar::FileId add(grammar::SourceMap& map, std::string name, std::string text,
+                    grammar::FileId parent = grammar::no_file, std::uint32_t include_line = 0) {
+    return map.add(SourceFile{.path = "/decks/" + name,
+                              .display_name = name,
+                              .text = std::move(text),
+                              .parent = parent,
+                              .include_line = include_line,
+                              .depth = 0,
+                              .line_starts = {}});
 }
 
 std::string full(const Diagnostic& d, const grammar::SourceMap& map, bool colour = false) {
@@ -57,8 +62,9 @@ TEST_CASE("render: invalid span has no location") {
     grammar::SourceMap map;
     Diagnostic d{"DK001", Severity::Error, "no *END keyword", Span{}, {{Span{}, "the deck ends at line 40"}}};
     CHECK(diag::render_concise(d, map) == "sphdeck: error: no *END keyword [DK001]\n");
-    CHECK(full(d, map) == "error[DK001]: no *END keyword\n"
-                          "  = note: the deck ends at line 40\n");
+    CHECK(full(d, map) ==
+          "error[DK001]: no *END keyword\n"
+          "  = note: the deck ends at line 40\n");
     d.span = Span{7, 1, 1, 2};  // a file the map does not hold
     d.code.clear();
     d.severity = Severity::Info;
@@ -71,13 +77,14 @@ TEST_CASE("render: full form with an include chain of two levels") {
     const auto mesh = add(map, "mesh.k", "*INCLUDE\nmesh/a.k\n", main, 2);
     const auto part = add(map, "mesh/a.k", std::string(11, '\n') + "parts.k\n", mesh, 1);
     Diagnostic d{"DK010", Severity::Error, "include file 'parts.k' not found", Span{part, 12, 1, 8}, {}};
-    CHECK(full(d, map) == "error[DK010]: include file 'parts.k' not found\n"
-                          "  --> mesh/a.k:12:1\n"
-                          "   |\n"
-                          "12 | parts.k\n"
-                          "   | ^^^^^^^\n"
-                          "   = note: included from mesh.k:1\n"
-                          "   = note: included from main.k:2\n");
+    CHECK(full(d, map) ==
+          "error[DK010]: include file 'parts.k' not found\n"
+          "  --> mesh/a.k:12:1\n"
+          "   |\n"
+          "12 | parts.k\n"
+          "   | ^^^^^^^\n"
+          "   = note: included from mesh.k:1\n"
+          "   = note: included from main.k:2\n");
 }
 
 TEST_CASE("render: full form with notes and an adaptive gutter") {
@@ -85,19 +92,23 @@ TEST_CASE("render: full form with notes and an adaptive gutter") {
     std::string text;
     for (int i = 1; i <= 120; ++i) text += i == 9 ? "   1     0.5\n" : i == 120 ? "*SECTION_SPH\n" : "$\n";
     const auto main = add(map, "main.k", text);
-    Diagnostic d{"SPH012", Severity::Warning, "section 1 is not an SPH section", Span{main, 9, 4, 5},
+    Diagnostic d{"SPH012",
+                 Severity::Warning,
+                 "section 1 is not an SPH section",
+                 Span{main, 9, 4, 5},
                  {{Span{main, 120, 1, 13}, "section 1 is defined here"}, {Span{}, "expected *SECTION_SPH"}}};
-    CHECK(full(d, map) == "warning[SPH012]: section 1 is not an SPH section\n"
-                          "   --> main.k:9:4\n"
-                          "    |\n"
-                          "  9 |    1     0.5\n"
-                          "    |    ^\n"
-                          "note: section 1 is defined here\n"
-                          "   --> main.k:120:1\n"
-                          "    |\n"
-                          "120 | *SECTION_SPH\n"
-                          "    | ^^^^^^^^^^^^\n"
-                          "    = note: expected *SECTION_SPH\n");
+    CHECK(full(d, map) ==
+          "warning[SPH012]: section 1 is not an SPH section\n"
+          "   --> main.k:9:4\n"
+          "    |\n"
+          "  9 |    1     0.5\n"
+          "    |    ^\n"
+          "note: section 1 is defined here\n"
+          "   --> main.k:120:1\n"
+          "    |\n"
+          "120 | *SECTION_SPH\n"
+          "    | ^^^^^^^^^^^^\n"
+          "    = note: expected *SECTION_SPH\n");
 }
 
 TEST_CASE("render: carets at least one wide, also past the line end") {
@@ -115,11 +126,12 @@ TEST_CASE("render: tabs expand alike in excerpt and carets") {
     grammar::SourceMap map;
     const auto main = add(map, "main.k", "\t1\t2.5e3\n");
     Diagnostic d{"DK020", Severity::Warning, "tab in a fixed-format card", Span{main, 1, 3, 4}, {}};
-    CHECK(full(d, map) == "warning[DK020]: tab in a fixed-format card\n"
-                          " --> main.k:1:3\n"
-                          "  |\n"
-                          "1 |         1       2.5e3\n"
-                          "  |          ^^^^^^^\n");
+    CHECK(full(d, map) ==
+          "warning[DK020]: tab in a fixed-format card\n"
+          " --> main.k:1:3\n"
+          "  |\n"
+          "1 |         1       2.5e3\n"
+          "  |          ^^^^^^^\n");
     d.span = Span{main, 1, 4, 9};
     CHECK(full(d, map).ends_with("1 |         1       2.5e3\n  |                 ^^^^^\n"));
 }
@@ -128,11 +140,12 @@ TEST_CASE("render: control bytes, invalid UTF-8 and CRLF") {
     grammar::SourceMap map;
     const auto main = add(map, "main.k", std::string("a\0b\x1b[31m\xff\xc3\xa9x\r\n*END\r\n", 20));
     Diagnostic d{"DK002", Severity::Error, "bad\nbyte", Span{main, 1, 12, 13}, {}};
-    CHECK(full(d, map) == "error[DK002]: bad?byte\n"
-                          " --> main.k:1:12\n"
-                          "  |\n"
-                          "1 | a?b?[31m?\xc3\xa9x\n"
-                          "  |           ^\n");
+    CHECK(full(d, map) ==
+          "error[DK002]: bad?byte\n"
+          " --> main.k:1:12\n"
+          "  |\n"
+          "1 | a?b?[31m?\xc3\xa9x\n"
+          "  |           ^\n");
     d.span = Span{main, 1, 10, 11};  // inside the two-byte character: caret under the whole of it
     CHECK(full(d, map).ends_with("  |          ^\n"));
     d.span = Span{main, 2, 1, 5};
@@ -202,8 +215,10 @@ TEST_CASE("render: colour_wanted needs a terminal and no NO_COLOR") {
         CHECK(diag::colour_wanted(tty));
         setenv("NO_COLOR", "1", 1);
         CHECK_FALSE(diag::colour_wanted(tty));
-        if (saved) setenv("NO_COLOR", saved_value.c_str(), 1);
-        else unsetenv("NO_COLOR");
+        if (saved)
+            setenv("NO_COLOR", saved_value.c_str(), 1);
+        else
+            unsetenv("NO_COLOR");
         close(tty);
     }
     close(master);

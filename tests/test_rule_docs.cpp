@@ -32,8 +32,8 @@ TEST_CASE("rules: the page of one rule has every section") {
     const std::string page = lint::render_rule_page(*rule);
     CHECK(page.starts_with("SPH030 iavis-solid-in-2d (error)\n"));
     std::size_t last = 0;
-    for (const char* section : {"What it does\n", "Why it matters\n", "How to fix\n", "Example\n", "Triggers the rule:\n",
-                                "Fixed:\n", "#sph030"}) {
+    for (const char* section : {"What it does\n", "Why it matters\n", "How to fix\n", "Example\n",
+                                "Triggers the rule:\n", "Fixed:\n", "#sph030"}) {
         INFO(section);
         const std::size_t at = page.find(section);
         REQUIRE(at != std::string::npos);
@@ -53,12 +53,13 @@ TEST_CASE("rules: markdown has one anchored section per rule and escapes markup"
         INFO(rule.code);
         std::string anchor(rule.code);
         for (char& c : anchor) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        CHECK(contains(md, "<a id=\"" + anchor + "\"></a>\n\n## " + std::string(rule.code) + " " + std::string(rule.name)));
+        CHECK(contains(md,
+                       "<a id=\"" + anchor + "\"></a>\n\n## " + std::string(rule.code) + " " + std::string(rule.name)));
         CHECK(contains(md, "| [" + std::string(rule.code) + "](#" + anchor + ") |"));
         CHECK(lint::rule_url(rule).ends_with("docs/rules.md#" + anchor));
     }
     const std::string body = lint::rule_markdown_body(*lint::find_rule("REF003"));
-    CHECK(contains(body, "\\*PART"));  // '*' would otherwise start emphasis
+    CHECK(contains(body, "\\*PART"));         // '*' would otherwise start emphasis
     CHECK(contains(body, "```text\n*PART"));  // but not inside the example
 }
 
@@ -154,8 +155,7 @@ TEST_CASE("rules: a page that breaks the fixed shape is reported with its line")
     CHECK(problems("# XX001 r\n## What it does\nW.\n## Why it matters\nY.\n" + tail).empty());
     CHECK(contains(problems("# XX002 r\n## What it does\nW.\n## Why it matters\nY.\n" + tail),
                    "docs/rules/XX001.md:1: the title's code 'XX002' is not the file's 'XX001'"));
-    CHECK(contains(problems("# XX001 r\n## What it does\nW.\n" + tail),
-                   ":4: '## How to fix' out of place"));
+    CHECK(contains(problems("# XX001 r\n## What it does\nW.\n" + tail), ":4: '## How to fix' out of place"));
     CHECK(contains(problems("# XX001 r\n## What it does\nW.\n\nMore.\n## Why it matters\nY.\n" + tail),
                    ":5: one paragraph only"));
     CHECK(contains(problems("# XX001 r\n## What it does\n## Why it matters\nY.\n" + tail), ":2: the section is empty"));

@@ -118,13 +118,15 @@ TEST_CASE("rule rows: each rule has a firing and a silent deck where its row say
             silents += test::kind_of_deck(deck) == test::DeckKind::Silent;
         }
         for (const std::string& folder : folders)
-            CHECK_MESSAGE(used.count(folder) == 1, "the row names decks/tests/" << folder << ", which has none of its decks");
+            CHECK_MESSAGE(used.count(folder) == 1,
+                          "the row names decks/tests/" << folder << ", which has none of its decks");
         if (rule.home.no_firing_deck.empty())
             CHECK_MESSAGE(fires > 0, "write a deck " << rule.code << "_fires.k that reports it");
         else
             CHECK_MESSAGE(fires == 0, "it has a firing deck now: drop the row's reason");
         if (rule.home.no_silent_deck.empty())
-            CHECK_MESSAGE(silents > 0, "write a deck " << rule.code << "_silent.k, a near miss that must not report it");
+            CHECK_MESSAGE(silents > 0,
+                          "write a deck " << rule.code << "_silent.k, a near miss that must not report it");
         else
             CHECK_MESSAGE(silents == 0, "it has a silent deck now: drop the row's reason");
     }

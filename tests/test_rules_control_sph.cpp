@@ -16,7 +16,8 @@ namespace {
 // *CONTROL_SPH cards (card 1 first) and extra keywords before *END.
 std::string fluid_deck(const std::string& control_sph, const std::string& extra = "",
                        const std::string& keyword = "*KEYWORD") {
-    return keyword + "\n"
+    return keyword +
+           "\n"
            "*CONTROL_TERMINATION\n"
            "       1.0\n"
            "*CONTROL_SPH\n" +
@@ -43,7 +44,7 @@ const std::string form12 = "         1         0   1.0e+20         3       150  
 const std::string form9 = "         1         0   1.0e+20         3       150         9       0.0   1.0e+15\n";
 
 engine::CheckResult run(const std::string& text, lint::Solver solver = lint::Solver::Unknown,
-                      const std::string& source = "") {
+                        const std::string& source = "") {
     engine::CheckOptions o;
     o.rules.solver = solver;
     o.rules.solver_source = source;
@@ -86,7 +87,8 @@ TEST_CASE("SPH010: FORM 12 is an error on SMP, information when the run type is 
         const diag::Diagnostic* d = test::find_code(r.diagnostics, "SPH010");
         REQUIRE(d);
         CHECK(d->severity == diag::Severity::Error);
-        CHECK(d->message == "FORM 12 (MLS) runs only in MPP; the run is SMP (solver = \"smp\" in /project/sphdeck.toml)");
+        CHECK(d->message ==
+              "FORM 12 (MLS) runs only in MPP; the run is SMP (solver = \"smp\" in /project/sphdeck.toml)");
     }
     SUBCASE("FORM 13 as well") {
         std::string form13 = form12;
@@ -101,8 +103,9 @@ TEST_CASE("SPH010: FORM 12 is an error on SMP, information when the run type is 
         CHECK(test::count_code(r.diagnostics, "SPH010") == 0);
     }
     SUBCASE("deck evidence: *CONTROL_MPP_ keyword or memory2=") {
-        CHECK(test::count_code(run(fluid_deck(form12, "*CONTROL_MPP_DECOMPOSITION_DISTRIBUTE_SPH_ELEMENTS\n")).diagnostics,
-                               "SPH010") == 0);
+        CHECK(test::count_code(
+                  run(fluid_deck(form12, "*CONTROL_MPP_DECOMPOSITION_DISTRIBUTE_SPH_ELEMENTS\n")).diagnostics,
+                  "SPH010") == 0);
         CHECK(test::count_code(run(fluid_deck(form12, "", "*KEYWORD memory2=20m")).diagnostics, "SPH010") == 0);
     }
     SUBCASE("other forms: silent whatever the solver") {
@@ -143,8 +146,10 @@ TEST_CASE("SPH080: error, warning or info depending on DT, START and ENDTIM") {
         const diag::Diagnostic* d = test::find_code(r.diagnostics, "SPH080");
         return d ? std::optional<diag::Severity>(d->severity) : std::nullopt;
     };
-    CHECK(severity("         1         0       0.1         3       150        15       0.1\n") == diag::Severity::Error);
-    CHECK(severity("         1         0                   3       150        15       1.5\n") == diag::Severity::Warning);
+    CHECK(severity("         1         0       0.1         3       150        15       0.1\n") ==
+          diag::Severity::Error);
+    CHECK(severity("         1         0                   3       150        15       1.5\n") ==
+          diag::Severity::Warning);
     CHECK(severity("         1         0       0.5         3       150        15       0.0\n") == diag::Severity::Info);
     // DT 0 reads as the default 1e20 (zero means default for DT).
     CHECK(severity("         1         0       0.0         3       150        15       0.0\n") == std::nullopt);
@@ -160,7 +165,8 @@ TEST_CASE("SPH071: the count and the first five ids") {
     for (int i = 2; i <= 9; ++i) parts += fmt::format("p{}\n{:>10}{:>10}{:>10}{:>10}\n", i, i, 1, 1, 1);
     const std::string extra = "*PART\n" + parts + "*NODE\n" + nodes + "*ELEMENT_SPH\n" + particles +
                               "*DEFINE_BOX\n         1      -1.0       1.0      -1.0       1.0      -1.0       1.0\n";
-    auto r = run(fluid_deck("         1         1   1.0e+20         3       150        15       0.0   1.0e+15\n", extra));
+    auto r =
+        run(fluid_deck("         1         1   1.0e+20         3       150        15       0.0   1.0e+15\n", extra));
     const diag::Diagnostic* d = test::find_code(r.diagnostics, "SPH071");
     REQUIRE(d);
     CHECK(d->message ==
@@ -173,45 +179,50 @@ TEST_CASE("SPH072: *INITIAL_VELOCITY_NODE is read raw, per particle node") {
     auto fires = run(fluid_deck(card1, "*INITIAL_VELOCITY_NODE\n         1      12.0       0.0       0.0\n"));
     const diag::Diagnostic* d = test::find_code(fires.diagnostics, "SPH072");
     REQUIRE(d);
-    CHECK(d->message ==
-          "initial speed 12.0 exceeds MAXV 10.0: those particles are deactivated at once; expected MAXV above every speed");
+    CHECK(
+        d->message ==
+        "initial speed 12.0 exceeds MAXV 10.0: those particles are deactivated at once; expected MAXV above every speed");
     // A node that is not a particle does not count.
     auto silent = run(fluid_deck(card1, "*INITIAL_VELOCITY_NODE\n         7      12.0       0.0       0.0\n"));
     CHECK(test::count_code(silent.diagnostics, "SPH072") == 0);
     // Nor does an *INITIAL_VELOCITY whose node set holds no particle.
-    auto set = run(fluid_deck(card1, "*SET_NODE_LIST\n         5\n         7\n*NODE\n       7             5.0             0.0"
-                                     "             0.0\n*INITIAL_VELOCITY\n         5\n      12.0\n"));
+    auto set = run(fluid_deck(card1,
+                              "*SET_NODE_LIST\n         5\n         7\n*NODE\n       7             5.0             0.0"
+                              "             0.0\n*INITIAL_VELOCITY\n         5\n      12.0\n"));
     CHECK(test::count_code(set.diagnostics, "SPH072") == 0);
 }
 
 TEST_CASE("SPH093: contact cards after the _ID and _MPP option cards") {
-    const std::string sph = "         1         0   1.0e+20         3       150        15       0.0   1.0e+15\n"
-                            "         0         0         0         0         0         0         0       100\n"
-                            "         1         0      0.01\n";
+    const std::string sph =
+        "         1         0   1.0e+20         3       150        15       0.0   1.0e+15\n"
+        "         0         0         0         0         0         0         0       100\n"
+        "         1         0      0.01\n";
     auto contact = [](const std::string& keyword, const std::string& before, const std::string& sstyp) {
-        return keyword + "\n" + before + "         1         2" + sstyp + "         3\n       0.0       0.0\n"
+        return keyword + "\n" + before + "         1         2" + sstyp +
+               "         3\n       0.0       0.0\n"
                "       1.0       1.0      0.25       0.0\n";
     };
     auto count = [&](const std::string& c) { return test::count_code(run(fluid_deck(sph, c)).diagnostics, "SPH093"); };
     CHECK(count(contact("*CONTACT_AUTOMATIC_NODES_TO_SURFACE", "", "         3")) == 1);
     CHECK(count(contact("*CONTACT_AUTOMATIC_NODES_TO_SURFACE_ID", "        10wall contact\n", "         3")) == 1);
-    CHECK(count(contact("*CONTACT_AUTOMATIC_NODES_TO_SURFACE_ID_MPP", "        10\n         0       200\n&                  1\n",
-                        "         3")) == 1);
+    CHECK(count(contact("*CONTACT_AUTOMATIC_NODES_TO_SURFACE_ID_MPP",
+                        "        10\n         0       200\n&                  1\n", "         3")) == 1);
     // The slave side is a segment set: no particles there, ITHK is not involved.
     CHECK(count(contact("*CONTACT_AUTOMATIC_NODES_TO_SURFACE", "", "         0")) == 0);
     // ITHK 0: nothing to say.
     std::string ithk0 = sph;
     ithk0.replace(ithk0.rfind("         1         0      0.01"), 10, "         0");
-    CHECK(test::count_code(run(fluid_deck(ithk0, contact("*CONTACT_AUTOMATIC_NODES_TO_SURFACE", "", "         3")))
-                               .diagnostics,
-                           "SPH093") == 0);
+    CHECK(test::count_code(
+              run(fluid_deck(ithk0, contact("*CONTACT_AUTOMATIC_NODES_TO_SURFACE", "", "         3"))).diagnostics,
+              "SPH093") == 0);
 }
 
 TEST_CASE("SPH091: out-of-range ISYMP is an error, ISYMP without planes an info") {
     auto severity = [](const std::string& isymp) {
-        auto r = run(fluid_deck("         1         0   1.0e+20         3       150        15       0.0   1.0e+15\n"
-                                "         0         0         0         0         0         0         0" +
-                                isymp + "\n"));
+        auto r =
+            run(fluid_deck("         1         0   1.0e+20         3       150        15       0.0   1.0e+15\n"
+                           "         0         0         0         0         0         0         0" +
+                           isymp + "\n"));
         const diag::Diagnostic* d = test::find_code(r.diagnostics, "SPH091");
         return d ? std::optional<diag::Severity>(d->severity) : std::nullopt;
     };
@@ -258,14 +269,16 @@ TEST_CASE("SPH092: ISYMP 100 with symmetry planes and over a million particles")
 }
 
 TEST_CASE("SPH014: IHTC 1 needs CP and LAMBDA of the fluid; silent with IHTC 0 or a missing include") {
-    const std::string control = "*KEYWORD\n*CONTROL_SPH_INCOMPRESSIBLE\n         0      0.01     1e+20     1e+20         {}\n";
+    const std::string control =
+        "*KEYWORD\n*CONTROL_SPH_INCOMPRESSIBLE\n         0      0.01     1e+20     1e+20         {}\n";
     const std::string fluid = "*MAT_SPH_INCOMPRESSIBLE_FLUID\n         1    1000.0    1.0e-3\n    4180.0\n";
     auto with = [&](int ihtc, const std::string& more) {
-        return test::count_code(engine::check_buffer(fmt::format(fmt::runtime(control), ihtc) + more, "d.k").diagnostics, "SPH014");
+        return test::count_code(
+            engine::check_buffer(fmt::format(fmt::runtime(control), ihtc) + more, "d.k").diagnostics, "SPH014");
     };
-    CHECK(with(1, fluid) == 1);                                   // LAMBDA blank
-    CHECK(with(1, "") == 1);                                      // no fluid material
+    CHECK(with(1, fluid) == 1);                                               // LAMBDA blank
+    CHECK(with(1, "") == 1);                                                  // no fluid material
     CHECK(with(1, fluid.substr(0, fluid.size() - 1) + "       0.6\n") == 0);  // both given
-    CHECK(with(0, fluid) == 0);                                   // no heat transfer coefficients asked
-    CHECK(with(1, "*INCLUDE\nfluids.k\n") == 0);                  // the fluid may be in the include
+    CHECK(with(0, fluid) == 0);                                               // no heat transfer coefficients asked
+    CHECK(with(1, "*INCLUDE\nfluids.k\n") == 0);                              // the fluid may be in the include
 }

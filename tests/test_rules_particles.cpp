@@ -63,7 +63,7 @@ TEST_CASE("SPH110: one finding for all particles off the plane, with the count")
     CHECK(d->span.column == 41);  // at the node's Z field, the value a person typed
     REQUIRE(!d->notes.empty());
     CHECK(d->notes[0].message.find("the particle of node 4") != std::string::npos);
-    CHECK(d->notes[0].span.line > d->span.line);  // its *ELEMENT_SPH line, below the nodes
+    CHECK(d->notes[0].span.line > d->span.line);      // its *ELEMENT_SPH line, below the nodes
     CHECK(count_code(r.diagnostics, "SPH111") == 0);  // IDIM 2: negative x is not checked
 }
 
@@ -87,7 +87,8 @@ TEST_CASE("SPH117: gravity counts only with a constant curve") {
                                   "*ELEMENT_SPH\n       1       1             1.0\n       2       1             1.0\n";
     auto gravity = [](const std::string& o2) {
         return "*LOAD_BODY_Z\n         1      9.81\n*DEFINE_CURVE\n         1\n                 0.0                 1.0\n"
-               "               100.0" + std::string(20 - o2.size(), ' ') + o2 + "\n";
+               "               100.0" +
+               std::string(20 - o2.size(), ' ') + o2 + "\n";
     };
     auto constant = engine::check_buffer(head() + particles + gravity("1.0"), "d.k");
     REQUIRE(count_code(constant.diagnostics, "SPH117") == 1);

@@ -55,8 +55,10 @@ TEST_CASE("sedov exact: cylindrical profiles match Kamm 2000, Table 2 (gamma = 1
 TEST_CASE("sedov exact: planar profiles match Kamm 2000, Table 1; the shock law and bad input") {
     const auto s = solve_sedov(1, 1.4);
     REQUIRE(s);
-    const double table[][4] = {{0.9797, 0.9699, 0.8620, 0.9159}, {0.8050, 0.7390, 0.3020, 0.5458},
-                               {0.4912, 0.4244, 0.0641, 0.4037}, {0.1040, 0.0891, 0.0013, 0.3900}};
+    const double table[][4] = {{0.9797, 0.9699, 0.8620, 0.9159},
+                               {0.8050, 0.7390, 0.3020, 0.5458},
+                               {0.4912, 0.4244, 0.0641, 0.4037},
+                               {0.1040, 0.0891, 0.0013, 0.3900}};
     for (const auto& row : table) {
         INFO("xi = " << row[0]);
         const SedovSolution::State g = scaled(*s, row[0]);

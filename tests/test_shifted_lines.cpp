@@ -48,14 +48,17 @@ const diag::Diagnostic* only(const engine::CheckResult& r, std::string_view code
 keywords::CardSpec four_reals() {
     keywords::CardSpec card;
     for (int i = 0; i < 4; ++i)
-        card.fields.push_back({.name = "F", .column = static_cast<std::uint16_t>(1 + 10 * i), .width = 10,
+        card.fields.push_back({.name = "F",
+                               .column = static_cast<std::uint16_t>(1 + 10 * i),
+                               .width = 10,
                                .type = keywords::FieldType::Real});
     return card;
 }
 
 const std::string control_sph = "         1         0   1.0e+20         3       150        15       0.0   1.0e+15";
-const std::string deck_head = "*KEYWORD\n*CONTROL_SPH\n$#    ncbs     boxid        dt      idim    memory      form"
-                              "     start      maxv\n";
+const std::string deck_head =
+    "*KEYWORD\n*CONTROL_SPH\n$#    ncbs     boxid        dt      idim    memory      form"
+    "     start      maxv\n";
 
 }  // namespace
 
@@ -81,17 +84,19 @@ TEST_CASE("shifted line: decided only on consistent evidence") {
         CHECK(shift->columns == n);
         CHECK(shift->realigned == aligned);
     }
-    CHECK_FALSE(grammar::find_shift(aligned, "", slots, card));                // nothing off
-    CHECK_FALSE(grammar::find_shift("        1.0E-3", "", slots, card));        // one value: no consistent shift
+    CHECK_FALSE(grammar::find_shift(aligned, "", slots, card));                   // nothing off
+    CHECK_FALSE(grammar::find_shift("        1.0E-3", "", slots, card));          // one value: no consistent shift
     CHECK_FALSE(grammar::find_shift("        1.0E-3     2.0", "", slots, card));  // the values disagree: no one shift
-    CHECK_FALSE(grammar::find_shift(" 1.0 2.0 3.0", "", slots, card));         // free-ish words, no field ends
-    CHECK_FALSE(grammar::find_shift("        1.0,2.0", "", slots, card));      // free format
+    CHECK_FALSE(grammar::find_shift(" 1.0 2.0 3.0", "", slots, card));            // free-ish words, no field ends
+    CHECK_FALSE(grammar::find_shift("        1.0,2.0", "", slots, card));         // free format
 }
 
 TEST_CASE("field widths: a line written in 8-column fields where 10 are read") {
     keywords::CardSpec card;
     for (int i = 0; i < 8; ++i)
-        card.fields.push_back({.name = "D", .column = static_cast<std::uint16_t>(1 + 10 * i), .width = 10,
+        card.fields.push_back({.name = "D",
+                               .column = static_cast<std::uint16_t>(1 + 10 * i),
+                               .width = 10,
                                .type = keywords::FieldType::Integer});
     const std::string eight = "       1       0       1       1       1       0       0       0";
     auto written = grammar::find_written_widths(eight, card, grammar::CardFormat::Standard);
@@ -125,9 +130,11 @@ TEST_CASE("DK029: the fix moves the values back and the line reads the values me
 }
 
 TEST_CASE("DK030: one finding for the block, its fix rewrites every line in the widths read") {
-    const std::string nodes = "*KEYWORD\n*NODE\n       1             0.0             0.0             0.0\n"
-                              "       2             1.0             0.0             0.0\n";
-    const std::string text = nodes + "*BOUNDARY_SPC_NODE\n"
+    const std::string nodes =
+        "*KEYWORD\n*NODE\n       1             0.0             0.0             0.0\n"
+        "       2             1.0             0.0             0.0\n";
+    const std::string text = nodes +
+                             "*BOUNDARY_SPC_NODE\n"
                              "       1       0       1       1       1       0       0       0\n"
                              "       2       0       1       0       1       0       0       0\n*END\n";
     auto r = engine::check_buffer(text, "d.k");
@@ -137,9 +144,10 @@ TEST_CASE("DK030: one finding for the block, its fix rewrites every line in the 
     CHECK(count_code(r.diagnostics, "DK003") == 0);
     REQUIRE(d->fixes.size() == 1);
     const std::string fixed = apply(text, d->fixes[0]);
-    CHECK(fixed == nodes + "*BOUNDARY_SPC_NODE\n"
-                   "         1         0         1         1         1         0         0         0\n"
-                   "         2         0         1         0         1         0         0         0\n*END\n");
+    CHECK(fixed == nodes +
+                       "*BOUNDARY_SPC_NODE\n"
+                       "         1         0         1         1         1         0         0         0\n"
+                       "         2         0         1         0         1         0         0         0\n*END\n");
     CHECK(engine::check_buffer(fixed, "d.k").diagnostics.empty());
 }
 
@@ -172,19 +180,22 @@ TEST_CASE("OpenRadioss: a value across a cell boundary says what the starter kee
     for (const auto& f : r.diagnostics)
         if (f.code == "RAD030" && f.message.find("cell h ") != std::string::npos) d = &f;
     REQUIRE(d);
-    CHECK(d->message == "'2.4' straddles the end of cell h (columns 11-30): the starter reads h as '2.' and '4' is "
-                        "read as the start of Xi_Stab (columns 31-50)");
+    CHECK(d->message ==
+          "'2.4' straddles the end of cell h (columns 11-30): the starter reads h as '2.' and '4' is "
+          "read as the start of Xi_Stab (columns 31-50)");
     CHECK(count_code(r.diagnostics, "RAD025") == 0);
     REQUIRE(d->notes.size() == 1);
     CHECK(d->notes[0].message.ends_with("[RAD025]"));
 }
 
 TEST_CASE("OpenRadioss: a one-column flag run into the wider cell after it is RAD030; flags side by side are not") {
-    const std::string head = "#RADIOSS STARTER\n/BEGIN\nflags\n      2026\n"
-                             "                  kg                  mm                  ms\n"
-                             "                  kg                  mm                  ms\n/BCS/4\nfixed\n";
-    const std::string tail = "/GRNOD/NODE/2\nnodes\n         1\n/NODE\n         1                 0.0"
-                             "                 0.0                 0.0\n/END\n";
+    const std::string head =
+        "#RADIOSS STARTER\n/BEGIN\nflags\n      2026\n"
+        "                  kg                  mm                  ms\n"
+        "                  kg                  mm                  ms\n/BCS/4\nfixed\n";
+    const std::string tail =
+        "/GRNOD/NODE/2\nnodes\n         1\n/NODE\n         1                 0.0"
+        "                 0.0                 0.0\n/END\n";
     auto moved = engine::check_buffer(head + "   001 1 10        0         2\n" + tail, "bcs_0000.rad", {},
                                       grammar::DeckFormat::Radioss);
     const diag::Diagnostic* d = only(moved, "RAD030");
@@ -196,7 +207,8 @@ TEST_CASE("OpenRadioss: a one-column flag run into the wider cell after it is RA
 }
 
 TEST_CASE("DK029 warning: a shift that changes no value read folds none of the line's findings") {
-    const std::string text = deck_head + "       1         0   1.0e+20         5       150        15       0.0   1.0e+15\n*END\n";
+    const std::string text =
+        deck_head + "       1         0   1.0e+20         5       150        15       0.0   1.0e+15\n*END\n";
     auto r = engine::check_buffer(text, "d.k");
     const diag::Diagnostic* d = only(r, "DK029");
     REQUIRE(d);

@@ -123,8 +123,9 @@ TEST_CASE("smooth command: --csv writes a header and one row per particle") {
     std::getline(in, header);
     std::getline(in, first);
     CHECK(header == "id,part,x,y,z,mass,nn_distance,h,neighbours\r");
-    CHECK(first == "1,1,0.0074999999999999997,0.0074999999999999997,0,0.22500000000000001,0.014999999999999999,"
-                   "0.018000000000000016,7\r");
+    CHECK(first ==
+          "1,1,0.0074999999999999997,0.0074999999999999997,0,0.22500000000000001,0.014999999999999999,"
+          "0.018000000000000016,7\r");
     CHECK(contains(r.out, "wrote particles.csv (3200 particles)"));
 }
 

@@ -21,18 +21,22 @@ namespace {
 
 using Vec = std::array<double, 3>;
 
-std::string node_line(long long id, const Vec& x) { return fmt::format("{:>10}{:>20.17g}{:>20.17g}{:>20.17g}\n", id, x[0], x[1], x[2]); }
+std::string node_line(long long id, const Vec& x) {
+    return fmt::format("{:>10}{:>20.17g}{:>20.17g}{:>20.17g}\n", id, x[0], x[1], x[2]);
+}
 
 // One solid part 1 (property 1, Ndir `ndir`) releasing into SPH part 2; density rho.
 std::string deck(const std::vector<Vec>& nodes, const std::string& elements, int ndir, double rho = 2.0) {
-    std::string s = "#RADIOSS STARTER\n/BEGIN\nrun\n      2026\n"
-                    "/PART/1\nsolid\n         1         1         0\n/PART/2\nparticles\n         2         1         0\n"
-                    "/PROP/TYPE14/1\nsolid\n        24         0         0         0         0         0         0         2\n"
-                    "                 1.1                0.05                 0.1                 0.0                 0.0\n"
-                    "                 0.0                 0.0                 0.0                 0.0                 0.0\n";
+    std::string s =
+        "#RADIOSS STARTER\n/BEGIN\nrun\n      2026\n"
+        "/PART/1\nsolid\n         1         1         0\n/PART/2\nparticles\n         2         1         0\n"
+        "/PROP/TYPE14/1\nsolid\n        24         0         0         0         0         0         0         2\n"
+        "                 1.1                0.05                 0.1                 0.0                 0.0\n"
+        "                 0.0                 0.0                 0.0                 0.0                 0.0\n";
     s += fmt::format("{:>10}         2         0\n", ndir);
-    s += "/PROP/SPH/2\nparticles\n                 0.0                 2.0                 1.0                 0.0         0         0\n"
-         "         0                 0.1                 0.0\n";
+    s +=
+        "/PROP/SPH/2\nparticles\n                 0.0                 2.0                 1.0                 0.0         0         0\n"
+        "         0                 0.1                 0.0\n";
     s += fmt::format("/MAT/LAW2/1\nm\n{:>20}\n               210.0                 0.3\n/NODE\n", rho);
     for (std::size_t i = 0; i < nodes.size(); ++i) s += node_line(static_cast<long long>(i + 1), nodes[i]);
     return s + elements + "/END\n";
@@ -50,15 +54,18 @@ preproc::Sol2sph generate(const std::string& text) {
     return preproc::generate_sol2sph(r.model);
 }
 
-const std::vector<Vec> kUnitCube = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+const std::vector<Vec> kUnitCube = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                    {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
 
 // The trilinear map of a brick written independently of the library, and the integral of its
 // Jacobian by (exact) central differences and 3x3x3 Gauss points (exact for degree 5 per variable).
 Vec map(const std::vector<Vec>& p, double r, double s, double t) {
-    const int sign[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
+    const int sign[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                            {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
     Vec x{};
     for (int k = 0; k < 8; ++k)
-        for (int i = 0; i < 3; ++i) x[i] += p[k][i] * (1 + sign[k][0] * r) * (1 + sign[k][1] * s) * (1 + sign[k][2] * t) / 8;
+        for (int i = 0; i < 3; ++i)
+            x[i] += p[k][i] * (1 + sign[k][0] * r) * (1 + sign[k][1] * s) * (1 + sign[k][2] * t) / 8;
     return x;
 }
 
@@ -161,7 +168,7 @@ TEST_CASE("sol2sph: distorted and twisted bricks keep their mass and centroid") 
     std::vector<Vec> raised = kUnitCube;
     raised[6] = {1, 1, 1.6};
     // Twisted: top face rotated and shifted, bottom corner pulled; volume by an independent quadrature.
-    const std::vector<Vec> twisted = {{0, 0, 0}, {1.2, 0.1, 0}, {1, 1, 0.2}, {-0.1, 0.9, 0},
+    const std::vector<Vec> twisted = {{0, 0, 0},      {1.2, 0.1, 0},   {1, 1, 0.2},   {-0.1, 0.9, 0},
                                       {0.3, -0.2, 1}, {1.1, 0.3, 1.3}, {0.8, 1.3, 1}, {0, 0.8, 0.9}};
     for (const std::vector<Vec>* nodes : {static_cast<const std::vector<Vec>*>(&raised), &twisted}) {
         const double volume = nodes == &raised ? 1.15 : reference_volume(*nodes);
@@ -300,17 +307,18 @@ TEST_CASE("sol2sph: the command writes .vtp and CSV and checks the mass") {
     CHECK(bad.out.find("bad_0000.rad:") != std::string::npos);
     CHECK(bad.out.find("/BRICK 5: node 99 is not defined") != std::string::npos);
     // Not a Radioss deck: exit 2.
-    const auto dyna = test::run_sphdeck(
-        dir, "sol2sph '" + std::string(SPHDECK_SOURCE_DIR) + "/decks/tests/preview/SPH113_silent.k'");
+    const auto dyna =
+        test::run_sphdeck(dir, "sol2sph '" + std::string(SPHDECK_SOURCE_DIR) + "/decks/tests/preview/SPH113_silent.k'");
     CHECK(dyna.exit_code == 2);
 }
 
 TEST_CASE("sol2sph: a part that gets no particles is reported at the part, not as 'ok'") {
     // Only a 10-node tetra (corners and edge midpoints): SOL2SPH converts none.
-    const std::vector<Vec> nodes = {{0, 0, 0},     {1, 0, 0},     {0, 1, 0},   {0, 0, 1},     {0.5, 0, 0},
-                                    {0.5, 0.5, 0}, {0, 0.5, 0},   {0, 0, 0.5}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
-    const std::string tetra10 = "/TETRA10/1\n         1\n" + fmt::format("{:>10}{:>10}{:>10}{:>10}{:>10}{:>10}{:>10}{:>10}{:>10}{:>10}\n",
-                                                                         1, 2, 3, 4, 5, 6, 7, 8, 9, 10);
+    const std::vector<Vec> nodes = {{0, 0, 0},     {1, 0, 0},   {0, 1, 0},   {0, 0, 1},     {0.5, 0, 0},
+                                    {0.5, 0.5, 0}, {0, 0.5, 0}, {0, 0, 0.5}, {0.5, 0, 0.5}, {0, 0.5, 0.5}};
+    const std::string tetra10 =
+        "/TETRA10/1\n         1\n" +
+        fmt::format("{:>10}{:>10}{:>10}{:>10}{:>10}{:>10}{:>10}{:>10}{:>10}{:>10}\n", 1, 2, 3, 4, 5, 6, 7, 8, 9, 10);
     const std::string text = deck(nodes, tetra10, 2);
     const auto s = generate(text);
     REQUIRE(s.parts.size() == 1);
@@ -323,7 +331,8 @@ TEST_CASE("sol2sph: a part that gets no particles is reported at the part, not a
     CHECK(p.span.column == 7);  // its id
 
     // A part without elements says so; Ndir outside 1-9 keeps its own note instead.
-    CHECK(generate(deck(nodes, "", 2)).parts.at(0).no_particles == "no particles are generated: the part has no elements");
+    CHECK(generate(deck(nodes, "", 2)).parts.at(0).no_particles ==
+          "no particles are generated: the part has no elements");
     CHECK(generate(deck(nodes, "", 12)).parts.at(0).no_particles.empty());
 
     test::TempDir dir;

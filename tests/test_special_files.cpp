@@ -65,12 +65,14 @@ TEST_CASE("special files: each kind is named by its type, without opening it") {
 TEST_CASE("special files: an LS-DYNA *INCLUDE of a device, a pipe, a socket or a directory is DK010 at its line") {
     test::TempDir dir;
     make_special_files(dir);
-    dir.write("main.k", "*KEYWORD\n*INCLUDE\n/dev/zero\n*INCLUDE\npipe.k\n*INCLUDE\nsocket.k\n*INCLUDE\nfolder.k\n"
-                        "*INCLUDE\npipe_link.k\n*END\n");
+    dir.write("main.k",
+              "*KEYWORD\n*INCLUDE\n/dev/zero\n*INCLUDE\npipe.k\n*INCLUDE\nsocket.k\n*INCLUDE\nfolder.k\n"
+              "*INCLUDE\npipe_link.k\n*END\n");
     const test::Run r = run_bounded(dir, "check --format concise --no-config main.k");
     CHECK(r.exit_code == 1);
-    CHECK(has(r.out, "main.k:3:1: error: include file '/dev/zero' cannot be read: '/dev/zero' is a character "
-                     "device, not a deck file [DK010]"));
+    CHECK(has(r.out,
+              "main.k:3:1: error: include file '/dev/zero' cannot be read: '/dev/zero' is a character "
+              "device, not a deck file [DK010]"));
     CHECK(has(r.out, "main.k:5:1: error: include file 'pipe.k' cannot be read: '"));
     CHECK(has(r.out, "pipe.k' is a named pipe, not a deck file [DK010]"));
     CHECK(has(r.out, "main.k:7:1: error: include file 'socket.k' cannot be read: '"));
@@ -85,14 +87,16 @@ TEST_CASE("special files: an LS-DYNA *INCLUDE of a device, a pipe, a socket or a
 TEST_CASE("special files: an OpenRadioss #include of a device, a pipe, a socket or a directory is DK010 at its line") {
     test::TempDir dir;
     make_special_files(dir);
-    dir.write("m_0000.rad", "#RADIOSS STARTER\n/BEGIN\nrun\n      2026         0\n"
-                            "                  kg                  mm                  ms\n"
-                            "                  kg                  mm                  ms\n"
-                            "#include /dev/zero\n#include pipe.k\n#include socket.k\n#include folder.k\n/END\n");
+    dir.write("m_0000.rad",
+              "#RADIOSS STARTER\n/BEGIN\nrun\n      2026         0\n"
+              "                  kg                  mm                  ms\n"
+              "                  kg                  mm                  ms\n"
+              "#include /dev/zero\n#include pipe.k\n#include socket.k\n#include folder.k\n/END\n");
     const test::Run r = run_bounded(dir, "check --format concise --no-config m_0000.rad");
     CHECK(r.exit_code == 1);
-    CHECK(has(r.out, "m_0000.rad:7:10: error: include file '/dev/zero' cannot be read: '/dev/zero' is a character "
-                     "device, not a deck file [DK010]"));
+    CHECK(has(r.out,
+              "m_0000.rad:7:10: error: include file '/dev/zero' cannot be read: '/dev/zero' is a character "
+              "device, not a deck file [DK010]"));
     CHECK(has(r.out, "m_0000.rad:8:10: error: include file 'pipe.k' cannot be read: '"));
     CHECK(has(r.out, "pipe.k' is a named pipe, not a deck file [DK010]"));
     CHECK(has(r.out, "m_0000.rad:9:10: error: include file 'socket.k' cannot be read: '"));

@@ -82,7 +82,8 @@ TEST_CASE("smooth command: *DEFINE_SPH_MESH_BOX particles are previewed") {
     INFO(run.out, run.err);
     CHECK(run.exit_code == 0);
     CHECK(contains(run.out, "24 particles in 1 part(s)"));
-    CHECK(contains(run.out, "*DEFINE_SPH_MESH_BOX: 24 particles of part 1 (4 x 3 x 2, cells 0.5 x 1 x 2) included above"));
+    CHECK(contains(run.out,
+                   "*DEFINE_SPH_MESH_BOX: 24 particles of part 1 (4 x 3 x 2, cells 0.5 x 1 x 2) included above"));
     CHECK(contains(run.out, "*DEFINE_SPH_MESH_BOX of part 1: not previewed: IDSEG is set"));
 }
 

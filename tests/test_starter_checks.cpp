@@ -81,9 +81,12 @@ void satisfy(std::string_view condition, std::map<std::string, double>& values) 
         const std::size_t op = part.find_first_of("=!>");
         const std::string name(part.substr(0, op));
         const double number = std::stod(std::string(part.substr(op + 1)));
-        if (part[op] == '=') values[name] = number;
-        else if (part[op] == '>' && values[name] <= number) values[name] = number + 1;
-        else if (part[op] == '!' && values[name] == number) values[name] = number + 1;
+        if (part[op] == '=')
+            values[name] = number;
+        else if (part[op] == '>' && values[name] <= number)
+            values[name] = number + 1;
+        else if (part[op] == '!' && values[name] == number)
+            values[name] = number + 1;
         condition = amp == std::string_view::npos ? std::string_view{} : condition.substr(amp + 1);
     }
 }
@@ -91,8 +94,10 @@ void satisfy(std::string_view condition, std::map<std::string, double>& values) 
 std::string cell(const rad::FieldSpec& f, double v) {
     const std::size_t width = f.width ? f.width : f.cell == rad::Cell::Real ? 20 : 10;
     std::ostringstream s;
-    if (f.cell == rad::Cell::Int) s << static_cast<long long>(v);
-    else if (f.cell == rad::Cell::Real) s << v << (v == static_cast<long long>(v) ? ".0" : "");
+    if (f.cell == rad::Cell::Int)
+        s << static_cast<long long>(v);
+    else if (f.cell == rad::Cell::Real)
+        s << v << (v == static_cast<long long>(v) ? ".0" : "");
     std::string text = f.name.empty() ? std::string() : s.str();
     return std::string(width > text.size() ? width - text.size() : 0, ' ') + text;
 }
@@ -142,13 +147,13 @@ TEST_CASE("starter checks: every field of the table is a field of its law's layo
         for (const StarterCheck& check : law.checks) {
             INFO(law.names.front() << " " << check.field);
             bool found = false;
-            for (const rad::CardSpec& card : format.cards) found = found || card.index(check.field) < card.fields.size();
+            for (const rad::CardSpec& card : format.cards)
+                found = found || card.index(check.field) < card.fields.size();
             CHECK(found);
             CHECK(docs.find("`" + std::string(check.source) + "`") != std::string::npos);
             CHECK(docs.find("| " + std::to_string(check.message) + " ") != std::string::npos);
         }
-        for (std::string_view name : law.names)
-            CHECK(lint::radioss::starter_law_of(std::string(name) + "/12") == &law);
+        for (std::string_view name : law.names) CHECK(lint::radioss::starter_law_of(std::string(name) + "/12") == &law);
     }
     CHECK(lint::radioss::starter_law_of("/MAT/LAW99/1") == nullptr);
 }
@@ -183,8 +188,9 @@ TEST_CASE("starter checks: the shipped SOL2SPH deck passes, and fires without it
     const std::string fixed = slurp(path);
     CHECK(lines_of(check(fixed), "RAD040").empty());
     // The deck as shipped before: the LAW2 block ends after E and Nu (starter error 301).
-    const std::string yield = "#                  a                   b                   n           EPS_p_max"
-                              "            SIG_max0\n                0.35                0.28                0.32\n";
+    const std::string yield =
+        "#                  a                   b                   n           EPS_p_max"
+        "            SIG_max0\n                0.35                0.28                0.32\n";
     const std::size_t at = fixed.find(yield);
     REQUIRE(at != std::string::npos);
     std::string unfixed = fixed;
@@ -212,8 +218,7 @@ TEST_CASE("starter checks: a line deleted from a /MAT/LAW51 Iform 10 is message 
     REQUIRE(block != std::string::npos);
     // The block's value lines (not comments), after its header and title.
     std::vector<std::size_t> values;
-    for (std::size_t at = whole.find('\n', whole.find('\n', block) + 1) + 1; at < end;
-         at = whole.find('\n', at) + 1)
+    for (std::size_t at = whole.find('\n', whole.find('\n', block) + 1) + 1; at < end; at = whole.find('\n', at) + 1)
         if (whole[at] != '#') values.push_back(at);
     REQUIRE(values.size() == 24);
     // From the third card (P_EXT) on, every deletion leaves the last card (D, PCJ, C14) blank.
@@ -224,7 +229,8 @@ TEST_CASE("starter checks: a line deleted from a /MAT/LAW51 Iform 10 is message 
         // The block's last value line (a comment line may follow it).
         std::size_t last = deck.rfind('\n', deck.find("/MAT/LAW6/2\n") - 1);
         while (deck[deck.rfind('\n', last - 1) + 1] == '#') last = deck.rfind('\n', last - 1);
-        const std::uint32_t last_line = static_cast<std::uint32_t>(std::count(deck.begin(), deck.begin() + last, '\n') + 1);
+        const std::uint32_t last_line =
+            static_cast<std::uint32_t>(std::count(deck.begin(), deck.begin() + last, '\n') + 1);
         INFO("card " << k + 1 << " deleted");
         CHECK(lines_of(r, "RAD040") == std::multiset<std::uint32_t>{last_line});
         const diag::Diagnostic* d = test::find_code(r.diagnostics, "RAD040");

@@ -59,8 +59,10 @@ TEST_CASE("suggestions: a bounded distance is the distance up to the bound, and 
         const std::size_t limit = rng() % 10;
         const std::size_t bounded = grammar::typing_distance(a, b, false, limit);
         INFO(a, " ", b, " limit ", limit);
-        if (full <= limit) CHECK(bounded == full);
-        else CHECK(bounded == limit + 1);
+        if (full <= limit)
+            CHECK(bounded == full);
+        else
+            CHECK(bounded == limit + 1);
     }
 }
 
@@ -94,7 +96,8 @@ TEST_CASE("suggestions: an unknown keyword is an error at its line with the fix;
     CHECK(d->fixes[0].edits[0].span.column == 1);
     CHECK(d->fixes[0].edits[0].span.end_column == 13);
 
-    auto real = check_text(dir, "real.k", "*KEYWORD\n*TERMINATION_NODE\n         1         3       0.0       1.0\n*END\n");
+    auto real =
+        check_text(dir, "real.k", "*KEYWORD\n*TERMINATION_NODE\n         1         3       0.0       1.0\n*END\n");
     const diag::Diagnostic* info = first_of(real, "DK001");
     REQUIRE(info);
     CHECK(info->severity == diag::Severity::Info);
@@ -103,12 +106,13 @@ TEST_CASE("suggestions: an unknown keyword is an error at its line with the fix;
 TEST_CASE("suggestions: a misspelt *CONTROL_SPH's consequences point back at the typo") {
     test::TempDir dir;
     // IDIM 2 lost with the block: the 2D mass per particle looks wrong for the default 3D.
-    const std::string deck = "*KEYWORD\n*CONTROL_SHP\n         1         0     1e+20         2\n"
-                             "*SECTION_SPH\n         1       1.2\n*PART\nwater\n         1         1         1\n"
-                             "*MAT_NULL\n         1    1000.0\n*EOS_LINEAR_POLYNOMIAL\n         1\n"
-                             "*NODE\n       1             0.0             0.0             0.0\n"
-                             "       2           0.015             0.0             0.0\n"
-                             "*ELEMENT_SPH\n       1       1          0.225\n       2       1          0.225\n*END\n";
+    const std::string deck =
+        "*KEYWORD\n*CONTROL_SHP\n         1         0     1e+20         2\n"
+        "*SECTION_SPH\n         1       1.2\n*PART\nwater\n         1         1         1\n"
+        "*MAT_NULL\n         1    1000.0\n*EOS_LINEAR_POLYNOMIAL\n         1\n"
+        "*NODE\n       1             0.0             0.0             0.0\n"
+        "       2           0.015             0.0             0.0\n"
+        "*ELEMENT_SPH\n       1       1          0.225\n       2       1          0.225\n*END\n";
     auto r = check_text(dir, "consequence.k", deck);
     for (const auto& d : r.diagnostics) {
         if (!(d.code.starts_with("SPH") || d.code.starts_with("REF"))) continue;
@@ -155,7 +159,8 @@ TEST_CASE("suggestions: a missing include lists each path once, its rule, -I and
             ++tried;
             CHECK(n.message.find("including file's folder and main deck's folder") != std::string::npos);
         }
-        hint = hint || (n.message.find("-I DIR") != std::string::npos && n.message.find("*INCLUDE_PATH") != std::string::npos);
+        hint = hint ||
+               (n.message.find("-I DIR") != std::string::npos && n.message.find("*INCLUDE_PATH") != std::string::npos);
     }
     CHECK(tried == 1);  // the deck's folder is the including file's: one path, tried once
     CHECK(hint);
@@ -164,9 +169,10 @@ TEST_CASE("suggestions: a missing include lists each path once, its rule, -I and
     test::Run run = test::run_sphdeck(dir, "check --format concise main.k");
     CHECK(run.out.find("main.k:3:1: error: include file 'mesh_v2.k' not found; did you mean 'mesh_v3.k'?") !=
           std::string::npos);
-    dir.write("run_0000.rad", "#RADIOSS STARTER\n/BEGIN\nrun\n      2022         0\n"
-                              "                  kg                  mm                  ms\n"
-                              "                  kg                  mm                  ms\n#include mesh_v2.k\n/END\n");
+    dir.write("run_0000.rad",
+              "#RADIOSS STARTER\n/BEGIN\nrun\n      2022         0\n"
+              "                  kg                  mm                  ms\n"
+              "                  kg                  mm                  ms\n#include mesh_v2.k\n/END\n");
     run = test::run_sphdeck(dir, "check --format concise run_0000.rad");
     CHECK(run.out.find("include file 'mesh_v2.k' not found; did you mean 'mesh_v3.k'?") != std::string::npos);
 }

@@ -38,23 +38,25 @@ TEST_CASE("suppress: the deck without directives reports DK003") {
 }
 
 TEST_CASE("suppress: disable before a data line silences that line only") {
-    auto ds = check("*KEYWORD\n*CONTROL_TERMINATION\n$ sphdeck: disable=DK003 -- known\nabc\n"
-                    "*CONTROL_TIMESTEP\nabc\n*END\n");
+    auto ds = check(
+        "*KEYWORD\n*CONTROL_TERMINATION\n$ sphdeck: disable=DK003 -- known\nabc\n"
+        "*CONTROL_TIMESTEP\nabc\n*END\n");
     CHECK(lines_of(ds, "DK003") == std::vector<std::uint32_t>{6});
     CHECK(count_code(ds, "DK026") == 0);
 }
 
 TEST_CASE("suppress: disable before a keyword line silences its whole block") {
-    const std::string text = "*KEYWORD\n"
-                             "$ sphdeck: disable=bad-real,DK009 -- by name and code\n"
-                             "$ another comment in between\n"
-                             "*CONTROL_TERMINATION\n"  // line 4
-                             "abc\n"
-                             "$ a comment inside the block\n"
-                             "abc\n"  // line 7: DK009 too many cards
-                             "*CONTROL_TIMESTEP\n"
-                             "abc\n"  // line 9: not silenced
-                             "*END\n";
+    const std::string text =
+        "*KEYWORD\n"
+        "$ sphdeck: disable=bad-real,DK009 -- by name and code\n"
+        "$ another comment in between\n"
+        "*CONTROL_TERMINATION\n"  // line 4
+        "abc\n"
+        "$ a comment inside the block\n"
+        "abc\n"  // line 7: DK009 too many cards
+        "*CONTROL_TIMESTEP\n"
+        "abc\n"  // line 9: not silenced
+        "*END\n";
     auto ds = check(text);
     CHECK(lines_of(ds, "DK003") == std::vector<std::uint32_t>{9});
     CHECK(count_code(ds, "DK009") == 0);
@@ -169,7 +171,7 @@ namespace {
 // "abc" in a coordinate gives one DK003 per line.
 std::vector<diag::Diagnostic> check_radioss(const std::string& body) {
     return engine::check_buffer("#RADIOSS STARTER\n/BEGIN\nrun\n      2026\n/NODE\n" + body + "/END\n", "main_0000.rad",
-                              {}, grammar::DeckFormat::Radioss)
+                                {}, grammar::DeckFormat::Radioss)
         .diagnostics;
 }
 
@@ -199,14 +201,16 @@ TEST_CASE("suppress: Radioss decks take the directives after '#'") {
 }
 
 TEST_CASE("suppress: in a Radioss deck a directive before a '/' header covers its block") {
-    const std::string text = "#RADIOSS STARTER\n/BEGIN\nrun\n      2026\n"
-                             "# sphdeck: disable=DK003\n"
-                             "/NODE\n" +   // line 6
-                             kBadNode1 +   // line 7: silenced
-                             "# a comment inside the block\n" + kBadNode2 +  // line 9: silenced
-                             "/NODE\n" +   // line 10: a new block
-                             "         3                 abc                 0.0                 0.0\n"  // line 11
-                             "/END\n";
+    const std::string text =
+        "#RADIOSS STARTER\n/BEGIN\nrun\n      2026\n"
+        "# sphdeck: disable=DK003\n"
+        "/NODE\n" +  // line 6
+        kBadNode1 +  // line 7: silenced
+        "# a comment inside the block\n" +
+        kBadNode2 +                                                                 // line 9: silenced
+        "/NODE\n" +                                                                 // line 10: a new block
+        "         3                 abc                 0.0                 0.0\n"  // line 11
+        "/END\n";
     auto ds = engine::check_buffer(text, "main_0000.rad", {}, grammar::DeckFormat::Radioss).diagnostics;
     CHECK(lines_of(ds, "DK003") == std::vector<std::uint32_t>{11});
     CHECK(count_code(ds, "DK026") == 0);
@@ -224,9 +228,10 @@ TEST_CASE("suppress: '#include' and '#enddata' are no comments, and '#' is no co
     // A directive before #include covers the #include line, not the line after it.
     test::TempDir dir;
     dir.write("empty.inc", "");
-    const std::string main = dir.write("main_0000.rad", "#RADIOSS STARTER\n/BEGIN\nrun\n      2026\n/NODE\n"
-                                                        "# sphdeck: disable=DK003\n#include empty.inc\n" +
-                                                            kBadNode1 + "/END\n");
+    const std::string main = dir.write("main_0000.rad",
+                                       "#RADIOSS STARTER\n/BEGIN\nrun\n      2026\n/NODE\n"
+                                       "# sphdeck: disable=DK003\n#include empty.inc\n" +
+                                           kBadNode1 + "/END\n");
     auto r = engine::check_file(main);
     CHECK(lines_of(r.diagnostics, "DK003") == std::vector<std::uint32_t>{8});
     CHECK(count_code(r.diagnostics, "DK026") == 1);

@@ -36,8 +36,9 @@ void make_tree(const fs::path& root) {
         fs::create_directories((root / name).parent_path());
         std::ofstream(root / name, std::ios::binary) << text;
     };
-    write("project/model/deck.k", "*KEYWORD\n*INCLUDE\nparts.k\n*INCLUDE\n../common/mat.k\n*INCLUDE\n../store/parts.k\n"
-                                  "*control_termination\n  0.5\n*END\n");
+    write("project/model/deck.k",
+          "*KEYWORD\n*INCLUDE\nparts.k\n*INCLUDE\n../common/mat.k\n*INCLUDE\n../store/parts.k\n"
+          "*control_termination\n  0.5\n*END\n");
     write("project/store/parts.k", "*database_glstat\n  0.01\n");
     write("project/common/mat.k", "*database_matsum\n  0.02\n");
     write("common/mat.k", "*database_matsum\n  0.03\n");
@@ -160,7 +161,8 @@ TEST_CASE("symlinked decks: the editor publishes the findings of the files read,
         for (const auto& p : published) {
             const fs::path file = lsp::path_from_uri(p["uri"].get<std::string>());
             CHECK(fs::exists(file));
-            for (const auto& d : p["diagnostics"]) out.emplace(fs::canonical(file).string(), d["code"].get<std::string>());
+            for (const auto& d : p["diagnostics"])
+                out.emplace(fs::canonical(file).string(), d["code"].get<std::string>());
         }
         return out;
     };

@@ -26,10 +26,21 @@ TEST_CASE("values: Fortran reals in every documented form") {
         const char* text;
         double value;
     };
-    const Case cases[] = {{"1.0", 1.0},      {"1.", 1.0},          {".5", 0.5},        {"+2.5", 2.5},
-                          {"5", 5.0},        {"1e3", 1000.0},      {"1E+03", 1000.0},  {"1.0D3", 1000.0},
-                          {"2.5d-4", 2.5e-4}, {"1.0+3", 1000.0},   {"3.5-10", 3.5e-10}, {"1+4", 1e4},
-                          {"-7.66720-110", -7.6672e-110},           {"  1.0     ", 1.0}, {"-0.5", -0.5}};
+    const Case cases[] = {{"1.0", 1.0},
+                          {"1.", 1.0},
+                          {".5", 0.5},
+                          {"+2.5", 2.5},
+                          {"5", 5.0},
+                          {"1e3", 1000.0},
+                          {"1E+03", 1000.0},
+                          {"1.0D3", 1000.0},
+                          {"2.5d-4", 2.5e-4},
+                          {"1.0+3", 1000.0},
+                          {"3.5-10", 3.5e-10},
+                          {"1+4", 1e4},
+                          {"-7.66720-110", -7.6672e-110},
+                          {"  1.0     ", 1.0},
+                          {"-0.5", -0.5}};
     for (const Case& c : cases) {
         CAPTURE(c.text);
         RealValue v = parse_real(c.text);
@@ -78,9 +89,10 @@ TEST_CASE("values: parameter references") {
 TEST_CASE("values: the from_chars fast path agrees with the grammar") {
     // Every text is classified twice: as an integer field (fast path for integers) and as a
     // real field (fast path for reals); both must give the grammar's verdict and value.
-    const char* texts[] = {"1",     "-1",   "+1",    "1.",   ".5",    "-.5",  "1e3",  "1E+03", "1.0D3", "1.0+3",
-                           "inf",   "-inf", "nan",   "1e",   "-",     ".",    "-.",   "1.5e", "0x10",  "1..2",
-                           "00012", "-0",   "1e-400", "12a", "9e9999", "-e5", "1.0e+00", "-1.234567890e+01"};
+    const char* texts[] = {"1",     "-1",     "+1",    "1.",     ".5",   "-.5",     "1e3",
+                           "1E+03", "1.0D3",  "1.0+3", "inf",    "-inf", "nan",     "1e",
+                           "-",     ".",      "-.",    "1.5e",   "0x10", "1..2",    "00012",
+                           "-0",    "1e-400", "12a",   "9e9999", "-e5",  "1.0e+00", "-1.234567890e+01"};
     for (const char* text : texts) {
         CAPTURE(text);
         ValueToken as_int = classify_value(text, ValueShape::Integer);
@@ -115,8 +127,8 @@ TEST_CASE("values: the short-real path gives from_chars' double, bit for bit") {
         CHECK(std::memcmp(&got.value, &expected, sizeof expected) == 0);
     };
     for (int i = 0; i < 200000; ++i) {
-        const double magnitude = std::ldexp(static_cast<double>(rng() >> 11) / 9007199254740992.0,
-                                            static_cast<int>(rng() % 120) - 60);
+        const double magnitude =
+            std::ldexp(static_cast<double>(rng() >> 11) / 9007199254740992.0, static_cast<int>(rng() % 120) - 60);
         const double value = (rng() & 1) ? -magnitude : magnitude;
         char text[64];
         std::snprintf(text, sizeof text, formats[i % std::size(formats)], value);
@@ -126,7 +138,7 @@ TEST_CASE("values: the short-real path gives from_chars' double, bit for bit") {
                              "9007199254740992e-22", "123456789012345678", "4.9e-324", "1.7976931348623157e308",
                              "0.000000000000000000000001", "1.00000000e-06", "-2.29938015e-02", "1E+0", "2e-0",
                              // the one-go "%.8e" reader: its exponent limits, -0, upper case
-                             "9.99999999e+99", "1.00000000e-99", "-0.00000000e+00", "1.23456789E-05",
-                             "1.23456789e+30", "1.23456789e-14", "1.23456789e-15"})
+                             "9.99999999e+99", "1.00000000e-99", "-0.00000000e+00", "1.23456789E-05", "1.23456789e+30",
+                             "1.23456789e-14", "1.23456789e-15"})
         same(text);
 }

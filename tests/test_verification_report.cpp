@@ -45,7 +45,8 @@ TEST_CASE("verification svg plot: well-formed XML with every series, escaped tex
     panel.title = "density <rho> & more";
     panel.x_label = "x";
     panel.y_label = "rho";
-    panel.series.push_back({"SPH \"particles\"", {0.1, 0.2, 0.3, NAN}, {1.0, 0.5, 0.25, 1.0}, io::SeriesStyle::Dots, ""});
+    panel.series.push_back(
+        {"SPH \"particles\"", {0.1, 0.2, 0.3, NAN}, {1.0, 0.5, 0.25, 1.0}, io::SeriesStyle::Dots, ""});
     panel.series.push_back({"exact", {0.0, 0.5, 1.0}, {1.0, 0.6, 0.2}, io::SeriesStyle::Line, "#222222"});
     panel.series.push_back({"experiment", {0.4}, {0.7}, io::SeriesStyle::Markers, ""});
     io::PlotPanel empty{"no data", "t", "f", {}, std::nullopt, std::nullopt};
@@ -156,7 +157,8 @@ constexpr bool sanitized = false;
 TEST_CASE("verification cli: verify sod --quick runs the decks and writes the reports" * doctest::skip(sanitized)) {
     sphdeck::test::TempDir dir;
     const std::string decks = std::string(SPHDECK_SOURCE_DIR) + "/decks/verification";
-    const auto run = sphdeck::test::run_sphdeck(dir, "verify sod --quick --threads 1 --out out --decks '" + decks + "'");
+    const auto run =
+        sphdeck::test::run_sphdeck(dir, "verify sod --quick --threads 1 --out out --decks '" + decks + "'");
     INFO(run.out, run.err);
     // Since the decks keep h about 2 spacings along x (make_sod.py), the quick Sod case passes every gate:
     // a FAIL here is a regression of the solver or of the decks.

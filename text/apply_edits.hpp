@@ -15,8 +15,8 @@ namespace sphdeck::text {
 
 // An edit placed on the text: the bytes it replaces and the line they are on.
 struct PlacedEdit {
-    std::size_t begin = 0, end = 0;  // byte offsets into the text, end exclusive
-    std::uint32_t line = 0;          // 1-based line of `begin`
+    std::size_t begin = 0, end = 0;            // byte offsets into the text, end exclusive
+    std::uint32_t line = 0;                    // 1-based line of `begin`
     const std::string* replacement = nullptr;  // points into the edits given to place_edits
 };
 

@@ -29,12 +29,12 @@ struct Span {
 // One opened file: an include instance. The same path included twice is two instances,
 // because each has its own include chain and parameter scope.
 struct SourceFile {
-    std::string path;          // as opened (resolved)
-    std::string display_name;  // as the user or the include line wrote it
-    SourceText text;           // whole content, never modified after reading (owned or mapped)
-    FileId parent = no_file;   // the file whose *INCLUDE opened this one
+    std::string path;                // as opened (resolved)
+    std::string display_name;        // as the user or the include line wrote it
+    SourceText text;                 // whole content, never modified after reading (owned or mapped)
+    FileId parent = no_file;         // the file whose *INCLUDE opened this one
     std::uint32_t include_line = 0;  // line of that *INCLUDE keyword in the parent
-    unsigned depth = 0;        // 0 for a main file
+    unsigned depth = 0;              // 0 for a main file
 
     mutable std::vector<std::uint32_t> line_starts;  // built lazily and partly, for excerpts only
 };
@@ -65,7 +65,7 @@ private:
 namespace sphdeck::grammar {
 using text::FileId;
 using text::no_file;
-using text::Span;
 using text::SourceFile;
 using text::SourceMap;
+using text::Span;
 }  // namespace sphdeck::grammar

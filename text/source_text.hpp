@@ -56,9 +56,9 @@ public:
 
 private:
     std::string owned_;
-    std::shared_ptr<const Mapping> mapping_;  // shared: copies of a SourceFile share the pages
+    std::shared_ptr<const Mapping> mapping_;     // shared: copies of a SourceFile share the pages
     std::shared_ptr<const std::string> shared_;  // a buffer shared with its holder
-    const char* view_ = nullptr;              // the mapping's or the shared buffer's bytes
+    const char* view_ = nullptr;                 // the mapping's or the shared buffer's bytes
     std::size_t size_ = 0;
 };
 

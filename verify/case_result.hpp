@@ -17,10 +17,10 @@ namespace sphdeck::verify {
 struct Check {
     enum class Bound { AtMost, AtLeast };  // pass when error <= tolerance, or error >= tolerance
 
-    std::string quantity;              // "L1(rho) relative, 400 particles"
-    double value = NAN;                // what the run gave
-    std::optional<double> reference;   // the exact or experimental value; none when the value is itself an error
-    double error = NAN;                // what is compared with the tolerance
+    std::string quantity;             // "L1(rho) relative, 400 particles"
+    double value = NAN;               // what the run gave
+    std::optional<double> reference;  // the exact or experimental value; none when the value is itself an error
+    double error = NAN;               // what is compared with the tolerance
     double tolerance = NAN;
     Bound bound = Bound::AtMost;
     // false: a reference row, reported with its error but not part of the verdict (the dam break's
@@ -35,10 +35,10 @@ struct Check {
 
 // One solver run of one deck (§9.4: what to record with each result).
 struct RunRecord {
-    std::string deck;          // file name within the deck folder
+    std::string deck;  // file name within the deck folder
     std::size_t particles = 0;
     std::size_t steps = 0;
-    double end_time = 0;       // simulated time reached
+    double end_time = 0;  // simulated time reached
     double wall_seconds = 0;
     int threads = 0;
 };
@@ -68,9 +68,9 @@ struct CaseResult {
 };
 
 struct CaseOptions {
-    std::filesystem::path decks;  // the folder with the verification decks
-    bool quick = false;           // the coarse and short variants (`make test`)
-    int threads = 0;              // OpenMP threads, 0: the default
+    std::filesystem::path decks;                     // the folder with the verification decks
+    bool quick = false;                              // the coarse and short variants (`make test`)
+    int threads = 0;                                 // OpenMP threads, 0: the default
     std::function<void(std::string_view)> progress;  // a line of progress ("running sod_2d_400.k"), may be empty
 };
 

@@ -20,10 +20,10 @@
 namespace sphdeck::verify {
 namespace {
 
-constexpr double gravity = 9.81;       // as in the decks
-constexpr double first_T = 1.5;        // earlier points left out (§3)
-constexpr double front_tolerance = 0.10;  // relative, the upper end of §3's 5-10 %
-constexpr double sample_dT = 0.02;     // front sampled every 0.02 in T
+constexpr double gravity = 9.81;              // as in the decks
+constexpr double first_T = 1.5;               // earlier points left out (§3)
+constexpr double front_tolerance = 0.10;      // relative, the upper end of §3's 5-10 %
+constexpr double sample_dT = 0.02;            // front sampled every 0.02 in T
 constexpr double max_diagnostic_delay = 0.6;  // largest lag tried by the (ungated) delay diagnostic
 
 }  // namespace
@@ -31,8 +31,9 @@ constexpr double max_diagnostic_delay = 0.6;  // largest lag tried by the (ungat
 CaseResult run_dam_break(const CaseOptions& options) {
     CaseResult result;
     result.name = "dambreak";
-    result.title = "Dam break: surge front against Martin & Moyce (1952) and Koshizuka & Oka (1996); "
-                   "cross-check with TrixiParticles";
+    result.title =
+        "Dam break: surge front against Martin & Moyce (1952) and Koshizuka & Oka (1996); "
+        "cross-check with TrixiParticles";
     const std::string deck = options.quick ? "dam_break_mm_quick.k" : "dam_break_mm.k";
 
     // a and dx from the first observed state: the column's lattice starts dx/2 from the back wall.
@@ -79,8 +80,8 @@ CaseResult run_dam_break(const CaseOptions& options) {
             if (p.T < first_T || p.T > end_T) continue;
             g.T.push_back(p.T), g.z.push_back(p.z_over_a);
             const double simulated = interpolate(Ts, fronts, p.T).value_or(NAN);
-            result.checks.push_back({fmt::format("Z/a at T = {:.3f} ({})", p.T, label), simulated,
-                                     p.z_over_a, relative_error(simulated, p.z_over_a), front_tolerance});
+            result.checks.push_back({fmt::format("Z/a at T = {:.3f} ({})", p.T, label), simulated, p.z_over_a,
+                                     relative_error(simulated, p.z_over_a), front_tolerance});
             result.checks.back().gated = false;  // the experiments' gate lag: a reference, not the verdict
             g.worst = std::max(g.worst, result.checks.back().error);
         }
@@ -125,11 +126,15 @@ CaseResult run_dam_break(const CaseOptions& options) {
     const ParticleState& s = run.simulation->state();
     for (std::size_t i = 0; i < s.size(); ++i)
         if (s.active[i]) px.push_back(s.x[i] / a), py.push_back(s.y[i] / a);
-    io::PlotPanel front{"surge front", "T = t sqrt(2g/a)", "Z/a",
-                        {{"SPH front", Ts, fronts, io::SeriesStyle::Line, "#4c78a8"}}, std::nullopt, std::nullopt};
+    io::PlotPanel front{"surge front", "T = t sqrt(2g/a)",
+                        "Z/a",         {{"SPH front", Ts, fronts, io::SeriesStyle::Line, "#4c78a8"}},
+                        std::nullopt,  std::nullopt};
     for (io::PlotSeries& e : experiment) front.series.push_back(std::move(e));
-    io::PlotPanel particles{fmt::format("particles at T = {:.3g}", end_T), "x/a", "y/a",
-                            {{"SPH particles", px, py, io::SeriesStyle::Dots, "#4c78a8"}}, std::pair{0.0, 5.0},
+    io::PlotPanel particles{fmt::format("particles at T = {:.3g}", end_T),
+                            "x/a",
+                            "y/a",
+                            {{"SPH particles", px, py, io::SeriesStyle::Dots, "#4c78a8"}},
+                            std::pair{0.0, 5.0},
                             std::pair{0.0, 2.0}};
     std::vector<io::PlotPanel> panels = {front, particles};
     // The run of the experiments stays in the report even when a cross-check deck cannot run.

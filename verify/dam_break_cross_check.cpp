@@ -62,8 +62,8 @@ std::vector<FrontComparison> compare_with_trixi(std::span<const double> T, std::
 }
 
 bool add_trixi_cross_check(CaseResult& result, const CaseOptions& options, std::vector<io::PlotPanel>& panels) {
-    io::PlotPanel panel{"cross-check: Marrone et al. 2011 dam break", "T = t sqrt(g/H)", "max x / H", {}, std::nullopt,
-                        std::nullopt};
+    io::PlotPanel panel{
+        "cross-check: Marrone et al. 2011 dam break", "T = t sqrt(g/H)", "max x / H", {}, std::nullopt, std::nullopt};
     const char* our_colours[] = {"#4c78a8", "#1b3a5c"};
     std::size_t k = 0;
     bool all_ran = true;
@@ -101,8 +101,8 @@ bool add_trixi_cross_check(CaseResult& result, const CaseOptions& options, std::
 
         std::string ranges;  // "WCSPH: -0.1 to +0.8 %; EDAC: ..." over every compared row
         for (TrixiScheme scheme : {TrixiScheme::Wcsph, TrixiScheme::Edac}) {
-            const std::vector<FrontComparison> rows = compare_with_trixi(f.T, f.max_x, res.per_height, scheme,
-                                                                         last_compared_T);
+            const std::vector<FrontComparison> rows =
+                compare_with_trixi(f.T, f.max_x, res.per_height, scheme, last_compared_T);
             double lowest = INFINITY, highest = -INFINITY;
             for (const FrontComparison& c : rows) {
                 const double signed_error = (c.ours - c.theirs) / c.theirs;
@@ -113,10 +113,13 @@ bool add_trixi_cross_check(CaseResult& result, const CaseOptions& options, std::
                                  res.per_height, scheme_name(scheme), res.per_height),
                      c.ours, c.theirs, relative_error(c.ours, c.theirs), tolerance});
             }
-            ranges += fmt::format("{}{}: {:+.1f} to {:+.1f} %", ranges.empty() ? "" : "; ",
-                                      scheme_name(scheme), 100.0 * lowest, 100.0 * highest);
-            io::PlotSeries theirs{fmt::format("TrixiParticles {} H/{}", scheme_name(scheme), res.per_height), {}, {},
-                                  io::SeriesStyle::Markers, scheme == TrixiScheme::Wcsph ? "#e45756" : "#54a24b"};
+            ranges += fmt::format("{}{}: {:+.1f} to {:+.1f} %", ranges.empty() ? "" : "; ", scheme_name(scheme),
+                                  100.0 * lowest, 100.0 * highest);
+            io::PlotSeries theirs{fmt::format("TrixiParticles {} H/{}", scheme_name(scheme), res.per_height),
+                                  {},
+                                  {},
+                                  io::SeriesStyle::Markers,
+                                  scheme == TrixiScheme::Wcsph ? "#e45756" : "#54a24b"};
             for (const TrixiFrontRow& row : trixi_dam_break_front) {
                 theirs.x.push_back(row.T);
                 theirs.y.push_back(*trixi_front(row, res.per_height, scheme) / trixi_H);
@@ -136,8 +139,8 @@ bool add_trixi_cross_check(CaseResult& result, const CaseOptions& options, std::
             res.deck, res.per_height, last_compared_T, ranges, 100.0 * tolerance, rule_gap / f.dx));
         std::vector<double> our_y;
         for (double x : f.max_x) our_y.push_back(x / f.H);
-        panel.series.push_back({fmt::format("our max x, H/{}", res.per_height), f.T, our_y, io::SeriesStyle::Line,
-                                our_colours[k++ % 2]});
+        panel.series.push_back(
+            {fmt::format("our max x, H/{}", res.per_height), f.T, our_y, io::SeriesStyle::Line, our_colours[k++ % 2]});
     }
     result.method.push_back(
         "Cross-check reference: TrixiParticles.jl (MIT license) `validation/dam_break_2d/validation_reference_"

@@ -27,8 +27,8 @@ DeckRun run_deck(const std::filesystem::path& deck, const CaseOptions& options,
     std::size_t errors = 0;
     for (const diag::Diagnostic& d : checked.diagnostics) errors += d.severity == diag::Severity::Error;
     if (errors > 0) {
-        run.failure = fmt::format("{} has {} error(s); 'sphdeck check {}' lists them", deck.string(), errors,
-                                  deck.string());
+        run.failure =
+            fmt::format("{} has {} error(s); 'sphdeck check {}' lists them", deck.string(), errors, deck.string());
         return run;
     }
     RunOptions run_options;
@@ -50,10 +50,10 @@ DeckRun run_deck(const std::filesystem::path& deck, const CaseOptions& options,
         sim.step();
         if (observer) observer(sim);
         if (static_cast<double>(sim.steps()) > budget) {
-            run.stopped = fmt::format("stopped at t = {:.4g} of {:.4g} after {} steps ({} times the {:.0f} the first time "
-                                      "step implies): the time step collapsed to {:.3g}",
-                                      sim.time(), sim.end_time(), sim.steps(), step_budget_factor,
-                                      budget / step_budget_factor, sim.dt());
+            run.stopped = fmt::format(
+                "stopped at t = {:.4g} of {:.4g} after {} steps ({} times the {:.0f} the first time "
+                "step implies): the time step collapsed to {:.3g}",
+                sim.time(), sim.end_time(), sim.steps(), step_budget_factor, budget / step_budget_factor, sim.dt());
             break;
         }
     }

@@ -19,10 +19,10 @@ using refsolver::Unsupported;
 
 struct DeckRun {
     RunRecord record;
-    ParticleState initial;  // state before the first step
+    ParticleState initial;                   // state before the first step
     std::unique_ptr<Simulation> simulation;  // at the end time; null when `failure` is set
-    std::string failure;    // why the deck did not run: a read error, deck errors, an unsupported feature
-    std::string stopped;    // why a run that started was stopped before its end time (a collapsing time step)
+    std::string failure;  // why the deck did not run: a read error, deck errors, an unsupported feature
+    std::string stopped;  // why a run that started was stopped before its end time (a collapsing time step)
 };
 
 // A run is stopped when it needs more than this many times the steps its first time step implies: the

@@ -81,8 +81,8 @@ CaseResult run_hydrostatic(const CaseOptions& options) {
     result.checks.push_back({"L1(p) below the surface band", norms.l1, std::nullopt, norms.l1, l1_tolerance});
     result.checks.push_back({"bottom pressure (line fit at y = 0) [Pa]", bottom, reference_bottom,
                              relative_error(bottom, reference_bottom), bottom_tolerance});
-    result.checks.push_back({"residual kinetic energy / (rho0 g H^2 W)", kinetic, std::nullopt, kinetic,
-                             kinetic_tolerance});
+    result.checks.push_back(
+        {"residual kinetic energy / (rho0 g H^2 W)", kinetic, std::nullopt, kinetic, kinetic_tolerance});
 
     result.method = {
         fmt::format("Deck `{}` (`make_hydrostatic.py`): water column H = {:g} m, tank W = {:g} m, spacing {:g} m, "
@@ -111,16 +111,26 @@ CaseResult run_hydrostatic(const CaseOptions& options) {
         pb_ref = {rho0 * gravity * (depth - 0.5 * dx), rho0 * gravity * (depth - 0.5 * dx)};
     }
     std::vector<io::PlotPanel> panels = {
-        {"pressure at the end", "y [m]", "p [Pa]",
+        {"pressure at the end",
+         "y [m]",
+         "p [Pa]",
          {{"SPH particles", ys, ps, io::SeriesStyle::Dots, "#4c78a8"},
           {"rho0 g (H - y)", ref_y, ref_p, io::SeriesStyle::Line, "#222222"}},
-         std::nullopt, std::nullopt},
-        {"bottom row: mean pressure", "t [s]", "p [Pa]",
+         std::nullopt,
+         std::nullopt},
+        {"bottom row: mean pressure",
+         "t [s]",
+         "p [Pa]",
          {{"SPH, particles with y < dx", t, pb, io::SeriesStyle::Line, "#4c78a8"},
           {"rho0 g (H - dx/2)", pb_ref_t, pb_ref, io::SeriesStyle::Line, "#222222"}},
-         std::nullopt, std::nullopt},
-        {"kinetic energy / (rho0 g H^2 W)", "t [s]", "KE (relative)",
-         {{"SPH", t, ke, io::SeriesStyle::Line, "#e45756"}}, std::nullopt, std::nullopt},
+         std::nullopt,
+         std::nullopt},
+        {"kinetic energy / (rho0 g H^2 W)",
+         "t [s]",
+         "KE (relative)",
+         {{"SPH", t, ke, io::SeriesStyle::Line, "#e45756"}},
+         std::nullopt,
+         std::nullopt},
     };
     io::PlotOptions plot;
     plot.title = fmt::format("Hydrostatic column, H = {:g} m, {} particles, t = {:.3g} s", depth, run.record.particles,

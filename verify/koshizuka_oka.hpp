@@ -19,9 +19,15 @@
 
 namespace sphdeck::verify {
 
-inline constexpr std::array<FrontPoint, 9> koshizuka_oka_146 = {{{0.0, 1.000}, {0.381, 1.111}, {0.769, 1.252},
-                                                                 {1.153, 1.505}, {1.537, 1.892}, {1.935, 2.241},
-                                                                 {2.323, 2.615}, {2.719, 3.003}, {3.096, 3.624}}};
+inline constexpr std::array<FrontPoint, 9> koshizuka_oka_146 = {{{0.0, 1.000},
+                                                                 {0.381, 1.111},
+                                                                 {0.769, 1.252},
+                                                                 {1.153, 1.505},
+                                                                 {1.537, 1.892},
+                                                                 {1.935, 2.241},
+                                                                 {2.323, 2.615},
+                                                                 {2.719, 3.003},
+                                                                 {3.096, 3.624}}};
 
 inline const FrontSeries& koshizuka_oka() {
     static const FrontSeries series{"Koshizuka & Oka, L = 0.146 m", koshizuka_oka_146};

@@ -31,7 +31,7 @@ struct NohRun {
     DeckRun run;
     int n = 0;  // particles along a side of the quarter
     double spacing = 0;
-    double plateau = NAN, shock = NAN;  // median post-shock density, shock radius
+    double plateau = NAN, shock = NAN;    // median post-shock density, shock radius
     double centre = NAN, centre_e = NAN;  // mean density and specific energy within r_s / 4 (the wall heating)
     double energy_start = 0, energy_end = 0;
     ErrorNorms rho;  // within the shocked gas and the inflow up to 2 r_s
@@ -121,9 +121,9 @@ CaseResult run_noh(const CaseOptions& options) {
     result.checks.push_back({fmt::format("post-shock density, {} x {}", fine.n, fine.n), fine.plateau, post,
                              density_error(fine), density_tolerance});
     const double density_ratio = density_error(fine) / density_error(coarse);
-    result.checks.push_back({fmt::format("post-shock density error, {} x {} / {} x {}", fine.n, fine.n, coarse.n,
-                                         coarse.n),
-                             density_ratio, std::nullopt, density_ratio, 1.0});
+    result.checks.push_back(
+        {fmt::format("post-shock density error, {} x {} / {} x {}", fine.n, fine.n, coarse.n, coarse.n), density_ratio,
+         std::nullopt, density_ratio, 1.0});
     result.checks.push_back({fmt::format("shock radius, {} x {}", fine.n, fine.n), fine.shock, shock_exact,
                              relative_error(fine.shock, shock_exact), radius_tolerance});
     for (const NohRun& r : runs) {
@@ -167,8 +167,8 @@ CaseResult run_noh(const CaseOptions& options) {
         fmt::format("Not gated: post-shock density {:.3f} / {:.3f}, shock radius {:.4f} / {:.4f}, centre density "
                     "{:.2f} / {:.2f} and energy {:.3f} / {:.3f}, L1(rho) over r < 2 r_s {:.4f} / {:.4f} (coarse / "
                     "fine, spacing ratio {:g}); observed order of L1(rho) {:.2f}.",
-                    coarse.plateau, fine.plateau, coarse.shock, fine.shock, coarse.centre, fine.centre,
-                    coarse.centre_e, fine.centre_e, coarse.rho.l1, fine.rho.l1, ratio,
+                    coarse.plateau, fine.plateau, coarse.shock, fine.shock, coarse.centre, fine.centre, coarse.centre_e,
+                    fine.centre_e, coarse.rho.l1, fine.rho.l1, ratio,
                     observed_order(coarse.rho.l1, fine.rho.l1, ratio)),
     };
     result.svg = figure(runs, exact, t);

@@ -39,8 +39,8 @@ ErrorNorms error_norms(std::span<const double> values, std::span<const double> e
 }
 
 double observed_order(double error_coarse, double error_fine, double ratio) {
-    const bool usable = error_coarse > 0 && error_fine > 0 && std::isfinite(error_coarse) &&
-                        std::isfinite(error_fine) && ratio > 1;
+    const bool usable =
+        error_coarse > 0 && error_fine > 0 && std::isfinite(error_coarse) && std::isfinite(error_fine) && ratio > 1;
     return usable ? std::log(error_coarse / error_fine) / std::log(ratio) : std::numeric_limits<double>::quiet_NaN();
 }
 

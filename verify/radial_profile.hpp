@@ -10,7 +10,7 @@
 namespace sphdeck::verify {
 
 struct RadialProfile {
-    int n = 0;  // particles along a side of the quarter
+    int n = 0;                         // particles along a side of the quarter
     std::vector<double> r, rho, u, p;  // active particles: radius, density, radial velocity, pressure
 };
 

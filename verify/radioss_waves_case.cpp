@@ -24,7 +24,7 @@ constexpr double energy_tolerance = 0.03, dt_tolerance = 0.03, cycle_tolerance =
 
 struct History {
     std::vector<double> time, kinetic, internal;  // after each step (and at the start)
-    std::vector<double> step_start, step_dt;       // each step: where it began, its length
+    std::vector<double> step_start, step_dt;      // each step: where it began, its length
 };
 
 // Linear interpolation of `y` (sampled at `x`, increasing) at `t`; NAN outside.
@@ -59,8 +59,8 @@ std::string figure(const History& h, double end) {
     panels[1] = {"time step", "time (ms)", "dt (ms)", {}, {}, {}};
     panels[1].series = {{"sphdeck", h.step_start, h.step_dt, io::SeriesStyle::Line, ""},
                         {"OpenRadioss engine", t, dt, io::SeriesStyle::Markers, ""}};
-    return io::svg_plot(panels, {"radioss-waves: WavesCompression against the OpenRadioss engine's listing", 2, 520,
-                                 340});
+    return io::svg_plot(panels,
+                        {"radioss-waves: WavesCompression against the OpenRadioss engine's listing", 2, 520, 340});
 }
 
 }  // namespace
@@ -108,9 +108,10 @@ CaseResult run_radioss_waves(const CaseOptions& options) {
         const double ie = std::abs(at(h.time, h.internal, r.time) - r.internal) / e_ref;
         const double step = step_of_cycle(h, r.cycle, last_cut), dt = std::abs(step / r.dt - 1);
         const double ke_run = at(h.time, h.kinetic, r.time), ie_run = at(h.time, h.internal, r.time);
-        table += fmt::format("| {} | {:.4g} | {:.4g} | {:.4g} | {:.4g} | {:.4g} | {:+.2f} % | {:.4g} | {:.4g} | {:+.2f} % |\n",
-                             r.cycle, r.time, r.dt, step, r.kinetic, ke_run,
-                             100 * (ke_run - r.kinetic) / e_ref, r.internal, ie_run, 100 * (ie_run - r.internal) / e_ref);
+        table += fmt::format(
+            "| {} | {:.4g} | {:.4g} | {:.4g} | {:.4g} | {:.4g} | {:+.2f} % | {:.4g} | {:.4g} | {:+.2f} % |\n", r.cycle,
+            r.time, r.dt, step, r.kinetic, ke_run, 100 * (ke_run - r.kinetic) / e_ref, r.internal, ie_run,
+            100 * (ie_run - r.internal) / e_ref);
         if (!(ke <= worst_ke)) worst_ke = ke, ke_at = r.cycle;
         if (!(ie <= worst_ie)) worst_ie = ie, ie_at = r.cycle;
         if (std::isfinite(step)) {
@@ -126,9 +127,9 @@ CaseResult run_radioss_waves(const CaseOptions& options) {
                                          "E_total(0)",
                                          compared, ie_at),
                              worst_ie, std::nullopt, worst_ie, energy_tolerance});
-    result.checks.push_back({fmt::format("time step, worst of {} cycles (cycle {}), |dt / dt_engine - 1|",
-                                         steps_compared, dt_at),
-                             worst_dt, std::nullopt, steps_compared > 0 ? worst_dt : NAN, dt_tolerance});
+    result.checks.push_back(
+        {fmt::format("time step, worst of {} cycles (cycle {}), |dt / dt_engine - 1|", steps_compared, dt_at), worst_dt,
+         std::nullopt, steps_compared > 0 ? worst_dt : NAN, dt_tolerance});
     if (last) {
         std::size_t steps = 0;  // the steps this run took to reach the engine's time of that cycle
         while (steps < h.time.size() - 1 && h.time[steps] < last->time - 1e-6) ++steps;

@@ -14,8 +14,10 @@ std::string g4(double v) { return std::isfinite(v) ? fmt::format("{:.4g}", v) : 
 std::string markdown_cell(std::string_view text) {
     std::string out;
     for (char c : text) {
-        if (c == '|') out += "\\|";
-        else out += c;
+        if (c == '|')
+            out += "\\|";
+        else
+            out += c;
     }
     return out;
 }
@@ -53,7 +55,7 @@ std::vector<std::vector<std::string>> check_table(const CaseResult& result) {
     for (const Check& c : result.checks) {
         rows.push_back({c.quantity, g4(c.value), c.reference ? g4(*c.reference) : "-", g4(c.error),
                         fmt::format("{} {}", c.bound == Check::Bound::AtMost ? "<=" : ">=", g4(c.tolerance)),
-                        !c.gated ? (c.passed() ? "within (reference, not gated)" : "outside (reference, not gated)")
+                        !c.gated     ? (c.passed() ? "within (reference, not gated)" : "outside (reference, not gated)")
                         : c.passed() ? "PASS"
                                      : "FAIL"});
     }
@@ -65,8 +67,8 @@ std::string case_markdown(const CaseResult& result, bool quick, std::string_view
     md += fmt::format("Result: **{}** ({} version).\n\n", verdict(result), quick ? "quick" : "full");
     if (!result.ran()) return md + fmt::format("The case did not run: {}\n", result.failure);
     md += "## Runs\n\n";
-    std::vector<std::vector<std::string>> runs = {{"deck", "particles", "steps", "end time", "wall time [s]",
-                                                   "particle updates / s", "threads"}};
+    std::vector<std::vector<std::string>> runs = {
+        {"deck", "particles", "steps", "end time", "wall time [s]", "particle updates / s", "threads"}};
     for (const RunRecord& r : result.runs) {
         const double rate = r.wall_seconds > 0 ? static_cast<double>(r.particles * r.steps) / r.wall_seconds : 0.0;
         runs.push_back({fmt::format("`{}`", r.deck), std::to_string(r.particles), std::to_string(r.steps),
@@ -93,8 +95,10 @@ void merge_summary_rows(SummaryRows& rows, std::span<const CaseResult> results, 
     for (const CaseResult& r : results) {
         SummaryRow row = summary_row(r, quick);
         const auto same = std::find_if(rows.begin(), rows.end(), [&](const SummaryRow& o) { return o.name == r.name; });
-        if (same != rows.end()) *same = std::move(row);
-        else rows.push_back(std::move(row));
+        if (same != rows.end())
+            *same = std::move(row);
+        else
+            rows.push_back(std::move(row));
     }
     std::sort(rows.begin(), rows.end(), [](const SummaryRow& a, const SummaryRow& b) { return a.name < b.name; });
 }
@@ -119,8 +123,12 @@ SummaryRows read_summary_rows(const std::filesystem::path& path) {
 std::string summary_rows_json(const SummaryRows& rows) {
     nlohmann::json cases = nlohmann::json::array();
     for (const SummaryRow& r : rows)
-        cases.push_back({{"name", r.name}, {"result", r.verdict}, {"gated_passed", r.gated_passed},
-                         {"gated", r.gated}, {"wall_seconds", r.wall_seconds}, {"quick", r.quick},
+        cases.push_back({{"name", r.name},
+                         {"result", r.verdict},
+                         {"gated_passed", r.gated_passed},
+                         {"gated", r.gated},
+                         {"wall_seconds", r.wall_seconds},
+                         {"quick", r.quick},
                          {"failure", r.failure}});
     return nlohmann::json{{"cases", cases}}.dump(2) + "\n";
 }

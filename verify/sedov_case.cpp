@@ -29,7 +29,7 @@ constexpr double energy_tolerance = 0.01;
 
 struct SedovRun {
     DeckRun run;
-    int n = 0;          // particles along a side of the quarter
+    int n = 0;  // particles along a side of the quarter
     double spacing = 0;
     double shock = NAN, peak = NAN;  // measured shock radius and peak density
     double energy_start = 0, energy_end = 0;
@@ -110,8 +110,8 @@ CaseResult run_sedov(const CaseOptions& options) {
                              peak_error(fine), peak_tolerance});
     // Convergence: the finer run closer than the coarser; for the radius, or within what the rings resolve.
     const double radius_floor = radius_resolution_spacings * fine.spacing / shock_exact;
-    result.checks.push_back({fmt::format("shock radius error, {} x {}: below the {} x {} one or half a spacing",
-                                         fine.n, fine.n, coarse.n, coarse.n),
+    result.checks.push_back({fmt::format("shock radius error, {} x {}: below the {} x {} one or half a spacing", fine.n,
+                                         fine.n, coarse.n, coarse.n),
                              radius_error(fine), std::nullopt, radius_error(fine),
                              std::max(radius_error(coarse), radius_floor)});
     const double peak_ratio = peak_error(fine) / peak_error(coarse);

@@ -49,8 +49,8 @@ std::optional<SedovSolution> solve_sedov(int j, double gamma) {
     const double delta = 2.0 / (j + 2);
     const Vec shock{2 * delta / (gamma + 1), (gamma + 1) / (gamma - 1), 2 * delta * delta / (gamma + 1)};
     // Integrate from ln xi = 0 to ln xi = -lowest; the energy integrand falls as xi^(j+2) at least.
-    constexpr double lowest = 30.0;   // xi = 1e-13
-    constexpr int steps = 60000;      // d(ln xi) = 5e-4; RK4's error is far below what the tests need
+    constexpr double lowest = 30.0;  // xi = 1e-13
+    constexpr int steps = 60000;     // d(ln xi) = 5e-4; RK4's error is far below what the tests need
     const double d = -lowest / steps;
     Vec y = shock;
     auto integrand = [&](const Vec& v, double xi) {
@@ -71,7 +71,8 @@ std::optional<SedovSolution> solve_sedov(int j, double gamma) {
         previous = current;
         // Profile in units of the post-shock state: u / u_2 = (xi U) / U(1), p / p_2 = xi^2 P / P(1).
         // Every step down to xi = 0.5 (the steep shell), every tenth inside.
-        if (xi > 0.5 || k % 10 == 0) s.profile.push_back({xi, y[1] / shock[1], xi * y[0] / shock[0], xi * xi * y[2] / shock[2]});
+        if (xi > 0.5 || k % 10 == 0)
+            s.profile.push_back({xi, y[1] / shock[1], xi * y[0] / shock[0], xi * xi * y[2] / shock[2]});
     }
     const double sigma = j == 1 ? 2.0 : j == 2 ? 2 * std::numbers::pi : 4 * std::numbers::pi;
     s.alpha = sigma * integral;

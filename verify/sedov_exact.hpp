@@ -12,15 +12,15 @@
 namespace sphdeck::verify {
 
 struct SedovProfilePoint {
-    double xi;             // r / r_s, from 1 (the shock) inward
-    double rho, u, p;      // rho / rho0, u / u_shock, p / p_shock (the post-shock values are 1 at xi = 1)
+    double xi;         // r / r_s, from 1 (the shock) inward
+    double rho, u, p;  // rho / rho0, u / u_shock, p / p_shock (the post-shock values are 1 at xi = 1)
 };
 
 struct SedovSolution {
     int j = 2;
     double gamma = 1.4;
-    double alpha = 0;      // E = alpha rho0 r_s^(j+2) / t^2
-    double density_ratio = 0;  // (gamma + 1) / (gamma - 1), at the shock
+    double alpha = 0;                        // E = alpha rho0 r_s^(j+2) / t^2
+    double density_ratio = 0;                // (gamma + 1) / (gamma - 1), at the shock
     std::vector<SedovProfilePoint> profile;  // xi descending from 1 towards 0
 
     // r_s(t) for energy E (per unit area / length / total as j) in gas of density rho0.

@@ -84,8 +84,9 @@ std::string figure(const std::vector<SodRun>& runs, const RiemannSolution& exact
     for (const Quantity& q : quantities) {
         io::PlotPanel panel{q.title, "x", q.label, {}, std::pair{0.0, tube_length}, std::nullopt};
         for (std::size_t k = 0; k < runs.size(); ++k)
-            panel.series.push_back({fmt::format("SPH, {} particles along x", std::lround(tube_length / runs[k].spacing)),
-                                    runs[k].x, runs[k].*q.values, io::SeriesStyle::Dots, colours[k % 2]});
+            panel.series.push_back(
+                {fmt::format("SPH, {} particles along x", std::lround(tube_length / runs[k].spacing)), runs[k].x,
+                 runs[k].*q.values, io::SeriesStyle::Dots, colours[k % 2]});
         panel.series.push_back({"exact (Toro)", xs, q.exact, io::SeriesStyle::Line, "#222222"});
         panels.push_back(std::move(panel));
     }
@@ -112,8 +113,8 @@ CaseResult run_sod(const CaseOptions& options) {
 
     for (const SodRun& r : runs) {
         const std::size_t n = static_cast<std::size_t>(std::lround(tube_length / r.spacing));
-        result.checks.push_back({fmt::format("L1(rho), {} along x", n), r.rho.l1, std::nullopt, r.rho.l1,
-                                 l1_rho_tolerance});
+        result.checks.push_back(
+            {fmt::format("L1(rho), {} along x", n), r.rho.l1, std::nullopt, r.rho.l1, l1_rho_tolerance});
         result.checks.push_back({fmt::format("L1(u), {} along x", n), r.u.l1, std::nullopt, r.u.l1, l1_u_tolerance});
         result.checks.push_back({fmt::format("L1(p), {} along x", n), r.p.l1, std::nullopt, r.p.l1, l1_p_tolerance});
     }
@@ -123,8 +124,8 @@ CaseResult run_sod(const CaseOptions& options) {
     const double tolerance = position_tolerance_spacings * fine.spacing;
     auto position = [&](const char* name, const std::optional<double>& found, const std::optional<double>& wanted) {
         const double value = found.value_or(NAN);
-        result.checks.push_back({fmt::format("{} position", name), value, *wanted, std::abs(value - *wanted),
-                                 tolerance});
+        result.checks.push_back(
+            {fmt::format("{} position", name), value, *wanted, std::abs(value - *wanted), tolerance});
     };
     position("rarefaction head", fine.waves.rarefaction_head, expected.rarefaction_head);
     position("rarefaction tail", fine.waves.rarefaction_tail, expected.rarefaction_tail);
@@ -132,8 +133,8 @@ CaseResult run_sod(const CaseOptions& options) {
     position("shock", fine.waves.shock, expected.shock);
     const double ratio = runs.front().spacing / fine.spacing;
     const double order = observed_order(runs.front().rho.l1, fine.rho.l1, ratio);
-    result.checks.push_back({"observed order of L1(rho)", order, std::nullopt, order, order_threshold,
-                             Check::Bound::AtLeast});
+    result.checks.push_back(
+        {"observed order of L1(rho)", order, std::nullopt, order, order_threshold, Check::Bound::AtLeast});
 
     result.method = {
         fmt::format("Decks `sod_2d_{}.k` and `sod_2d_{}.k` (`make_sod.py`): x in [0, 1], 6 particle rows between "

@@ -13,7 +13,7 @@ std::optional<double> surge_front(std::span<const double> x, std::span<const dou
         if (active[i] && y[i] < floor_band) near_floor.push_back(i);
     std::sort(near_floor.begin(), near_floor.end(), [&](std::size_t a, std::size_t b) { return x[a] > x[b]; });
     const double reach2 = 4.0 * spacing * spacing;  // (2 spacings)^2
-    for (std::size_t i : near_floor) {  // furthest first; usually the first one has a neighbour
+    for (std::size_t i : near_floor) {              // furthest first; usually the first one has a neighbour
         for (std::size_t j = 0; j < x.size(); ++j) {
             if (j == i || !active[j]) continue;
             const double dx = x[j] - x[i], dy = y[j] - y[i];

@@ -26,9 +26,9 @@ inline constexpr double trixi_H = 0.6;  // m, the column height of their runs
 inline constexpr double trixi_g = 9.81;
 
 struct TrixiFrontRow {
-    double T;                       // t sqrt(g / H)
-    double wcsph_40, wcsph_80;      // max x of the fluid [m], WCSPH at H/40 and H/80
-    double edac_40, edac_80;        // the same, EDAC
+    double T;                   // t sqrt(g / H)
+    double wcsph_40, wcsph_80;  // max x of the fluid [m], WCSPH at H/40 and H/80
+    double edac_40, edac_80;    // the same, EDAC
 };
 
 inline constexpr std::array<TrixiFrontRow, 13> trixi_dam_break_front = {{

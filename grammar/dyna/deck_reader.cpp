@@ -153,7 +153,8 @@ void DeckReader::on_keyword(const char* begin, const char* end, const KeywordLin
             report("DK021", diag::Severity::Info, "keyword '" + block.keyword + "' written in lower case", block.span);
             // Safe: keyword names are read in upper case (block.keyword); the name only, not its arguments.
             deck_.diagnostics.back().fixes.push_back(
-                {"write the keyword name in upper case", true,
+                {"write the keyword name in upper case",
+                 true,
                  {{span_of(begin, end, star + 1, star + 1 + parts.name.size()), block.keyword.substr(1)}}});
             break;
         }

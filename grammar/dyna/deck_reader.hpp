@@ -46,13 +46,13 @@ private:
         CardFormat format = CardFormat::Standard;
         const char* base = nullptr;
         const SourceText* text = nullptr;
-        std::size_t released = 0;          // bytes of `text` handed back (SourceText::release)
+        std::size_t released = 0;  // bytes of `text` handed back (SourceText::release)
         std::uint32_t line = 0;
         std::optional<std::size_t> block;  // index of the open block in deck_.blocks
         bool ended = false;                // after *END
         bool reported_after_end = false;
-        DroppedAfterEnd dropped;           // keyword blocks after *END (DK017)
-        bool in_comment_block = false;     // inside *COMMENT
+        DroppedAfterEnd dropped;        // keyword blocks after *END (DK017)
+        bool in_comment_block = false;  // inside *COMMENT
         bool in_encrypted = false;
         bool reported_stray_data = false;
     };

@@ -53,7 +53,9 @@ struct State {
     std::size_t depth = 0;
 
     template <typename ActionInput>
-    std::size_t offset(const ActionInput& in) const { return std::size_t(in.begin() - text); }
+    std::size_t offset(const ActionInput& in) const {
+        return std::size_t(in.begin() - text);
+    }
     template <typename ActionInput>
     void push(double value, const ActionInput& in) {
         values.push_back({value, offset(in), std::size_t(in.end() - text)});
@@ -170,7 +172,8 @@ struct action<peg::number> {
     template <typename ActionInput>
     static void apply(const ActionInput& in, State& st) {
         std::string text = in.string();
-        std::ranges::replace_if(text, [](char c) { return c == 'd' || c == 'D'; }, 'e');  // 1.0D3
+        std::ranges::replace_if(
+            text, [](char c) { return c == 'd' || c == 'D'; }, 'e');  // 1.0D3
         double value = 0.0;
         const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
         if (ec == std::errc::result_out_of_range) {
@@ -244,9 +247,10 @@ struct action<peg::call> {
         const std::size_t begin = st.offset(in), end = begin + in.size();
         const std::size_t count = st.values.size() - call.first_argument;
         if (count < f.min_arguments || count > f.max_arguments) {
-            const std::string expected = f.max_arguments == any_count
-                                             ? fmt::format("at least {} arguments", f.min_arguments)
-                                             : fmt::format("{} argument{}", f.min_arguments, f.min_arguments == 1 ? "" : "s");
+            const std::string expected =
+                f.max_arguments == any_count
+                    ? fmt::format("at least {} arguments", f.min_arguments)
+                    : fmt::format("{} argument{}", f.min_arguments, f.min_arguments == 1 ? "" : "s");
             fail(ExpressionError::Syntax, fmt::format("{} takes {}, got {}", f.name, expected, count), begin, end);
         }
         std::vector<double> arguments;
@@ -256,7 +260,8 @@ struct action<peg::call> {
         if (std::string problem = domain_problem(f.name, arguments); !problem.empty())
             fail(ExpressionError::Domain, std::move(problem), begin, end);
         const double value = f.apply(arguments);
-        if (!std::isfinite(value)) fail(ExpressionError::Domain, fmt::format("result of {} is not finite", f.name), begin, end);
+        if (!std::isfinite(value))
+            fail(ExpressionError::Domain, fmt::format("result of {} is not finite", f.name), begin, end);
         st.values.push_back({value, begin, end});
     }
 };
@@ -297,7 +302,9 @@ void binary(State& st, std::string_view symbol, Op op) {
 
 template <>
 struct action<peg::power_tail> {
-    static void apply0(State& st) { binary(st, "**", [](double a, double b) { return std::pow(a, b); }); }
+    static void apply0(State& st) {
+        binary(st, "**", [](double a, double b) { return std::pow(a, b); });
+    }
 };
 template <>
 struct action<peg::multiply> {

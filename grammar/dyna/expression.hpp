@@ -13,9 +13,10 @@ enum class ExpressionError { None, Syntax, UndefinedParameter, Domain };
 struct ExpressionResult {
     ExpressionError error = ExpressionError::None;
     double value = 0.0;
-    std::string message;          // short lower-case fragment, e.g. "expected ')' after 'max(1,2'" or "undefined parameter 'tend'" or "division by zero"
-    std::size_t offset = 0;       // byte offset in the input text where the problem is
-    std::size_t length = 0;       // length of the offending token (>=1 when error)
+    std::string message;     // short lower-case fragment, e.g. "expected ')' after 'max(1,2'" or "undefined parameter
+                             // 'tend'" or "division by zero"
+    std::size_t offset = 0;  // byte offset in the input text where the problem is
+    std::size_t length = 0;  // length of the offending token (>=1 when error)
     bool ok() const { return error == ExpressionError::None; }
 };
 

@@ -61,15 +61,24 @@ struct grammar : seq<ws, must<not_empty, expression>, ws, must<end_of_input>> {}
 // What was expected when a must<> fails; the control appends "after '<text before>'".
 template <typename Rule>
 inline constexpr const char* error_message = "syntax error";
-template <> inline constexpr const char* error_message<not_empty> = "empty expression";
-template <> inline constexpr const char* error_message<expression> = "expected expression";
-template <> inline constexpr const char* error_message<arguments> = "expected expression";
-template <> inline constexpr const char* error_message<term> = "expected expression";
-template <> inline constexpr const char* error_message<factor> = "expected expression";
-template <> inline constexpr const char* error_message<closing_paren> = "expected ')'";
-template <> inline constexpr const char* error_message<exponent_digits> = "expected exponent digits";
-template <> inline constexpr const char* error_message<parameter_name> = "expected parameter name";
-template <> inline constexpr const char* error_message<end_of_input> = "unexpected";  // + the token
+template <>
+inline constexpr const char* error_message<not_empty> = "empty expression";
+template <>
+inline constexpr const char* error_message<expression> = "expected expression";
+template <>
+inline constexpr const char* error_message<arguments> = "expected expression";
+template <>
+inline constexpr const char* error_message<term> = "expected expression";
+template <>
+inline constexpr const char* error_message<factor> = "expected expression";
+template <>
+inline constexpr const char* error_message<closing_paren> = "expected ')'";
+template <>
+inline constexpr const char* error_message<exponent_digits> = "expected exponent digits";
+template <>
+inline constexpr const char* error_message<parameter_name> = "expected parameter name";
+template <>
+inline constexpr const char* error_message<end_of_input> = "unexpected";  // + the token
 
 // One token for error spans: a word or number (possibly after '&'), else a single byte.
 struct token : sor<seq<opt<one<'&'>>, plus<sor<identifier_other, one<'.'>>>>, any> {};

@@ -35,8 +35,10 @@ void DeckReader::handle_keyword_line_arguments(const Block& block) {
     args.span = block.span;
     OpenFile& f = current();
     if (stack_.size() == 1) {
-        if (args.long_format) f.format = CardFormat::Long;
-        else if (args.i10_format) f.format = CardFormat::I10;
+        if (args.long_format)
+            f.format = CardFormat::Long;
+        else if (args.i10_format)
+            f.format = CardFormat::I10;
         if (!deck_.keyword_arguments.present) deck_.keyword_arguments = args;
     } else if (args.long_format || args.i10_format) {
         report("DK019", diag::Severity::Warning,
@@ -138,9 +140,12 @@ void DeckReader::open_include(const std::string& name, Span where, char suffix) 
         return;
     }
     CardFormat format = parent.format;
-    if (suffix == '+') format = CardFormat::Long;
-    else if (suffix == '%') format = CardFormat::I10;
-    else if (suffix == '-') format = CardFormat::Standard;
+    if (suffix == '+')
+        format = CardFormat::Long;
+    else if (suffix == '%')
+        format = CardFormat::I10;
+    else if (suffix == '-')
+        format = CardFormat::Standard;
     FileId id = deck_.sources.add(std::move(child));
     read(id, format, cached.get());
 }

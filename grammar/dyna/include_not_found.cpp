@@ -47,7 +47,8 @@ std::string similar_file(const std::string& name, const std::vector<IncludeTry>&
 
 std::string joined(const std::vector<std::string>& rules) {
     std::string out;
-    for (std::size_t i = 0; i < rules.size(); ++i) out += (i == 0 ? "" : i + 1 == rules.size() ? " and " : ", ") + rules[i];
+    for (std::size_t i = 0; i < rules.size(); ++i)
+        out += (i == 0 ? "" : i + 1 == rules.size() ? " and " : ", ") + rules[i];
     return out;
 }
 
@@ -62,15 +63,18 @@ diag::Diagnostic include_not_found(const std::string& name, Span where, const In
         d.message += fmt::format("; did you mean '{}'?", similar);
         if (!continued) d.fixes.push_back({fmt::format("include '{}'", similar), false, {{where, similar}}});
     }
-    for (const IncludeTry& t : tries) d.notes.push_back({Span{}, fmt::format("tried {} ({})", t.path.string(), joined(t.rules))});
+    for (const IncludeTry& t : tries)
+        d.notes.push_back({Span{}, fmt::format("tried {} ({})", t.path.string(), joined(t.rules))});
     if (!fs::path(name).is_absolute())
-        d.notes.push_back({Span{}, radioss ? "to search another folder, give it with -I DIR (or include-paths in sphdeck.toml)"
-                                           : "to search another folder, name it in an *INCLUDE_PATH card (LS-DYNA "
-                                             "searches it too) or give it with -I DIR (or include-paths in sphdeck.toml)"});
+        d.notes.push_back(
+            {Span{}, radioss ? "to search another folder, give it with -I DIR (or include-paths in sphdeck.toml)"
+                             : "to search another folder, name it in an *INCLUDE_PATH card (LS-DYNA "
+                               "searches it too) or give it with -I DIR (or include-paths in sphdeck.toml)"});
     // The lint rules see no definition of the file: they leave references unchecked (REF001-REF005,
     // REF007, REF008) rather than report every id it would have defined.
-    d.notes.push_back({Span{}, "references to nodes, parts, sections, materials and sets are not checked "
-                               "while it is missing"});
+    d.notes.push_back({Span{},
+                       "references to nodes, parts, sections, materials and sets are not checked "
+                       "while it is missing"});
     return d;
 }
 

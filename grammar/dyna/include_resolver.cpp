@@ -20,8 +20,9 @@ std::vector<Candidate> candidates(const std::string& name, const IncludeSearch& 
     list.push_back({search.including_directory / given, "including file's folder"});
     list.push_back({search.main_directory / given, "main deck's folder"});
     for (std::size_t i = 0; i < search.include_paths.size(); ++i)
-        list.push_back({search.include_paths[i] / given,
-                        i < search.include_path_origins.size() ? search.include_path_origins[i].c_str() : "include path"});
+        list.push_back({search.include_paths[i] / given, i < search.include_path_origins.size()
+                                                             ? search.include_path_origins[i].c_str()
+                                                             : "include path"});
     return list;
 }
 
@@ -71,7 +72,8 @@ std::vector<IncludeTry> include_tries(const std::string& name, const IncludeSear
     const auto add = [&](const Candidate& c, std::string rule) {
         const fs::path normal = normal_path(c.path);
         auto same = std::find_if(out.begin(), out.end(), [&](const IncludeTry& t) { return t.path == normal; });
-        if (same == out.end()) out.push_back({normal, {std::move(rule)}});
+        if (same == out.end())
+            out.push_back({normal, {std::move(rule)}});
         else if (std::find(same->rules.begin(), same->rules.end(), rule) == same->rules.end())
             same->rules.push_back(std::move(rule));
     };

@@ -12,10 +12,10 @@
 namespace sphdeck::grammar::dyna {
 
 struct IncludeSearch {
-    std::filesystem::path including_directory;  // folder of the file with the *INCLUDE
-    std::filesystem::path main_directory;       // folder of the main deck
+    std::filesystem::path including_directory;         // folder of the file with the *INCLUDE
+    std::filesystem::path main_directory;              // folder of the main deck
     std::vector<std::filesystem::path> include_paths;  // --include-path (-I) entries, then *INCLUDE_PATH(_RELATIVE)
-    const FileOverlay* overlay = nullptr;  // in-memory texts that count as files
+    const FileOverlay* overlay = nullptr;              // in-memory texts that count as files
     // Where each include path came from ("-I or include-paths", "*INCLUDE_PATH at line 4"), for the
     // not-found report; may be shorter than include_paths (the rest: "include path").
     std::vector<std::string> include_path_origins = {};

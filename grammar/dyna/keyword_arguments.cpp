@@ -13,8 +13,9 @@ namespace pegtl = tao::pegtl;
 struct blank : pegtl::one<' ', '\t', ',', '\r'> {};
 struct name : pegtl::plus<pegtl::sor<pegtl::alnum, pegtl::one<'_'>>> {};
 struct value : pegtl::plus<pegtl::not_one<' ', '\t', ',', '\r', '='>> {};
-struct named : pegtl::seq<name, pegtl::star<pegtl::one<' '>>, pegtl::one<'='>, pegtl::star<pegtl::one<' '>>,
-                          pegtl::opt<value>> {};
+struct named
+    : pegtl::seq<name, pegtl::star<pegtl::one<' '>>, pegtl::one<'='>, pegtl::star<pegtl::one<' '>>, pegtl::opt<value>> {
+};
 struct bare : value {};
 struct argument : pegtl::sor<named, bare> {};
 struct arguments : pegtl::seq<pegtl::star<blank>, pegtl::star<argument, pegtl::star<blank>>> {};
@@ -32,12 +33,17 @@ struct action : pegtl::nothing<Rule> {};
 template <>
 struct action<name> {
     template <typename Input>
-    static void apply(const Input& in, Collector& c) { c.pending_name = in.string_view(); c.pending_value = {}; }
+    static void apply(const Input& in, Collector& c) {
+        c.pending_name = in.string_view();
+        c.pending_value = {};
+    }
 };
 template <>
 struct action<value> {
     template <typename Input>
-    static void apply(const Input& in, Collector& c) { c.pending_value = in.string_view(); }
+    static void apply(const Input& in, Collector& c) {
+        c.pending_value = in.string_view();
+    }
 };
 
 bool is_yes(std::string_view v) { return !v.empty() && (v[0] == 'y' || v[0] == 'Y'); }
@@ -48,11 +54,16 @@ struct action<named> {
     static void apply(const Input&, Collector& c) {
         std::string key = to_upper(c.pending_name);
         std::string_view v = c.pending_value;
-        if (key == "MEMORY") c.out.memory = std::string(v);
-        else if (key == "MEMORY2") c.out.memory2 = std::string(v);
-        else if (key == "LONG") c.out.long_format = is_yes(v);  // LONG=S and LONG=K read standard input
-        else if (key == "I10") c.out.i10_format = is_yes(v);
-        else if (key == "NCPU") std::from_chars(v.data(), v.data() + v.size(), c.out.ncpu);
+        if (key == "MEMORY")
+            c.out.memory = std::string(v);
+        else if (key == "MEMORY2")
+            c.out.memory2 = std::string(v);
+        else if (key == "LONG")
+            c.out.long_format = is_yes(v);  // LONG=S and LONG=K read standard input
+        else if (key == "I10")
+            c.out.i10_format = is_yes(v);
+        else if (key == "NCPU")
+            std::from_chars(v.data(), v.data() + v.size(), c.out.ncpu);
         c.first = false;
     }
 };
@@ -71,8 +82,9 @@ KeywordArguments parse_keyword_arguments(std::string_view text) {
     KeywordArguments out;
     out.present = true;
     Collector collector{out, {}, {}, true};
-    pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf, const char*> in(
-        text.data(), text.data() + text.size(), "*KEYWORD");
+    pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf, const char*> in(text.data(),
+                                                                                         text.data() + text.size(),
+                                                                                         "*KEYWORD");
     pegtl::parse<arguments, action>(in, collector);
     return out;
 }

@@ -66,4 +66,5 @@ struct file : pegtl::seq<pegtl::opt<byte_order_mark>, pegtl::until<pegtl::eof, l
 
 // For pegtl::analyze: rest_of_line may succeed without consuming input, like an opt<>.
 template <typename Name>
-struct tao::pegtl::analyze_traits<Name, sphdeck::grammar::dyna::rules::rest_of_line> : tao::pegtl::analyze_opt_traits<> {};
+struct tao::pegtl::analyze_traits<Name, sphdeck::grammar::dyna::rules::rest_of_line>
+    : tao::pegtl::analyze_opt_traits<> {};

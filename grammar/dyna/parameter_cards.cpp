@@ -111,7 +111,7 @@ bool value_of(Context& c, const Field& field, ParameterType type, Parameter& p) 
 }
 
 void read_pairs(Context& c, const CardLine& line) {
-    static constexpr FixedField pair_fields[] = {{0, 10}, {10, 10}, {20, 10}, {30, 10},
+    static constexpr FixedField pair_fields[] = {{0, 10},  {10, 10}, {20, 10}, {30, 10},
                                                  {40, 10}, {50, 10}, {60, 10}, {70, 10}};
     std::vector<FixedField> positions;
     widen(pair_fields, c.block.format, positions);
@@ -203,7 +203,8 @@ void read_expressions(Context& c) {
         p.number = type == ParameterType::Integer ? std::trunc(r.value) : r.value;  // Fortran INT() truncates
         p.span = name_span;
         if (type == ParameterType::Character) {
-            report(c.deck, "DK013", diag::Severity::Error, "a character parameter cannot take an expression", name_span);
+            report(c.deck, "DK013", diag::Severity::Error, "a character parameter cannot take an expression",
+                   name_span);
             continue;
         }
         define(c, std::move(p));
@@ -257,11 +258,13 @@ void group_redefinitions(RawDeck& deck) {
             std::string names;
             for (std::size_t k = 0; k < group.names.size() && k < listed_names; ++k)
                 names += (k ? ", " : "") + group.names[k];
-            first.message += "; " + std::to_string(group.names.size()) + " parameters of this file are defined again (" +
-                             names + (group.names.size() > listed_names ? ", ..." : "") + ")";
+            first.message += "; " + std::to_string(group.names.size()) +
+                             " parameters of this file are defined again (" + names +
+                             (group.names.size() > listed_names ? ", ..." : "") + ")";
         }
-        first.notes.push_back({Span{}, "*PARAMETER_DUPLICATION 4 (replace) or 5 (keep the first) redefines silently "
-                                       "where it is meant (defaults in an include overridden by the deck)"});
+        first.notes.push_back({Span{},
+                               "*PARAMETER_DUPLICATION 4 (replace) or 5 (keep the first) redefines silently "
+                               "where it is meant (defaults in an include overridden by the deck)"});
     }
     // A DK024 (names differing by case) on the line of a DK014 joins it: one finding per line.
     for (std::size_t i = 0; i < all.size(); ++i) {

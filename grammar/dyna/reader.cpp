@@ -22,22 +22,30 @@ struct action : pegtl::nothing<Rule> {};
 template <>
 struct action<rules::keyword_name> {
     template <typename Input>
-    static void apply(const Input& in, DeckReader& r) { r.parts.name = in.string_view(); }
+    static void apply(const Input& in, DeckReader& r) {
+        r.parts.name = in.string_view();
+    }
 };
 template <>
 struct action<rules::suffix_char> {
     template <typename Input>
-    static void apply(const Input& in, DeckReader& r) { r.parts.suffix = *in.begin(); }
+    static void apply(const Input& in, DeckReader& r) {
+        r.parts.suffix = *in.begin();
+    }
 };
 template <>
 struct action<rules::keyword_arguments> {
     template <typename Input>
-    static void apply(const Input& in, DeckReader& r) { r.parts.arguments = in.string_view(); }
+    static void apply(const Input& in, DeckReader& r) {
+        r.parts.arguments = in.string_view();
+    }
 };
 template <>
 struct action<rules::comment_line> {
     template <typename Input>
-    static void apply(const Input&, DeckReader& r) { r.on_comment(); }
+    static void apply(const Input&, DeckReader& r) {
+        r.on_comment();
+    }
 };
 template <>
 struct action<rules::keyword_line> {
@@ -52,22 +60,30 @@ struct action<rules::keyword_line> {
 template <>
 struct action<rules::pgp_begin_line> {
     template <typename Input>
-    static void apply(const Input& in, DeckReader& r) { r.on_pgp_begin(in.begin(), in.end()); }
+    static void apply(const Input& in, DeckReader& r) {
+        r.on_pgp_begin(in.begin(), in.end());
+    }
 };
 template <>
 struct action<rules::pgp_end_line> {
     template <typename Input>
-    static void apply(const Input& in, DeckReader& r) { r.on_pgp_end(in.begin(), in.end()); }
+    static void apply(const Input& in, DeckReader& r) {
+        r.on_pgp_end(in.begin(), in.end());
+    }
 };
 template <>
 struct action<rules::empty_line> {
     template <typename Input>
-    static void apply(const Input& in, DeckReader& r) { r.on_data(in.begin(), in.begin()); }
+    static void apply(const Input& in, DeckReader& r) {
+        r.on_data(in.begin(), in.begin());
+    }
 };
 template <>
 struct action<rules::data_line> {
     template <typename Input>
-    static void apply(const Input& in, DeckReader& r) { r.on_data(in.begin(), in.end()); }
+    static void apply(const Input& in, DeckReader& r) {
+        r.on_data(in.begin(), in.end());
+    }
 };
 
 RawDeck read_main(SourceFile main, const std::filesystem::path& directory, const ReaderOptions& options) {
@@ -122,8 +138,7 @@ void DeckReader::read(FileId file, CardFormat inherited_format, const FileCache:
     const std::uint32_t physical_lines = current().line;
     deck_.stats.lines += physical_lines;
     stack_.pop_back();
-    if (shared.claim)
-        shared.claim->fulfil(reading_of(file, first_block, first_line, first_diagnostic, physical_lines));
+    if (shared.claim) shared.claim->fulfil(reading_of(file, first_block, first_line, first_diagnostic, physical_lines));
     source.text.release(0, source.text.size());  // read again, block by block, when decoded
 }
 

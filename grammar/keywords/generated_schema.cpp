@@ -54,8 +54,9 @@ FieldSpec field_of(std::string_view text) {
     // *EM_CONTROL_SOLUTION ANG to a node): only its integer fields are taken as ids.
     if (parts.size() > 5 && t == 'I') f.refers_to = parts[5];
     f.pydyna_integer = t == 'I';
-    if (t == 'I') f.doc = f.refers_to.empty() ? "integer in pydyna's layout, checked as a number"
-                                              : "integer in pydyna's layout, checked as a number; an id";
+    if (t == 'I')
+        f.doc = f.refers_to.empty() ? "integer in pydyna's layout, checked as a number"
+                                    : "integer in pydyna's layout, checked as a number; an id";
     return f;
 }
 
@@ -71,8 +72,12 @@ std::optional<CardCondition> test_of(std::string_view text) {
         return c;
     }
     c.value = number(parts[2]);
-    c.compare = op == "==" ? Compare::Equal : op == "!=" ? Compare::NotEqual : op == "<" ? Compare::Less
-              : op == "<=" ? Compare::LessEqual : op == ">" ? Compare::Greater : Compare::GreaterEqual;
+    c.compare = op == "=="   ? Compare::Equal
+                : op == "!=" ? Compare::NotEqual
+                : op == "<"  ? Compare::Less
+                : op == "<=" ? Compare::LessEqual
+                : op == ">"  ? Compare::Greater
+                             : Compare::GreaterEqual;
     return c;
 }
 
@@ -90,8 +95,10 @@ std::optional<CardCondition> clause_of(std::string_view text) {
     for (std::string_view t : split_words(text, " and ")) {
         auto test = test_of(t);
         if (!test) return std::nullopt;
-        if (!first) first = std::move(test);
-        else first->all_of.push_back(std::move(*test));
+        if (!first)
+            first = std::move(test);
+        else
+            first->all_of.push_back(std::move(*test));
     }
     return first;
 }
@@ -102,8 +109,10 @@ std::optional<CardCondition> condition_of(std::string_view text) {
     for (std::string_view clause : split_words(text, " or ")) {
         auto c = clause_of(clause);
         if (!c) return std::nullopt;
-        if (!first) first = std::move(c);
-        else first->or_else.push_back(std::move(*c));
+        if (!first)
+            first = std::move(c);
+        else
+            first->or_else.push_back(std::move(*c));
     }
     return first;
 }
@@ -124,7 +133,8 @@ std::unique_ptr<KeywordSchema> build(const LayoutEntry& entry, const std::vector
     if (written(on, "TITLE") && !k->option("TITLE")) {
         // A _TITLE pydyna does not list (see option_named): the manual's title line, A80.
         k->options.push_back({.suffix = "TITLE"});
-        k->cards.push_back({.name = "Title", .fields = {{.name = "TITLE", .column = 1, .width = 80, .type = FieldType::Text}}});
+        k->cards.push_back(
+            {.name = "Title", .fields = {{.name = "TITLE", .column = 1, .width = 80, .type = FieldType::Text}}});
     }
     std::size_t group_start = 0;
     bool group = false;
@@ -196,9 +206,11 @@ std::optional<KeywordMatch> find_generated(std::string_view key) {
                 if (end == std::string_view::npos) end = key.size();
                 const std::string_view token = key.substr(pos + 1, end - pos - 1);
                 const std::string_view o = option_named(entry->name, options, token);
-                if (case_id_token(entry->name, token, end == key.size())) {}
-                else if (o.empty() || written(on, o)) all_known = end == pos + 1;  // "__" is no option
-                else on.push_back(o);
+                if (case_id_token(entry->name, token, end == key.size())) {
+                } else if (o.empty() || written(on, o))
+                    all_known = end == pos + 1;  // "__" is no option
+                else
+                    on.push_back(o);
                 pos = end;
             }
             if (all_known) {

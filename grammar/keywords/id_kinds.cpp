@@ -42,12 +42,24 @@ struct NamedKind {
 };
 constexpr std::array<NamedKind, 19> kNamedKinds{{
     {"NID", "NODE"},
-    {"SECID", "SECTION"},     {"ISSPH", "SECTION"},       {"MID", "MAT"},
-    {"EOSID", "EOS"},         {"HGID", "HOURGLASS"},      {"PID", "PART"},
-    {"IPID", "PART"},         {"IPSPH", "PART"},          {"BOXID", "DEFINE_BOX"},
-    {"IBOXA", "DEFINE_BOX"},  {"IBOXB", "DEFINE_BOX"},    {"NSID", "SET_NODE"},
-    {"NSIDEX", "SET_NODE"},   {"LCID", "DEFINE_CURVE"},   {"LCFLD", "DEFINE_CURVE"},
-    {"DT2MSLC", "DEFINE_CURVE"}, {"LCIDDR", "DEFINE_CURVE"}, {"LCEPSMX", "DEFINE_CURVE"},
+    {"SECID", "SECTION"},
+    {"ISSPH", "SECTION"},
+    {"MID", "MAT"},
+    {"EOSID", "EOS"},
+    {"HGID", "HOURGLASS"},
+    {"PID", "PART"},
+    {"IPID", "PART"},
+    {"IPSPH", "PART"},
+    {"BOXID", "DEFINE_BOX"},
+    {"IBOXA", "DEFINE_BOX"},
+    {"IBOXB", "DEFINE_BOX"},
+    {"NSID", "SET_NODE"},
+    {"NSIDEX", "SET_NODE"},
+    {"LCID", "DEFINE_CURVE"},
+    {"LCFLD", "DEFINE_CURVE"},
+    {"DT2MSLC", "DEFINE_CURVE"},
+    {"LCIDDR", "DEFINE_CURVE"},
+    {"LCEPSMX", "DEFINE_CURVE"},
 }};
 
 // PID1..PID8 of *SET_PART_LIST: the name without its trailing digits.
@@ -57,8 +69,8 @@ std::string_view without_digits(std::string_view name) {
 }
 
 // Keywords of a defining family that define no id of it: they add to a material, or name parts.
-constexpr std::array<std::string_view, 7> kDefineNone{"*MAT_ADD_",  "*PART_MODES",           "*PART_SENSOR",
-                                                      "*PART_MOVE", "*PART_ANNEAL",          "*PART_ADAPTIVE_FAILURE",
+constexpr std::array<std::string_view, 7> kDefineNone{"*MAT_ADD_",      "*PART_MODES",  "*PART_SENSOR",
+                                                      "*PART_MOVE",     "*PART_ANNEAL", "*PART_ADAPTIVE_FAILURE",
                                                       "*PART_DUPLICATE"};
 
 }  // namespace

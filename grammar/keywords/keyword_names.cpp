@@ -33,9 +33,21 @@ constexpr std::array kWrittenByLsDyna = {"*RVE_INFO"sv};
 // _ORTHO_FRICTION, _MORTAR, _SMOOTH), joints (_LOCAL, _FAILURE), sets (_COLLECT), 2D variants (_2D).
 // Two-token options first: they are matched before their last token alone.
 constexpr std::array kGrammarOptions = {
-    "BEAM_OFFSET"sv, "CONSTRAINED_OFFSET"sv, "THERMAL_FRICTION"sv, "ORTHO_FRICTION"sv, "ID"sv,     "TITLE"sv,
-    "MPP"sv,         "OFFSET"sv,             "COLLECT"sv,          "2D"sv,             "LOCAL"sv,  "THERMAL"sv,
-    "MORTAR"sv,      "SMOOTH"sv,             "FAILURE"sv,
+    "BEAM_OFFSET"sv,
+    "CONSTRAINED_OFFSET"sv,
+    "THERMAL_FRICTION"sv,
+    "ORTHO_FRICTION"sv,
+    "ID"sv,
+    "TITLE"sv,
+    "MPP"sv,
+    "OFFSET"sv,
+    "COLLECT"sv,
+    "2D"sv,
+    "LOCAL"sv,
+    "THERMAL"sv,
+    "MORTAR"sv,
+    "SMOOTH"sv,
+    "FAILURE"sv,
 };
 
 // Options moved to the end by respellings: LS-DYNA reads them wherever they stand among the options.
@@ -65,8 +77,8 @@ std::string options_last(std::string_view key) {
     const std::vector<std::string_view> tokens = tokens_of(key);
     std::vector<std::string_view> kept, moved;
     for (std::size_t i = 0; i < tokens.size(); ++i) {
-        const bool movable = i > 0 && std::find(kMovableOptions.begin(), kMovableOptions.end(), tokens[i]) !=
-                                          kMovableOptions.end();
+        const bool movable =
+            i > 0 && std::find(kMovableOptions.begin(), kMovableOptions.end(), tokens[i]) != kMovableOptions.end();
         (movable ? moved : kept).push_back(tokens[i]);
     }
     kept.insert(kept.end(), moved.begin(), moved.end());
@@ -133,7 +145,8 @@ std::optional<NameWithOptions> known_with_options(std::string_view upper_name) {
         auto options = grammar_options(tokens, n);
         if (!options) continue;
         const std::string base = joined(tokens, 0, n);
-        if (base.size() > 1 && (laid_out(base) || known_by_name(base))) return NameWithOptions{base, std::move(*options)};
+        if (base.size() > 1 && (laid_out(base) || known_by_name(base)))
+            return NameWithOptions{base, std::move(*options)};
     }
     return std::nullopt;
 }

@@ -17,13 +17,15 @@ namespace sphdeck::keywords {
 namespace {
 
 struct KnownName {
-    std::string name;          // upper case with '*', options joined with '_'
-    std::string_view base;     // the keyword it belongs to (its canonical name)
-    int tier;                  // 0 hand-written, 1 generated, 2 known without layout: ties go to the first
-    std::size_t tokens;        // '_'-separated tokens in `name`
+    std::string name;       // upper case with '*', options joined with '_'
+    std::string_view base;  // the keyword it belongs to (its canonical name)
+    int tier;               // 0 hand-written, 1 generated, 2 known without layout: ties go to the first
+    std::size_t tokens;     // '_'-separated tokens in `name`
 };
 
-std::size_t token_count(std::string_view s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '_')) + 1; }
+std::size_t token_count(std::string_view s) {
+    return static_cast<std::size_t>(std::count(s.begin(), s.end(), '_')) + 1;
+}
 
 void add(std::vector<KnownName>& out, std::string name, std::string_view base, int tier) {
     const std::size_t tokens = token_count(name);
@@ -39,7 +41,8 @@ std::vector<KnownName> build_names() {
                  return s;
              }()) {
             add(out, std::string(spelling), k.name, 0);
-            for (const OptionSpec& o : k.options) add(out, std::string(spelling) + "_" + std::string(o.suffix), k.name, 0);
+            for (const OptionSpec& o : k.options)
+                add(out, std::string(spelling) + "_" + std::string(o.suffix), k.name, 0);
         }
     }
     for (const generated::LayoutEntry& e : generated::layouts()) {
@@ -190,8 +193,9 @@ std::string keyword_replacement(std::string_view written_name, std::string_view 
     // The author's '*' and case: all lower case stays lower case, anything else is written upper case.
     std::string_view core = written_name;
     if (!core.empty() && core.front() == '*') core.remove_prefix(1);
-    const bool lower = std::none_of(core.begin(), core.end(), [](char c) { return std::isupper(static_cast<unsigned char>(c)); }) &&
-                       std::any_of(core.begin(), core.end(), [](char c) { return std::islower(static_cast<unsigned char>(c)); });
+    const bool lower =
+        std::none_of(core.begin(), core.end(), [](char c) { return std::isupper(static_cast<unsigned char>(c)); }) &&
+        std::any_of(core.begin(), core.end(), [](char c) { return std::islower(static_cast<unsigned char>(c)); });
     std::string out(suggestion);
     if (lower)
         for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));

@@ -21,10 +21,10 @@ struct Registry {
 
 Registry build() {
     Registry r;
-    for (auto family : {tables::deck_keywords, tables::control_keywords, tables::parameter_include_keywords,
-                        tables::part_keywords, tables::section_keywords, tables::element_node_keywords,
-                        tables::material_keywords, tables::eos_keywords, tables::boundary_keywords,
-                        tables::define_keywords, tables::set_keywords, tables::load_initial_keywords}) {
+    for (auto family :
+         {tables::deck_keywords, tables::control_keywords, tables::parameter_include_keywords, tables::part_keywords,
+          tables::section_keywords, tables::element_node_keywords, tables::material_keywords, tables::eos_keywords,
+          tables::boundary_keywords, tables::define_keywords, tables::set_keywords, tables::load_initial_keywords}) {
         for (KeywordSchema& k : family()) r.schemas.push_back(std::move(k));
     }
     for (const KeywordSchema& k : r.schemas) {
@@ -89,7 +89,8 @@ std::optional<KeywordMatch> find_keyword(std::string_view full_name) {
     if (auto generated = generated::find_generated(key)) return generated;
     // Another spelling LS-DYNA reads as a laid-out keyword (a legacy name, _ID before other options).
     for (const std::string& other : respellings(key)) {
-        if (auto same = find_hand_written(other, std::string_view(other).substr(1)); same && same->unknown_options.empty())
+        if (auto same = find_hand_written(other, std::string_view(other).substr(1));
+            same && same->unknown_options.empty())
             return same;
         if (auto generated = generated::find_generated(other)) return generated;
     }
@@ -99,7 +100,6 @@ std::optional<KeywordMatch> find_keyword(std::string_view full_name) {
 namespace {
 
 std::optional<KeywordMatch> find_hand_written(const std::string& key, std::string_view core) {
-
     // Longest base name first: the whole name, then without its last token, and so on.
     std::size_t base_end = key.size();
     const KeywordSchema* schema = nullptr;

@@ -36,18 +36,18 @@ struct EnumChoice {
 };
 
 struct FieldSpec {
-    std::string_view name = {};     // as in the manual
-    std::uint16_t column = 1;       // 1-based first column, standard format
-    std::uint16_t width = 10;       // standard format
+    std::string_view name = {};  // as in the manual
+    std::uint16_t column = 1;    // 1-based first column, standard format
+    std::uint16_t width = 10;    // standard format
     FieldType type = FieldType::Integer;
-    std::optional<double> default_value = {};  // nullopt: no default
-    bool zero_is_default = false;   // an explicit 0 means "use the default"
-    bool required = false;          // blank is an error (DK008)
-    std::vector<EnumChoice> choices = {};       // empty: any value (subject to min/max)
-    std::optional<double> min = {}, max = {};   // inclusive range
-    std::string_view doc = {};      // one line
+    std::optional<double> default_value = {};    // nullopt: no default
+    bool zero_is_default = false;                // an explicit 0 means "use the default"
+    bool required = false;                       // blank is an error (DK008)
+    std::vector<EnumChoice> choices = {};        // empty: any value (subject to min/max)
+    std::optional<double> min = {}, max = {};    // inclusive range
+    std::string_view doc = {};                   // one line
     std::vector<std::string_view> aliases = {};  // other names of the field (MEMORY: "NMNEIGH")
-    std::string_view since = {};    // edition that introduced the field; empty: always / unknown
+    std::string_view since = {};                 // edition that introduced the field; empty: always / unknown
     // For Text fields: the default text ("MECH"; default_value stays empty) and the allowed
     // words (case-insensitive; empty: any text).
     std::string_view default_text = {};
@@ -60,7 +60,7 @@ struct FieldSpec {
     // types some manual F fields int). Findings still call it an integer field.
     bool pydyna_integer = false;
 
-    bool is_named(std::string_view n) const;  // name or alias, case-insensitive
+    bool is_named(std::string_view n) const;      // name or alias, case-insensitive
     const EnumChoice* choice(long long v) const;  // nullptr when v is not one of the choices
 };
 
@@ -117,8 +117,8 @@ struct CardSpec {
     std::vector<FieldSpec> fields = {};
     CardRepeat repeat = CardRepeat::Once;
     std::optional<CardCondition> present_if = {};  // nullopt: always present
-    std::uint16_t line_width = 80;  // significant columns in standard format
-    std::string_view since = {};    // edition that introduced the card
+    std::uint16_t line_width = 80;                 // significant columns in standard format
+    std::string_view since = {};                   // edition that introduced the card
     std::string_view doc = {};
     // Generated layouts only: from this card on the layout is not known (an undecidable condition,
     // a count read from values), so the rest of the block is not checked and nothing is reported.
@@ -129,10 +129,10 @@ struct CardSpec {
 
 // What a keyword option (a `_`-joined suffix of the keyword name, lsdyna-format.md §11) does.
 struct OptionSpec {
-    std::string_view suffix = {};                  // without '_': "TITLE", "ELLIPSE"
-    std::vector<std::string_view> aliases = {};    // old spellings: "TENSOR" for ELLIPSE
-    std::vector<CardSpec> cards_before = {};       // read before the base cards (title, id card)
-    std::vector<CardSpec> cards_after = {};        // read after the base cards
+    std::string_view suffix = {};                // without '_': "TITLE", "ELLIPSE"
+    std::vector<std::string_view> aliases = {};  // old spellings: "TENSOR" for ELLIPSE
+    std::vector<CardSpec> cards_before = {};     // read before the base cards (title, id card)
+    std::vector<CardSpec> cards_after = {};      // read after the base cards
     // Number of trailing base cards that cards_after replace: *SET_NODE_LIST_GENERATE reads
     // ranges instead of the id list.
     std::uint8_t replaces_last = 0;
@@ -142,10 +142,10 @@ struct OptionSpec {
 };
 
 struct KeywordSchema {
-    std::string_view name = {};  // canonical, upper case with '*': "*CONTROL_SPH"
+    std::string_view name = {};                  // canonical, upper case with '*': "*CONTROL_SPH"
     std::vector<std::string_view> aliases = {};  // "*MAT_009", "*CONTROL_TIME_STEP"
     std::vector<CardSpec> cards = {};
-    bool unique = false;    // may appear once per deck (DK018)
+    bool unique = false;  // may appear once per deck (DK018)
     std::string_view doc = {};
     std::vector<OptionSpec> options = {};
     // > 0: the last `repeat_group` base cards repeat together, in order, until the next keyword
@@ -184,7 +184,7 @@ std::uint32_t significant_width(const CardSpec& card, grammar::CardFormat format
 // A keyword name as written, split into its schema and options.
 struct KeywordMatch {
     const KeywordSchema* schema = nullptr;
-    std::vector<const OptionSpec*> options;         // in the order written
+    std::vector<const OptionSpec*> options;  // in the order written
     // Suffix tokens that are not options of the schema, as views into the name passed to
     // find_keyword. A match with unknown options is usually a different keyword that the tables
     // do not know (*CONTROL_SPH_INCOMPRESSIBLE): callers should treat it as unknown (DK001).

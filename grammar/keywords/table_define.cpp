@@ -18,9 +18,7 @@ std::vector<FieldSpec> box_fields() {
 
 // pydyna gives BOXID a default of 0 on *DEFINE_BOX, none on *DEFINE_BOX_SPH; a box is only
 // useful when something can reference it, so we require it on both.
-FieldSpec box_id() {
-    return {.name = "BOXID", .column = 1, .width = 10, .type = I, .required = true, .doc = "box id"};
-}
+FieldSpec box_id() { return {.name = "BOXID", .column = 1, .width = 10, .type = I, .required = true, .doc = "box id"}; }
 
 // `_LOCAL` (pydyna define_box_local.py, define_box_sph_local.py): the box is given in a local
 // system defined by two more cards after the base cards.
@@ -376,7 +374,8 @@ KeywordSchema sph_mesh_box() {
                              .width = 10,
                              .type = I,
                              .default_value = 0,
-                             .doc = "segment set splitting the box; its sign says which side keeps particles (0: none removed)",
+                             .doc =
+                                 "segment set splitting the box; its sign says which side keeps particles (0: none removed)",
                              .refers_to = "SET_SEGMENT"},
                             {.name = "SFSP",
                              .column = 61,
@@ -406,9 +405,8 @@ KeywordSchema define_curve() {
                              .width = 10,
                              .type = I,
                              .default_value = 0,
-                             .choices = {{0, "transient analysis only"},
-                                         {1, "stress initialisation only"},
-                                         {2, "both"}},
+                             .choices =
+                                 {{0, "transient analysis only"}, {1, "stress initialisation only"}, {2, "both"}},
                              .doc = "use in dynamic relaxation"},
                             {.name = "SFA",
                              .column = 21,

@@ -13,9 +13,7 @@ OptionSpec local_option() {
     };
 }
 
-OptionSpec noecho_option() {
-    return {.suffix = "NOECHO", .doc = "values are not echoed to the output files"};
-}
+OptionSpec noecho_option() { return {.suffix = "NOECHO", .doc = "values are not echoed to the output files"}; }
 
 KeywordSchema parameter() {
     return {
@@ -145,11 +143,8 @@ KeywordSchema include_path_relative() {
         .cards = {{
             .name = "Path",
             // pydyna gives this a single 512-character field; we keep the A80 card of *INCLUDE_PATH.
-            .fields = {{.name = "PATH",
-                        .column = 1,
-                        .width = 80,
-                        .type = A,
-                        .doc = "directory relative to the main file"}},
+            .fields =
+                {{.name = "PATH", .column = 1, .width = 80, .type = A, .doc = "directory relative to the main file"}},
             .repeat = CardRepeat::Repeated,
         }},
         .doc = "include search directories relative to the main file's folder",

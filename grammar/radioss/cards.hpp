@@ -79,11 +79,11 @@ struct FormatSpec {
 };
 
 struct KeywordSpec {
-    std::string_view name = {};              // canonical header prefix: "/PROP/SPH"
+    std::string_view name = {};                  // canonical header prefix: "/PROP/SPH"
     std::vector<std::string_view> aliases = {};  // other prefixes read alike: "/PROP/TYPE34"
-    bool title = true;                       // a title line follows the header (format 51 and later)
-    bool engine = false;                     // an engine keyword: list-directed (free) data lines
-    bool decoded = true;                     // false: known, kept as is (structural or not needed)
+    bool title = true;                           // a title line follows the header (format 51 and later)
+    bool engine = false;                         // an engine keyword: list-directed (free) data lines
+    bool decoded = true;                         // false: known, kept as is (structural or not needed)
     // Text past the last field is reported (DK006) as the starter's reader does (100213/100214);
     // false where the starter's listing shows it reads such text silently.
     bool trailing_checked = true;
@@ -91,13 +91,13 @@ struct KeywordSpec {
     // handles it as the family, and the header's segments after the family are its arguments.
     std::string_view family = {};
     std::string_view summary = {};
-    std::string_view source = {};            // where the layout comes from (CFG files of the starter)
-    bool generated = false;                  // from generated/radioss_layouts.cpp, not written by hand
+    std::string_view source = {};  // where the layout comes from (CFG files of the starter)
+    bool generated = false;        // from generated/radioss_layouts.cpp, not written by hand
     // A family's generic reading (/MAT: the density card of any law): where the starter's CFG files
     // lay out the law, its generated cards are checked instead and the builder reads their values
     // by name (keyword_lookup.cpp).
     bool fallback = false;
-    std::vector<FormatSpec> formats = {};    // newest first
+    std::vector<FormatSpec> formats = {};  // newest first
 
     // The format a deck of version `version` reads: the newest one not above it (the reader's
     // cascade 2026 → 2025 → … → 51 → 44 → 41), or the oldest one.

@@ -22,7 +22,10 @@ CardSpec density() { return once({R("RHO_I"), R("RHO_0")}); }
 
 KeywordSpec law(std::string_view name, std::vector<std::string_view> aliases, std::string_view summary,
                 std::vector<FormatSpec> formats) {
-    return {.name = name, .aliases = std::move(aliases), .family = "/MAT", .summary = summary,
+    return {.name = name,
+            .aliases = std::move(aliases),
+            .family = "/MAT",
+            .summary = summary,
             .formats = std::move(formats)};
 }
 
@@ -41,26 +44,32 @@ void add_material_keywords(std::vector<KeywordSpec>& out) {
     // matl22_dama.cfg, matl23_plas_dama.cfg, matl24_conc.cfg, matl27_plas_brit.cfg,
     // matl32_hill.cfg, matl36_plas_tab.cfg, matl44_cowper.cfg, matl49_steinb.cfg (E0).
     const FormatSpec elastic{0, {density(), young_poisson(), opaque()}};
-    const std::vector<std::vector<std::string_view>> elastic_laws = {
-        {"/MAT/LAW1", "/MAT/LAW01", "/MAT/ELAST"},
-        {"/MAT/LAW2", "/MAT/LAW02", "/MAT/PLAS_JOHNS", "/MAT/PLAS_ZERIL"},
-        {"/MAT/LAW4", "/MAT/LAW04", "/MAT/HYD_JCOOK"}, {"/MAT/LAW21", "/MAT/DPRAG"},
-        {"/MAT/LAW22", "/MAT/DAMA"},     {"/MAT/LAW23", "/MAT/PLAS_DAM"},
-        {"/MAT/LAW24", "/MAT/CONC"},     {"/MAT/LAW27", "/MAT/PLAS_BRIT"},
-        {"/MAT/LAW32", "/MAT/HILL"},     {"/MAT/LAW36", "/MAT/PLAS_TAB"},
-        {"/MAT/LAW44", "/MAT/COWPER"},   {"/MAT/LAW49", "/MAT/STEINB"}};
+    const std::vector<std::vector<std::string_view>> elastic_laws = {{"/MAT/LAW1", "/MAT/LAW01", "/MAT/ELAST"},
+                                                                     {"/MAT/LAW2", "/MAT/LAW02", "/MAT/PLAS_JOHNS",
+                                                                      "/MAT/PLAS_ZERIL"},
+                                                                     {"/MAT/LAW4", "/MAT/LAW04", "/MAT/HYD_JCOOK"},
+                                                                     {"/MAT/LAW21", "/MAT/DPRAG"},
+                                                                     {"/MAT/LAW22", "/MAT/DAMA"},
+                                                                     {"/MAT/LAW23", "/MAT/PLAS_DAM"},
+                                                                     {"/MAT/LAW24", "/MAT/CONC"},
+                                                                     {"/MAT/LAW27", "/MAT/PLAS_BRIT"},
+                                                                     {"/MAT/LAW32", "/MAT/HILL"},
+                                                                     {"/MAT/LAW36", "/MAT/PLAS_TAB"},
+                                                                     {"/MAT/LAW44", "/MAT/COWPER"},
+                                                                     {"/MAT/LAW49", "/MAT/STEINB"}};
     for (const auto& names : elastic_laws)
-        out.push_back(law(names[0], {names.begin() + 1, names.end()}, "elastic-plastic material: density, E, nu",
-                          {elastic}));
+        out.push_back(
+            law(names[0], {names.begin() + 1, names.end()}, "elastic-plastic material: density, E, nu", {elastic}));
 
     // LAW3 (matl3_hydpla.cfg): E nu, the yield card, then C0-C3 up to format 2017; from 2018 the
     // fourth card is Pmin and the coefficients moved to /EOS.
-    out.push_back(law("/MAT/LAW3", {"/MAT/LAW03", "/MAT/HYDPLA"}, "hydrodynamic elastic-plastic material",
-                      {{2018, {density(), young_poisson(), opaque()}},
-                       {0, {density(), young_poisson(), skipped_line(), once({R("C0"), R("C1"), R("C2"), R("C3")}),
-                            opaque()}}}));
+    out.push_back(
+        law("/MAT/LAW3", {"/MAT/LAW03", "/MAT/HYDPLA"}, "hydrodynamic elastic-plastic material",
+            {{2018, {density(), young_poisson(), opaque()}},
+             {0, {density(), young_poisson(), skipped_line(), once({R("C0"), R("C1"), R("C2"), R("C3")}), opaque()}}}));
     // LAW6 (mat_law6.cfg): the viscosity card, then C0-C3 up to format 2017 (2018: /EOS).
-    out.push_back(law("/MAT/LAW6", {"/MAT/LAW06", "/MAT/HYD_VISC", "/MAT/HYDRO", "/MAT/K-EPS"}, "hydrodynamic viscous fluid",
+    out.push_back(law("/MAT/LAW6", {"/MAT/LAW06", "/MAT/HYD_VISC", "/MAT/HYDRO", "/MAT/K-EPS"},
+                      "hydrodynamic viscous fluid",
                       {{2018, {density(), opaque()}},
                        {0, {density(), skipped_line(), once({R("C0"), R("C1"), R("C2"), R("C3")}), opaque()}}}));
 
@@ -75,8 +84,8 @@ void add_material_keywords(std::vector<KeywordSpec>& out) {
     out.push_back(law("/MAT/GAS", {}, "gas of a monitored volume (not checked)", {{0, {opaque()}}}));
     out.push_back(law("/MAT/LAW51", {"/MAT/MULTIMAT"}, "multi-material ALE law (not checked)", {{0, {opaque()}}}));
     out.push_back(law("/MAT/LAW151", {"/MAT/MULTIFLUID"}, "multi-fluid law (not checked)", {{0, {opaque()}}}));
-    out.push_back(law("/MAT/LAW20", {"/MAT/BIMAT"}, "bi-material law of two material ids (not checked)",
-                      {{0, {opaque()}}}));
+    out.push_back(
+        law("/MAT/LAW20", {"/MAT/BIMAT"}, "bi-material law of two material ids (not checked)", {{0, {opaque()}}}));
     out.push_back(law("/MAT/LAW37", {"/MAT/BIPHAS"}, "liquid-gas law: Psh, then the phases' cards (not checked)",
                       {{0, {once({R("Psh")}), opaque()}}}));
     out.push_back(law("/MAT/PLAS_PREDEF", {}, "predefined elastic-plastic material named by its first card",

@@ -19,7 +19,8 @@ void add_mesh_keywords(std::vector<KeywordSpec>& out) {
                    .formats = {{2021, {once({L("Runname")}), once({I("Invers")}), units_input, units_work}},
                                {100, {once({L("Runname")}), once({I("Invers"), I("Irun")}), units_input, units_work}},
                                {0, {once({L("Runname")}), once({I("Invers"), I("Irun")})}}}});
-    out.push_back({.name = "/END", .title = false, .decoded = false, .summary = "end of the deck", .formats = {{0, {}}}});
+    out.push_back(
+        {.name = "/END", .title = false, .decoded = false, .summary = "end of the deck", .formats = {{0, {}}}});
     out.push_back({.name = "/NODE",
                    .title = false,
                    .summary = "nodes: id and coordinates",
@@ -37,23 +38,24 @@ void add_mesh_keywords(std::vector<KeywordSpec>& out) {
                                {51, {once({I("N2D3D"), gap(10), I("Iparith"), I("Isubcyc")})}},
                                {0, {once({I("N2D3D"), gap(10), I("Iparith"), I("Isubcyc")})}}}});
     // CFG radioss2025/CARDS/def_solid.cfg: Iframe in cell 8 from format 51; V4 has none.
-    out.push_back({.name = "/DEF_SOLID",
-                   .title = false,
-                   .summary = "default solid formulation (Isolid, Iframe)",
-                   .formats = {{2025,
-                                {once({I("Isolid"), I("Ismstr"), I("Icpre"), S(), I("Itetra4"), I("Itetra10"),
-                                       I("Imas"), I("Iframe"), I("Icontrol")})}},
-                               {2021,
-                                {once({I("Isolid"), I("Ismstr"), I("Icpre"), S(), I("Itetra4"), I("Itetra10"),
-                                       I("Imas"), I("Iframe")})}},
-                               {2019,
-                                {once({I("Isolid"), I("Ismstr"), S(), I("Istrain"), I("Itetra4"), I("Itetra10"),
-                                       I("Imas"), I("Iframe")})}},
-                               {120, {once({I("Isolid"), I("Ismstr"), S(), I("Istrain"), S(), S(), I("Imas"), I("Iframe")})}},
-                               {100, {once({I("Isolid"), I("Ismstr"), S(), I("Istrain"), S(), S(), S(), I("Iframe")})}},
-                               {51, {once({I("Isolid"), I("Ismstr"), S(), S(), S(), S(), S(), I("Iframe")})}},
-                               {44, {once({I("Isolid"), I("Ismstr"), I("Iplas")})}},
-                               {0, {once({I("Isolid"), I("Ismstr")})}}}});
+    out.push_back(
+        {.name = "/DEF_SOLID",
+         .title = false,
+         .summary = "default solid formulation (Isolid, Iframe)",
+         .formats = {{2025,
+                      {once({I("Isolid"), I("Ismstr"), I("Icpre"), S(), I("Itetra4"), I("Itetra10"), I("Imas"),
+                             I("Iframe"), I("Icontrol")})}},
+                     {2021,
+                      {once({I("Isolid"), I("Ismstr"), I("Icpre"), S(), I("Itetra4"), I("Itetra10"), I("Imas"),
+                             I("Iframe")})}},
+                     {2019,
+                      {once({I("Isolid"), I("Ismstr"), S(), I("Istrain"), I("Itetra4"), I("Itetra10"), I("Imas"),
+                             I("Iframe")})}},
+                     {120, {once({I("Isolid"), I("Ismstr"), S(), I("Istrain"), S(), S(), I("Imas"), I("Iframe")})}},
+                     {100, {once({I("Isolid"), I("Ismstr"), S(), I("Istrain"), S(), S(), S(), I("Iframe")})}},
+                     {51, {once({I("Isolid"), I("Ismstr"), S(), S(), S(), S(), S(), I("Iframe")})}},
+                     {44, {once({I("Isolid"), I("Ismstr"), I("Iplas")})}},
+                     {0, {once({I("Isolid"), I("Ismstr")})}}}});
 
     // Solid elements: /BRICK/part_ID etc., one element per line (/TETRA10: two lines).
     out.push_back({.name = "/BRICK",
@@ -62,20 +64,19 @@ void add_mesh_keywords(std::vector<KeywordSpec>& out) {
                    .formats = {{0,
                                 {repeated({I("brick_ID"), I("node_ID1"), I("node_ID2"), I("node_ID3"), I("node_ID4"),
                                            I("node_ID5"), I("node_ID6"), I("node_ID7"), I("node_ID8")})}}}});
-    out.push_back({.name = "/TETRA4",
-                   .title = false,
-                   .summary = "4-node tetras of a part",
-                   .formats = {{0,
-                                {repeated({I("tetra_ID"), I("node_ID1"), I("node_ID2"), I("node_ID3"),
-                                           I("node_ID4")})}}}});
-    out.push_back({.name = "/TETRA10",
-                   .title = false,
-                   .summary = "10-node tetras of a part (id line, then the ten nodes)",
-                   .formats = {{0,
-                                {repeated({I("tetra_ID")}),
-                                 repeated({I("node_ID1"), I("node_ID2"), I("node_ID3"), I("node_ID4"), I("node_ID5"),
-                                           I("node_ID6"), I("node_ID7"), I("node_ID8"), I("node_ID9"),
-                                           I("node_ID10")})}}}});
+    out.push_back(
+        {.name = "/TETRA4",
+         .title = false,
+         .summary = "4-node tetras of a part",
+         .formats = {{0, {repeated({I("tetra_ID"), I("node_ID1"), I("node_ID2"), I("node_ID3"), I("node_ID4")})}}}});
+    out.push_back(
+        {.name = "/TETRA10",
+         .title = false,
+         .summary = "10-node tetras of a part (id line, then the ten nodes)",
+         .formats = {{0,
+                      {repeated({I("tetra_ID")}),
+                       repeated({I("node_ID1"), I("node_ID2"), I("node_ID3"), I("node_ID4"), I("node_ID5"),
+                                 I("node_ID6"), I("node_ID7"), I("node_ID8"), I("node_ID9"), I("node_ID10")})}}}});
     out.push_back({.name = "/PENTA6",
                    .title = false,
                    .summary = "6-node pentas of a part",
@@ -128,11 +129,12 @@ void add_mesh_keywords(std::vector<KeywordSpec>& out) {
     }
 
     // Structural or global keywords kept as they are.
-    for (std::string_view name : {"/TITLE", "/UNIT", "/IOFLAG", "/SPMD", "/RANDOM", "/DEF_SHELL", "/PARAMETER",
-                                  "/SUBSET", "/SURF", "/LINE", "/GRSHEL", "/GRBRIC", "/GRPART", "/BCS", "/IMPVEL",
-                                  "/INIVEL", "/GRAV", "/FUNCT", "/INTER", "/RWALL", "/TH", "/SENSOR", "/KEY"})
-        out.push_back({.name = name, .title = false, .decoded = false, .summary = "kept as is",
-                       .formats = {{0, {opaque()}}}});
+    for (std::string_view name :
+         {"/TITLE", "/UNIT",  "/IOFLAG", "/SPMD",   "/RANDOM", "/DEF_SHELL", "/PARAMETER", "/SUBSET",
+          "/SURF",  "/LINE",  "/GRSHEL", "/GRBRIC", "/GRPART", "/BCS",       "/IMPVEL",    "/INIVEL",
+          "/GRAV",  "/FUNCT", "/INTER",  "/RWALL",  "/TH",     "/SENSOR",    "/KEY"})
+        out.push_back(
+            {.name = name, .title = false, .decoded = false, .summary = "kept as is", .formats = {{0, {opaque()}}}});
 }
 
 }  // namespace sphdeck::grammar::radioss::detail

@@ -30,12 +30,11 @@ KeywordSpec prop_sph() {
 KeywordSpec prop_solid() {
     const auto card1_2022 = once({I("Isolid"), I("Ismstr"), I("Iale"), I("Icpre"), I("Itetra10"), I("Inpts"),
                                   I("Itetra4"), I("Iframe"), R("Dn")});
-    const auto card1_2019 = once({I("Isolid"), I("Ismstr"), S(), I("Icpre"), I("Itetra10"), I("Inpts"),
-                                  I("Itetra4"), I("Iframe"), R("Dn")});
-    const auto card1_100 = once({I("Isolid"), I("Ismstr"), S(), I("Icpre"), S(), I("Inpts"), I("Itetra4"),
-                                 I("Iframe"), R("Dn")});
-    const auto card1_51 = once({I("Isolid"), I("Ismstr"), S(), I("Icpre"), S(), I("Inpts"), S(), I("Iframe"),
-                                R("Dn")});
+    const auto card1_2019 = once(
+        {I("Isolid"), I("Ismstr"), S(), I("Icpre"), I("Itetra10"), I("Inpts"), I("Itetra4"), I("Iframe"), R("Dn")});
+    const auto card1_100 =
+        once({I("Isolid"), I("Ismstr"), S(), I("Icpre"), S(), I("Inpts"), I("Itetra4"), I("Iframe"), R("Dn")});
+    const auto card1_51 = once({I("Isolid"), I("Ismstr"), S(), I("Icpre"), S(), I("Inpts"), S(), I("Iframe"), R("Dn")});
     const auto card2 = once({R("qa"), R("qb"), R("h"), R("Lambda"), R("Mu")});
     const auto card2_short = once({R("qa"), R("qb"), R("h")});
     const auto card3_2023 = once({R("deltaT_min"), R("vdef_min"), R("vdef_max"), R("ASP_max"), R("COL_min")});
@@ -52,17 +51,17 @@ KeywordSpec prop_solid() {
                         {120, {card1_100, card2, card3_120}},
                         {100, {card1_100, card2_short, once({R("deltaT_min"), I("Istrain")})}},
                         {51, {card1_51, card2_short, once({R("deltaT_min")})}},
-                        {44, {once({I("Isolid"), I("Ismstr"), I("Iplas"), I("Icpre"), I("Icstr"), R("Dn")}), card2_short}},
+                        {44,
+                         {once({I("Isolid"), I("Ismstr"), I("Iplas"), I("Icpre"), I("Icstr"), R("Dn")}), card2_short}},
                         {0, {once({I("Isolid"), I("Ismstr")}), card2_short}}}};
 }
 
 // /PROP/TYPE6 (SOL_ORTH), CFG radioss2025/PROP/prop_p6_sol_orth.cfg: as TYPE14 with the
 // orthotropy cards; the SOL2SPH card is the sixth from format 2017.
 KeywordSpec prop_sol_orth() {
-    const auto card1_2020 = once({I("Isolid"), I("Ismstr"), S(), I("Icpre"), I("Itetra10"), I("Inpts"),
-                                  I("Itetra4"), I("Iframe"), R("Dn")});
-    const auto card1_51 = once({I("Isolid"), I("Ismstr"), S(), I("Icpre"), S(), I("Inpts"), S(), I("Iframe"),
-                                R("Dn")});
+    const auto card1_2020 = once(
+        {I("Isolid"), I("Ismstr"), S(), I("Icpre"), I("Itetra10"), I("Inpts"), I("Itetra4"), I("Iframe"), R("Dn")});
+    const auto card1_51 = once({I("Isolid"), I("Ismstr"), S(), I("Icpre"), S(), I("Inpts"), S(), I("Iframe"), R("Dn")});
     const auto card2 = once({R("qa"), R("qb"), R("h")});
     const auto card3 = once({R("Vx"), R("Vy"), R("Vz"), I("skew_ID"), I("Ip"), I("Iorth")});
     const auto card4 = once({R("Phi"), R("Px"), R("Py"), R("Pz")});
@@ -74,16 +73,17 @@ KeywordSpec prop_sol_orth() {
     return {.name = "/PROP/TYPE6",
             .aliases = {"/PROP/SOL_ORTH"},
             .summary = "orthotropic solid property; Ndir and sphpartID give SOL2SPH particles",
-            .formats = {{2025, {card1_2020, card2, card3, card4, card5_2023, once({I("Ndir"), I("sphpartID"), I("Icontrol")})}},
-                        {2023, {card1_2020, card2, card3, card4, card5_2023, sol2sph}},
-                        {2021, {card1_2020, card2, card3, card4, card5_140, sol2sph}},
-                        {2020, {card1_2020, card2, card3, card4_phi, card5_140, sol2sph}},
-                        {2017, {card1_51, card2, card3, card4_phi, card5_140, sol2sph}},
-                        {140, {card1_51, card2, card3, card4_phi, card5_140}},
-                        {120, {card1_51, card2, card3, card4_phi, once({R("deltaT_min"), I("Istrain")})}},
-                        {51, {card1_51, card2, card3, card4_phi, once({R("deltaT_min")})}},
-                        {44, {once({I("Isolid"), I("Ismstr"), I("Iplas"), I("Dn")}), card2, v4_card3}},
-                        {0, {once({I("Isolid"), I("Ismstr")}), card2, v4_card3}}}};
+            .formats = {
+                {2025, {card1_2020, card2, card3, card4, card5_2023, once({I("Ndir"), I("sphpartID"), I("Icontrol")})}},
+                {2023, {card1_2020, card2, card3, card4, card5_2023, sol2sph}},
+                {2021, {card1_2020, card2, card3, card4, card5_140, sol2sph}},
+                {2020, {card1_2020, card2, card3, card4_phi, card5_140, sol2sph}},
+                {2017, {card1_51, card2, card3, card4_phi, card5_140, sol2sph}},
+                {140, {card1_51, card2, card3, card4_phi, card5_140}},
+                {120, {card1_51, card2, card3, card4_phi, once({R("deltaT_min"), I("Istrain")})}},
+                {51, {card1_51, card2, card3, card4_phi, once({R("deltaT_min")})}},
+                {44, {once({I("Isolid"), I("Ismstr"), I("Iplas"), I("Dn")}), card2, v4_card3}},
+                {0, {once({I("Isolid"), I("Ismstr")}), card2, v4_card3}}}};
 }
 
 }  // namespace

@@ -27,10 +27,10 @@ KeywordSpec sph_inout() {
     const CardCondition outlet = +[](const EarlierValues& e) { return e("Itype") == 2; };
     const CardCondition frontier = +[](const EarlierValues& e) { return e("Itype") == 3; };
     const CardCondition by_points = +[](const EarlierValues& e) {
-        return e("Itype") != 1 && e("surf_ID") == 0 &&
-               (e("node_ID1") == 0 || e("node_ID2") == 0 || e("node_ID3") == 0);
+        return e("Itype") != 1 && e("surf_ID") == 0 && (e("node_ID1") == 0 || e("node_ID2") == 0 || e("node_ID3") == 0);
     };
-    const FieldSpec itype = I("Itype", "1 inlet (needs surf_ID), 2 outlet, 3 non-reflecting frontier, 4 control section");
+    const FieldSpec itype =
+        I("Itype", "1 inlet (needs surf_ID), 2 outlet, 3 non-reflecting frontier, 4 control section");
     const FieldSpec dist = R("Dist", "particle control distance from the surface");
     const auto by_itype = [&](std::vector<CardSpec> cards) {
         cards.push_back(when(once({I("fct_IDr"), R("Fscaler", "0 with fct_IDr: 1"), gap(30), I("fct_IDE"),
@@ -39,8 +39,8 @@ KeywordSpec sph_inout() {
         cards.push_back(when(once({I("fct_IDVn")}), inlet, "Itype 1"));
         cards.push_back(when(once({gap(30), I("fct_IDP"), R("FscaleP", "0 with fct_IDP: 1")}), outlet, "Itype 2"));
         cards.push_back(when(once({L("blank")}), outlet, "Itype 2: a blank line"));
-        cards.push_back(when(once({gap(30), I("fct_IDP"), R("FscaleP", "0 with fct_IDP: 1"), R("Lc")}), frontier,
-                             "Itype 3"));
+        cards.push_back(
+            when(once({gap(30), I("fct_IDP"), R("FscaleP", "0 with fct_IDP: 1"), R("Lc")}), frontier, "Itype 3"));
         cards.push_back(when(once({L("blank")}), frontier, "Itype 3: a blank line"));
         cards.push_back(opaque());  // further lines: kept as text
         return cards;
@@ -49,12 +49,12 @@ KeywordSpec sph_inout() {
     return {.name = "/SPH/INOUT",
             .summary = "SPH inlet, outlet or non-reflecting frontier",
             .source = "CFG radioss140/LOADS/sph_inout.cfg (formats 140, 110, 90, 51); starter hm_read_sphio.F",
-            .formats = {{140, by_itype({once({itype, I("part_ID"), I("surf_ID", "0: the frontier by nodes or points"),
-                                              dist, I("node_ID1"), I("node_ID2"), I("node_ID3"),
-                                              R("Fcut", "0: no filter")}),
-                                        when(once({R("XM"), R("YM"), R("ZM")}), by_points, points),
-                                        when(once({R("XM1"), R("YM1"), R("ZM1")}), by_points, points),
-                                        when(once({R("XM2"), R("YM2"), R("ZM2")}), by_points, points)})},
+            .formats = {{140,
+                         by_itype({once({itype, I("part_ID"), I("surf_ID", "0: the frontier by nodes or points"), dist,
+                                         I("node_ID1"), I("node_ID2"), I("node_ID3"), R("Fcut", "0: no filter")}),
+                                   when(once({R("XM"), R("YM"), R("ZM")}), by_points, points),
+                                   when(once({R("XM1"), R("YM1"), R("ZM1")}), by_points, points),
+                                   when(once({R("XM2"), R("YM2"), R("ZM2")}), by_points, points)})},
                         {0, by_itype({once({itype, I("part_ID"), I("surf_ID"), dist})})}}};
 }
 
@@ -116,13 +116,13 @@ void add_sph_keywords(std::vector<KeywordSpec>& out) {
                    .engine = true,
                    .summary = "nodal time step: /DT/NODA/<Keyword3>[/1], scale and minimum",
                    .formats = {{0, {once({R("DTsca"), R("DTmin"), R("percent_addmass")}), once({I("grpart_ID")})}}}});
-    out.push_back({.name = "/DT/BRICK",
-                   .title = false,
-                   .engine = true,
-                   .summary = "brick time step: /DT/BRICK/DEL deletes bricks (releases SOL2SPH particles)",
-                   .formats = {{0,
-                                {once({R("DTsca"), R("DTmin")}),
-                                 once({R("COL_min"), R("Vdef_min"), R("ASP_max"), R("Vdef_max")})}}}});
+    out.push_back(
+        {.name = "/DT/BRICK",
+         .title = false,
+         .engine = true,
+         .summary = "brick time step: /DT/BRICK/DEL deletes bricks (releases SOL2SPH particles)",
+         .formats = {
+             {0, {once({R("DTsca"), R("DTmin")}), once({R("COL_min"), R("Vdef_min"), R("ASP_max"), R("Vdef_max")})}}}});
     out.push_back({.name = "/DT",
                    .title = false,
                    .engine = true,
@@ -130,7 +130,11 @@ void add_sph_keywords(std::vector<KeywordSpec>& out) {
                    .formats = {{0, {once({R("DTsca"), R("DTmin")})}}}});
     for (std::string_view name : {"/RUN", "/VERS", "/TFILE", "/ANIM", "/H3D", "/PRINT", "/STOP", "/MON", "/RFILE",
                                   "/OUTP", "/PARITH", "/STATE", "/KILL", "/ADYREL", "/DTIX", "/MADYMO", "/CHKPT"})
-        out.push_back({.name = name, .title = false, .engine = true, .decoded = false, .summary = "engine option",
+        out.push_back({.name = name,
+                       .title = false,
+                       .engine = true,
+                       .decoded = false,
+                       .summary = "engine option",
                        .formats = {{0, {opaque()}}}});
 }
 

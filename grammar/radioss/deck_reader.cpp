@@ -109,7 +109,9 @@ void DeckReader::on_header(const char* begin, const char* end) {
                block.span);
     if (indent > 0)  // safe: sphdeck reads the line as this header; in column 1 the starter does too
         deck_.diagnostics.back().fixes.push_back(
-            {"start the header line in column 1", true, {{Span{f.id, f.line, 1, static_cast<std::uint32_t>(indent + 1)}, ""}}});
+            {"start the header line in column 1",
+             true,
+             {{Span{f.id, f.line, 1, static_cast<std::uint32_t>(indent + 1)}, ""}}});
     deck_.blocks.push_back(std::move(block));
     if (deck_.blocks.back().keyword == "/END") {
         ended_ = true;
@@ -164,8 +166,8 @@ void DeckReader::on_include(const char* begin, const char* end, std::string_view
     std::string_view name = trim(written);
     if (name.size() >= 2 && (name.front() == '"' || name.front() == '\'') && name.back() == name.front())
         name = name.substr(1, name.size() - 2);
-    const auto column = static_cast<std::uint32_t>(std::string_view(begin, static_cast<std::size_t>(end - begin))
-                                                       .find(name) + 1);
+    const auto column =
+        static_cast<std::uint32_t>(std::string_view(begin, static_cast<std::size_t>(end - begin)).find(name) + 1);
     const Span where{f.id, f.line, column, column + static_cast<std::uint32_t>(std::max<std::size_t>(name.size(), 1))};
     const std::string file_name(name);
     if (file_name.empty()) {
@@ -181,8 +183,8 @@ void DeckReader::on_include(const char* begin, const char* end, std::string_view
     }
     const SourceFile& parent = deck_.sources.file(f.id);
     std::vector<std::filesystem::path> paths(options_.include_paths.begin(), options_.include_paths.end());
-    dyna::IncludeSearch search{std::filesystem::path(parent.path).parent_path(), main_directory_, paths, options_.overlay,
-                               std::vector<std::string>(paths.size(), "-I or include-paths")};
+    dyna::IncludeSearch search{std::filesystem::path(parent.path).parent_path(), main_directory_, paths,
+                               options_.overlay, std::vector<std::string>(paths.size(), "-I or include-paths")};
     auto resolved = dyna::resolve_include(file_name, search);
     if (!resolved) {
         deck_.diagnostics.push_back(dyna::include_not_found(file_name, where, search, false, true));

@@ -63,8 +63,8 @@ private:
     // READ_STATUS_SINGLE_KEYWORD), so an included file's lines before its first header belong
     // to no block (QA LOI13: its /GRNOD/NODE keeps 45 nodes though qadiags.inc follows it).
     std::optional<std::size_t> block_;
-    bool ended_ = false;                // after /END: the rest of the deck is ignored
-    DroppedAfterEnd dropped_;           // the blocks that are (DK017)
+    bool ended_ = false;       // after /END: the rest of the deck is ignored
+    DroppedAfterEnd dropped_;  // the blocks that are (DK017)
 public:
     // After the deck's last file: the warning for blocks after /END (grammar/dropped_after_end.hpp).
     void report_dropped_blocks();

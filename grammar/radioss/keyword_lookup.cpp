@@ -16,14 +16,13 @@ namespace {
 // KEY0 of the engine's freform.F (OpenRadioss engine/source/input): the first five characters of
 // a header's first segment, blank-padded, must equal one of them.
 constexpr std::array<std::string_view, 81> engine_keys = {
-    "RUN",   "TITLE", "DT",    "TFILE", "PRINT", "RFILE", "VERS",  "ALE",   "DEL",   "VEL",   "BCS",
-    "BCSR",  "INTER", "DTIX",  "IMPL",  "FUNCT", "FLSEC", "DYREL", "KEREL", "RBODY", "ANIM",  "DEBUG",
-    "OUTP",  "ALESU", "PROC",  "@TFIL", "DELIN", "PARIT", "INIV",  "UPWM",  "MON",   "DT1",   "INCMP",
-    "TH",    "STOP",  "KILL",  "MADYM", "SPMD",  "RAD2R", "DAMP",  "ATFIL", "BTFIL", "CTFIL", "DTFIL",
-    "ETFIL", "FTFIL", "GTFIL", "HTFIL", "ITFIL", "RERUN", "FXINP", "EIG",   "FVMBA", "STATE", "SHVER",
-    "ABF",   "DTSDE", "AABF",  "BABF",  "CABF",  "DABF",  "EABF",  "FABF",  "GABF",  "HABF",  "IABF",
-    "UPWIN", "THERM", "H3D",   "REPOR", "NEGVO", "ADYRE", "DT1TE", "PERF",  "DYNAI", "DTTSH", "MASS",
-    "SENS",  "VIPER", "PROFI", "ALE"};
+    "RUN",   "TITLE", "DT",    "TFILE", "PRINT", "RFILE", "VERS",  "ALE",   "DEL",   "VEL",   "BCS",   "BCSR",
+    "INTER", "DTIX",  "IMPL",  "FUNCT", "FLSEC", "DYREL", "KEREL", "RBODY", "ANIM",  "DEBUG", "OUTP",  "ALESU",
+    "PROC",  "@TFIL", "DELIN", "PARIT", "INIV",  "UPWM",  "MON",   "DT1",   "INCMP", "TH",    "STOP",  "KILL",
+    "MADYM", "SPMD",  "RAD2R", "DAMP",  "ATFIL", "BTFIL", "CTFIL", "DTFIL", "ETFIL", "FTFIL", "GTFIL", "HTFIL",
+    "ITFIL", "RERUN", "FXINP", "EIG",   "FVMBA", "STATE", "SHVER", "ABF",   "DTSDE", "AABF",  "BABF",  "CABF",
+    "DABF",  "EABF",  "FABF",  "GABF",  "HABF",  "IABF",  "UPWIN", "THERM", "H3D",   "REPOR", "NEGVO", "ADYRE",
+    "DT1TE", "PERF",  "DYNAI", "DTTSH", "MASS",  "SENS",  "VIPER", "PROFI", "ALE"};
 
 // Read by the deck reader itself, no CFG file's HEADER (reader/source/cfgio mv_solver_input_infos.cpp:
 // //SUBMODEL, //ENDSUB, /KEY, #enddata).
@@ -174,9 +173,8 @@ bool is_engine_only_key(std::string_view header) {
 
 bool is_engine_key(std::string_view header) {
     if (header.size() < 2 || header[0] != '/') return false;
-    std::string_view first = header.substr(1, header.find('/', 1) == std::string_view::npos
-                                                  ? std::string_view::npos
-                                                  : header.find('/', 1) - 1);
+    std::string_view first = header.substr(1, header.find('/', 1) == std::string_view::npos ? std::string_view::npos
+                                                                                            : header.find('/', 1) - 1);
     first = first.substr(0, 5);
     return std::find(engine_keys.begin(), engine_keys.end(), first) != engine_keys.end();
 }

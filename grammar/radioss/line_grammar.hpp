@@ -41,4 +41,3 @@ struct line : pegtl::sor<empty_line, pegtl::seq<line_body, pegtl::opt<pegtl::one
 struct file : pegtl::seq<pegtl::opt<byte_order_mark>, pegtl::until<pegtl::eof, line>> {};
 
 }  // namespace sphdeck::grammar::radioss::rules
-

@@ -25,22 +25,30 @@ struct action : pegtl::nothing<Rule> {};
 template <>
 struct action<rules::empty_line> {
     template <typename Input>
-    static void apply(const Input& in, DeckReader& r) { r.on_empty(in.begin()); }
+    static void apply(const Input& in, DeckReader& r) {
+        r.on_empty(in.begin());
+    }
 };
 template <>
 struct action<rules::comment_line> {
     template <typename Input>
-    static void apply(const Input& in, DeckReader& r) { r.on_comment(in.begin(), in.end()); }
+    static void apply(const Input& in, DeckReader& r) {
+        r.on_comment(in.begin(), in.end());
+    }
 };
 template <>
 struct action<rules::header_path> {
     template <typename Input>
-    static void apply(const Input& in, DeckReader& r) { r.header_path = in.begin(); }
+    static void apply(const Input& in, DeckReader& r) {
+        r.header_path = in.begin();
+    }
 };
 template <>
 struct action<rules::header_line> {
     template <typename Input>
-    static void apply(const Input& in, DeckReader& r) { r.on_header(in.begin(), in.end()); }
+    static void apply(const Input& in, DeckReader& r) {
+        r.on_header(in.begin(), in.end());
+    }
 };
 template <>
 struct action<rules::include_line> {
@@ -54,12 +62,16 @@ struct action<rules::include_line> {
 template <>
 struct action<rules::enddata_line> {
     template <typename Input>
-    static void apply(const Input& in, DeckReader& r) { r.on_enddata(in.begin(), in.end()); }
+    static void apply(const Input& in, DeckReader& r) {
+        r.on_enddata(in.begin(), in.end());
+    }
 };
 template <>
 struct action<rules::data_line> {
     template <typename Input>
-    static void apply(const Input& in, DeckReader& r) { r.on_data(in.begin(), in.end()); }
+    static void apply(const Input& in, DeckReader& r) {
+        r.on_data(in.begin(), in.end());
+    }
 };
 
 bool ends_with(std::string_view s, std::string_view suffix) {
@@ -77,15 +89,19 @@ void check_first_line(RawDeck& deck, FileId main) {
     std::string_view text = f.text;
     if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
     std::string_view first = text.substr(0, text.find('\n'));
-    while (!first.empty() && (first.back() == '\r' || first.back() == ' ' || first.back() == '\t')) first.remove_suffix(1);
+    while (!first.empty() && (first.back() == '\r' || first.back() == ' ' || first.back() == '\t'))
+        first.remove_suffix(1);
     if (!first.empty() && (first.front() == '#' || first.front() == '$')) return;
     const auto width = static_cast<std::uint32_t>(std::max<std::size_t>(first.size(), 1));
     std::string found = first.empty() ? std::string("an empty line")
                                       : "'" + std::string(first.substr(0, std::min<std::size_t>(first.size(), 40))) +
                                             (first.size() > 40 ? "...'" : "'");
-    deck.diagnostics.push_back({"RAD001", diag::Severity::Error,
-                                "first line is " + found + "; a starter deck begins with the comment line #RADIOSS STARTER",
-                                Span{main, 1, 1, width + 1}, {}});
+    deck.diagnostics.push_back(
+        {"RAD001",
+         diag::Severity::Error,
+         "first line is " + found + "; a starter deck begins with the comment line #RADIOSS STARTER",
+         Span{main, 1, 1, width + 1},
+         {}});
 }
 
 void read_one(RawDeck& deck, SourceFile file, const fs::path& directory, const ReaderOptions& options) {
@@ -118,8 +134,11 @@ void read_engine(RawDeck& deck, const std::string& starter_name, const fs::path&
     try {
         engine.text = dyna::read_include_text(engine.path, options.overlay, options.cache);
     } catch (const std::exception& e) {
-        deck.diagnostics.push_back({"DK010", diag::Severity::Error,
-                                    "engine deck '" + engine.display_name + "' cannot be read: " + e.what(), Span{}, {}});
+        deck.diagnostics.push_back({"DK010",
+                                    diag::Severity::Error,
+                                    "engine deck '" + engine.display_name + "' cannot be read: " + e.what(),
+                                    Span{},
+                                    {}});
         return;
     }
     read_one(deck, std::move(engine), directory, options);
@@ -128,8 +147,9 @@ void read_engine(RawDeck& deck, const std::string& starter_name, const fs::path&
 RawDeck read_main(SourceFile main, const fs::path& directory, const ReaderOptions& options) {
     RawDeck deck;
     std::size_t newlines = 0;
-    for (const char* p = main.text.data(); (p = static_cast<const char*>(std::memchr(
-             p, '\n', static_cast<std::size_t>(main.text.data() + main.text.size() - p))));
+    for (const char* p = main.text.data();
+         (p = static_cast<const char*>(
+              std::memchr(p, '\n', static_cast<std::size_t>(main.text.data() + main.text.size() - p))));
          ++p)
         ++newlines;
     deck.lines.reserve(newlines + 1);
