@@ -59,6 +59,28 @@ double pair_stiffness(const Particles& s, std::size_t i, std::size_t j, const Pa
     return k / std::max(1e-20, shrink * shrink);
 }
 
+// Calls real(i, j, pair) once for each pair of interacting real particles within reach (the half list
+// names each once) and ghost(i, j, pair) for each interacting ghost within reach of a real particle i, in
+// the list's order: the velocity gradient and the nodal stiffness walk the pairs alike.
+template <typename RealPair, typename GhostPair>
+void for_each_interacting_pair(const Particles& s, const NeighbourList& list, RealPair&& real, GhostPair&& ghost) {
+    for (std::size_t i = 0; i < s.real; ++i) {
+        if (!s.interacting[i]) continue;
+        for (std::uint32_t k = list.forward_offsets[i]; k < list.forward_offsets[i + 1]; ++k) {
+            const std::uint32_t j = list.forward[k];
+            if (!s.interacting[j]) continue;
+            const Pair p = pair(s, i, j);
+            if (p.inside) real(i, std::size_t(j), p);
+        }
+        for (std::uint32_t k = list.ghost_offsets[i]; k < list.ghost_offsets[i + 1]; ++k) {
+            const std::uint32_t j = list.ghost[k];
+            if (!s.interacting[j]) continue;
+            const Pair p = pair(s, i, j);
+            if (p.inside) ghost(i, std::size_t(j), p);
+        }
+    }
+}
+
 }  // namespace
 
 double radioss_particle_time_step(const Particles& s, const NeighbourList& list, double qa, double qb, int threads) {
@@ -100,22 +122,12 @@ RadiossGradient radioss_velocity_gradient(const Particles& s, const NeighbourLis
         sums[i][4] += volume * volume * (p.v[0] * p.v[0] + p.v[1] * p.v[1] + p.v[2] * p.v[2]) *
                       (p.g[0] * p.g[0] + p.g[1] * p.g[1] + p.g[2] * p.g[2]);
     };
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!s.interacting[i]) continue;
-        for (std::uint32_t k = list.forward_offsets[i]; k < list.forward_offsets[i + 1]; ++k) {
-            const std::uint32_t j = list.forward[k];
-            if (!s.interacting[j]) continue;
-            const Pair p = pair(s, i, j);
-            if (!p.inside) continue;
+    for_each_interacting_pair(
+        s, list,
+        [&](std::size_t i, std::size_t j, const Pair& p) {
             add(i, s.m[j] / s.rho[j], p), add(j, s.m[i] / s.rho[i], p);
-        }
-        for (std::uint32_t k = list.ghost_offsets[i]; k < list.ghost_offsets[i + 1]; ++k) {
-            const std::uint32_t j = list.ghost[k];
-            if (!s.interacting[j]) continue;
-            const Pair p = pair(s, i, j);
-            if (p.inside) add(i, s.m[j] / s.rho[j], p);
-        }
-    }
+        },
+        [&](std::size_t i, std::size_t j, const Pair& p) { add(i, s.m[j] / s.rho[j], p); });
     RadiossGradient out{std::vector<double>(n, 0.0), std::vector<double>(n, 0.0)};
     for (std::size_t i = 0; i < n; ++i) {
         out.second_order[i] = -0.5 * dt1 * sums[i][4];
@@ -130,25 +142,17 @@ double radioss_nodal_time_step(const Particles& s, const NeighbourList& list, co
                                double qb, int threads) {
     const std::size_t n = s.real;
     std::vector<double> stiffness(n, 0.0);
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!s.interacting[i]) continue;
-        for (std::uint32_t k = list.forward_offsets[i]; k < list.forward_offsets[i + 1]; ++k) {
-            const std::uint32_t j = list.forward[k];
-            if (!s.interacting[j]) continue;
-            const Pair p = pair(s, i, j);
-            if (!p.inside) continue;
+    for_each_interacting_pair(
+        s, list,
+        [&](std::size_t i, std::size_t j, const Pair& p) {
             stiffness[i] += pair_stiffness(s, i, j, p, f[i], f[j], qa, qb);
             Pair q = p;  // the same pair seen from j: x and v reversed, g reversed (|g| alike)
             for (int a = 0; a < 3; ++a) q.x[a] = -p.x[a], q.v[a] = -p.v[a], q.g[a] = -p.g[a];
             stiffness[j] += pair_stiffness(s, j, i, q, f[j], f[i], qa, qb);
-        }
-        for (std::uint32_t k = list.ghost_offsets[i]; k < list.ghost_offsets[i + 1]; ++k) {
-            const std::uint32_t j = list.ghost[k];
-            if (!s.interacting[j]) continue;
-            const Pair p = pair(s, i, j);
-            if (p.inside) stiffness[i] += pair_stiffness(s, i, j, p, f[i], f[s.ghost_source[j - n]], qa, qb);
-        }
-    }
+        },
+        [&](std::size_t i, std::size_t j, const Pair& p) {
+            stiffness[i] += pair_stiffness(s, i, j, p, f[i], f[s.ghost_source[j - n]], qa, qb);
+        });
     double smallest = std::numeric_limits<double>::infinity();
 #pragma omp parallel for schedule(static) reduction(min : smallest) num_threads(threads)
     for (std::size_t i = 0; i < n; ++i)
