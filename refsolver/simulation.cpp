@@ -94,8 +94,8 @@ struct Simulation::Impl {
     std::vector<double> heating;   // per real particle: the viscous power per unit mass of the last cycle
     std::vector<double> switches;  // per real particle: the engine's viscosity switch (viscosity.hpp)
     void radioss_cycle(double dt1);
-    void radioss_step();
-    void evaluate();  // EOS, lists, corrections, rates at the current (predicted) state
+    void radioss_step(Clock::time_point t0);  // after step() has set dt
+    void evaluate();                          // EOS, lists, corrections, rates at the current (predicted) state
     void update_eos();
     void apply_kinematic();
     // TSSFAC times `smallest` (time_step.hpp), or for OpenRadioss decks the engine's particle or
@@ -299,7 +299,6 @@ void Simulation::Impl::report_non_finite(bool finite) {
 }
 
 void Simulation::Impl::step() {
-    if (in.radioss_step) return radioss_step();
     const auto t0 = Clock::now();
     dt = std::min(dt_next, in.end_time - time);
     if (!(dt > 0) || !std::isfinite(dt)) {
@@ -307,6 +306,7 @@ void Simulation::Impl::step() {
         return;
     }
     if (core_share) rates.threads = core_share->threads();
+    if (in.radioss_step) return radioss_step(t0);
     const double half = 0.5 * dt;
     const std::array<double, 3> body_mid = body_acceleration(in.loads, time + half);
     double work = 0;
@@ -430,14 +430,7 @@ void Simulation::Impl::radioss_cycle(double dt1) {
     report_non_finite(finite);
 }
 
-void Simulation::Impl::radioss_step() {
-    const auto t0 = Clock::now();
-    dt = std::min(dt_next, in.end_time - time);
-    if (!(dt > 0) || !std::isfinite(dt)) {
-        failure = "the time step collapsed to " + std::to_string(dt) + " at time " + std::to_string(time);
-        return;
-    }
-    if (core_share) rates.threads = core_share->threads();
+void Simulation::Impl::radioss_step(Clock::time_point t0) {
     const std::size_t n = s.real;
 #pragma omp parallel for schedule(static) num_threads(rates.threads)
     for (std::size_t i = 0; i < n; ++i) {
