@@ -13,6 +13,7 @@
 #include "lsp/features.hpp"
 #include "grammar/realign.hpp"
 #include "lsp/uri.hpp"
+#include "tests/lsp_radioss_deck.hpp"
 
 using namespace sphdeck;
 
@@ -404,36 +405,7 @@ TEST_CASE("lsp realign: only when the result is certain") {
 }
 
 TEST_CASE("lsp features on an OpenRadioss deck: header hover, field hover, /PART -> /PROP, /MAT") {
-    const std::string rad = R"(#RADIOSS STARTER
-/BEGIN
-LSP
-      2026
-                  kg                  mm                  ms
-                  kg                  mm                  ms
-/PART/2
-water
-#  prop_ID    mat_ID subset_ID
-         2         3         0
-/PROP/SPH/2
-water particles
-#                 mp                  qa                  qb            alpha_cs   skew_ID      h_1D
-              8.0E-6                 2.0                 1.0                 0.0         0         0
-#    Order                   h             Xi_Stab                          hmin                hmax
-         0                 2.4                 0.0
-/MAT/LAW6/3
-water
-#              RHO_I
-              1.0E-6
-#                 Nu                Pmin
-                 0.0                 0.0
-/NODE
-#  node_ID                   X                   Y                   Z
-      1001                 1.0                 1.0                 1.0
-/SPHCEL/2
-#  node_ID      Type                MASS
-      1001         0
-/END
-)";
+    const std::string rad{test::lsp_radioss_deck};
     const auto deck = check(rad, "lsp_0000.rad", std::nullopt);
     REQUIRE(deck.result.model.radioss);
     const At prop = find(rad, "/PROP/SPH/2");

@@ -14,6 +14,7 @@
 #include "lsp/features.hpp"
 #include "lsp/uri.hpp"
 #include "lsp_session.hpp"
+#include "tests/lsp_radioss_deck.hpp"
 
 using namespace sphdeck;
 namespace fs = std::filesystem;
@@ -257,36 +258,7 @@ TEST_CASE("lsp document links, workspace symbols and code lens") {
 }
 
 TEST_CASE("lsp rename on an OpenRadioss deck: a /PROP id in its header and a /PART's prop_ID; nodes refused") {
-    const std::string rad = R"(#RADIOSS STARTER
-/BEGIN
-LSP
-      2026
-                  kg                  mm                  ms
-                  kg                  mm                  ms
-/PART/2
-water
-#  prop_ID    mat_ID subset_ID
-         2         3         0
-/PROP/SPH/2
-water particles
-#                 mp                  qa                  qb            alpha_cs   skew_ID      h_1D
-              8.0E-6                 2.0                 1.0                 0.0         0         0
-#    Order                   h             Xi_Stab                          hmin                hmax
-         0                 2.4                 0.0
-/MAT/LAW6/3
-water
-#              RHO_I
-              1.0E-6
-#                 Nu                Pmin
-                 0.0                 0.0
-/NODE
-#  node_ID                   X                   Y                   Z
-      1001                 1.0                 1.0                 1.0
-/SPHCEL/2
-#  node_ID      Type                MASS
-      1001         0
-/END
-)";
+    const std::string rad{test::lsp_radioss_deck};
     lsp::CheckedDeck deck{"lsp_0000.rad", engine::check_buffer(rad, "lsp_0000.rad", {}, std::nullopt)};
     REQUIRE(deck.result.model.radioss);
     auto renamed = lsp::answer_feature("textDocument/rename", deck, 0, {{"position", at(9, 9)}, {"newName", "17"}});
