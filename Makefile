@@ -41,7 +41,12 @@ install-python: python
 demo: build-cli
 	bash decks/demo/run_demo.sh $(BUILD)/sphdeck
 
-test: build
+# What ctest runs: the program, the test binary and the Python module when it is configured; not the
+# benchmarks nor the man pages (make bench and make install build those; CI builds the whole tree).
+TEST_TARGETS = sphdeck sphdeck_tests $$(grep -q '^SPHDECK_PYTHON:BOOL=ON' $(BUILD)/CMakeCache.txt && echo sphdeck_python)
+
+test: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS) --target $(TEST_TARGETS)
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 # The corpus check: sphdeck on the real public decks of ../shared/corpus (or $$SPHDECK_CORPUS), every

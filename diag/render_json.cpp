@@ -20,7 +20,7 @@ void put_location(json& out, const text::Span& span, const text::SourceMap& sour
 }
 
 // The files that include the finding's file, main deck first, each with the line naming the next file.
-json include_chain(const text::Span& span, const text::SourceMap& sources) {
+json include_chain_json(const text::Span& span, const text::SourceMap& sources) {
     json chain = json::array();
     if (!detail::has_location(span, sources)) return chain;
     const std::vector<text::FileId> files = sources.include_chain(span.file);
@@ -32,7 +32,7 @@ json include_chain(const text::Span& span, const text::SourceMap& sources) {
 
 // The finding's mends: each edit replaces the columns [column, end_column) of one line (equal
 // columns insert), as TextEdit says.
-json fixes_of(const Diagnostic& d, const text::SourceMap& sources) {
+json fixes_json(const Diagnostic& d, const text::SourceMap& sources) {
     json fixes = json::array();
     for (const Fix& fix : d.fixes) {
         json edits = json::array();
@@ -68,8 +68,8 @@ public:
                 notes.push_back(std::move(n));
             }
             item["notes"] = std::move(notes);
-            item["fixes"] = fixes_of(d, sources);
-            item["include_chain"] = include_chain(d.span, sources);
+            item["fixes"] = fixes_json(d, sources);
+            item["include_chain"] = include_chain_json(d.span, sources);
             item["url"] = rule ? json(rule->url) : json(nullptr);
             diagnostics_.push_back(std::move(item));
         }

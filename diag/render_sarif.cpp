@@ -16,7 +16,7 @@ using json = nlohmann::ordered_json;
 
 constexpr const char* kSrcRoot = "%SRCROOT%";
 
-const char* level(Severity s) {
+const char* sarif_level(Severity s) {
     switch (s) {
         case Severity::Error: return "error";
         case Severity::Warning: return "warning";
@@ -45,7 +45,7 @@ json rule_descriptor(const RuleMeta& rule) {
             {"fullDescription", {{"text", rule.what}}},
             {"help", {{"text", rule.help_text}, {"markdown", rule.help_markdown}}},
             {"helpUri", rule.url},
-            {"defaultConfiguration", {{"level", level(rule.severity)}}}};
+            {"defaultConfiguration", {{"level", sarif_level(rule.severity)}}}};
 }
 
 json artifact_location(const text::SourceFile& file) {
@@ -70,7 +70,7 @@ json physical_location(const text::Span& span, const text::SourceMap& sources) {
 
 // SARIF fixes (§3.55): one artifactChange per file, each edit a replacement of a one-line region
 // (a zero-length region inserts). Edits without a location cannot be expressed and are left out.
-json fixes_of(const Diagnostic& d, const text::SourceMap& sources) {
+json sarif_fixes(const Diagnostic& d, const text::SourceMap& sources) {
     json fixes = json::array();
     for (const Fix& fix : d.fixes) {
         json changes = json::array();
@@ -117,11 +117,11 @@ public:
             }
             json result = {{"ruleId", d.code}};
             if (auto index = rules_.index_of(d.code)) result["ruleIndex"] = *index;
-            result["level"] = level(d.severity);
+            result["level"] = sarif_level(d.severity);
             result["message"] = {{"text", text}};
             if (sources.size() > 0) result["locations"] = json::array({physical_location(d.span, sources)});
             if (!related.empty()) result["relatedLocations"] = std::move(related);
-            if (json fixes = fixes_of(d, sources); !fixes.empty()) result["fixes"] = std::move(fixes);
+            if (json fixes = sarif_fixes(d, sources); !fixes.empty()) result["fixes"] = std::move(fixes);
             results_.push_back(std::move(result));
         }
     }

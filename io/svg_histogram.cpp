@@ -25,14 +25,14 @@ double nice_step(double raw, bool integer) {
     return 10.0 * p;
 }
 
-std::string number(double v) {
+std::string histogram_number(double v) {
     if (std::abs(v) < 1e-300) v = 0.0;  // no "-0"
     return fmt::format("{:.4g}", v);
 }
 
 using Box = SvgBox;
 
-void draw_panel(std::string& svg, const HistogramPanel& panel, const Box& box, std::size_t max_bins) {
+void draw_histogram_panel(std::string& svg, const HistogramPanel& panel, const Box& box, std::size_t max_bins) {
     auto out = std::back_inserter(svg);
     const Bins bins = make_bins(panel.values, panel.integer_bins, max_bins);
     std::vector<double> finite;
@@ -46,7 +46,8 @@ void draw_panel(std::string& svg, const HistogramPanel& panel, const Box& box, s
         auto mid = finite.begin() + static_cast<std::ptrdiff_t>(finite.size() / 2);
         std::nth_element(finite.begin(), mid, finite.end());
         const auto [mn, mx] = std::minmax_element(finite.begin(), finite.end());
-        subtitle += fmt::format(", min {}, median {}, max {}", number(*mn), number(*mid), number(*mx));
+        subtitle += fmt::format(", min {}, median {}, max {}", histogram_number(*mn), histogram_number(*mid),
+                                histogram_number(*mx));
     }
     if (bins.skipped > 0) subtitle += fmt::format(", {} non-finite left out", bins.skipped);
     fmt::format_to(out, "<text x=\"{:.1f}\" y=\"{:.1f}\" class=\"subtitle\">{}</text>\n", box.x + box.w / 2, box.y + 37,
@@ -81,7 +82,7 @@ void draw_panel(std::string& svg, const HistogramPanel& panel, const Box& box, s
     for (double t : yticks) {
         fmt::format_to(out, "<path d=\"M{0:.1f} {1:.1f}H{2:.1f}\" class=\"grid\"/>\n", x0, ypos(t), x0 + pw);
         fmt::format_to(out, "<text x=\"{:.1f}\" y=\"{:.1f}\" class=\"ytick\">{}</text>\n", x0 - 6, ypos(t) + 4,
-                       number(t));
+                       histogram_number(t));
     }
     const double bar = pw / static_cast<double>(nb), gap = bar > 4 ? 1.0 : 0.0;
     for (std::size_t i = 0; i < nb; ++i) {
@@ -91,7 +92,8 @@ void draw_panel(std::string& svg, const HistogramPanel& panel, const Box& box, s
         fmt::format_to(out,
                        "<rect x=\"{:.2f}\" y=\"{:.2f}\" width=\"{:.2f}\" height=\"{:.2f}\" class=\"bar\">"
                        "<title>[{}, {}): {}</title></rect>\n",
-                       xpos(a) + gap / 2, top, std::max(bar - gap, 0.5), ybase - top, number(a), number(b), c);
+                       xpos(a) + gap / 2, top, std::max(bar - gap, 0.5), ybase - top, histogram_number(a),
+                       histogram_number(b), c);
         const std::string label = std::to_string(c);
         if (c > 0 && bar >= 6.0 * static_cast<double>(label.size()) + 2)
             fmt::format_to(out, "<text x=\"{:.1f}\" y=\"{:.1f}\" class=\"count\">{}</text>\n", xpos(a) + bar / 2,
@@ -101,7 +103,7 @@ void draw_panel(std::string& svg, const HistogramPanel& panel, const Box& box, s
     for (double t : nice_ticks(bins.lo, hi, 6, integer_ticks)) {
         fmt::format_to(out, "<path d=\"M{0:.1f} {1:.1f}v5\" class=\"axis\"/>\n", xpos(t), ybase);
         fmt::format_to(out, "<text x=\"{:.1f}\" y=\"{:.1f}\" class=\"xtick\">{}</text>\n", xpos(t), ybase + 18,
-                       number(t));
+                       histogram_number(t));
     }
     fmt::format_to(out, "<path d=\"M{0:.1f} {1:.1f}V{2:.1f}H{3:.1f}\" class=\"axis\"/>\n</g>\n", x0, y0, ybase,
                    x0 + pw);
@@ -188,7 +190,7 @@ std::string svg_histograms(std::span<const HistogramPanel> panels, const SvgOpti
         ".bar:hover { fill: #f58518; }\n";
     return svg_panel_grid(grid_for(panels.size(), options, styles),
                           [&](std::string& svg, std::size_t i, const SvgBox& box) {
-                              draw_panel(svg, panels[i], box, options.max_bins);
+                              draw_histogram_panel(svg, panels[i], box, options.max_bins);
                           });
 }
 

@@ -16,7 +16,7 @@ namespace {
 
 constexpr std::array<const char*, 6> palette = {"#4c78a8", "#e45756", "#54a24b", "#f58518", "#b279a2", "#222222"};
 
-std::string number(double v) {
+std::string plot_number(double v) {
     if (std::abs(v) < 1e-300) v = 0.0;  // no "-0"
     return fmt::format("{:.4g}", v);
 }
@@ -42,7 +42,7 @@ struct Range {
 
 using Box = SvgBox;
 
-void draw_panel(std::string& svg, const PlotPanel& panel, const Box& box, std::size_t first_colour) {
+void draw_plot_panel(std::string& svg, const PlotPanel& panel, const Box& box, std::size_t first_colour) {
     auto out = std::back_inserter(svg);
     Range xr, yr;
     for (const PlotSeries& s : panel.series) {
@@ -69,12 +69,12 @@ void draw_panel(std::string& svg, const PlotPanel& panel, const Box& box, std::s
     for (double t : nice_ticks(yr.lo, yr.hi, 5)) {
         fmt::format_to(out, "<path d=\"M{0:.1f} {1:.1f}H{2:.1f}\" class=\"grid\"/>\n", x0, ypos(t), x0 + pw);
         fmt::format_to(out, "<text x=\"{:.1f}\" y=\"{:.1f}\" class=\"ytick\">{}</text>\n", x0 - 6, ypos(t) + 4,
-                       number(t));
+                       plot_number(t));
     }
     for (double t : nice_ticks(xr.lo, xr.hi, 6)) {
         fmt::format_to(out, "<path d=\"M{0:.1f} {1:.1f}v5\" class=\"axis\"/>\n", xpos(t), y0 + ph);
         fmt::format_to(out, "<text x=\"{:.1f}\" y=\"{:.1f}\" class=\"xtick\">{}</text>\n", xpos(t), y0 + ph + 18,
-                       number(t));
+                       plot_number(t));
     }
     fmt::format_to(out, "<text x=\"{:.1f}\" y=\"{:.1f}\" class=\"label\">{}</text>\n", x0 + pw / 2, box.y + box.h - 14,
                    xml_escape(panel.x_label));
@@ -137,7 +137,7 @@ std::string svg_plot(std::span<const PlotPanel> panels, const PlotOptions& optio
         ".marker { fill: white; stroke-width: 1.6; }\n";
     return svg_panel_grid(grid_for(panels.size(), options, styles),
                           [&](std::string& svg, std::size_t i, const SvgBox& box) {
-                              draw_panel(svg, panels[i], box, 0);
+                              draw_plot_panel(svg, panels[i], box, 0);
                           });
 }
 

@@ -8,7 +8,7 @@ namespace sphdeck::mcp {
 namespace {
 using json = nlohmann::json;
 
-json schema() {
+json check_tool_schema() {
     json properties = deck_schema_properties("deck");
     properties["select"] = {{"type", "array"},
                             {"items", {{"type", "string"}}},
@@ -31,7 +31,7 @@ lint::ConfigOverrides overrides_of(const Arguments& args) {
     return o;
 }
 
-ToolResult run(const Arguments& args, const ToolContext& context) {
+ToolResult run_check_tool(const Arguments& args, const ToolContext& context) {
     const DeckInput deck = deck_input(args, context);
     engine::CheckOptions options = check_options(deck, context, overrides_of(args));
     options.rules.geometry = args.boolean("geometry", true);
@@ -71,7 +71,7 @@ Tool check_deck_tool() {
             "Checks an LS-DYNA keyword deck or OpenRadioss starter deck (and its includes) for the mistakes that make "
             "an SPH run fail or go wrong. Returns the findings of `sphdeck check --format json`: rule code, severity, "
             "message, file, line, column, notes and fixes (each fix: its text edits and whether it is safe).",
-            schema(), run};
+            check_tool_schema(), run_check_tool};
 }
 
 }  // namespace sphdeck::mcp

@@ -7,7 +7,7 @@ namespace sphdeck::mcp {
 namespace {
 using json = nlohmann::json;
 
-engine::CheckResult read(const Arguments& args, const ToolContext& context, std::string_view key) {
+engine::CheckResult read_side(const Arguments& args, const ToolContext& context, std::string_view key) {
     const DeckInput deck = deck_input(args, context, key);
     engine::CheckOptions options = check_options(deck, context);
     options.rules.geometry = false;  // the values are what count, not the neighbour rules
@@ -16,9 +16,9 @@ engine::CheckResult read(const Arguments& args, const ToolContext& context, std:
     return r;
 }
 
-ToolResult run(const Arguments& args, const ToolContext& context) {
-    const engine::CheckResult before = read(args, context, "before");
-    const engine::CheckResult after = read(args, context, "after");
+ToolResult run_diff_tool(const Arguments& args, const ToolContext& context) {
+    const engine::CheckResult before = read_side(args, context, "before");
+    const engine::CheckResult after = read_side(args, context, "after");
     const engine::DeckDiff diff = engine::diff_decks(before, after, args.number("rtol").value_or(1e-12));
     json structured = json::parse(engine::to_json(diff).dump(-1, ' ', false, json::error_handler_t::replace));
     structured["equal"] = diff.equal();
@@ -42,7 +42,7 @@ Tool diff_decks_tool() {
             "Tells what the solver reads differently in two decks, as `sphdeck diff` does: keywords added, removed or "
             "changed (each field's effective value before and after, with its location), nodes and particles "
             "summarised. Formatting, comments and order do not count.",
-            std::move(schema), run};
+            std::move(schema), run_diff_tool};
 }
 
 }  // namespace sphdeck::mcp

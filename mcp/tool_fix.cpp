@@ -11,7 +11,7 @@ namespace sphdeck::mcp {
 namespace {
 using json = nlohmann::json;
 
-json schema() {
+json fix_tool_schema() {
     json properties = deck_schema_properties("deck");
     properties["unsafe"] = {{"type", "boolean"},
                             {"description", "apply the unsafe fixes too (a judgement, such as a did-you-mean name)"}};
@@ -28,7 +28,7 @@ std::string shown(const std::string& path) {
     return relative.string();
 }
 
-ToolResult run(const Arguments& args, const ToolContext& context) {
+ToolResult run_fix_tool(const Arguments& args, const ToolContext& context) {
     DeckInput deck = deck_input(args, context);
     const bool write = args.boolean("write");
     if (write && deck.from_text) throw InvalidParams("'write' needs a path: text is returned fixed instead");
@@ -70,7 +70,7 @@ Tool fix_deck_tool() {
             "include files, checking again after each round, as `sphdeck check --fix` does. Returns the unified diff, "
             "the number of fixes, the findings that remain, and with text input the fixed text. Writes nothing "
             "unless write: true.",
-            schema(), run};
+            fix_tool_schema(), run_fix_tool};
 }
 
 }  // namespace sphdeck::mcp

@@ -9,7 +9,7 @@ namespace sphdeck::mcp {
 namespace {
 using json = nlohmann::json;
 
-json schema() {
+json format_tool_schema() {
     json properties = deck_schema_properties("deck");
     properties["headers"] = {{"type", "boolean"},
                              {"description", "write a `$#` line naming the fields above each card"}};
@@ -18,7 +18,7 @@ json schema() {
     return {{"type", "object"}, {"properties", std::move(properties)}, {"additionalProperties", false}};
 }
 
-ToolResult run(const Arguments& args, const ToolContext& context) {
+ToolResult run_format_tool(const Arguments& args, const ToolContext& context) {
     const DeckInput deck = deck_input(args, context);
     engine::CheckOptions options = check_options(deck, context);
     options.rules.geometry = false;  // the layout needs the reading's findings, not the particles' geometry
@@ -49,7 +49,7 @@ Tool format_deck_tool() {
             "Rewrites the deck's cards in their canonical column layout without changing a value, as `sphdeck "
             "format` does: returns the formatted text and the unified diff; writes nothing. Comments, titles and "
             "lines whose layout is in doubt are kept as written.",
-            schema(), run};
+            format_tool_schema(), run_format_tool};
 }
 
 }  // namespace sphdeck::mcp

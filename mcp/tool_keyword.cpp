@@ -38,7 +38,7 @@ json field_json(const keywords::FieldSpec& f, const keywords::FieldSlot& slot) {
     return out;
 }
 
-ToolResult run(const Arguments& args, const ToolContext&) {
+ToolResult run_keyword_tool(const Arguments& args, const ToolContext&) {
     const std::string name = *args.string("name");
     if (!name.empty() && name.front() == '/')
         throw ToolFailure("OpenRadioss cards are not served here yet: run `sphdeck keyword " + name + "`");
@@ -93,7 +93,7 @@ Tool keyword_layout_tool() {
             "Gives an LS-DYNA keyword's cards: per field its columns, type, default, allowed values and meaning, as "
             "`sphdeck keyword` prints them. Use it to write a card in the right columns.",
             std::move(schema),
-            run,
+            run_keyword_tool,
             /*reads_files=*/false};
 }
 

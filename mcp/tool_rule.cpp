@@ -8,7 +8,7 @@ namespace sphdeck::mcp {
 namespace {
 using json = nlohmann::json;
 
-ToolResult run(const Arguments& args, const ToolContext&) {
+ToolResult run_rule_tool(const Arguments& args, const ToolContext&) {
     const std::string query = *args.string("rule");
     const lint::RuleInfo* rule = lint::find_rule(query);
     if (!rule) throw ToolFailure("unknown rule '" + query + "'" + lint::did_you_mean_rule(query));
@@ -33,7 +33,7 @@ Tool explain_rule_tool() {
             "Explains one of sphdeck's rules (the code of a finding, such as SPH030): what it checks, why it matters, "
             "how to fix it, and an example.",
             std::move(schema),
-            run,
+            run_rule_tool,
             /*reads_files=*/false};
 }
 

@@ -11,7 +11,7 @@ namespace sphdeck::mcp {
 namespace {
 using json = nlohmann::json;
 
-ToolResult run(const Arguments& args, const ToolContext& context) {
+ToolResult run_smooth_tool(const Arguments& args, const ToolContext& context) {
     const DeckInput deck = deck_input(args, context);
     engine::CheckOptions options = check_options(deck, context);
     const auto ini = args.number("ini");
@@ -53,7 +53,7 @@ Tool smoothing_preview_tool() {
             "Previews what the solver will compute at the start, per SPH part, as `sphdeck smooth` does: particle "
             "spacing, initial smoothing length h0 and its bounds, kernel support, neighbour counts, sound speed and "
             "time step estimates, with notes on any value that cannot be computed.",
-            std::move(schema), run};
+            std::move(schema), run_smooth_tool};
 }
 
 }  // namespace sphdeck::mcp

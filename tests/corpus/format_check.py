@@ -22,6 +22,11 @@ import subprocess
 import tempfile
 
 TIMEOUT_S = 60
+# The findings before and after formatting, each deck checked --alone: whether a deck is included by
+# another is not what formatting changes (the including deck's own check reads the include, formatted,
+# in context), and the search for including decks (engine/include_context) was three quarters of this
+# proof's time: every deck file of the folders up to the project root read for each check.
+CHECK = ["check", "--format", "json", "--no-config", "--alone"]
 POSITION_KEYS = {"line", "column", "end_column", "file"}
 
 
@@ -51,7 +56,7 @@ class Dump:
     def __init__(self, stdout):
         model, cards = stdout.rsplit(b',"cards":', 1)
         self.model = without_positions(json.loads(model + b"}"))
-        self.model.pop("card_files", None)
+        self.files = self.model.pop("card_files", None)  # every file the deck reads: its own and its includes
         self.cards = CARD_POSITION.sub(b"", cards)
 
     def __eq__(self, other):
@@ -73,7 +78,7 @@ def dump(sphdeck, deck):
 
 
 def findings(sphdeck, deck, root):
-    done = run([sphdeck, "check", "--format", "json", "--no-config", deck])
+    done = run([sphdeck] + CHECK + [deck])
     if done is None or done.returncode not in (0, 1):
         return None
     found = collections.Counter()
@@ -86,7 +91,7 @@ def findings(sphdeck, deck, root):
 def findings_by_block(sphdeck, deck, root, by_line=None):
     """Findings by (code, severity, file, n-th keyword line of the file): `$#` lines added move lines.
     `by_line` (a Counter), when given, also receives them by (code, severity, file, line)."""
-    done = run([sphdeck, "check", "--format", "json", "--no-config", deck])
+    done = run([sphdeck] + CHECK + [deck])
     if done is None or done.returncode not in (0, 1):
         return None
     keyword_lines = {}
@@ -153,6 +158,34 @@ def format_main(sphdeck, deck):
     return kinds
 
 
+def sharing_groups(decks, files_of, root):
+    """The decks in groups that share no file (a deck's own file or an include), each group in the order of
+    `decks`: formatting two decks of one group at once would race on their shared includes, decks of
+    different groups never touch the same file. One group of all decks when a deck's files are unknown."""
+    if any(files_of[d] is None for d in decks):
+        return [list(decks)]
+    parent = {d: d for d in decks}
+
+    def top(d):
+        while parent[d] != d:
+            parent[d] = parent[parent[d]]
+            d = parent[d]
+        return d
+
+    owner = {}
+    for deck in decks:
+        for name in files_of[deck] + [os.path.join(root, deck)]:
+            real = os.path.realpath(name)
+            if real in owner:
+                parent[top(deck)] = top(owner[real])
+            else:
+                owner[real] = deck
+    groups = {}
+    for deck in decks:
+        groups.setdefault(top(deck), []).append(deck)
+    return list(groups.values())
+
+
 def check_formatting(sphdeck, corpus, decks, jobs):
     """(failures, summary lines)."""
     failures = []
@@ -170,8 +203,18 @@ def check_formatting(sphdeck, corpus, decks, jobs):
         both = dict(zip(decks, pool.map(read_original, decks)))
         before = {d: both[d][0] for d in decks}
         before_by_block = {d: both[d][1] for d in decks}
-        kinds_of = dict(zip(decks, pool.map(lambda d: format_main(sphdeck, os.path.join(copy, d)), decks)))
-        included = list(pool.map(lambda d: run([sphdeck, "format", "--includes", os.path.join(copy, d)]), decks))
+        # The steps that write (format) run the decks of a group one after the other, the groups side by side.
+        groups = sharing_groups(decks, {d: before[d][0].files if before[d][0] else None for d in decks}, original)
+
+        def writing(step):
+            """[step(deck) for deck in decks], no two decks that share a file at the same time."""
+            done = {}
+            for group_done in pool.map(lambda group: [(d, step(d)) for d in group], groups):
+                done.update(group_done)
+            return [done[d] for d in decks]
+
+        kinds_of = dict(zip(decks, writing(lambda d: format_main(sphdeck, os.path.join(copy, d)))))
+        included = writing(lambda d: run([sphdeck, "format", "--includes", os.path.join(copy, d)]))
         after = dict(zip(decks, pool.map(
             lambda d: (dump(sphdeck, os.path.join(copy, d)), findings(sphdeck, os.path.join(copy, d), copy)), decks)))
         again = dict(zip(decks, pool.map(
@@ -188,7 +231,7 @@ def check_formatting(sphdeck, corpus, decks, jobs):
                     changed_files += 1
         # The options that add lines and rewrite free ones, on the formatted copy: the same three proofs.
         extra = ["--headers", "--to", "fixed", "--includes"]
-        extra_done = list(pool.map(lambda d: run([sphdeck, "format", *extra, os.path.join(copy, d)]), decks))
+        extra_done = writing(lambda d: run([sphdeck, "format", *extra, os.path.join(copy, d)]))
         extra_after = dict(zip(decks, pool.map(
             lambda d: (dump(sphdeck, os.path.join(copy, d)), findings_by_block(sphdeck, os.path.join(copy, d), copy)),
             decks)))

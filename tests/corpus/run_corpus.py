@@ -201,7 +201,8 @@ def main():
     print(f"  baseline: {len(baseline)} rows, {sum(r[0] for r in baseline.values())} findings")
     if not args.no_format_check:
         format_start = time.monotonic()
-        format_failures, format_summary = format_check.check_formatting(args.sphdeck, corpus, decks, 1)  # one job: decks of one folder format their shared includes (a race in parallel)
+        # Decks that share an include are formatted one after the other (format_check.sharing_groups).
+        format_failures, format_summary = format_check.check_formatting(args.sphdeck, corpus, decks, args.jobs)
         failures += format_failures
         for line in format_summary:
             print(line)

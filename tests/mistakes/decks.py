@@ -135,13 +135,16 @@ def run_sphdeck(sphdeck, args, include_dir):
         return None, f"not JSON: {e}"
 
 
-def check(sphdeck, path, include_dir):
-    """Errors and warnings of `sphdeck check`: list of (file, line, code, severity, message)."""
+def check(sphdeck, path, include_dir, reports=None):
+    """Errors and warnings of `sphdeck check`: list of (file, line, code, severity, message). `reports`, a
+    list, when given, receives the whole JSON report (fixes included)."""
     # --alone: a plant is a deck of its own; searching the scratch folder for decks that include it
     # (engine/include_context) would read every other plant, for every plant.
     report, problem = run_sphdeck(sphdeck, ["check", "--format", "json", "--no-config", "--alone", path], include_dir)
     if report is None:
         return None, problem
+    if reports is not None:
+        reports.append(report)
     found = []
     for d in report["diagnostics"]:
         if d["severity"] in ("error", "warning"):

@@ -38,18 +38,17 @@ UNSAFE_FIX_KINDS = ["keyword-typo", "parameter-typo", "stray-end", "missing-head
 
 
 def fix_mutant(sphdeck, path, include, unsafe):
-    cmd = [sphdeck, "check", "--fix", "--no-config", "--format", "concise", path, "-I", include]
+    # --alone, as dk.check: the mutant is a deck of its own (no search of the scratch folder's other decks).
+    cmd = [sphdeck, "check", "--fix", "--no-config", "--alone", "--format", "concise", path, "-I", include]
     if unsafe:
         cmd.insert(3, "--unsafe-fixes")
     done = subprocess.run(cmd, capture_output=True, timeout=dk.TIMEOUT_S)
     return done.returncode in (0, 1)
 
 
-def carries_fix(sphdeck, path, include, targets, unsafe):
-    """Whether a new error or warning on a planted line carries a fix --fix applies."""
-    report, _ = dk.run_sphdeck(sphdeck, ["check", "--format", "json", "--no-config", path], include)
-    if report is None:
-        return False
+def carries_fix(report, targets, unsafe):
+    """Whether a new error or warning on a planted line carries a fix --fix applies, from the mutant's
+    `check --format json` report (the one run_mistakes.evaluate ran to see the plant caught)."""
     for d in report["diagnostics"]:
         if d["severity"] in ("error", "warning") and (d.get("line") or 0) in targets:
             if any(f.get("safe") or unsafe for f in d.get("fixes", [])):
@@ -86,11 +85,12 @@ def fix_job(sphdeck, host, kind, unsafe, seed, per_deck, tries, scratch):
             break
         where = os.path.join(scratch, f"{os.path.basename(host.work)}-fix-{kind.__name__}-{number}")
         try:
-            outcome = rm.evaluate(sphdeck, host, plant, where)
+            reports = []
+            outcome = rm.evaluate(sphdeck, host, plant, where, reports)
             if outcome is None or not outcome[0]:
                 continue  # no mistake, or one sphdeck does not catch: nothing to fix
             path = os.path.join(where, os.path.basename(host.path))
-            fixable = carries_fix(sphdeck, path, include, plant.targets, unsafe)
+            fixable = carries_fix(reports[-1], plant.targets, unsafe)
             if not fix_mutant(sphdeck, path, include, unsafe):
                 out.append((plant, fixable, False, False, ["check --fix failed"]))
                 continue

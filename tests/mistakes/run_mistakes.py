@@ -106,8 +106,9 @@ def prepare(sphdeck, host, scratch, index, known):
     return host
 
 
-def evaluate(sphdeck, host, plant, where):
-    """None when the plant changes nothing that is read (or its line is not clean to begin with); else (caught, new findings, on-target ones)."""
+def evaluate(sphdeck, host, plant, where, reports=None):
+    """None when the plant changes nothing that is read (or its line is not clean to begin with); else (caught, new findings, on-target ones).
+    `reports`, a list, when given, receives the mutant's `check --format json` report (dk.check)."""
     mine = os.path.realpath(host.copy)
     if any(file == mine and line and plant.line_map(line) in plant.targets for file, line, *_ in host.found):
         return None  # the line has an error or warning already: not a working line to break
@@ -124,7 +125,7 @@ def evaluate(sphdeck, host, plant, where):
         if all(dk.grid_reading(host.deck.lines[n - 1], plant.grid) == dk.grid_reading(plant.lines[n - 1], plant.grid)
                for n in plant.grid_lines):
             return None
-    found, problem = dk.check(sphdeck, path, include)
+    found, problem = dk.check(sphdeck, path, include, reports)
     if found is None:
         return False, [f"sphdeck failed: {problem}"], []
     real = os.path.realpath(path)
