@@ -41,9 +41,10 @@ install-python: python
 demo: build-cli
 	bash decks/demo/run_demo.sh $(BUILD)/sphdeck
 
-# What ctest runs: the program, the test binary and the Python module when it is configured; not the
-# benchmarks nor the man pages (make bench and make install build those; CI builds the whole tree).
-TEST_TARGETS = sphdeck sphdeck_tests $$(grep -q '^SPHDECK_PYTHON:BOOL=ON' $(BUILD)/CMakeCache.txt && echo sphdeck_python)
+# What ctest runs: the program, the test binary, the man pages (ctest install-tree installs them) and the
+# Python module when it is configured; not the benchmarks (make bench builds them; CI builds the whole tree).
+TEST_TARGETS = sphdeck sphdeck_tests sphdeck_man \
+  $$(grep -q '^SPHDECK_PYTHON:BOOL=ON' $(BUILD)/CMakeCache.txt && echo sphdeck_python)
 
 test: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS) --target $(TEST_TARGETS)
