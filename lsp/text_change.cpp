@@ -4,8 +4,6 @@
 #include <string_view>
 #include <utility>
 
-#include "lsp/text_position.hpp"
-
 namespace sphdeck::lsp {
 namespace {
 // The byte offset in `text` of an LSP position.
@@ -24,17 +22,29 @@ std::size_t offset_of(std::string_view text, TextPosition position) {
 }
 }  // namespace
 
-std::optional<std::string> changed_text(std::string_view text, const nlohmann::json& change) {
+std::optional<ChangeEvent> read_change(const nlohmann::json& change) {
     if (!change.is_object()) return std::nullopt;
     const auto new_text = change.find("text");
     if (new_text == change.end() || !new_text->is_string()) return std::nullopt;
-    const std::string& inserted = new_text->get_ref<const std::string&>();
+    ChangeEvent out;
+    out.text = &new_text->get_ref<const std::string&>();
     const auto range = change.find("range");
-    if (range == change.end() || range->is_null()) return inserted;
+    if (range == change.end() || range->is_null()) return out;
     if (!range->is_object() || !range->contains("start") || !range->contains("end")) return std::nullopt;
-    TextPosition start, end;
-    if (!parse_position(range->at("start"), start) || !parse_position(range->at("end"), end)) return std::nullopt;
-    std::size_t from = offset_of(text, start), to = offset_of(text, end);
+    if (!parse_position(range->at("start"), out.start) || !parse_position(range->at("end"), out.end))
+        return std::nullopt;
+    if (out.end.line < out.start.line || (out.end.line == out.start.line && out.end.character < out.start.character))
+        std::swap(out.start, out.end);
+    out.whole = false;
+    return out;
+}
+
+std::optional<std::string> changed_text(std::string_view text, const nlohmann::json& change) {
+    const auto event = read_change(change);
+    if (!event) return std::nullopt;
+    const std::string& inserted = *event->text;
+    if (event->whole) return inserted;
+    std::size_t from = offset_of(text, event->start), to = offset_of(text, event->end);
     if (from > to) std::swap(from, to);
     // One pass: the text before, the new text, the text after.
     std::string out;

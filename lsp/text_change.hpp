@@ -8,7 +8,18 @@
 
 #include <nlohmann/json.hpp>
 
+#include "lsp/text_position.hpp"
+
 namespace sphdeck::lsp {
+
+// A change event read: the text it inserts and the range it replaces (none: the whole text), the
+// range taken in order when reversed. nullopt when `change` is not a change event.
+struct ChangeEvent {
+    const std::string* text = nullptr;  // inside `change`
+    bool whole = true;
+    TextPosition start, end;
+};
+std::optional<ChangeEvent> read_change(const nlohmann::json& change);
 
 // Applies one change to `text`. Positions past a line's end or past the last line clamp to them,
 // a reversed range is taken in order. False (and `text` unchanged) when `change` is not a change event.

@@ -10,7 +10,6 @@
 #include "engine/include_context.hpp"
 #include "engine/recheck.hpp"
 #include "lsp/deck_settings.hpp"
-#include "lsp/text_change.hpp"
 #include "lsp/uri.hpp"
 
 namespace sphdeck::lsp {
@@ -63,7 +62,7 @@ bool Workspace::open(const std::string& uri, std::string text, std::int64_t vers
     if (path.empty()) return false;
     const fs::path key = engine::Documents::key(path);
     documents_.set(key, std::move(text));
-    open_[key] = OpenDocument{uri, version, opened_++};
+    open_[key] = OpenDocument{uri, version, opened_++, std::make_shared<DocumentText>(documents_.find_shared(key))};
     dirty_.insert(key);
     return true;
 }
@@ -73,29 +72,32 @@ bool Workspace::change(const std::string& uri, std::int64_t version, const nlohm
     if (path.empty() || !content_changes.is_array()) return false;
     const fs::path key = engine::Documents::key(path);
     const auto document = open_.find(key);
-    const std::string* current = documents_.find(key);
-    if (document == open_.end() || !current) return false;
-    // Each change builds the next text in one pass from the last (no copy of the buffer first).
-    std::optional<std::string> text;
+    if (document == open_.end() || !document->second.text) return false;
+    // Each change rebuilds only the chunks of lines it touches; the text is joined at the next flush.
     bool all_applied = true;
-    for (const nlohmann::json& change : content_changes) {
-        auto next = changed_text(text ? std::string_view(*text) : std::string_view(*current), change);
-        if (next)
-            text = std::move(next);
-        else
-            all_applied = false;
-    }
-    if (text) documents_.set(key, std::move(*text));
+    for (const nlohmann::json& change : content_changes)
+        if (!document->second.text->apply(change)) all_applied = false;
     document->second.version = version;
     dirty_.insert(key);
     return all_applied;
+}
+
+void Workspace::join_changed_texts() {
+    for (auto& [key, document] : open_) {
+        if (!document.text || !document.text->changed()) continue;
+        documents_.set(key, document.text->joined());
+        document.text->rebase(documents_.find_shared(key));
+    }
 }
 
 bool Workspace::save(const std::string& uri, const std::optional<std::string>& text) {
     const fs::path path = path_from_uri(uri);
     if (path.empty()) return false;
     const fs::path key = engine::Documents::key(path);
-    if (text && open_.count(key)) documents_.set(key, *text);
+    if (const auto document = open_.find(key); text && document != open_.end()) {
+        documents_.set(key, *text);
+        document->second.text = std::make_shared<DocumentText>(documents_.find_shared(key));
+    }
     dirty_.insert(key);  // a saved file may also have been written by another program
     return true;
 }
@@ -190,6 +192,7 @@ std::optional<Workspace::Deck> Workspace::check_in_context(const fs::path& inclu
 
 void Workspace::flush() {
     if (dirty_.empty()) return;
+    join_changed_texts();
     std::set<fs::path> affected;
     const auto note = [&](const Deck& deck) {
         for (const auto& entry : deck.findings) affected.insert(entry.first);
@@ -287,9 +290,12 @@ std::optional<Workspace::Located> Workspace::locate(const fs::path& path) const 
     return Located{&chosen->checked, *file};
 }
 
-const std::string* Workspace::text(const std::string& uri) const {
+std::optional<std::string> Workspace::text(const std::string& uri) const {
     const fs::path path = path_from_uri(uri);
-    return path.empty() ? nullptr : documents_.find(path);
+    if (path.empty()) return std::nullopt;
+    const auto document = open_.find(engine::Documents::key(path));
+    if (document == open_.end() || !document->second.text) return std::nullopt;
+    return document->second.text->joined();
 }
 
 std::vector<fs::path> Workspace::deck_mains() const {

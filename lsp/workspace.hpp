@@ -20,6 +20,7 @@
 #include "engine/documents.hpp"
 #include "lsp/checked_deck.hpp"
 #include "lsp/diagnostics.hpp"
+#include "lsp/document_text.hpp"
 
 namespace sphdeck::lsp {
 
@@ -58,8 +59,8 @@ public:
     // Every deck checked now (workspace/symbol), in the order they were first checked. Call flush() first.
     std::vector<const CheckedDeck*> checked_decks() const;
 
-    // The text of an open document (tests).
-    const std::string* text(const std::string& uri) const;
+    // The text of an open document with every change so far (tests); nullopt when it is not open.
+    std::optional<std::string> text(const std::string& uri) const;
     // The main files of the decks checked now, in the order they were first checked (tests).
     std::vector<std::filesystem::path> deck_mains() const;
 
@@ -68,6 +69,8 @@ private:
         std::string uri;  // as the editor spelled it: diagnostics are published under it
         std::int64_t version = 0;
         std::uint64_t order = 0;  // when it was opened
+        // The text as the changes leave it; `documents_` holds it joined as the last flush saw it.
+        std::shared_ptr<DocumentText> text;
     };
     struct Deck {
         CheckedDeck checked;
@@ -87,6 +90,8 @@ private:
     std::string uri_of(const std::filesystem::path& key, const std::string& path) const;
     bool reads(const Deck& deck, const std::filesystem::path& key) const;
     void publish(const std::set<std::filesystem::path>& files);
+    // Stores the changed open documents' texts in `documents_`, each joined once (not per change).
+    void join_changed_texts();
 
     Publish publish_;
     std::vector<std::filesystem::path> roots_;

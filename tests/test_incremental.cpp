@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <random>
 #include <string>
 #include <vector>
@@ -16,6 +17,7 @@
 #include "text/text_file.hpp"
 #include "lsp/uri.hpp"
 #include "lsp/workspace.hpp"
+#include "test_support.hpp"
 
 using namespace sphdeck;
 
@@ -95,7 +97,7 @@ nlohmann::json random_edit(std::vector<std::string>& lines, std::mt19937& random
         return nlohmann::json{{"start", {{"line", l1}, {"character", c1}}}, {"end", {{"line", l2}, {"character", c2}}}};
     };
     std::string& text = lines[line];
-    switch (pick(5)) {
+    switch (pick(7)) {
         case 0: {  // replace a few characters of the line
             const std::uint32_t from = text.empty() ? 0 : pick(text.size() + 1);
             const std::uint32_t to = std::min<std::uint32_t>(static_cast<std::uint32_t>(text.size()), from + pick(12));
@@ -122,6 +124,23 @@ nlohmann::json random_edit(std::vector<std::string>& lines, std::mt19937& random
             const std::string copy = lines[pick(lines.size())];
             lines.insert(lines.begin() + line, copy);
             return {{"range", range(line, 0, line, 0)}, {"text", copy + "\n"}};
+        }
+        case 4: {  // a keyword line inserted: a block split in two, a bulk block cut short
+            static const std::vector<std::string> keywords = {"*NODE",        "*ELEMENT_SPH", "*PART",
+                                                              "*SECTION_SPH", "*CONTROL_SPH", "*MAT_NULL"};
+            const std::string keyword = keywords[pick(keywords.size())];
+            lines.insert(lines.begin() + line, keyword);
+            return {{"range", range(line, 0, line, 0)}, {"text", keyword + "\n"}};
+        }
+        case 5: {  // a keyword line retyped: a letter or its end changed (its block read as another)
+            if (places.keywords.empty()) return nlohmann::json();
+            const std::uint32_t at = places.keywords[pick(places.keywords.size())];
+            std::string& keyword = lines[at];
+            const std::uint32_t column = 1 + pick(keyword.size() > 1 ? keyword.size() - 1 : 1);
+            const std::string piece = pick(2) ? std::string("_X") : std::string();
+            const std::uint32_t end = std::min<std::uint32_t>(static_cast<std::uint32_t>(keyword.size()), column + 1);
+            keyword = keyword.substr(0, column) + piece + keyword.substr(end);
+            return {{"range", range(at, column, at, end)}, {"text", piece}};
         }
         default: {  // text across lines removed, keyword lines included
             const std::uint32_t last =
@@ -239,6 +258,72 @@ TEST_CASE("recheck: random edits in and out of the bulk blocks, across keyword l
             const nlohmann::json full = full_check(path, text);
             REQUIRE(published.size() == full.size());
             for (std::size_t i = 0; i < full.size(); ++i) CHECK(published[i] == full[i]);
+        }
+    }
+}
+
+namespace {
+// A deck whose part, section, material and controls lie in an include, its particles in the main file.
+const char* const kIncludeMain = "incremental_with_include.k";
+const char* const kIncludeName = "incremental_parts.inc";
+std::string included_parts() {
+    return "*CONTROL_SPH\n         1         0   1.0e+20         2       150         0\n*SECTION_SPH\n"
+           "         1       1.2       0.2       2.0\n*PART\nwater\n         1         1         1         1\n"
+           "*MAT_NULL\n         1    1000.0\n*EOS_MURNAGHAN\n         1       7.0  357142.9       1.0\n";
+}
+std::string main_with_include() {
+    std::string lattice = lattice_deck(8);
+    // The lattice's settings go to the include: the main file keeps the bulk blocks.
+    const std::size_t from = lattice.find("*CONTROL_SPH"), to = lattice.find("*NODE");
+    return lattice.substr(0, from) + "*INCLUDE\n" + kIncludeName + "\n" + lattice.substr(to);
+}
+
+// The diagnostics a workspace holding only these open texts publishes, by URI: a full check.
+std::map<std::string, nlohmann::json> full_check_of(const std::vector<std::pair<std::string, std::string>>& texts) {
+    std::map<std::string, nlohmann::json> published;
+    lsp::Workspace workspace([&](const nlohmann::json& params) { published[params["uri"]] = params["diagnostics"]; });
+    int version = 1;
+    for (const auto& text : texts) workspace.open(text.first, text.second, version++);
+    workspace.flush();
+    return published;
+}
+}  // namespace
+
+TEST_CASE("recheck: random edits of an open include and of its deck: incremental equals full") {
+    // A project folder of its own (its .git marks the root): an include no deck reads any more is
+    // looked for in that folder only, which holds no deck on disk.
+    const test::TempDir folder;
+    std::filesystem::create_directories(folder.path() / ".git");
+    const std::filesystem::path main = folder.path() / kIncludeMain;
+    const std::filesystem::path include = folder.path() / kIncludeName;
+    const std::string main_uri = lsp::uri_from_path(main), include_uri = lsp::uri_from_path(include);
+    std::map<std::string, nlohmann::json> published;
+    lsp::Workspace workspace([&](const nlohmann::json& params) { published[params["uri"]] = params["diagnostics"]; });
+    std::vector<std::string> main_lines = split_lines(main_with_include());
+    std::vector<std::string> include_lines = split_lines(included_parts());
+    workspace.open(main_uri, join_lines(main_lines), 1);
+    workspace.open(include_uri, join_lines(include_lines), 1);
+    workspace.flush();
+    REQUIRE(workspace.deck_mains().size() == 1);  // the include is checked as part of its deck
+    std::mt19937 random(45);
+    for (int edit = 0; edit < 30; ++edit) {
+        // Two edits in three in the include: its settings feed the rules of the particles next door.
+        const bool in_include = edit % 3 != 2;
+        std::vector<std::string>& lines = in_include ? include_lines : main_lines;
+        const nlohmann::json change = random_edit(lines, random);
+        if (change.is_null()) continue;
+        CAPTURE(edit);
+        CAPTURE(in_include);
+        CAPTURE(change.dump());
+        REQUIRE(workspace.change(in_include ? include_uri : main_uri, edit + 2, nlohmann::json::array({change})));
+        workspace.flush();
+        const auto full = full_check_of({{main_uri, join_lines(main_lines)}, {include_uri, join_lines(include_lines)}});
+        for (const std::string& uri : {main_uri, include_uri}) {
+            CAPTURE(uri);
+            const nlohmann::json expected = full.count(uri) ? full.at(uri) : nlohmann::json::array();
+            const nlohmann::json got = published.count(uri) ? published.at(uri) : nlohmann::json::array();
+            REQUIRE(got.size() == expected.size());
+            for (std::size_t i = 0; i < expected.size(); ++i) CHECK(got[i] == expected[i]);
         }
     }
 }

@@ -1,15 +1,19 @@
 // Open documents, edits and published diagnostics of the language server (lsp/text_change.*,
-// lsp/workspace.*, lsp/diagnostics.*): the editor sees what `sphdeck check` reports.
+// lsp/document_text.*, lsp/workspace.*, lsp/diagnostics.*): the editor sees what `sphdeck check` reports.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <string>
+#include <random>
+#include <memory>
 
 #include "engine/check.hpp"
 #include "lsp/deck_settings.hpp"
 #include "lsp/diagnostics.hpp"
+#include "lsp/document_text.hpp"
 #include "lsp/text_change.hpp"
 #include "lsp/text_position.hpp"
 #include "lsp/uri.hpp"
@@ -304,4 +308,84 @@ TEST_CASE("lsp server: waiting didChange notifications cost one re-check; a requ
     CHECK(s.messages[first_list]["params"]["diagnostics"].size() == 1);
     CHECK(s.last_published(uri)["diagnostics"].empty());
     CHECK(s.last_published(uri)["version"] == 3);
+}
+
+// Issue 45 item 1: an open document's text held in chunks of lines (lsp/document_text.*) gives the
+// same text as applying each change to one string (lsp::apply_change), whatever the change: across
+// chunk boundaries, "\r\n" lines, multi-byte characters, positions past the end, reversed ranges,
+// whole replacements; and it views the opened text without a copy until a change touches it.
+namespace {
+json chunk_test_change(std::uint32_t l0, std::uint32_t c0, std::uint32_t l1, std::uint32_t c1,
+                       const std::string& text) {
+    return {{"range", {{"start", {{"line", l0}, {"character", c0}}}, {"end", {{"line", l1}, {"character", c1}}}}},
+            {"text", text}};
+}
+
+// About `lines` lines of card-like text, with "\r\n" endings and a multi-byte title here and there.
+std::string deck_like_text(int lines) {
+    std::string text;
+    for (int i = 0; i < lines; ++i) {
+        if (i % 97 == 0)
+            text += "*PART\r\nwasser \xC3\xA9t\xC3\xA9 \xF0\x9F\x8C\x8A\r\n";
+        else
+            text += std::to_string(i) + "      1.0e-3      2.0e-3      0.0\n";
+    }
+    return text;
+}
+}  // namespace
+
+TEST_CASE("document text: chunked edits equal edits of one string, across chunks, then joined once") {
+    const std::string original = deck_like_text(12000);  // about 400 KB: several 64 KB chunks
+    lsp::DocumentText document(std::make_shared<const std::string>(original));
+    CHECK(document.chunk_count() > 4);
+    CHECK_FALSE(document.changed());
+    std::string expected = original;
+    std::mt19937 random(45);
+    const auto pick = [&](std::uint32_t n) { return std::uniform_int_distribution<std::uint32_t>(0, n - 1)(random); };
+    const std::string pieces[] = {"",     "x",        "\n",      "a\nb\n",
+                                  "\r\n", "\xC3\xA9", "*NODE\n", std::string(70000, 'z') + "\n"};
+    for (int step = 0; step < 300; ++step) {
+        CAPTURE(step);
+        const std::uint32_t lines = 12500;  // a little past the last line: clamped to the end
+        std::uint32_t l0 = pick(lines), l1 = l0 + pick(step % 10 == 0 ? 3000 : 3);
+        const std::uint32_t c0 = pick(40), c1 = pick(40);
+        if (step % 7 == 0) std::swap(l0, l1);  // reversed: taken in order
+        const std::string& piece = pieces[step % 50 == 0 ? 7 : pick(7)];
+        const json change = chunk_test_change(l0, c0, l1, c1, piece);
+        REQUIRE(lsp::apply_change(expected, change));
+        REQUIRE(document.apply(change));
+        if (step % 25 == 0) REQUIRE(document.joined() == expected);
+    }
+    CHECK(document.changed());
+    CHECK(document.size() == expected.size());
+    const auto joined = std::make_shared<const std::string>(document.joined());
+    REQUIRE(*joined == expected);
+    document.rebase(joined);
+    CHECK_FALSE(document.changed());
+    CHECK(document.joined() == expected);
+    // A malformed change leaves the text alone.
+    CHECK_FALSE(document.apply(json{{"range", "x"}, {"text", ""}}));
+    CHECK_FALSE(document.changed());
+    REQUIRE(document.apply(chunk_test_change(5, 0, 5, 3, "abc")));
+    REQUIRE(lsp::apply_change(expected, chunk_test_change(5, 0, 5, 3, "abc")));
+    CHECK(document.joined() == expected);
+    // A whole replacement, then an empty text and edits of it.
+    REQUIRE(document.apply(json{{"text", "*KEYWORD\n*END\n"}}));
+    CHECK(document.joined() == "*KEYWORD\n*END\n");
+    REQUIRE(document.apply(chunk_test_change(0, 0, 9, 0, "")));
+    CHECK(document.joined().empty());
+    REQUIRE(document.apply(chunk_test_change(3, 4, 3, 4, "tail")));
+    CHECK(document.joined() == "tail");
+}
+
+TEST_CASE("document text: the opened text is viewed, and a change touches only its own chunk") {
+    const auto original = std::make_shared<const std::string>(deck_like_text(12000));
+    lsp::DocumentText document(original);
+    CHECK(original.use_count() == 2);  // held, not copied
+    const std::size_t chunks = document.chunk_count();
+    REQUIRE(document.apply(chunk_test_change(6000, 2, 6000, 3, "7")));
+    CHECK(document.chunk_count() == chunks);
+    std::string expected = *original;
+    REQUIRE(lsp::apply_change(expected, chunk_test_change(6000, 2, 6000, 3, "7")));
+    CHECK(document.joined() == expected);
 }

@@ -1,0 +1,141 @@
+#include "lsp/document_text.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <utility>
+
+#include "lsp/text_change.hpp"
+#include "lsp/text_position.hpp"
+
+namespace sphdeck::lsp {
+namespace {
+// A chunk's size: small enough that rebuilding one is cheap (a few microseconds), big enough that
+// the chunks of a 400 MB document stay a few thousand to walk.
+constexpr std::size_t kChunkBytes = std::size_t{64} << 10;
+
+std::size_t count_newlines(std::string_view text) {
+    std::size_t count = 0;
+    const char* at = text.data();
+    const char* const end = text.data() + text.size();
+    while (at < end) {
+        const void* newline = std::memchr(at, '\n', static_cast<std::size_t>(end - at));
+        if (!newline) break;
+        ++count;
+        at = static_cast<const char*>(newline) + 1;
+    }
+    return count;
+}
+
+}  // namespace
+
+DocumentText::DocumentText(std::shared_ptr<const std::string> text) : base_(std::move(text)) {
+    if (!base_) base_ = std::make_shared<const std::string>();
+    split_into_chunks(*base_, chunks_, nullptr);
+    if (chunks_.empty()) chunks_.push_back(Chunk{});
+}
+
+// Cuts `text` after a '\n' every kChunkBytes or so: every chunk but the last ends with '\n'.
+void DocumentText::split_into_chunks(std::string_view text, std::vector<Chunk>& out,
+                                     const std::shared_ptr<std::string>& owner) {
+    std::size_t start = 0;
+    while (start < text.size()) {
+        std::size_t end = text.size();
+        if (text.size() - start > kChunkBytes) {
+            const void* newline = std::memchr(text.data() + start + kChunkBytes, '\n', text.size() - start - kChunkBytes);
+            if (newline) end = static_cast<std::size_t>(static_cast<const char*>(newline) - text.data()) + 1;
+        }
+        const std::string_view piece = text.substr(start, end - start);
+        out.push_back(Chunk{piece, owner, count_newlines(piece)});
+        start = end;
+    }
+}
+
+DocumentText::Place DocumentText::place_of(std::uint32_t line, std::uint32_t character) const {
+    std::size_t before = 0;  // lines that start in the chunks before
+    for (std::size_t k = 0; k < chunks_.size(); ++k) {
+        const Chunk& chunk = chunks_[k];
+        if (line >= before + chunk.newlines && k + 1 < chunks_.size()) {
+            before += chunk.newlines;
+            continue;
+        }
+        // The line starts in this chunk (or lies past the last line: the text's end).
+        const std::string_view text = chunk.text;
+        std::size_t start = 0;
+        for (std::size_t skip = line - before; skip > 0; --skip) {
+            const void* newline = std::memchr(text.data() + start, '\n', text.size() - start);
+            if (!newline) return Place{k, text.size()};
+            start = static_cast<std::size_t>(static_cast<const char*>(newline) - text.data()) + 1;
+        }
+        std::size_t end = text.find('\n', start);
+        if (end == std::string_view::npos) end = text.size();
+        if (end > start && text[end - 1] == '\r') --end;  // "\r\n": the '\r' ends the line too
+        return Place{k, start + byte_offset(text.substr(start, end - start), character)};
+    }
+    return Place{};  // not reached: there is always a chunk
+}
+
+bool DocumentText::apply(const nlohmann::json& change) {
+    const auto event = read_change(change);
+    if (!event) return false;
+    changed_ = true;
+    const std::string& inserted = *event->text;
+    if (event->whole) {
+        auto owner = std::make_shared<std::string>(inserted);
+        base_.reset();  // no chunk views it any more
+        chunks_.clear();
+        split_into_chunks(*owner, chunks_, owner);
+        if (chunks_.empty()) chunks_.push_back(Chunk{});
+        return true;
+    }
+    Place from = place_of(event->start.line, event->start.character);
+    Place to = place_of(event->end.line, event->end.character);
+    if (to.chunk < from.chunk || (to.chunk == from.chunk && to.offset < from.offset)) std::swap(from, to);
+    // The chunks the range touches are rebuilt; followers join them while the result is small, so
+    // deletions do not leave a trail of tiny chunks.
+    std::size_t last = to.chunk;
+    auto rebuilt = std::make_shared<std::string>();
+    rebuilt->reserve(from.offset + inserted.size() + chunks_[last].text.size() - to.offset);
+    rebuilt->append(chunks_[from.chunk].text.substr(0, from.offset))
+        .append(inserted)
+        .append(chunks_[last].text.substr(to.offset));
+    while (rebuilt->size() < kChunkBytes / 4 && last + 1 < chunks_.size()) rebuilt->append(chunks_[++last].text);
+    std::vector<Chunk> pieces;
+    split_into_chunks(*rebuilt, pieces, rebuilt);
+    const auto first = chunks_.begin() + static_cast<std::ptrdiff_t>(from.chunk);
+    const auto position = chunks_.erase(first, chunks_.begin() + static_cast<std::ptrdiff_t>(last) + 1);
+    chunks_.insert(position, pieces.begin(), pieces.end());
+    if (chunks_.empty()) chunks_.push_back(Chunk{});
+    return true;
+}
+
+std::size_t DocumentText::size() const {
+    std::size_t bytes = 0;
+    for (const Chunk& chunk : chunks_) bytes += chunk.text.size();
+    return bytes;
+}
+
+std::string DocumentText::joined() const {
+    std::string out;
+    out.reserve(size());
+    for (const Chunk& chunk : chunks_) out.append(chunk.text);
+    return out;
+}
+
+void DocumentText::rebase(std::shared_ptr<const std::string> text) {
+    base_ = std::move(text);
+    std::size_t offset = 0;
+    for (Chunk& chunk : chunks_) {
+        if (offset + chunk.text.size() > base_->size()) break;  // not the joined text: split it anew below
+        chunk.text = std::string_view(base_->data() + offset, chunk.text.size());
+        chunk.owned.reset();
+        offset += chunk.text.size();
+    }
+    if (offset != base_->size()) {
+        chunks_.clear();
+        split_into_chunks(*base_, chunks_, nullptr);
+        if (chunks_.empty()) chunks_.push_back(Chunk{});
+    }
+    changed_ = false;
+}
+
+}  // namespace sphdeck::lsp

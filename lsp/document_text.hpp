@@ -1,0 +1,59 @@
+// An open document's text held in chunks of whole lines (issue 45 item 1), so that a change costs
+// in proportion to the change and the chunk it falls in, not to the document: finding its line walks
+// the chunks' line counts, not the text, and only the chunks it touches are rebuilt. Unedited chunks
+// view the text the document was opened (or last joined) with, without a copy. The readers want one
+// contiguous buffer: joined() builds it only when asked, once per check, and a burst of changes between
+// two checks costs no pass over the text at all (lsp::Workspace joins at flush, before its check).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace sphdeck::lsp {
+
+class DocumentText {
+public:
+    // Views `text` (shared, never copied) until a change touches it.
+    explicit DocumentText(std::shared_ptr<const std::string> text);
+
+    // Applies one LSP change event with the rules of lsp/text_change.hpp (UTF-16 positions, lines
+    // split at '\n', clamped to the text). False (and the text unchanged) when it is not one.
+    bool apply(const nlohmann::json& change);
+
+    // Whether a change came since the text was opened or last joined.
+    bool changed() const { return changed_; }
+    // The whole text as a new string (one pass over the chunks).
+    std::string joined() const;
+    // After the joined text was stored as `text` (the same bytes): the chunks view it from now on and
+    // the edited chunks' own copies are freed.
+    void rebase(std::shared_ptr<const std::string> text);
+
+    std::size_t size() const;
+    std::size_t chunk_count() const { return chunks_.size(); }
+
+private:
+    struct Chunk {
+        std::string_view text;        // into `base_` or into `owned`
+        std::shared_ptr<std::string> owned;  // the chunk's own text once a change rebuilt it
+        std::size_t newlines = 0;
+    };
+    // Where a byte lies: chunk and offset in it.
+    struct Place {
+        std::size_t chunk = 0;
+        std::size_t offset = 0;
+    };
+    Place place_of(std::uint32_t line, std::uint32_t character) const;
+    void split_into_chunks(std::string_view text, std::vector<Chunk>& out, const std::shared_ptr<std::string>& owner);
+
+    std::shared_ptr<const std::string> base_;
+    std::vector<Chunk> chunks_;  // never empty; each but the last ends with '\n'
+    bool changed_ = false;
+};
+
+}  // namespace sphdeck::lsp
