@@ -91,9 +91,9 @@ SplitLines split_lines(const SourceText& source, std::size_t first, LineSyntax s
             begin = static_cast<std::size_t>(static_cast<const char*>(newline) - text.data()) + 1;
         }
         LineChunk& chunk = split.chunks[c];
-        const std::size_t scanned =
-            syntax == LineSyntax::Dyna ? scan_chunk<DynaGrammarLines>(text.data(), size, begin, to, chunk)
-                                       : scan_chunk<RadiossGrammarLines>(text.data(), size, begin, to, chunk);
+        const std::size_t scanned = syntax == LineSyntax::Dyna
+                                        ? scan_chunk<DynaGrammarLines>(text.data(), size, begin, to, chunk)
+                                        : scan_chunk<RadiossGrammarLines>(text.data(), size, begin, to, chunk);
         source.release(from, scanned);  // a mapped file's pages: read again, line by line, when decoded
     }
     source.release(0, size);  // the folios the threads' edges mapped

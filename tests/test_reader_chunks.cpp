@@ -23,13 +23,21 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// Under the sanitizers (some ten times slower) every fourth deck of decks/ is cut, the others are not read.
+#ifdef SPHDECK_SANITIZED
+constexpr std::size_t chunked_deck_stride = 4;
+#else
+constexpr std::size_t chunked_deck_stride = 1;
+#endif
+
 std::string span_text(const grammar::Span& s) {
     return std::to_string(s.file) + ":" + std::to_string(s.line) + ":" + std::to_string(s.column) + "-" +
            std::to_string(s.end_column);
 }
 
 std::string diagnostic_text(const diag::Diagnostic& d) {
-    std::string out = d.code + " " + std::string(diag::to_string(d.severity)) + " " + span_text(d.span) + " " + d.message;
+    std::string out =
+        d.code + " " + std::string(diag::to_string(d.severity)) + " " + span_text(d.span) + " " + d.message;
     for (const diag::Note& n : d.notes) out += " | note " + span_text(n.span) + " " + n.message;
     for (const diag::Fix& f : d.fixes) {
         out += " | fix " + f.description + (f.safe ? " safe" : " unsafe");
@@ -74,7 +82,8 @@ std::string first_difference(const std::string& expected, const std::string& fou
     for (std::size_t n = 1;; ++n) {
         const bool more_a = static_cast<bool>(std::getline(a, la)), more_b = static_cast<bool>(std::getline(b, lb));
         if (!more_a && !more_b) return {};
-        if (la != lb || more_a != more_b) return "item " + std::to_string(n) + ": expected '" + la + "', found '" + lb + "'";
+        if (la != lb || more_a != more_b)
+            return "item " + std::to_string(n) + ": expected '" + la + "', found '" + lb + "'";
     }
 }
 
@@ -103,21 +112,80 @@ std::string chunk_reading(Read&& read, std::size_t chunk_bytes, int threads) {
 
 // Lines that each mean something else to the LS-DYNA reader (keywords indented or not, suffixes, comments,
 // *COMMENT and *END, PGP blocks, parameters, free and long lines, blank lines...).
-const std::vector<std::string> dyna_lines = {
-    "*KEYWORD", "*KEYWORD LONG=Y", "*keyword i10=y", "*NODE", "*NODE +", "*NODE%", "*NODE -1", "*node-", "  *PART",
-    "\t*MAT_NULL", "*", "  *", "  **(1/3)", "*PARAMETER_EXPRESSION", "R X     1.0*2", "*PARAMETER", "R       a     1.0",
-    "I       n        3", "*COMMENT", "*END", "*CONTROL_SPH", "$ comment", "$# nid x", "", "   ", "\t",
-    "       1     0.0     1.0", "1,2.0,3.0", "-1.0,2.0", "-----BEGIN PGP MESSAGE-----", "xyz encrypted",
-    "-----END PGP MESSAGE-----", "       2  1.0e+00 &a", "\t1\t2", "*ELEMENT_SPH", "       1       1  1.0e-06",
-    "*TITLE", "a title, with a comma", "*INCLUDE", "no_such_include.k", "*SECTION_SPH", std::string(230, '7'),
-    "*INCLUDE_PATH", "*DEFINE_CURVE_TITLE", "-"};
+const std::vector<std::string> dyna_lines = {"*KEYWORD",
+                                             "*KEYWORD LONG=Y",
+                                             "*keyword i10=y",
+                                             "*NODE",
+                                             "*NODE +",
+                                             "*NODE%",
+                                             "*NODE -1",
+                                             "*node-",
+                                             "  *PART",
+                                             "\t*MAT_NULL",
+                                             "*",
+                                             "  *",
+                                             "  **(1/3)",
+                                             "*PARAMETER_EXPRESSION",
+                                             "R X     1.0*2",
+                                             "*PARAMETER",
+                                             "R       a     1.0",
+                                             "I       n        3",
+                                             "*COMMENT",
+                                             "*END",
+                                             "*CONTROL_SPH",
+                                             "$ comment",
+                                             "$# nid x",
+                                             "",
+                                             "   ",
+                                             "\t",
+                                             "       1     0.0     1.0",
+                                             "1,2.0,3.0",
+                                             "-1.0,2.0",
+                                             "-----BEGIN PGP MESSAGE-----",
+                                             "xyz encrypted",
+                                             "-----END PGP MESSAGE-----",
+                                             "       2  1.0e+00 &a",
+                                             "\t1\t2",
+                                             "*ELEMENT_SPH",
+                                             "       1       1  1.0e-06",
+                                             "*TITLE",
+                                             "a title, with a comma",
+                                             "*INCLUDE",
+                                             "no_such_include.k",
+                                             "*SECTION_SPH",
+                                             std::string(230, '7'),
+                                             "*INCLUDE_PATH",
+                                             "*DEFINE_CURVE_TITLE",
+                                             "-"};
 
 // The same for OpenRadioss (headers, comments, #include and #enddata, /END, blank lines...).
-const std::vector<std::string> radioss_lines = {
-    "#RADIOSS STARTER", "/BEGIN", "deck title", "      2024         0", "kg mm ms", "/NODE",
-    "         1       0.0       0.0       0.0", "  /PART/1", "/PART/1", "part title", "# comment", "$ comment",
-    "#include no_such.inc", "#enddata", "/END", "", "  ", "/", "//x", " /1/2", "#INCLUDE x", "/SPH/1", "/MAT/LAW6/2",
-    "1,2,3", "\t/TH/PART/3", std::string(200, '1'), "/end"};
+const std::vector<std::string> radioss_lines = {"#RADIOSS STARTER",
+                                                "/BEGIN",
+                                                "deck title",
+                                                "      2024         0",
+                                                "kg mm ms",
+                                                "/NODE",
+                                                "         1       0.0       0.0       0.0",
+                                                "  /PART/1",
+                                                "/PART/1",
+                                                "part title",
+                                                "# comment",
+                                                "$ comment",
+                                                "#include no_such.inc",
+                                                "#enddata",
+                                                "/END",
+                                                "",
+                                                "  ",
+                                                "/",
+                                                "//x",
+                                                " /1/2",
+                                                "#INCLUDE x",
+                                                "/SPH/1",
+                                                "/MAT/LAW6/2",
+                                                "1,2,3",
+                                                "\t/TH/PART/3",
+                                                std::string(200, '1'),
+                                                "/end"};
 
 // A deck of `count` lines drawn from `lines`, with "\r\n" or "\n" ends, a byte order mark sometimes, and
 // sometimes no newline after the last line.
@@ -162,7 +230,8 @@ TEST_CASE("reader chunks: the lines of a file are cut at line starts, each line 
     for (std::size_t size = 1; size <= text.size() + 1; ++size) {
         const grammar::SplitLines split = grammar::split_lines(source, 0, grammar::LineSyntax::Dyna, size);
         std::vector<std::uint32_t> starts;
-        for (const grammar::LineChunk& chunk : split.chunks) starts.insert(starts.end(), chunk.starts.begin(), chunk.starts.end());
+        for (const grammar::LineChunk& chunk : split.chunks)
+            starts.insert(starts.end(), chunk.starts.begin(), chunk.starts.end());
         CHECK(starts == std::vector<std::uint32_t>{0, 3, 4, 8, 18});
         CHECK(split.lines == 5);
     }
@@ -202,22 +271,24 @@ TEST_CASE("reader chunks: generated OpenRadioss decks read the same at every chu
 TEST_CASE("reader chunks: every deck of decks/ reads the same cut at random sizes on 1, 2 and 16 threads") {
     std::mt19937 random(400);
     const int thread_counts[] = {1, 2, 16};
-    std::size_t decks = 0;
+    std::size_t decks = 0, seen = 0;
     for (const auto& entry : fs::recursive_directory_iterator(fs::path(SPHDECK_SOURCE_DIR) / "decks")) {
         const std::string name = entry.path().filename().string();
         const std::string extension = entry.path().extension().string();
         if (!entry.is_regular_file() ||
             !(extension == ".k" || extension == ".key" || extension == ".dyn" || name.ends_with("_0000.rad")))
             continue;
+        if (seen++ % chunked_deck_stride != 0) continue;
         const std::string path = entry.path().string();
         const auto read = [&] { return grammar::read_deck(path); };
         const std::string expected = chunk_reading(read, grammar::read_line_by_line, 1);
         const std::size_t size = static_cast<std::size_t>(entry.file_size());
-        const std::size_t chunk = std::max<std::size_t>(1, size / 4096) + random() % std::max<std::size_t>(64, size / 16);
+        const std::size_t chunk =
+            std::max<std::size_t>(1, size / 4096) + random() % std::max<std::size_t>(64, size / 16);
         const int threads = thread_counts[decks % 3];
         INFO(path, " cut every ", chunk, " bytes on ", threads, " threads");
         CHECK(first_difference(expected, chunk_reading(read, chunk, threads)) == "");
         ++decks;
     }
-    CHECK(decks > 250);
+    CHECK(decks * chunked_deck_stride > 250);
 }

@@ -11,7 +11,8 @@ void DeckReader::read_chunked(const SourceText& text, std::size_t chunk_bytes) {
     const char* const end = base + text.size();
     const std::size_t first = text.view().starts_with("\xEF\xBB\xBF") ? 3 : 0;  // the grammar's byte_order_mark
     SplitLines split = split_lines(text, first, LineSyntax::Radioss, chunk_bytes);
-    if (deck_.lines.capacity() < deck_.lines.size() + split.lines) deck_.lines.reserve(deck_.lines.size() + split.lines);
+    if (deck_.lines.capacity() < deck_.lines.size() + split.lines)
+        deck_.lines.reserve(deck_.lines.size() + split.lines);
     for (LineChunk& chunk : split.chunks) {
         walk_chunk(
             chunk, [&](std::uint32_t at) { grammar_line(base + at, end); },
