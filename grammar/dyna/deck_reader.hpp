@@ -59,6 +59,12 @@ private:
 
     static constexpr std::size_t release_step = std::size_t{8} << 20;
 
+    // A big file read in chunks on all threads (grammar/line_chunks.hpp, chunked_lines.cpp): the lines the
+    // grammar must read go through it one by one (grammar_line, reader.cpp), runs of data lines in one step.
+    void read_chunked(const SourceText& text, std::size_t chunk_bytes);
+    void grammar_line(const char* begin, const char* text_end);
+    void data_lines(const std::uint32_t* starts, std::size_t count, const char* text_end);
+
     OpenFile& current() { return stack_.back(); }
     bool indented_data(std::size_t star, const KeywordLineParts& parts);
     void close_block();

@@ -9,6 +9,7 @@
 #include "grammar/dyna/deck_reader.hpp"
 #include "grammar/dyna/line_grammar.hpp"
 #include "grammar/file_paths.hpp"
+#include "grammar/line_chunks.hpp"
 #include "text/text_file.hpp"
 
 namespace sphdeck::grammar::dyna {
@@ -92,9 +93,11 @@ RawDeck read_main(SourceFile main, const std::filesystem::path& directory, const
     // memchr, not std::count: glibc's vectorised memchr costs a tenth of the instructions per byte.
     // Counted in slices, each released behind the count: a mapped deck scanned whole would be
     // resident whole, which was the peak of memory of a check without geometry.
+    // A file read in chunks counts its lines on the threads (DeckReader::read_chunked reserves then).
     std::size_t newlines = 0;
     constexpr std::size_t slice = std::size_t{1} << 20;
-    const std::size_t size = main.text.size();
+    const bool chunked = line_chunk_bytes(main.text.size()) > 0;
+    const std::size_t size = chunked ? 0 : main.text.size();
     for (std::size_t at = 0; at < size; at += slice) {
         const char* const end = main.text.data() + std::min(size, at + slice);
         for (const char* p = main.text.data() + at;
@@ -102,7 +105,7 @@ RawDeck read_main(SourceFile main, const std::filesystem::path& directory, const
             ++newlines;
         main.text.release(at, at + slice);
     }
-    deck.lines.reserve(newlines + 1);
+    if (!chunked) deck.lines.reserve(newlines + 1);
     FileId id = deck.sources.add(std::move(main));
     DeckReader reader(deck, options);
     reader.set_main_directory(directory);
@@ -130,9 +133,13 @@ void DeckReader::read(FileId file, CardFormat inherited_format, const FileCache:
     open.base = source.text.data();
     open.text = &source.text;
     stack_.push_back(open);
-    pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf, const char*> in(
-        source.text.data(), source.text.data() + source.text.size(), source.path.c_str());
-    pegtl::parse<rules::file, action>(in, *this);
+    if (const std::size_t chunk_bytes = line_chunk_bytes(source.text.size())) {
+        read_chunked(source.text, chunk_bytes);
+    } else {
+        pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf, const char*> in(
+            source.text.data(), source.text.data() + source.text.size(), source.path.c_str());
+        pegtl::parse<rules::file, action>(in, *this);
+    }
     close_block();
     report_dropped_blocks(first_diagnostic);
     const std::uint32_t physical_lines = current().line;
@@ -140,6 +147,12 @@ void DeckReader::read(FileId file, CardFormat inherited_format, const FileCache:
     stack_.pop_back();
     if (shared.claim) shared.claim->fulfil(reading_of(file, first_block, first_line, first_diagnostic, physical_lines));
     source.text.release(0, source.text.size());  // read again, block by block, when decoded
+}
+
+// One line read with the line grammar, as the file loop reads it there (`begin` starts a line).
+void DeckReader::grammar_line(const char* begin, const char* text_end) {
+    pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf, const char*> in(begin, text_end, "");
+    pegtl::parse<rules::line, action>(in, *this);
 }
 
 RawDeck read_file(const std::string& path, const ReaderOptions& options) {

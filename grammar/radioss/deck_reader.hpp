@@ -41,6 +41,12 @@ private:
         bool headed = false;  // a header line was read in this file
     };
 
+    // A big file read in chunks on all threads (grammar/line_chunks.hpp, chunked_lines.cpp): the lines the
+    // grammar must read go through it one by one (grammar_line, reader.cpp), runs of data lines in one step.
+    void read_chunked(const SourceText& text, std::size_t chunk_bytes);
+    void grammar_line(const char* begin, const char* text_end);
+    void data_lines(const std::uint32_t* starts, std::size_t count, const char* text_end);
+
     OpenFile& current() { return stack_.back(); }
     // Lines of an included file before its first header: no keyword reads them.
     bool in_preamble() const { return stack_.size() > 1 && !stack_.back().headed; }

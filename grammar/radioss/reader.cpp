@@ -7,6 +7,7 @@
 #include "grammar/radioss/line_grammar.hpp"
 #include "grammar/deck_files.hpp"
 #include "grammar/file_paths.hpp"
+#include "grammar/line_chunks.hpp"
 
 namespace sphdeck::grammar::dyna {
 SourceText read_include_text(const std::string& path, const FileOverlay* overlay = nullptr, FileCache* cache = nullptr,
@@ -146,13 +147,17 @@ void read_engine(RawDeck& deck, const std::string& starter_name, const fs::path&
 
 RawDeck read_main(SourceFile main, const fs::path& directory, const ReaderOptions& options) {
     RawDeck deck;
-    std::size_t newlines = 0;
-    for (const char* p = main.text.data();
-         (p = static_cast<const char*>(
-              std::memchr(p, '\n', static_cast<std::size_t>(main.text.data() + main.text.size() - p))));
-         ++p)
-        ++newlines;
-    deck.lines.reserve(newlines + 1);
+    // A file read in chunks counts its lines on the threads (DeckReader::read_chunked reserves then).
+    const bool chunked = line_chunk_bytes(main.text.size()) > 0;
+    if (!chunked) {
+        std::size_t newlines = 0;
+        for (const char* p = main.text.data();
+             (p = static_cast<const char*>(
+                  std::memchr(p, '\n', static_cast<std::size_t>(main.text.data() + main.text.size() - p))));
+             ++p)
+            ++newlines;
+        deck.lines.reserve(newlines + 1);
+    }
     const std::string name = main.display_name;
     read_one(deck, std::move(main), directory, options);
     read_engine(deck, name, directory, options);
@@ -187,12 +192,22 @@ void DeckReader::read(FileId file) {
     open.id = file;
     open.base = source.text.data();
     stack_.push_back(open);
-    pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf, const char*> in(
-        source.text.data(), source.text.data() + source.text.size(), source.path.c_str());
-    pegtl::parse<rules::file, action>(in, *this);
+    if (const std::size_t chunk_bytes = line_chunk_bytes(source.text.size())) {
+        read_chunked(source.text, chunk_bytes);
+    } else {
+        pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf, const char*> in(
+            source.text.data(), source.text.data() + source.text.size(), source.path.c_str());
+        pegtl::parse<rules::file, action>(in, *this);
+    }
     deck_.stats.lines += current().line;
     stack_.pop_back();
     if (stack_.empty()) close_block(), report_dropped_blocks();
+}
+
+// One line read with the line grammar, as the file loop reads it there (`begin` starts a line).
+void DeckReader::grammar_line(const char* begin, const char* text_end) {
+    pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf, const char*> in(begin, text_end, "");
+    pegtl::parse<rules::line, action>(in, *this);
 }
 
 RawDeck read_file(const std::string& path, const ReaderOptions& options) {
