@@ -8,16 +8,10 @@ using keywords::FieldType;
 
 std::vector<LineToken> line_tokens(std::string_view text) {
     std::vector<LineToken> tokens;
-    for (std::size_t i = 0; i < text.size();) {
-        if (text[i] == ' ') {
-            ++i;
-            continue;
-        }
-        LineToken t{i, i, 0};
-        while (t.end < text.size() && text[t.end] != ' ') ++t.end;
-        i = t.end;
+    for_each_token(text, [&](const LineToken& t) {
         tokens.push_back(t);
-    }
+        return true;
+    });
     return tokens;
 }
 

@@ -17,6 +17,22 @@ struct LineToken {
     std::size_t slot = 0;            // the field it is given to, once placed
 };
 
+// Calls `f(LineToken)` for each run of non-blank characters of `text`, left to right, until `f` returns
+// false; allocates nothing (the alignment tally runs on every line the serial walk decodes).
+template <class F>
+void for_each_token(std::string_view text, F&& f) {
+    for (std::size_t i = 0; i < text.size();) {
+        if (text[i] == ' ') {
+            ++i;
+            continue;
+        }
+        LineToken t{i, i, 0};
+        while (t.end < text.size() && text[t.end] != ' ') ++t.end;
+        i = t.end;
+        if (!f(t)) return;
+    }
+}
+
 // The runs of non-blank characters of `text`, left to right.
 std::vector<LineToken> line_tokens(std::string_view text);
 

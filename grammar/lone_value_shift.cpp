@@ -1,7 +1,8 @@
 #include "grammar/lone_value_shift.hpp"
 
 #include <algorithm>
-#include <vector>
+#include <array>
+#include <span>
 
 #include "grammar/line_tokens.hpp"
 #include "grammar/shifted_line.hpp"
@@ -41,22 +42,32 @@ std::size_t field_of(std::size_t begin, std::size_t end, std::span<const FixedFi
 void tally_alignment(std::string_view text, std::span<const FixedField> slots, std::span<const FieldType> types,
                      AlignmentTally& tally, Judged judged) {
     const std::size_t fields = std::min(slots.size(), types.size());
-    for (const LineToken& t : line_tokens(text)) {
+    for_each_token(text, [&](const LineToken& t) {
         const std::size_t s = field_of(t.begin, t.end, slots, fields);
-        if (s == fields || !tallied_field(types[s], judged)) continue;
+        if (s == fields || !tallied_field(types[s], judged)) return true;
         if (t.end == slot_end(slots[s]))
             ++tally.right;
         else
             ++tally.other;
-    }
+        return true;
+    });
 }
 
 std::optional<LoneShift> find_lone_shift(std::string_view text, std::span<const FixedField> slots,
                                          std::span<const FieldType> types, Judged judged) {
     constexpr std::size_t max_values = 8;
     if (text.find('\t') != std::string_view::npos || is_free_format(text)) return std::nullopt;
-    const std::vector<LineToken> tokens = line_tokens(text);
-    if (tokens.empty() || tokens.size() > max_values) return std::nullopt;
+    // At most max_values tokens, kept on the stack: this runs on every line the serial walk decodes.
+    std::array<LineToken, max_values> kept{};
+    std::size_t count = 0;
+    bool too_many = false;
+    for_each_token(text, [&](const LineToken& t) {
+        if (count == max_values) return !(too_many = true);
+        kept[count++] = t;
+        return true;
+    });
+    const std::span<const LineToken> tokens(kept.data(), count);
+    if (tokens.empty() || too_many) return std::nullopt;
     const std::size_t fields = std::min(slots.size(), types.size());
     // As written: every value whole in a number field, none judged at its field's end.
     std::size_t judged_values = 0;
@@ -77,7 +88,8 @@ std::optional<LoneShift> find_lone_shift(std::string_view text, std::span<const 
     if (judged == Judged::Integers && judged_values < 2) return std::nullopt;
     std::optional<LoneShift> found;
     for (std::size_t n = 1; n <= max_shift; ++n) {
-        std::vector<LineToken> moved = tokens;
+        std::array<LineToken, max_values> moved_tokens = kept;
+        const std::span<LineToken> moved(moved_tokens.data(), count);
         if (!place_tokens(text, moved, slots, types, static_cast<int>(n))) continue;
         const bool at_ends = std::all_of(moved.begin(), moved.end(), [&](const LineToken& t) {
             if (!number_field(types[t.slot])) return false;

@@ -105,6 +105,19 @@ std::string without_text_fields(std::string_view text, std::span<const FixedFiel
     return out;
 }
 
+// Every token placed in an integer field is written as an integer (or a parameter). A shift that would
+// put a real such as `1.0` there is no reading the author evidently meant: read in place, that real sat in
+// a real field (ENDTIM `1.0` moved into ENDCYC), and LS-DYNA's and the starter's readers differ on a real in an
+// integer field (DK004).
+bool integers_written_as_integers(std::string_view text, const std::vector<LineToken>& tokens,
+                                  std::span<const FieldType> types) {
+    return std::all_of(tokens.begin(), tokens.end(), [&](const LineToken& t) {
+        if (t.slot >= types.size() || types[t.slot] != FieldType::Integer) return true;
+        const ValueShape shape = classify_value(text.substr(t.begin, t.end - t.begin)).shape;
+        return shape == ValueShape::Integer || shape == ValueShape::Parameter;
+    });
+}
+
 }  // namespace
 
 std::vector<FieldType> field_types(const keywords::CardSpec& card) {
@@ -113,10 +126,20 @@ std::vector<FieldType> field_types(const keywords::CardSpec& card) {
     return types;
 }
 
-bool place_tokens(std::string_view text, std::vector<LineToken>& tokens, std::span<const FixedField> slots,
+bool place_tokens(std::string_view text, std::span<LineToken> tokens, std::span<const FixedField> slots,
                   std::span<const FieldType> types, int shift) {
     const std::size_t fields = std::min(slots.size(), types.size());
-    std::vector<bool> taken(fields, false);
+    // Which fields hold a token: a bit each for the cards of up to 64 fields (every card but a few), else a
+    // vector (this runs on every line the serial walk tallies).
+    std::uint64_t taken_bits = 0;
+    std::vector<bool> taken_many(fields > 64 ? fields : 0, false);
+    const auto taken = [&](std::size_t s) { return fields > 64 ? taken_many[s] : ((taken_bits >> s) & 1U) != 0; };
+    const auto take = [&](std::size_t s) {
+        if (fields > 64)
+            taken_many[s] = true;
+        else
+            taken_bits |= std::uint64_t{1} << s;
+    };
     for (LineToken& t : tokens) {
         const auto b = static_cast<std::ptrdiff_t>(t.begin) - shift, e = static_cast<std::ptrdiff_t>(t.end) - shift;
         if (b < 0) return false;
@@ -124,9 +147,9 @@ bool place_tokens(std::string_view text, std::vector<LineToken>& tokens, std::sp
         while (s < fields && !(static_cast<std::ptrdiff_t>(slots[s].start) <= b &&
                                e <= static_cast<std::ptrdiff_t>(slot_end(slots[s]))))
             ++s;
-        if (s == fields || taken[s] || types[s] == FieldType::Unused) return false;
+        if (s == fields || taken(s) || types[s] == FieldType::Unused) return false;
         if (!reads_as(text.substr(t.begin, t.end - t.begin), types[s])) return false;
-        taken[s] = true;
+        take(s);
         t.slot = s;
     }
     return true;
@@ -149,12 +172,17 @@ std::optional<LineShift> find_shift(std::string_view text, std::string_view head
     const bool by_header = header_aligned(header, slots, types.size());
     const bool clean = place_tokens(numbers, tokens, slots, types, 0);
     if (clean && (!by_header || aligned(tokens, slots, 0, true))) return std::nullopt;
+    // Without text fields nothing is blanked: the same tokens at every shift (place_tokens sets each slot again).
+    const bool text_fields = std::find(types.begin(), types.end(), FieldType::Text) != types.end();
     std::optional<LineShift> found;
     for (int n = -max_shift; n <= max_shift; ++n) {
         if (n == 0) continue;
-        numbers = without_text_fields(text, slots, types, n);
-        tokens = line_tokens(numbers);
+        if (text_fields) {
+            numbers = without_text_fields(text, slots, types, n);
+            tokens = line_tokens(numbers);
+        }
         if (tokens.size() < 2 || !place_tokens(numbers, tokens, slots, types, n)) continue;
+        if (!integers_written_as_integers(numbers, tokens, types)) continue;
         const bool header_says = by_header && aligned(tokens, slots, n, true);
         const bool straddles_say = !clean && aligned(tokens, slots, n, false);
         if (!header_says && !straddles_say) continue;

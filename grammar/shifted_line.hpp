@@ -21,7 +21,7 @@ namespace sphdeck::grammar {
 // token straddles two fields, lies outside the card's fields or in an unused one, two tokens share a
 // field, or a value does not read as its field's type.
 // `types`: one per field (an LS-DYNA card's field types, or an OpenRadioss card's cells as types).
-bool place_tokens(std::string_view text, std::vector<LineToken>& tokens, std::span<const FixedField> slots,
+bool place_tokens(std::string_view text, std::span<LineToken> tokens, std::span<const FixedField> slots,
                   std::span<const keywords::FieldType> types, int shift);
 
 // The field types of an LS-DYNA card, in order.
@@ -38,7 +38,8 @@ struct LineShift {
 // value ends (or starts) exactly `columns` past its field's end (start) while read as is some value
 // straddles a boundary; or `header` (the `$#` comment line above, OpenRadioss `#`, empty when none) names the fields
 // right-aligned to their ends and the values all end `columns` past them.
-// A card that starts with a long text field (a title) is never looked at: its blanks are text.
+// A card that starts with a long text field (a title) is never looked at: its blanks are text. A shift that
+// would move a real (`1.0`) into an integer field is not taken: no certain reading.
 std::optional<LineShift> find_shift(std::string_view text, std::string_view header, std::span<const FixedField> slots,
                                     std::span<const keywords::FieldType> types);
 std::optional<LineShift> find_shift(std::string_view text, std::string_view header, std::span<const FixedField> slots,

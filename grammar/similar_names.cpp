@@ -59,8 +59,10 @@ std::size_t edit_distance(std::string_view a, std::string_view b, SwapCost swap)
     return typing_distance(a, b, false, static_cast<std::size_t>(-1) / 2, swap) / 2;
 }
 
-std::size_t close_enough(std::string_view known) {
-    const std::size_t edits = known.size() <= 4 ? 1 : std::max<std::size_t>(2, known.size() / 4);
+std::size_t close_enough(std::string_view known) { return close_enough_for_length(known.size()); }
+
+std::size_t close_enough_for_length(std::size_t length) {
+    const std::size_t edits = length <= 4 ? 1 : std::max<std::size_t>(2, length / 4);
     return 2 * edits;
 }
 

@@ -32,6 +32,8 @@ std::size_t edit_distance(std::string_view a, std::string_view b, SwapCost swap)
 // The largest distance (half edits) at which `known` still counts as close to what was typed:
 // a quarter of its length in edits, at least one edit for names of up to 4 characters, else two.
 std::size_t close_enough(std::string_view known);
+// The same for any name `length` characters long.
+std::size_t close_enough_for_length(std::size_t length);
 
 // The candidates closest to `typed` within close_enough, best first (then alphabetically), at most
 // `max`; empty when none is close.

@@ -129,6 +129,26 @@ TEST_CASE("DK029: the fix moves the values back and the line reads the values me
     }
 }
 
+TEST_CASE("DK029: no shift that moves a real into an integer field; the value misread is reported where it is") {
+    // ENDTIM 1.0 where it belongs and 0.5 in the integer ENDCYC: moved 3 columns right, both values would be
+    // whole and left-aligned in fields, but ENDTIM would be emptied and ENDCYC read 1.0 (DK004).
+    const std::string text = "*KEYWORD\n*CONTROL_TERMINATION\n       1.0       0.5\n*END\n";
+    auto r = engine::check_buffer(text, "d.k");
+    CHECK(count_code(r.diagnostics, "DK029") == 0);
+    CHECK(count_code(r.diagnostics, "DK002") == 1);  // '0.5' in ENDCYC is not an integer, at its own columns
+    for (const auto& d : r.diagnostics)
+        CHECK(std::none_of(d.fixes.begin(), d.fixes.end(), [](const diag::Fix& f) { return f.safe; }));
+    // The same shift with integers in the integer fields is still found.
+    keywords::CardSpec card = four_reals();
+    card.fields[1].type = keywords::FieldType::Integer;
+    const auto slots = keywords::layout(card, grammar::CardFormat::Standard);
+    CHECK_FALSE(grammar::find_shift("       1.0       0.5", "", slots, card));
+    auto shift = grammar::find_shift("        2.5         3       7.0", "", slots, card);
+    REQUIRE(shift);
+    CHECK(shift->columns == 1);
+    CHECK(shift->realigned == "       2.5         3       7.0");
+}
+
 TEST_CASE("DK030: one finding for the block, its fix rewrites every line in the widths read") {
     const std::string nodes =
         "*KEYWORD\n*NODE\n       1             0.0             0.0             0.0\n"

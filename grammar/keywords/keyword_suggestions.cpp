@@ -2,7 +2,9 @@
 // aliases, pydyna's generated layouts, the keywords known without a layout), each also with each of
 // its options, compared with what was written by typing distance (grammar/similar_names.hpp).
 #include <algorithm>
+#include <bit>
 #include <cctype>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -21,7 +23,18 @@ struct KnownName {
     std::string_view base;  // the keyword it belongs to (its canonical name)
     int tier;               // 0 hand-written, 1 generated, 2 known without layout: ties go to the first
     std::size_t tokens;     // '_'-separated tokens in `name`
+    std::uint64_t letters;  // letters_in(name)
 };
+
+// Which of 64 letter buckets (grammar::typing_distance's: the character's low 6 bits) occur in `s`. A
+// bucket in one name and not the other is at least one letter to insert, delete or substitute, so
+// popcount(a ^ b) never exceeds the letters' lower bound of the distance: a test of one instruction that
+// rejects most of the names tried before the distance is computed.
+std::uint64_t letters_in(std::string_view s) {
+    std::uint64_t mask = 0;
+    for (char c : s) mask |= std::uint64_t{1} << (static_cast<unsigned char>(c) & 63);
+    return mask;
+}
 
 std::size_t token_count(std::string_view s) {
     return static_cast<std::size_t>(std::count(s.begin(), s.end(), '_')) + 1;
@@ -29,7 +42,8 @@ std::size_t token_count(std::string_view s) {
 
 void add(std::vector<KnownName>& out, std::string name, std::string_view base, int tier) {
     const std::size_t tokens = token_count(name);
-    out.push_back({std::move(name), base, tier, tokens});
+    const std::uint64_t letters = letters_in(name);
+    out.push_back({std::move(name), base, tier, tokens, letters});
 }
 
 std::vector<KnownName> build_names() {
@@ -61,6 +75,39 @@ std::vector<KnownName> build_names() {
 const std::vector<KnownName>& known_names() {
     static const std::vector<KnownName> names = build_names();
     return names;
+}
+
+// The known names by token count and length, each list in the order of known_names(): a name written
+// L long is only weighed against names whose length can be within their close_enough of L (each
+// insertion or deletion costs a whole edit), a few hundred of the tens of thousands.
+struct NameIndex {
+    // by_length[n]: every known name n long; by_tokens[t][n]: those of them with t tokens.
+    std::vector<std::vector<std::size_t>> by_length;
+    std::vector<std::vector<std::vector<std::size_t>>> by_tokens;
+};
+
+const NameIndex& name_index() {
+    static const NameIndex index = [] {
+        NameIndex x;
+        const std::vector<KnownName>& names = known_names();
+        for (std::size_t i = 0; i < names.size(); ++i) {
+            const std::size_t n = names[i].name.size(), t = names[i].tokens;
+            if (x.by_length.size() <= n) x.by_length.resize(n + 1);
+            if (x.by_tokens.size() <= t) x.by_tokens.resize(t + 1);
+            if (x.by_tokens[t].size() <= n) x.by_tokens[t].resize(n + 1);
+            x.by_length[n].push_back(i);
+            x.by_tokens[t][n].push_back(i);
+        }
+        return x;
+    }();
+    return index;
+}
+
+// Whether a known name `known_length` long may lie within its close_enough of a name `written_length` long.
+bool length_within_reach(std::size_t written_length, std::size_t known_length) {
+    const std::size_t gap =
+        written_length > known_length ? written_length - known_length : known_length - written_length;
+    return 2 * gap <= grammar::close_enough_for_length(known_length);
 }
 
 // "*" + upper-cased name proper: blanks, arguments and a glued format suffix removed.
@@ -120,22 +167,43 @@ bool no_token_replaced(std::string_view written, std::string_view known) {
 // it has, the rest of `key` (the author's options) kept in the suggestion (*SECTON_SPH_TITLE).
 std::vector<Candidate> candidates_for(const std::string& key) {
     std::vector<Candidate> out;
-    const auto distance_within = [](std::string_view written, const KnownName& known) -> std::optional<std::size_t> {
+    const auto distance_within = [](std::string_view written, std::uint64_t written_letters,
+                                    const KnownName& known) -> std::optional<std::size_t> {
         const std::size_t limit = grammar::close_enough(known.name);
         const std::size_t gap = written.size() > known.name.size() ? written.size() - known.name.size()
                                                                    : known.name.size() - written.size();
         if (2 * gap > limit) return std::nullopt;  // each insertion or deletion costs 2
+        if (static_cast<std::size_t>(std::popcount(written_letters ^ known.letters)) > limit) return std::nullopt;
         const std::size_t d = grammar::typing_distance(written, known.name, false, limit);
         if (d > limit || !no_token_replaced(written, known.name)) return std::nullopt;
         return d;
     };
-    for (const KnownName& known : known_names()) {
-        if (auto d = distance_within(key, known); d && *d > 0) out.push_back({*d, known.tier, known.name, &known});
-        const std::string_view head = head_of(key, known.tokens);
-        if (head.size() == key.size()) continue;
-        if (auto d = distance_within(head, known); d && *d > 0)
-            out.push_back({*d, known.tier, known.name + key.substr(head.size()), &known});
+    // Each name is weighed as a whole, and for its token count against as many tokens of `key`, in the
+    // order of known_names() (whole first): the list sorted is the one a walk over every name would give.
+    const std::vector<KnownName>& names = known_names();
+    const NameIndex& index = name_index();
+    std::vector<std::pair<std::size_t, Candidate>> found;  // (2 * name index + 1 for a head, candidate)
+    const std::uint64_t key_letters = letters_in(key);
+    for (std::size_t n = 0; n < index.by_length.size(); ++n) {
+        if (!length_within_reach(key.size(), n)) continue;
+        for (std::size_t i : index.by_length[n])
+            if (auto d = distance_within(key, key_letters, names[i]); d && *d > 0)
+                found.push_back({2 * i, {*d, names[i].tier, names[i].name, &names[i]}});
     }
+    for (std::size_t t = 0; t < index.by_tokens.size(); ++t) {
+        const std::string_view head = head_of(key, t);
+        if (head.size() == key.size()) continue;
+        const std::uint64_t head_letters = letters_in(head);
+        for (std::size_t n = 0; n < index.by_tokens[t].size(); ++n) {
+            if (!length_within_reach(head.size(), n)) continue;
+            for (std::size_t i : index.by_tokens[t][n])
+                if (auto d = distance_within(head, head_letters, names[i]); d && *d > 0)
+                    found.push_back(
+                        {2 * i + 1, {*d, names[i].tier, names[i].name + key.substr(head.size()), &names[i]}});
+        }
+    }
+    std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (auto& [order, c] : found) out.push_back(std::move(c));
     std::sort(out.begin(), out.end(), before);
     return out;
 }

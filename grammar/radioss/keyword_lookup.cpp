@@ -93,7 +93,35 @@ const KeywordSpec* find_generated(std::string_view header, std::size_t* prefix_s
     return nullptr;
 }
 
+namespace {
+
+KeywordLookup lookup_unremembered(std::string_view header);
+
+// Heterogeneous lookup: a header is looked up without being copied into a string.
+struct HeaderHash {
+    using is_transparent = void;
+    std::size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
+};
+
+}  // namespace
+
 KeywordLookup lookup_keyword(std::string_view header) {
+    // The answers of this thread, by header, as suggest_keyword remembers its own: a deck names the same
+    // headers again and again (/PART/1, /PART/2... differ; /NODE, /MAT/LAW2/1 in each copy of a block do
+    // not), and a deck checked again (the editor at each keystroke, a fuzzer mutating a byte) asks again
+    // for each; an answer tries every prefix of the header against the tables. Bounded: emptied when full.
+    constexpr std::size_t max_remembered = 4096;
+    thread_local std::unordered_map<std::string, KeywordLookup, HeaderHash, std::equal_to<>> remembered;
+    if (const auto it = remembered.find(header); it != remembered.end()) return it->second;
+    const KeywordLookup answer = lookup_unremembered(header);
+    if (remembered.size() >= max_remembered) remembered.clear();
+    remembered.emplace(std::string(header), answer);
+    return answer;
+}
+
+namespace {
+
+KeywordLookup lookup_unremembered(std::string_view header) {
     KeywordLookup out;
     // Blanks around a segment are the starter's reader's concern, not the name's ("/GRNOD/NODE   /2").
     if (header.find(' ') != std::string_view::npos || header.find('\t') != std::string_view::npos) {
@@ -111,6 +139,8 @@ KeywordLookup lookup_keyword(std::string_view header) {
     }
     return lookup_raw(header);
 }
+
+}  // namespace
 
 namespace {
 KeywordLookup lookup_raw(std::string_view header) {

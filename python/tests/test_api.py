@@ -127,7 +127,7 @@ def test_exit_2_conditions_raise_sphdeck_error_with_the_command_lines_message(tm
     assert issubclass(sphdeck.Error, Exception)
 
 
-FIXABLE = ("*KEYWORD\n*CONTROL_TERMINATION\n       1.0       0.5\n"  # shifted 3 columns: a safe fix
+FIXABLE = ("*KEYWORD\n*CONTROL_TERMINATION\n         1.0         0\n"  # shifted 2 columns: a safe fix
            "*DATABASE_GLSTATT\n       0.1\n*END\n")  # a typo: *DATABASE_GLSTAT is a judgement, an unsafe fix
 
 
