@@ -3,6 +3,7 @@
 // Formulas: preproc/radioss_formulas.hpp; choices and their reasons: docs/radioss.md.
 #include "preproc/radioss_preview.hpp"
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -13,6 +14,13 @@
 
 namespace sphdeck::preproc {
 namespace {
+
+// (x - O) . n of a plane with origin O and normal n (not normalised: the plane's tail-to-head vector).
+double signed_distance(const RadiossPlanePreview& plane, double x, double y, double z) {
+    const Eigen::Vector3d origin(plane.origin[0], plane.origin[1], plane.origin[2]);
+    const Eigen::Vector3d normal(plane.normal[0], plane.normal[1], plane.normal[2]);
+    return (Eigen::Vector3d(x, y, z) - origin).dot(normal);
+}
 
 void add_note(std::string& notes, const std::string& note) {
     if (note.empty()) return;
@@ -158,9 +166,7 @@ void radioss_preview_part(const model::Model& m, std::span<const std::uint32_t> 
         if (pp.located[i]) {
             for (std::size_t k = 0; k < glob.planes.size(); ++k) {
                 const RadiossPlanePreview& plane = glob.planes[k];
-                const double dd = (pp.x[i] - plane.origin[0]) * plane.normal[0] +
-                                  (pp.y[i] - plane.origin[1]) * plane.normal[1] +
-                                  (pp.z[i] - plane.origin[2]) * plane.normal[2];
+                const double dd = signed_distance(plane, pp.x[i], pp.y[i], pp.z[i]);
                 if (radioss_on_plane(dd, h_ref)) {
                     ++n;
                     ++glob.planes[k].on_plane;
@@ -236,8 +242,7 @@ void radioss_count_ghosts(Preview& out) {
     const double alpha = glob.alpha_sort, widen = std::sqrt(1.0 + alpha);
 
     auto distance = [&](std::uint32_t i, const RadiossPlanePreview& p) {
-        return (pp.x[i] - p.origin[0]) * p.normal[0] + (pp.y[i] - p.origin[1]) * p.normal[1] +
-               (pp.z[i] - p.origin[2]) * p.normal[2];
+        return signed_distance(p, pp.x[i], pp.y[i], pp.z[i]);
     };
     // Candidates pass the coded bound, which contains the documented one (max h_j <= h_max). The
     // neighbour search is needed only where the documented test depends on it: i itself (bound

@@ -2,6 +2,9 @@
 // OpenRadioss starter/source/elements/sph/soltosph.F).
 #include "preproc/sol2sph.hpp"
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -12,7 +15,7 @@
 namespace sphdeck::preproc {
 namespace {
 
-using Vec = std::array<double, 3>;
+using Vec = Eigen::Vector3d;
 
 // Parent-cube corners of the 8-node brick in /BRICK order: 1-4 the face zeta = -1, counter-
 // clockwise seen from the face zeta = +1, 5-8 above them.
@@ -20,26 +23,24 @@ constexpr int corner_sign[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1
                                    {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
 
 Vec brick_point(const std::array<Vec, 8>& p, double r, double s, double t) {
-    Vec x{0, 0, 0};
+    Vec x = Vec::Zero();
     for (int k = 0; k < 8; ++k) {
         const double n = (1 + corner_sign[k][0] * r) * (1 + corner_sign[k][1] * s) * (1 + corner_sign[k][2] * t) / 8;
-        for (int i = 0; i < 3; ++i) x[i] += n * p[k][i];
+        x += n * p[k];
     }
     return x;
 }
 
-// det of dx/d(r, s, t) of the trilinear map.
+// det of the Jacobian dx/d(r, s, t) of the trilinear map: sum over the corners of x_k (x) dN_k/d(r, s, t).
 double brick_jacobian(const std::array<Vec, 8>& p, double r, double s, double t) {
-    double j[3][3] = {};
+    Eigen::Matrix3d j = Eigen::Matrix3d::Zero();
     for (int k = 0; k < 8; ++k) {
         const double a = corner_sign[k][0], b = corner_sign[k][1], c = corner_sign[k][2];
-        const double d[3] = {a * (1 + b * s) * (1 + c * t) / 8, b * (1 + a * r) * (1 + c * t) / 8,
-                             c * (1 + a * r) * (1 + b * s) / 8};
-        for (int i = 0; i < 3; ++i)
-            for (int m = 0; m < 3; ++m) j[i][m] += p[k][i] * d[m];
+        const Vec d(a * (1 + b * s) * (1 + c * t) / 8, b * (1 + a * r) * (1 + c * t) / 8,
+                    c * (1 + a * r) * (1 + b * s) / 8);
+        j.noalias() += p[k] * d.transpose();
     }
-    return j[0][0] * (j[1][1] * j[2][2] - j[1][2] * j[2][1]) - j[0][1] * (j[1][0] * j[2][2] - j[1][2] * j[2][0]) +
-           j[0][2] * (j[1][0] * j[2][1] - j[1][1] * j[2][0]);
+    return j.determinant();
 }
 
 // The integral of det J over the box [r0, r1] x [s0, s1] x [t0, t1] of the parent cube: 2x2x2 Gauss
@@ -55,13 +56,10 @@ double brick_volume(const std::array<Vec, 8>& p, double r0, double r1, double s0
     return v * (r1 - r0) * (s1 - s0) * (t1 - t0) / 8;
 }
 
+// The signed volume: a triple product of the edges from corner 0.
 double tetra_volume(const std::array<Vec, 4>& p) {
-    const Vec a{p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
-    const Vec b{p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
-    const Vec c{p[3][0] - p[0][0], p[3][1] - p[0][1], p[3][2] - p[0][2]};
-    return (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-            a[2] * (b[0] * c[1] - b[1] * c[0])) /
-           6;
+    const Vec a = p[1] - p[0], b = p[2] - p[0], c = p[3] - p[0];
+    return a.dot(b.cross(c)) / 6;
 }
 
 struct PartSetup {
@@ -185,7 +183,7 @@ private:
                     missing = true;
                     break;
                 }
-                at.push_back({m_.nodes.x[*index], m_.nodes.y[*index], m_.nodes.z[*index]});
+                at.emplace_back(m_.nodes.x[*index], m_.nodes.y[*index], m_.nodes.z[*index]);
                 if (std::find(distinct.begin(), distinct.end(), id) == distinct.end()) distinct.push_back(id);
             }
             if (missing) continue;
@@ -244,9 +242,8 @@ private:
         const double share = volume / static_cast<double>(layout.size());
         double mass = 0;
         for (const auto& l : layout) {
-            Vec x{0, 0, 0};
-            for (int a = 0; a < 4; ++a)
-                for (int i = 0; i < 3; ++i) x[i] += l[a] * p[a][i];
+            Vec x = Vec::Zero();
+            for (int a = 0; a < 4; ++a) x += l[a] * p[a];
             add_particle(part, solids.id[e], x, share, share);
             mass += out_.particles.mass.back();
         }

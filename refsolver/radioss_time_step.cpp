@@ -1,5 +1,7 @@
 #include "refsolver/radioss_time_step.hpp"
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -24,20 +26,21 @@ double approach(const Particles& s, std::size_t i, std::size_t j) {
 // v_ij, x_ij. `inside` false beyond the support.
 struct Pair {
     bool inside = false;
-    double r = 0, d = 0, g[3]{}, v[3]{}, x[3]{};
+    double r = 0, d = 0;
+    Eigen::Vector3d g = Eigen::Vector3d::Zero(), v = Eigen::Vector3d::Zero(), x = Eigen::Vector3d::Zero();
 };
 
 Pair pair(const Particles& s, std::size_t i, std::size_t j) {
     Pair p;
-    p.x[0] = s.x[i] - s.x[j], p.x[1] = s.y[i] - s.y[j], p.x[2] = s.z[i] - s.z[j];
-    const double r2 = p.x[0] * p.x[0] + p.x[1] * p.x[1] + p.x[2] * p.x[2];
+    p.x = Eigen::Vector3d(s.x[i], s.y[i], s.z[i]) - Eigen::Vector3d(s.x[j], s.y[j], s.z[j]);
+    const double r2 = p.x.squaredNorm();
     p.d = 0.5 * (s.h[i] + s.h[j]);
     if (!(r2 < 4 * p.d * p.d)) return p;
     p.inside = true;
     p.r = std::sqrt(r2);
     const double f = CubicSpline{3}.gradient_factor(p.r, p.d);
-    for (int a = 0; a < 3; ++a) p.g[a] = f * p.x[a];
-    p.v[0] = s.vx[i] - s.vx[j], p.v[1] = s.vy[i] - s.vy[j], p.v[2] = s.vz[i] - s.vz[j];
+    p.g = f * p.x;
+    p.v = Eigen::Vector3d(s.vx[i], s.vy[i], s.vz[i]) - Eigen::Vector3d(s.vx[j], s.vy[j], s.vz[j]);
     return p;
 }
 
@@ -45,9 +48,9 @@ Pair pair(const Particles& s, std::size_t i, std::size_t j) {
 double pair_stiffness(const Particles& s, std::size_t i, std::size_t j, const Pair& p, double fi, double fj, double qa,
                       double qb) {
     const double vi = s.m[i] / s.rho[i], vj = s.m[j] / s.rho[j];
-    const double g2 = p.g[0] * p.g[0] + p.g[1] * p.g[1] + p.g[2] * p.g[2];
+    const double g2 = p.g.squaredNorm();
     double k = 2 * (s.m[i] * s.c[i] * s.c[i] * vj * vj * g2 + s.m[j] * s.c[j] * s.c[j] * vi * vi * g2);
-    const double v_dot_x = p.v[0] * p.x[0] + p.v[1] * p.x[1] + p.v[2] * p.x[2];
+    const double v_dot_x = p.v.dot(p.x);
     double mu = std::min(0.0, p.d * v_dot_x / (p.r * p.r + 0.01 * p.d * p.d));
     mu *= 0.5 * (fi + fj);
     const double c = 0.5 * (s.c[i] + s.c[j]);
@@ -110,17 +113,20 @@ double radioss_particle_time_step(const Particles& s, const NeighbourList& list,
 
 RadiossGradient radioss_velocity_gradient(const Particles& s, const NeighbourList& list, double dt1) {
     const std::size_t n = s.real;
-    // Per real particle: div v, rot v and sum_j V_j^2 |v_ij|^2 |g_ij|^2 (grad v_i = -sum_j V_j v_ij (x) g_ij).
-    std::vector<std::array<double, 5>> sums(n, {0, 0, 0, 0, 0});
+    // Per real particle, from grad v_i = -sum_j V_j v_ij (x) g_ij: its trace div v, its antisymmetric
+    // part rot v = sum_j V_j v_ij x g_ij, and sum_j V_j^2 |v_ij|^2 |g_ij|^2.
+    struct Sums {
+        double div = 0;
+        Eigen::Vector3d rot = Eigen::Vector3d::Zero();
+        double second = 0;
+    };
+    std::vector<Sums> sums(n);
     // j's share of i's sums, V_j the volume; seen from j, v and g both change sign, so the same
     // products with V_i.
     auto add = [&](std::size_t i, double volume, const Pair& p) {
-        sums[i][0] -= volume * (p.v[0] * p.g[0] + p.v[1] * p.g[1] + p.v[2] * p.g[2]);
-        sums[i][1] += volume * (p.v[1] * p.g[2] - p.v[2] * p.g[1]);
-        sums[i][2] += volume * (p.v[2] * p.g[0] - p.v[0] * p.g[2]);
-        sums[i][3] += volume * (p.v[0] * p.g[1] - p.v[1] * p.g[0]);
-        sums[i][4] += volume * volume * (p.v[0] * p.v[0] + p.v[1] * p.v[1] + p.v[2] * p.v[2]) *
-                      (p.g[0] * p.g[0] + p.g[1] * p.g[1] + p.g[2] * p.g[2]);
+        sums[i].div -= volume * p.v.dot(p.g);
+        sums[i].rot += volume * p.v.cross(p.g);
+        sums[i].second += volume * volume * p.v.squaredNorm() * p.g.squaredNorm();
     };
     for_each_interacting_pair(
         s, list,
@@ -130,9 +136,9 @@ RadiossGradient radioss_velocity_gradient(const Particles& s, const NeighbourLis
         [&](std::size_t i, std::size_t j, const Pair& p) { add(i, s.m[j] / s.rho[j], p); });
     RadiossGradient out{std::vector<double>(n, 0.0), std::vector<double>(n, 0.0)};
     for (std::size_t i = 0; i < n; ++i) {
-        out.second_order[i] = -0.5 * dt1 * sums[i][4];
-        const double div = std::abs(sums[i][0] + out.second_order[i]);
-        const double rot = std::sqrt(sums[i][1] * sums[i][1] + sums[i][2] * sums[i][2] + sums[i][3] * sums[i][3]);
+        out.second_order[i] = -0.5 * dt1 * sums[i].second;
+        const double div = std::abs(sums[i].div + out.second_order[i]);
+        const double rot = sums[i].rot.norm();
         out.f[i] = div / std::max(1e-20, div + rot);
     }
     return out;
@@ -147,7 +153,7 @@ double radioss_nodal_time_step(const Particles& s, const NeighbourList& list, co
         [&](std::size_t i, std::size_t j, const Pair& p) {
             stiffness[i] += pair_stiffness(s, i, j, p, f[i], f[j], qa, qb);
             Pair q = p;  // the same pair seen from j: x and v reversed, g reversed (|g| alike)
-            for (int a = 0; a < 3; ++a) q.x[a] = -p.x[a], q.v[a] = -p.v[a], q.g[a] = -p.g[a];
+            q.x = -p.x, q.v = -p.v, q.g = -p.g;
             stiffness[j] += pair_stiffness(s, j, i, q, f[j], f[i], qa, qb);
         },
         [&](std::size_t i, std::size_t j, const Pair& p) {

@@ -1,5 +1,6 @@
 #include "refsolver/rates.hpp"
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <omp.h>
@@ -9,6 +10,7 @@
 #include "refsolver/momentum.hpp"
 #include "refsolver/pair_rows.hpp"
 #include "refsolver/stress.hpp"
+#include "refsolver/tensor3.hpp"
 
 namespace sphdeck::refsolver {
 
@@ -78,7 +80,8 @@ inline void add_reverse(Sums& sums, const PairTerms& t, const PackedParticle& i,
 // kinetic plus internal energy cancel), j receives -m_i D g_ij and -1/2 m_i v_ij . D g_ij. Both
 // add v_ij (x) g_ij and x_ij (x) g_ij to their P and Q, weighted by the other's volume.
 struct StressTerms {
-    double dgx, dgy, dgz, v_dot_dg;
+    Eigen::Vector3d dg;  // D g_ij
+    double v_dot_dg;
     std::array<double, 18> outer;  // v_ij (x) g_ij, then x_ij (x) g_ij, row-major
 };
 using GradientSums = std::array<double, 18>;  // P, then Q (stress.hpp)
@@ -86,23 +89,19 @@ using GradientSums = std::array<double, 18>;  // P, then Q (stress.hpp)
 [[gnu::always_inline]] inline StressTerms stress_terms(const SymmetricTensor& si, const SymmetricTensor& sj,
                                                        const PackedParticle& a, const PackedParticle& b,
                                                        const PairTerms& t, double dx, double dy, double dz) {
-    const double dxx = si[0] + sj[0], dyy = si[1] + sj[1], dzz = si[2] + sj[2];
-    const double dxy = si[3] + sj[3], dxz = si[4] + sj[4], dyz = si[5] + sj[5];
+    const Eigen::Vector3d g(t.gx, t.gy, t.gz), v(a.vx - b.vx, a.vy - b.vy, a.vz - b.vz), x(dx, dy, dz);
     StressTerms st;
-    st.dgx = dxx * t.gx + dxy * t.gy + dxz * t.gz;
-    st.dgy = dxy * t.gx + dyy * t.gy + dyz * t.gz;
-    st.dgz = dxz * t.gx + dyz * t.gy + dzz * t.gz;
-    const double v[3] = {a.vx - b.vx, a.vy - b.vy, a.vz - b.vz}, x[3] = {dx, dy, dz}, g[3] = {t.gx, t.gy, t.gz};
-    st.v_dot_dg = v[0] * st.dgx + v[1] * st.dgy + v[2] * st.dgz;
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) st.outer[3 * r + c] = v[r] * g[c], st.outer[9 + 3 * r + c] = x[r] * g[c];
+    st.dg.noalias() = (symmetric_matrix(si) + symmetric_matrix(sj)) * g;
+    st.v_dot_dg = v.dot(st.dg);
+    Eigen::Map<RowMajorMatrix3d>(st.outer.data()).noalias() = v * g.transpose();
+    Eigen::Map<RowMajorMatrix3d>(st.outer.data() + 9).noalias() = x * g.transpose();
     return st;
 }
 
 // `sign` +1 for i (m, volume: j's), -1 for j (i's).
 inline void add_stress(Sums& sums, GradientSums& gradient, const StressTerms& st, double m, double volume,
                        double sign) {
-    sums[0] += sign * m * st.dgx, sums[1] += sign * m * st.dgy, sums[2] += sign * m * st.dgz;
+    sums[0] += sign * m * st.dg[0], sums[1] += sign * m * st.dg[1], sums[2] += sign * m * st.dg[2];
     sums[4] -= 0.5 * m * st.v_dot_dg;
     for (int k = 0; k < 18; ++k) gradient[k] += volume * st.outer[k];
 }

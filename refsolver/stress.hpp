@@ -14,8 +14,13 @@
 // Time step: the dilatational wave speed c = sqrt((K + 4 G / 3) / rho0) (sph-algorithms.md §10.4).
 #pragma once
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <array>
 #include <cmath>
+
+#include "refsolver/tensor3.hpp"
 
 namespace sphdeck::refsolver {
 
@@ -31,48 +36,37 @@ struct ElasticModuli {
     double wave_speed(double rho0) const { return std::sqrt((bulk + 4 * shear / 3) / rho0); }
 };
 
-// L = P Q^-1 in `dimension` dimensions (the z row and column stay zero in 2D).
+// L = P Q^-1 in `dimension` dimensions (the z row and column stay zero in 2D). Q^-1 as adj(Q) / det(Q)
+// (the cofactors, not Eigen's inverse(), which multiplies by 1 / det: the same digits as before Eigen).
 inline Tensor velocity_gradient(const Tensor& P, const Tensor& Q, int dimension) {
-    double inv[9] = {-1, 0, 0, 0, -1, 0, 0, 0, -1};  // the fallback: Q = -I
+    const Eigen::Map<const RowMajorMatrix3d> q = tensor_view(Q);
+    Eigen::Matrix3d inverse = -Eigen::Matrix3d::Identity();  // the fallback: Q = -I
     if (dimension == 2) {
-        const double det = Q[0] * Q[4] - Q[1] * Q[3];  // det(-Q) = det(Q) for a 2x2 block
-        if (det >= 0.01) inv[0] = Q[4] / det, inv[1] = -Q[1] / det, inv[3] = -Q[3] / det, inv[4] = Q[0] / det;
-        inv[8] = 0;
+        const double det = q.topLeftCorner<2, 2>().determinant();  // det(-Q) = det(Q) for a 2x2 block
+        if (det >= 0.01) inverse.topLeftCorner<2, 2>() << q(1, 1) / det, -q(0, 1) / det, -q(1, 0) / det, q(0, 0) / det;
+        inverse(2, 2) = 0;
     } else {
-        const double c0 = Q[4] * Q[8] - Q[5] * Q[7], c1 = Q[5] * Q[6] - Q[3] * Q[8], c2 = Q[3] * Q[7] - Q[4] * Q[6];
-        const double det = Q[0] * c0 + Q[1] * c1 + Q[2] * c2;
-        if (-det >= 0.01) {  // det(-Q) = -det(Q)
-            inv[0] = c0 / det, inv[1] = (Q[2] * Q[7] - Q[1] * Q[8]) / det, inv[2] = (Q[1] * Q[5] - Q[2] * Q[4]) / det;
-            inv[3] = c1 / det, inv[4] = (Q[0] * Q[8] - Q[2] * Q[6]) / det, inv[5] = (Q[2] * Q[3] - Q[0] * Q[5]) / det;
-            inv[6] = c2 / det, inv[7] = (Q[1] * Q[6] - Q[0] * Q[7]) / det, inv[8] = (Q[0] * Q[4] - Q[1] * Q[3]) / det;
-        }
+        // Column k of adj(Q) is row(k+1) x row(k+2) of Q; det(Q) = row 0 . (row 1 x row 2).
+        Eigen::Matrix3d adjugate;
+        adjugate.col(0) = q.row(1).cross(q.row(2)).transpose();
+        adjugate.col(1) = q.row(2).cross(q.row(0)).transpose();
+        adjugate.col(2) = q.row(0).cross(q.row(1)).transpose();
+        const double det = q.row(0).dot(adjugate.col(0));
+        if (-det >= 0.01) inverse = adjugate / det;  // det(-Q) = -det(Q)
     }
-    Tensor L{};
-    for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b)
-            for (int c = 0; c < 3; ++c) L[3 * a + b] += P[3 * a + c] * inv[3 * c + b];
+    Tensor L;
+    tensor_view(L).noalias() = tensor_view(P) * inverse;
     return L;
 }
 
 // dS/dt by the Jaumann rate (header comment). (S Omega^T)_ab = (Omega S)_ba, so the rotation part
 // is (Omega S)_ab + (Omega S)_ba: symmetric, and zero-trace whenever S is.
 inline SymmetricTensor jaumann_stress_rate(const Tensor& L, const SymmetricTensor& s6, double shear) {
-    const double S[9] = {s6[0], s6[3], s6[4], s6[3], s6[1], s6[5], s6[4], s6[5], s6[2]};
-    double eps[9], omega[9];
-    for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b) {
-            eps[3 * a + b] = 0.5 * (L[3 * a + b] + L[3 * b + a]);
-            omega[3 * a + b] = 0.5 * (L[3 * a + b] - L[3 * b + a]);
-        }
-    const double third_trace = (eps[0] + eps[4] + eps[8]) / 3;
-    double os[9] = {};  // Omega S
-    for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b)
-            for (int c = 0; c < 3; ++c) os[3 * a + b] += omega[3 * a + c] * S[3 * c + b];
-    const auto rate = [&](int a, int b) {
-        return 2 * shear * (eps[3 * a + b] - (a == b ? third_trace : 0.0)) + os[3 * a + b] + os[3 * b + a];
-    };
-    return {rate(0, 0), rate(1, 1), rate(2, 2), rate(0, 1), rate(0, 2), rate(1, 2)};
+    const Eigen::Map<const RowMajorMatrix3d> l = tensor_view(L);
+    const Eigen::Matrix3d strain_rate = 0.5 * (l + l.transpose()), spin = 0.5 * (l - l.transpose());
+    const Eigen::Matrix3d os = spin * symmetric_matrix(s6);
+    const Eigen::Matrix3d deviator = strain_rate - strain_rate.trace() / 3 * Eigen::Matrix3d::Identity();
+    return symmetric_entries(2 * shear * deviator + os + os.transpose());
 }
 
 }  // namespace sphdeck::refsolver

@@ -1,35 +1,40 @@
 #include "refsolver/symmetry_ghosts.hpp"
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <bit>
+
+#include "refsolver/tensor3.hpp"
 
 namespace sphdeck::refsolver {
 
 namespace {
 
+Eigen::Vector3d unit_normal(const SymmetryPlane& q) { return {q.normal[0], q.normal[1], q.normal[2]}; }
+
+// p - 2 dd n, dd = p . n - offset the signed distance.
 void mirror_point(const SymmetryPlane& q, double& x, double& y, double& z) {
-    const double dd = x * q.normal[0] + y * q.normal[1] + z * q.normal[2] - q.offset;
-    x -= 2 * dd * q.normal[0], y -= 2 * dd * q.normal[1], z -= 2 * dd * q.normal[2];
+    const Eigen::Vector3d n = unit_normal(q);
+    Eigen::Vector3d p(x, y, z);
+    p -= 2 * (p.dot(n) - q.offset) * n;
+    x = p[0], y = p[1], z = p[2];
 }
 
+// v - 2 (v . n) n.
 void mirror_vector(const SymmetryPlane& q, double& x, double& y, double& z) {
-    const double vn = x * q.normal[0] + y * q.normal[1] + z * q.normal[2];
-    x -= 2 * vn * q.normal[0], y -= 2 * vn * q.normal[1], z -= 2 * vn * q.normal[2];
+    const Eigen::Vector3d n = unit_normal(q);
+    Eigen::Vector3d v(x, y, z);
+    v -= 2 * v.dot(n) * n;
+    x = v[0], y = v[1], z = v[2];
 }
 
-// R B R with R = I - 2 n n^T, B symmetric stored as xx yy zz xy xz yz.
-std::array<double, 6> mirror_tensor(const SymmetryPlane& q, const std::array<double, 6>& b) {
-    const double B[3][3] = {{b[0], b[3], b[4]}, {b[3], b[1], b[5]}, {b[4], b[5], b[2]}};
-    double R[3][3];
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) R[r][c] = (r == c ? 1.0 : 0.0) - 2 * q.normal[r] * q.normal[c];
-    double RB[3][3] = {}, out[3][3] = {};
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c)
-            for (int k = 0; k < 3; ++k) RB[r][c] += R[r][k] * B[k][c];
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c)
-            for (int k = 0; k < 3; ++k) out[r][c] += RB[r][k] * R[k][c];
-    return {out[0][0], out[1][1], out[2][2], out[0][1], out[0][2], out[1][2]};
+// R B R with R = I - 2 n n^T (a reflection: symmetric), B symmetric stored as xx yy zz xy xz yz.
+[[gnu::always_inline]] inline std::array<double, 6> mirror_tensor(const SymmetryPlane& q,
+                                                                  const std::array<double, 6>& b) {
+    const Eigen::Vector3d n = unit_normal(q);
+    const Eigen::Matrix3d reflection = Eigen::Matrix3d::Identity() - (2 * n) * n.transpose();
+    const Eigen::Matrix3d rb = reflection * symmetric_matrix(b);
+    return symmetric_entries(rb * reflection);
 }
 
 }  // namespace
