@@ -3,7 +3,7 @@
 #include <functional>
 
 #include "engine/mended_consequences.hpp"
-#include "engine/preview_reuse.hpp"
+#include "engine/preview_after_edit.hpp"
 #include "engine/recheck.hpp"
 #include "grammar/read_deck.hpp"
 #include "preproc/preview.hpp"
@@ -31,8 +31,7 @@ CheckResult analyse(grammar::RawDeck deck, const CheckOptions& options, const Ch
     if (previous && previous->preview) {
         const bool arrays = options.rules.preview_arrays;
         lint::run_rules(context, [previous, arrays](const model::Model& model) {
-            return same_geometry_inputs(previous->model, model) ? previous->preview
-                                                                : lint::compute_rules_preview(model, arrays);
+            return preview_after_edit(*previous, model, arrays);  // kept, followed or new
         });
     } else {
         lint::run_rules(context);

@@ -9,7 +9,6 @@
 #include "grammar/keywords/id_kinds.hpp"
 #include "grammar/radioss/id_kinds.hpp"
 #include "grammar/value.hpp"
-#include "engine/field_at_column.hpp"
 #include "engine/position_index.hpp"
 #include "model/model.hpp"
 #include "model/radioss_decoder.hpp"
@@ -143,25 +142,20 @@ std::optional<IdUse> id_at(const CheckResult& deck, grammar::FileId file, std::u
         if (!header || column < header->span.column || column >= header->span.end_column) return std::nullopt;
         return IdUse{header->role.kind, header->id, header->span, header->role.defines, block, ""};
     }
-    const grammar::CardLine* card_line = card_line_at(raw, *block, line);
-    if (!card_line) return std::nullopt;
+    const std::optional<CardAt> at = card_at(raw, *block, line, radioss);
+    if (!at) return std::nullopt;
+    const std::optional<std::size_t> index = at->field_under(column);
+    if (!index) return std::nullopt;
     if (radioss) {
-        auto card = radioss_card_at(raw, *block, *card_line, model::radioss_version(raw));
-        if (!card || !card->card) return std::nullopt;
-        auto index = radioss_field_at_column(*card, raw.text(*card_line), column);
-        if (!index) return std::nullopt;
-        const auto& v = card->values[*index];
+        if (!at->radioss->card) return std::nullopt;
+        const auto& v = at->radioss->values[*index];
         auto role = radioss_id_role(*v.spec);
         std::string id = id_text(v);
         if (!role || id.empty()) return std::nullopt;
         return IdUse{role->kind, id, v.span, false, block, ""};
     }
-    auto card = dyna_card_at(raw, *block, *card_line);
-    if (!card) return std::nullopt;
-    auto index = dyna_field_at_column(*card->card, block->format, card->values, raw.text(*card_line), column);
-    if (!index) return std::nullopt;
-    const auto& v = card->values[*index];
-    auto role = dyna_id_role(card->match.schema->name, *v.spec);
+    const auto& v = at->dyna->values[*index];
+    auto role = dyna_id_role(at->dyna->match.schema->name, *v.spec);
     std::string id = id_text(v);
     if (!role || id.empty()) return std::nullopt;
     return IdUse{role->kind, id, v.span, role->defines, block, ""};

@@ -69,9 +69,21 @@ bool all_same(const std::vector<T>& a, const std::vector<T>& b, Same&& same_item
 }  // namespace
 
 bool same_geometry_inputs(const model::Model& before, const model::Model& now) {
-    if (before.radioss || now.radioss) return false;
     const model::Particles& p = before.particles;
     const model::Particles& q = now.particles;
+    return same_geometry_settings(before, now) && same_particle_places(before, now) && p.mass == q.mass &&
+           p.volume == q.volume;
+}
+
+bool same_particle_places(const model::Model& before, const model::Model& now) {
+    const model::Particles& p = before.particles;
+    const model::Particles& q = now.particles;
+    return !before.radioss && !now.radioss && before.nodes.id == now.nodes.id && before.nodes.x == now.nodes.x &&
+           before.nodes.y == now.nodes.y && before.nodes.z == now.nodes.z && p.node == q.node && p.part == q.part;
+}
+
+bool same_geometry_settings(const model::Model& before, const model::Model& now) {
+    if (before.radioss || now.radioss) return false;
     return same(before.controls, now.controls) &&
            all_same(before.sections, now.sections, [](const auto& a, const auto& b) { return same(a, b); }) &&
            all_same(before.parts, now.parts, [](const auto& a, const auto& b) { return same(a, b); }) &&
@@ -86,10 +98,7 @@ bool same_geometry_inputs(const model::Model& before, const model::Model& now) {
                     }) &&
            before.symmetry_planes.size() == now.symmetry_planes.size() &&
            all_same(before.symmetry_planes, now.symmetry_planes,
-                    [](const auto& a, const auto& b) { return a.tail == b.tail && a.head == b.head; }) &&
-           before.nodes.id == now.nodes.id && before.nodes.x == now.nodes.x && before.nodes.y == now.nodes.y &&
-           before.nodes.z == now.nodes.z && p.node == q.node && p.part == q.part && p.mass == q.mass &&
-           p.volume == q.volume;
+                    [](const auto& a, const auto& b) { return a.tail == b.tail && a.head == b.head; });
 }
 
 }  // namespace sphdeck::engine

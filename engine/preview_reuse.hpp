@@ -14,4 +14,12 @@ namespace sphdeck::engine {
 // reads properties, groups and cells as well). Keep this beside what compute_preview reads.
 bool same_geometry_inputs(const model::Model& before, const model::Model& now);
 
+// The same but for the nodes and particles: whether only where particles stand and which particles
+// there are changed, the edit a kept preview can follow (preproc/preview_follow.hpp).
+bool same_geometry_settings(const model::Model& before, const model::Model& now);
+
+// Whether the particles, their parts and the places of their nodes are the same (masses aside): what
+// the nearest distances and the coincident pairs depend on (preproc::recompute_settings).
+bool same_particle_places(const model::Model& before, const model::Model& now);
+
 }  // namespace sphdeck::engine

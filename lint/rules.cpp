@@ -4,7 +4,10 @@ namespace sphdeck::lint {
 
 void run_rules(RuleContext& context) {
     const bool arrays = context.options.preview_arrays;
-    run_rules(context, [arrays](const model::Model& model) { return compute_rules_preview(model, arrays); });
+    // A kept preview keeps its counts, so that the editor's next re-check can follow an edit with it.
+    const bool counts = context.options.keep_preview;
+    run_rules(context,
+              [arrays, counts](const model::Model& model) { return compute_rules_preview(model, arrays, counts); });
 }
 
 void run_rules(RuleContext& context, const PreviewSource& preview_source) {

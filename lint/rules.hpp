@@ -18,8 +18,10 @@ void check_isph(RuleContext& c);           // rules_isph.cpp: SPH014
 void check_densities(RuleContext& c);      // rules_density.cpp: SPH119
 void check_sph_dimension(RuleContext& c);  // rules_dimension.cpp: SPH120-SPH121
 // The geometry rules' preview (null without particles), computed before the other rules run;
-// check_preview reads it from RuleContext::preview.
-std::shared_ptr<const preproc::Preview> compute_rules_preview(const model::Model& model, bool particle_arrays = false);
+// check_preview reads it from RuleContext::preview. `neighbour_counts`: keep the per-particle counts
+// too, for a kept preview that follows the next edit (preproc/preview_follow.hpp).
+std::shared_ptr<const preproc::Preview> compute_rules_preview(const model::Model& model, bool particle_arrays = false,
+                                                              bool neighbour_counts = false);
 void check_preview(RuleContext& c);  // rules_preview.cpp: SPH090, SPH113-SPH115, SPH118
 // run_rules with the geometry preview taken from `preview_source` instead of compute_rules_preview:
 // the editor's re-check hands back the last check's preview when the geometry inputs are unchanged.

@@ -180,10 +180,12 @@ void check_few_neighbours(RuleContext& c, const Preview& p) {
 
 // The rules need the per-particle arrays of part, location and nearest distance only; the others
 // (positions, masses, h, counts) are made when the preview is kept for `sphdeck smooth`.
-std::shared_ptr<const Preview> compute_rules_preview(const model::Model& model, bool particle_arrays) {
+std::shared_ptr<const Preview> compute_rules_preview(const model::Model& model, bool particle_arrays,
+                                                     bool neighbour_counts) {
     if (model.particles.size() == 0) return nullptr;
     preproc::PreviewOptions options;
     options.particle_arrays = particle_arrays;
+    options.neighbour_counts = neighbour_counts;
     return std::make_shared<const Preview>(preproc::compute_preview(model, options));
 }
 

@@ -9,12 +9,10 @@
 #include "grammar/keywords/generated_layouts.hpp"
 #include "grammar/radioss/generated_layouts.hpp"
 #include "grammar/parameters.hpp"
-#include "engine/field_at_column.hpp"
 #include "engine/id_lookup.hpp"
 #include "engine/position_index.hpp"
 #include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
-#include "model/radioss_decoder.hpp"
 
 namespace sphdeck::lsp {
 
@@ -128,62 +126,15 @@ Edit token_edit(std::string_view text, std::uint32_t line0, std::uint32_t byte) 
     return {line0, utf16_offset(text, start), utf16_offset(text, end)};
 }
 
-// The field index under the cursor (before 0-based `byte`) on a line the last check decoded as
-// `values`: the field of the character before it while a value is being typed, else the field under
-// it, blank part included (engine/field_at_column.hpp, as hover asks).
-std::optional<std::size_t> decoded_field(const keywords::CardSpec& card, grammar::CardFormat format,
-                                         const std::vector<model::FieldValue>& values, std::string_view text,
-                                         std::uint32_t byte) {
-    const bool typing = byte > 0 && byte <= text.size() && text[byte - 1] != ' ' && text[byte - 1] != ',';
-    if (typing) {
-        if (auto index = engine::dyna_field_at_column(card, format, values, text, byte)) return index;
-    }
-    return engine::dyna_field_at_column(card, format, values, text, byte + 1);
-}
-
-// The field index under the cursor on a card line being typed (not decoded by the last check): the
-// count of commas before it in free format, else the fixed slot holding the cursor (or the
-// character before it).
-std::optional<std::size_t> typed_field(const keywords::CardSpec& card, grammar::CardFormat format,
-                                       std::string_view text, std::uint32_t byte) {
-    const std::string_view before = text.substr(0, std::min<std::size_t>(byte, text.size()));
-    if (grammar::is_free_format(text)) {
-        const auto commas = static_cast<std::size_t>(std::count(before.begin(), before.end(), ','));
-        return commas < card.fields.size() ? std::optional<std::size_t>(commas) : std::nullopt;
-    }
-    const auto slots = keywords::layout(card, format);
-    std::uint32_t column = byte;  // 0-based: the cursor stands before this byte
-    if (column > 0 && column <= text.size() && text[column - 1] != ' ') --column;  // still typing the value before
-    for (std::size_t i = 0; i < slots.size() && i < card.fields.size(); ++i)
-        if (column >= slots[i].start && column < slots[i].start + slots[i].width) return i;
-    return std::nullopt;
-}
-
-nlohmann::json field_items(const CheckedDeck& deck, const grammar::Block& block, std::uint32_t line, std::uint32_t byte,
-                           const Edit& edit) {
+nlohmann::json field_items(const CheckedDeck& deck, const grammar::Block& block, std::uint32_t line,
+                           std::uint32_t column, const Edit& edit) {
     const auto& raw = deck.result.deck;
-    const grammar::CardLine* card_line = card_line_at(raw, block, line);
-    const keywords::CardSpec* card = nullptr;
-    std::optional<engine::DynaCard> decoded;
-    std::optional<keywords::KeywordMatch> match = decodable_match(block);
-    if (!match) return list(nlohmann::json::array(), false);
-    if (card_line) {
-        decoded = dyna_card_at(raw, block, *card_line);
-        if (decoded) card = decoded->card;
-    } else {
-        // A line the last check did not see as a card (typed since, or a comment): the card after
-        // the card line just above it.
-        const grammar::CardLine* before = nullptr;
-        for (const grammar::CardLine* l = raw.begin_lines(block); l != raw.end_lines(block) && l->line < line; ++l)
-            before = l;
-        card = dyna_card_after(raw, block, before);
-    }
-    if (!card) return list(nlohmann::json::array(), false);
-    const std::string_view text = raw.sources.line_text(block.span.file, line);
-    auto index = decoded ? decoded_field(*card, block.format, decoded->values, text, byte)
-                         : typed_field(*card, block.format, text, byte);
+    // The card line under the cursor, or the card a line typed since would be read as.
+    const std::optional<CardAt> at = card_at(raw, block, line, false);
+    if (!at) return list(nlohmann::json::array(), false);
+    const auto index = at->field_at_cursor(column);
     if (!index) return list(nlohmann::json::array(), false);
-    const keywords::FieldSpec& field = card->fields[*index];
+    const keywords::FieldSpec& field = at->dyna_card->fields[*index];
     nlohmann::json items = nlohmann::json::array();
     for (const auto& c : field.choices) {
         auto choice = item(std::to_string(c.value), kEnumMember, std::string(c.meaning), edit,
@@ -196,6 +147,7 @@ nlohmann::json field_items(const CheckedDeck& deck, const grammar::Block& block,
     }
     for (auto word : field.text_choices)
         items.push_back(item(std::string(word), kValue, std::string(field.name), edit));
+    const std::optional<keywords::KeywordMatch> match = decodable_match(block);
     if (auto role = dyna_id_role(match->schema->name, field); role && !role->defines)
         id_items(deck, role->kind, edit, items);
     return list(std::move(items), false);
@@ -203,17 +155,12 @@ nlohmann::json field_items(const CheckedDeck& deck, const grammar::Block& block,
 
 nlohmann::json radioss_field_items(const CheckedDeck& deck, const grammar::Block& block, std::uint32_t line,
                                    std::uint32_t column, const Edit& edit) {
-    const auto& raw = deck.result.deck;
     nlohmann::json items = nlohmann::json::array();
-    const grammar::CardLine* card_line = card_line_at(raw, block, line);
-    if (!card_line) return list(std::move(items), false);
-    auto card = radioss_card_at(raw, block, *card_line, model::radioss_version(raw));
-    if (!card || !card->card) return list(std::move(items), false);
-    const std::string_view text = raw.text(*card_line);
-    auto index = radioss_field_at_column(*card, text, column);
-    if (!index && column > 1) index = radioss_field_at_column(*card, text, column - 1);
+    const std::optional<CardAt> at = card_at(deck.result.deck, block, line, true);
+    if (!at || !at->radioss->card) return list(std::move(items), false);
+    const auto index = at->field_at_cursor(column);
     if (!index) return list(std::move(items), false);
-    if (auto role = radioss_id_role(*card->values[*index].spec)) id_items(deck, role->kind, edit, items);
+    if (auto role = radioss_id_role(*at->radioss->values[*index].spec)) id_items(deck, role->kind, edit, items);
     return list(std::move(items), false);
 }
 
@@ -241,7 +188,7 @@ nlohmann::json completion(const CheckedDeck& deck, grammar::FileId file, TextPos
     if (!block || at.line == block->span.line) return list(nlohmann::json::array(), false);
     const Edit edit = token_edit(text, position.line, byte);
     return radioss ? radioss_field_items(deck, *block, at.line, at.column, edit)
-                   : field_items(deck, *block, at.line, byte, edit);
+                   : field_items(deck, *block, at.line, at.column, edit);
 }
 
 }  // namespace sphdeck::lsp

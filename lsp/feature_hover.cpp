@@ -1,20 +1,15 @@
 // textDocument/hover: what the keyword, field or id under the cursor is, from the schema tables
 // (the same data `sphdeck keyword` prints) and the deck's decoded values.
-#include <cmath>
 #include <fmt/format.h>
 #include <optional>
 #include <string>
 
 #include "grammar/radioss/cell_names.hpp"
 #include "grammar/keywords/schema.hpp"
-#include "grammar/number_cast.hpp"
-#include "grammar/value.hpp"
 #include "engine/id_lookup.hpp"
 #include "engine/position_index.hpp"
 #include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
-#include "engine/field_at_column.hpp"
-#include "model/radioss_decoder.hpp"
 
 namespace sphdeck::lsp {
 
@@ -40,31 +35,6 @@ std::string default_text(const FieldSpec& f) {
                                  : number(*f.default_value);
     if (!f.default_text.empty()) return std::string(f.default_text);
     return f.required ? "none (required)" : "none";
-}
-
-// The value the solver uses, and why: as written, the default for a blank or a zero that means it.
-std::string effective_value(const model::FieldValue& v) {
-    const FieldSpec& f = *v.spec;
-    if (f.type == FieldType::Text) {
-        if (v.explicit_value) return fmt::format("`{}`", v.text);
-        return f.default_text.empty() ? "blank" : fmt::format("`{}` (default)", f.default_text);
-    }
-    if (!v.explicit_value)
-        return v.valid ? fmt::format("{} (default: left blank)", number(v.number)) : "blank (no default)";
-    if (!v.valid) return fmt::format("`{}` cannot be read (see the diagnostic)", v.text);
-    if (f.type == FieldType::Label && grammar::classify_value(v.text).shape == grammar::ValueShape::Other)
-        return fmt::format("label `{}`", v.text);
-    std::string value = number(v.number);
-    const grammar::ValueToken token = grammar::classify_value(v.text);
-    if (token.shape == grammar::ValueShape::Parameter) value = fmt::format("{} (from `{}`)", value, v.text);
-    if (f.zero_is_default && f.default_value && v.number == *f.default_value &&
-        grammar::parse_real(v.text).status == grammar::NumberStatus::Ok && grammar::parse_real(v.text).value == 0.0)
-        return fmt::format("{} (default: 0 means the default)", value);
-    // No conversion of a value outside long long (1e20 in FORM: undefined behaviour, issue 32).
-    if (const std::optional<long long> n = grammar::checked_integer<long long>(v.number);
-        n && v.number == std::trunc(v.number))
-        if (const auto* choice = f.choice(*n)) value += fmt::format(": {}", choice->meaning);
-    return value;
 }
 
 std::string allowed_text(const FieldSpec& f) {
@@ -139,29 +109,28 @@ nlohmann::json dyna_keyword_hover(const CheckedDeck& deck, const grammar::Block&
     return hover_json(std::move(text), sources, block.span);
 }
 
-nlohmann::json dyna_field_hover(const CheckedDeck& deck, const grammar::Block& block, const grammar::CardLine& line,
-                                std::uint32_t column) {
+nlohmann::json dyna_field_hover(const CheckedDeck& deck, const CardAt& at, std::uint32_t column) {
     const auto& raw = deck.result.deck;
-    auto card = dyna_card_at(raw, block, line);
-    if (!card) return nullptr;
-    auto index = dyna_field_at_column(*card->card, block.format, card->values, raw.text(line), column);
+    if (!at.dyna) return nullptr;
+    const DynaCard& card = *at.dyna;
+    auto index = at.field_under(column);
     if (!index) return nullptr;
-    const model::FieldValue& v = card->values[*index];
+    const model::FieldValue& v = card.values[*index];
     const FieldSpec& f = *v.spec;
-    const auto slots = keywords::layout(*card->card, block.format);
-    std::string text = fmt::format("**{}** (`{}`, {})", f.name, card->match.schema->name,
-                                   card->card->name.empty() ? "card" : card->card->name);
+    const ColumnRange columns = dyna_field_columns(*card.card, at.block->format, *index).value_or(ColumnRange{});
+    std::string text = fmt::format("**{}** (`{}`, {})", f.name, card.match.schema->name,
+                                   card.card->name.empty() ? "card" : card.card->name);
     if (!f.doc.empty()) text += fmt::format(": {}", f.doc);
-    text += fmt::format("\n\ncolumns {}-{}, type {}, default {}", slots[*index].start + 1,
-                        slots[*index].start + slots[*index].width, keywords::to_string(f.type), default_text(f));
+    text += fmt::format("\n\ncolumns {}-{}, type {}, default {}", columns.first, columns.end - 1,
+                        keywords::to_string(f.type), default_text(f));
     if (!f.since.empty()) text += fmt::format(", since {}", f.since);
     text += fmt::format("\n\nvalue: {}", effective_value(v));
     text += allowed_text(f);
-    text += id_text_of(deck, dyna_id_role(card->match.schema->name, f), id_text(v));
+    text += id_text_of(deck, dyna_id_role(card.match.schema->name, f), id_text(v));
     grammar::Span span = v.span;
     if (!v.explicit_value) {
-        span.column = slots[*index].start + 1;
-        span.end_column = slots[*index].start + 1 + slots[*index].width;
+        span.column = columns.first;
+        span.end_column = columns.end;
     }
     return hover_json(std::move(text), raw.sources, span);
 }
@@ -186,24 +155,22 @@ nlohmann::json radioss_hover(const CheckedDeck& deck, const grammar::Block& bloc
         }
         return hover_json(std::move(text), raw.sources, span);
     }
-    const grammar::CardLine* card_line = card_line_at(raw, block, line);
-    if (!card_line || !spec) return nullptr;
-    auto card = radioss_card_at(raw, block, *card_line, model::radioss_version(raw));
-    if (!card) return nullptr;
+    const std::optional<CardAt> at = spec ? card_at(raw, block, line, true) : std::nullopt;
+    if (!at) return nullptr;
+    const RadiossCard* card = &*at->radioss;
+    const grammar::CardLine* card_line = at->line;
     if (card->title) {
         grammar::Span span{card_line->file, card_line->line, 1, raw.length(*card_line) + 1};
         return hover_json(fmt::format("title of `{}`", spec->name), raw.sources, span);
     }
-    auto index = radioss_field_at_column(*card, raw.text(*card_line), column);
+    auto index = at->field_under(column);
     if (!index) return nullptr;
     const model::RadiossValue& v = card->values[*index];
     grammar::Span span = v.span;
     std::string columns;
-    if (!card->engine && !grammar::is_free_format(raw.text(*card_line))) {
-        const auto cells = rad::layout(*card->card, card->version);
-        columns = fmt::format(", columns {}-{}", cells[*index].start + 1, cells[*index].start + cells[*index].width);
-        if (!v.explicit_value)
-            span.column = cells[*index].start + 1, span.end_column = span.column + cells[*index].width;
+    if (auto cells = radioss_field_columns(*card, at->text, *index)) {
+        columns = fmt::format(", columns {}-{}", cells->first, cells->end - 1);
+        if (!v.explicit_value) span.column = cells->first, span.end_column = cells->end;
     }
     std::string text = fmt::format("**{}** (`{}`, format {}): {}{}", v.spec->name, spec->name,
                                    spec->format_for(card->version).since, rad::cell_kind_name(v.spec->cell), columns);
@@ -244,9 +211,9 @@ nlohmann::json hover(const CheckedDeck& deck, grammar::FileId file, TextPosition
     if (deck.result.model.radioss) return radioss_hover(deck, *block, at.line, at.column);
     if (at.line == block->span.line) return dyna_keyword_hover(deck, *block);
     if (auto parameter = parameter_hover(deck, *block, file, at.line, at.column)) return *parameter;
-    const grammar::CardLine* line = card_line_at(raw, *block, at.line);
-    if (!line) return nullptr;
-    return dyna_field_hover(deck, *block, *line, at.column);
+    const std::optional<CardAt> card = card_at(raw, *block, at.line, false);
+    if (!card) return nullptr;
+    return dyna_field_hover(deck, *card, at.column);
 }
 
 namespace {

@@ -6,8 +6,7 @@
 #include <fmt/format.h>
 #include <string>
 
-#include "grammar/fields.hpp"
-#include "lsp/card_lines_in_range.hpp"
+#include "engine/position_index.hpp"
 #include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
 
@@ -64,8 +63,6 @@ public:
 
     void dyna_line(const grammar::Block& block, const grammar::CardLine& line, const DynaCard& card) {
         const std::string_view text = raw_.text(line);
-        const bool free = grammar::is_free_format(text);
-        const auto slots = keywords::layout(*card.card, block.format);
         for (std::size_t i = 0; i < card.values.size(); ++i) {
             const model::FieldValue& v = card.values[i];
             if (!v.spec || v.spec->type == keywords::FieldType::Unused) continue;
@@ -77,14 +74,16 @@ public:
                 continue;
             }
             // A blank inside the line: where the default would be read.
-            if (!settings_.defaults || free || i >= slots.size() || slots[i].start >= text.size()) continue;
+            const std::optional<std::uint32_t> start =
+                settings_.defaults ? blank_field_start(card, block.format, text, i) : std::nullopt;
+            if (!start) continue;
             std::string value;
             if (v.spec->type == keywords::FieldType::Text)
                 value = std::string(v.spec->default_text);
             else if (v.valid)
                 value = number(v.number);
             if (value.empty()) continue;
-            add(line.line, slots[i].start + 1, fmt::format("{}={}", v.spec->name, value), kHintParameter, false, false,
+            add(line.line, *start, fmt::format("{}={}", v.spec->name, value), kHintParameter, false, false,
                 "blank: the default applies");
         }
     }
@@ -133,10 +132,11 @@ nlohmann::json inlay_hints(const CheckedDeck& deck, grammar::FileId file, const 
     Hints hints(deck, file, settings);
     RangeWalkOptions options;
     options.skip_bulk = !settings.bulk_blocks;
-    visit_card_lines(deck, file, {start.line + 1, end.line + 1}, options, [&](const DecodedLine& decoded) {
-        if (decoded.dyna) hints.dyna_line(*decoded.block, *decoded.line, *decoded.dyna);
-        if (decoded.radioss) hints.radioss_line(*decoded.line, *decoded.radioss);
-    });
+    visit_card_lines(deck.result.deck, deck.result.model.radioss.has_value(), file, {start.line + 1, end.line + 1},
+                     options, [&](const DecodedLine& decoded) {
+                         if (decoded.dyna) hints.dyna_line(*decoded.block, *decoded.line, *decoded.dyna);
+                         if (decoded.radioss) hints.radioss_line(*decoded.line, *decoded.radioss);
+                     });
     return hints.take();
 }
 

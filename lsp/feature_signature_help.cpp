@@ -4,12 +4,9 @@
 #include <fmt/format.h>
 #include <string>
 
-#include "grammar/fields.hpp"
 #include "engine/position_index.hpp"
 #include "lsp/display_text.hpp"
 #include "lsp/features.hpp"
-#include "engine/field_at_column.hpp"
-#include "model/radioss_decoder.hpp"
 
 namespace sphdeck::lsp {
 using namespace engine;  // the position index: engine/position_index.hpp, engine/id_lookup.hpp
@@ -39,45 +36,14 @@ nlohmann::json signature(std::string title, const std::vector<Parameter>& parame
     return out;
 }
 
-// The field slot under `column` (1-based) when the line does not decode it: free format counts the
-// commas before the cursor, fixed format takes the slot (or, at a slot's first column, the one the
-// value being typed ends).
-std::optional<std::size_t> typed_slot(const keywords::CardSpec& card, grammar::CardFormat format, std::string_view text,
-                                      std::uint32_t column) {
-    const std::uint32_t byte = column - 1;
-    if (grammar::is_free_format(text)) {
-        const std::string_view before = text.substr(0, std::min<std::size_t>(byte, text.size()));
-        return static_cast<std::size_t>(std::count(before.begin(), before.end(), ','));
-    }
-    std::uint32_t at = byte;
-    if (at > 0 && at <= text.size() && text[at - 1] != ' ') --at;  // still typing the value before
-    const auto slots = keywords::layout(card, format);
-    for (std::size_t i = 0; i < slots.size(); ++i)
-        if (at >= slots[i].start && at < slots[i].start + slots[i].width) return i;
-    return std::nullopt;
-}
-
 nlohmann::json dyna_signature(const grammar::RawDeck& raw, const grammar::Block& block, std::uint32_t line,
                               std::uint32_t column) {
-    const auto match = decodable_match(block);
-    if (!match) return nullptr;
-    const std::string_view text = raw.sources.line_text(block.span.file, line);
-    const keywords::CardSpec* card = nullptr;
-    std::optional<std::size_t> index;
-    if (const grammar::CardLine* card_line = card_line_at(raw, block, line)) {
-        if (auto decoded = dyna_card_at(raw, block, *card_line)) {
-            card = decoded->card;
-            index = dyna_field_at_column(*card, block.format, decoded->values, text, column);
-        }
-    } else {
-        const grammar::CardLine* before = nullptr;
-        for (const grammar::CardLine* l = raw.begin_lines(block); l != raw.end_lines(block) && l->line < line; ++l)
-            before = l;
-        card = dyna_card_after(raw, block, before);
-    }
-    if (!card || card->unknown_layout) return nullptr;
-    if (!index) index = typed_slot(*card, block.format, text, column);
-    const auto slots = keywords::layout(*card, block.format);
+    // The decoded card line, or the card a line typed since would be read as.
+    const std::optional<CardAt> at = card_at(raw, block, line, false);
+    if (!at || at->dyna_card->unknown_layout) return nullptr;
+    const keywords::CardSpec* card = at->dyna_card;
+    std::optional<std::size_t> index = at->field_under(column);
+    if (!index) index = at->typed_slot(column);
     std::vector<Parameter> parameters;
     std::optional<std::size_t> active;
     for (std::size_t i = 0; i < card->fields.size(); ++i) {
@@ -85,9 +51,9 @@ nlohmann::json dyna_signature(const grammar::RawDeck& raw, const grammar::Block&
         if (f.type == keywords::FieldType::Unused) continue;
         if (index && *index == i) active = parameters.size();
         std::string doc = fmt::format("**{}**: {}", f.name, f.doc);
-        if (i < slots.size())
-            doc += fmt::format(" (columns {}-{}, type {})", slots[i].start + 1, slots[i].start + slots[i].width,
-                               keywords::to_string(f.type));
+        if (auto columns = dyna_field_columns(*card, block.format, i))
+            doc +=
+                fmt::format(" (columns {}-{}, type {})", columns->first, columns->end - 1, keywords::to_string(f.type));
         parameters.push_back({std::string(f.name), std::move(doc)});
     }
     return signature(fmt::format("{} {}", block.keyword, card->name.empty() ? "card" : card->name), parameters, active);
@@ -96,11 +62,10 @@ nlohmann::json dyna_signature(const grammar::RawDeck& raw, const grammar::Block&
 nlohmann::json radioss_signature(const grammar::RawDeck& raw, const grammar::Block& block, std::uint32_t line,
                                  std::uint32_t column) {
     const rad::KeywordSpec* spec = radioss_keyword(block);
-    const grammar::CardLine* card_line = card_line_at(raw, block, line);
-    if (!spec || !card_line) return nullptr;
-    auto card = radioss_card_at(raw, block, *card_line, model::radioss_version(raw));
-    if (!card || !card->card) return nullptr;
-    const auto index = radioss_field_at_column(*card, raw.text(*card_line), column);
+    const std::optional<CardAt> at = card_at(raw, block, line, true);
+    if (!spec || !at || !at->radioss->card) return nullptr;
+    const RadiossCard* card = &*at->radioss;
+    const auto index = at->field_under(column);
     std::vector<Parameter> parameters;
     std::optional<std::size_t> active;
     for (std::size_t i = 0; i < card->card->fields.size(); ++i) {

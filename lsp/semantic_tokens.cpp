@@ -31,11 +31,7 @@ std::pair<std::size_t, std::size_t> trimmed(std::string_view text, std::size_t f
 class Collector {
 public:
     Collector(const CheckedDeck& deck, grammar::FileId file, LineRange range)
-        : deck_(deck),
-          raw_(deck.result.deck),
-          file_(file),
-          range_(range),
-          radioss_(deck.result.model.radioss.has_value()) {}
+        : raw_(deck.result.deck), file_(file), range_(range), radioss_(deck.result.model.radioss.has_value()) {}
 
     void add(std::uint32_t line, std::uint32_t column, std::uint32_t length, TokenType type,
              std::uint32_t modifiers = 0) {
@@ -82,10 +78,11 @@ public:
     }
 
     void values(const TokenOptions& options) {
-        visit_card_lines(deck_, file_, range_, {options.max_block_lines, false}, [&](const DecodedLine& decoded) {
-            if (decoded.dyna) dyna_line(*decoded.dyna);
-            if (decoded.radioss) radioss_line(*decoded.line, *decoded.radioss);
-        });
+        visit_card_lines(raw_, radioss_, file_, range_, {options.max_block_lines, false},
+                         [&](const DecodedLine& decoded) {
+                             if (decoded.dyna) dyna_line(*decoded.dyna);
+                             if (decoded.radioss) radioss_line(*decoded.line, *decoded.radioss);
+                         });
     }
 
     std::vector<SemanticToken> take() {
@@ -170,7 +167,6 @@ private:
         return it->second;
     }
 
-    const CheckedDeck& deck_;
     const grammar::RawDeck& raw_;
     grammar::FileId file_;
     LineRange range_;

@@ -10,10 +10,12 @@
 #include <string_view>
 #include <vector>
 
-#include "lsp/card_lines_in_range.hpp"
+#include "engine/position_index.hpp"
 #include "lsp/checked_deck.hpp"
 
 namespace sphdeck::lsp {
+
+using engine::LineRange;  // the position index's range of lines
 
 // The legend, in the order of the numbers sent (the server's capabilities announce it). "real" is
 // sphdeck's own type (VS Code: superType number); the rest are LSP's standard names.

@@ -101,9 +101,11 @@ PartModel resolve(const model::Model& m, long long id, std::string& notes) {
     return r;
 }
 
-// Nearest neighbours, h0, sound speed and time steps of one part.
+// Nearest neighbours, h0, sound speed and time steps of one part. `known`: the nearest distances of
+// every particle (model order) when they are known already (the places did not change): no search.
 void preview_part(const model::Model& m, const ParticlePositions& at, const PartGroups& groups, std::size_t q,
-                  model::IniMode mode, Preview& out, const std::function<void(double)>& progress) {
+                  model::IniMode mode, Preview& out, const std::function<void(double)>& progress,
+                  std::span<const double> known) {
     PartPreview& pv = out.parts[q];
     ParticlePreview& pp = out.particles;
     const model::Particles& particles = m.particles;
@@ -147,16 +149,20 @@ void preview_part(const model::Model& m, const ParticlePositions& at, const Part
 
     // Positions: the model's own arrays when the part is every particle in node order, else a
     // copy of the part's located ones.
-    PointCopy copy;
-    if (!whole)
-        copy = at.gather(located);
-    else if (!at.in_place())
-        copy = at.gather_all();
-    const PointSpans points = whole && at.in_place() ? at.all() : copy.spans();
-    NearestNeighbours nn = mode == model::IniMode::Global
-                               ? nearest_neighbours_all_pairs(points.x, points.y, points.z, progress)
-                               : nearest_neighbours_grid(points.x, points.y, points.z);
-    copy = PointCopy{};
+    NearestNeighbours nn;
+    if (!known.empty()) {  // nn.index stays empty: the coincident pairs are known too
+        nn.distance.resize(count);
+        for (std::size_t k = 0; k < count; ++k) nn.distance[k] = known[model_index(k)];
+    } else {
+        PointCopy copy;
+        if (!whole)
+            copy = at.gather(located);
+        else if (!at.in_place())
+            copy = at.gather_all();
+        const PointSpans points = whole && at.in_place() ? at.all() : copy.spans();
+        nn = mode == model::IniMode::Global ? nearest_neighbours_all_pairs(points.x, points.y, points.z, progress)
+                                            : nearest_neighbours_grid(points.x, points.y, points.z);
+    }
     pv.nn_distance = stats_of(nn.distance);
     pv.spacing = pv.nn_distance.median;
 
@@ -172,7 +178,7 @@ void preview_part(const model::Model& m, const ParticlePositions& at, const Part
     for (std::size_t k = 0; k < count; ++k) {
         const std::uint32_t i = model_index(k);
         if (!whole) pp.nn_distance[i] = distance[k];
-        if (nn.index[k] != NearestNeighbours::none && distance[k] <= tolerance) {
+        if (!nn.index.empty() && nn.index[k] != NearestNeighbours::none && distance[k] <= tolerance) {
             const std::uint32_t j = model_index(nn.index[k]);
             out.coincident.emplace_back(std::min(i, j), std::max(i, j));
         }
@@ -280,7 +286,9 @@ void count_all_neighbours(const ParticlePositions& at, Preview& out) {
 
 }  // namespace
 
-Preview compute_preview(const model::Model& m, const PreviewOptions& options) {
+namespace {
+// compute_preview; `old` set: the preview of the same particles at the same places (recompute_settings).
+Preview compute(const model::Model& m, const PreviewOptions& options, const Preview* old) {
     const auto progress = [&](double f) {
         if (options.progress) options.progress(std::clamp(f, 0.0, 1.0));
     };
@@ -297,6 +305,8 @@ Preview compute_preview(const model::Model& m, const PreviewOptions& options) {
         for (std::size_t i = 0; i < n; ++i)
             if (pp.located[i]) pp.x[i] = at.x(i), pp.y[i] = at.y(i), pp.z[i] = at.z(i);
         pp.mass.assign(n, 0.0), pp.h.assign(n, 0.0), pp.neighbours.assign(n, 0);
+    } else if (options.neighbour_counts) {
+        pp.neighbours.assign(n, 0);
     }
     PartGroups groups = group_by_part(particles.part, m.radioss.has_value());
     pp.part = std::move(groups.of_particle);  // the groups use members and begin from here on
@@ -312,7 +322,9 @@ Preview compute_preview(const model::Model& m, const PreviewOptions& options) {
         const std::size_t size = groups.begin[q + 1] - groups.begin[q];
         const double start = 0.05 + nn_share * static_cast<double>(done) / std::max<std::size_t>(n, 1);
         const double share = nn_share * static_cast<double>(size) / std::max<std::size_t>(n, 1);
-        preview_part(m, at, groups, q, mode, out, [&](double f) { progress(start + share * f); });
+        preview_part(
+            m, at, groups, q, mode, out, [&](double f) { progress(start + share * f); },
+            old ? std::span<const double>(old->particles.nn_distance) : std::span<const double>());
         done += size;
         progress(start + share);
     }
@@ -321,11 +333,38 @@ Preview compute_preview(const model::Model& m, const PreviewOptions& options) {
     groups = PartGroups{};
     if (pp.nn_distance.size() != n) pp.nn_distance.assign(n, 0.0);  // no part had a located particle
     if (out.radioss) radioss_count_ghosts(out);
-    count_all_neighbours(at, out);
+    if (old) out.coincident = old->coincident;  // the same places, the same spacings
+    const auto same_supports = [&] {
+        for (std::size_t q = 0; q < out.parts.size(); ++q)
+            if (out.parts[q].support != old->parts[q].support) return false;
+        return old->particles.neighbours.size() == pp.neighbours.size();
+    };
+    if (old && same_supports()) {  // the counts stand
+        pp.neighbours = old->particles.neighbours;
+        out.neighbour_sample_stride = old->neighbour_sample_stride;
+        for (std::size_t q = 0; q < out.parts.size(); ++q) {
+            out.parts[q].neighbours = old->parts[q].neighbours;
+            if (old->neighbour_sample_stride > 1)
+                add_note(out.parts[q].notes,
+                         fmt::format("neighbours counted for every {}th particle only (too many per particle)",
+                                     old->neighbour_sample_stride));
+        }
+    } else {
+        count_all_neighbours(at, out);
+    }
     std::sort(out.coincident.begin(), out.coincident.end());
     out.coincident.erase(std::unique(out.coincident.begin(), out.coincident.end()), out.coincident.end());
     progress(1.0);
     return out;
+}
+}  // namespace
+
+Preview compute_preview(const model::Model& m, const PreviewOptions& options) { return compute(m, options, nullptr); }
+
+std::optional<Preview> recompute_settings(const model::Model& m, const Preview& old, const PreviewOptions& options) {
+    if (m.radioss || old.radioss || old.particles.nn_distance.size() != m.particles.size() || options.ini)
+        return std::nullopt;
+    return compute(m, options, &old);
 }
 
 }  // namespace sphdeck::preproc

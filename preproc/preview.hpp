@@ -31,6 +31,9 @@ struct PreviewOptions {
     // rules' preview) they stay empty on LS-DYNA decks, 44 bytes a particle less: part, located
     // and nn_distance are always there, and Radioss decks always get every array.
     bool particle_arrays = true;
+    // Without particle_arrays, still ParticlePreview::neighbours (4 bytes a particle): what a kept
+    // preview needs to follow an edit of particle positions (preproc/preview_follow.hpp).
+    bool neighbour_counts = false;
 };
 struct PartPreview {
     long long part = 0;
@@ -75,4 +78,11 @@ struct Preview {
     std::optional<RadiossPreview> radioss;  // Radioss decks only: planes, ghosts, time-step scales
 };
 Preview compute_preview(const model::Model& model, const PreviewOptions& options = {});
+// compute_preview after an edit of the settings only (*CONTROL_SPH, *SECTION_SPH, materials, EOS):
+// `old` is the preview of the same particles, in the same parts, at the same places (the caller
+// checks it: engine/preview_reuse.hpp). What depends on the places alone is kept (nearest distances,
+// coincident pairs), the counts too when no support moved; the rest is computed again. nullopt on
+// Radioss decks and with PreviewOptions::ini.
+std::optional<Preview> recompute_settings(const model::Model& model, const Preview& old,
+                                          const PreviewOptions& options = {});
 }  // namespace sphdeck::preproc

@@ -1,11 +1,11 @@
-#include "lsp/card_lines_in_range.hpp"
-
+// The decoded card lines of a range of lines of one file (engine/position_index.hpp), for the
+// features that colour or annotate every value of a screenful (semantic tokens, inlay hints).
 #include <algorithm>
 
+#include "engine/position_index.hpp"
 #include "model/radioss_decoder.hpp"
 
-namespace sphdeck::lsp {
-using namespace engine;  // the position index: engine/position_index.hpp, engine/id_lookup.hpp
+namespace sphdeck::engine {
 namespace {
 
 // A block this long is decoded line by line when only part of it is asked for.
@@ -85,10 +85,8 @@ std::vector<const grammar::Block*> blocks_in_range(const grammar::RawDeck& deck,
     return out;
 }
 
-void visit_card_lines(const CheckedDeck& deck, grammar::FileId file, LineRange range, const RangeWalkOptions& options,
-                      const DecodedLineVisitor& visit) {
-    const auto& raw = deck.result.deck;
-    const bool radioss = deck.result.model.radioss.has_value();
+void visit_card_lines(const grammar::RawDeck& raw, bool radioss, grammar::FileId file, LineRange range,
+                      const RangeWalkOptions& options, const DecodedLineVisitor& visit) {
     for (const grammar::Block* block : blocks_in_range(raw, file, range)) {
         if (options.max_block_lines != 0 && block->line_count > options.max_block_lines) continue;
         if (options.skip_bulk && is_bulk_block(*block, radioss)) continue;
@@ -99,4 +97,4 @@ void visit_card_lines(const CheckedDeck& deck, grammar::FileId file, LineRange r
     }
 }
 
-}  // namespace sphdeck::lsp
+}  // namespace sphdeck::engine
