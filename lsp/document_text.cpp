@@ -41,7 +41,8 @@ void DocumentText::split_into_chunks(std::string_view text, std::vector<Chunk>& 
     while (start < text.size()) {
         std::size_t end = text.size();
         if (text.size() - start > kChunkBytes) {
-            const void* newline = std::memchr(text.data() + start + kChunkBytes, '\n', text.size() - start - kChunkBytes);
+            const void* newline =
+                std::memchr(text.data() + start + kChunkBytes, '\n', text.size() - start - kChunkBytes);
             if (newline) end = static_cast<std::size_t>(static_cast<const char*>(newline) - text.data()) + 1;
         }
         const std::string_view piece = text.substr(start, end - start);

@@ -39,7 +39,7 @@ public:
 
 private:
     struct Chunk {
-        std::string_view text;        // into `base_` or into `owned`
+        std::string_view text;               // into `base_` or into `owned`
         std::shared_ptr<std::string> owned;  // the chunk's own text once a change rebuilt it
         std::size_t newlines = 0;
     };
