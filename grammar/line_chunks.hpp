@@ -60,4 +60,21 @@ void walk_chunk(const LineChunk& chunk, GrammarLine&& grammar_line, DataLines&& 
     if (chunk.starts.size() > at) data_lines(chunk.starts.data() + at, chunk.starts.size() - at);
 }
 
+// A reader's whole chunked reading of `text` (both formats' DeckReader::read_chunked): the lines found
+// and sorted on all threads, then walked in file order, `grammar_line(line)` with a pointer to each line
+// for the grammar, `data_lines(starts, count)` for each run of data lines; `card_lines` (the deck's card
+// lines) gets room for all of the file's lines first.
+template <typename CardLines, typename GrammarLine, typename DataLines>
+void read_in_chunks(const SourceText& text, LineSyntax syntax, std::size_t chunk_bytes, CardLines& card_lines,
+                    GrammarLine&& grammar_line, DataLines&& data_lines) {
+    const std::size_t first = text.view().starts_with("\xEF\xBB\xBF") ? 3 : 0;  // the grammars' byte_order_mark
+    SplitLines split = split_lines(text, first, syntax, chunk_bytes);
+    if (card_lines.capacity() < card_lines.size() + split.lines) card_lines.reserve(card_lines.size() + split.lines);
+    for (LineChunk& chunk : split.chunks) {
+        walk_chunk(
+            chunk, [&](std::uint32_t at) { grammar_line(text.data() + at); }, data_lines);
+        chunk = {};  // its offsets are the deck's card lines now
+    }
+}
+
 }  // namespace sphdeck::grammar

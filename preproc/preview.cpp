@@ -13,24 +13,11 @@
 #include "preproc/radioss_preview.hpp"
 #include "preproc/smoothing_length.hpp"
 #include "preproc/sound_speed.hpp"
+#include "preproc/stats_of.hpp"
 #include "preproc/time_step.hpp"
 
 namespace sphdeck::preproc {
 namespace {
-
-template <typename T>
-Stats stats_of(std::vector<T> v) {
-    Stats s;
-    if (v.empty()) return s;
-    auto [lo, hi] = std::minmax_element(v.begin(), v.end());
-    s.min = static_cast<double>(*lo), s.max = static_cast<double>(*hi);
-    const std::size_t mid = v.size() / 2;
-    std::nth_element(v.begin(), v.begin() + mid, v.end());
-    s.median = static_cast<double>(v[mid]);
-    if (v.size() % 2 == 0)
-        s.median = 0.5 * (s.median + static_cast<double>(*std::max_element(v.begin(), v.begin() + mid)));
-    return s;
-}
 
 void add_note(std::string& notes, const std::string& note) {
     if (note.empty()) return;

@@ -13,6 +13,7 @@
 
 #include "preproc/particle_positions.hpp"
 #include "preproc/smoothing_length.hpp"
+#include "preproc/stats_of.hpp"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -99,24 +100,9 @@ ParticleDiff diff_particles(const model::Particles& before, const model::Particl
     return d;
 }
 
-// The statistics of compute_preview (preview.cpp's stats_of): min, median, max.
-template <typename T>
-Stats statistics(std::vector<T> v) {
-    Stats s;
-    if (v.empty()) return s;
-    auto [lo, hi] = std::minmax_element(v.begin(), v.end());
-    s.min = static_cast<double>(*lo), s.max = static_cast<double>(*hi);
-    const std::size_t mid = v.size() / 2;
-    std::nth_element(v.begin(), v.begin() + mid, v.end());
-    s.median = static_cast<double>(v[mid]);
-    if (v.size() % 2 == 0)
-        s.median = 0.5 * (s.median + static_cast<double>(*std::max_element(v.begin(), v.begin() + mid)));
-    return s;
-}
-
-// The same from one pass over `values` when at most a few changed since their median was `pivot`:
-// the values below and at the pivot are counted and the `window` nearest on each side kept, which
-// hold the new median unless more than about `window` values crossed it (then nullopt).
+// stats_of (preproc/stats_of.hpp) from one pass over `values` when at most a few changed since their median was
+// `pivot`: the values below and at the pivot are counted and the `window` nearest on each side kept, which hold the new
+// median unless more than about `window` values crossed it (then nullopt).
 template <typename T>
 std::optional<Stats> statistics_near(std::span<const T> values, double pivot, std::size_t window) {
     Stats s;
@@ -168,7 +154,7 @@ std::optional<Stats> statistics_near(std::span<const T> values, double pivot, st
 template <typename T>
 Stats statistics_from(std::span<const T> values, double pivot) {
     if (auto s = statistics_near(values, pivot, 1024)) return *s;
-    return statistics(std::vector<T>(values.begin(), values.end()));
+    return stats_of(std::vector<T>(values.begin(), values.end()));
 }
 
 // A changed particle: where it stands (new, or old for one moved or removed) and its part index.
@@ -468,7 +454,7 @@ private:
             if (masses_changed_) {
                 pv.particles = members;
                 pv.mass_total = mass_total;
-                pv.mass_median = statistics(std::move(masses)).median;
+                pv.mass_median = stats_of(std::move(masses)).median;
             }
         }
         return true;

@@ -7,18 +7,10 @@
 namespace sphdeck::grammar::radioss {
 
 void DeckReader::read_chunked(const SourceText& text, std::size_t chunk_bytes) {
-    const char* const base = text.data();
-    const char* const end = base + text.size();
-    const std::size_t first = text.view().starts_with("\xEF\xBB\xBF") ? 3 : 0;  // the grammar's byte_order_mark
-    SplitLines split = split_lines(text, first, LineSyntax::Radioss, chunk_bytes);
-    if (deck_.lines.capacity() < deck_.lines.size() + split.lines)
-        deck_.lines.reserve(deck_.lines.size() + split.lines);
-    for (LineChunk& chunk : split.chunks) {
-        walk_chunk(
-            chunk, [&](std::uint32_t at) { grammar_line(base + at, end); },
-            [&](const std::uint32_t* starts, std::size_t count) { data_lines(starts, count, end); });
-        chunk = {};  // its offsets are the deck's card lines now
-    }
+    const char* const end = text.data() + text.size();
+    read_in_chunks(
+        text, LineSyntax::Radioss, chunk_bytes, deck_.lines, [&](const char* line) { grammar_line(line, end); },
+        [&](const std::uint32_t* starts, std::size_t count) { data_lines(starts, count, end); });
 }
 
 // What on_data and on_empty do to each line of the run: where they do more than add a card line to the
