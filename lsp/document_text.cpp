@@ -63,6 +63,7 @@ DocumentText::Place DocumentText::place_of(std::uint32_t line, std::uint32_t cha
         const std::string_view text = chunk.text;
         std::size_t start = 0;
         for (std::size_t skip = line - before; skip > 0; --skip) {
+            if (start >= text.size()) return Place{k, text.size()};  // past the end (an empty text has no data())
             const void* newline = std::memchr(text.data() + start, '\n', text.size() - start);
             if (!newline) return Place{k, text.size()};
             start = static_cast<std::size_t>(static_cast<const char*>(newline) - text.data()) + 1;
