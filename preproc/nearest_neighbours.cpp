@@ -14,17 +14,6 @@ namespace sphdeck::preproc {
 
 namespace {
 
-// Threads for the grid passes: OMP_NUM_THREADS (or --threads) decides; below a few thousand points
-// starting a team costs more than it saves.
-int grid_threads(std::size_t points) {
-#ifdef _OPENMP
-    return points < 4096 ? 1 : std::max(1, omp_get_max_threads());
-#else
-    (void)points;
-    return 1;
-#endif
-}
-
 // Axes the points span, and their bounding-box measure over those axes.
 std::pair<int, double> spanned(std::span<const double> x, std::span<const double> y, std::span<const double> z) {
     if (x.empty()) return {0, 0.0};
@@ -44,6 +33,15 @@ std::pair<int, double> spanned(std::span<const double> x, std::span<const double
 }
 
 }  // namespace
+
+int pass_threads(std::size_t points) {
+#ifdef _OPENMP
+    return points < 4096 ? 1 : std::max(1, omp_get_max_threads());
+#else
+    (void)points;
+    return 1;
+#endif
+}
 
 double estimated_spacing(std::span<const double> x, std::span<const double> y, std::span<const double> z) {
     const auto [axes, measure] = spanned(x, y, z);
@@ -168,7 +166,7 @@ NearestNeighbours nearest_neighbours_grid(std::span<const double> x, std::span<c
     const NeighbourGrid g = nearest_neighbour_grid(x, y, z);
     // Each point's search is its own and writes only its own entry: contiguous runs of cells
     // go to the threads, and the numbers are those of one thread.
-    const int threads = grid_threads(n);
+    const int threads = pass_threads(n);
     const std::size_t cells = g.occupied();
 #pragma omp parallel for num_threads(threads) schedule(static, 1) if (threads > 1)
     for (int t = 0; t < threads; ++t) {
@@ -332,7 +330,7 @@ void count_symmetric(const NeighbourGrid& g, std::span<const double> support, do
                                  cell(g, support.data(), first, last, ranges, tol2, count.data(), close);
                              });
     };
-    const int threads = grid_threads(g.size());
+    const int threads = pass_threads(g.size());
     const std::size_t cells = g.occupied();
     if (threads == 1) return run(0, cells, close_points);
     // Run boundaries: the first occupied cell of a plane, near each 1/(2 threads) of the points.
@@ -413,7 +411,7 @@ NeighbourCounts count_neighbours(std::span<const double> x, std::span<const doub
     // change the grid), and whether one support serves every point.
     double largest_support = 0, largest_tolerance = 0;
     bool uniform = true;
-    const int threads = grid_threads(n);
+    const int threads = pass_threads(n);
 #pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1) \
     reduction(max : largest_support, largest_tolerance) reduction(&& : uniform)
     for (std::size_t i = 0; i < n; ++i) {

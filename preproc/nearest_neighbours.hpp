@@ -32,6 +32,10 @@ struct NearestNeighbours {
     std::vector<std::uint32_t> index;  // the nearest other point, `none` when there is none
 };
 
+// Threads for a pass over every point (the grid passes here, preview_follow.cpp's): OMP_NUM_THREADS (or
+// --threads) decides; below a few thousand points starting a team costs more than it saves.
+int pass_threads(std::size_t points);
+
 // A typical spacing of the points: (bounding-box measure / count)^(1/d) over the axes the points
 // span (d = 0..3). 0 when the points span no axis.
 double estimated_spacing(std::span<const double> x, std::span<const double> y, std::span<const double> z);

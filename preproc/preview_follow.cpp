@@ -11,13 +11,10 @@
 #include <limits>
 #include <string>
 
+#include "preproc/nearest_neighbours.hpp"
 #include "preproc/particle_positions.hpp"
 #include "preproc/smoothing_length.hpp"
 #include "preproc/stats_of.hpp"
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 namespace sphdeck::preproc {
 namespace {
@@ -31,17 +28,6 @@ struct Place {
 double squared_distance(const Place& a, const Place& b) {
     const double dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
     return dx * dx + dy * dy + dz * dz;
-}
-
-// Threads for a pass over every particle: OMP_NUM_THREADS decides; below a few thousand particles
-// starting a team costs more than it saves (as the grid passes, nearest_neighbours.cpp).
-int pass_threads(std::size_t particles) {
-#ifdef _OPENMP
-    return particles < 4096 ? 1 : std::max(1, omp_get_max_threads());
-#else
-    (void)particles;
-    return 1;
-#endif
 }
 
 // sqrt(r2) <= d, the square root taken only near the bound (most particles stand far away).
