@@ -9,6 +9,8 @@
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
+namespace test_bad_input_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -148,3 +150,4 @@ TEST_CASE("bad input: a Radioss deck of #include lines only is a deck; its missi
     CHECK(r.out.find("include file 'model.inc' not found [DK010]") != std::string::npos);
     CHECK(r.err.find("not a keyword deck") == std::string::npos);
 }
+}  // namespace test_bad_input_cpp

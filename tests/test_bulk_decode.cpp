@@ -9,6 +9,8 @@
 #include "grammar/read_deck.hpp"
 #include "model/model_builder.hpp"
 
+namespace test_bulk_decode_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -235,3 +237,4 @@ TEST_CASE("bulk decode: lines the lean path must leave to the full decoder") {
     CHECK(codes.count("DK008"));
     CHECK(codes.count("DK016"));
 }
+}  // namespace test_bulk_decode_cpp

@@ -9,6 +9,8 @@
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
+namespace test_check_inputs_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -73,3 +75,4 @@ TEST_CASE("check inputs: --statistics, --exit-zero and --output-file") {
     CHECK(to_file.out.empty());
     CHECK(slurp(dir.path() / "report.json").find("\"DK003\"") != std::string::npos);
 }
+}  // namespace test_check_inputs_cpp

@@ -12,6 +12,8 @@
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
+namespace test_cli_conventions_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -146,3 +148,4 @@ TEST_CASE("cli conventions: dump, smooth and diff read a deck from standard inpu
     CHECK(smoothed.exit_code == 2);  // no particles: the message names the deck as --stdin-filename says
     CHECK(smoothed.err.find("sphdeck: error: piped.k: no SPH particles") != std::string::npos);
 }
+}  // namespace test_cli_conventions_cpp

@@ -9,6 +9,8 @@
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
+namespace test_config_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 namespace fs = std::filesystem;
 
@@ -187,3 +189,4 @@ TEST_CASE("config: the binary finds, applies, overrides and rejects config files
     CHECK(test::run_sphdeck(dir, "check --config missing.toml " + deck).exit_code == 2);
     CHECK(test::run_sphdeck(dir, "check --config sphdeck.toml --no-config " + deck).exit_code == 2);
 }
+}  // namespace test_config_cpp

@@ -8,6 +8,8 @@
 #include "model/flood_guard.hpp"
 #include "test_support.hpp"
 
+namespace test_corpus_regressions_dyna_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using test::count_code;
 using test::find_code;
@@ -248,3 +250,4 @@ TEST_CASE("corpus: a number glued across a field boundary says so in a note on i
     REQUIRE(d);
     CHECK(d->notes.empty());  // glued, but no number: nothing to explain
 }
+}  // namespace test_corpus_regressions_dyna_cpp

@@ -10,6 +10,8 @@
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
+namespace test_deck_diff_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -134,3 +136,4 @@ TEST_CASE("diff: a deck and the copy `sphdeck format` writes read the same; two 
     CHECK_MESSAGE(same.exit_code == 0, same.out);
     CHECK(same.out.find("no difference in what the solver reads") != std::string::npos);
 }
+}  // namespace test_deck_diff_cpp

@@ -21,6 +21,8 @@
 #include "lint/registry.hpp"
 #include "rule_decks.hpp"
 
+namespace test_decks_cpp {  // each test file's names stay its own in a unity batch
+
 namespace fs = std::filesystem;
 using namespace sphdeck;
 
@@ -135,3 +137,4 @@ TEST_CASE("decks: every test deck produces exactly the diagnostics it declares")
             CHECK_MESSAGE(!declares_rule, "a silent deck must not report " << rule);
     }
 }
+}  // namespace test_decks_cpp

@@ -11,6 +11,8 @@
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
+namespace test_demo_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 TEST_CASE("demo: run_demo.sh shows the mistakes with carets, then the preview table, and exits 0") {
@@ -32,3 +34,4 @@ TEST_CASE("demo: run_demo.sh shows the mistakes with carets, then the preview ta
     CHECK(out.find("decks/demo/dam_break_2d.k") != std::string::npos);
     CHECK(out.find("3200") != std::string::npos);  // the preview counts the dam break's particles
 }
+}  // namespace test_demo_cpp

@@ -8,6 +8,8 @@
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
+namespace test_dump_command_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using json = nlohmann::ordered_json;  // keeps the order of the output
 
@@ -144,3 +146,4 @@ TEST_CASE("dump: a keyword written without card lines shows its defaults, in dec
     CHECK(sph["fields"]["NCBS"]["line"].is_null());
     CHECK(sph["fields"]["QL"]["value"] == doctest::Approx(0.01));
 }
+}  // namespace test_dump_command_cpp

@@ -12,6 +12,8 @@
 #include "text/apply_edits.hpp"
 #include "edit/unified_diff.hpp"
 
+namespace test_edit_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -121,3 +123,4 @@ TEST_CASE("edit: random edits give the diff diff -u gives") {
         CHECK(edit::unified_diff("deck.k", text, edits) == diff_u(text, text::apply_edits(text, edits).text));
     }
 }
+}  // namespace test_edit_cpp

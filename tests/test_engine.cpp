@@ -11,6 +11,8 @@
 #include "text/text_file.hpp"
 #include "test_support.hpp"
 
+namespace test_engine_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using test::count_code;
 
@@ -97,3 +99,4 @@ TEST_CASE("engine: a Radioss engine deck read beside its starter is in the graph
     CHECK(r.includes.files[0].included_by.empty());
     CHECK(engine::check_file(starter).includes.files.empty());
 }
+}  // namespace test_engine_cpp

@@ -13,6 +13,8 @@
 #include "grammar/dyna/expression.hpp"
 #include "grammar/dyna/expression_grammar.hpp"
 
+namespace test_expression_cpp {  // each test file's names stay its own in a unity batch
+
 using sphdeck::grammar::evaluate_expression;
 using sphdeck::grammar::ExpressionError;
 using sphdeck::grammar::ExpressionResult;
@@ -322,3 +324,4 @@ TEST_CASE("expression: garbage bytes including nul") {
         }
     }
 }
+}  // namespace test_expression_cpp

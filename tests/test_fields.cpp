@@ -4,6 +4,8 @@
 #include "grammar/fields.hpp"
 #include "grammar/value.hpp"
 
+namespace test_fields_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck::grammar;
 
 namespace {
@@ -118,3 +120,4 @@ TEST_CASE("fields: gaps between fields widen like unused fields") {
     widen(gap, CardFormat::Long, w);
     CHECK(w[1].start == 40);
 }
+}  // namespace test_fields_cpp

@@ -16,6 +16,8 @@
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
+namespace test_file_cache_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -188,3 +190,4 @@ TEST_CASE("file cache: an include checked in the context of its decks reads it o
     }
     CHECK(cache.counters().readings_made == 2);  // standard and long format, whatever number of decks
 }
+}  // namespace test_file_cache_cpp

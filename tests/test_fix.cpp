@@ -15,6 +15,8 @@
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
+namespace test_fix_cpp {  // each test file's names stay its own in a unity batch
+
 namespace fs = std::filesystem;
 using namespace sphdeck;
 
@@ -252,3 +254,4 @@ TEST_CASE("fix: every rule whose findings carry fixes in the deck tests says so 
         }
     }
 }
+}  // namespace test_fix_cpp

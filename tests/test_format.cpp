@@ -9,6 +9,8 @@
 #include "edit/format_line.hpp"
 #include "engine/check.hpp"
 
+namespace test_format_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -205,3 +207,4 @@ TEST_CASE("format: *ELEMENT_SPH NEND ends in column 40, where every reader takes
     CHECK(out.find("\n     103       1         2.7e-06       110\n") != std::string::npos);
     CHECK(result.kept == 1);
 }
+}  // namespace test_format_cpp

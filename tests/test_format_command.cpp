@@ -10,6 +10,8 @@
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
+namespace test_format_command_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -83,3 +85,4 @@ TEST_CASE("format command: a deck that cannot be read is exit 2") {
     CHECK(r.exit_code == 2);
     CHECK(r.err.find("error:") != std::string::npos);
 }
+}  // namespace test_format_command_cpp

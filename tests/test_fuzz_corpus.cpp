@@ -10,6 +10,8 @@
 
 #include "fuzz/targets.hpp"
 
+namespace test_fuzz_corpus_cpp {  // each test file's names stay its own in a unity batch
+
 namespace fs = std::filesystem;
 
 TEST_CASE("fuzz corpus: every saved input runs through its target") {
@@ -33,3 +35,4 @@ TEST_CASE("fuzz corpus: every saved input runs through its target") {
     }
     CHECK(replayed > 0);
 }
+}  // namespace test_fuzz_corpus_cpp

@@ -14,6 +14,8 @@
 #include "grammar/keywords/schema.hpp"
 #include "engine/check.hpp"
 
+namespace test_generated_layouts_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using keywords::CardSpec;
 using keywords::FieldSpec;
@@ -228,3 +230,4 @@ TEST_CASE("generated layouts: *ELEMENT_SOLID is read in its one-line and two-lin
     CHECK(has_finding(one, "DK003", "'abc' in integer field N1 is not a number"));
     CHECK(has_finding(one, "DK003", "'xyz' in integer field N7 is not a number"));
 }
+}  // namespace test_generated_layouts_cpp

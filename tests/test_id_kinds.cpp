@@ -7,6 +7,8 @@
 #include "grammar/keywords/id_kinds.hpp"
 #include "test_support.hpp"
 
+namespace test_id_kinds_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using test::count_code;
 
@@ -107,3 +109,4 @@ TEST_CASE("id kinds: *PART_SENSOR, *PART_MODES and *PART_MOVE name parts, they d
     CHECK(count_code(o.diagnostics, "REF002") == 1);
     CHECK(engine::find_definitions(o, "PART", "2").empty());
 }
+}  // namespace test_id_kinds_cpp

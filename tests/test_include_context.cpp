@@ -9,6 +9,8 @@
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
+namespace test_include_context_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using test::count_code;
 namespace fs = std::filesystem;
@@ -121,3 +123,4 @@ TEST_CASE("DK018: a copy in the same file is an error, a copy in an include a wa
         }
     }
 }
+}  // namespace test_include_context_cpp

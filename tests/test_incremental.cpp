@@ -19,6 +19,8 @@
 #include "lsp/workspace.hpp"
 #include "test_support.hpp"
 
+namespace test_incremental_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -327,3 +329,4 @@ TEST_CASE("recheck: random edits of an open include and of its deck: incremental
         }
     }
 }
+}  // namespace test_incremental_cpp

@@ -8,6 +8,8 @@
 #include "lsp/json_long_strings.hpp"
 #include "lsp/json_rpc.hpp"
 
+namespace test_json_long_strings_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -100,3 +102,4 @@ TEST_CASE("json long strings: random texts give nlohmann-json's answer") {
         if (got) CHECK(*got == *expected);
     }
 }
+}  // namespace test_json_long_strings_cpp

@@ -6,6 +6,8 @@
 #include <string>
 #include <sys/wait.h>
 
+namespace test_keyword_command_cpp {  // each test file's names stay its own in a unity batch
+
 namespace {
 
 struct Run {
@@ -156,3 +158,4 @@ TEST_CASE("keyword command: --list shows the Radioss cards; --solver keeps one s
     CHECK(!contains(dyna.output, "/SPHGLO"));
     CHECK(sphdeck("keyword --list --solver abaqus").exit_code != 0);
 }
+}  // namespace test_keyword_command_cpp

@@ -12,6 +12,8 @@
 #include "grammar/keywords/schema.hpp"
 #include "model/card_decoder.hpp"
 
+namespace test_keyword_decoding_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using grammar::CardFormat;
 using keywords::CardSpec;
@@ -313,3 +315,4 @@ TEST_CASE("keyword decoding: an explicit 0 means the default where the manual sa
     }
     CHECK(checked > 0);
 }
+}  // namespace test_keyword_decoding_cpp

@@ -9,6 +9,8 @@
 #include "grammar/keywords/keyword_names.hpp"
 #include "grammar/keywords/schema.hpp"
 
+namespace test_keyword_names_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -79,3 +81,4 @@ TEST_CASE("keyword names: a did-you-mean replaces no word of the name wholesale"
     CHECK(keywords::suggest_keyword("*SECTON_SPH") == "*SECTION_SPH");
     CHECK(keywords::suggest_keyword("*ELEMENT_SPHH") == "*ELEMENT_SPH");
 }
+}  // namespace test_keyword_names_cpp

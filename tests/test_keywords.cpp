@@ -9,6 +9,8 @@
 
 #include "grammar/keywords/schema.hpp"
 
+namespace test_keywords_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using grammar::CardFormat;
 using keywords::CardRepeat;
@@ -443,3 +445,4 @@ TEST_CASE("keywords: to_string of the schema enums") {
     CHECK(keywords::to_string(CardRepeat::Repeated) == "repeated");
     CHECK(keywords::to_string(keywords::Compare::Less) == "<");
 }
+}  // namespace test_keywords_cpp

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+namespace test_layering_cpp {  // each test file's names stay its own in a unity batch
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -122,3 +124,4 @@ TEST_CASE("layering: the editor server keeps the protocol; what is at a position
         }
     }
 }
+}  // namespace test_layering_cpp

@@ -8,6 +8,8 @@
 #include "grammar/line_scan.hpp"
 #include "grammar/read_deck.hpp"
 
+namespace test_line_scan_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -41,3 +43,4 @@ TEST_CASE("line scan: the text and comma/tab verdict of RawDeck::text and memchr
         }
     }
 }
+}  // namespace test_line_scan_cpp

@@ -10,6 +10,8 @@
 #include "lsp/diagnostics.hpp"
 #include "lsp/features.hpp"
 
+namespace test_lsp_code_actions_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -90,3 +92,4 @@ TEST_CASE("lsp code actions: source.fixAll applies every safe fix of the file, o
     list = actions(deck, nlohmann::json::array());
     CHECK(list.empty());
 }
+}  // namespace test_lsp_code_actions_cpp

@@ -21,6 +21,8 @@
 #include "lsp_session.hpp"
 #include "test_support.hpp"
 
+namespace test_lsp_documents_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using nlohmann::json;
 
@@ -389,3 +391,4 @@ TEST_CASE("document text: the opened text is viewed, and a change touches only i
     REQUIRE(lsp::apply_change(expected, chunk_test_change(6000, 2, 6000, 3, "7")));
     CHECK(document.joined() == expected);
 }
+}  // namespace test_lsp_documents_cpp

@@ -15,6 +15,8 @@
 #include "lsp/uri.hpp"
 #include "tests/lsp_radioss_deck.hpp"
 
+namespace test_lsp_features_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -629,3 +631,4 @@ TEST_CASE("lsp features: Latin-1 deck text reaches the client as UTF-8") {
     CHECK(lsp::display_text("a\xC3\xA9\xE9\xED\xA0\x80") == "a\xC3\xA9\xC3\xA9\xC3\xAD\xC2\xA0\xC2\x80");
     CHECK(lsp::display_text("\xED\x9F\xBF") == "\xED\x9F\xBF");  // U+D7FF, the last before the surrogates
 }
+}  // namespace test_lsp_features_cpp

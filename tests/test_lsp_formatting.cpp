@@ -7,6 +7,8 @@
 #include "engine/check.hpp"
 #include "lsp/features.hpp"
 
+namespace test_lsp_formatting_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -70,3 +72,4 @@ TEST_CASE("lsp formatting: capabilities announced") {
     CHECK(capabilities["documentFormattingProvider"] == true);
     CHECK(capabilities["documentRangeFormattingProvider"] == true);
 }
+}  // namespace test_lsp_formatting_cpp

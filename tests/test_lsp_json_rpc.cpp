@@ -6,6 +6,8 @@
 
 #include "lsp_session.hpp"
 
+namespace test_lsp_json_rpc_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using lsp::ReadStatus;
 using nlohmann::json;
@@ -138,3 +140,4 @@ TEST_CASE("lsp json-rpc: writing replaces bytes that are not UTF-8 and frames by
     CHECK(text.substr(0, header_end) == "Content-Length: " + std::to_string(body.size()));
     CHECK(json::parse(body)["message"] == "d\xef\xbf\xbdp \xc3\xa9");
 }
+}  // namespace test_lsp_json_rpc_cpp

@@ -4,6 +4,8 @@
 #include "lsp/text_position.hpp"
 #include "lsp/uri.hpp"
 
+namespace test_lsp_position_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 TEST_CASE("lsp uri: file URIs and paths, percent-encoded both ways") {
@@ -42,3 +44,4 @@ TEST_CASE("lsp positions: parse_position refuses what is not a position") {
     CHECK_FALSE(lsp::parse_position(nlohmann::json{{"line", "3"}, {"character", 4}}, p));
     CHECK_FALSE(lsp::parse_position(nlohmann::json::array(), p));
 }
+}  // namespace test_lsp_position_cpp

@@ -16,6 +16,8 @@
 #include "lsp_session.hpp"
 #include "tests/lsp_radioss_deck.hpp"
 
+namespace test_lsp_rename_links_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 namespace fs = std::filesystem;
 
@@ -274,3 +276,4 @@ TEST_CASE("lsp rename on an OpenRadioss deck: a /PROP id in its header and a /PA
     REQUIRE(lenses.size() == 3);
     CHECK(lenses[0]["command"]["title"] == "used by 1");
 }
+}  // namespace test_lsp_rename_links_cpp

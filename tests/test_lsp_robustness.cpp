@@ -12,6 +12,8 @@
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
+namespace test_lsp_robustness_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using nlohmann::json;
 
@@ -143,3 +145,4 @@ TEST_CASE("lsp binary: sphdeck lsp --stdio through a pipe: initialize, shutdown,
     CHECK(messages[2]["id"] == 2);
     CHECK(run({test::initialize_request(1), test::notify("exit")}).first == 1);
 }
+}  // namespace test_lsp_robustness_cpp

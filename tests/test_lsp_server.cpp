@@ -4,6 +4,8 @@
 #include "lsp/features.hpp"
 #include "lsp_session.hpp"
 
+namespace test_lsp_server_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using nlohmann::json;
 using test::notify;
@@ -135,3 +137,4 @@ TEST_CASE("lsp server: a message above the bound is skipped and the user told; t
     CHECK(s.publications("file:///tmp/huge.k") == 0);
     CHECK(s.answer(2).contains("result"));
 }
+}  // namespace test_lsp_server_cpp

@@ -17,6 +17,8 @@
 #include "lsp/workspace.hpp"
 #include "lsp_session.hpp"
 
+namespace test_lsp_tokens_hints_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -439,3 +441,4 @@ TEST_CASE("lsp definition, references and completion: every column of an id fiel
     REQUIRE(location.is_object());
     CHECK(location["range"]["start"]["line"] == 2);
 }
+}  // namespace test_lsp_tokens_hints_cpp

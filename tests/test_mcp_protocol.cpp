@@ -10,6 +10,8 @@
 #include "mcp_session.hpp"
 #include "mcp/tool.hpp"
 
+namespace test_mcp_protocol_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck::test;
 
 namespace {
@@ -165,3 +167,4 @@ TEST_CASE("mcp: a client that never answers roots/list gets an error, not a hang
     CHECK(out[2]["result"]["isError"] == false);
     CHECK(error_code_of(out[3]) == -32602);
 }
+}  // namespace test_mcp_protocol_cpp

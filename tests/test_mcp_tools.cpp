@@ -10,6 +10,8 @@
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
+namespace test_mcp_tools_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck::test;
 
 namespace {
@@ -171,3 +173,4 @@ TEST_CASE("mcp diff_decks: a deck against itself and against another") {
     CHECK(!other["keywords"].empty());
     CHECK(mcp_call("diff_decks", {{"before", mistakes}, {"after", "/etc/hostname"}})["error"]["code"] == -32602);
 }
+}  // namespace test_mcp_tools_cpp

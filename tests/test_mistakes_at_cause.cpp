@@ -9,6 +9,8 @@
 #include "engine/check.hpp"
 #include "test_support.hpp"
 
+namespace test_mistakes_at_cause_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using test::count_code;
 using test::find_code;
@@ -142,3 +144,4 @@ TEST_CASE("DK029: one-digit values one column right, refused as written, moved b
     auto fixed = engine::check_buffer(mended(deck, *d), "d.k");
     CHECK(errors_and_warnings(fixed) == 0);
 }
+}  // namespace test_mistakes_at_cause_cpp

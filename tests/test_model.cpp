@@ -4,6 +4,8 @@
 #include "engine/check.hpp"
 #include "test_support.hpp"
 
+namespace test_model_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using test::count_code;
 
@@ -63,3 +65,4 @@ TEST_CASE("model: ids may be labels and numbers are normalised") {
     CHECK(model::normalise_id("  0001 ") == "1");
     CHECK(model::normalise_id("water") == "water");
 }
+}  // namespace test_model_cpp

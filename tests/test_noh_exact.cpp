@@ -8,6 +8,8 @@
 
 #include "verify/noh_exact.hpp"
 
+namespace test_noh_exact_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck::verify;
 using doctest::Approx;
 
@@ -61,3 +63,4 @@ TEST_CASE("noh exact: the inflow conserves mass (d rho/dt + r^(1-j) d(r^(j-1) rh
         CHECK(drho_dt + divergence == Approx(0.0).scale(1.0).epsilon(1e-7));
     }
 }
+}  // namespace test_noh_exact_cpp

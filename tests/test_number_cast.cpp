@@ -8,6 +8,8 @@
 
 #include "grammar/number_cast.hpp"
 
+namespace test_number_cast_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck::grammar;
 
 TEST_CASE("number cast: a double fits an integer type when it truncates into the type's range") {
@@ -44,3 +46,4 @@ TEST_CASE("number cast: checked_integer and saturating_integer") {
     CHECK(saturating_integer<std::size_t>(-5.0) == 0);
     CHECK(saturating_integer<int>(7.5) == 7);
 }
+}  // namespace test_number_cast_cpp

@@ -19,6 +19,8 @@
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
+namespace test_output_formats_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using nlohmann::json;
 
@@ -307,3 +309,4 @@ TEST_CASE("output: every format carries every finding; text folds, every summary
     CHECK(full.out.find("30 error(s)") != std::string::npos);
     CHECK(full.out.find("25 more DK003 finding(s)") != std::string::npos);
 }
+}  // namespace test_output_formats_cpp

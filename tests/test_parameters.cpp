@@ -5,6 +5,8 @@
 #include "engine/check.hpp"
 #include "test_support.hpp"
 
+namespace test_parameters_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using grammar::dyna::read_buffer;
 using test::count_code;
@@ -130,3 +132,4 @@ TEST_CASE("parameters: case-only matches inside *PARAMETER cards resolve, tabs t
     CHECK(count_code(tabs.diagnostics, "DK016") == 1);
     CHECK(count_code(read_buffer("*PARAMETER\nR tend\t   0.002\n", "d.k").diagnostics, "DK016") == 0);
 }
+}  // namespace test_parameters_cpp

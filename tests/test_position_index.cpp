@@ -12,6 +12,8 @@
 #include "engine/position_index.hpp"
 #include "lsp_radioss_deck.hpp"
 
+namespace test_position_index_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -211,3 +213,4 @@ TEST_CASE("position index: the card lines of a range in a big *NODE block, decod
     CHECK(visited == 0);
     CHECK(engine::blocks_in_range(deck.deck, 0, {3, 5}).size() == 2);
 }
+}  // namespace test_position_index_cpp

@@ -17,6 +17,8 @@
 #include "preproc/time_step.hpp"
 #include "test_support.hpp"
 
+namespace test_preview_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using preproc::compute_preview;
 using preproc::Preview;
@@ -342,3 +344,4 @@ TEST_CASE("preview: the demo dam break deck: 20 neighbours inside, no preview fi
     for (const char* code : {"SPH090", "SPH113", "SPH114", "SPH115", "SPH118"})
         CHECK(test::count_code(r.diagnostics, code) == 0);
 }
+}  // namespace test_preview_cpp

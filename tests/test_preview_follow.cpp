@@ -14,6 +14,8 @@
 #include "preproc/preview.hpp"
 #include "preproc/preview_follow.hpp"
 
+namespace test_preview_follow_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -247,3 +249,4 @@ TEST_CASE("preview follow: the editor's re-check follows a coordinate edited ins
         section_or_control(first, [](model::Model& m) { m.controls.tssfac.value = 0.5; });
     }
 }
+}  // namespace test_preview_follow_cpp

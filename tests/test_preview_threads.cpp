@@ -16,6 +16,8 @@
 #include "preproc/particle_positions.hpp"
 #include "preproc/preview.hpp"
 
+namespace test_preview_threads_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -167,3 +169,4 @@ TEST_CASE("preview threads: positions in place, in node order or not, and the ru
     CHECK(at.in_place());
     CHECK(at.all().x.data() == whole.nodes.x.data());
 }
+}  // namespace test_preview_threads_cpp

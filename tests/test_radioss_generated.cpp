@@ -11,6 +11,8 @@
 #include "grammar/read_deck.hpp"
 #include "test_support.hpp"
 
+namespace test_radioss_generated_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using test::count_code;
 using test::find_code;
@@ -171,3 +173,4 @@ TEST_CASE("radioss generated: a generated card's line shifted under its # header
     REQUIRE(d->fixes.size() == 1);
     CHECK(d->fixes[0].safe);
 }
+}  // namespace test_radioss_generated_cpp

@@ -11,6 +11,8 @@
 #include "grammar/radioss/id_kinds.hpp"
 #include "lsp/features.hpp"
 
+namespace test_radioss_id_kinds_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 namespace rad = grammar::radioss;
 
@@ -207,3 +209,4 @@ TEST_CASE("radioss id kinds: the REF rules accept what the editor finds, and no 
         if (d.code == "REF009") CHECK(d.message.find("names no /FUNCT or /TABLE of the deck") != std::string::npos);
     CHECK(definition_line(checked, line_of(deck, "/MOVE_FUNCT/20"), 12) == -1);
 }
+}  // namespace test_radioss_id_kinds_cpp

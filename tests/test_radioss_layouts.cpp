@@ -7,6 +7,8 @@
 #include "engine/check.hpp"
 #include "test_support.hpp"
 
+namespace test_radioss_layouts_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using test::count_code;
 
@@ -159,3 +161,4 @@ TEST_CASE("radioss layouts: /FRAME/MOV puts its Dir axis along N1N2 (hm_read_frm
     CHECK(f.frames[1].axes[0][1] == doctest::Approx(1.0));
     CHECK(f.frames[1].axes[2][0] == doctest::Approx(1.0));
 }
+}  // namespace test_radioss_layouts_cpp

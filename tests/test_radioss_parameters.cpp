@@ -10,6 +10,8 @@
 #include "model/radioss_parameters.hpp"
 #include "test_support.hpp"
 
+namespace test_radioss_parameters_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using test::count_code;
 using test::find_code;
@@ -160,3 +162,4 @@ TEST_CASE("radioss parameters: malformed definitions are reported, not a crash")
     r = check("/PARAMETER/GLOBAL/REAL/1\n");  // not even a title
     CHECK(count_code(r.diagnostics, "DK008") == 1);
 }
+}  // namespace test_radioss_parameters_cpp

@@ -14,6 +14,8 @@
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
+namespace test_radioss_preview_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -296,3 +298,4 @@ TEST_CASE("radioss preview: symmetry planes of a translated and rotated /FRAME/F
     CHECK(part(l, 1).mass_total == doctest::Approx(16.0));
     CHECK(test::count_code(l.result.diagnostics, "RAD008") == 0);
 }
+}  // namespace test_radioss_preview_cpp

@@ -14,6 +14,8 @@
 #include "model/radioss_decoder.hpp"
 #include "test_support.hpp"
 
+namespace test_radioss_reader_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using grammar::radioss::read_buffer;
 using test::count_code;
@@ -472,3 +474,4 @@ TEST_CASE("radioss: card tables: unique names, formats newest first") {
     CHECK(sph->format_for(44).since == 0);
     CHECK(grammar::radioss::find_keyword("/DT/SPCEL/STOP")->name == "/DT/SPHCEL");
 }
+}  // namespace test_radioss_reader_cpp

@@ -11,6 +11,8 @@
 #include "grammar/radioss/keyword_lookup.hpp"
 #include "test_support.hpp"
 
+namespace test_radioss_round3_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using test::count_code;
 using test::find_code;
@@ -161,3 +163,4 @@ TEST_CASE("radioss round 3: a zero one column past its cell into a cell with its
                               r20("0.0") + r20("0.0") + r20("0.0") + r20("0.0") + "\n";
     CHECK(count_code(check(deck(alone, 2019)).diagnostics, "RAD030") == 0);
 }
+}  // namespace test_radioss_round3_cpp

@@ -8,6 +8,8 @@
 #include "model/radioss_facts.hpp"
 #include "test_support.hpp"
 
+namespace test_radioss_sph_cards_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using test::count_code;
 
@@ -152,3 +154,4 @@ TEST_CASE("radioss sph cards: /SPH/INOUT surf_ID is checked against the /SURF he
     // A /SURF header whose id cannot be read: surface ids are not checked.
     CHECK(count_code(check(deck(part + "/SURF/PART\nno id\n" + inout)).diagnostics, "REF008") == 0);
 }
+}  // namespace test_radioss_sph_cards_cpp

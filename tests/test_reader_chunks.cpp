@@ -18,6 +18,8 @@
 #include "grammar/line_chunks.hpp"
 #include "grammar/read_deck.hpp"
 
+namespace test_reader_chunks_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 namespace fs = std::filesystem;
 
@@ -292,3 +294,4 @@ TEST_CASE("reader chunks: every deck of decks/ reads the same cut at random size
     }
     CHECK(decks * chunked_deck_stride > 250);
 }
+}  // namespace test_reader_chunks_cpp

@@ -4,6 +4,8 @@
 #include "grammar/dyna/reader.hpp"
 #include "test_support.hpp"
 
+namespace test_reader_includes_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using grammar::dyna::read_file;
 using test::count_code;
@@ -145,3 +147,4 @@ TEST_CASE("includes: an unreadable main file throws, an include path that is a f
     auto deck = read_file(dir.write("main.k", "*INCLUDE\nfolder.k\n"));
     CHECK(count_code(deck.diagnostics, "DK010") == 1);
 }
+}  // namespace test_reader_includes_cpp

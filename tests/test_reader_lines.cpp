@@ -6,6 +6,8 @@
 #include "grammar/dyna/reader.hpp"
 #include "test_support.hpp"
 
+namespace test_reader_lines_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using grammar::dyna::read_buffer;
 using test::count_code;
@@ -180,3 +182,4 @@ TEST_CASE("reader: '-' and '/' between letters or digits belong to the keyword n
     CHECK(deck.blocks[7].keyword == "*DEFINE_CURVE");  // a '/' not followed by a name character ends it
     CHECK(deck.blocks[7].arguments == "/");
 }
+}  // namespace test_reader_lines_cpp

@@ -8,6 +8,8 @@
 #include "grammar/keywords/schema.hpp"
 #include "test_support.hpp"
 
+namespace test_references_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using test::count_code;
 
@@ -160,3 +162,4 @@ TEST_CASE("references: a material named by a generated keyword is used, an undef
     CHECK(count_code(missing.diagnostics, "REF007") == 1);  // material 2
     CHECK(count_code(missing.diagnostics, "REF004") == 1);  // material 3
 }
+}  // namespace test_references_cpp

@@ -6,6 +6,8 @@
 
 #include "run_sphdeck.hpp"
 
+namespace test_refsolver_cli_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck::test;
 
 TEST_CASE("refsolver cli: sphdeck run writes history.csv and .vtp snapshots") {
@@ -49,3 +51,4 @@ TEST_CASE("refsolver cli: progress lines off a terminal, and an OpenRadioss deck
     CHECK(refused.err.find("the deck has no SPH particles") != std::string::npos);
     CHECK(refused.err.find("not run") != std::string::npos);
 }
+}  // namespace test_refsolver_cli_cpp

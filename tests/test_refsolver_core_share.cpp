@@ -7,6 +7,8 @@
 
 #include "refsolver/core_share.hpp"
 
+namespace test_refsolver_core_share_cpp {  // each test file's names stay its own in a unity batch
+
 using sphdeck::refsolver::CoreShare;
 
 TEST_CASE("refsolver core share: free cores from the load of other processes") {
@@ -29,3 +31,4 @@ TEST_CASE("refsolver core share: one thread until the first window, then within 
     CHECK(n >= 1);
     CHECK(n <= 2);
 }
+}  // namespace test_refsolver_core_share_cpp

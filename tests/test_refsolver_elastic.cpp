@@ -11,6 +11,8 @@
 #include "run_sphdeck.hpp"
 #include "test_refsolver_decks.hpp"
 
+namespace test_refsolver_elastic_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using namespace sphdeck::test;
 
@@ -215,3 +217,4 @@ TEST_CASE("refsolver elastic: sphdeck run accepts a *MAT_ELASTIC deck (exit 0)")
     CHECK_MESSAGE(r.exit_code == 0, r.err);
     CHECK(r.err.find("MAT_ELASTIC") == std::string::npos);
 }
+}  // namespace test_refsolver_elastic_cpp

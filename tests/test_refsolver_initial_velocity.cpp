@@ -7,6 +7,8 @@
 
 #include "test_refsolver_decks.hpp"
 
+namespace test_refsolver_initial_velocity_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using namespace sphdeck::test;
 
@@ -140,3 +142,4 @@ TEST_CASE("refsolver initial velocity: one *SET_NODE_LIST + *INITIAL_VELOCITY pe
         CHECK(s.vy[k] == deck.particles[k].vy);
     }
 }
+}  // namespace test_refsolver_initial_velocity_cpp

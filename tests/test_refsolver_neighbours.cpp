@@ -16,6 +16,8 @@
 #include "refsolver/verlet_skin.hpp"
 #include "test_refsolver_decks.hpp"
 
+namespace test_refsolver_neighbours_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using namespace sphdeck::refsolver;
 
@@ -301,3 +303,4 @@ TEST_CASE("refsolver neighbours: the local skin bound covers every pair within t
     CHECK(bound >= needed);
     CHECK(bound < 0.6 * spread);  // local: below what the global bound must allow
 }
+}  // namespace test_refsolver_neighbours_cpp

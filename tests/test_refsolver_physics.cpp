@@ -9,6 +9,8 @@
 #include "refsolver/kernel.hpp"
 #include "refsolver/renormalisation.hpp"
 
+namespace test_refsolver_physics_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck::refsolver;
 
 TEST_CASE("refsolver kernel: the cubic spline integrates to 1 in 2D and 3D") {
@@ -134,3 +136,4 @@ TEST_CASE("refsolver body load: curve interpolation and the LS-DYNA sign") {
     CHECK(a[1] == doctest::Approx(-9.81));  // *LOAD_BODY_Y SF 9.81: gravity along -Y
     CHECK(a[0] == 0.0);
 }
+}  // namespace test_refsolver_physics_cpp

@@ -15,6 +15,8 @@
 #include "run_sphdeck.hpp"
 #include "verify/cases.hpp"
 
+namespace test_refsolver_radioss_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using namespace sphdeck::test;
 
@@ -185,3 +187,4 @@ TEST_CASE("refsolver radioss: radioss-waves --quick, energies, time steps and ma
     CHECK(r.checks[3].error == 0);     // 6 cycles to the engine's time of cycle 6
     CHECK(r.passed());
 }
+}  // namespace test_refsolver_radioss_cpp

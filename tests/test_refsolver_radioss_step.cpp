@@ -11,6 +11,8 @@
 #include "refsolver/radioss_time_step.hpp"
 #include "refsolver/symmetry_ghosts.hpp"
 
+namespace test_refsolver_radioss_step_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck::refsolver;
 
 namespace {
@@ -69,3 +71,4 @@ TEST_CASE("refsolver radioss step: an approaching pair's viscosity shortens the 
     CHECK(sheared.second_order[0] < 0);  // -dt1/2 V^2 |v|^2 |g|^2
     CHECK(radioss_nodal_time_step(shear, shear_list, sheared.f, 2, 1, 1) == doctest::Approx(at_rest));
 }
+}  // namespace test_refsolver_radioss_step_cpp

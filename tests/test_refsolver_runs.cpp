@@ -9,6 +9,8 @@
 
 #include "test_refsolver_decks.hpp"
 
+namespace test_refsolver_runs_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using namespace sphdeck::test;
 
@@ -293,3 +295,4 @@ TEST_CASE("refsolver: a material without an EOS cannot run, even with --ignore-u
     CHECK_FALSE(setup.simulation);
     CHECK(unsupported_text(setup).find("equation of state") != std::string::npos);
 }
+}  // namespace test_refsolver_runs_cpp

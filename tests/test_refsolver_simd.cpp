@@ -12,6 +12,8 @@
 #include "refsolver/pair_rows.hpp"
 #include "test_refsolver_decks.hpp"
 
+namespace test_refsolver_simd_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using namespace sphdeck::test;
 
@@ -95,3 +97,4 @@ TEST_CASE("refsolver: the SIMD pair loop equals the scalar loop to round-off") {
         MESSAGE("pair loop " << path_name << ": largest relative gap to the scalar loop " << largest);
     }
 }
+}  // namespace test_refsolver_simd_cpp

@@ -6,6 +6,8 @@
 
 #include "refsolver/tensor3.hpp"
 
+namespace test_refsolver_tensor3_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck::refsolver;
 
 TEST_CASE("refsolver tensor3: symmetric storage, row-major views and the adjugate") {
@@ -23,3 +25,4 @@ TEST_CASE("refsolver tensor3: symmetric storage, row-major views and the adjugat
     tensor_view(t)(2, 2) = -1;
     CHECK(t[8] == -1.0);
 }
+}  // namespace test_refsolver_tensor3_cpp

@@ -11,6 +11,8 @@
 
 #include "lint/registry.hpp"
 
+namespace test_registry_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using lint::RuleInfo;
 
@@ -210,3 +212,4 @@ TEST_CASE("registry: similar_rules suggests close codes and names") {
     CHECK(lint::similar_rules("completely-unrelated-words").empty());
     CHECK(lint::similar_rules("").empty());
 }
+}  // namespace test_registry_cpp

@@ -10,6 +10,8 @@
 
 #include "diag/render_text.hpp"
 
+namespace test_render_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using diag::Diagnostic;
 using diag::Severity;
@@ -223,3 +225,4 @@ TEST_CASE("render: colour_wanted needs a terminal and no NO_COLOR") {
     }
     close(master);
 }
+}  // namespace test_render_cpp

@@ -10,6 +10,8 @@
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
+namespace test_rule_docs_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -168,3 +170,4 @@ TEST_CASE("rules: a page that breaks the fixed shape is reported with its line")
     CHECK(contains(problems("## What it does\nW.\n"), ":1: the page must start with '# CODE name'"));
     CHECK(contains(problems("## What it does\nW.\n"), "no '## After' section"));
 }
+}  // namespace test_rule_docs_cpp

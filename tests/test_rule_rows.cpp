@@ -16,6 +16,8 @@
 #include "lint/rule_docs.hpp"
 #include "rule_decks.hpp"
 
+namespace test_rule_rows_cpp {  // each test file's names stay its own in a unity batch
+
 namespace fs = std::filesystem;
 using namespace sphdeck;
 
@@ -148,3 +150,4 @@ TEST_CASE("rule rows: every rule has its ctest entry") {
     for (const lint::RuleInfo& rule : lint::all_rules()) registered.emplace_back(rule.code);
     CHECK(words(test::rule_ctest_codes()) == registered);
 }
+}  // namespace test_rule_rows_cpp

@@ -8,6 +8,8 @@
 #include "lint/rules.hpp"
 #include "test_support.hpp"
 
+namespace test_rules_control_sph_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -282,3 +284,4 @@ TEST_CASE("SPH014: IHTC 1 needs CP and LAMBDA of the fluid; silent with IHTC 0 o
     CHECK(with(0, fluid) == 0);                                               // no heat transfer coefficients asked
     CHECK(with(1, "*INCLUDE\nfluids.k\n") == 0);                              // the fluid may be in the include
 }
+}  // namespace test_rules_control_sph_cpp

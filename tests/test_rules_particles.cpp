@@ -7,6 +7,8 @@
 #include "engine/check.hpp"
 #include "test_support.hpp"
 
+namespace test_rules_particles_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using test::count_code;
 using test::find_code;
@@ -96,3 +98,4 @@ TEST_CASE("SPH117: gravity counts only with a constant curve") {
     auto ramp = engine::check_buffer(head() + particles + gravity("2.0"), "d.k");
     CHECK(count_code(ramp.diagnostics, "SPH117") == 0);
 }
+}  // namespace test_rules_particles_cpp

@@ -9,6 +9,8 @@
 
 #include "verify/sedov_exact.hpp"
 
+namespace test_sedov_exact_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck::verify;
 using doctest::Approx;
 
@@ -78,3 +80,4 @@ TEST_CASE("sedov exact: planar profiles match Kamm 2000, Table 1; the shock law 
     CHECK_FALSE(solve_sedov(4, 1.4));
     CHECK_FALSE(solve_sedov(2, 1.0));
 }
+}  // namespace test_sedov_exact_cpp

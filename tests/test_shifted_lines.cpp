@@ -12,6 +12,8 @@
 #include "grammar/shifted_line.hpp"
 #include "test_support.hpp"
 
+namespace test_shifted_lines_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using test::count_code;
 
@@ -235,3 +237,4 @@ TEST_CASE("DK029 warning: a shift that changes no value read folds none of the l
     CHECK(d->severity == diag::Severity::Warning);
     CHECK(count_code(r.diagnostics, "DK007") == 1);  // IDIM 5: its own error, not the shift's
 }
+}  // namespace test_shifted_lines_cpp

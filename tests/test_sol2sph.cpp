@@ -15,6 +15,8 @@
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
+namespace test_sol2sph_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -348,3 +350,4 @@ TEST_CASE("sol2sph: a part that gets no particles is reported at the part, not a
     CHECK(doc["parts"][0]["warnings"].size() == 1);
     CHECK(doc["parts"][0]["location"].get<std::string>() == "t10_0000.rad:5:7");
 }
+}  // namespace test_sol2sph_cpp

@@ -8,6 +8,8 @@
 #include "text/source_text.hpp"
 #include "test_support.hpp"
 
+namespace test_source_text_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -67,3 +69,4 @@ TEST_CASE("source text: a mapped deck gives the findings of the same text in mem
     CHECK(on_disk.model.particles.node == in_memory.model.particles.node);
     CHECK(on_disk.deck.sources.line_text(0, 21) == in_memory.deck.sources.line_text(0, 21));
 }
+}  // namespace test_source_text_cpp

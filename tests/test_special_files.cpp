@@ -17,6 +17,8 @@
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
+namespace test_special_files_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 namespace fs = std::filesystem;
 
@@ -124,3 +126,4 @@ TEST_CASE("special files: a device, a pipe or a socket as the deck itself is exi
         }
     }
 }
+}  // namespace test_special_files_cpp

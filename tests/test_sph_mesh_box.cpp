@@ -14,6 +14,8 @@
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
+namespace test_sph_mesh_box_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -101,3 +103,4 @@ TEST_CASE("smooth command: --format json lists the mesh boxes") {
     CHECK(j["mesh_boxes"][1]["particles"] == 0);
     CHECK(j["mesh_boxes"][1]["skipped"].get<std::string>().find("IDSEG") != std::string::npos);
 }
+}  // namespace test_sph_mesh_box_cpp

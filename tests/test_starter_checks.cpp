@@ -14,6 +14,8 @@
 #include "lint/starter_checks.hpp"
 #include "test_support.hpp"
 
+namespace test_starter_checks_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 namespace rad = grammar::radioss;
 using lint::radioss::Allowed;
@@ -239,3 +241,4 @@ TEST_CASE("starter checks: a line deleted from a /MAT/LAW51 Iform 10 is message 
         CHECK(d->message.find("ends before card") != std::string::npos);
     }
 }
+}  // namespace test_starter_checks_cpp

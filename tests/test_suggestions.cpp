@@ -12,6 +12,8 @@
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
+namespace test_suggestions_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 namespace {
@@ -209,3 +211,4 @@ TEST_CASE("suggestions: rule codes that do not exist, wherever they are written"
     CHECK(r.exit_code == 2);
     CHECK(r.err.find("did you mean 'SPH030'") != std::string::npos);
 }
+}  // namespace test_suggestions_cpp

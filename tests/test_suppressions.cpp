@@ -8,6 +8,8 @@
 #include "lint/suppressions.hpp"
 #include "test_support.hpp"
 
+namespace test_suppressions_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using test::count_code;
 using test::find_code;
@@ -247,3 +249,4 @@ TEST_CASE("suppress: '#include' and '#enddata' are no comments, and '#' is no co
     CHECK(lint::parse_suppression("# sphdeck: disable=DK003", 0, 1, s, problems));
     CHECK(s.items.size() == 1);
 }
+}  // namespace test_suppressions_cpp

@@ -19,6 +19,8 @@
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
+namespace test_symlinked_decks_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 namespace fs = std::filesystem;
 
@@ -171,3 +173,4 @@ TEST_CASE("symlinked decks: the editor publishes the findings of the files read,
     CHECK(direct.count({fs::canonical(dir.path() / "project/common/mat.k").string(), "DK021"}) == 1);
     CHECK(direct.count({fs::canonical(dir.path() / "common/mat.k").string(), "DK021"}) == 0);
 }
+}  // namespace test_symlinked_decks_cpp

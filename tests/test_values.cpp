@@ -13,6 +13,8 @@
 #include "grammar/value.hpp"
 #include "grammar/value_grammar.hpp"
 
+namespace test_values_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck::grammar;
 
 TEST_CASE("values: the value grammar has no infinite loops") {
@@ -142,3 +144,4 @@ TEST_CASE("values: the short-real path gives from_chars' double, bit for bit") {
                              "1.23456789e-14", "1.23456789e-15"})
         same(text);
 }
+}  // namespace test_values_cpp

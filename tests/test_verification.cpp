@@ -23,6 +23,8 @@
 #include "verify/trixi_dam_break.hpp"
 #include "verify/wave_detection.hpp"
 
+namespace test_verification_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck::verify;
 using doctest::Approx;
 
@@ -447,3 +449,4 @@ TEST_CASE("verification decks: the Noh decks stream cold gas inward at unit spee
         CHECK(internal == Approx(1.5e-6).epsilon(1e-6));  // p0 = 1e-6: e = p0 / ((gamma - 1) rho0)
     }
 }
+}  // namespace test_verification_cpp

@@ -13,6 +13,8 @@
 #include "run_sphdeck.hpp"
 #include "test_support.hpp"
 
+namespace test_verification_report_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 using namespace sphdeck::verify;
 
@@ -173,3 +175,4 @@ TEST_CASE("verification cli: verify sod --quick runs the decks and writes the re
     CHECK(slurp(dir.path() / "out" / "sod.md").find("## Checks") != std::string::npos);
     CHECK(slurp(dir.path() / "out" / "summary.md").find("| sod |") != std::string::npos);
 }
+}  // namespace test_verification_report_cpp
