@@ -15,8 +15,11 @@ deps:
 deps-build:
 	bash scripts/install-deps.sh --build
 
+# Ninja when it is installed (scripts/install-deps.sh --build installs it): it starts the next compile the
+# moment one ends, with none of the recursive make calls of CMake's Makefiles. Asked when the recipe runs,
+# after deps-build, not when make reads this file.
 $(BUILD)/CMakeCache.txt:
-	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $$(command -v ninja > /dev/null && echo -G Ninja) $(CMAKE_FLAGS)
 
 build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)

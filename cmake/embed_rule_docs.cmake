@@ -39,4 +39,11 @@ std::span<const EmbeddedRuleDoc> embedded_rule_docs() { return kPages; }
 }  // namespace sphdeck::lint::detail
 ")
 
+# Written only when it changes, so that a re-configure does not recompile its batch.
+if(EXISTS "${OUTPUT}")
+  file(READ "${OUTPUT}" written)
+  if(written STREQUAL content)
+    return()
+  endif()
+endif()
 file(WRITE "${OUTPUT}" "${content}")

@@ -20,6 +20,10 @@
 # file-local names where that name would be found, and the users of CLI11 or nlohmann-json go side by
 # side. The ctest `unity-clashes` checks the batches CMake wrote (a helper added since the last configure:
 # re-run cmake, or rename the helper). A file that must never be batched goes in SPHDECK_UNITY_ALONE.
+# Each test file keeps its code in a namespace named after it (`namespace test_config_cpp {`): its helpers,
+# using-declarations and `using namespace` then lend nothing to the next file, and the 99 test files
+# compile in 8 batches instead of 42 (each batch instantiates doctest's and nlohmann-json's templates
+# again). A new test file does the same.
 option(SPHDECK_UNITY_BUILD "Compile each target's sources in batches (cmake/speed_up.cmake)" ON)
 option(SPHDECK_PCH "Precompiled headers for the standard and third-party headers (cmake/speed_up.cmake)" ON)
 set(SPHDECK_UNITY_BATCH_SIZE 16 CACHE STRING "Sources per unity batch (cmake/speed_up.cmake)")
@@ -49,6 +53,39 @@ if(SPHDECK_PCH)
   endif()
 endif()
 
+# The batches of every target given to sphdeck_speed_up, formed by scripts/check_unity_clashes.py so that
+# no file shares one with a file that spells one of its file-local names (in a namespace where the name
+# would be found); called once, deferred to the end of the top-level CMakeLists.txt.
+function(sphdeck_form_unity_batches)
+  get_property(entries GLOBAL PROPERTY SPHDECK_UNITY_SOURCES)
+  set(list_file ${PROJECT_BINARY_DIR}/unity_batch_sources.txt)
+  string(REPLACE ";" "\n" text "${entries}")
+  file(WRITE ${list_file} "${text}\n")
+  set(status "no Python 3")
+  if(Python3_Interpreter_FOUND)
+    execute_process(
+      COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_unity_clashes.py
+              --batch-size ${SPHDECK_UNITY_BATCH_SIZE} --source ${PROJECT_SOURCE_DIR}
+              --cache ${PROJECT_BINARY_DIR}/unity_batches_parsed.pickle --group-targets ${list_file}
+      OUTPUT_VARIABLE batches RESULT_VARIABLE status)
+  endif()
+  if(NOT status EQUAL 0)
+    message(WARNING "compiled file by file (scripts/check_unity_clashes.py: ${status})")
+    return()
+  endif()
+  string(REPLACE "\n" ";" batches "${batches}")
+  set(targets "")
+  foreach(line IN LISTS batches)
+    if(line MATCHES "^([^|]+)[|]([0-9]+)[|](.+)$")
+      set_source_files_properties(${CMAKE_MATCH_3} TARGET_DIRECTORY ${CMAKE_MATCH_1}
+        PROPERTIES UNITY_GROUP ${CMAKE_MATCH_1}_${CMAKE_MATCH_2})
+      list(APPEND targets ${CMAKE_MATCH_1})
+    endif()
+  endforeach()
+  list(REMOVE_DUPLICATES targets)
+  set_target_properties(${targets} PROPERTIES UNITY_BUILD ON UNITY_BUILD_MODE GROUP)
+endfunction()
+
 function(sphdeck_speed_up target)
   cmake_parse_arguments(ARG "" "PCH_FROM" "HEADERS" ${ARGN})
   get_target_property(sources ${target} SOURCES)
@@ -68,8 +105,6 @@ function(sphdeck_speed_up target)
       PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON SKIP_PRECOMPILE_HEADERS ON)
   endif()
   if(SPHDECK_UNITY_BUILD)
-    # The batches: formed by scripts/check_unity_clashes.py so that no file shares one with a file that
-    # spells one of its file-local names (in a namespace where the name would be found).
     set(batched "")
     foreach(src IN LISTS sources)
       get_filename_component(path ${src} ABSOLUTE BASE_DIR ${source_dir})
@@ -77,26 +112,20 @@ function(sphdeck_speed_up target)
         list(APPEND batched ${path})
       endif()
     endforeach()
-    execute_process(
-      COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_unity_clashes.py
-              --batch-size ${SPHDECK_UNITY_BATCH_SIZE} --source ${PROJECT_SOURCE_DIR} --group ${batched}
-      OUTPUT_VARIABLE batches RESULT_VARIABLE status)
-    if(status EQUAL 0 AND Python3_Interpreter_FOUND)
-      string(REPLACE "\n" ";" batches "${batches}")
-      foreach(line IN LISTS batches)
-        if(line MATCHES "^([0-9]+)[|](.+)$")
-          set_source_files_properties(${CMAKE_MATCH_2} TARGET_DIRECTORY ${target}
-            PROPERTIES UNITY_GROUP ${target}_${CMAKE_MATCH_1})
-        endif()
-      endforeach()
-      set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_MODE GROUP)
-      # GCC 12 at -O3 inlines std::string copies deeper in a batch and then reports bounds it cannot
-      # know (GCC bugs 105329, 105651): false -Warray-bounds and -Wstringop-overflow in <string>.
-      if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)
-        target_compile_options(${target} PRIVATE -Wno-array-bounds -Wno-stringop-overflow -Wno-stringop-overread)
-      endif()
-    else()
-      message(WARNING "${target}: compiled file by file (scripts/check_unity_clashes.py: ${status})")
+    # Formed for every target at once, at the end of the configure (one Python run, not one a target:
+    # each run parsed the project's headers again, a third of a fresh configure).
+    foreach(path IN LISTS batched)
+      set_property(GLOBAL APPEND PROPERTY SPHDECK_UNITY_SOURCES "${target}|${path}")
+    endforeach()
+    get_property(deferred GLOBAL PROPERTY SPHDECK_UNITY_DEFERRED)
+    if(NOT deferred)
+      set_property(GLOBAL PROPERTY SPHDECK_UNITY_DEFERRED ON)
+      cmake_language(DEFER DIRECTORY ${PROJECT_SOURCE_DIR} CALL sphdeck_form_unity_batches)
+    endif()
+    # GCC 12 at -O3 inlines std::string copies deeper in a batch and then reports bounds it cannot
+    # know (GCC bugs 105329, 105651): false -Warray-bounds and -Wstringop-overflow in <string>.
+    if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)
+      target_compile_options(${target} PRIVATE -Wno-array-bounds -Wno-stringop-overflow -Wno-stringop-overread)
     endif()
   endif()
   if(SPHDECK_PCH)
@@ -117,14 +146,16 @@ function(sphdeck_speed_up target)
   endif()
 endfunction()
 
-# A lighter optimisation level for code no user waits on (issue 42): the test code at -O1, the rooms it
-# drives keeping the build type's -O3. A batch of four test files took 27.1 CPU s at -O3 and 17.3 s at -O1
-# (-36%); -O2 saves only ~6% a batch (most of a batch's time is instantiating the headers' templates, which
-# the level does not change), so the rooms and the program keep -O3. -O2 and -O1 can reuse a PCH built at
-# -O3 (GCC compares macros, and __OPTIMIZE__ is the same); -Os and -O0 could not. Release builds only (the
-# sanitizer trees keep -O0). The whole test build at -O1 passed with -Werror, and its 629 test cases and
-# every deck test ran no slower (44.8 CPU s). -DSPHDECK_LIGHT_OPTIMISATION=OFF: the tests at -O3 too.
-option(SPHDECK_LIGHT_OPTIMISATION "Compile the test code at -O1 in Release builds (cmake/speed_up.cmake)" ON)
+# A lighter optimisation level for code no user waits on (issue 42): the test code, the command line's
+# option handling (cli/), the MCP server and the verification cases at -O1; the rooms that read, check,
+# preview and solve keep the build type's -O3. Measured a batch at a time: four test files 27.1 CPU s at
+# -O3, 17.3 at -O1; the command line's larger batch (CLI11's templates) 55.4 at -O3, 48.8 at -O2, 42.5 at
+# -O1; the MCP room 27.0, 24.8, 17.8. -O2 saves little (most of a batch's time is instantiating the
+# headers' templates, which the level does not change), so what users wait on keeps -O3. -O2 and -O1 can
+# reuse a PCH built at -O3 (GCC compares macros, and __OPTIMIZE__ is the same); -Os and -O0 could not.
+# Release builds only (the sanitizer trees keep -O0). The test build at -O1 passed with -Werror, and its
+# test cases and every deck test ran no slower. -DSPHDECK_LIGHT_OPTIMISATION=OFF: everything at -O3.
+option(SPHDECK_LIGHT_OPTIMISATION "Compile code no user waits on at -O1 in Release builds (cmake/speed_up.cmake)" ON)
 function(sphdeck_optimise target level)
   if(SPHDECK_LIGHT_OPTIMISATION)
     # After the build type's -O3 on the command line, so this one counts.

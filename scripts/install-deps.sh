@@ -10,6 +10,7 @@ set -euo pipefail
 #   --build only what building sphdeck needs (make demo, make build-cli, the GitHub Action).
 build_packages=(
   build-essential cmake
+  ninja-build    # the build tool make demo and make test use when it is there (Makefile)
   tao-pegtl-dev libeigen3-dev libfmt-dev libcli11-dev doctest-dev nlohmann-json3-dev
   libtomlplusplus-dev
   python3        # forms the unity batches at configure time (cmake/speed_up.cmake)
