@@ -19,7 +19,8 @@ constexpr const char* read_only_folder = "/nonexistent-sphdeck-fuzz";
 void read_and_decode(const std::uint8_t* data, std::size_t size, const char* name, grammar::DeckFormat format) {
     const grammar::dyna::ReaderOptions options;
     const grammar::RawDeck deck =
-        grammar::read_deck_buffer(std::string(reinterpret_cast<const char*>(data), size), std::string(read_only_folder) + "/" + name, read_only_folder, options, format);
+        grammar::read_deck_buffer(std::string(reinterpret_cast<const char*>(data), size),
+                                  std::string(read_only_folder) + "/" + name, read_only_folder, options, format);
     std::vector<diag::Diagnostic> found = deck.diagnostics;
     const model::Model model = format == grammar::DeckFormat::Radioss ? model::build_radioss_model(deck, found)
                                                                       : model::build_model(deck, found);
