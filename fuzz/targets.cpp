@@ -18,8 +18,6 @@
 #include "grammar/dyna/keyword_arguments.hpp"
 #include "lint/rule_catalog.hpp"
 #include "lsp/json_rpc.hpp"
-#include "model/model_builder.hpp"
-#include "model/radioss_decoder.hpp"
 
 namespace sphdeck::fuzz {
 namespace {
@@ -56,27 +54,7 @@ void check(const std::uint8_t* data, std::size_t size, const char* name, grammar
     render_all(r);
 }
 
-// Read and decode only: what engine::check_buffer does before the rules.
-void read_and_decode(const std::uint8_t* data, std::size_t size, const char* name, grammar::DeckFormat format) {
-    const grammar::dyna::ReaderOptions options;
-    const grammar::RawDeck deck =
-        grammar::read_deck_buffer(text_of(data, size), std::string(no_folder) + "/" + name, no_folder, options, format);
-    std::vector<diag::Diagnostic> found = deck.diagnostics;
-    const model::Model model = format == grammar::DeckFormat::Radioss ? model::build_radioss_model(deck, found)
-                                                                      : model::build_model(deck, found);
-    volatile std::size_t sink = found.size() + model.particles.size();  // keep the decoding from being optimised away
-    (void)sink;
-}
-
 }  // namespace
-
-void read_dyna_deck(const std::uint8_t* data, std::size_t size) {
-    read_and_decode(data, size, "fuzz.k", grammar::DeckFormat::LsDyna);
-}
-
-void read_radioss_deck(const std::uint8_t* data, std::size_t size) {
-    read_and_decode(data, size, "fuzz_0000.rad", grammar::DeckFormat::Radioss);
-}
 
 void check_dyna_deck(const std::uint8_t* data, std::size_t size) {
     check(data, size, "fuzz.k", grammar::DeckFormat::LsDyna);

@@ -186,6 +186,7 @@ bool is_blank(std::string_view s) {
 
 void widen(std::span<const FixedField> standard, CardFormat format, std::vector<FixedField>& out) {
     out.clear();
+    out.reserve(standard.size());
     std::uint32_t standard_end = 0, position = 0;
     for (const FixedField& f : standard) {
         if (f.start > standard_end) position += widened(f.start - standard_end, format);  // an unused gap

@@ -1,5 +1,7 @@
 #include "grammar/line_tokens.hpp"
 
+#include <algorithm>
+
 #include "grammar/value.hpp"
 
 namespace sphdeck::grammar {
@@ -8,6 +10,8 @@ using keywords::FieldType;
 
 std::vector<LineToken> line_tokens(std::string_view text) {
     std::vector<LineToken> tokens;
+    // A card line holds up to 10 fields: one allocation for nearly every line, not four as it grows.
+    tokens.reserve(std::min<std::size_t>(text.size() / 2 + 1, 16));
     for_each_token(text, [&](const LineToken& t) {
         tokens.push_back(t);
         return true;

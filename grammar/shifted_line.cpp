@@ -69,6 +69,7 @@ bool same_slots(std::span<const FixedField> a, std::span<const FixedField> b) {
 // Standard widths with every 10-column field written in 8 (offsets follow).
 std::vector<FixedField> narrowed_to_8(std::span<const FixedField> standard) {
     std::vector<FixedField> out;
+    out.reserve(standard.size());
     std::uint32_t at = 0, prev_end = 0;
     for (const FixedField& f : standard) {
         at += f.start > prev_end ? f.start - prev_end : 0;  // a gap keeps its width
@@ -84,6 +85,7 @@ std::vector<FixedField> narrowed_to_8(std::span<const FixedField> standard) {
 // widths 8/16 mixed) when they take every field for 8 columns.
 std::vector<FixedField> all_8_wide(std::span<const FixedField> standard) {
     std::vector<FixedField> out;
+    out.reserve(standard.size());
     std::uint32_t at = 0;
     for (std::size_t i = 0; i < standard.size(); ++i, at += 8) out.push_back({at, 8});
     return out;
@@ -122,6 +124,7 @@ bool integers_written_as_integers(std::string_view text, const std::vector<LineT
 
 std::vector<FieldType> field_types(const keywords::CardSpec& card) {
     std::vector<FieldType> types;
+    types.reserve(card.fields.size());
     for (const auto& f : card.fields) types.push_back(f.type);
     return types;
 }

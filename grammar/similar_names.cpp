@@ -30,15 +30,24 @@ std::size_t typing_distance(std::string_view a, std::string_view b, bool fold_ca
     if (letter_bound(a, b, fold_case) > limit) return limit + 1;
     // Optimal string alignment with weights: three rows suffice, kept per thread (no allocation per call).
     const std::size_t n = a.size(), m = b.size();
+    // Each insertion or deletion costs 2, and only they change the length.
+    if (2 * (n > m ? n - m : m - n) > limit) return limit + 1;
+    // Only the band |i - j| <= limit / 2 of the table can hold a value within the limit (a cell off the
+    // diagonal by k is at least 2k), and a value within the limit is reached through such cells only
+    // (values never fall along a path): the cells beside the band stand for "more than the limit".
+    const std::size_t band = limit / 2, over = limit + 1;
     thread_local std::vector<std::size_t> prev2, prev, cur;
-    prev2.assign(m + 1, 0), prev.assign(m + 1, 0), cur.assign(m + 1, 0);
+    prev2.assign(m + 1, over), prev.assign(m + 1, over), cur.assign(m + 1, over);
     for (std::size_t j = 0; j <= m; ++j) prev[j] = 2 * j;
     std::size_t prev_min = 0;
     for (std::size_t i = 1; i <= n; ++i) {
+        const std::size_t first = i > band ? i - band : 1, last = std::min(m, i + band);
         cur[0] = 2 * i;
+        if (first > 1) cur[first - 1] = over;
+        if (last < m) cur[last + 1] = over;  // read by the next row as the cell above
         std::size_t row_min = cur[0];
         const char ai = folded(a[i - 1], fold_case);
-        for (std::size_t j = 1; j <= m; ++j) {
+        for (std::size_t j = first; j <= last; ++j) {
             const char bj = folded(b[j - 1], fold_case);
             const std::size_t cost = ai == bj ? 0 : 2;
             cur[j] = std::min({prev[j] + 2, cur[j - 1] + 2, prev[j - 1] + cost});

@@ -97,10 +97,10 @@ std::optional<diag::Diagnostic> straddling_value(const grammar::RawDeck& deck, c
     return d;
 }
 
+// `slots`: the layout of the line's card in the block's format.
 std::optional<diag::Diagnostic> shifted_line(const grammar::RawDeck& deck, const grammar::Block& block,
-                                             const SuspectLine& s) {
+                                             const SuspectLine& s, std::span<const grammar::FixedField> slots) {
     const std::string_view text = deck.text(*s.line);
-    const auto slots = keywords::layout(*s.card, block.format);
     auto shift = grammar::find_shift(text, header_above(deck, *s.line), slots, *s.card);
     if (!shift) return straddling_value(deck, block, s, text, slots);
     const int n = std::abs(shift->columns);
@@ -245,9 +245,14 @@ void diagnose_shifts(const grammar::RawDeck& deck, const grammar::Block& block, 
         if (d) causes.push_back(std::move(*d));
         return d.has_value();
     }();
-    if (!widths)
-        for (const SuspectLine& s : suspects)
-            if (auto d = shifted_line(deck, block, s)) causes.push_back(std::move(*d));
+    if (!widths) {
+        const keywords::CardSpec* laid_out = nullptr;  // the suspects of a block mostly share a card
+        std::vector<grammar::FixedField> slots;
+        for (const SuspectLine& s : suspects) {
+            if (s.card != laid_out) slots = keywords::layout(*s.card, block.format), laid_out = s.card;
+            if (auto d = shifted_line(deck, block, s, slots)) causes.push_back(std::move(*d));
+        }
+    }
     if (causes.empty()) return;
 
     const grammar::CardLine& first = deck.lines[block.first_line];

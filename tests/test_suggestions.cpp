@@ -3,8 +3,11 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
+#include <cctype>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "engine/check.hpp"
 #include "grammar/keywords/schema.hpp"
@@ -65,6 +68,49 @@ TEST_CASE("suggestions: a bounded distance is the distance up to the bound, and 
             CHECK(bounded == full);
         else
             CHECK(bounded == limit + 1);
+    }
+}
+
+namespace {
+
+// The whole table, as the definition reads: what the banded table of typing_distance must give.
+std::size_t whole_table_distance(std::string_view a, std::string_view b, bool fold_case, std::size_t swap) {
+    const auto same = [&](char x, char y) {
+        return fold_case ? std::toupper(static_cast<unsigned char>(x)) == std::toupper(static_cast<unsigned char>(y))
+                         : x == y;
+    };
+    std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+    for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = 2 * i;
+    for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = 2 * j;
+    for (std::size_t i = 1; i <= a.size(); ++i)
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            d[i][j] =
+                std::min({d[i - 1][j] + 2, d[i][j - 1] + 2, d[i - 1][j - 1] + (same(a[i - 1], b[j - 1]) ? 0 : 2)});
+            if (i > 1 && j > 1 && same(a[i - 1], b[j - 2]) && same(a[i - 2], b[j - 1]) && !same(a[i - 1], b[j - 1]))
+                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + swap);
+        }
+    return d[a.size()][b.size()];
+}
+
+}  // namespace
+
+TEST_CASE("suggestions: the bounded distance equals the whole table's, for every swap cost, case and bound") {
+    std::mt19937 rng(11);
+    const auto random_name = [&] {
+        std::string s(rng() % 14, 'A');
+        for (char& c : s) c = "ABCSab_"[rng() % 7];
+        return s;
+    };
+    for (int i = 0; i < 4000; ++i) {
+        const std::string a = random_name(), b = rng() % 4 == 0 ? a : random_name();
+        const bool fold_case = rng() % 2 == 0;
+        const auto swap =
+            std::array{grammar::SwapCost::Slip, grammar::SwapCost::OneEdit, grammar::SwapCost::TwoEdits}[rng() % 3];
+        const std::size_t limit = rng() % 3 == 0 ? std::size_t{1000} : rng() % 13;
+        const std::size_t expected =
+            std::min(whole_table_distance(a, b, fold_case, static_cast<std::size_t>(swap)), limit + 1);
+        INFO(a, " ", b, " limit ", limit, " swap ", static_cast<int>(swap), " fold ", fold_case);
+        CHECK(grammar::typing_distance(a, b, fold_case, limit, swap) == expected);
     }
 }
 
