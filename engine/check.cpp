@@ -1,10 +1,12 @@
 #include "engine/check.hpp"
 
 #include <functional>
+#include <optional>
 
 #include "engine/mended_consequences.hpp"
 #include "engine/preview_after_edit.hpp"
 #include "engine/recheck.hpp"
+#include "grammar/deck_splice.hpp"
 #include "grammar/read_deck.hpp"
 #include "preproc/preview.hpp"
 #include "lint/fold_causes.hpp"
@@ -17,16 +19,26 @@
 
 namespace sphdeck::engine {
 namespace {
+// The LS-DYNA model of `result.deck`; a re-check copies the bulk blocks the edit left alone, and every
+// check notes those the next may copy.
+model::Model build_dyna_model(CheckResult& result, const CheckResult* previous, const grammar::SplicedLines* changed) {
+    std::optional<model::BulkReuse> reuse;
+    if (previous) reuse.emplace(model::BulkReuse{previous->deck, previous->model, previous->bulk_blocks, changed});
+    return model::build_model(result.deck, result.diagnostics, &result.summary, reuse ? &*reuse : nullptr,
+                              result.bulk_blocks);
+}
 
 // read → model → rules, the findings of each line's cause folded into it.
-// `previous`: the last check of the same deck (a re-check), or null.
-CheckResult analyse(grammar::RawDeck deck, const CheckOptions& options, const CheckResult* previous) {
+// `previous`: the last check of the same deck (a re-check), or null; `changed`: where the deck was
+// spliced into the last one's reading (grammar/deck_splice.hpp), or null.
+CheckResult analyse(grammar::RawDeck deck, const CheckOptions& options, const CheckResult* previous,
+                    const grammar::SplicedLines* changed = nullptr) {
     CheckResult result;
     result.deck = std::move(deck);
     result.diagnostics = result.deck.diagnostics;
     result.model = grammar::format_of(result.deck) == grammar::DeckFormat::Radioss
                        ? model::build_radioss_model(result.deck, result.diagnostics, &result.summary)
-                       : model::build_model(result.deck, result.diagnostics, &result.summary);
+                       : build_dyna_model(result, previous, changed);
     lint::RuleContext context(result.model, result.deck, options.rules, result.diagnostics);
     if (previous && previous->preview) {
         const bool arrays = options.rules.preview_arrays;
@@ -47,8 +59,8 @@ CheckResult analyse(grammar::RawDeck deck, const CheckOptions& options, const Ch
 using Reread = std::function<grammar::RawDeck(const grammar::dyna::ReaderOptions&, const grammar::RawDeck& original)>;
 
 CheckResult finish(grammar::RawDeck deck, const CheckOptions& options, const Reread& reread,
-                   const CheckResult* previous = nullptr) {
-    CheckResult result = analyse(std::move(deck), options, previous);
+                   const CheckResult* previous = nullptr, const grammar::SplicedLines* changed = nullptr) {
+    CheckResult result = analyse(std::move(deck), options, previous, changed);
     fold_mended_consequences(result.deck, result.diagnostics, options.reader.overlay,
                              [&](const grammar::FileOverlay& mended) {
                                  CheckOptions again = options;
@@ -89,12 +101,17 @@ CheckResult recheck_deck(const std::string& path, const Documents& documents, co
     CheckOptions with_documents = options;
     if (!documents.empty()) with_documents.reader.overlay = &documents;
     with_documents.rules.keep_preview = true;  // for the next re-check
+    // An edit of an open main file inside one ordinary block: only its lines are read again.
+    std::optional<grammar::SplicedDeck> spliced;
+    if (documents.find(path) && previous.deck.sources.size() == 1 && previous.deck.sources.file(0).path == path)
+        spliced = grammar::splice_edit(previous.deck, grammar::read_source_text(path, &documents));
+    grammar::RawDeck deck = spliced ? std::move(spliced->deck) : grammar::read_deck(path, with_documents.reader);
     return finish(
-        grammar::read_deck(path, with_documents.reader), with_documents,
+        std::move(deck), with_documents,
         [&](const grammar::dyna::ReaderOptions& reader, const grammar::RawDeck&) {
             return grammar::read_deck(path, reader);
         },
-        &previous);
+        &previous, spliced ? &spliced->changed : nullptr);
 }
 
 CheckResult check_buffer(std::string text, const std::string& name, const CheckOptions& options,

@@ -17,6 +17,7 @@
 #include "grammar/read_deck.hpp"
 #include "lint/config.hpp"
 #include "lint/rule_context.hpp"
+#include "model/bulk_reuse.hpp"
 #include "model/deck_check.hpp"
 #include "model/model.hpp"
 
@@ -34,8 +35,9 @@ struct CheckResult {
     std::vector<diag::Diagnostic> diagnostics;  // sorted by location
     model::DeckSummary summary;
     model::Model model;
-    IncludeGraph includes;                            // the files the deck pulled in
-    std::shared_ptr<const preproc::Preview> preview;  // when CheckOptions::rules.keep_preview (else null)
+    IncludeGraph includes;                             // the files the deck pulled in
+    std::shared_ptr<const preproc::Preview> preview;   // when CheckOptions::rules.keep_preview (else null)
+    std::vector<model::DecodedBulkBlock> bulk_blocks;  // what the next re-check may copy (model/bulk_reuse.hpp)
 };
 
 // Checks the deck at `path`; its text and its includes' come from `documents` where they hold the

@@ -1,7 +1,10 @@
 // The editor's re-check of a deck it checked before (after an edit): the same findings as
-// check_deck, computed keeping what the last check computed and the edit left alone. Today that is
-// the geometry preview (neighbour grid, nearest neighbours, neighbour counts: the costliest rules of
-// a big deck), kept when the model's geometry inputs are unchanged (engine/preview_reuse.hpp).
+// check_deck, computed keeping what the last check computed and the edit left alone: the reading
+// (an edit inside one ordinary block re-reads only its lines, grammar/deck_splice.hpp), the decoded
+// *NODE and *ELEMENT_SPH blocks (copied where unchanged, decoded only around the edit,
+// model/bulk_reuse.hpp) and the geometry preview (neighbour grid, nearest neighbours, neighbour
+// counts: the costliest rules of a big deck), kept or followed when the model's geometry inputs allow
+// (engine/preview_reuse.hpp, engine/preview_after_edit.hpp). The other rules run again in full.
 #pragma once
 
 #include <string>

@@ -56,9 +56,12 @@ public:
     // column: read by no field, silently (a line shifted right pushes its last value there).
     bool text_past_fields() const { return past_fields_; }
 
-    void decode_bulk(const grammar::Block& block, const grammar::CardLine& line, const keywords::CardSpec& card,
+    // True when the line took the plain path (its values depend on its text alone).
+    bool decode_bulk(const grammar::Block& block, const grammar::CardLine& line, const keywords::CardSpec& card,
                      std::vector<FieldValue>& values) {
-        if (!decode_plain(block, line, card, values)) decode(block, line, card, values);
+        if (decode_plain(block, line, card, values)) return true;
+        decode(block, line, card, values);
+        return false;
     }
 
 private:

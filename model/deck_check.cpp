@@ -236,11 +236,17 @@ private:
     // findings are appended range after range, so the order is the same as on one thread.
     void walk_in_parallel(const grammar::Block& block, const CardSpec& card, DeckSummary& summary, FloodBound& bound) {
         const std::size_t n = block.line_count;
-        const int threads = available_threads();
         const bool particles = block.keyword.rfind("*ELEMENT_SPH", 0) == 0;
+        // Decoded cleanly last time (no finding, one particle a line): copied, or copied around an edit.
+        if (bulk_->reuse(block, card) || decode_around(block, card, particles)) {
+            if (particles) summary.particles += n;
+            return;
+        }
+        const int threads = available_threads();
         std::vector<std::vector<diag::Diagnostic>> found(static_cast<std::size_t>(threads));
         std::vector<FloodBound> bounds(static_cast<std::size_t>(threads), FloodBound(0));
         std::vector<std::size_t> counted(static_cast<std::size_t>(threads), 0);
+        std::vector<char> all_plain(static_cast<std::size_t>(threads), 1);  // char: threads write their own
         const grammar::CardLine* lines = deck_.begin_lines(block);
         // Ranges longer than the deck's nodes are refused on the threads; the deck's running
         // budget is spent afterwards, range by range in line order.
@@ -270,7 +276,7 @@ private:
             for (std::size_t i = first; i < last; ++i) {
                 if (i - released == release_lines) release_text(lines[released], lines[i]), released = i;
                 if ((i - first + 1) % trim_lines == 0) trimmed.trim(out);
-                decoder.decode_bulk(block, lines[i], card, values);
+                if (!decoder.decode_bulk(block, lines[i], card, values)) all_plain[static_cast<std::size_t>(t)] = 0;
                 std::optional<std::string> refused;
                 if (particles) {
                     refused = ranges_.check_alone(range_extra(values));
@@ -304,12 +310,35 @@ private:
                                  });
         }
         bulk_->end(block);
+        const bool clean = std::all_of(all_plain.begin(), all_plain.end(), [](char plain) { return plain != 0; }) &&
+                           std::all_of(found.begin(), found.end(), [](const auto& part) { return part.empty(); }) &&
+                           std::all_of(ranges.begin(), ranges.end(), [](const auto& part) { return part.empty(); });
+        if (clean) bulk_->decoded_cleanly(block, card);
         summary.particles += std::accumulate(counted.begin(), counted.end(), std::size_t{0});
         const std::size_t merged_from = out_.size();
         for (auto& part : found)
             out_.insert(out_.end(), std::make_move_iterator(part.begin()), std::make_move_iterator(part.end()));
         note_bulk_suspects(block, card, merged_from);
         for (const SuspectLine& s : suspects_) note_lost_asterisk(*s.line, false);  // a keyword name misread as a line
+    }
+
+    // The lines an edit changed in a bulk block whose other lines were copied from the last check: kept
+    // when they decode cleanly as well (then the block makes no finding), else the block is decoded whole.
+    bool decode_around(const grammar::Block& block, const CardSpec& card, bool particles) {
+        const std::optional<BulkVisitor::Around> around = bulk_->reuse_around(block, card);
+        if (!around) return false;
+        std::vector<diag::Diagnostic> found;
+        CardDecoder decoder(deck_, found);
+        std::vector<FieldValue> values;
+        const grammar::CardLine* lines = deck_.begin_lines(block);
+        bool clean = true;
+        for (std::size_t i = around->first; clean && i < around->last; ++i) {
+            clean = decoder.decode_bulk(block, lines[i], card, values) && !(particles && range_extra(values) > 0);
+            if (!clean) break;
+            bulk_->line(block, i, 0, lines[i], values);
+            if (particles) count_particles(deck_, lines[i], block.format, values, found);
+        }
+        return bulk_->kept_around(block, card, clean && found.empty());
     }
 
     // The text of lines [from, to) of one block is decoded: a mapped file's pages go back, so that

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "diag/diagnostic.hpp"
@@ -36,6 +37,21 @@ public:
     // nodes cannot hold it); that line stands for NID alone.
     virtual void drop_range(std::size_t index) = 0;
     virtual void end(const grammar::Block& block) = 0;
+    // Before begin(): whether the block's nodes or particles were copied from the last check instead
+    // (model/bulk_reuse.hpp); then no line() follows. Only a block the last check decoded cleanly is.
+    virtual bool reuse(const grammar::Block&, const keywords::CardSpec&) { return false; }
+    // After end(): every line of the block took the plain path and made no finding and no NEND range.
+    virtual void decoded_cleanly(const grammar::Block&, const keywords::CardSpec&) {}
+    // When reuse() said no: whether the block's lines around an edit were copied from the last check;
+    // then lines [first, last) of the block are left to line() (thread 0), and kept_around() says
+    // whether they decoded cleanly (kept) or not (the copy undone: the block is decoded whole).
+    struct Around {
+        std::size_t first = 0, last = 0;
+    };
+    virtual std::optional<Around> reuse_around(const grammar::Block&, const keywords::CardSpec&) {
+        return std::nullopt;
+    }
+    virtual bool kept_around(const grammar::Block&, const keywords::CardSpec&, bool) { return false; }
 };
 
 // Decodes every card of every known block, reporting into `out` in deck order; `visit` (optional)

@@ -31,7 +31,7 @@ void reserve_more(Particles& p, std::size_t more) {
 }
 }  // namespace
 
-ModelBuilder::ModelBuilder(const grammar::RawDeck& deck) : deck_(deck) {
+ModelBuilder::ModelBuilder(const grammar::RawDeck& deck, const BulkReuse* previous) : deck_(deck), previous_(previous) {
     model_.memory2_given = !deck.keyword_arguments.memory2.empty();
 }
 
@@ -163,6 +163,110 @@ void ModelBuilder::Bulk::end(const grammar::Block&) {
     irregular_.clear();
 }
 
+bool ModelBuilder::Bulk::reuse(const grammar::Block& block, const keywords::CardSpec& card) {
+    if (!owner_.previous_) return false;
+    const DecodedBulkBlock* same = same_bulk_block(*owner_.previous_, owner_.deck_, block, card);
+    if (!same) return false;
+    const Model& before = owner_.previous_->model;
+    const auto from = static_cast<std::ptrdiff_t>(same->first_slot);
+    const auto to = from + static_cast<std::ptrdiff_t>(same->line_count);
+    const auto copy = [&](const auto& source, auto& target) {
+        target.insert(target.end(), source.begin() + from, source.begin() + to);
+    };
+    std::size_t slot = 0;
+    if (block.keyword.rfind("*ELEMENT_SPH", 0) == 0) {
+        const Particles& old = before.particles;
+        Particles& p = owner_.model_.particles;
+        slot = p.size();
+        copy(old.node, p.node), copy(old.part, p.part), copy(old.mass, p.mass), copy(old.volume, p.volume);
+        // A particle's line is its place in RawDeck::lines, which lines added or removed above shift.
+        const std::uint32_t shift = block.first_line - same->first_line;  // modulo 2^32, undone by the sum
+        p.line.reserve(p.line.size() + same->line_count);
+        for (auto at = old.line.begin() + from; at != old.line.begin() + to; ++at) p.line.push_back(*at + shift);
+    } else {
+        const Nodes& old = before.nodes;
+        Nodes& n = owner_.model_.nodes;
+        slot = n.id.size();
+        copy(old.id, n.id), copy(old.x, n.x), copy(old.y, n.y), copy(old.z, n.z);
+    }
+    owner_.decoded_bulk_.push_back(decoded_bulk_block(owner_.deck_, block, card, slot));
+    return true;
+}
+
+void ModelBuilder::Bulk::decoded_cleanly(const grammar::Block& block, const keywords::CardSpec& card) {
+    owner_.decoded_bulk_.push_back(decoded_bulk_block(owner_.deck_, block, card, base_));
+}
+
+std::optional<BulkVisitor::Around> ModelBuilder::Bulk::reuse_around(const grammar::Block& block,
+                                                                    const keywords::CardSpec& card) {
+    const BulkReuse* previous = owner_.previous_;
+    if (!previous || !previous->changed) return std::nullopt;
+    const grammar::SplicedLines& changed = *previous->changed;
+    const std::size_t added = changed.new_card_end - changed.first_card;
+    const std::size_t removed = changed.old_card_end - changed.first_card;
+    for (const DecodedBulkBlock& before : previous->blocks) {
+        // The block the edit fell in: the lines before the edit are the same, those after it moved.
+        if (before.card != &card || before.format != block.format || before.keyword != block.keyword ||
+            before.file != changed.file || before.first_line != block.first_line ||
+            changed.first_card < before.first_line || changed.old_card_end > before.first_line + before.line_count ||
+            std::size_t{block.line_count} + removed != std::size_t{before.line_count} + added ||
+            block.line_count == 0 || owner_.deck_.begin_lines(block)->file != changed.file)
+            continue;
+        particles_ = block.keyword.rfind("*ELEMENT_SPH", 0) == 0;
+        irregular_.assign(1, {});
+        const std::size_t head = changed.first_card - before.first_line;  // lines before the edit
+        const std::size_t tail = before.line_count - (changed.old_card_end - before.first_line);
+        const std::size_t old_tail = before.first_slot + (changed.old_card_end - before.first_line);
+        const std::size_t new_tail = head + added;
+        const auto copy = [&](const auto& source, auto& target) {
+            const auto from = source.begin() + static_cast<std::ptrdiff_t>(before.first_slot);
+            std::copy(from, from + static_cast<std::ptrdiff_t>(head),
+                      target.begin() + static_cast<std::ptrdiff_t>(base_));
+            const auto rest = source.begin() + static_cast<std::ptrdiff_t>(old_tail);
+            std::copy(rest, rest + static_cast<std::ptrdiff_t>(tail),
+                      target.begin() + static_cast<std::ptrdiff_t>(base_ + new_tail));
+        };
+        if (particles_) {
+            volume_ = block.keyword.find("_VOLUME") != std::string::npos;
+            const Particles& old = previous->model.particles;
+            Particles& p = owner_.model_.particles;
+            base_ = p.size();
+            const std::size_t size = base_ + block.line_count;
+            p.node.resize(size), p.part.resize(size), p.mass.resize(size), p.volume.resize(size), p.line.resize(size);
+            copy(old.node, p.node), copy(old.part, p.part), copy(old.mass, p.mass), copy(old.volume, p.volume);
+            copy(old.line, p.line);
+            // The lines after the edit moved in RawDeck::lines by what it added (modulo 2^32, undone by the sum).
+            const auto shift = static_cast<std::uint32_t>(added - removed);
+            for (std::size_t i = base_ + new_tail; i < size; ++i) p.line[i] += shift;
+        } else {
+            const Nodes& old = previous->model.nodes;
+            Nodes& n = owner_.model_.nodes;
+            base_ = n.id.size();
+            const std::size_t size = base_ + block.line_count;
+            n.id.resize(size), n.x.resize(size), n.y.resize(size), n.z.resize(size);
+            copy(old.id, n.id), copy(old.x, n.x), copy(old.y, n.y), copy(old.z, n.z);
+        }
+        return Around{head, head + added};
+    }
+    return std::nullopt;
+}
+
+bool ModelBuilder::Bulk::kept_around(const grammar::Block& block, const keywords::CardSpec& card, bool clean) {
+    for (const auto& list : irregular_) clean = clean && list.empty();
+    irregular_.clear();
+    if (clean) {
+        owner_.decoded_bulk_.push_back(decoded_bulk_block(owner_.deck_, block, card, base_));
+        return true;
+    }
+    Particles& p = owner_.model_.particles;
+    Nodes& n = owner_.model_.nodes;
+    if (particles_)
+        p.node.resize(base_), p.part.resize(base_), p.mass.resize(base_), p.volume.resize(base_), p.line.resize(base_);
+    else
+        n.id.resize(base_), n.x.resize(base_), n.y.resize(base_), n.z.resize(base_);
+    return false;
+}
+
 // Threads own contiguous ranges of lines in thread order, so the concatenated lists are sorted.
 void ModelBuilder::Bulk::end_nodes() {
     Nodes& n = owner_.model_.nodes;
@@ -210,14 +314,22 @@ Model ModelBuilder::finish(std::vector<diag::Diagnostic>& out) {
 }
 
 Model build_model(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, DeckSummary* summary) {
-    ModelBuilder builder(deck);
+    std::vector<DecodedBulkBlock> decoded;
+    return build_model(deck, out, summary, nullptr, decoded);
+}
+
+Model build_model(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, DeckSummary* summary,
+                  const BulkReuse* previous, std::vector<DecodedBulkBlock>& decoded) {
+    ModelBuilder builder(deck, previous);
     DeckSummary s = check_deck(
         deck, out,
         [&](const grammar::Block& b, const keywords::KeywordMatch& m, const keywords::CardSpec& c,
             const grammar::CardLine& l, const std::vector<FieldValue>& v) { builder.on_card(b, m, c, l, v); },
         &builder.bulk_visitor());
     if (summary) *summary = s;
-    return builder.finish(out);
+    Model model = builder.finish(out);
+    decoded = builder.take_decoded_bulk();
+    return model;
 }
 
 }  // namespace sphdeck::model

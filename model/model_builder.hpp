@@ -6,6 +6,7 @@
 
 #include "diag/diagnostic.hpp"
 #include "grammar/raw_deck.hpp"
+#include "model/bulk_reuse.hpp"
 #include "model/deck_check.hpp"
 #include "model/model.hpp"
 
@@ -13,7 +14,9 @@ namespace sphdeck::model {
 
 class ModelBuilder {
 public:
-    explicit ModelBuilder(const grammar::RawDeck& deck);
+    // `previous`: the last check, whose cleanly decoded bulk blocks are copied where unchanged (the
+    // editor's re-check, model/bulk_reuse.hpp); null decodes every block.
+    explicit ModelBuilder(const grammar::RawDeck& deck, const BulkReuse* previous = nullptr);
 
     // The CardVisitor of check_deck.
     void on_card(const grammar::Block& block, const keywords::KeywordMatch& match, const keywords::CardSpec& card,
@@ -24,6 +27,9 @@ public:
 
     // Big *NODE and *ELEMENT_SPH blocks, decoded in parallel by check_deck.
     BulkVisitor& bulk_visitor() { return bulk_; }
+
+    // The bulk blocks decoded cleanly or copied, for the next re-check (after finish()).
+    std::vector<DecodedBulkBlock> take_decoded_bulk() { return std::move(decoded_bulk_); }
 
 private:
     // Writes each line's node or particle into a slot sized in advance; lines that are not exactly
@@ -37,6 +43,10 @@ private:
                   const std::vector<FieldValue>& values) override;
         void drop_range(std::size_t index) override;
         void end(const grammar::Block& block) override;
+        bool reuse(const grammar::Block& block, const keywords::CardSpec& card) override;
+        void decoded_cleanly(const grammar::Block& block, const keywords::CardSpec& card) override;
+        std::optional<Around> reuse_around(const grammar::Block& block, const keywords::CardSpec& card) override;
+        bool kept_around(const grammar::Block& block, const keywords::CardSpec& card, bool clean) override;
 
     private:
         struct Irregular {
@@ -63,9 +73,16 @@ private:
     IdLinkCollector links_;
     const grammar::Block* current_block_ = nullptr;
     Bulk bulk_{*this};
+    const BulkReuse* previous_ = nullptr;
+    std::vector<DecodedBulkBlock> decoded_bulk_;
 };
 
 // Reads the whole deck into a Model in one pass: decode + build. Diagnostics go to `out`.
 Model build_model(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, DeckSummary* summary = nullptr);
+
+// The same for the editor's re-check: `previous` as ModelBuilder's; `decoded` receives the bulk blocks
+// the next re-check may copy.
+Model build_model(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, DeckSummary* summary,
+                  const BulkReuse* previous, std::vector<DecodedBulkBlock>& decoded);
 
 }  // namespace sphdeck::model

@@ -14,6 +14,8 @@
 #include "engine/check.hpp"
 #include "engine/preview_reuse.hpp"
 #include "engine/recheck.hpp"
+#include "grammar/deck_splice.hpp"
+#include "grammar/read_deck.hpp"
 #include "text/text_file.hpp"
 #include "lsp/uri.hpp"
 #include "lsp/workspace.hpp"
@@ -157,6 +159,26 @@ nlohmann::json random_edit(std::vector<std::string>& lines, std::mt19937& random
     }
 }
 
+// One digit of a random line of a bulk block changed to another digit, as an LSP change.
+nlohmann::json digit_edit_in_bulk(std::vector<std::string>& lines, std::mt19937& random) {
+    const auto pick = [&](std::size_t n) {
+        return static_cast<std::uint32_t>(std::uniform_int_distribution<std::size_t>(0, n - 1)(random));
+    };
+    const std::vector<std::uint32_t> bulk = places_of(lines).bulk;
+    if (bulk.empty()) return nlohmann::json();
+    const std::uint32_t line = bulk[pick(bulk.size())];
+    std::string& text = lines[line];
+    std::vector<std::uint32_t> digits;
+    for (std::uint32_t i = 0; i < text.size(); ++i)
+        if (text[i] >= '0' && text[i] <= '9') digits.push_back(i);
+    if (digits.empty()) return nlohmann::json();
+    const std::uint32_t at = digits[pick(digits.size())];
+    text[at] = static_cast<char>('0' + (text[at] - '0' + 1 + pick(9)) % 10);
+    return {{"range",
+             {{"start", {{"line", line}, {"character", at}}}, {"end", {{"line", line}, {"character", at + 1}}}}},
+            {"text", std::string(1, text[at])}};
+}
+
 // A deck of n x n particles in a plane (a bulk *NODE and *ELEMENT_SPH), with a title and controls.
 std::string lattice_deck(int n) {
     std::string deck =
@@ -261,6 +283,119 @@ TEST_CASE("recheck: random edits in and out of the bulk blocks, across keyword l
             REQUIRE(published.size() == full.size());
             for (std::size_t i = 0; i < full.size(); ++i) CHECK(published[i] == full[i]);
         }
+    }
+}
+
+TEST_CASE("deck splice: an edit's lines read again and spliced in equal a full reading, or no splice") {
+    const std::string name = "splice_lattice.k";
+    std::vector<std::string> lines = split_lines(lattice_deck(6));
+    grammar::RawDeck previous = grammar::read_deck_buffer(join_lines(lines), name);
+    std::mt19937 random(7);
+    int spliced = 0;
+    for (int edit = 0; edit < 200; ++edit) {
+        if (random_edit(lines, random).is_null()) continue;
+        const std::string text = join_lines(lines);
+        CAPTURE(edit);
+        CAPTURE(text);
+        grammar::RawDeck full = grammar::read_deck_buffer(text, name);
+        if (auto splice = grammar::splice_edit(previous, grammar::SourceText(text))) {
+            ++spliced;
+            const grammar::RawDeck& deck = splice->deck;
+            REQUIRE(deck.lines.size() == full.lines.size());
+            for (std::size_t i = 0; i < full.lines.size(); ++i) {
+                CHECK(deck.lines[i].line == full.lines[i].line);
+                CHECK(deck.lines[i].offset == full.lines[i].offset);
+            }
+            REQUIRE(deck.blocks.size() == full.blocks.size());
+            for (std::size_t i = 0; i < full.blocks.size(); ++i) {
+                CHECK(deck.blocks[i].keyword == full.blocks[i].keyword);
+                CHECK(deck.blocks[i].first_line == full.blocks[i].first_line);
+                CHECK(deck.blocks[i].line_count == full.blocks[i].line_count);
+                CHECK(deck.blocks[i].span.line == full.blocks[i].span.line);
+            }
+            REQUIRE(deck.diagnostics.size() == full.diagnostics.size());
+            for (std::size_t i = 0; i < full.diagnostics.size(); ++i) {
+                CHECK(deck.diagnostics[i].message == full.diagnostics[i].message);
+                CHECK(deck.diagnostics[i].span.line == full.diagnostics[i].span.line);
+            }
+            CHECK(deck.stats.lines == full.stats.lines);
+            CHECK(deck.stats.cards == full.stats.cards);
+        }
+        previous = std::move(full);
+    }
+    CHECK(spliced > 60);  // most edits change data lines inside one block
+}
+
+TEST_CASE("recheck: bulk blocks the edit left alone are copied, not decoded; random edits equal a full check") {
+    // 91 x 91 particles: *NODE and *ELEMENT_SPH long enough for the bulk path (model/bulk_reuse.hpp).
+    const std::filesystem::path path = std::filesystem::absolute("incremental_bulk_lattice.k");
+    const std::string text = lattice_deck(91);
+    engine::Documents documents;
+    documents.set(path, text);
+    engine::CheckOptions options;
+    options.rules.geometry = false;  // the decoding is what this looks at
+    const engine::CheckResult first = engine::check_deck(path.string(), documents, options);
+    REQUIRE(first.bulk_blocks.size() == 2);  // both decoded cleanly: the next re-check may copy them
+    // A line added above the bulk blocks: both copied, the particles' lines shifted with the deck's.
+    std::string retitled = text;
+    retitled.replace(retitled.find("water"), 5, "water\n$ a comment\n");
+    documents.set(path, retitled);
+    const engine::CheckResult again = engine::recheck_deck(path.string(), documents, options, first);
+    const engine::CheckResult full = engine::check_deck(path.string(), documents, options);
+    CHECK(again.bulk_blocks.size() == 2);
+    CHECK(again.model.nodes.x == full.model.nodes.x);
+    CHECK(again.model.particles.line == full.model.particles.line);
+    CHECK(again.model.particles.mass == full.model.particles.mass);
+    // A parameter in a node line: that block is decoded again and not kept (its values depend on more
+    // than its text); the particles are still copied.
+    std::string with_parameter = retitled;
+    with_parameter.replace(with_parameter.find("*NODE\n") + 6 + 8, 16, "&x              ");
+    with_parameter.replace(with_parameter.find("*NODE"), 0, "*PARAMETER\nR x              0.5\n");
+    documents.set(path, with_parameter);
+    const engine::CheckResult third = engine::recheck_deck(path.string(), documents, options, again);
+    REQUIRE(third.bulk_blocks.size() == 1);
+    CHECK(third.bulk_blocks[0].keyword == "*ELEMENT_SPH");
+    CHECK(third.model.nodes.x == engine::check_deck(path.string(), documents, options).model.nodes.x);
+}
+
+TEST_CASE(
+    "recheck: random edits of a deck with bulk blocks (copied, spliced, decoded around an edit) equal a full check") {
+    const std::filesystem::path path = std::filesystem::absolute("incremental_random_bulk_lattice.k");
+    const std::string text = lattice_deck(91);
+    const std::string uri = lsp::uri_from_path(path);
+    nlohmann::json published;
+    lsp::Workspace workspace([&](const nlohmann::json& params) {
+        if (params["uri"] == uri) published = params["diagnostics"];
+    });
+    workspace.open(uri, text, 1);
+    workspace.flush();
+    std::vector<std::string> lines = split_lines(text);
+    std::mt19937 random(91);
+    for (int edit = 0; edit < 10; ++edit) {
+        // Every other edit one digit of a bulk line (the same length: its block's size does not tell it apart).
+        const nlohmann::json change = edit % 2 ? random_edit(lines, random) : digit_edit_in_bulk(lines, random);
+        if (change.is_null()) continue;
+        CAPTURE(edit);
+        CAPTURE(change.dump());
+        REQUIRE(workspace.change(uri, edit + 2, nlohmann::json::array({change})));
+        workspace.flush();
+        const nlohmann::json expected = full_check(path, join_lines(lines));
+        REQUIRE(published.size() == expected.size());
+        for (std::size_t i = 0; i < expected.size(); ++i) CHECK(published[i] == expected[i]);
+        // The model too: a value copied from the last check where it changed need not change a finding.
+        engine::Documents documents;
+        documents.set(path, join_lines(lines));
+        engine::CheckOptions options;
+        options.rules.geometry = false;
+        const engine::CheckResult full = engine::check_deck(path.string(), documents, options);
+        REQUIRE(workspace.checked_decks().size() == 1);
+        const model::Model& model = workspace.checked_decks()[0]->result.model;
+        CHECK(model.nodes.id == full.model.nodes.id);
+        CHECK(model.nodes.x == full.model.nodes.x);
+        CHECK(model.nodes.y == full.model.nodes.y);
+        CHECK(model.particles.node == full.model.particles.node);
+        CHECK(model.particles.mass == full.model.particles.mass);
+        CHECK(model.particles.line == full.model.particles.line);
     }
 }
 

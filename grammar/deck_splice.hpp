@@ -1,0 +1,37 @@
+// The editor's re-check (issue 45): a deck read again after an edit of its text, by re-reading only
+// the lines the edit touched and splicing them into the last reading, instead of reading millions of
+// untouched lines again. Taken only where the splice reads exactly what a full read would: a deck of
+// one LS-DYNA file without parameters, and an edit that changed data and comment lines inside one
+// block the reader does not act on (not *INCLUDE, *PARAMETER, *KEYWORD, *COMMENT, after *END) and
+// made or removed no keyword line. Any other edit is read in full (grammar::read_deck).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+
+#include "grammar/raw_deck.hpp"
+#include "text/source_text.hpp"
+
+namespace sphdeck::grammar {
+
+// Where the texts of the two readings differ: bytes [begin, old_end) of the old text became
+// [begin, new_end) of the new one, whole lines; the bytes around are the same.
+struct SplicedLines {
+    FileId file = 0;
+    std::size_t begin = 0, old_end = 0, new_end = 0;
+    // The card lines (RawDeck::lines) that went: [first_card, old_card_end) of the old reading,
+    // [first_card, new_card_end) of the new one; the lines before are the same, those after moved.
+    std::uint32_t first_card = 0, old_card_end = 0, new_card_end = 0;
+};
+
+struct SplicedDeck {
+    RawDeck deck;
+    SplicedLines changed;
+};
+
+// `previous` read again with its main file's text now `text`, or nullopt when the edit needs a
+// full read (see above). `previous` is not changed.
+std::optional<SplicedDeck> splice_edit(const RawDeck& previous, SourceText text);
+
+}  // namespace sphdeck::grammar

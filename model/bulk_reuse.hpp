@@ -1,0 +1,52 @@
+// The editor's re-check (issue 45): a *NODE or *ELEMENT_SPH block of millions of lines that an edit
+// left alone is not decoded again. A check notes the bulk blocks it decoded cleanly (every line on the
+// plain path: numbers in their columns, no parameter, no finding, no NEND range), and the next check
+// copies such a block's nodes or particles from the last model when its text is the same, byte for
+// byte. What a clean block decodes to depends on its bytes, its card and its format alone.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "grammar/deck_splice.hpp"
+#include "grammar/keywords/schema.hpp"
+#include "grammar/raw_deck.hpp"
+
+namespace sphdeck::model {
+
+struct Model;
+
+// One bulk block a check decoded cleanly.
+struct DecodedBulkBlock {
+    std::string keyword;                       // as Block::keyword ("*ELEMENT_SPH_VOLUME" reads volumes)
+    const keywords::CardSpec* card = nullptr;  // every line is this card
+    grammar::CardFormat format = grammar::CardFormat::Standard;
+    grammar::FileId file = 0;
+    std::size_t begin = 0, end = 0;  // its lines in the file's text: the first's start to the last's end
+    std::uint32_t first_line = 0;    // its first line in RawDeck::lines
+    std::uint32_t line_count = 0;
+    std::size_t first_slot = 0;  // its nodes or particles in the model, one a line
+};
+
+// The last check: its deck and model (alive during the re-check) and the blocks it decoded cleanly.
+// `changed`: where this deck's reading was spliced into that deck's (null when read in full): blocks
+// outside it are known the same without comparing their bytes.
+struct BulkReuse {
+    const grammar::RawDeck& deck;
+    const Model& model;
+    const std::vector<DecodedBulkBlock>& blocks;
+    const grammar::SplicedLines* changed = nullptr;
+};
+
+// The block of `previous` that `block` of `deck` may be copied from: same keyword, card, format and
+// line count, the same bytes. Null when none is.
+const DecodedBulkBlock* same_bulk_block(const BulkReuse& previous, const grammar::RawDeck& deck,
+                                        const grammar::Block& block, const keywords::CardSpec& card);
+
+// `block` of `deck` as a DecodedBulkBlock whose nodes or particles start at `first_slot`.
+DecodedBulkBlock decoded_bulk_block(const grammar::RawDeck& deck, const grammar::Block& block,
+                                    const keywords::CardSpec& card, std::size_t first_slot);
+
+}  // namespace sphdeck::model
