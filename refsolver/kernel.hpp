@@ -41,6 +41,18 @@ struct CubicSpline {
         if (q < 2) return -scale * 0.75 * (2 - q) * (2 - q) / q;
         return 0.0;
     }
+
+    // dW/dh at fixed r: -C_d / h^(d+1) (d theta(q) + q theta'(q)), for FORM 0's Omega (grad_h.hpp).
+    // Its integral over space is 0 (W integrates to 1 at every h).
+    double h_derivative(double r, double h) const {
+        const double q = r / h;
+        double theta = 0, slope = 0;
+        if (q <= 1)
+            theta = 1 - 1.5 * q * q + 0.75 * q * q * q, slope = -3.0 * q + 2.25 * q * q;
+        else if (q < 2)
+            theta = 0.25 * (2 - q) * (2 - q) * (2 - q), slope = -0.75 * (2 - q) * (2 - q);
+        return -normalisation() / (h_power(h) * h) * (dimension * theta + q * slope);
+    }
 };
 
 }  // namespace sphdeck::refsolver

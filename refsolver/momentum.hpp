@@ -2,7 +2,8 @@
 // fluid, sigma = -p I; §6.1 for Pi_ij), in the form that pairs with the deck's continuity
 // (continuity.hpp):
 //   dv_i/dt = -sum_j m_j (A_ij + Pi_ij) g_ij + a_body, with
-//   FORM 0 (number density):   A_ij = (p_i V_i^2 + p_j V_j^2) / (m_i m_j),   V = m / rho
+//   FORM 0 (number density):   A_ij = (p_i V_i^2 / Omega_i + p_j V_j^2 / Omega_j) / (m_i m_j),   V = m / rho,
+//                              Omega the grad-h factor (grad_h.hpp; 1 on most particles)
 //   FORM 1 (volume-weighted):  A_ij = (p_i + p_j) / (rho_i rho_j)
 // With either continuity the pressure work of the pairs is sum_pairs m_i m_j A_ij v_ij . g_ij
 // (energy.hpp), so these are the momentum equations that make kinetic plus internal energy a constant

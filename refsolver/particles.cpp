@@ -7,17 +7,18 @@ namespace sphdeck::refsolver {
 namespace {
 
 // The real-only arrays that carry state across a rebuild (the rates and the positions at the
-// build do not: they are recomputed right after it).
+// build do not: they are recomputed right after it; but d rho/dt, which FORM 0's Omega reads from
+// the last evaluation: grad_h.hpp).
 template <typename F>
 void for_each_state_array(Particles& s, F&& f) {
-    f(s.e), f(s.h_low), f(s.h_high);
+    f(s.e), f(s.h_low), f(s.h_high), f(s.drho);
     f(s.vx_half), f(s.vy_half), f(s.vz_half), f(s.rho_half), f(s.e_half), f(s.h_half);
 }
 
 template <typename F>
 void for_each_real_array(Particles& s, F&& f) {
     for_each_state_array(s, f);
-    f(s.ax), f(s.ay), f(s.az), f(s.drho), f(s.de), f(s.dh);
+    f(s.ax), f(s.ay), f(s.az), f(s.de), f(s.dh);
     f(s.x_built), f(s.y_built), f(s.z_built);
 }
 
@@ -51,6 +52,7 @@ void Particles::resize_pair_arrays() {
     for_each_pair_array(*this, [n](std::vector<double>& v) { v.resize(n, 0.0); });
     interacting.resize(n, 0);
     correction.resize(n, {1, 1, 1, 0, 0, 0});
+    omega.resize(n, 1.0);
     if (solid) stress.resize(n, SymmetricTensor{});
 }
 

@@ -22,6 +22,7 @@ struct Particles {
     std::vector<std::uint8_t> interacting;          // 1: active and inside its SPH time window
     std::vector<std::array<double, 6>> correction;  // FORM 1: B^-1 as xx yy zz xy xz yz
     std::vector<SymmetricTensor> stress;            // solid: deviatoric stress S (stress.hpp), 0 for fluids
+    std::vector<double> omega;                      // FORM 0: the grad-h factor Omega (grad_h.hpp), else 1
 
     // Real particles only.
     std::vector<double> e;                   // specific internal energy
@@ -58,7 +59,8 @@ struct Particles {
     void resize_pair_arrays();
     // Reorders the real particles: new position k holds old particle order[k]. Ghosts stay
     // (same entries), their sources renumbered. The rates (ax .. dh) and the positions at the
-    // last build are not carried over: a rebuild recomputes both right after.
+    // last build are not carried over (a rebuild recomputes both right after), but for drho, which
+    // FORM 0's Omega reads from the last evaluation (grad_h.hpp).
     void permute(const std::vector<std::uint32_t>& order, int threads = 1);
 };
 

@@ -264,7 +264,7 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
                 continue;
             }
             if (Dimension == 2) s.az[i] = 0.0;
-            s.drho[i] *= continuity_factor<Renormalise>(s.rho[i], s.m[i]);  // continuity.hpp
+            s.drho[i] *= continuity_factor<Renormalise>(s.rho[i], s.m[i], s.omega[i]);  // continuity.hpp
             s.dh[i] = smoothing_length_rate(rp.h_rule, Dimension, s.h[i], s.rho[i], s.drho[i]);
         }
     }
@@ -292,7 +292,7 @@ void compute_rates(Particles& s, const NeighbourList& list, const RateParameters
 #pragma omp parallel for schedule(static) reduction(max : largest) num_threads(parameters.threads)
     for (std::size_t i = 0; i < n; ++i) {
         const double m = s.interacting[i] ? s.m[i] : 0.0, volume = m / s.rho[i];
-        const FormValues f = form_values(parameters.renormalise, s.p[i], s.rho[i], m, s.m[i]);
+        const FormValues f = form_values(parameters.renormalise, s.p[i], s.rho[i], m, s.m[i], s.omega[i]);
         if (simd) {
             positions[i] = {s.x[i], s.y[i], s.z[i], s.h[i]};
             positions_f[i] = {static_cast<float>(s.x[i]), static_cast<float>(s.y[i]), static_cast<float>(s.z[i]),

@@ -20,6 +20,7 @@
 #include "refsolver/body_load.hpp"
 #include "refsolver/core_share.hpp"
 #include "refsolver/deactivation.hpp"
+#include "refsolver/grad_h.hpp"
 #include "refsolver/neighbour_list.hpp"
 #include "refsolver/rates.hpp"
 #include "refsolver/renormalisation.hpp"
@@ -110,6 +111,8 @@ struct Simulation::Impl {
     void update_interacting();
     void rebuild();
     bool needs_rebuild() const;
+    // FORM 0's number-density continuity takes the grad-h factor where a particle thins out (grad_h.hpp).
+    bool grad_h() const { return !rates.renormalise; }
     void check_finite();
     void report_non_finite(bool finite);  // sets `failure` when !finite
 };
@@ -143,8 +146,8 @@ void Simulation::Impl::rebuild() {
     skin = skin_share * h_max;
     const double radius = CubicSpline::support_factor * h_max + skin;
     build_ghosts(s, in.planes, radius, rates.threads, in.planes_per_image);
-    // Also sorts the real particles into cell order; FORM 1 reads the full lists too.
-    list.build(s, radius, rates.threads, in.renormalise);
+    // Also sorts the real particles into cell order; FORM 1 and FORM 0's Omega read the full lists too.
+    list.build(s, radius, rates.threads, in.renormalise || grad_h());
     const std::size_t n = s.real;
 #pragma omp parallel for schedule(static) num_threads(rates.threads)
     for (std::size_t i = 0; i < n; ++i) s.x_built[i] = s.x[i], s.y_built[i] = s.y[i], s.z_built[i] = s.z[i];
@@ -228,6 +231,7 @@ void Simulation::Impl::evaluate() {
         compute_corrections(s, list, rates.kernel, rates.threads);
         update_ghosts(s, in.planes, rates.threads);
     }
+    if (grad_h()) compute_grad_h(s, list, rates.kernel, in.h_rule == SmoothingLengthRule::Divergence, rates.threads);
     rates.body = body_acceleration(in.loads, time);
     compute_rates(s, list, rates, scratch);
     if (!in.kinematic.empty()) apply_kinematic();
