@@ -13,6 +13,8 @@
 #include "refsolver/kernel.hpp"
 #include "refsolver/simulation.hpp"
 
+namespace test_refsolver_grad_h_cpp {  // each test file's names stay its own in a unity batch
+
 using namespace sphdeck;
 
 TEST_CASE("refsolver grad-h: dW/dh is the derivative of the kernel in h and integrates to 0") {
@@ -77,3 +79,4 @@ TEST_CASE("refsolver grad-h: the Sedov deck as FORM 0 runs past the time its hot
     CHECK(lowest > 0.0);
     CHECK(std::abs(sim.totals().total - start) < 1e-3 * start);  // energy kept
 }
+}  // namespace test_refsolver_grad_h_cpp
