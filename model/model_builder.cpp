@@ -29,6 +29,14 @@ void reserve_more(Particles& p, std::size_t more) {
     const std::size_t size = p.node.size() + more;
     p.node.reserve(size), p.part.reserve(size), p.mass.reserve(size), p.volume.reserve(size), p.line.reserve(size);
 }
+
+// Every column at `size` entries.
+void resize_columns(Nodes& n, std::size_t size) {
+    n.id.resize(size), n.x.resize(size), n.y.resize(size), n.z.resize(size);
+}
+void resize_columns(Particles& p, std::size_t size) {
+    p.node.resize(size), p.part.resize(size), p.mass.resize(size), p.volume.resize(size), p.line.resize(size);
+}
 }  // namespace
 
 ModelBuilder::ModelBuilder(const grammar::RawDeck& deck, const BulkReuse* previous) : deck_(deck), previous_(previous) {
@@ -113,15 +121,11 @@ void ModelBuilder::Bulk::begin(const grammar::Block& block, std::size_t lines, i
     volume_ = block.keyword.find("_VOLUME") != std::string::npos;
     irregular_.assign(static_cast<std::size_t>(threads), {});
     if (particles_) {
-        Particles& p = owner_.model_.particles;
-        base_ = p.size();
-        const std::size_t size = base_ + lines;
-        p.node.resize(size), p.part.resize(size), p.mass.resize(size), p.volume.resize(size), p.line.resize(size);
+        base_ = owner_.model_.particles.size();
+        resize_columns(owner_.model_.particles, base_ + lines);
     } else {
-        Nodes& n = owner_.model_.nodes;
-        base_ = n.id.size();
-        const std::size_t size = base_ + lines;
-        n.id.resize(size), n.x.resize(size), n.y.resize(size), n.z.resize(size);
+        base_ = owner_.model_.nodes.id.size();
+        resize_columns(owner_.model_.nodes, base_ + lines);
     }
 }
 
@@ -212,8 +216,7 @@ std::optional<BulkVisitor::Around> ModelBuilder::Bulk::reuse_around(const gramma
             std::size_t{block.line_count} + removed != std::size_t{before.line_count} + added ||
             block.line_count == 0 || owner_.deck_.begin_lines(block)->file != changed.file)
             continue;
-        particles_ = block.keyword.rfind("*ELEMENT_SPH", 0) == 0;
-        irregular_.assign(1, {});
+        begin(block, block.line_count, 1);  // the block's slots, as for a block decoded on one thread
         const std::size_t head = changed.first_card - before.first_line;  // lines before the edit
         const std::size_t tail = before.line_count - (changed.old_card_end - before.first_line);
         const std::size_t old_tail = before.first_slot + (changed.old_card_end - before.first_line);
@@ -227,12 +230,9 @@ std::optional<BulkVisitor::Around> ModelBuilder::Bulk::reuse_around(const gramma
                       target.begin() + static_cast<std::ptrdiff_t>(base_ + new_tail));
         };
         if (particles_) {
-            volume_ = block.keyword.find("_VOLUME") != std::string::npos;
             const Particles& old = previous->model.particles;
             Particles& p = owner_.model_.particles;
-            base_ = p.size();
             const std::size_t size = base_ + block.line_count;
-            p.node.resize(size), p.part.resize(size), p.mass.resize(size), p.volume.resize(size), p.line.resize(size);
             copy(old.node, p.node), copy(old.part, p.part), copy(old.mass, p.mass), copy(old.volume, p.volume);
             copy(old.line, p.line);
             // The lines after the edit moved in RawDeck::lines by what it added (modulo 2^32, undone by the sum).
@@ -241,9 +241,6 @@ std::optional<BulkVisitor::Around> ModelBuilder::Bulk::reuse_around(const gramma
         } else {
             const Nodes& old = previous->model.nodes;
             Nodes& n = owner_.model_.nodes;
-            base_ = n.id.size();
-            const std::size_t size = base_ + block.line_count;
-            n.id.resize(size), n.x.resize(size), n.y.resize(size), n.z.resize(size);
             copy(old.id, n.id), copy(old.x, n.x), copy(old.y, n.y), copy(old.z, n.z);
         }
         return Around{head, head + added};
@@ -258,12 +255,10 @@ bool ModelBuilder::Bulk::kept_around(const grammar::Block& block, const keywords
         owner_.decoded_bulk_.push_back(decoded_bulk_block(owner_.deck_, block, card, base_));
         return true;
     }
-    Particles& p = owner_.model_.particles;
-    Nodes& n = owner_.model_.nodes;
     if (particles_)
-        p.node.resize(base_), p.part.resize(base_), p.mass.resize(base_), p.volume.resize(base_), p.line.resize(base_);
+        resize_columns(owner_.model_.particles, base_);
     else
-        n.id.resize(base_), n.x.resize(base_), n.y.resize(base_), n.z.resize(base_);
+        resize_columns(owner_.model_.nodes, base_);
     return false;
 }
 
@@ -279,7 +274,7 @@ void ModelBuilder::Bulk::end_nodes() {
         }
     for (; read < n.id.size(); ++read, ++write)
         n.id[write] = n.id[read], n.x[write] = n.x[read], n.y[write] = n.y[read], n.z[write] = n.z[read];
-    n.id.resize(write), n.x.resize(write), n.y.resize(write), n.z.resize(write);
+    resize_columns(n, write);
 }
 
 // Skipped lines drop out and NEND ranges expand (NID..NEND, same part and mass): rebuilt in order.
@@ -299,7 +294,7 @@ void ModelBuilder::Bulk::end_particles() {
             ++read;
         }
     for (; read < p.size(); ++read) copy(read, p.node[read]);
-    p.node.resize(base_), p.part.resize(base_), p.mass.resize(base_), p.volume.resize(base_), p.line.resize(base_);
+    resize_columns(p, base_);
     p.node.insert(p.node.end(), rebuilt.node.begin(), rebuilt.node.end());
     p.part.insert(p.part.end(), rebuilt.part.begin(), rebuilt.part.end());
     p.mass.insert(p.mass.end(), rebuilt.mass.begin(), rebuilt.mass.end());
