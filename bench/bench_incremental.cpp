@@ -10,6 +10,8 @@
 //   (issue 45 goals: open <= 700 ms, edit <= 50 ms, bulk <= 100 ms; issue 29's were 1000/100/300/20)
 //
 //   bench_incremental BIG_DECK SMALL_DECK [RUNS]      (RUNS defaults to 5; decks: gen_big_deck)
+//   BENCH_PROFILE_EDITS=N [BENCH_PROFILE_BULK=1] bench_incremental ...: one open, then N edits of the
+//   title (or of a *NODE x) and nothing else, for a profiler (perf record -g).
 //
 // It drives lsp::Workspace in-process (no pipe): bench/bench_lsp.py measures the same over stdio.
 #include <algorithm>
@@ -263,6 +265,17 @@ int main(int argc, char** argv) {
             open_times.wall.push_back(ms_since(start));
             open_times.cpu.push_back(cpu_ms() - cpu);
             if (editor.published == 0) throw std::runtime_error("no diagnostics published on open");
+            if (run == 0 && std::getenv("BENCH_PROFILE_EDITS")) {
+                // For a profiler: many edits after one open, then nothing else (BENCH_PROFILE_EDITS=N).
+                const int n = std::max(1, std::atoi(std::getenv("BENCH_PROFILE_EDITS")));
+                const bool bulk = std::getenv("BENCH_PROFILE_BULK") != nullptr;
+                if (bulk)
+                    editor.edit(n, node, 8, 24, " 1.00000000e-03", "-1.00000000e-03");
+                else
+                    editor.edit(n, title, 0, static_cast<std::uint32_t>(big_lines[title].size()), "water block A",
+                                "water block B");
+                return 0;
+            }
             if (run == 0) {
                 edit_times = editor.edit(runs * 2 - 1, title, 0, static_cast<std::uint32_t>(big_lines[title].size()),
                                          "water block A", "water block B");

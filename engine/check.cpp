@@ -3,6 +3,8 @@
 #include <functional>
 #include <optional>
 
+#include <omp.h>
+
 #include "engine/mended_consequences.hpp"
 #include "engine/preview_after_edit.hpp"
 #include "engine/recheck.hpp"
@@ -54,6 +56,21 @@ CheckResult analyse(grammar::RawDeck deck, const CheckOptions& options, const Ch
     return result;
 }
 
+// A spliced re-check on the calling thread alone: it decodes only the lines around an edit, and
+// between its short parallel regions OpenMP's idle workers spin (libgomp's default wait policy), which
+// on a busy 2-core machine cost more than the threads gained: a *NODE edit of a 1M-particle deck
+// took 178 ms CPU on two threads and 110 on one, less wall time too (bench/bench_incremental.cpp).
+class OneThreadForSplicedRecheck {
+public:
+    OneThreadForSplicedRecheck() : saved_(omp_get_max_threads()) { omp_set_num_threads(1); }
+    ~OneThreadForSplicedRecheck() { omp_set_num_threads(saved_); }
+    OneThreadForSplicedRecheck(const OneThreadForSplicedRecheck&) = delete;
+    OneThreadForSplicedRecheck& operator=(const OneThreadForSplicedRecheck&) = delete;
+
+private:
+    int saved_;
+};
+
 // `reread` reads the deck again with mended files laid over it (engine/mended_consequences.hpp).
 // `original`: the deck as first read (a buffer's text is its first file).
 using Reread = std::function<grammar::RawDeck(const grammar::dyna::ReaderOptions&, const grammar::RawDeck& original)>;
@@ -71,7 +88,16 @@ CheckResult finish(grammar::RawDeck deck, const CheckOptions& options, const Rer
     diag::sort_by_location(result.diagnostics);
     // What the deck's own comments and the configuration say about the findings: every consumer
     // (the CLI, the deck tests, an editor) sees the same list.
-    lint::apply_suppressions(result.deck.sources, result.diagnostics, grammar::format_of(result.deck));
+    // A spliced main file holds a directive only if its old text or its new lines do (a directive
+    // lies on one line): no pass over a 100 MB text to find none.
+    if (previous && changed && changed->file == 0 && previous->marker_free.size() == previous->deck.sources.size() &&
+        !previous->marker_free.empty() && previous->marker_free[0] && result.deck.sources.size() == 1) {
+        const std::string_view text = result.deck.sources.file(0).text.view();
+        result.marker_free = {
+            !lint::may_hold_suppressions(text.substr(changed->begin, changed->new_end - changed->begin))};
+    }
+    lint::apply_suppressions(result.deck.sources, result.diagnostics, grammar::format_of(result.deck),
+                             &result.marker_free);
     lint::apply_rule_settings(options.config, result.diagnostics);
     // After the settings: an ignored REF003 is not counted; the summary obeys them in its turn.
     if (lint::is_include_fragment(result.deck)) {
@@ -104,8 +130,11 @@ CheckResult recheck_deck(const std::string& path, const Documents& documents, co
     // An edit of an open main file inside one ordinary block: only its lines are read again.
     std::optional<grammar::SplicedDeck> spliced;
     if (documents.find(path) && previous.deck.sources.size() == 1 && previous.deck.sources.file(0).path == path)
-        spliced = grammar::splice_edit(previous.deck, grammar::read_source_text(path, &documents));
+        spliced =
+            grammar::splice_edit(previous.deck, grammar::read_source_text(path, &documents), documents.revision(path));
     grammar::RawDeck deck = spliced ? std::move(spliced->deck) : grammar::read_deck(path, with_documents.reader);
+    std::optional<OneThreadForSplicedRecheck> one_thread;
+    if (spliced) one_thread.emplace();
     return finish(
         std::move(deck), with_documents,
         [&](const grammar::dyna::ReaderOptions& reader, const grammar::RawDeck&) {

@@ -38,6 +38,7 @@ struct CheckResult {
     IncludeGraph includes;                             // the files the deck pulled in
     std::shared_ptr<const preproc::Preview> preview;   // when CheckOptions::rules.keep_preview (else null)
     std::vector<model::DecodedBulkBlock> bulk_blocks;  // what the next re-check may copy (model/bulk_reuse.hpp)
+    std::vector<bool> marker_free;  // by file: no suppression directive in it (lint/suppressions.hpp), for a re-check
 };
 
 // Checks the deck at `path`; its text and its includes' come from `documents` where they hold the

@@ -65,7 +65,7 @@ bool touches(const text::Span& span, FileId file, std::uint32_t first, std::uint
 }
 }  // namespace
 
-std::optional<SplicedDeck> splice_edit(const RawDeck& previous, SourceText text) {
+std::optional<SplicedDeck> splice_edit(const RawDeck& previous, SourceText text, const TextRevision* revision) {
     constexpr FileId file = 0;
     if (previous.sources.size() != 1 || previous.blocks.empty() || previous.lines.empty() ||
         !previous.parameters.definitions().empty() || format_of(previous) != DeckFormat::LsDyna)
@@ -80,8 +80,16 @@ std::optional<SplicedDeck> splice_edit(const RawDeck& previous, SourceText text)
         if (d.code == "DK022") return std::nullopt;
 
     // The changed bytes, widened to whole lines: [begin, old_end) of `before` is [begin, new_end) of `now`.
-    const std::size_t prefix = common_prefix(before, now);
-    const std::size_t suffix = common_suffix(before, now, prefix);
+    std::size_t prefix = 0, suffix = 0;
+    if (revision && revision->previous_data == before.data() && revision->previous_size == before.size()) {
+        // Known from the editor's changes: at least these bytes are the same (fewer only widen the edit).
+        const std::size_t shorter = std::min(before.size(), now.size());
+        prefix = std::min(revision->same_prefix, shorter);
+        suffix = std::min(revision->same_suffix, shorter - prefix);
+    } else {
+        prefix = common_prefix(before, now);
+        suffix = common_suffix(before, now, prefix);
+    }
     std::size_t begin = prefix;
     while (begin > 0 && before[begin - 1] != '\n') --begin;
     std::size_t old_end = before.find('\n', before.size() - suffix);
@@ -150,9 +158,19 @@ std::optional<SplicedDeck> splice_edit(const RawDeck& previous, SourceText text)
     for (const CardLine& l : read.lines)
         deck.lines.push_back(
             CardLine{file, first_line + l.line - 2, static_cast<std::uint32_t>(begin + l.offset - lead)});
-    for (auto l = last; l != previous.lines.end(); ++l)
-        deck.lines.push_back(CardLine{file, static_cast<std::uint32_t>(l->line + line_shift),
-                                      static_cast<std::uint32_t>(l->offset + byte_shift)});
+    // The lines after the edit: copied whole, then moved by what the edit added (a plain loop over
+    // 2 million lines, and none when the edit kept the lengths).
+    const std::size_t moved_from = deck.lines.size();
+    deck.lines.insert(deck.lines.end(), last, previous.lines.end());
+    if (line_shift != 0 || byte_shift != 0) {
+        const auto lines = static_cast<std::uint32_t>(line_shift), bytes = static_cast<std::uint32_t>(byte_shift);
+        CardLine* const moved = deck.lines.data() + moved_from;
+        const std::size_t n = deck.lines.size() - moved_from;
+        for (std::size_t i = 0; i < n; ++i) {  // modulo 2^32: a negative shift wraps back into range
+            moved[i].line += lines;
+            moved[i].offset += bytes;
+        }
+    }
 
     deck.blocks = previous.blocks;
     deck.blocks[host_index].line_count = static_cast<std::uint32_t>(host.line_count + count_shift);

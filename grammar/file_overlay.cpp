@@ -11,10 +11,30 @@ namespace fs = std::filesystem;
 fs::path FileOverlay::key(const fs::path& path) { return canonical_path(path); }
 
 void FileOverlay::set(const fs::path& path, std::string text) {
-    texts_[key(path)] = std::make_shared<const std::string>(std::move(text));
+    set_shared(path, std::make_shared<const std::string>(std::move(text)));
 }
 
-void FileOverlay::erase(const fs::path& path) { texts_.erase(key(path)); }
+void FileOverlay::set_shared(const fs::path& path, std::shared_ptr<const std::string> text,
+                             const std::optional<TextRevision>& revision) {
+    const fs::path k = key(path);
+    texts_[k] = text ? std::move(text) : std::make_shared<const std::string>();
+    if (revision)
+        revisions_[k] = *revision;
+    else
+        revisions_.erase(k);
+}
+
+void FileOverlay::erase(const fs::path& path) {
+    const fs::path k = key(path);
+    texts_.erase(k);
+    revisions_.erase(k);
+}
+
+const TextRevision* FileOverlay::revision(const fs::path& path) const {
+    if (revisions_.empty()) return nullptr;
+    auto it = revisions_.find(key(path));
+    return it == revisions_.end() ? nullptr : &it->second;
+}
 
 const std::string* FileOverlay::find(const fs::path& path) const {
     if (texts_.empty()) return nullptr;  // the common case (the command line) pays nothing

@@ -3,14 +3,26 @@
 // includes and the Radioss engine deck alike, so an edited include is read as the editor holds it.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "text/source_text.hpp"
 
 namespace sphdeck::grammar {
+
+// What an editor knows of a text's change (issue 45): the text replaced the one at `previous_data`
+// (`previous_size` bytes, still alive where a reading views it), and at least their first
+// `same_prefix` and last `same_suffix` bytes are the same. A re-check that read the previous text
+// finds the changed lines from it without comparing the two texts (grammar/deck_splice.hpp).
+struct TextRevision {
+    const char* previous_data = nullptr;
+    std::size_t previous_size = 0;
+    std::size_t same_prefix = 0, same_suffix = 0;
+};
 
 class FileOverlay {
 public:
@@ -19,10 +31,16 @@ public:
     // copying it (an editor's 100 MB buffer), a copy of the overlay shares them all, and a text
     // replaced later stays alive while a deck read before still views it.
     void set(const std::filesystem::path& path, std::string text);
+    // The same with a text shared with its holder (an editor's document), and what changed since
+    // the text it replaces when the holder knows it.
+    void set_shared(const std::filesystem::path& path, std::shared_ptr<const std::string> text,
+                    const std::optional<TextRevision>& revision = std::nullopt);
     void erase(const std::filesystem::path& path);
     // The text held for `path`, or nullptr when the file system has the say.
     const std::string* find(const std::filesystem::path& path) const;
     std::shared_ptr<const std::string> find_shared(const std::filesystem::path& path) const;
+    // How the text held for `path` differs from the one it replaced, when set_shared was told; else null.
+    const TextRevision* revision(const std::filesystem::path& path) const;
     bool empty() const { return texts_.empty(); }
     // keyed by key()
     const std::map<std::filesystem::path, std::shared_ptr<const std::string>>& texts() const { return texts_; }
@@ -33,6 +51,7 @@ public:
 
 private:
     std::map<std::filesystem::path, std::shared_ptr<const std::string>> texts_;
+    std::map<std::filesystem::path, TextRevision> revisions_;  // keyed by key(); only texts set with one
 };
 
 // The file access the readers use: the overlay's text when it holds the path, else the disk's.

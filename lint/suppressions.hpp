@@ -45,7 +45,13 @@ bool parse_suppression(std::string_view comment, grammar::FileId file, std::uint
 // Drops the diagnostics that directives silence, then adds DK026 for every directive item that
 // silenced nothing and DK028 for malformed directives. Keeps the diagnostics sorted by location.
 // `format` says which lines are comments and which start blocks.
+// `marker_free` (optional, by file id): files known to hold no directive are skipped (true on the
+// way in: an editor's re-check knows it of a 100 MB text it read before, edited in a few lines), and
+// on the way out it says of every file whether it holds none.
 void apply_suppressions(const grammar::SourceMap& sources, std::vector<diag::Diagnostic>& diagnostics,
-                        grammar::DeckFormat format = grammar::DeckFormat::LsDyna);
+                        grammar::DeckFormat format = grammar::DeckFormat::LsDyna,
+                        std::vector<bool>* marker_free = nullptr);
+// Whether `text` can hold a directive (the marker every directive starts with occurs in it).
+bool may_hold_suppressions(std::string_view text);
 
 }  // namespace sphdeck::lint

@@ -32,6 +32,22 @@ DocumentText::DocumentText(std::shared_ptr<const std::string> text) : base_(std:
     if (!base_) base_ = std::make_shared<const std::string>();
     split_into_chunks(*base_, chunks_, nullptr);
     if (chunks_.empty()) chunks_.push_back(Chunk{});
+    since_base_ = Kept{base_->size(), base_->size()};
+}
+
+DocumentText::DocumentText(std::shared_ptr<std::string> text) : DocumentText(std::shared_ptr<const std::string>(text)) {
+    own_base_ = std::move(text);
+}
+
+void DocumentText::Kept::changed(std::size_t begin, std::size_t end, std::size_t size) {
+    prefix = std::min(prefix, begin);
+    suffix = std::min(suffix, size - end);
+}
+
+std::size_t DocumentText::offset_of(Place place) const {
+    std::size_t offset = place.offset;
+    for (std::size_t k = 0; k < place.chunk; ++k) offset += chunks_[k].text.size();
+    return offset;
 }
 
 // Cuts `text` after a '\n' every kChunkBytes or so: every chunk but the last ends with '\n'.
@@ -82,6 +98,7 @@ bool DocumentText::apply(const nlohmann::json& change) {
     changed_ = true;
     const std::string& inserted = *event->text;
     if (event->whole) {
+        since_base_ = since_spare_ = Kept{};
         auto owner = std::make_shared<std::string>(inserted);
         base_.reset();  // no chunk views it any more
         chunks_.clear();
@@ -92,6 +109,9 @@ bool DocumentText::apply(const nlohmann::json& change) {
     Place from = place_of(event->start.line, event->start.character);
     Place to = place_of(event->end.line, event->end.character);
     if (to.chunk < from.chunk || (to.chunk == from.chunk && to.offset < from.offset)) std::swap(from, to);
+    const std::size_t before = size(), begin = offset_of(from), end = offset_of(to);
+    since_base_.changed(begin, end, before);
+    since_spare_.changed(begin, end, before);
     // The chunks the range touches are rebuilt; followers join them while the result is small, so
     // deletions do not leave a trail of tiny chunks.
     std::size_t last = to.chunk;
@@ -123,8 +143,68 @@ std::string DocumentText::joined() const {
     return out;
 }
 
+void DocumentText::copy_into(std::string& target, std::size_t begin, std::size_t end) const {
+    std::size_t offset = 0;
+    for (const Chunk& chunk : chunks_) {
+        const std::size_t chunk_end = offset + chunk.text.size();
+        if (chunk_end > begin && offset < end) {
+            const std::size_t from = std::max(begin, offset), to = std::min(end, chunk_end);
+            std::memcpy(target.data() + from, chunk.text.data() + (from - offset), to - from);
+        }
+        if (chunk_end >= end) break;
+        offset = chunk_end;
+    }
+}
+
+// `target` held the text `kept` counts from; it becomes the text now: the bytes after the kept
+// prefix move with the length's change, and only those between are copied from the chunks.
+void DocumentText::patch(std::string& target, Kept kept, const DocumentText& now) {
+    const std::size_t old_size = target.size(), new_size = now.size();
+    const std::size_t shorter = std::min(old_size, new_size);
+    const std::size_t prefix = std::min(kept.prefix, shorter);
+    const std::size_t suffix = std::min(kept.suffix, shorter - prefix);
+    if (new_size > old_size) target.resize(new_size);
+    if (new_size != old_size && suffix > 0)
+        std::memmove(target.data() + new_size - suffix, target.data() + old_size - suffix, suffix);
+    if (new_size < old_size) target.resize(new_size);
+    now.copy_into(target, prefix, new_size - suffix);
+}
+
+DocumentText::Joined DocumentText::join_for_check() {
+    const std::size_t total = size();
+    std::shared_ptr<std::string> text;
+    if (spare_ && spare_.use_count() == 1) {  // nothing reads the spare any more: patched, not rebuilt
+        text = std::move(spare_);
+        patch(*text, since_spare_, *this);
+    } else {
+        text = std::make_shared<std::string>();
+        text->reserve(total + total / 64 + 4096);  // room to grow, so that a patch seldom reallocates
+        for (const Chunk& chunk : chunks_) text->append(chunk.text);
+    }
+    Joined out;
+    if (base_)  // none after a change of the whole text
+        out.revision = grammar::TextRevision{base_->data(), base_->size(), since_base_.prefix, since_base_.suffix};
+    spare_ = std::move(own_base_);  // null when the base was the opened text: the next join builds afresh
+    since_spare_ = since_base_;
+    own_base_ = text;
+    base_ = text;
+    std::size_t offset = 0;
+    for (Chunk& chunk : chunks_) {  // the same lengths: every chunk views the new text
+        chunk.text = std::string_view(base_->data() + offset, chunk.text.size());
+        chunk.owned.reset();
+        offset += chunk.text.size();
+    }
+    since_base_ = Kept{total, total};
+    changed_ = false;
+    out.text = std::move(text);
+    return out;
+}
+
 void DocumentText::rebase(std::shared_ptr<const std::string> text) {
+    own_base_.reset();
+    spare_.reset();  // what it kept of the spare is not known for a text from elsewhere
     base_ = std::move(text);
+    since_base_ = Kept{base_->size(), base_->size()};
     std::size_t offset = 0;
     for (Chunk& chunk : chunks_) {
         if (offset + chunk.text.size() > base_->size()) break;  // not the joined text: split it anew below

@@ -2,18 +2,25 @@
 // in proportion to the change and the chunk it falls in, not to the document: finding its line walks
 // the chunks' line counts, not the text, and only the chunks it touches are rebuilt. Unedited chunks
 // view the text the document was opened (or last joined) with, without a copy. The readers want one
-// contiguous buffer: joined() builds it only when asked, once per check, and a burst of changes between
-// two checks costs no pass over the text at all (lsp::Workspace joins at flush, before its check).
+// contiguous buffer: join_for_check() makes it once per check, and a burst of changes between two
+// checks costs no pass over the text at all (lsp::Workspace joins at flush, before its check).
+// Joining costs in proportion to the changes too: the buffer of the check before last, once nothing
+// reads it any more, is patched where the text changed since (two buffers take turns; a change of
+// the text's length also moves the bytes after it), and the re-check is told which bytes may differ
+// (grammar::TextRevision) instead of comparing 100 MB texts.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "grammar/file_overlay.hpp"
 
 namespace sphdeck::lsp {
 
@@ -21,6 +28,8 @@ class DocumentText {
 public:
     // Views `text` (shared, never copied) until a change touches it.
     explicit DocumentText(std::shared_ptr<const std::string> text);
+    // The same for a text only readers share: once none reads it, the joins take turns patching it.
+    explicit DocumentText(std::shared_ptr<std::string> text);
 
     // Applies one LSP change event with the rules of lsp/text_change.hpp (UTF-16 positions, lines
     // split at '\n', clamped to the text). False (and the text unchanged) when it is not one.
@@ -30,6 +39,13 @@ public:
     bool changed() const { return changed_; }
     // The whole text as a new string (one pass over the chunks).
     std::string joined() const;
+    // The whole text for a check: the chunks view it from now on. `revision`: how it differs from the
+    // text of the last join or the opened text (none after a change of the whole text).
+    struct Joined {
+        std::shared_ptr<const std::string> text;
+        std::optional<grammar::TextRevision> revision;
+    };
+    Joined join_for_check();
     // After the joined text was stored as `text` (the same bytes): the chunks view it from now on and
     // the edited chunks' own copies are freed.
     void rebase(std::shared_ptr<const std::string> text);
@@ -49,11 +65,23 @@ private:
         std::size_t offset = 0;
     };
     Place place_of(std::uint32_t line, std::uint32_t character) const;
+    std::size_t offset_of(Place place) const;  // from the text's start
+    // Bytes a text shares with an earlier one at its start and end (at least: a bound kept per change).
+    struct Kept {
+        std::size_t prefix = 0, suffix = 0;
+        void changed(std::size_t begin, std::size_t end, std::size_t size);  // bytes [begin, end) of `size` replaced
+    };
+    void copy_into(std::string& target, std::size_t begin, std::size_t end) const;  // chunk bytes [begin, end)
+    static void patch(std::string& target, Kept kept, const DocumentText& now);
     void split_into_chunks(std::string_view text, std::vector<Chunk>& out, const std::shared_ptr<std::string>& owner);
 
     std::shared_ptr<const std::string> base_;
     std::vector<Chunk> chunks_;  // never empty; each but the last ends with '\n'
     bool changed_ = false;
+    // Since the last join: what the text keeps of `base_` (told to the re-check) and of `spare_`.
+    Kept since_base_, since_spare_;
+    std::shared_ptr<std::string> own_base_;  // `base_` when a join made it (else null: the opened text)
+    std::shared_ptr<std::string> spare_;     // the base before it, patched into the next join's when free
 };
 
 }  // namespace sphdeck::lsp

@@ -61,8 +61,9 @@ bool Workspace::open(const std::string& uri, std::string text, std::int64_t vers
     const fs::path path = path_from_uri(uri);
     if (path.empty()) return false;
     const fs::path key = engine::Documents::key(path);
-    documents_.set(key, std::move(text));
-    open_[key] = OpenDocument{uri, version, opened_++, std::make_shared<DocumentText>(documents_.find_shared(key))};
+    auto shared = std::make_shared<std::string>(std::move(text));
+    documents_.set_shared(key, shared);
+    open_[key] = OpenDocument{uri, version, opened_++, std::make_shared<DocumentText>(std::move(shared))};
     dirty_.insert(key);
     return true;
 }
@@ -85,8 +86,8 @@ bool Workspace::change(const std::string& uri, std::int64_t version, const nlohm
 void Workspace::join_changed_texts() {
     for (auto& [key, document] : open_) {
         if (!document.text || !document.text->changed()) continue;
-        documents_.set(key, document.text->joined());
-        document.text->rebase(documents_.find_shared(key));
+        DocumentText::Joined joined = document.text->join_for_check();
+        documents_.set_shared(key, std::move(joined.text), joined.revision);
     }
 }
 

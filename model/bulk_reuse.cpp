@@ -40,6 +40,8 @@ const DecodedBulkBlock* same_bulk_block(const BulkReuse& previous, const grammar
             if (before.begin >= changed->old_end && now.begin - changed->new_end == before.begin - changed->old_end &&
                 now.begin >= changed->new_end)
                 return &before;
+            // Bytes the edit replaced lie in it: not the same (no compare of a 100 MB block to find it).
+            if (before.begin < changed->old_end && changed->begin < before.end) continue;
         }
         const std::string_view old_text = previous.deck.sources.file(before.file).text.view();
         if (before.end > old_text.size() || now.end > text.size()) continue;

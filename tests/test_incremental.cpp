@@ -298,7 +298,18 @@ TEST_CASE("deck splice: an edit's lines read again and spliced in equal a full r
         CAPTURE(edit);
         CAPTURE(text);
         grammar::RawDeck full = grammar::read_deck_buffer(text, name);
-        if (auto splice = grammar::splice_edit(previous, grammar::SourceText(text))) {
+        // What an editor tells of the change (lsp::DocumentText): fewer kept bytes than there are, at
+        // times none; the splice then reads what it would after comparing the texts, or reads in full.
+        const std::string_view before = previous.sources.file(0).text.view();
+        std::size_t prefix = 0, suffix = 0;
+        while (prefix < std::min(before.size(), text.size()) && before[prefix] == text[prefix]) ++prefix;
+        while (suffix < std::min(before.size(), text.size()) - prefix &&
+               before[before.size() - 1 - suffix] == text[text.size() - 1 - suffix])
+            ++suffix;
+        const grammar::TextRevision told{before.data(), before.size(), prefix - prefix * (edit % 3) / 3,
+                                         suffix - suffix * (edit % 4) / 4};
+        auto splice = grammar::splice_edit(previous, grammar::SourceText(text), edit % 2 ? &told : nullptr);
+        if (splice) {
             ++spliced;
             const grammar::RawDeck& deck = splice->deck;
             REQUIRE(deck.lines.size() == full.lines.size());
@@ -397,6 +408,43 @@ TEST_CASE(
         CHECK(model.particles.mass == full.model.particles.mass);
         CHECK(model.particles.line == full.model.particles.line);
     }
+}
+
+TEST_CASE("recheck: a suppression directive typed into a big block is seen, and removed again, as by a full check") {
+    // The re-check looks for directives only in the lines an edit spliced in when the last text held none.
+    const std::filesystem::path path = std::filesystem::absolute("incremental_directive_lattice.k");
+    const std::string uri = lsp::uri_from_path(path);
+    nlohmann::json published;
+    lsp::Workspace workspace([&](const nlohmann::json& params) {
+        if (params["uri"] == uri) published = params["diagnostics"];
+    });
+    std::vector<std::string> lines = split_lines(lattice_deck(91));
+    workspace.open(uri, join_lines(lines), 1);
+    workspace.flush();
+    const auto node = static_cast<std::uint32_t>(std::find(lines.begin(), lines.end(), "*NODE") - lines.begin());
+    const auto change_at = [](std::uint32_t l0, std::uint32_t l1, const std::string& text) {
+        return nlohmann::json::array(
+            {{{"range", {{"start", {{"line", l0}, {"character", 0}}}, {"end", {{"line", l1}, {"character", 0}}}}},
+              {"text", text}}});
+    };
+    const std::string directive = "$ sphdeck: disable=SPH110 -- test";
+    // Typed in, then a node line edited below it (the text holds a directive now), then removed.
+    lines.insert(lines.begin() + node + 500, directive);
+    REQUIRE(workspace.change(uri, 2, change_at(node + 500, node + 500, directive + "\n")));
+    workspace.flush();
+    nlohmann::json expected = full_check(path, join_lines(lines));
+    CHECK(std::any_of(expected.begin(), expected.end(), [](const nlohmann::json& d) { return d["code"] == "DK026"; }));
+    CHECK(published == expected);
+    lines[node + 900][12] = lines[node + 900][12] == '9' ? '8' : '9';  // a digit of x
+    REQUIRE(workspace.change(uri, 3, change_at(node + 900, node + 901, lines[node + 900] + "\n")));
+    workspace.flush();
+    CHECK(published == full_check(path, join_lines(lines)));
+    lines.erase(lines.begin() + node + 500);
+    REQUIRE(workspace.change(uri, 4, change_at(node + 500, node + 501, "")));
+    workspace.flush();
+    expected = full_check(path, join_lines(lines));
+    CHECK(std::none_of(expected.begin(), expected.end(), [](const nlohmann::json& d) { return d["code"] == "DK026"; }));
+    CHECK(published == expected);
 }
 
 namespace {
