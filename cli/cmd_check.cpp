@@ -28,6 +28,7 @@
 #include "edit/fix_session.hpp"
 #include "engine/check.hpp"
 #include "engine/check_named.hpp"
+#include "engine/shared_preview.hpp"
 #include "engine/config_file.hpp"
 #include "lint/rule_catalog.hpp"
 
@@ -229,6 +230,7 @@ int run_check(const CheckArgs& args) {
     FixTotals fix_totals;
     engine::Documents fixed_texts;  // the texts --fix and --diff mended, seen by the next decks
     grammar::FileCache file_cache;  // each file read once in the run, whatever number of decks include it
+    engine::RunShare run_share;     // and its bulk blocks decoded once, its preview computed once
     const bool fixing = args.fix || args.diff;
     bool failed = false;
     const bool text_format = args.format == "full" || args.format == "concise";
@@ -248,6 +250,7 @@ int run_check(const CheckArgs& args) {
                 out.checked.push_back(fix_deck(inputs[i].path, fixed_texts, options, args, fix_totals));
             } else {
                 options.reader.cache = &file_cache;
+                if (inputs.size() > 1) options.share = &run_share;  // a deck alone keeps no copy of its mesh
                 out = check_named_file(inputs[i], options, args);
             }
         } catch (const std::exception& e) {

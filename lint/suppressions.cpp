@@ -205,13 +205,14 @@ bool parse_suppression(std::string_view comment, grammar::FileId file, std::uint
 }
 
 void apply_suppressions(const grammar::SourceMap& sources, std::vector<diag::Diagnostic>& diagnostics,
-                        grammar::DeckFormat format) {
+                        grammar::DeckFormat format, const DirectiveScan& may_hold_directives) {
     const LineKinds kinds{format == grammar::DeckFormat::Radioss};
     std::vector<Placed> placed;
     std::vector<diag::Diagnostic> problems;
     for (grammar::FileId f = 0; f < sources.size(); ++f) {
         const grammar::SourceFile& source = sources.file(f);
-        if (!source.text.contains(kMarker)) continue;  // the common case: no directive
+        const bool marked = may_hold_directives ? may_hold_directives(source, kMarker) : source.text.contains(kMarker);
+        if (!marked) continue;  // the common case: no directive
         place_directives(source, f, kinds, placed, problems);
     }
     if (placed.empty() && problems.empty()) return;

@@ -14,6 +14,7 @@
 // a `# sphdeck:` line there is data and no directive.
 #pragma once
 
+#include <functional>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -45,7 +46,12 @@ bool parse_suppression(std::string_view comment, grammar::FileId file, std::uint
 // Drops the diagnostics that directives silence, then adds DK026 for every directive item that
 // silenced nothing and DK028 for malformed directives. Keeps the diagnostics sorted by location.
 // `format` says which lines are comments and which start blocks.
+// `may_hold_directives` (optional) says whether a file's text holds `marker` (the word every directive
+// starts with) at all, else the text is searched: the decks of one run search a shared include once
+// (engine/shared_preview.hpp).
+using DirectiveScan = std::function<bool(const grammar::SourceFile&, std::string_view marker)>;
 void apply_suppressions(const grammar::SourceMap& sources, std::vector<diag::Diagnostic>& diagnostics,
-                        grammar::DeckFormat format = grammar::DeckFormat::LsDyna);
+                        grammar::DeckFormat format = grammar::DeckFormat::LsDyna,
+                        const DirectiveScan& may_hold_directives = {});
 
 }  // namespace sphdeck::lint
