@@ -54,8 +54,7 @@ void BulkProvenance::add(std::shared_ptr<const SharedBulkBlock> block) {
     (block->particles ? particles : nodes).push_back(std::move(block));
 }
 
-std::shared_ptr<const SharedBulkBlock> SharedBulkBlocks::find(const grammar::RawDeck& deck,
-                                                              const grammar::Block& block,
+std::shared_ptr<const SharedBulkBlock> SharedBulkBlocks::find(const grammar::RawDeck& deck, const grammar::Block& block,
                                                               const keywords::CardSpec& card) const {
     const std::optional<BlockBytes> bytes = bytes_of(deck, block);
     if (!bytes) return nullptr;
@@ -110,6 +109,8 @@ std::shared_ptr<const SharedBulkBlock> SharedBulkBlocks::offer(const grammar::Ra
     const std::size_t size = made->bytes();
     if (size > budget_) return nullptr;
     const std::lock_guard<std::mutex> lock(mutex_);
+    for (const auto& kept : blocks_)  // kept by another deck (--jobs) while this one copied its columns
+        if (same_key(*kept, block, card, *bytes) && same_bytes(*kept, *bytes)) return kept;
     while (held_ + size > budget_ && !blocks_.empty()) {
         held_ -= blocks_.front()->bytes();
         blocks_.pop_front();

@@ -29,15 +29,15 @@ struct SharedBulkBlock {
     const keywords::CardSpec* card = nullptr;
     grammar::CardFormat format = grammar::CardFormat::Standard;
     std::uint32_t line_count = 0;
-    grammar::SourceText text;         // the file the block was read from: kept, so its bytes stay put
-    std::size_t begin = 0, end = 0;   // the block's bytes in `text`
-    bool particles = false;           // *ELEMENT_SPH (else *NODE)
-    std::vector<long long> ids;       // node ids, or the particles' nodes
-    std::vector<double> x, y, z;      // nodes only
-    std::vector<long long> part;      // particles only
-    std::vector<double> mass;         // particles only
-    std::uint8_t volume = 0;          // particles only: *ELEMENT_SPH_VOLUME
-    std::size_t bytes() const;        // what its columns hold
+    grammar::SourceText text;        // the file the block was read from: kept, so its bytes stay put
+    std::size_t begin = 0, end = 0;  // the block's bytes in `text`
+    bool particles = false;          // *ELEMENT_SPH (else *NODE)
+    std::vector<long long> ids;      // node ids, or the particles' nodes
+    std::vector<double> x, y, z;     // nodes only
+    std::vector<long long> part;     // particles only
+    std::vector<double> mass;        // particles only
+    std::uint8_t volume = 0;         // particles only: *ELEMENT_SPH_VOLUME
+    std::size_t bytes() const;       // what its columns hold
 };
 
 // The shared blocks a model's nodes and particles were taken from or kept as, in model order. When

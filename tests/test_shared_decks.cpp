@@ -75,7 +75,7 @@ TEST_CASE("shared decks: load cases over one mesh give the findings of each chec
     dir.write("mass.k", mesh("&mass"));   // a parameter in the block: each deck decodes it
     const std::vector<std::string> decks = {
         dir.write("a.k", load_case("0.001", "1.2", "mesh.k\n")),
-        dir.write("b.k", load_case("0.002", "1.2", "copy.k\n")),  // another end time: the same preview
+        dir.write("b.k", load_case("0.002", "1.2", "copy.k\n")),         // another end time: the same preview
         dir.write("c.k", load_case("0.003", "3.0", "mesh.k\n", false)),  // part 2 undefined, another CSLH
         dir.write("e.k", load_case("0.005", "1.2", "mass.k\n", true, "*PARAMETER\nR mass        2.0e-6\n")),
     };
@@ -94,8 +94,8 @@ TEST_CASE("shared decks: load cases over one mesh give the findings of each chec
         CHECK(describe(engine::check_file(decks[i], options)) == alone[i]);
     }
     const model::SharedBulkBlocks::Counters counters = share.bulk.counters();
-    CHECK(counters.kept == 2);    // mesh.k's *NODE and *ELEMENT_SPH; mass.k's particles name &mass
-    CHECK(counters.shared == 5);  // b and c take both, e its nodes
+    CHECK(counters.kept == 2);            // mesh.k's *NODE and *ELEMENT_SPH; mass.k's particles name &mass
+    CHECK(counters.shared == 5);          // b and c take both, e its nodes
     CHECK(share.previews.shared() == 1);  // b; c reads other parts and another smoothing length
 }
 
