@@ -61,7 +61,8 @@ std::vector<fs::path> named_includes(const fs::path& deck) {
     for (std::string raw; std::getline(in, raw);) {
         const std::string line = trimmed(raw);
         if (line.empty() || line[0] == '$') continue;
-        const std::string lowered = lower(line);
+        if (line[0] != '#' && line[0] != '*' && !in_include) continue;  // a data line: nothing to lower
+        const std::string lowered = line[0] == '#' || line[0] == '*' ? lower(line) : std::string();
         if (lowered.rfind("#include", 0) == 0) {
             out.push_back(deck.parent_path() / trimmed(line.substr(8)));
             continue;

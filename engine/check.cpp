@@ -8,6 +8,7 @@
 #include "engine/mended_consequences.hpp"
 #include "engine/preview_after_edit.hpp"
 #include "engine/recheck.hpp"
+#include "engine/shared_preview.hpp"
 #include "grammar/deck_splice.hpp"
 #include "grammar/read_deck.hpp"
 #include "preproc/preview.hpp"
@@ -23,11 +24,13 @@ namespace sphdeck::engine {
 namespace {
 // The LS-DYNA model of `result.deck`; a re-check copies the bulk blocks the edit left alone, and every
 // check notes those the next may copy.
-model::Model build_dyna_model(CheckResult& result, const CheckResult* previous, const grammar::SplicedLines* changed) {
+// `share`: the run's shared bulk blocks (null: none); `provenance` receives those the model was made of.
+model::Model build_dyna_model(CheckResult& result, const CheckResult* previous, const grammar::SplicedLines* changed,
+                              RunShare* share, model::BulkProvenance& provenance) {
     std::optional<model::BulkReuse> reuse;
     if (previous) reuse.emplace(model::BulkReuse{previous->deck, previous->model, previous->bulk_blocks, changed});
     return model::build_model(result.deck, result.diagnostics, &result.summary, reuse ? &*reuse : nullptr,
-                              result.bulk_blocks);
+                              result.bulk_blocks, share ? &share->bulk : nullptr, &provenance);
 }
 
 // read → model → rules, the findings of each line's cause folded into it.
@@ -38,18 +41,29 @@ CheckResult analyse(grammar::RawDeck deck, const CheckOptions& options, const Ch
     CheckResult result;
     result.deck = std::move(deck);
     result.diagnostics = result.deck.diagnostics;
+    model::BulkProvenance provenance;
     result.model = grammar::format_of(result.deck) == grammar::DeckFormat::Radioss
                        ? model::build_radioss_model(result.deck, result.diagnostics, &result.summary)
-                       : build_dyna_model(result, previous, changed);
+                       : build_dyna_model(result, previous, changed, options.share, provenance);
     lint::RuleContext context(result.model, result.deck, options.rules, result.diagnostics);
+    if (options.share) context.use_lookups(options.share->lookups.find(result.model, provenance));
     if (previous && previous->preview) {
         const bool arrays = options.rules.preview_arrays;
         lint::run_rules(context, [previous, arrays](const model::Model& model) {
             return preview_after_edit(*previous, model, arrays);  // kept, followed or new
         });
+    } else if (options.share) {
+        // The preview another deck of the run computed from the same inputs (engine/shared_preview.hpp).
+        const bool arrays = options.rules.preview_arrays, counts = options.rules.keep_preview;
+        lint::run_rules(context, [&](const model::Model& model) {
+            return options.share->previews.preview(model, provenance, arrays, counts, [&](const model::Model& m) {
+                return lint::compute_rules_preview(m, arrays, counts);
+            });
+        });
     } else {
         lint::run_rules(context);
     }
+    if (options.share) options.share->lookups.keep(result.model, provenance, context.lookups());
     lint::point_to_misspelt_keywords(result.diagnostics);
     result.preview = std::move(context.preview);
     lint::fold_into_causes(result.deck, result.diagnostics);
@@ -96,8 +110,13 @@ CheckResult finish(grammar::RawDeck deck, const CheckOptions& options, const Rer
         result.marker_free = {
             !lint::may_hold_suppressions(text.substr(changed->begin, changed->new_end - changed->begin))};
     }
+    lint::DirectiveScan searched_once;  // a run's shared includes are searched once (engine/shared_preview.hpp)
+    if (options.share)
+        searched_once = [share = options.share](const grammar::SourceFile& file, std::string_view marker) {
+            return share->searches.contains(file.text, marker);
+        };
     lint::apply_suppressions(result.deck.sources, result.diagnostics, grammar::format_of(result.deck),
-                             &result.marker_free);
+                             &result.marker_free, searched_once);
     lint::apply_rule_settings(options.config, result.diagnostics);
     // After the settings: an ignored REF003 is not counted; the summary obeys them in its turn.
     if (lint::is_include_fragment(result.deck)) {

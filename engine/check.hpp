@@ -23,11 +23,15 @@
 
 namespace sphdeck::engine {
 
+struct RunShare;  // engine/shared_preview.hpp
+
 struct CheckOptions {
     grammar::dyna::ReaderOptions reader;  // its `overlay` is set by check_deck from the documents
     lint::RuleOptions rules;
     lint::Config
         config;  // sphdeck.toml merged with the command line; engine::options_for copies the solver into `rules`
+    // What the decks of one run share: decoded bulk blocks and geometry previews (null: nothing shared).
+    RunShare* share = nullptr;
 };
 
 struct CheckResult {

@@ -82,10 +82,11 @@ bool same_particle_places(const model::Model& before, const model::Model& now) {
            before.nodes.y == now.nodes.y && before.nodes.z == now.nodes.z && p.node == q.node && p.part == q.part;
 }
 
-bool same_geometry_settings(const model::Model& before, const model::Model& now) {
+namespace {
+// same_geometry_settings but for the controls.
+bool same_settings_but_controls(const model::Model& before, const model::Model& now) {
     if (before.radioss || now.radioss) return false;
-    return same(before.controls, now.controls) &&
-           all_same(before.sections, now.sections, [](const auto& a, const auto& b) { return same(a, b); }) &&
+    return all_same(before.sections, now.sections, [](const auto& a, const auto& b) { return same(a, b); }) &&
            all_same(before.parts, now.parts, [](const auto& a, const auto& b) { return same(a, b); }) &&
            all_same(before.materials, now.materials,
                     [&](const model::Material& a, const model::Material& b) {
@@ -99,6 +100,16 @@ bool same_geometry_settings(const model::Model& before, const model::Model& now)
            before.symmetry_planes.size() == now.symmetry_planes.size() &&
            all_same(before.symmetry_planes, now.symmetry_planes,
                     [](const auto& a, const auto& b) { return a.tail == b.tail && a.head == b.head; });
+}
+}  // namespace
+
+bool same_geometry_settings(const model::Model& before, const model::Model& now) {
+    return same(before.controls, now.controls) && same_settings_but_controls(before, now);
+}
+
+bool same_preview_settings(const model::Model& before, const model::Model& now) {
+    return same(before.controls.sph, now.controls.sph) && same(before.controls.tssfac, now.controls.tssfac) &&
+           same_settings_but_controls(before, now);
 }
 
 }  // namespace sphdeck::engine

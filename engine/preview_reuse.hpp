@@ -18,6 +18,11 @@ bool same_geometry_inputs(const model::Model& before, const model::Model& now);
 // there are changed, the edit a kept preview can follow (preproc/preview_follow.hpp).
 bool same_geometry_settings(const model::Model& before, const model::Model& now);
 
+// same_geometry_settings with the controls compared only where compute_preview reads them (*CONTROL_SPH
+// and TSSFAC): the load cases of one run, which differ in their end time, share one preview
+// (engine/shared_preview.hpp).
+bool same_preview_settings(const model::Model& before, const model::Model& now);
+
 // Whether the particles, their parts and the places of their nodes are the same (masses aside): what
 // the nearest distances and the coincident pairs depend on (preproc::recompute_settings).
 bool same_particle_places(const model::Model& before, const model::Model& now);

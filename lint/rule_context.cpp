@@ -19,25 +19,26 @@ diag::Diagnostic& RuleContext::report(std::string_view code, diag::Severity seve
 }
 
 const model::IdIndex& RuleContext::node_index() const {
-    if (!node_index_) node_index_ = std::make_unique<model::IdIndex>(model.nodes.id);
+    if (!node_index_) node_index_ = std::make_shared<const model::IdIndex>(model.nodes.id);
     return *node_index_;
 }
 
 const model::IdIndex& RuleContext::particle_index() const {
-    if (!particle_index_) particle_index_ = std::make_unique<model::IdIndex>(model.particles.node);
+    if (!particle_index_) particle_index_ = std::make_shared<const model::IdIndex>(model.particles.node);
     return *particle_index_;
 }
 
 const std::vector<std::uint32_t>& RuleContext::particle_nodes() const {
     if (particle_nodes_) return *particle_nodes_;
     const model::IdIndex& nodes = node_index();
-    particle_nodes_ = std::make_unique<std::vector<std::uint32_t>>(model.particles.size(), no_node);
-    auto& out = *particle_nodes_;
+    auto table = std::make_shared<std::vector<std::uint32_t>>(model.particles.size(), no_node);
+    auto& out = *table;
     const std::size_t n = out.size();
 #pragma omp parallel for schedule(static) if (n > 65536)
     for (std::size_t i = 0; i < n; ++i)
         if (auto k = nodes.find(model.particles.node[i])) out[i] = static_cast<std::uint32_t>(*k);
-    return out;
+    particle_nodes_ = std::move(table);
+    return *particle_nodes_;
 }
 
 namespace {

@@ -72,10 +72,22 @@ public:
     // The geometry rules' preview, when RuleOptions::keep_preview asked for it (else null).
     std::shared_ptr<const preproc::Preview> preview;
 
+    // The three lookups above, as built so far: what another deck of the same node ids and particle
+    // nodes may use instead of building them (engine/shared_preview.hpp), given before the rules run.
+    struct Lookups {
+        std::shared_ptr<const model::IdIndex> node_index, particle_index;
+        std::shared_ptr<const std::vector<std::uint32_t>> particle_nodes;
+    };
+    Lookups lookups() const { return {node_index_, particle_index_, particle_nodes_}; }
+    void use_lookups(const Lookups& built) {
+        node_index_ = built.node_index, particle_index_ = built.particle_index;
+        particle_nodes_ = built.particle_nodes;
+    }
+
 private:
     std::vector<diag::Diagnostic>& out_;
-    mutable std::unique_ptr<model::IdIndex> node_index_, particle_index_;
-    mutable std::unique_ptr<std::vector<std::uint32_t>> particle_nodes_;
+    mutable std::shared_ptr<const model::IdIndex> node_index_, particle_index_;
+    mutable std::shared_ptr<const std::vector<std::uint32_t>> particle_nodes_;
     using SetIndex = std::unordered_map<model::Id, const model::IdSet*>;
     mutable std::unique_ptr<SetIndex> node_sets_, part_sets_;
 };

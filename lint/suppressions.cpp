@@ -207,7 +207,8 @@ bool parse_suppression(std::string_view comment, grammar::FileId file, std::uint
 bool may_hold_suppressions(std::string_view text) { return text.find(kMarker) != std::string_view::npos; }
 
 void apply_suppressions(const grammar::SourceMap& sources, std::vector<diag::Diagnostic>& diagnostics,
-                        grammar::DeckFormat format, std::vector<bool>* marker_free) {
+                        grammar::DeckFormat format, std::vector<bool>* marker_free,
+                        const DirectiveScan& may_hold_directives) {
     const LineKinds kinds{format == grammar::DeckFormat::Radioss};
     std::vector<Placed> placed;
     std::vector<diag::Diagnostic> problems;
@@ -215,7 +216,8 @@ void apply_suppressions(const grammar::SourceMap& sources, std::vector<diag::Dia
     for (grammar::FileId f = 0; f < sources.size(); ++f) {
         if (marker_free && (*marker_free)[f]) continue;  // known to hold none
         const grammar::SourceFile& source = sources.file(f);
-        const bool none = !source.text.contains(kMarker);  // the common case: no directive
+        const bool none = !(may_hold_directives ? may_hold_directives(source, kMarker)
+                                                : source.text.contains(kMarker));  // the common case: no directive
         if (marker_free) (*marker_free)[f] = none;
         if (none) continue;
         place_directives(source, f, kinds, placed, problems);

@@ -14,6 +14,7 @@
 // a `# sphdeck:` line there is data and no directive.
 #pragma once
 
+#include <functional>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -47,10 +48,13 @@ bool parse_suppression(std::string_view comment, grammar::FileId file, std::uint
 // `format` says which lines are comments and which start blocks.
 // `marker_free` (optional, by file id): files known to hold no directive are skipped (true on the
 // way in: an editor's re-check knows it of a 100 MB text it read before, edited in a few lines), and
-// on the way out it says of every file whether it holds none.
+// on the way out it says of every file whether it holds none. `may_hold_directives` (optional) says
+// whether a file's text holds `marker` (the word every directive starts with) at all, else the text is
+// searched: the decks of one run search a shared include once (engine/shared_preview.hpp).
+using DirectiveScan = std::function<bool(const grammar::SourceFile&, std::string_view marker)>;
 void apply_suppressions(const grammar::SourceMap& sources, std::vector<diag::Diagnostic>& diagnostics,
                         grammar::DeckFormat format = grammar::DeckFormat::LsDyna,
-                        std::vector<bool>* marker_free = nullptr);
+                        std::vector<bool>* marker_free = nullptr, const DirectiveScan& may_hold_directives = {});
 // Whether `text` can hold a directive (the marker every directive starts with occurs in it).
 bool may_hold_suppressions(std::string_view text);
 

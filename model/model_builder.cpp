@@ -168,7 +168,7 @@ void ModelBuilder::Bulk::end(const grammar::Block&) {
 }
 
 bool ModelBuilder::Bulk::reuse(const grammar::Block& block, const keywords::CardSpec& card) {
-    if (!owner_.previous_) return false;
+    if (!owner_.previous_) return owner_.shared_ && reuse_shared(block, card);
     const DecodedBulkBlock* same = same_bulk_block(*owner_.previous_, owner_.deck_, block, card);
     if (!same) return false;
     const Model& before = owner_.previous_->model;
@@ -197,8 +197,35 @@ bool ModelBuilder::Bulk::reuse(const grammar::Block& block, const keywords::Card
     return true;
 }
 
+// The block as another deck of the run decoded it: its columns appended, its particles' lines its own.
+bool ModelBuilder::Bulk::reuse_shared(const grammar::Block& block, const keywords::CardSpec& card) {
+    std::shared_ptr<const SharedBulkBlock> kept = owner_.shared_->find(owner_.deck_, block, card);
+    if (!kept) return false;
+    const auto append = [](const auto& source, auto& target) {
+        target.insert(target.end(), source.begin(), source.end());
+    };
+    std::size_t slot = 0;
+    if (kept->particles) {
+        Particles& p = owner_.model_.particles;
+        slot = p.size();
+        append(kept->ids, p.node), append(kept->part, p.part), append(kept->mass, p.mass);
+        p.volume.resize(slot + kept->ids.size(), kept->volume);
+        p.line.resize(slot + kept->ids.size());
+        for (std::size_t i = 0; i < kept->ids.size(); ++i)
+            p.line[slot + i] = block.first_line + static_cast<std::uint32_t>(i);  // one particle a line
+    } else {
+        Nodes& n = owner_.model_.nodes;
+        slot = n.id.size();
+        append(kept->ids, n.id), append(kept->x, n.x), append(kept->y, n.y), append(kept->z, n.z);
+    }
+    owner_.decoded_bulk_.push_back(decoded_bulk_block(owner_.deck_, block, card, slot));
+    owner_.provenance_.add(std::move(kept));
+    return true;
+}
+
 void ModelBuilder::Bulk::decoded_cleanly(const grammar::Block& block, const keywords::CardSpec& card) {
     owner_.decoded_bulk_.push_back(decoded_bulk_block(owner_.deck_, block, card, base_));
+    if (owner_.shared_) owner_.provenance_.add(owner_.shared_->offer(owner_.deck_, block, card, owner_.model_, base_));
 }
 
 std::optional<BulkVisitor::Around> ModelBuilder::Bulk::reuse_around(const grammar::Block& block,
@@ -315,7 +342,14 @@ Model build_model(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& o
 
 Model build_model(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, DeckSummary* summary,
                   const BulkReuse* previous, std::vector<DecodedBulkBlock>& decoded) {
+    return build_model(deck, out, summary, previous, decoded, nullptr, nullptr);
+}
+
+Model build_model(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, DeckSummary* summary,
+                  const BulkReuse* previous, std::vector<DecodedBulkBlock>& decoded, SharedBulkBlocks* shared,
+                  BulkProvenance* provenance) {
     ModelBuilder builder(deck, previous);
+    builder.share_bulk_with(shared);
     DeckSummary s = check_deck(
         deck, out,
         [&](const grammar::Block& b, const keywords::KeywordMatch& m, const keywords::CardSpec& c,
@@ -324,6 +358,7 @@ Model build_model(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& o
     if (summary) *summary = s;
     Model model = builder.finish(out);
     decoded = builder.take_decoded_bulk();
+    if (provenance) *provenance = builder.provenance();
     return model;
 }
 

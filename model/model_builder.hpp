@@ -9,6 +9,7 @@
 #include "model/bulk_reuse.hpp"
 #include "model/deck_check.hpp"
 #include "model/model.hpp"
+#include "model/shared_bulk.hpp"
 
 namespace sphdeck::model {
 
@@ -30,6 +31,12 @@ public:
 
     // The bulk blocks decoded cleanly or copied, for the next re-check (after finish()).
     std::vector<DecodedBulkBlock> take_decoded_bulk() { return std::move(decoded_bulk_); }
+
+    // The run's shared bulk blocks (model/shared_bulk.hpp): a block kept there is copied from it, a
+    // block decoded cleanly is offered to it. Before the first card.
+    void share_bulk_with(SharedBulkBlocks* shared) { shared_ = shared; }
+    // The shared blocks the nodes and particles came from (after finish()).
+    const BulkProvenance& provenance() const { return provenance_; }
 
 private:
     // Writes each line's node or particle into a slot sized in advance; lines that are not exactly
@@ -56,6 +63,7 @@ private:
         };
         void end_nodes();
         void end_particles();
+        bool reuse_shared(const grammar::Block& block, const keywords::CardSpec& card);
 
         ModelBuilder& owner_;
         bool particles_ = false;
@@ -75,6 +83,8 @@ private:
     Bulk bulk_{*this};
     const BulkReuse* previous_ = nullptr;
     std::vector<DecodedBulkBlock> decoded_bulk_;
+    SharedBulkBlocks* shared_ = nullptr;
+    BulkProvenance provenance_;
 };
 
 // Reads the whole deck into a Model in one pass: decode + build. Diagnostics go to `out`.
@@ -84,5 +94,11 @@ Model build_model(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& o
 // the next re-check may copy.
 Model build_model(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, DeckSummary* summary,
                   const BulkReuse* previous, std::vector<DecodedBulkBlock>& decoded);
+
+// The same sharing the run's decoded bulk blocks (`shared`, may be null); `provenance` receives the
+// shared blocks the nodes and particles came from.
+Model build_model(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, DeckSummary* summary,
+                  const BulkReuse* previous, std::vector<DecodedBulkBlock>& decoded, SharedBulkBlocks* shared,
+                  BulkProvenance* provenance);
 
 }  // namespace sphdeck::model
