@@ -18,7 +18,7 @@ struct DiffArgs {
     std::vector<std::string> include_paths;
 };
 
-std::string shown(const nlohmann::ordered_json& value) {
+std::string shown_json(const nlohmann::ordered_json& value) {
     if (value.is_null()) return "(none)";
     if (value.is_string()) return value.get<std::string>();
     return value.dump();
@@ -60,7 +60,7 @@ void print_diff(const engine::DeckDiff& diff) {
         } else {
             fmt::print("{} ({} -> {})\n", name, diff_location(k.before_at), diff_location(k.after_at));
             for (const auto& f : k.fields)
-                fmt::print("  {}: {} -> {}  ({} -> {})\n", f.field, shown(f.before), shown(f.after),
+                fmt::print("  {}: {} -> {}  ({} -> {})\n", f.field, shown_json(f.before), shown_json(f.after),
                            diff_location(f.before_at), diff_location(f.after_at));
         }
     }

@@ -123,7 +123,7 @@ std::string condition_text(const keywords::CardCondition& c) {
     return out;
 }
 
-std::string card_notes(const CardSpec& card, std::size_t index, std::size_t count, std::size_t group) {
+std::string dyna_card_notes(const CardSpec& card, std::size_t index, std::size_t count, std::size_t group) {
     std::vector<std::string> notes{std::string(keywords::to_string(card.repeat))};
     if (card.repeat == keywords::CardRepeat::Repeated) notes.back() += ": one line per item until the next keyword";
     if (card.present_if) notes.push_back("read only when " + condition_text(*card.present_if));
@@ -162,7 +162,7 @@ void print_keyword(const KeywordMatch& match, CardFormat format) {
             fmt::print("\n(further lines are not checked: their layout depends on values or on the solver version)\n");
             break;
         }
-        fmt::print("\n{} ({})\n", card.name, card_notes(card, i, cards.size(), group));
+        fmt::print("\n{} ({})\n", card.name, dyna_card_notes(card, i, cards.size(), group));
         if (!card.doc.empty()) fmt::print("  {}\n", card.doc);
         print_card_table(card, format);
     }

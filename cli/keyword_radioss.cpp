@@ -44,7 +44,7 @@ std::string link_note(char link) {
     return defined_by.empty() ? std::string() : fmt::format("id of a {}", defined_by);
 }
 
-std::string card_notes(const rad::KeywordSpec& keyword, const rad::FormatSpec& format, std::size_t i) {
+std::string radioss_card_notes(const rad::KeywordSpec& keyword, const rad::FormatSpec& format, std::size_t i) {
     const rad::CardSpec& card = format.cards[i];
     if (!card.count.empty())
         return fmt::format(
@@ -125,7 +125,7 @@ void print_radioss_keyword(const rad::KeywordSpec& keyword) {
                                          : "";
         fmt::print("\nformat {} ({}{})\n", format.since, versions_text(keyword, k), widths);
         for (std::size_t i = 0; i < format.cards.size(); ++i) {
-            fmt::print("Card {} ({})\n", i + 1, card_notes(keyword, format, i));
+            fmt::print("Card {} ({})\n", i + 1, radioss_card_notes(keyword, format, i));
             print_card(format.cards[i], version, keyword.engine);
         }
     }

@@ -20,7 +20,7 @@ using keywords::FieldType;
 using model::CardSequence;
 using model::read_by_reader;
 
-CellKind kind_of(FieldType t) {
+CellKind dyna_kind_of(FieldType t) {
     switch (t) {
         case FieldType::Integer:
         case FieldType::Real: return CellKind::Number;
@@ -39,7 +39,7 @@ struct CardColumns {
     std::string header;
 };
 
-class ColumnCache {
+class DynaColumnCache {
 public:
     const CardColumns& of(std::string_view keyword, const CardSpec& card, grammar::CardFormat format) {
         auto [it, added] = cache_.try_emplace({&card, format});
@@ -48,7 +48,7 @@ public:
         c.slots = keywords::layout_to_write(keyword, card, format);
         std::vector<std::string_view> names;
         for (const auto& f : card.fields) {
-            c.kinds.push_back(kind_of(f.type));
+            c.kinds.push_back(dyna_kind_of(f.type));
             c.free_allowed = c.free_allowed || (f.type != FieldType::Text && f.type != FieldType::Unused);
             names.push_back(f.type == FieldType::Unused ? std::string_view{} : f.name);
         }
@@ -181,7 +181,8 @@ void format_repeated(const FormatScope& scope, const grammar::CardLine* from, co
     for (auto& p : parts) out.append(std::move(p));
 }
 
-void format_block(const FormatScope& scope, const grammar::Block& block, ColumnCache& columns, LineChanges& out) {
+void format_dyna_block(const FormatScope& scope, const grammar::Block& block, DynaColumnCache& columns,
+                       LineChanges& out) {
     const auto match = decodable_match(block);
     if (!match) return;
     const grammar::RawDeck& deck = scope.deck;
@@ -218,13 +219,13 @@ void format_block(const FormatScope& scope, const grammar::Block& block, ColumnC
 }  // namespace
 
 void format_dyna(const FormatScope& scope, LineChanges& out) {
-    ColumnCache columns;
+    DynaColumnCache columns;
     KeywordLines keyword_lines(scope.deck);
     for (const grammar::Block& block : scope.deck.blocks) {
         if (block.keyword.empty() || block.keyword[0] != '*') continue;
         if (!scope.formats(block.span.file)) continue;
         keyword_case(block, keyword_lines, out);
-        format_block(scope, block, columns, out);
+        format_dyna_block(scope, block, columns, out);
         if (block.line_count > 0) keyword_lines.seen(*(scope.deck.end_lines(block) - 1));
     }
 }

@@ -39,39 +39,39 @@ void place(std::string& out, const FixedField& f, std::string_view value, bool r
     text::write_in_field(out, f.start, f.width, value, right ? text::Align::Right : text::Align::Left);
 }
 
-LineLayout doubt(std::string_view why) { return {LineVerdict::Doubt, why}; }
+LineLayout line_doubt(std::string_view why) { return {LineVerdict::Doubt, why}; }
 
 }  // namespace
 
 LineLayout layout_fixed_line(std::string_view text, std::span<const FixedField> slots, std::span<const CellKind> kinds,
                              std::string& out) {
     out.clear();
-    if (text.find('\t') != std::string_view::npos) return doubt("a tab on the line");
+    if (text.find('\t') != std::string_view::npos) return line_doubt("a tab on the line");
     const std::size_t n = std::min(slots.size(), kinds.size());
     // Every non-blank character lies in a field: the solver ignores the rest, a reader may not.
     std::size_t covered = 0;
     for (std::size_t i = 0; i < n; ++i) {
         const FixedField& f = slots[i];
         if (f.start > covered && f.start <= text.size() && !trim(text.substr(covered, f.start - covered)).empty())
-            return doubt("text between fields");
+            return line_doubt("text between fields");
         covered = std::max<std::size_t>(covered, std::size_t{f.start} + f.width);
     }
-    if (covered < text.size() && !trim(text.substr(covered)).empty()) return doubt("text past the last field");
+    if (covered < text.size() && !trim(text.substr(covered)).empty()) return line_doubt("text past the last field");
 
     for (std::size_t i = 0; i < n; ++i) {
         const FixedField& f = slots[i];
         const std::string_view cell = cell_of(text, f);
         const std::string_view value = trim(cell);
         if (value.empty()) continue;
-        if (kinds[i] == CellKind::Unused) return doubt("text in an unused field");
-        if (kinds[i] != CellKind::Text && has_blank(value)) return doubt("a blank inside a value");
+        if (kinds[i] == CellKind::Unused) return line_doubt("text in an unused field");
+        if (kinds[i] != CellKind::Text && has_blank(value)) return line_doubt("a blank inside a value");
         // Two runs of characters touching across a field boundary may be one value cut in two, unless the
         // right one fills its whole field (values packed full width touch legitimately: "160.0-1.5E-05").
         if (i + 1 < n && slots[i + 1].start == f.start + f.width && f.start + f.width < text.size()) {
             const std::string_view next = cell_of(text, slots[i + 1]);
             const bool touch = !blank(text[f.start + f.width - 1]) && !next.empty() && !blank(next.front());
             const bool next_full = next.size() == slots[i + 1].width && !has_blank(next);
-            if (touch && !next_full) return doubt("a value across a field boundary");
+            if (touch && !next_full) return line_doubt("a value across a field boundary");
         }
     }
     for (std::size_t i = 0; i < n; ++i) {
@@ -111,19 +111,19 @@ bool already_laid_out(std::string_view text, std::span<const FixedField> slots, 
 LineLayout free_to_fixed(std::string_view text, std::span<const FixedField> slots, std::span<const CellKind> kinds,
                          std::string& out) {
     out.clear();
-    if (text.find('\t') != std::string_view::npos) return doubt("a tab on the line");
+    if (text.find('\t') != std::string_view::npos) return line_doubt("a tab on the line");
     std::vector<grammar::Field> fields;
     const grammar::CutReport report = grammar::cut_fields(text, grammar::CardLine{}, slots, 1u << 30, fields, true);
     if (!report.free_format) return {LineVerdict::Same, {}};
-    if (report.extra_values > 0 || !report.too_long.empty()) return doubt("more values than fields, or too long");
+    if (report.extra_values > 0 || !report.too_long.empty()) return line_doubt("more values than fields, or too long");
     const std::size_t n = std::min({slots.size(), kinds.size(), fields.size()});
     for (std::size_t i = 0; i < n; ++i) {
         const std::string_view value = trim(fields[i].text);
         if (value.empty()) continue;
-        if (kinds[i] == CellKind::Unused) return doubt("text in an unused field");
-        if (value.size() > slots[i].width) return doubt("a value longer than its field");
+        if (kinds[i] == CellKind::Unused) return line_doubt("text in an unused field");
+        if (value.size() > slots[i].width) return line_doubt("a value longer than its field");
         if (value.find('(') != std::string_view::npos || (kinds[i] != CellKind::Text && has_blank(value)))
-            return doubt("a value that is not one number");
+            return line_doubt("a value that is not one number");
         place(out, slots[i], value, right_aligned(kinds[i], value));
     }
     text::trim_trailing_blanks(out);

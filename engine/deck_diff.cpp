@@ -53,7 +53,7 @@ std::string id_of(const json& keyword) {
 
 std::string name_of(const json& keyword) { return string_or_empty(keyword, "name"); }
 
-DiffLocation at(const json& keyword) {
+DiffLocation diff_at(const json& keyword) {
     DiffLocation out;
     out.file = string_or_empty(keyword, "file");
     out.line = number_or_zero(keyword, "line");
@@ -61,7 +61,7 @@ DiffLocation at(const json& keyword) {
 }
 
 DiffLocation at_field(const json& keyword, const json& field) {
-    DiffLocation out = at(keyword);
+    DiffLocation out = diff_at(keyword);
     out.line = number_or_zero(field, "line");
     out.column = number_or_zero(field, "column");
     return out;
@@ -177,12 +177,12 @@ void compare_undecoded(const json& before_kw, const json& after_kw, const CheckR
         change.field = "line " + std::to_string(i + 1) + " not decoded";
         if (i < b.size()) {
             change.before = b[i].text;
-            change.before_at = at(before_kw);
+            change.before_at = diff_at(before_kw);
             change.before_at.line = b[i].line;
         }
         if (i < a.size()) {
             change.after = a[i].text;
-            change.after_at = at(after_kw);
+            change.after_at = diff_at(after_kw);
             change.after_at.line = a[i].line;
         }
         out.push_back(std::move(change));
@@ -299,9 +299,9 @@ BulkChange diff_particles(const model::Particles& before, const model::Particles
     return out;
 }
 
-json location_json(const DiffLocation& at) {
-    json out = {{"file", at.file}, {"line", at.line}};
-    if (at.column > 0) out["column"] = at.column;
+json location_json(const DiffLocation& diff_at) {
+    json out = {{"file", diff_at.file}, {"line", diff_at.line}};
+    if (diff_at.column > 0) out["column"] = diff_at.column;
     return out;
 }
 
@@ -338,7 +338,7 @@ DeckDiff diff_decks(const CheckResult& before, const CheckResult& after, double 
         KeywordChange change;
         change.name = name_of(ak[j]);
         change.id = id;
-        change.after_at = at(ak[j]);
+        change.after_at = diff_at(ak[j]);
         if (it == before_index.end()) {
             change.kind = KeywordChange::Kind::Added;
             diff.keywords.push_back(std::move(change));
@@ -347,7 +347,7 @@ DeckDiff diff_decks(const CheckResult& before, const CheckResult& after, double 
         matched[it->second] = true;
         change.fields = compare_keyword(bk[it->second], ak[j], rtol);
         compare_undecoded(bk[it->second], ak[j], before, after, before_blocks, after_blocks, change.fields);
-        change.before_at = at(bk[it->second]);
+        change.before_at = diff_at(bk[it->second]);
         if (!change.fields.empty()) diff.keywords.push_back(std::move(change));
     }
     for (std::size_t i = 0; i < bk.size(); ++i) {
@@ -356,7 +356,7 @@ DeckDiff diff_decks(const CheckResult& before, const CheckResult& after, double 
         change.kind = KeywordChange::Kind::Removed;
         change.name = name_of(bk[i]);
         change.id = id_of(bk[i]);
-        change.before_at = at(bk[i]);
+        change.before_at = diff_at(bk[i]);
         diff.keywords.push_back(std::move(change));
     }
     diff.nodes = diff_nodes(before.model.nodes, after.model.nodes, rtol);

@@ -18,7 +18,7 @@ namespace {
 
 namespace rad = grammar::radioss;
 
-bool starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
+bool lookup_starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
 
 // A Radioss header's id with its role (grammar/radioss/id_kinds.hpp) and its columns.
 struct HeaderId {
@@ -38,8 +38,8 @@ std::optional<HeaderId> header_id(const grammar::Block& block) {
 // Bulk blocks: millions of lines whose ids are nodes and particles.
 bool bulk_block(const grammar::Block& block) {
     const std::string& k = block.keyword;
-    return k == "*NODE" || starts_with(k, "*ELEMENT_SPH") || k == "/NODE" || starts_with(k, "/NODE/") ||
-           starts_with(k, "/SPHCEL") || starts_with(k, "/BRICK") || starts_with(k, "/TETRA");
+    return k == "*NODE" || lookup_starts_with(k, "*ELEMENT_SPH") || k == "/NODE" || lookup_starts_with(k, "/NODE/") ||
+           lookup_starts_with(k, "/SPHCEL") || lookup_starts_with(k, "/BRICK") || lookup_starts_with(k, "/TETRA");
 }
 
 std::string field_title(std::string_view name, std::string_view text) {

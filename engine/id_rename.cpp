@@ -102,7 +102,7 @@ bool all_digits(std::string_view s) {
            std::all_of(s.begin(), s.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
 }
 
-bool name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+bool rename_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 bool same_name(std::string_view a, std::string_view b) {
     return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
@@ -126,7 +126,8 @@ std::optional<std::string> new_id_text(const std::string& old_id, std::string_vi
         return std::string(id);
     }
     // A label (LS-DYNA alphanumeric ids) only where the id already is one.
-    if (!all_digits(old_id) && !id.empty() && std::all_of(id.begin(), id.end(), name_char)) return std::string(id);
+    if (!all_digits(old_id) && !id.empty() && std::all_of(id.begin(), id.end(), rename_name_char))
+        return std::string(id);
     refusal = fmt::format("'{}' is not an id: ids are whole numbers above 0", wanted);
     return std::nullopt;
 }
@@ -167,7 +168,7 @@ std::vector<grammar::Span> parameter_places(const CheckResult& deck, const std::
         std::size_t at = 0;
         for (; at + name.size() <= field.size(); ++at)
             if (same_name(field.substr(at, name.size()), name) && at > 0 &&
-                (at + name.size() == field.size() || !name_char(field[at + name.size()])))
+                (at + name.size() == field.size() || !rename_name_char(field[at + name.size()])))
                 break;
         if (at + name.size() > field.size()) continue;
         out.push_back({p.span.file, p.span.line, static_cast<std::uint32_t>(from + at + 1),
@@ -188,8 +189,8 @@ std::optional<grammar::Span> bare_use_in_expression(const CheckResult& deck, con
             const std::string_view text = raw.text(*l);
             for (std::size_t at = width; at + name.size() <= text.size(); ++at) {
                 if (!same_name(text.substr(at, name.size()), name)) continue;
-                const bool before = at > 0 && (name_char(text[at - 1]) || text[at - 1] == '&');
-                const bool after = at + name.size() < text.size() && name_char(text[at + name.size()]);
+                const bool before = at > 0 && (rename_name_char(text[at - 1]) || text[at - 1] == '&');
+                const bool after = at + name.size() < text.size() && rename_name_char(text[at + name.size()]);
                 if (!before && !after)
                     return grammar::Span{l->file, l->line, static_cast<std::uint32_t>(at + 1),
                                          static_cast<std::uint32_t>(at + name.size() + 1)};
@@ -277,7 +278,7 @@ RenamePlan plan_rename(const CheckResult& deck, const RenameTarget& target, std:
         value = std::string(grammar::trim_blanks(new_name));
         if (!value.empty() && value.front() == '&') value.erase(0, 1);
         if (value.empty() || !std::isalpha(static_cast<unsigned char>(value.front())) ||
-            !std::all_of(value.begin(), value.end(), name_char)) {
+            !std::all_of(value.begin(), value.end(), rename_name_char)) {
             plan.refusal = fmt::format("'{}' is no parameter name: a letter, then letters, digits or '_'", new_name);
             return plan;
         }

@@ -33,7 +33,7 @@ std::size_t common_suffix(std::string_view a, std::string_view b, std::size_t ke
     return at;
 }
 
-std::size_t newlines(std::string_view s) {
+std::size_t count_newlines(std::string_view s) {
     std::size_t n = 0;
     for (const char *p = s.data(), *end = s.data() + s.size();
          (p = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)))); ++p)
@@ -43,7 +43,7 @@ std::size_t newlines(std::string_view s) {
 
 // Physical lines of bytes [begin, end) of `text`, whole lines (a last line without '\n' counts).
 std::uint32_t lines_in(std::string_view text, std::size_t begin, std::size_t end) {
-    const std::size_t n = newlines(text.substr(begin, end - begin));
+    const std::size_t n = count_newlines(text.substr(begin, end - begin));
     const bool open_last = end == text.size() && end > begin && text[end - 1] != '\n';
     return static_cast<std::uint32_t>(n + (open_last ? 1 : 0));
 }
@@ -56,7 +56,7 @@ bool reader_acts_on(const std::string& keyword) {
     return keyword == "*";
 }
 
-void shift(text::Span& span, FileId file, std::uint32_t from_line, std::int64_t delta) {
+void shift_span(text::Span& span, FileId file, std::uint32_t from_line, std::int64_t delta) {
     if (span.file == file && span.line >= from_line) span.line = static_cast<std::uint32_t>(span.line + delta);
 }
 
@@ -102,10 +102,12 @@ std::optional<SplicedDeck> splice_edit(const RawDeck& previous, SourceText text,
     const auto last = std::lower_bound(first, previous.lines.end(), old_end, by_offset);
     std::uint32_t first_line = 0;  // the physical line at `begin`
     if (first != previous.lines.end())
-        first_line = first->line - static_cast<std::uint32_t>(newlines(before.substr(begin, first->offset - begin)));
+        first_line =
+            first->line - static_cast<std::uint32_t>(count_newlines(before.substr(begin, first->offset - begin)));
     else
-        first_line = (first - 1)->line + static_cast<std::uint32_t>(
-                                             newlines(before.substr((first - 1)->offset, begin - (first - 1)->offset)));
+        first_line =
+            (first - 1)->line +
+            static_cast<std::uint32_t>(count_newlines(before.substr((first - 1)->offset, begin - (first - 1)->offset)));
     const std::uint32_t old_lines = lines_in(before, begin, old_end), new_lines = lines_in(now, begin, new_end);
     const std::uint32_t after = first_line + old_lines;  // the first physical line past the edit (old numbering)
 
@@ -176,17 +178,17 @@ std::optional<SplicedDeck> splice_edit(const RawDeck& previous, SourceText text,
     deck.blocks[host_index].line_count = static_cast<std::uint32_t>(host.line_count + count_shift);
     for (std::size_t b = host_index + 1; b < deck.blocks.size(); ++b) {
         deck.blocks[b].first_line = static_cast<std::uint32_t>(deck.blocks[b].first_line + count_shift);
-        shift(deck.blocks[b].span, file, after, line_shift);
+        shift_span(deck.blocks[b].span, file, after, line_shift);
     }
     deck.parameters = previous.parameters;
     deck.keyword_arguments = previous.keyword_arguments;
-    shift(deck.keyword_arguments.span, file, after, line_shift);
+    shift_span(deck.keyword_arguments.span, file, after, line_shift);
     deck.diagnostics = previous.diagnostics;
     for (diag::Diagnostic& d : deck.diagnostics) {
-        shift(d.span, file, after, line_shift);
-        for (diag::Note& note : d.notes) shift(note.span, file, after, line_shift);
+        shift_span(d.span, file, after, line_shift);
+        for (diag::Note& note : d.notes) shift_span(note.span, file, after, line_shift);
         for (diag::Fix& fix : d.fixes)
-            for (diag::TextEdit& edit : fix.edits) shift(edit.span, file, after, line_shift);
+            for (diag::TextEdit& edit : fix.edits) shift_span(edit.span, file, after, line_shift);
     }
     deck.stats = previous.stats;
     deck.stats.bytes = now.size();

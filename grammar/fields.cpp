@@ -25,15 +25,15 @@ template <typename Rule>
 struct token_action : pegtl::nothing<Rule> {};
 template <>
 struct token_action<free_rules::token> {
-    template <typename Input>
-    static void apply(const Input& in, std::vector<std::string_view>& tokens) {
+    template <typename FieldInput>
+    static void apply(const FieldInput& in, std::vector<std::string_view>& tokens) {
         tokens.push_back(in.string_view());
     }
 };
 
-using Input = pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf, const char*>;
+using FieldInput = pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf, const char*>;
 
-std::uint32_t widened(std::uint32_t width, CardFormat format) {
+std::uint32_t widened_width(std::uint32_t width, CardFormat format) {
     switch (format) {
         case CardFormat::I10: return std::max<std::uint32_t>(width, 10);
         case CardFormat::Long: return std::max<std::uint32_t>(width, 20);
@@ -189,8 +189,8 @@ void widen(std::span<const FixedField> standard, CardFormat format, std::vector<
     out.reserve(standard.size());
     std::uint32_t standard_end = 0, position = 0;
     for (const FixedField& f : standard) {
-        if (f.start > standard_end) position += widened(f.start - standard_end, format);  // an unused gap
-        std::uint32_t w = widened(f.width, format);
+        if (f.start > standard_end) position += widened_width(f.start - standard_end, format);  // an unused gap
+        std::uint32_t w = widened_width(f.width, format);
         out.push_back({format == CardFormat::Standard ? f.start : position, w});
         position = (format == CardFormat::Standard ? f.start : position) + w;
         standard_end = f.start + f.width;
@@ -204,7 +204,7 @@ std::uint32_t significant_width(std::span<const FixedField> widened_fields, Card
 
 bool is_free_format(std::string_view text) {
     if (!std::memchr(text.data(), ',', text.size())) return false;
-    Input in(text.data(), text.data() + text.size(), "line");
+    FieldInput in(text.data(), text.data() + text.size(), "line");
     return pegtl::parse<free_rules::has_top_level_comma>(in);
 }
 
@@ -217,7 +217,7 @@ CutReport cut_fields(std::string_view text, const CardLine& line, std::span<cons
         report.free_format = true;
         thread_local std::vector<std::string_view> tokens;
         tokens.clear();
-        Input in(text.data(), text.data() + text.size(), "line");
+        FieldInput in(text.data(), text.data() + text.size(), "line");
         pegtl::parse<free_rules::line, token_action>(in, tokens);
         for (std::size_t i = 0; i < tokens.size(); ++i) {
             std::size_t begin = static_cast<std::size_t>(tokens[i].data() - text.data());

@@ -47,14 +47,14 @@ bool header_aligned(std::string_view header, std::span<const FixedField> slots, 
     });
 }
 
-std::string_view field_text(std::string_view text, const FixedField& f) {
+std::string_view shifted_field_text(std::string_view text, const FixedField& f) {
     if (f.start >= text.size()) return {};
     return trim_blanks(text.substr(f.start, f.width));
 }
 
 bool same_reading(std::string_view a, std::string_view b, std::span<const FixedField> slots) {
     for (const FixedField& f : slots)
-        if (field_text(a, f) != field_text(b, f)) return false;
+        if (shifted_field_text(a, f) != shifted_field_text(b, f)) return false;
     const std::size_t end = slots.empty() ? 0 : slot_end(slots.back());
     return trim_blanks(a.size() > end ? a.substr(end) : std::string_view{}) ==
            trim_blanks(b.size() > end ? b.substr(end) : std::string_view{});

@@ -15,16 +15,16 @@ namespace pegtl = tao::pegtl;
 using namespace fast_number;  // short_integer, short_real, starts_like_c_number
 
 template <typename Rule>
-bool matches(std::string_view text) {
+bool matches_rule(std::string_view text) {
     pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf, const char*> in(text.data(),
                                                                                          text.data() + text.size(),
                                                                                          "field");
     return pegtl::parse<Rule>(in);
 }
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+bool is_value_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
-std::string_view trim(std::string_view s, std::size_t& offset) {
+std::string_view trim_token(std::string_view s, std::size_t& offset) {
     std::size_t b = 0, e = s.size();
     // Leading spaces eight at a time: right-aligned fixed fields ("       1") are mostly blanks.
     if constexpr (std::endian::native == std::endian::little) {
@@ -39,8 +39,8 @@ std::string_view trim(std::string_view s, std::size_t& offset) {
             b += 8;
         }
     }
-    while (b < e && is_blank(s[b])) ++b;
-    while (e > b && is_blank(s[e - 1])) --e;
+    while (b < e && is_value_blank(s[b])) ++b;
+    while (e > b && is_value_blank(s[e - 1])) --e;
     offset = b;
     return s.substr(b, e - b);
 }
@@ -110,16 +110,16 @@ bool fast_classify(ValueToken& token, ValueShape expected) {
 
 ValueToken classify_value(std::string_view field, ValueShape expected) {
     ValueToken token;
-    token.text = trim(field, token.offset);
+    token.text = trim_token(field, token.offset);
     if (token.text.empty()) return token;
     if (fast_classify(token, expected)) return token;
-    if (expected == ValueShape::Real && matches<value_rules::real_field>(token.text)) {
+    if (expected == ValueShape::Real && matches_rule<value_rules::real_field>(token.text)) {
         token.shape = ValueShape::Real;  // "5" in a real field is 5.0: no need to tell it from an integer
-    } else if (matches<value_rules::integer_field>(token.text)) {
+    } else if (matches_rule<value_rules::integer_field>(token.text)) {
         token.shape = ValueShape::Integer;
-    } else if (matches<value_rules::real_field>(token.text)) {
+    } else if (matches_rule<value_rules::real_field>(token.text)) {
         token.shape = ValueShape::Real;
-    } else if (matches<value_rules::parameter_field>(token.text)) {
+    } else if (matches_rule<value_rules::parameter_field>(token.text)) {
         token.shape = ValueShape::Parameter;
         token.negated = token.text.front() == '-';
         token.name = token.text.substr(token.negated ? 2 : 1);

@@ -48,14 +48,14 @@ std::vector<RuleInfo> build_table() {
     return rows;
 }
 
-const std::vector<RuleInfo>& table() {
+const std::vector<RuleInfo>& registry_table() {
     static const std::vector<RuleInfo> rows = build_table();
     return rows;
 }
 
 // How well `query` (lower case) matches `candidate`: (kind, distance), smaller is better.
 // kind 0 = prefix, 1 = substring, 2 = edit distance; kind 3 = no match.
-std::tuple<int, std::size_t> match(const std::string& query, std::string_view candidate) {
+std::tuple<int, std::size_t> match_code(const std::string& query, std::string_view candidate) {
     std::string cand = lowered(candidate);
     std::size_t dist = grammar::edit_distance(query, cand, grammar::SwapCost::OneEdit);
     if (query.size() >= 2 && cand.starts_with(query)) return {0, dist};
@@ -67,12 +67,12 @@ std::tuple<int, std::size_t> match(const std::string& query, std::string_view ca
 
 }  // namespace
 
-std::span<const RuleInfo> all_rules() { return table(); }
+std::span<const RuleInfo> all_rules() { return registry_table(); }
 
 std::string rule_page_path(const RuleInfo& rule) { return "docs/rules/" + std::string(rule.code) + ".md"; }
 
 const RuleInfo* find_rule(std::string_view code_or_name) {
-    for (const RuleInfo& rule : table())
+    for (const RuleInfo& rule : registry_table())
         if (iequals(rule.code, code_or_name) || rule.name == code_or_name) return &rule;
     return nullptr;
 }
@@ -87,9 +87,9 @@ std::vector<std::string_view> similar_rules(std::string_view query, std::size_t 
     const std::string q = lowered(query);
     std::vector<Hit> hits;
     if (q.empty() || max == 0) return {};
-    for (const RuleInfo& rule : table()) {
-        auto [code_kind, code_dist] = match(q, rule.code);
-        auto [name_kind, name_dist] = match(q, rule.name);
+    for (const RuleInfo& rule : registry_table()) {
+        auto [code_kind, code_dist] = match_code(q, rule.code);
+        auto [name_kind, name_dist] = match_code(q, rule.name);
         bool by_name = std::tie(name_kind, name_dist) < std::tie(code_kind, code_dist);
         int kind = by_name ? name_kind : code_kind;
         if (kind == 3) continue;

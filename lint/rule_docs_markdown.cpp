@@ -18,7 +18,7 @@ struct Line {
     std::string_view text;
 };
 
-struct Section {
+struct DocSection {
     std::string_view heading;
     std::size_t number;  // the heading's line
     std::vector<Line> body;
@@ -74,7 +74,7 @@ public:
     }
 
     // One paragraph, its lines joined with one space, Markdown escapes removed.
-    std::string paragraph(const Section& section) {
+    std::string paragraph(const DocSection& section) {
         std::string out;
         bool gap = false;
         for (const Line& line : section.body) {
@@ -95,7 +95,7 @@ public:
     }
 
     // The text of the section's one fenced block, each line ending in '\n'.
-    std::string example(const Section& section) {
+    std::string example(const DocSection& section) {
         enum { Before, Inside, After } state = Before;
         std::string out;
         for (const Line& line : section.body) {
@@ -155,7 +155,7 @@ RuleDocPage parse_rule_doc_page(std::string_view file, std::string_view text) {
 
     // Split at the title and the "## " headings; inside a fenced block a '#' line is deck text
     // (an OpenRadioss comment), not a heading.
-    std::vector<Section> sections;
+    std::vector<DocSection> sections;
     bool titled = false, fenced = false;
     const std::vector<Line> lines = lines_of(text);
     for (const Line& line : lines) {
@@ -180,7 +180,7 @@ RuleDocPage parse_rule_doc_page(std::string_view file, std::string_view text) {
             reader.problem(last, fmt::format("no '## {}' section", kSections[i]));
             continue;
         }
-        const Section& section = sections[i];
+        const DocSection& section = sections[i];
         if (i >= kSections.size() || section.heading != kSections[i]) {
             reader.problem(section.number, fmt::format("'## {}' out of place: the sections are '{}'", section.heading,
                                                        fmt::join(kSections, "', '")));

@@ -69,7 +69,7 @@ std::string md(std::string_view text, bool table = false) {
     return out;
 }
 
-std::string fenced(std::string_view deck) {
+std::string fenced_text(std::string_view deck) {
     std::string out = "```text\n" + std::string(deck);
     if (!out.ends_with('\n')) out += '\n';
     return out + "```\n";
@@ -140,8 +140,8 @@ std::string rule_markdown_body(const RuleInfo& rule) {
     out += "\n### What it does\n\n" + md(rule.doc.what) + "\n";
     out += "\n### Why it matters\n\n" + md(rule.doc.why) + "\n";
     out += "\n### How to fix\n\n" + md(rule.doc.fix) + "\n";
-    out += "\n### Example\n\nTriggers the rule:\n\n" + fenced(rule.doc.before);
-    out += "\nFixed:\n\n" + fenced(rule.doc.after);
+    out += "\n### Example\n\nTriggers the rule:\n\n" + fenced_text(rule.doc.before);
+    out += "\nFixed:\n\n" + fenced_text(rule.doc.after);
     return out;
 }
 

@@ -12,9 +12,9 @@
 namespace sphdeck::lint {
 namespace {
 
-bool starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
+bool density_starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
 
-std::string written(const model::Material& m, std::string_view name) {
+std::string density_written(const model::Material& m, std::string_view name) {
     if (!m.density.explicit_value) return fmt::format("{} blank (read as 0)", name);
     return fmt::format("{} {:g}", name, m.density.value);
 }
@@ -24,10 +24,10 @@ std::string written(const model::Material& m, std::string_view name) {
 // strain, 14 and 15 axisymmetric), shells, thick shells. Empty for the others: beams (discrete beams
 // and spot welds may take their mass from elsewhere), springs, seatbelts.
 std::string_view element_kind(const model::Section& section) {
-    if (starts_with(section.keyword, "*SECTION_SOLID")) return "solid";
-    if (starts_with(section.keyword, "*SECTION_SHELL"))
+    if (density_starts_with(section.keyword, "*SECTION_SOLID")) return "solid";
+    if (density_starts_with(section.keyword, "*SECTION_SHELL"))
         return section.shell_form >= 12 && section.shell_form <= 15 ? "solid" : "shell";
-    if (starts_with(section.keyword, "*SECTION_TSHELL")) return "thick shell";
+    if (density_starts_with(section.keyword, "*SECTION_TSHELL")) return "thick shell";
     return {};
 }
 
@@ -48,7 +48,7 @@ void check_lsdyna_densities(RuleContext& c) {
         reported.insert(mat);
         auto& d = c.report("SPH119", mat->density.span,
                            fmt::format("{} of {} {} used by {} part {}: its {} have no mass; expected a density > 0",
-                                       written(*mat, "RO"), mat->keyword, mat->id, kind, part.id,
+                                       density_written(*mat, "RO"), mat->keyword, mat->id, kind, part.id,
                                        kind == "SPH" ? "particles" : "elements"));
         d.notes.push_back({part.material.span, fmt::format("part {} uses material {} here", part.id, mat->id)});
     }
@@ -59,7 +59,7 @@ void check_radioss_densities(RuleContext& c) {
         if (!mat.has_density || mat.density.value > 0) continue;
         c.report("SPH119", mat.density.span,
                  fmt::format("{} of {} material {}: the starter stops (error 683, DENSITY); expected a density > 0",
-                             written(mat, "RHO_I"), mat.keyword, mat.id));
+                             density_written(mat, "RHO_I"), mat.keyword, mat.id));
     }
 }
 

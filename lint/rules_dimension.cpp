@@ -11,13 +11,13 @@
 namespace sphdeck::lint {
 namespace {
 
-bool starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
+bool dimension_starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
 
 // The first keyword that makes a deck an SPH deck: particles, an SPH section, a particle generator.
 const grammar::Block* first_sph_keyword(const grammar::RawDeck& deck) {
     for (const grammar::Block& b : deck.blocks)
-        if (starts_with(b.keyword, "*ELEMENT_SPH") || starts_with(b.keyword, "*SECTION_SPH") ||
-            starts_with(b.keyword, "*DEFINE_SPH_"))
+        if (dimension_starts_with(b.keyword, "*ELEMENT_SPH") || dimension_starts_with(b.keyword, "*SECTION_SPH") ||
+            dimension_starts_with(b.keyword, "*DEFINE_SPH_"))
             return &b;
     return nullptr;
 }

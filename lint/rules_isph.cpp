@@ -9,7 +9,7 @@
 namespace sphdeck::lint {
 namespace {
 
-bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
+bool isph_starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
 
 // The decoded cards of a block whose layout has no condition nor table (one line per card, in
 // order): *CONTROL_SPH_INCOMPRESSIBLE, *MAT_SPH_INCOMPRESSIBLE_FLUID. These keywords come from the
@@ -31,7 +31,8 @@ std::vector<std::vector<model::FieldValue>> decoded_cards(const grammar::RawDeck
     return out;
 }
 
-const model::FieldValue* value(const std::vector<std::vector<model::FieldValue>>& cards, std::string_view name) {
+const model::FieldValue* isph_field_value(const std::vector<std::vector<model::FieldValue>>& cards,
+                                          std::string_view name) {
     for (const auto& card : cards)
         for (const auto& v : card)
             if (v.spec->name == name) return &v;
@@ -51,20 +52,20 @@ void check_isph(RuleContext& c) {
     std::vector<Fluid> fluids;
     for (const grammar::Block& b : c.deck.blocks) {
         const bool control = b.keyword == "*CONTROL_SPH_INCOMPRESSIBLE";
-        const bool fluid = starts_with(b.keyword, "*MAT_SPH_INCOMPRESSIBLE_FLUID");
+        const bool fluid = isph_starts_with(b.keyword, "*MAT_SPH_INCOMPRESSIBLE_FLUID");
         if (!control && !fluid) continue;
         const auto match = keywords::find_keyword(b.keyword);
         if (!match || !match->unknown_options.empty()) continue;
         const auto cards = decoded_cards(c.deck, b, *match);
         if (control) {
-            const model::FieldValue* v = value(cards, "IHTC");
+            const model::FieldValue* v = isph_field_value(cards, "IHTC");
             if (v && v->explicit_value && v->valid && v->number == 1) htc = v->span;
             continue;
         }
-        const model::FieldValue* mid = value(cards, "MID");
+        const model::FieldValue* mid = isph_field_value(cards, "MID");
         if (!mid) continue;
         auto positive = [&](std::string_view name) {
-            const model::FieldValue* v = value(cards, name);
+            const model::FieldValue* v = isph_field_value(cards, name);
             return v && v->explicit_value && v->valid && v->number > 0;
         };
         fluids.push_back({mid->span, std::string(mid->text), positive("CP"), positive("LAMBDA")});

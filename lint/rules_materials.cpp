@@ -29,7 +29,7 @@ struct PartStats {
     double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
 };
 
-double number(const model::KeywordRecord& r, std::string_view field, double fallback = 0.0) {
+double material_number(const model::KeywordRecord& r, std::string_view field, double fallback = 0.0) {
     const model::FieldRecord* f = r.field(field);
     return f && f->valid ? f->number : fallback;
 }
@@ -76,7 +76,7 @@ std::map<Id, PartStats> particle_parts(const model::Model& m, const std::vector<
     return parts;
 }
 
-const model::IdSet* node_set(const RuleContext& c, const model::FieldRecord* f) {
+const model::IdSet* material_node_set(const RuleContext& c, const model::FieldRecord* f) {
     if (!f || !f->valid || f->number == 0) return nullptr;
     return c.node_set(model::normalise_id(f->text));
 }
@@ -89,12 +89,14 @@ void add_initial_velocities(const RuleContext& c, const std::vector<std::uint32_
     const model::Model& m = c.model;
     for (const model::KeywordRecord& r : m.records) {
         if (r.schema->name != "*INITIAL_VELOCITY") continue;
-        const double speed = std::hypot(number(r, "VX"), number(r, "VY"), number(r, "VZ"));
-        const double exempt_speed = std::hypot(number(r, "VXE"), number(r, "VYE"), number(r, "VZE"));
-        const model::IdSet* set = node_set(c, r.field("NSID"));
-        if (number(r, "NSID") != 0 && !set) continue;  // REF008
-        const model::IdSet* exempt = node_set(c, r.field("NSIDEX"));
-        const model::Box* box = number(r, "BOXID") != 0 ? m.box(model::normalise_id(r.field("BOXID")->text)) : nullptr;
+        const double speed = std::hypot(material_number(r, "VX"), material_number(r, "VY"), material_number(r, "VZ"));
+        const double exempt_speed =
+            std::hypot(material_number(r, "VXE"), material_number(r, "VYE"), material_number(r, "VZE"));
+        const model::IdSet* set = material_node_set(c, r.field("NSID"));
+        if (material_number(r, "NSID") != 0 && !set) continue;  // REF008
+        const model::IdSet* exempt = material_node_set(c, r.field("NSIDEX"));
+        const model::Box* box =
+            material_number(r, "BOXID") != 0 ? m.box(model::normalise_id(r.field("BOXID")->text)) : nullptr;
         if (speed == 0 && (!exempt || exempt_speed == 0)) continue;
         std::unordered_set<long long> exempted;
         if (exempt) exempted.insert(exempt->members.begin(), exempt->members.end());
@@ -130,13 +132,13 @@ struct Gravity {
 
 std::optional<double> constant_curve(const model::Model& m, double lcid) {
     for (const model::KeywordRecord& r : m.records) {
-        if (r.schema->name != "*DEFINE_CURVE" || number(r, "LCID") != lcid) continue;
+        if (r.schema->name != "*DEFINE_CURVE" || material_number(r, "LCID") != lcid) continue;
         double lo = HUGE_VAL, hi = -HUGE_VAL;
         for (const auto& row : r.rows)
             for (const auto& f : row)
                 if (f.name == "O1" && f.valid) lo = std::min(lo, f.number), hi = std::max(hi, f.number);
         if (lo > hi || lo != hi) return std::nullopt;
-        return number(r, "SFO", 1.0) * (lo + number(r, "OFFO"));
+        return material_number(r, "SFO", 1.0) * (lo + material_number(r, "OFFO"));
     }
     return std::nullopt;
 }
@@ -145,11 +147,12 @@ std::vector<Gravity> gravities(const model::Model& m) {
     std::vector<Gravity> out;
     for (const model::KeywordRecord& r : m.records) {
         const std::string_view k = r.schema->name;
-        if (k.rfind("*LOAD_BODY_", 0) != 0 || k.size() != 12 || number(r, "CID") != 0) continue;
+        if (k.rfind("*LOAD_BODY_", 0) != 0 || k.size() != 12 || material_number(r, "CID") != 0) continue;
         const int axis = k.back() - 'X';
         if (axis < 0 || axis > 2) continue;
-        std::optional<double> a = constant_curve(m, number(r, "LCID"));
-        if (a && *a * number(r, "SF", 1.0) != 0) out.push_back({axis, std::abs(*a * number(r, "SF", 1.0)), &r});
+        std::optional<double> a = constant_curve(m, material_number(r, "LCID"));
+        if (a && *a * material_number(r, "SF", 1.0) != 0)
+            out.push_back({axis, std::abs(*a * material_number(r, "SF", 1.0)), &r});
     }
     return out;
 }
@@ -193,7 +196,7 @@ void check_murnaghan(RuleContext& c, const std::map<Id, PartStats>& parts) {
     for (const model::Eos& eos : c.model.equations_of_state) {
         if (eos.keyword != "*EOS_MURNAGHAN" || !eos.record) continue;
         const model::KeywordRecord& r = c.model.records[*eos.record];
-        const double gamma = number(r, "GAMMA"), k0 = number(r, "K0");
+        const double gamma = material_number(r, "GAMMA"), k0 = material_number(r, "K0");
         if (gamma <= 0 || k0 <= 0) continue;
         struct Worst {
             double ratio = HUGE_VAL, c0 = 0, v = 0, rho = 0;

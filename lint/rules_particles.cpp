@@ -15,7 +15,7 @@
 namespace sphdeck::lint {
 namespace {
 
-using Group = ParticleGroup;
+using ParticleGroupRef = ParticleGroup;
 
 // The columns of `field` on card line `line_index` of a one-card keyword (*NODE, *ELEMENT_SPH),
 // cut by the schema in the block's format; the whole line when that fails.
@@ -78,7 +78,7 @@ void check_planar(RuleContext& c) {
     const std::vector<std::uint32_t>& node_of = c.particle_nodes();
     const double tol = 1e-9 * model_size(n, node_of);
     const bool axisymmetric = sph.idim.value == model::Dimension::Axisymmetric;
-    Group off_plane, negative_x;
+    ParticleGroupRef off_plane, negative_x;
     for (std::size_t i = 0; i < p.size(); ++i) {
         const std::uint32_t k = node_of[i];
         if (k == RuleContext::no_node) continue;  // REF001
@@ -126,7 +126,7 @@ void check_planar(RuleContext& c) {
 // as information, since a volume where a mass was meant is a common unit slip. When more than a
 // few parts have them (a mesh fragment whose particles each name their own part), one finding
 // covers them all.
-void check_mass(RuleContext& c) {
+void check_particle_mass(RuleContext& c) {
     const model::Particles& p = c.model.particles;
     PartGroups zero, volume;
     for (std::size_t i = 0; i < p.size(); ++i) {
@@ -139,7 +139,7 @@ void check_mass(RuleContext& c) {
         return field_span(c.deck, p.line[i], "*ELEMENT_SPH", "MASS", c.particle_span(i));
     };
     // "particle 7 of part 1", "12 particles of part 1 (7, 8, ...)".
-    auto who = [&](const Group& g) {
+    auto who = [&](const ParticleGroupRef& g) {
         const std::size_t i = g.first.front();
         return g.count == 1 ? fmt::format("particle {} of part {}", p.node[i], p.part[i])
                             : fmt::format("{} particles of part {} ({})", g.count, p.part[i], g.ids(p));
@@ -149,20 +149,20 @@ void check_mass(RuleContext& c) {
             for (const auto& [part, g] : groups.by_part) report_one(g, who(g), false);
             return;
         }
-        const Group all = groups.merged();
+        const ParticleGroupRef all = groups.merged();
         report_one(all,
                    fmt::format("{} particles of {} parts (parts {}; particles {})", all.count, groups.by_part.size(),
                                groups.part_list(), all.ids(p)),
                    true);
     };
-    each(zero, [&](const Group& g, const std::string& text, bool merged) {
+    each(zero, [&](const ParticleGroupRef& g, const std::string& text, bool merged) {
         auto& d = c.report("SPH112", diag::Severity::Error, mass_span(g.first.front()),
                            fmt::format("MASS 0 or blank on {}; expected a mass > 0, or a volume < 0", text));
         if (merged)
             add_line_notes(c, d, g,
                            [&](std::size_t i) { return fmt::format("particle {} has MASS 0 or blank", p.node[i]); });
     });
-    each(volume, [&](const Group& g, const std::string& text, bool merged) {
+    each(volume, [&](const ParticleGroupRef& g, const std::string& text, bool merged) {
         auto& d = c.report("SPH112", diag::Severity::Info, mass_span(g.first.front()),
                            fmt::format("negative MASS {:g} on {} is read as a volume: the mass follows from the "
                                        "material density",
@@ -178,7 +178,7 @@ void check_mass(RuleContext& c) {
 
 void check_sph_particles(RuleContext& c) {
     check_planar(c);
-    check_mass(c);
+    check_particle_mass(c);
 }
 
 }  // namespace sphdeck::lint

@@ -15,7 +15,7 @@ namespace {
 using preproc::PartPreview;
 using preproc::Preview;
 
-constexpr std::size_t max_listed = 20;  // findings per rule and part: the rest are the same mistake
+constexpr std::size_t preview_max_listed = 20;  // findings per rule and part: the rest are the same mistake
 
 // The first particle of part q (model order), or the size when none.
 std::size_t first_particle(const Preview& p, std::size_t q) {
@@ -102,7 +102,7 @@ void check_mass_spacing(RuleContext& c, const Preview& p) {
 // SPH114: particles at the same position.
 void check_coincident(RuleContext& c, const Preview& p) {
     const auto& ids = c.model.particles.node;
-    for (std::size_t k = 0; k < p.coincident.size() && k < max_listed; ++k) {
+    for (std::size_t k = 0; k < p.coincident.size() && k < preview_max_listed; ++k) {
         const auto [a, b] = p.coincident[k];
         const auto [x, y, z] = particle_position(c, p, b);
         std::string total =
@@ -121,7 +121,8 @@ void check_stray(RuleContext& c, const Preview& p) {
     for (std::size_t i = 0; i < pp.part.size(); ++i) {
         const std::uint32_t q = pp.part[i];
         const PartPreview& part = p.parts[q];
-        if (part.spacing <= 0 || !pp.located[i] || !(pp.nn_distance[i] > 3.0 * part.spacing) || listed[q] == max_listed)
+        if (part.spacing <= 0 || !pp.located[i] || !(pp.nn_distance[i] > 3.0 * part.spacing) ||
+            listed[q] == preview_max_listed)
             continue;
         ++listed[q];
         const bool sets_h0 =

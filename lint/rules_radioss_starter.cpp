@@ -151,7 +151,7 @@ private:
 };
 
 // Blocks of the engine deck (<run>_0001.rad and its includes) are no starter input.
-bool in_engine_file(const grammar::RawDeck& deck, const grammar::Block& block) {
+bool starter_in_engine_file(const grammar::RawDeck& deck, const grammar::Block& block) {
     const grammar::FileId root = deck.sources.include_chain(block.span.file).front();
     return rad::is_engine_file_name(deck.sources.file(root).display_name);
 }
@@ -165,7 +165,7 @@ void check_starter_values(RuleContext& c) {
             !block.keyword.starts_with("/PROP/"))
             continue;
         const StarterLaw* law = starter_law_of(block.keyword);
-        if (!law || in_engine_file(c.deck, block)) continue;
+        if (!law || starter_in_engine_file(c.deck, block)) continue;
         const rad::FormatSpec* format = format_of(*law, version);
         if (!format) continue;
         BlockCheck(c, block, *law, *format, version).run();

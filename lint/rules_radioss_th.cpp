@@ -76,7 +76,7 @@ const ThKind* kind_of(std::string_view second) {
     return nullptr;
 }
 
-bool in_engine_file(const grammar::RawDeck& deck, const grammar::Block& block) {
+bool th_in_engine_file(const grammar::RawDeck& deck, const grammar::Block& block) {
     const grammar::FileId root = deck.sources.include_chain(block.span.file).front();
     return rad::is_engine_file_name(deck.sources.file(root).display_name);
 }
@@ -87,7 +87,7 @@ std::set<long long> defined_ids(const grammar::RawDeck& deck, const ThKind& kind
     std::set<long long> ids;
     for (const grammar::Block& block : deck.blocks) {
         const auto segments = rad::path_segments(block.keyword);
-        if (segments.empty() || in_engine_file(deck, block)) continue;
+        if (segments.empty() || th_in_engine_file(deck, block)) continue;
         const std::string_view first = trim(segments.front());
         bool match = false;
         for (std::string_view name : kind.defined_by) match = match || first == name;
@@ -120,7 +120,7 @@ void check_time_history_selections(RuleContext& c) {
     std::map<const ThKind*, std::set<long long>> defined;
     for (const grammar::Block& block : c.deck.blocks) {
         const auto segments = rad::path_segments(block.keyword);
-        if (segments.size() < 2 || !is_th_prefix(trim(segments[0])) || in_engine_file(c.deck, block)) continue;
+        if (segments.size() < 2 || !is_th_prefix(trim(segments[0])) || th_in_engine_file(c.deck, block)) continue;
         const ThKind* kind = kind_of(trim(segments[1]));
         if (!kind || (kind->selection == "SPHCEL" && starter_makes_cells(f))) continue;
         auto known = defined.find(kind);

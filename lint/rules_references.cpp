@@ -35,7 +35,7 @@ DefiningWords words(const RuleContext& c) {
 
 using model::Id;
 
-std::string list_ids(const std::vector<long long>& ids) {
+std::string listed_reference_ids(const std::vector<long long>& ids) {
     std::string s;
     for (std::size_t i = 0; i < ids.size() && i < max_listed; ++i) s += (i ? ", " : "") + std::to_string(ids[i]);
     if (ids.size() > max_listed) s += ", ...";
@@ -350,7 +350,8 @@ void check_set_members(RuleContext& c, const model::IdIndex& nodes) {
         for (long long id : s.members)
             if (!nodes.find(id)) missing.push_back(id);
         if (!missing.empty())
-            c.report("REF001", s.span, fmt::format("node set {} names undefined node(s) {}", s.id, list_ids(missing)));
+            c.report("REF001", s.span,
+                     fmt::format("node set {} names undefined node(s) {}", s.id, listed_reference_ids(missing)));
     }
     for (const auto& s : c.model.part_sets) {
         std::vector<long long> missing;
@@ -359,7 +360,7 @@ void check_set_members(RuleContext& c, const model::IdIndex& nodes) {
         // At the member that names the first missing part: the line a person edits (the SID is a note).
         if (!missing.empty())
             c.report("REF002", member_span(c, s, missing.front()),
-                     fmt::format("part set {} names undefined part(s) {}", s.id, list_ids(missing)))
+                     fmt::format("part set {} names undefined part(s) {}", s.id, listed_reference_ids(missing)))
                 .notes.push_back({s.span, fmt::format("part set {} is defined here", s.id)});
     }
 }

@@ -12,7 +12,7 @@
 namespace sphdeck::lint {
 namespace {
 
-bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
+bool references_links_starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
 
 // The ids a kind's defining keywords give, read from the first field of their first card (after
 // the title line of _TITLE), as raw_first_id reads unknown sections and materials: the keywords
@@ -82,7 +82,7 @@ bool deck_makes_parts(const grammar::RawDeck& deck) {
     for (const grammar::Block& b : deck.blocks)
         for (std::string_view p : {"*DEFINE_ADAPTIVE_SOLID_TO_SPH", "*PART_DUPLICATE", "*ALE_STRUCTURED_MESH",
                                    "*DEFINE_PARTICLE_BLAST", "*ELEMENT_SEATBELT"})
-            if (starts_with(b.keyword, p)) return true;
+            if (references_links_starts_with(b.keyword, p)) return true;
     return false;
 }
 
@@ -90,7 +90,7 @@ bool deck_makes_parts(const grammar::RawDeck& deck) {
 // sphdeck does not apply: ids named across files cannot be matched.
 bool ids_offset(const grammar::RawDeck& deck) {
     for (const grammar::Block& b : deck.blocks)
-        if (starts_with(b.keyword, "*INCLUDE_TRANSFORM")) return true;
+        if (references_links_starts_with(b.keyword, "*INCLUDE_TRANSFORM")) return true;
     return false;
 }
 
@@ -143,7 +143,8 @@ void check_followed_references(RuleContext& c, std::set<model::Id>& boxes) {
             d = ids_of(c.model.materials);
             // Thermal materials (*MAT_THERMAL_..., the TMID of a part) are not in model.materials.
             for (const grammar::Block& b : c.deck.blocks)
-                if (starts_with(b.keyword, "*MAT_THERMAL_") && c.deck.begin_lines(b) < c.deck.end_lines(b)) {
+                if (references_links_starts_with(b.keyword, "*MAT_THERMAL_") &&
+                    c.deck.begin_lines(b) < c.deck.end_lines(b)) {
                     const grammar::CardLine* line = c.deck.begin_lines(b) + keywords::title_lines(b.keyword);
                     if (line >= c.deck.end_lines(b)) continue;
                     if (auto id = first_integer(c.deck.text(*line), b.format))

@@ -69,9 +69,9 @@ StarterCheck density() {
 // stops at its CARD_PREREAD; these are its cards. Card 3 is SIG_Y UTS EUTS with Iflag 1, a b n else.
 std::vector<rad::FormatSpec> law2_layout() {
     const CardSpec rho = once({R("MAT_RHO"), R("Refer_Rho")});
-    const auto hardening = [](std::string_view when, std::initializer_list<FieldSpec> fields) {
+    const auto hardening = [](std::string_view when_field, std::initializer_list<FieldSpec> fields) {
         CardSpec c = once(fields);
-        c.when = c.condition = when;
+        c.when = c.condition = when_field;
         return c;
     };
     const CardSpec von_mises_iflag1 = hardening("MAT_Iflag=1", {R("MAT_SIG2_yc"), R("MAT_UTS"), R("MAT_EUTS"),
@@ -101,7 +101,7 @@ std::vector<rad::FormatSpec> law2_layout() {
     };
 }
 
-CardSpec when(std::string_view condition, std::initializer_list<FieldSpec> fields) {
+CardSpec when_field(std::string_view condition, std::initializer_list<FieldSpec> fields) {
     CardSpec c = once(fields);
     c.when = c.condition = condition;
     return c;
@@ -113,21 +113,21 @@ CardSpec when(std::string_view condition, std::initializer_list<FieldSpec> field
 std::vector<rad::FormatSpec> law51_layout() {
     constexpr std::string_view iform10 = "MAT_Iflag=10";
     std::vector<CardSpec> cards = {once({R("MAT_RHO"), R("Refer_Rho")}), once({I("MAT_Iflag")}),
-                                   when(iform10, {R("PEXT"), R("MAT_NU"), R("MAT_Lamda")})};
+                                   when_field(iform10, {R("PEXT"), R("MAT_NU"), R("MAT_Lamda")})};
     for (int phase = 0; phase < 3; ++phase) {
-        cards.push_back(when(iform10, {R("MAT_ALPHA_Iflg10_phas"), R("MAT_RHO_Iflg10_phas"), R("MAT_E_Iflg10_phas"),
+        cards.push_back(when_field(iform10, {R("MAT_ALPHA_Iflg10_phas"), R("MAT_RHO_Iflg10_phas"), R("MAT_E_Iflg10_phas"),
                                        R("MAT_P_Iflg10_phas"), R("MAT_C0_Iflg10_phas")}));
-        cards.push_back(when(iform10, {R("MAT_C1_Iflg10_phas"), R("MAT_C2_Iflg10_phas"), R("MAT_C3_Iflg10_phas"),
+        cards.push_back(when_field(iform10, {R("MAT_C1_Iflg10_phas"), R("MAT_C2_Iflg10_phas"), R("MAT_C3_Iflg10_phas"),
                                        R("MAT_C4_Iflg10_phas"), R("MAT_C5_Iflg10_phas")}));
-        cards.push_back(when(iform10, {R("MLAW51_G10"), R("Sigma_Y10"), R("BB10"), R("LAW51_N10")}));
-        cards.push_back(when(iform10, {R("CC10"), R("e010")}));
-        cards.push_back(when(iform10, {R("CM10"), R("T10_10"), R("T_melt10"), R("T_limit10"), R("Rhocv10")}));
-        cards.push_back(when(iform10, {R("E_max10"), R("sigma_max10"), R("K_A1"), R("K_B1")}));
+        cards.push_back(when_field(iform10, {R("MLAW51_G10"), R("Sigma_Y10"), R("BB10"), R("LAW51_N10")}));
+        cards.push_back(when_field(iform10, {R("CC10"), R("e010")}));
+        cards.push_back(when_field(iform10, {R("CM10"), R("T10_10"), R("T_melt10"), R("T_limit10"), R("Rhocv10")}));
+        cards.push_back(when_field(iform10, {R("E_max10"), R("sigma_max10"), R("K_A1"), R("K_B1")}));
     }
-    cards.push_back(when(iform10, {R("MLAW51_ALPHA"), R("MLAW51_Rho"), R("MLAW51_E0"), R("MLAW51_Pmin"),
+    cards.push_back(when_field(iform10, {R("MLAW51_ALPHA"), R("MLAW51_Rho"), R("MLAW51_E0"), R("MLAW51_Pmin"),
                                    R("MLAW51_C0")}));
-    cards.push_back(when(iform10, {R("MLAW51_B1"), R("MLAW51_B2"), R("MLAW51_R1"), R("MLAW51_R2"), R("MLAW51_W")}));
-    cards.push_back(when(iform10, {R("MLAW51_D"), R("MLAW51_PCJ"), R("MLAW51_C14"), S(), I("MAT_IBFRAC")}));
+    cards.push_back(when_field(iform10, {R("MLAW51_B1"), R("MLAW51_B2"), R("MLAW51_R1"), R("MLAW51_R2"), R("MLAW51_W")}));
+    cards.push_back(when_field(iform10, {R("MLAW51_D"), R("MLAW51_PCJ"), R("MLAW51_C14"), S(), I("MAT_IBFRAC")}));
     cards.push_back(opaque());  // the other forms' cards
     rad::FormatSpec format;
     format.since = 0;

@@ -25,8 +25,8 @@ std::uint32_t skip_blanks(std::string_view text, std::uint32_t i) {
     return i;
 }
 
-diag::Diagnostic bad(grammar::FileId file, std::uint32_t line, std::uint32_t begin, std::uint32_t end,
-                     std::string message) {
+diag::Diagnostic bad_suppression(grammar::FileId file, std::uint32_t line, std::uint32_t begin, std::uint32_t end,
+                                 std::string message) {
     return diag::Diagnostic{"DK028",
                             diag::Severity::Warning,
                             std::move(message),
@@ -159,15 +159,15 @@ bool parse_suppression(std::string_view comment, grammar::FileId file, std::uint
     else if (action == "disable-file")
         out.scope = Suppression::Scope::File;
     else {
-        problems.push_back(bad(file, line, action_begin, j,
-                               "unknown suppression '" + std::string(action) +
-                                   "'; expected disable=, disable-next-line= or disable-file="));
+        problems.push_back(bad_suppression(file, line, action_begin, j,
+                                           "unknown suppression '" + std::string(action) +
+                                               "'; expected disable=, disable-next-line= or disable-file="));
         return true;
     }
     j = skip_blanks(comment, j);
     if (j >= comment.size() || comment[j] != '=') {
-        problems.push_back(
-            bad(file, line, action_begin, j, "expected '=' and rule codes after '" + std::string(action) + "'"));
+        problems.push_back(bad_suppression(file, line, action_begin, j,
+                                           "expected '=' and rule codes after '" + std::string(action) + "'"));
         return true;
     }
     // The list runs up to " --" (the reason) or the end of the line.
@@ -185,19 +185,19 @@ bool parse_suppression(std::string_view comment, grammar::FileId file, std::uint
         const std::string_view word = list.substr(b, e - b);
         const auto col = static_cast<std::uint32_t>(base + b), end_col = static_cast<std::uint32_t>(base + e);
         if (word.empty()) {
-            problems.push_back(bad(file, line, col, end_col, "empty rule code in suppression list"));
+            problems.push_back(bad_suppression(file, line, col, end_col, "empty rule code in suppression list"));
         } else if (word.find_first_of(" \t") != std::string_view::npos) {
-            problems.push_back(
-                bad(file, line, col, end_col,
-                    "expected ',' between rule codes, or ' -- ' before the reason, in '" + std::string(word) + "'"));
+            problems.push_back(bad_suppression(file, line, col, end_col,
+                                               "expected ',' between rule codes, or ' -- ' before the reason, in '" +
+                                                   std::string(word) + "'"));
         } else if (word == "all") {
             out.items.push_back({"all", col + 1, end_col + 1});
         } else if (const RuleInfo* rule = find_rule(word)) {
             out.items.push_back({std::string(rule->code), col + 1, end_col + 1});
         } else {
             problems.push_back(
-                bad(file, line, col, end_col,
-                    "unknown rule '" + std::string(word) + "' in suppression" + did_you_mean_rule(word)));
+                bad_suppression(file, line, col, end_col,
+                                "unknown rule '" + std::string(word) + "' in suppression" + did_you_mean_rule(word)));
         }
         item_begin = item_end + 1;
     } while (item_begin <= list.size());

@@ -8,7 +8,7 @@
 
 namespace sphdeck::lsp {
 namespace {
-bool located(const grammar::Span& span, const grammar::SourceMap& sources) {
+bool located_diagnostic(const grammar::Span& span, const grammar::SourceMap& sources) {
     return span.valid() && span.file < sources.size() && span.line > 0;
 }
 }  // namespace
@@ -33,7 +33,7 @@ nlohmann::json lsp_diagnostic(const diag::Diagnostic& d, const grammar::SourceMa
     std::string message = d.message;
     nlohmann::json related = nlohmann::json::array();
     for (const diag::Note& note : d.notes) {
-        if (located(note.span, sources)) {
+        if (located_diagnostic(note.span, sources)) {
             related.push_back(
                 {{"location", {{"uri", uri_of_file(note.span.file)}, {"range", range_json(sources, note.span)}}},
                  {"message", note.message}});
@@ -41,7 +41,8 @@ nlohmann::json lsp_diagnostic(const diag::Diagnostic& d, const grammar::SourceMa
             message += "\nnote: " + note.message;  // what `check` prints as "= note: ..."
         }
     }
-    nlohmann::json out = {{"range", located(d.span, sources) ? range_json(sources, d.span) : range_json(sources, {})},
+    nlohmann::json out = {{"range",
+                           located_diagnostic(d.span, sources) ? range_json(sources, d.span) : range_json(sources, {})},
                           {"severity", lsp_severity(d.severity)},
                           {"code", d.code},
                           {"codeDescription", {{"href", rule_doc_url(d.code)}}},
@@ -63,7 +64,7 @@ std::map<std::filesystem::path, FileFindings> findings_by_file(const engine::Che
     if (keys.empty()) return out;
     const auto uri_of_file = [&](grammar::FileId id) { return uri_of(keys[id], sources.file(id).path); };
     for (const diag::Diagnostic& d : result.diagnostics) {
-        const grammar::FileId file = located(d.span, sources) ? d.span.file : 0;
+        const grammar::FileId file = located_diagnostic(d.span, sources) ? d.span.file : 0;
         out[keys[file]].diagnostics.push_back(lsp_diagnostic(d, sources, uri_of_file));
     }
     return out;

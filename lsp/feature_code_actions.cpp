@@ -24,13 +24,13 @@ namespace sphdeck::lsp {
 using namespace engine;  // the position index: engine/position_index.hpp, engine/id_lookup.hpp
 namespace {
 
-nlohmann::json position(std::uint32_t line, std::uint32_t character) {
+nlohmann::json action_position(std::uint32_t line, std::uint32_t character) {
     return {{"line", line}, {"character", character}};
 }
 
 nlohmann::json text_edit(std::uint32_t line, std::uint32_t start, std::uint32_t end_line, std::uint32_t end,
                          std::string text) {
-    return {{"range", {{"start", position(line, start)}, {"end", position(end_line, end)}}},
+    return {{"range", {{"start", action_position(line, start)}, {"end", action_position(end_line, end)}}},
             {"newText", std::move(text)}};
 }
 
@@ -113,7 +113,7 @@ std::optional<nlohmann::json> fix_all(const Request& r) {
 }
 
 // Whether the request's context.only (absent: everything but source actions) asks for `kind`.
-bool wanted(const nlohmann::json& context, std::string_view kind) {
+bool wanted_action(const nlohmann::json& context, std::string_view kind) {
     const auto only = context.find("only");
     if (only == context.end() || !only->is_array()) return kind == "quickfix";
     for (const auto& k : *only) {
@@ -150,10 +150,10 @@ nlohmann::json code_actions(const CheckedDeck& deck, grammar::FileId file, const
     const Request r{deck, file, uri, deck.result.model.radioss ? '#' : '$'};
     const auto context = params.find("context");
     if (context == params.end() || !context->is_object()) return out;
-    if (wanted(*context, "source.fixAll.sphdeck"))
+    if (wanted_action(*context, "source.fixAll.sphdeck"))
         if (auto all = fix_all(r)) out.push_back(std::move(*all));
     const auto diagnostics = context->find("diagnostics");
-    if (!wanted(*context, "quickfix") || diagnostics == context->end() || !diagnostics->is_array()) return out;
+    if (!wanted_action(*context, "quickfix") || diagnostics == context->end() || !diagnostics->is_array()) return out;
     nlohmann::json fixes = nlohmann::json::array(), suppressions = nlohmann::json::array();
     for (const auto& d : *diagnostics) {
         if (!d.is_object() || !d.contains("code") || !d["code"].is_string()) continue;

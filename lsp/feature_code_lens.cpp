@@ -15,7 +15,7 @@
 namespace sphdeck::lsp {
 namespace {
 
-bool same_name(std::string_view a, std::string_view b) {
+bool lens_same_name(std::string_view a, std::string_view b) {
     return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
                return std::toupper(static_cast<unsigned char>(x)) == std::toupper(static_cast<unsigned char>(y));
            });
@@ -74,7 +74,7 @@ nlohmann::json code_lenses(const CheckedDeck& deck, grammar::FileId file, const 
             const std::string_view text = sources.line_text(f, l);
             if (text.find('&') == std::string_view::npos || text.front() == '$') continue;
             for (const auto& r : engine::parameter_references(text, f, l))
-                for (std::size_t i = 0; i < defined.size(); ++i) counts[i] += same_name(r.name, defined[i]->name);
+                for (std::size_t i = 0; i < defined.size(); ++i) counts[i] += lens_same_name(r.name, defined[i]->name);
         }
     }
     for (std::size_t i = 0; i < defined.size(); ++i)

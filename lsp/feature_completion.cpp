@@ -34,7 +34,8 @@ struct Edit {
     std::uint32_t start = 0, end = 0;  // UTF-16 characters
 };
 
-nlohmann::json item(std::string label, int kind, std::string detail, const Edit& edit, std::string documentation = {}) {
+nlohmann::json completion_item(std::string label, int kind, std::string detail, const Edit& edit,
+                               std::string documentation = {}) {
     nlohmann::json out = {{"label", label},
                           {"kind", kind},
                           {"textEdit",
@@ -78,7 +79,7 @@ nlohmann::json keyword_items(std::string_view typed, const Edit& edit) {
     std::sort(found.begin(), found.begin() + static_cast<std::ptrdiff_t>(hand));
     nlohmann::json items = nlohmann::json::array();
     for (std::size_t i = 0; i < found.size() && i < kMaxItems; ++i) {
-        auto it = item(found[i].first, kKeyword, found[i].second, edit);
+        auto it = completion_item(found[i].first, kKeyword, found[i].second, edit);
         it["sortText"] = fmt::format("{:05}", i);
         items.push_back(std::move(it));
     }
@@ -89,10 +90,10 @@ nlohmann::json radioss_keyword_items(std::string_view typed, const Edit& edit) {
     nlohmann::json items = nlohmann::json::array();
     for (const auto& k : rad::all_keywords()) {
         if (starts_with_upper(k.name, typed))
-            items.push_back(item(std::string(k.name), kKeyword, std::string(k.summary), edit));
+            items.push_back(completion_item(std::string(k.name), kKeyword, std::string(k.summary), edit));
         for (auto alias : k.aliases)
             if (starts_with_upper(alias, typed))
-                items.push_back(item(std::string(alias), kKeyword, std::string(k.summary), edit));
+                items.push_back(completion_item(std::string(alias), kKeyword, std::string(k.summary), edit));
     }
     // The other keywords of the starter's CFG files (grammar/radioss/generated/), after the tables'.
     std::size_t generated = 0;
@@ -101,7 +102,8 @@ nlohmann::json radioss_keyword_items(std::string_view typed, const Edit& edit) {
         std::size_t segments = 0;
         if (const auto* hand = rad::find_keyword(k.name, &segments); hand && hand->name == k.name) continue;
         if (++generated > 200) break;  // a bare '/' matches them all
-        items.push_back(item(std::string(k.name), kKeyword, k.engine ? "engine keyword" : "starter keyword", edit));
+        items.push_back(
+            completion_item(std::string(k.name), kKeyword, k.engine ? "engine keyword" : "starter keyword", edit));
     }
     return list(std::move(items), generated > 200);
 }
@@ -112,7 +114,8 @@ void id_items(const CheckedDeck& deck, const std::string& kind, const Edit& edit
     for (const auto& use : definitions_of(deck.result, kind)) {
         if (!seen.insert(use.id).second) continue;
         if (items.size() >= kMaxItems) break;
-        items.push_back(item(display_text(use.id), kReference, display_text(describe(deck.result, use)), edit));
+        items.push_back(
+            completion_item(display_text(use.id), kReference, display_text(describe(deck.result, use)), edit));
     }
 }
 
@@ -137,16 +140,17 @@ nlohmann::json field_items(const CheckedDeck& deck, const grammar::Block& block,
     const keywords::FieldSpec& field = at->dyna_card->fields[*index];
     nlohmann::json items = nlohmann::json::array();
     for (const auto& c : field.choices) {
-        auto choice = item(std::to_string(c.value), kEnumMember, std::string(c.meaning), edit,
-                           fmt::format("{} = {}: {}{}", field.name, c.value, c.meaning,
-                                       c.since.empty() ? std::string() : fmt::format(" (since {})", c.since)));
+        auto choice =
+            completion_item(std::to_string(c.value), kEnumMember, std::string(c.meaning), edit,
+                            fmt::format("{} = {}: {}{}", field.name, c.value, c.meaning,
+                                        c.since.empty() ? std::string() : fmt::format(" (since {})", c.since)));
         // The meaning beside the value in the list itself, in the manual's order.
         choice["labelDetails"] = {{"description", display_text(c.meaning)}};
         choice["sortText"] = fmt::format("{:05}", items.size());
         items.push_back(std::move(choice));
     }
     for (auto word : field.text_choices)
-        items.push_back(item(std::string(word), kValue, std::string(field.name), edit));
+        items.push_back(completion_item(std::string(word), kValue, std::string(field.name), edit));
     const std::optional<keywords::KeywordMatch> match = decodable_match(block);
     if (auto role = dyna_id_role(match->schema->name, field); role && !role->defines)
         id_items(deck, role->kind, edit, items);

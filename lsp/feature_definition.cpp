@@ -20,7 +20,7 @@ nlohmann::json location(const grammar::SourceMap& sources, const grammar::Span& 
     return {{"uri", uri_from_path(sources.file(span.file).path)}, {"range", range_json(sources, span)}};
 }
 
-bool same_name(std::string_view a, std::string_view b) {
+bool definition_same_name(std::string_view a, std::string_view b) {
     return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
                return std::toupper(static_cast<unsigned char>(x)) == std::toupper(static_cast<unsigned char>(y));
            });
@@ -72,12 +72,12 @@ nlohmann::json references(const CheckedDeck& deck, grammar::FileId file, TextPos
                 const std::string_view text = sources.line_text(f, l);
                 if (text.find('&') == std::string_view::npos) continue;
                 for (const auto& r : parameter_references(text, f, l))
-                    if (same_name(r.name, reference->name)) out.push_back(location(sources, r.span));
+                    if (definition_same_name(r.name, reference->name)) out.push_back(location(sources, r.span));
             }
         }
         if (include_declaration)
             for (const auto& p : raw.parameters.definitions())
-                if (same_name(p.name, reference->name)) out.push_back(location(sources, p.span));
+                if (definition_same_name(p.name, reference->name)) out.push_back(location(sources, p.span));
         return out;
     }
     auto use = id_at(deck.result, file, at.line, at.column);

@@ -22,7 +22,7 @@ namespace rad = grammar::radioss;
 
 constexpr std::size_t kMaxChoices = 24;  // enum values listed in a hover; the rest are counted
 
-std::string number(double v) { return fmt::format("{:g}", v); }
+std::string hover_number(double v) { return fmt::format("{:g}", v); }
 
 nlohmann::json hover_json(std::string markdown, const grammar::SourceMap& sources, const grammar::Span& span) {
     return {{"contents", {{"kind", "markdown"}, {"value", display_text(markdown)}}},
@@ -31,8 +31,8 @@ nlohmann::json hover_json(std::string markdown, const grammar::SourceMap& source
 
 std::string default_text(const FieldSpec& f) {
     if (f.default_value)
-        return f.zero_is_default ? fmt::format("{} (0 means the default)", number(*f.default_value))
-                                 : number(*f.default_value);
+        return f.zero_is_default ? fmt::format("{} (0 means the default)", hover_number(*f.default_value))
+                                 : hover_number(*f.default_value);
     if (!f.default_text.empty()) return std::string(f.default_text);
     return f.required ? "none (required)" : "none";
 }
@@ -53,7 +53,8 @@ std::string allowed_text(const FieldSpec& f) {
     } else if (!f.text_choices.empty()) {
         out += fmt::format("\n\nallowed values: {}", fmt::join(f.text_choices, ", "));
     } else if (f.min || f.max) {
-        out += fmt::format("\n\nrange: [{}, {}]", f.min ? number(*f.min) : "-inf", f.max ? number(*f.max) : "inf");
+        out += fmt::format("\n\nrange: [{}, {}]", f.min ? hover_number(*f.min) : "-inf",
+                           f.max ? hover_number(*f.max) : "inf");
     }
     return out;
 }
@@ -180,7 +181,7 @@ nlohmann::json radioss_hover(const CheckedDeck& deck, const grammar::Block& bloc
     } else if (!v.valid) {
         text += fmt::format("\n\nvalue: `{}` cannot be read (see the diagnostic)", v.text);
     } else if (v.spec->cell == rad::Cell::Int || v.spec->cell == rad::Cell::Real) {
-        text += fmt::format("\n\nvalue: {}", number(v.number));
+        text += fmt::format("\n\nvalue: {}", hover_number(v.number));
         if (v.number == 0.0) text += " (zero: the starter's default applies)";
     } else {
         text += fmt::format("\n\nvalue: `{}`", v.text);
@@ -233,7 +234,8 @@ std::optional<nlohmann::json> parameter_hover(const CheckedDeck& deck, const gra
                           reference->span);
     }
     const grammar::Parameter& p = *found.parameter;
-    std::string value = p.type == grammar::ParameterType::Character ? fmt::format("`{}`", p.text) : number(p.number);
+    std::string value =
+        p.type == grammar::ParameterType::Character ? fmt::format("`{}`", p.text) : hover_number(p.number);
     std::string text = fmt::format("parameter **{}** = {} ({}), `*PARAMETER` line {}", p.name, value,
                                    p.type == grammar::ParameterType::Real      ? "real"
                                    : p.type == grammar::ParameterType::Integer ? "integer"

@@ -42,7 +42,7 @@ HintSettings settings_of(const nlohmann::json& params) {
     return s;
 }
 
-std::string number(double v) { return fmt::format("{:g}", v); }
+std::string inlay_number(double v) { return fmt::format("{:g}", v); }
 
 class Hints {
 public:
@@ -81,7 +81,7 @@ public:
             if (v.spec->type == keywords::FieldType::Text)
                 value = std::string(v.spec->default_text);
             else if (v.valid)
-                value = number(v.number);
+                value = inlay_number(v.number);
             if (value.empty()) continue;
             add(line.line, *start, fmt::format("{}={}", v.spec->name, value), kHintParameter, false, false,
                 "blank: the default applies");
@@ -107,7 +107,7 @@ private:
         if (!found.parameter) return;
         const grammar::Parameter& p = *found.parameter;
         std::string value =
-            p.type == grammar::ParameterType::Character ? fmt::format("\"{}\"", p.text) : number(p.number);
+            p.type == grammar::ParameterType::Character ? fmt::format("\"{}\"", p.text) : inlay_number(p.number);
         add(line, v.span.end_column, "= " + value, kHintType, true, false,
             fmt::format("*PARAMETER line {}", p.span.line));
     }

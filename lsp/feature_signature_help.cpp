@@ -14,16 +14,16 @@ namespace {
 
 namespace rad = grammar::radioss;
 
-struct Parameter {
+struct SignatureParameter {
     std::string name;
     std::string documentation;
 };
 
-nlohmann::json signature(std::string title, const std::vector<Parameter>& parameters,
+nlohmann::json signature(std::string title, const std::vector<SignatureParameter>& parameters,
                          std::optional<std::size_t> active) {
     std::string label = title + ":";
     nlohmann::json params = nlohmann::json::array();
-    for (const Parameter& p : parameters) {
+    for (const SignatureParameter& p : parameters) {
         label += ' ';
         // Offsets into the label (UTF-16; field names are ASCII).
         params.push_back({{"label", {label.size(), label.size() + p.name.size()}},
@@ -44,7 +44,7 @@ nlohmann::json dyna_signature(const grammar::RawDeck& raw, const grammar::Block&
     const keywords::CardSpec* card = at->dyna_card;
     std::optional<std::size_t> index = at->field_under(column);
     if (!index) index = at->typed_slot(column);
-    std::vector<Parameter> parameters;
+    std::vector<SignatureParameter> parameters;
     std::optional<std::size_t> active;
     for (std::size_t i = 0; i < card->fields.size(); ++i) {
         const keywords::FieldSpec& f = card->fields[i];
@@ -66,7 +66,7 @@ nlohmann::json radioss_signature(const grammar::RawDeck& raw, const grammar::Blo
     if (!spec || !at || !at->radioss->card) return nullptr;
     const RadiossCard* card = &*at->radioss;
     const auto index = at->field_under(column);
-    std::vector<Parameter> parameters;
+    std::vector<SignatureParameter> parameters;
     std::optional<std::size_t> active;
     for (std::size_t i = 0; i < card->card->fields.size(); ++i) {
         const rad::FieldSpec& f = card->card->fields[i];

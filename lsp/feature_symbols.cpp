@@ -14,8 +14,8 @@ using namespace engine;  // the position index: engine/position_index.hpp, engin
 namespace {
 
 // LSP SymbolKind values.
-constexpr int kStruct = 23;  // a keyword block
-constexpr int kObject = 19;  // a part
+constexpr int kStructSymbol = 23;  // a keyword block
+constexpr int kObjectSymbol = 19;  // a part
 
 nlohmann::json line_range(const grammar::SourceMap& sources, grammar::FileId file, std::uint32_t first,
                           std::uint32_t last) {
@@ -45,7 +45,7 @@ nlohmann::json dyna_symbol(const CheckedDeck& deck, const grammar::Block& block,
     const auto& raw = deck.result.deck;
     const std::uint32_t last = block_last_line(raw, block);
     nlohmann::json symbol = {{"name", display_text(block.keyword)},
-                             {"kind", kStruct},
+                             {"kind", kStructSymbol},
                              {"range", line_range(raw.sources, block.span.file, block.span.line, last)},
                              {"selectionRange", range_json(raw.sources, block.span)}};
     std::string detail;
@@ -59,7 +59,7 @@ nlohmann::json dyna_symbol(const CheckedDeck& deck, const grammar::Block& block,
             const std::uint32_t first = part.span.line > block.span.line + 1 ? part.span.line - 1 : part.span.line;
             children.push_back({{"name", fmt::format("part {}", part.id)},
                                 {"detail", display_text(part.heading)},
-                                {"kind", kObject},
+                                {"kind", kObjectSymbol},
                                 {"range", line_range(raw.sources, block.span.file, first, part.span.line)},
                                 {"selectionRange", range_json(raw.sources, part.span)}});
         }
@@ -75,7 +75,7 @@ nlohmann::json radioss_symbol(const CheckedDeck& deck, const grammar::Block& blo
     const auto& raw = deck.result.deck;
     const std::uint32_t last = block_last_line(raw, block);
     nlohmann::json symbol = {{"name", display_text(block.arguments.empty() ? block.keyword : block.arguments)},
-                             {"kind", block.keyword.rfind("/PART", 0) == 0 ? kObject : kStruct},
+                             {"kind", block.keyword.rfind("/PART", 0) == 0 ? kObjectSymbol : kStructSymbol},
                              {"range", line_range(raw.sources, block.span.file, block.span.line, last)},
                              {"selectionRange", range_json(raw.sources, block.span)}};
     const auto* spec = radioss_keyword(block);

@@ -18,13 +18,13 @@ namespace {
 constexpr std::size_t kMaxSymbols = 2000;
 
 // LSP SymbolKind values.
-constexpr int kClass = 5, kFunction = 12, kVariable = 13, kObject = 19, kStruct = 23;
+constexpr int kClass = 5, kFunction = 12, kVariable = 13, kObjectKind = 19, kStructKind = 23;
 
 int symbol_kind(std::string_view kind) {
-    if (kind == "PART") return kObject;
+    if (kind == "PART") return kObjectKind;
     if (kind == "MAT" || kind == "EOS") return kClass;
     if (kind == "DEFINE_CURVE" || kind == "FUNCT") return kFunction;
-    return kStruct;
+    return kStructKind;
 }
 
 char lower(char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); }

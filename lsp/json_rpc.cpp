@@ -11,7 +11,7 @@ namespace sphdeck::lsp {
 namespace {
 constexpr std::size_t max_header_line = 8192;  // a real header line is ~30 bytes
 constexpr std::size_t max_header_lines = 32;
-constexpr std::size_t chunk = 65536;
+constexpr std::size_t read_chunk = 65536;
 constexpr int max_depth = 256;  // LSP messages nest a few levels; bounds the parser's work on "[[[["
 
 std::string_view trim(std::string_view s) {
@@ -107,8 +107,8 @@ bool MessageReader::read_body(std::size_t length, std::string& out) {
         }
         std::streambuf* buf = in_.rdbuf();
         if (!buf) return false;
-        std::array<char, chunk> block;
-        const auto want = static_cast<std::streamsize>(std::min(length - out.size(), chunk));
+        std::array<char, read_chunk> block;
+        const auto want = static_cast<std::streamsize>(std::min(length - out.size(), read_chunk));
         const std::streamsize got = buf->sgetn(block.data(), want);
         if (got <= 0) return false;
         out.append(block.data(), static_cast<std::size_t>(got));
@@ -127,8 +127,8 @@ void MessageReader::discard(std::size_t length) {
         }
         std::streambuf* buf = in_.rdbuf();
         if (!buf) return;
-        std::array<char, chunk> block;
-        const std::streamsize got = buf->sgetn(block.data(), static_cast<std::streamsize>(std::min(left, chunk)));
+        std::array<char, read_chunk> block;
+        const std::streamsize got = buf->sgetn(block.data(), static_cast<std::streamsize>(std::min(left, read_chunk)));
         if (got <= 0) return;
         left -= static_cast<std::size_t>(got);
     }

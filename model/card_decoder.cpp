@@ -21,7 +21,7 @@ using grammar::NumberStatus;
 using keywords::FieldType;
 
 namespace {
-std::string shown(std::string_view text) {
+std::string shown_value(std::string_view text) {
     constexpr std::size_t limit = 40;
     return text.size() > limit ? std::string(text.substr(0, limit)) + "..." : std::string(text);
 }
@@ -144,7 +144,7 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
         if (token.shape == grammar::ValueShape::Other && (type == FieldType::Integer || type == FieldType::Real))
             continue;
         report("DK005", diag::Severity::Error,
-               fmt::format("free-format value '{}' is longer than its {}-column field {}", shown(token.text),
+               fmt::format("free-format value '{}' is longer than its {}-column field {}", shown_value(token.text),
                            positions_[i].width, card.fields[i].name),
                fields_[i].span);
     }
@@ -221,7 +221,7 @@ void CardDecoder::check_decimal_comma(const keywords::CardSpec& card, const gram
         if (!v.explicit_value || card.fields[i].type == FieldType::Unused) continue;
         const grammar::RealValue r = grammar::parse_real(v.text);
         reading += fmt::format("{}{} {}", reading.empty() ? "" : ", ", card.fields[i].name,
-                               r.status == NumberStatus::Ok ? number_text(r.value) : shown(v.text));
+                               r.status == NumberStatus::Ok ? number_text(r.value) : shown_value(v.text));
         ++shown_fields;
     }
     out_.push_back(decimal_comma_finding(*comma, line, "LS-DYNA", reading));
@@ -278,14 +278,15 @@ void CardDecoder::decode_number(const grammar::Block& block, const keywords::Fie
         if (n.status == NumberStatus::Ok) {
             if (n.written_as_real)
                 report("DK004", diag::Severity::Warning,
-                       fmt::format("integer field {} written as real '{}'; read as {}", spec.name, shown(token.text),
-                                   n.value),
+                       fmt::format("integer field {} written as real '{}'; read as {}", spec.name,
+                                   shown_value(token.text), n.value),
                        v.span);
             v.number = static_cast<double>(n.value);
             v.valid = true;
         } else {
             report("DK002", diag::Severity::Error,
-                   fmt::format("'{}' in integer field {} is not an integer", shown(token.text), spec.name), v.span);
+                   fmt::format("'{}' in integer field {} is not an integer", shown_value(token.text), spec.name),
+                   v.span);
             if (auto note = run_on_note(line_text_, v.span, token.text); !note.empty())
                 out_.back().notes.push_back({grammar::Span{}, std::move(note)});
             return;
@@ -294,7 +295,7 @@ void CardDecoder::decode_number(const grammar::Block& block, const keywords::Fie
         grammar::RealValue r = grammar::to_real(token);
         if (r.status != NumberStatus::Ok) {
             report("DK003", diag::Severity::Error,
-                   fmt::format("'{}' in {} field {} is not a number", shown(token.text),
+                   fmt::format("'{}' in {} field {} is not a number", shown_value(token.text),
                                spec.pydyna_integer ? "integer" : "real", spec.name),
                    v.span);
             if (auto note = run_on_note(line_text_, v.span, token.text); !note.empty())
@@ -340,8 +341,8 @@ void CardDecoder::check_text(const grammar::Block& block, const keywords::FieldS
             return;
     std::string allowed;
     for (std::string_view c : spec.text_choices) allowed += (allowed.empty() ? "" : ", ") + std::string(c);
-    report("DK007", diag::Severity::Error, fmt::format("{} = '{}' is not one of {}", spec.name, shown(text), allowed),
-           v.span);
+    report("DK007", diag::Severity::Error,
+           fmt::format("{} = '{}' is not one of {}", spec.name, shown_value(text), allowed), v.span);
 }
 
 void CardDecoder::check_range(const keywords::FieldSpec& spec, const FieldValue& v) {

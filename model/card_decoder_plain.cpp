@@ -25,7 +25,7 @@ std::string_view trim_spaces(std::string_view s, std::size_t& offset) {
 }
 
 // What decode_number checks after the value: an integer beyond 2^53, choices and ranges.
-bool in_range(const keywords::FieldSpec& spec, double number) {
+bool in_plain_range(const keywords::FieldSpec& spec, double number) {
     if (!spec.choices.empty()) {
         const std::optional<long long> as_integer = grammar::checked_integer<long long>(number);
         return number == std::trunc(number) && as_integer && spec.choice(*as_integer);
@@ -84,7 +84,7 @@ bool CardDecoder::decode_plain(const grammar::Block& block, const grammar::CardL
             v.number = *spec.default_value;
             continue;
         }
-        if ((!spec.choices.empty() || spec.min || spec.max) && !in_range(spec, v.number)) return false;  // DK007
+        if ((!spec.choices.empty() || spec.min || spec.max) && !in_plain_range(spec, v.number)) return false;  // DK007
     }
     return true;
 }

@@ -10,7 +10,7 @@ namespace {
 bool digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
 bool separator(char c) { return c == ' ' || c == ',' || c == '\t'; }
 
-std::string shown(std::string_view text) {
+std::string shown_reading(std::string_view text) {
     constexpr std::size_t limit = 40;
     return text.size() > limit ? std::string(text.substr(0, limit)) + "..." : std::string(text);
 }
@@ -40,7 +40,7 @@ diag::Diagnostic decimal_comma_finding(const DecimalComma& comma, const grammar:
         diag::Severity::Warning,
         fmt::format("a comma inside a fixed-format field: {} reads this line as free format{}; a decimal comma? "
                     "write {}",
-                    solver, reading.empty() ? "" : fmt::format(" ({})", reading), shown(comma.meant)),
+                    solver, reading.empty() ? "" : fmt::format(" ({})", reading), shown_reading(comma.meant)),
         grammar::Span{line.file, line.line, static_cast<std::uint32_t>(comma.begin + 1),
                       static_cast<std::uint32_t>(comma.end + 1)},
         {}};

@@ -59,12 +59,13 @@ Setting<Id> id_setting(const KeywordRecord& r, std::string_view name) {
     return s;
 }
 
-bool starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
+bool extract_starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
 
 // *MAT_ADD_EROSION, *MAT_ADD_THERMAL_EXPANSION, *MAT_THERMAL_... add properties to a material
 // defined elsewhere: they name a MID, they do not define one.
 bool is_material_keyword(std::string_view name) {
-    return starts_with(name, "*MAT_") && !starts_with(name, "*MAT_ADD_") && !starts_with(name, "*MAT_THERMAL_");
+    return extract_starts_with(name, "*MAT_") && !extract_starts_with(name, "*MAT_ADD_") &&
+           !extract_starts_with(name, "*MAT_THERMAL_");
 }
 
 void extract_control_sph(const KeywordRecord& r, ControlSph& c) {
@@ -194,7 +195,7 @@ std::vector<long long> set_members(const KeywordRecord& r, std::size_t limit, bo
 
 void extract_record(const KeywordRecord& r, std::size_t index, Model& m) {
     const std::string_view name = r.schema->name;
-    if (starts_with(name, "*CONTROL_")) return extract_controls(r, m.controls);
+    if (extract_starts_with(name, "*CONTROL_")) return extract_controls(r, m.controls);
     if (name == "*SECTION_SPH") return m.sections.push_back(sph_section(r));
     if (name == "*PART") return extract_parts(r, m.parts);
     if (is_material_keyword(name)) {
@@ -204,7 +205,7 @@ void extract_record(const KeywordRecord& r, std::size_t index, Model& m) {
                                ro && (ro->valid || !ro->explicit_value)});
         return;
     }
-    if (starts_with(name, "*EOS_")) {
+    if (extract_starts_with(name, "*EOS_")) {
         Setting<Id> id = id_setting(r, "EOSID");
         m.equations_of_state.push_back({id.value, std::string(name), id.span, index});
         return;
@@ -368,7 +369,7 @@ void extract_part_variant(const grammar::RawDeck& deck, const grammar::Block& b,
     p.id = pid.value;
     p.span = pid.span;
     p.heading = std::string(deck.text(first[0]));
-    p.inertia = starts_with(b.keyword, "*PART_INERTIA");
+    p.inertia = extract_starts_with(b.keyword, "*PART_INERTIA");
     field(1, p.section);
     field(2, p.material);
     field(3, p.eos);
@@ -380,12 +381,13 @@ void extract_part_variant(const grammar::RawDeck& deck, const grammar::Block& b,
 
 void extract_unknown_definitions(const grammar::RawDeck& deck, Model& m) {
     for (const grammar::Block& b : deck.blocks) {
-        if (starts_with(b.keyword, "*CONTROL_MPP")) m.controls.mpp_keywords.push_back(b.span);
-        const bool section = starts_with(b.keyword, "*SECTION_") && !starts_with(b.keyword, "*SECTION_SPH");
+        if (extract_starts_with(b.keyword, "*CONTROL_MPP")) m.controls.mpp_keywords.push_back(b.span);
+        const bool section =
+            extract_starts_with(b.keyword, "*SECTION_") && !extract_starts_with(b.keyword, "*SECTION_SPH");
         const bool material = is_material_keyword(b.keyword);
         // Only the *PART_ keywords that define parts (grammar/keywords/id_kinds.hpp): *PART_SENSOR names them.
-        const bool part_variant = starts_with(b.keyword, "*PART_") && keywords::defines_kind(b.keyword, "PART");
-        const bool eos = starts_with(b.keyword, "*EOS_");
+        const bool part_variant = extract_starts_with(b.keyword, "*PART_") && keywords::defines_kind(b.keyword, "PART");
+        const bool eos = extract_starts_with(b.keyword, "*EOS_");
         if (!section && !material && !eos && !part_variant) continue;
         if (auto known = keywords::find_keyword(b.keyword);
             known && known->unknown_options.empty() && !known->schema->generated)
@@ -402,7 +404,7 @@ void extract_unknown_definitions(const grammar::RawDeck& deck, Model& m) {
             s.id = id;
             s.keyword = b.keyword;
             s.span = span;
-            if (starts_with(b.keyword, "*SECTION_SHELL")) s.shell_form = raw_shell_form(deck, b);
+            if (extract_starts_with(b.keyword, "*SECTION_SHELL")) s.shell_form = raw_shell_form(deck, b);
             m.sections.push_back(std::move(s));
         } else if (material) {
             m.materials.push_back(raw_material(deck, b, id, span));

@@ -8,7 +8,7 @@
 namespace sphdeck::model {
 namespace {
 
-bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
+bool link_starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
 bool contains(std::string_view s, std::string_view p) { return s.find(p) != std::string_view::npos; }
 
 // The kinds whose definitions sphdeck knows; element ids (*ELEMENT_SOLID is not read) and the rest
@@ -36,7 +36,7 @@ constexpr std::array<std::string_view, 17> followed_kinds = {"PART",
 bool own_id_space(std::string_view keyword) {
     for (std::string_view p : {"*ICFD_", "*CESE_", "*DUALCESE_", "*EM_", "*MESH_", "*CHEMISTRY_", "*LSO_", "*IGA_",
                                "*STOCHASTIC_", "*RVE_", "*INCLUDE", "*PERTURBATION_"})
-        if (starts_with(keyword, p)) return true;
+        if (link_starts_with(keyword, p)) return true;
     return false;
 }
 
@@ -84,7 +84,7 @@ std::string_view contact_kind(std::string_view keyword, std::string_view field, 
 std::string_view missing_link(std::string_view keyword, std::string_view field) {
     if (field != "LCID") return {};
     for (std::string_view p : {"*BOUNDARY_PRESCRIBED_MOTION", "*LOAD_NODE", "*LOAD_SEGMENT", "*LOAD_BODY_"})
-        if (starts_with(keyword, p)) return keywords::kind_named_by(keyword, field);
+        if (link_starts_with(keyword, p)) return keywords::kind_named_by(keyword, field);
     return {};
 }
 
@@ -109,19 +109,19 @@ std::string_view followed_kind(std::string_view keyword, const keywords::FieldSp
                                const std::vector<FieldValue>& card, std::string_view& why) {
     why = {};
     if (own_id_space(keyword) || layout_varies(keyword)) return {};
-    if (starts_with(keyword, "*CONTACT_") && !starts_with(keyword, "*CONTACT_2D") &&
-        !starts_with(keyword, "*CONTACT_ENTITY"))
+    if (link_starts_with(keyword, "*CONTACT_") && !link_starts_with(keyword, "*CONTACT_2D") &&
+        !link_starts_with(keyword, "*CONTACT_ENTITY"))
         if (std::string_view kind = contact_kind(keyword, field.name, card, why); !kind.empty()) return kind;
     std::string_view kind = field.refers_to.empty() ? missing_link(keyword, field.name) : field.refers_to;
     if (kind.empty() || (!model_reads(kind) && keywords::defines_kind(keyword, kind))) return {};
     // The data card of *PART_INERTIA, *PART_CONTACT...: the part's own SECID and MID, which REF003
     // and REF004 check with the part (model/extract.cpp reads *PART_ variants as parts).
-    if (starts_with(keyword, "*PART") && (kind == "SECTION" || kind == "MAT" || kind == "HOURGLASS")) return {};
-    const bool entity = !starts_with(kind, "DEFINE_") && kind != "HOURGLASS";  // parts, sets, nodes...
+    if (link_starts_with(keyword, "*PART") && (kind == "SECTION" || kind == "MAT" || kind == "HOURGLASS")) return {};
+    const bool entity = !link_starts_with(kind, "DEFINE_") && kind != "HOURGLASS";  // parts, sets, nodes...
     if (!field.refers_to.empty() && entity && card_has_type_field(card)) return {};
     // Element connectivity (millions of lines) is the mesher's, and *SET_ lists are checked by
     // REF001/REF002 where sphdeck reads them.
-    if (kind == "NODE" && (starts_with(keyword, "*ELEMENT_") || starts_with(keyword, "*SET_"))) return {};
+    if (kind == "NODE" && (link_starts_with(keyword, "*ELEMENT_") || link_starts_with(keyword, "*SET_"))) return {};
     for (std::string_view k : followed_kinds)
         if (k == kind) return k;
     return {};

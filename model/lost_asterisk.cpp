@@ -36,7 +36,7 @@ bool numbers_only(std::string_view text) {
 }
 
 // The reading findings a block's misread lines make.
-bool reading_finding(std::string_view code) { return follows_from_shift(code) || code == "DK009"; }
+bool asterisk_finding(std::string_view code) { return follows_from_shift(code) || code == "DK009"; }
 
 }  // namespace
 
@@ -111,7 +111,7 @@ void diagnose_lost_asterisks(const grammar::RawDeck& deck, const grammar::Block&
         const std::uint32_t until = k + 1 < lines.size() ? lines[k + 1].line : std::max(block_end, at.line + 1);
         auto in_range = [&](const diag::Diagnostic& d, bool after_only) {
             return d.span.file == at.file && d.span.line >= at.line + (after_only ? 1 : 0) && d.span.line < until &&
-                   reading_finding(d.code);
+                   asterisk_finding(d.code);
         };
         // A compound name (SECTION_SOLID, ELEMENT_SHELL) is no title a person gives; a plain word (NODE) may be.
         const bool compound = at.keyword.find('_') != std::string::npos;

@@ -16,7 +16,7 @@ bool integer_word(std::string_view word) {
     return v.status == grammar::NumberStatus::Ok && word.find_first_of(".eEdD") == std::string_view::npos;
 }
 
-bool reading_finding(std::string_view code) { return follows_from_shift(code) || code == "DK009"; }
+bool heading_finding(std::string_view code) { return follows_from_shift(code) || code == "DK009"; }
 
 }  // namespace
 
@@ -59,7 +59,7 @@ void diagnose_missing_heading(const grammar::RawDeck& deck, const grammar::Block
     const auto misread = [&](const diag::Diagnostic& d) {
         const bool after = d.span.file == heading.file && d.span.line >= heading.line;
         const bool keyword_line = d.span.file == block.span.file && d.span.line == block.span.line;
-        return reading_finding(d.code) && (after || keyword_line);
+        return heading_finding(d.code) && (after || keyword_line);
     };
     if (std::none_of(out.begin() + static_cast<std::ptrdiff_t>(from), out.end(), misread)) return;
     const std::string_view text = deck.text(heading);

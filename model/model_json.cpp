@@ -11,7 +11,7 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-json value_of(const FieldRecord& f) {
+json json_value_of(const FieldRecord& f) {
     using keywords::FieldType;
     if (!f.valid && f.explicit_value) return f.text;  // undecodable text, kept as written
     switch (f.type) {
@@ -29,7 +29,10 @@ json value_of(const FieldRecord& f) {
 }
 
 json field_json(const FieldRecord& f) {
-    return {{"value", value_of(f)}, {"explicit", f.explicit_value}, {"line", f.span.line}, {"column", f.span.column}};
+    return {{"value", json_value_of(f)},
+            {"explicit", f.explicit_value},
+            {"line", f.span.line},
+            {"column", f.span.column}};
 }
 
 json default_of(const keywords::FieldSpec& f) {
@@ -42,7 +45,7 @@ json default_of(const keywords::FieldSpec& f) {
 
 // The value a card condition compares, as the block walker saw it (model/deck_check.cpp): a
 // number read or defaulted, else 0.
-double condition_value(const KeywordRecord& r, std::string_view name) {
+double record_condition_value(const KeywordRecord& r, std::string_view name) {
     const FieldRecord* f = r.field(name);
     return f && f->valid && f->type != keywords::FieldType::Text ? f->number : 0.0;
 }
@@ -61,7 +64,7 @@ json all_fields(const KeywordRecord& r, json written) {
         const keywords::CardSpec& card = *cards[i];
         if (card.repeat == keywords::CardRepeat::Repeated) continue;
         if (card.present_if &&
-            !card.present_if->holds_with([&](std::string_view field) { return condition_value(r, field); }))
+            !card.present_if->holds_with([&](std::string_view field) { return record_condition_value(r, field); }))
             continue;
         for (const keywords::FieldSpec& f : card.fields) {
             const std::string name(f.name);
@@ -77,7 +80,7 @@ json all_fields(const KeywordRecord& r, json written) {
     return out;
 }
 
-json record_json(const KeywordRecord& r, const grammar::RawDeck& deck) {
+json keyword_record_json(const KeywordRecord& r, const grammar::RawDeck& deck) {
     json fields = json::object();
     json cards = json::array();
     for (const auto& row : r.rows) {
@@ -152,13 +155,13 @@ nlohmann::ordered_json to_json(const Model& model, const grammar::RawDeck& deck,
     for (const grammar::Block& b : deck.blocks) {
         const KeywordRecord* r = next < model.records.size() ? &model.records[next] : nullptr;
         if (r && r->span.file == b.span.file && r->span.line == b.span.line) {
-            keywords.push_back(record_json(*r, deck));
+            keywords.push_back(keyword_record_json(*r, deck));
             ++next;
         } else if (auto unwritten = unwritten_record(b)) {
-            keywords.push_back(record_json(*unwritten, deck));
+            keywords.push_back(keyword_record_json(*unwritten, deck));
         }
     }
-    for (; next < model.records.size(); ++next) keywords.push_back(record_json(model.records[next], deck));
+    for (; next < model.records.size(); ++next) keywords.push_back(keyword_record_json(model.records[next], deck));
 
     json particles = particles_json(model, options.particles);
     std::map<std::string, std::size_t> unknown;

@@ -19,14 +19,14 @@ using grammar::radioss::Cell;
 
 namespace {
 
-std::string shown(std::string_view text) {
+std::string shown_cell(std::string_view text) {
     constexpr std::size_t limit = 40;
     return text.size() > limit ? std::string(text.substr(0, limit)) + "..." : std::string(text);
 }
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
-std::string_view trim(std::string_view s, std::size_t* offset = nullptr) {
+std::string_view trim_cell(std::string_view s, std::size_t* offset = nullptr) {
     std::size_t b = 0, e = s.size();
     while (b < e && is_space(s[b])) ++b;
     while (e > b && is_space(s[e - 1])) --e;
@@ -34,12 +34,12 @@ std::string_view trim(std::string_view s, std::size_t* offset = nullptr) {
     return s.substr(b, e - b);
 }
 
-bool numeric(Cell c) { return c == Cell::Int || c == Cell::Real; }
+bool numeric_cell(Cell c) { return c == Cell::Int || c == Cell::Real; }
 
 // A chunk past the card's last field the starter accepts silently: blank or a zero
 // (meci_data_reader.cpp walks the rest of the line in 10-character chunks).
 bool harmless_chunk(std::string_view chunk) {
-    std::string_view t = trim(chunk);
+    std::string_view t = trim_cell(chunk);
     if (t.empty()) return true;
     grammar::RealValue v = grammar::parse_real(t);
     return v.status == NumberStatus::Ok && v.value == 0.0;
@@ -125,7 +125,7 @@ void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const gramm
             std::string_view chunk = text.substr(at, 10);
             if (harmless_chunk(chunk)) continue;
             std::size_t lead = 0;
-            std::string_view t = trim(chunk, &lead);
+            std::string_view t = trim_cell(chunk, &lead);
             if (first == std::string_view::npos) first = at + lead;
             last = at + lead + t.size();
         }
@@ -169,8 +169,8 @@ void RadiossCardDecoder::check_decimal_comma(const grammar::CardLine& line, std:
     std::size_t shown_fields = 0;
     for (const RadiossValue& v : values) {
         if (shown_fields == 4) break;
-        if (!v.explicit_value || !v.spec || !numeric(v.spec->cell)) continue;
-        reading += fmt::format("{}{} {}", reading.empty() ? "" : ", ", v.spec->name, shown(v.text));
+        if (!v.explicit_value || !v.spec || !numeric_cell(v.spec->cell)) continue;
+        reading += fmt::format("{}{} {}", reading.empty() ? "" : ", ", v.spec->name, shown_cell(v.text));
         ++shown_fields;
     }
     out_.push_back(decimal_comma_finding(*comma, line, "the starter", reading));
@@ -203,7 +203,7 @@ void RadiossCardDecoder::decode_tokens(const grammar::CardLine& line, const gram
 
 void RadiossCardDecoder::read_value(RadiossValue& v, std::string_view field, bool fixed) {
     std::size_t offset = 0;
-    std::string_view token = trim(field, &offset);
+    std::string_view token = trim_cell(field, &offset);
     v.text = token;
     v.explicit_value = !token.empty();
     const std::uint32_t cell_columns = v.span.end_column - v.span.column;
@@ -212,7 +212,7 @@ void RadiossCardDecoder::read_value(RadiossValue& v, std::string_view field, boo
         v.span.end_column = v.span.column + static_cast<std::uint32_t>(token.size());
     }
     const Cell cell = v.spec->cell;
-    if (!numeric(cell)) {
+    if (!numeric_cell(cell)) {
         v.valid = v.explicit_value;
         return;
     }
@@ -221,20 +221,20 @@ void RadiossCardDecoder::read_value(RadiossValue& v, std::string_view field, boo
     // Two numbers in one fixed cell: the starter keeps the first and drops the rest (RAD025).
     const std::size_t gap = token.find_first_of(" \t");
     if (fixed && gap != std::string_view::npos) {
-        std::string_view head = token.substr(0, gap), rest = trim(token.substr(gap));
+        std::string_view head = token.substr(0, gap), rest = trim_cell(token.substr(gap));
         std::string_view second = rest.substr(0, rest.find_first_of(" \t"));
         grammar::RealValue a = grammar::parse_real(head), b = grammar::parse_real(second);
         // The tail of a zero written across the cell's start ("0000      .000000000" after
         // ".00000"; model/radioss_straddles.cpp) and an equal number: the value read is the one meant.
         const bool same = offset == 0 && a.status == NumberStatus::Ok && b.status == NumberStatus::Ok &&
-                          a.value == 0.0 && b.value == 0.0 && trim(rest.substr(second.size())).empty();
+                          a.value == 0.0 && b.value == 0.0 && trim_cell(rest.substr(second.size())).empty();
         if (same) {
             token = head;
             v.text = head;
         } else if (a.status == NumberStatus::Ok && b.status == NumberStatus::Ok) {
             report("RAD025", diag::Severity::Error,
                    fmt::format("two numbers in the {}-column field {}: '{}'; the starter keeps {} and drops {}",
-                               cell_columns, v.spec->name, shown(token), head, second),
+                               cell_columns, v.spec->name, shown_cell(token), head, second),
                    v.span);
             token = head;
             v.text = head;
@@ -256,12 +256,12 @@ void RadiossCardDecoder::read_value(RadiossValue& v, std::string_view field, boo
         grammar::IntegerValue n = grammar::to_integer(t);
         if (n.status != NumberStatus::Ok) {
             report("DK002", diag::Severity::Error,
-                   fmt::format("'{}' in integer field {} is not an integer", shown(token), v.spec->name), v.span);
+                   fmt::format("'{}' in integer field {} is not an integer", shown_cell(token), v.spec->name), v.span);
             return;
         }
         if (n.written_as_real)
             report("DK004", diag::Severity::Warning,
-                   fmt::format("integer field {} written as real '{}'; read as {}", v.spec->name, shown(token),
+                   fmt::format("integer field {} written as real '{}'; read as {}", v.spec->name, shown_cell(token),
                                n.value),
                    v.span);
         v.number = static_cast<double>(n.value);
@@ -273,7 +273,7 @@ void RadiossCardDecoder::read_value(RadiossValue& v, std::string_view field, boo
         grammar::RealValue r = grammar::to_real(t);
         if (r.status != NumberStatus::Ok) {
             report("DK003", diag::Severity::Error,
-                   fmt::format("'{}' in real field {} is not a number", shown(token), v.spec->name), v.span);
+                   fmt::format("'{}' in real field {} is not a number", shown_cell(token), v.spec->name), v.span);
             return;
         }
         v.number = r.value;
@@ -294,7 +294,7 @@ grammar::Span radioss_field_span(const grammar::RawDeck& deck, std::uint32_t ind
     if (field >= fields.size()) return whole;
     grammar::Span s = fields[field].span;
     std::size_t offset = 0;
-    std::string_view t = trim(fields[field].text, &offset);
+    std::string_view t = trim_cell(fields[field].text, &offset);
     if (!t.empty() && !cut.free_format) {
         s.column += static_cast<std::uint32_t>(offset);
         s.end_column = s.column + static_cast<std::uint32_t>(t.size());

@@ -24,9 +24,9 @@ namespace rad = grammar::radioss;
 
 namespace {
 
-std::string_view trim(std::string_view s) { return grammar::trim_blanks(s); }
+std::string_view trim_line(std::string_view s) { return grammar::trim_blanks(s); }
 
-bool is_number(std::string_view s) {
+bool is_number_text(std::string_view s) {
     return !s.empty() && grammar::parse_integer(s).status == grammar::NumberStatus::Ok;
 }
 
@@ -34,8 +34,8 @@ bool is_number(std::string_view s) {
 std::string keyword_name(std::string_view header) {
     std::string name;
     for (std::string_view s : rad::path_segments(header)) {
-        s = trim(s);
-        if (is_number(s)) break;
+        s = trim_line(s);
+        if (is_number_text(s)) break;
         name += '/';
         name += s;
     }
@@ -144,7 +144,7 @@ private:
     void note_header_ids(const grammar::Block& block) {
         RadiossFacts& facts = builder_.facts();
         const auto segments = rad::path_segments(block.keyword);
-        if (!segments.empty() && trim(segments.front()) == "SUBMODEL") facts.submodels = true;
+        if (!segments.empty() && trim_line(segments.front()) == "SUBMODEL") facts.submodels = true;
         const auto header = rad::header_id(block.keyword);
         if (!header || !header->role || !header->role->defines) return;
         if (const char link = rad::link_of(header->role->kind)) facts.header_ids[link].insert(header->id);
@@ -211,7 +211,7 @@ private:
                 // V4: the title is the rest of the header path (/PROP/TYPE34/7/title).
                 for (std::size_t k = 1; k < b.written.size(); ++k) b.title += (k > 1 ? "/" : "") + b.written[k];
             } else if (line != end) {
-                b.title = std::string(trim(deck_.text(*line)));
+                b.title = std::string(trim_line(deck_.text(*line)));
                 ++line;
             }
         }
@@ -333,7 +333,7 @@ int radioss_version(const grammar::RawDeck& deck) {
     for (const grammar::Block& b : deck.blocks) {
         if (b.keyword != "/BEGIN") continue;
         if (b.line_count < 2) return rad::latest_version;
-        std::string_view text = trim(deck.text(deck.lines[b.first_line + 1]));
+        std::string_view text = trim_line(deck.text(deck.lines[b.first_line + 1]));
         text = text.substr(0, text.find_first_of(" \t,"));
         grammar::IntegerValue v = grammar::parse_integer(text);
         return v.status == grammar::NumberStatus::Ok && v.value > 0 ? static_cast<int>(v.value) : rad::latest_version;

@@ -14,19 +14,19 @@ using json = nlohmann::ordered_json;
 // The value as read: a number for Int and Real cells, text for the others; null when blank or
 // unreadable. The Radioss card tables carry no defaults (the starter's defaults depend on the
 // field and the version: model/radioss_build_*.cpp), so a blank stays null.
-json value_of(const RadiossField& f) {
+json radioss_json_value_of(const RadiossField& f) {
     if (!f.valid) return f.explicit_value ? json(f.text) : json(nullptr);
     if (!f.number) return f.text;
     if (f.integer) return grammar::saturating_integer<long long>(f.value);
     return f.value;
 }
 
-json record_json(const RadiossRecord& r, const grammar::RawDeck& deck) {
+json radioss_record_json(const RadiossRecord& r, const grammar::RawDeck& deck) {
     json fields = json::object();
     for (const RadiossField& f : r.fields) {
         const std::string name(f.name);
         if (fields.contains(name)) continue;  // first occurrence, as for LS-DYNA
-        fields[name] = {{"value", value_of(f)},
+        fields[name] = {{"value", radioss_json_value_of(f)},
                         {"explicit", f.explicit_value},
                         {"line", f.span.line},
                         {"column", f.span.column}};
@@ -44,7 +44,7 @@ json record_json(const RadiossRecord& r, const grammar::RawDeck& deck) {
 nlohmann::ordered_json radioss_to_json(const RadiossReading& reading, const Model& model, const grammar::RawDeck& deck,
                                        bool list_particles) {
     json keywords = json::array();
-    for (const RadiossRecord& r : reading.records) keywords.push_back(record_json(r, deck));
+    for (const RadiossRecord& r : reading.records) keywords.push_back(radioss_record_json(r, deck));
     return {{"format", "radioss"},
             {"version", radioss_version(deck)},
             {"keywords", std::move(keywords)},

@@ -15,10 +15,10 @@ namespace rad = grammar::radioss;
 
 namespace {
 
-std::string_view trim(std::string_view s) { return grammar::trim_blanks(s); }
+std::string_view trim_parameter(std::string_view s) { return grammar::trim_blanks(s); }
 
-void report(std::vector<diag::Diagnostic>& out, const char* code, diag::Severity s, std::string message,
-            grammar::Span span) {
+void report_parameter(std::vector<diag::Diagnostic>& out, const char* code, diag::Severity s, std::string message,
+                      grammar::Span span) {
     out.push_back(diag::Diagnostic{code, s, std::move(message), span, {}});
 }
 
@@ -33,7 +33,7 @@ RadiossParameter unevaluated(const grammar::RawDeck& deck, const grammar::CardLi
     RadiossParameter p;
     const std::string_view text = deck.text(line);
     const std::string_view cell = text.substr(0, std::min<std::size_t>({text.size(), std::size_t{10}, text.find(',')}));
-    p.name = std::string(trim(cell));
+    p.name = std::string(trim_parameter(cell));
     const auto column = static_cast<std::uint32_t>(cell.find_first_not_of(" \t") + 1);
     p.span = grammar::Span{line.file, line.line, column, column + static_cast<std::uint32_t>(p.name.size())};
     return p;
@@ -99,7 +99,7 @@ void RadiossParameters::collect(const grammar::RawDeck& deck, int version, Radio
         const grammar::CardLine* end = deck.end_lines(b);
         if (line != end) ++line;  // the title line
         if (line == end) {
-            report(out, "DK008", diag::Severity::Error, "/PARAMETER without its name and value card", b.span);
+            report_parameter(out, "DK008", diag::Severity::Error, "/PARAMETER without its name and value card", b.span);
             continue;
         }
         const rad::KeywordSpec* spec = rad::find_keyword(b.keyword);
@@ -107,11 +107,12 @@ void RadiossParameters::collect(const grammar::RawDeck& deck, int version, Radio
         if (!evaluated) {
             RadiossParameter p = unevaluated(deck, *line);
             p.block = i;
-            report(out, "DK001", diag::Severity::Info,
-                   fmt::format("/PARAMETER/{}/{} '{}' is not evaluated (sphdeck reads /PARAMETER/GLOBAL/INTEGER and "
-                               "REAL only): cells that use it are not checked",
-                               scope, type, p.name),
-                   p.name.empty() ? b.span : p.span);
+            report_parameter(
+                out, "DK001", diag::Severity::Info,
+                fmt::format("/PARAMETER/{}/{} '{}' is not evaluated (sphdeck reads /PARAMETER/GLOBAL/INTEGER and "
+                            "REAL only): cells that use it are not checked",
+                            scope, type, p.name),
+                p.name.empty() ? b.span : p.span);
             if (!p.name.empty()) define(std::move(p), out);
             continue;
         }
@@ -124,11 +125,13 @@ void RadiossParameters::collect(const grammar::RawDeck& deck, int version, Radio
         p.kind = type == "INTEGER" ? RadiossParameter::Kind::Integer : RadiossParameter::Kind::Real;
         p.value = values.at(1).valid ? values[1].number : 0.0;
         if (line + 1 != end)
-            report(out, "DK009", diag::Severity::Warning,
-                   fmt::format("/PARAMETER takes one name and value card; {} more line(s) ignored", end - line - 1),
-                   grammar::Span{line[1].file, line[1].line, 1, std::max<std::uint32_t>(deck.length(line[1]), 1) + 1});
+            report_parameter(out, "DK009", diag::Severity::Warning,
+                             fmt::format("/PARAMETER takes one name and value card; {} more line(s) ignored",
+                                         end - line - 1),
+                             grammar::Span{line[1].file, line[1].line, 1,
+                                           std::max<std::uint32_t>(deck.length(line[1]), 1) + 1});
         if (p.name.empty()) {
-            report(out, "DK008", diag::Severity::Error, "the parameter name (columns 1-10) is blank", p.span);
+            report_parameter(out, "DK008", diag::Severity::Error, "the parameter name (columns 1-10) is blank", p.span);
             continue;
         }
         define(std::move(p), out);
@@ -139,11 +142,11 @@ std::optional<double> RadiossParameters::value_of(const RadiossParameterReferenc
                                                   bool integer_cell, std::string_view field, grammar::Span span,
                                                   std::vector<diag::Diagnostic>& out) const {
     if (!ref.closed) {
-        report(out, "DK012", diag::Severity::Error,
-               fmt::format("'[{}' has no closing ']' in field {}: a reference must fit in its cell (reader "
-                           "message 100105)",
-                           ref.name, field),
-               span);
+        report_parameter(out, "DK012", diag::Severity::Error,
+                         fmt::format("'[{}' has no closing ']' in field {}: a reference must fit in its cell (reader "
+                                     "message 100105)",
+                                     ref.name, field),
+                         span);
         return std::nullopt;
     }
     const RadiossParameter* p = find(ref.name);
@@ -154,7 +157,7 @@ std::optional<double> RadiossParameters::value_of(const RadiossParameterReferenc
                 message += fmt::format("; did you mean '{}'? (names are case-sensitive)", d.name);
                 break;
             }
-        report(out, "DK012", diag::Severity::Error, std::move(message), span);
+        report_parameter(out, "DK012", diag::Severity::Error, std::move(message), span);
         return std::nullopt;
     }
     if (p->block >= block) {
@@ -171,8 +174,8 @@ std::optional<double> RadiossParameters::value_of(const RadiossParameterReferenc
     }
     if (p->kind == RadiossParameter::Kind::NotEvaluated) return std::nullopt;  // reported at its definition
     if (integer_cell && p->kind == RadiossParameter::Kind::Real) {
-        report(out, "DK013", diag::Severity::Error,
-               fmt::format("real parameter '{}' used in integer field {}", ref.name, field), span);
+        report_parameter(out, "DK013", diag::Severity::Error,
+                         fmt::format("real parameter '{}' used in integer field {}", ref.name, field), span);
         return std::nullopt;
     }
     return ref.negated ? -p->value : p->value;

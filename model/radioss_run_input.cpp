@@ -14,7 +14,7 @@ namespace {
 
 bool comment_line(std::string_view t) { return !t.empty() && (t[0] == '#' || t[0] == '$'); }
 
-std::string_view column(std::string_view line, std::size_t start, std::size_t width) {
+std::string_view run_input_column(std::string_view line, std::size_t start, std::size_t width) {
     if (start >= line.size()) return {};
     return line.substr(start, std::min(width, line.size() - start));
 }
@@ -44,12 +44,12 @@ RadiossInitialVelocity read_inivel(const grammar::Block& block, const std::vecto
     const std::string_view card = data[1];
     bool ok = true;
     for (std::size_t k = 0; k < 3; ++k) {
-        const grammar::RealValue r = grammar::parse_real(column(card, 20 * k, 20));
+        const grammar::RealValue r = grammar::parse_real(run_input_column(card, 20 * k, 20));
         ok = ok && (r.status == grammar::NumberStatus::Ok || r.status == grammar::NumberStatus::Blank);
         v.v[k] = r.status == grammar::NumberStatus::Ok ? r.value : 0.0;
     }
-    const grammar::IntegerValue g = grammar::parse_integer(column(card, 60, 10));
-    const grammar::IntegerValue s = grammar::parse_integer(column(card, 70, 10));
+    const grammar::IntegerValue g = grammar::parse_integer(run_input_column(card, 60, 10));
+    const grammar::IntegerValue s = grammar::parse_integer(run_input_column(card, 70, 10));
     v.group = g.status == grammar::NumberStatus::Ok ? g.value : 0;
     v.skew = s.status == grammar::NumberStatus::Ok ? s.value : 0;
     v.read = ok && (g.status == grammar::NumberStatus::Ok || g.status == grammar::NumberStatus::Blank) &&
@@ -74,7 +74,7 @@ RadiossRunInput read_radioss_run_input(const grammar::RawDeck& deck) {
         if (inivel) {
             in.initial_velocities.push_back(read_inivel(block, data));
         } else if (!data.empty()) {
-            const grammar::RealValue t = grammar::parse_real(column(data[0], 0, 20));
+            const grammar::RealValue t = grammar::parse_real(run_input_column(data[0], 0, 20));
             if (t.status == grammar::NumberStatus::Ok) in.end_time = t.value, in.run_span = block.span;
         }
     }

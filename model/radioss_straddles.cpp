@@ -20,7 +20,7 @@ namespace {
 using grammar::radioss::Cell;
 using keywords::FieldType;
 
-bool numeric(Cell c) { return c == Cell::Int || c == Cell::Real; }
+bool numeric_straddle(Cell c) { return c == Cell::Int || c == Cell::Real; }
 bool blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
 // A number glued across the end of cell `cell`: the boundary's two sides are not blank and the run
@@ -38,7 +38,7 @@ std::vector<Straddle> straddles(std::string_view text, const grammar::radioss::C
     for (std::size_t i = 0; i < positions.size() && i < card.fields.size(); ++i) {
         const std::size_t b = std::size_t{positions[i].start} + positions[i].width;
         if (b == 0 || b >= text.size() || blank(text[b - 1]) || blank(text[b])) continue;
-        if (!numeric(card.fields[i].cell)) continue;
+        if (!numeric_straddle(card.fields[i].cell)) continue;
         if (i + 1 < positions.size() && positions[i + 1].start != b) continue;  // not adjacent
         // A one-column cell (the /BCS dof flags '111 110') is always filled from its first column: a run
         // from it into a wider cell (dof6 '10' over columns 10-11) is still one value across the boundary.
@@ -74,7 +74,7 @@ std::vector<Straddle> straddles(std::string_view text, const grammar::radioss::C
     return out;
 }
 
-std::string cell_columns(const grammar::FixedField& f) {
+std::string straddle_cell_columns(const grammar::FixedField& f) {
     return fmt::format("columns {}-{}", f.start + 1, f.start + f.width);
 }
 
@@ -92,11 +92,11 @@ diag::Diagnostic straddle_finding(const grammar::CardLine& line, std::string_vie
         where = fmt::format("'{}' falls in an unused cell and is lost", lost);
     else
         where = fmt::format("'{}' is read as the start of {} ({})", lost, card.fields[s.cell + 1].name,
-                            cell_columns(positions[s.cell + 1]));
+                            straddle_cell_columns(positions[s.cell + 1]));
     diag::Diagnostic d{"RAD030",
                        diag::Severity::Error,
                        fmt::format("'{}' straddles the end of cell {} ({}): the starter reads {} as '{}' and {}", whole,
-                                   here.name, cell_columns(positions[s.cell]), here.name, kept, where),
+                                   here.name, straddle_cell_columns(positions[s.cell]), here.name, kept, where),
                        grammar::Span{line.file, line.line, static_cast<std::uint32_t>(s.begin + 1),
                                      static_cast<std::uint32_t>(s.end + 1)},
                        {}};

@@ -15,7 +15,7 @@ namespace rad = grammar::radioss;
 
 namespace {
 
-bool is_number(std::string_view s) {
+bool is_number_token(std::string_view s) {
     return !s.empty() && grammar::parse_integer(s).status == grammar::NumberStatus::Ok;
 }
 
@@ -31,7 +31,7 @@ std::string listed(const std::vector<std::string>& options) {
 std::optional<diag::Diagnostic> option_missing(const grammar::Block& block,
                                                const std::vector<std::string_view>& segments) {
     for (std::size_t k = 1; k < segments.size(); ++k)
-        if (!is_number(grammar::trim_blanks(segments[k]))) return std::nullopt;
+        if (!is_number_token(grammar::trim_blanks(segments[k]))) return std::nullopt;
     const std::string family = "/" + std::string(grammar::trim_blanks(segments.front()));
     const auto options = rad::options_below(family);
     if (options.empty()) return std::nullopt;

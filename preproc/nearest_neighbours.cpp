@@ -72,8 +72,8 @@ inline void scan_range(const NeighbourGrid& g, std::uint32_t k, std::uint32_t b,
 // The same, leaving k itself out. Each range starts a running minimum of its own, merged after it:
 // the short ranges' minima then overlap in the processor instead of waiting on one chain, and the
 // merge keeps the first point of the smallest distance, as one scan in order would.
-inline void scan(const NeighbourGrid& g, std::uint32_t k, std::uint32_t b, std::uint32_t e, double& best2,
-                 std::uint32_t& best) {
+inline void scan_cells(const NeighbourGrid& g, std::uint32_t k, std::uint32_t b, std::uint32_t e, double& best2,
+                       std::uint32_t& best) {
     double m = std::numeric_limits<double>::infinity();
     std::uint32_t at = NearestNeighbours::none;
     if (k >= b && k < e) {
@@ -178,7 +178,7 @@ NearestNeighbours nearest_neighbours_grid(std::span<const double> x, std::span<c
             for (std::uint32_t k = first; k < last; ++k) {
                 double best2 = std::numeric_limits<double>::infinity();
                 std::uint32_t best = NearestNeighbours::none;
-                for (auto [b, e] : block) scan(g, k, b, e, best2, best);
+                for (auto [b, e] : block) scan_cells(g, k, b, e, best2, best);
                 // Widen shell by shell until nothing outside the searched block can be closer; when the
                 // next block would hold more cells than there are points, scan all points instead.
                 for (std::uint32_t reach = 1; !g.block_covers_grid(at, reach); ++reach) {
@@ -186,11 +186,12 @@ NearestNeighbours nearest_neighbours_grid(std::span<const double> x, std::span<c
                                                     : g.block_clearance(g.x()[k], g.y()[k], g.z()[k], at, reach);
                     if (clear > 0 && best2 <= clear * clear) break;
                     if (g.block_cells(at, reach + 1) > static_cast<double>(n)) {
-                        scan(g, k, 0, static_cast<std::uint32_t>(n), best2, best);
+                        scan_cells(g, k, 0, static_cast<std::uint32_t>(n), best2, best);
                         break;
                     }
-                    for_each_shell_range(g, at, reach + 1,
-                                         [&](std::uint32_t b, std::uint32_t e) { scan(g, k, b, e, best2, best); });
+                    for_each_shell_range(g, at, reach + 1, [&](std::uint32_t b, std::uint32_t e) {
+                        scan_cells(g, k, b, e, best2, best);
+                    });
                 }
                 const std::uint32_t i = g.order()[k];
                 out.distance[i] = std::sqrt(best2);

@@ -27,7 +27,7 @@ int bin_threads(std::size_t points) {
 }
 
 // Thread t's share [begin, end) of `count` items cut in `threads` equal runs.
-std::pair<std::size_t, std::size_t> share(std::size_t count, int t, int threads) {
+std::pair<std::size_t, std::size_t> share_of(std::size_t count, int t, int threads) {
     return {count * static_cast<std::size_t>(t) / static_cast<std::size_t>(threads),
             count * static_cast<std::size_t>(t + 1) / static_cast<std::size_t>(threads)};
 }
@@ -117,7 +117,7 @@ void NeighbourGrid::bin_dense(std::span<const double> x, std::span<const double>
     std::vector<std::uint32_t> run_total(static_cast<std::size_t>(threads) + 1, 0);
 #pragma omp parallel for num_threads(threads) schedule(static, 1)
     for (int t = 0; t < threads; ++t) {
-        const auto [c0, c1] = share(cells, t, threads);
+        const auto [c0, c1] = share_of(cells, t, threads);
         for (std::size_t i = 0; i < n; ++i)
             if (cell_id[i] >= c0 && cell_id[i] < c1) ++start_[cell_id[i] + 1];
         for (std::size_t c = c0; c < c1; ++c) {
@@ -130,7 +130,7 @@ void NeighbourGrid::bin_dense(std::span<const double> x, std::span<const double>
         run_total[static_cast<std::size_t>(t) + 1] += run_total[static_cast<std::size_t>(t)];
 #pragma omp parallel for num_threads(threads) schedule(static, 1)
     for (int t = 0; t < threads; ++t) {
-        const auto [c0, c1] = share(cells, t, threads);
+        const auto [c0, c1] = share_of(cells, t, threads);
         // start_[c0 + 1 .. c1] are this run's sums (start_[c0] closes the run before).
         const std::uint32_t offset = run_total[static_cast<std::size_t>(t)];
         for (std::size_t c = c0 + 1; c <= c1; ++c) start_[c] += offset;
@@ -181,10 +181,10 @@ void NeighbourGrid::gather(std::span<const double> x, std::span<const double> y,
     std::vector<std::size_t> bound(static_cast<std::size_t>(threads) + 1, slots);  // before any cursor moves
     for (int t = 0; t < threads; ++t)  // the first cell starting at or after the run's first point
         bound[static_cast<std::size_t>(t)] =
-            t == 0
-                ? 0
-                : static_cast<std::size_t>(
-                      std::lower_bound(start_.begin(), start_.end() - 1, share(n, t, threads).first) - start_.begin());
+            t == 0 ? 0
+                   : static_cast<std::size_t>(
+                         std::lower_bound(start_.begin(), start_.end() - 1, share_of(n, t, threads).first) -
+                         start_.begin());
 #pragma omp parallel for num_threads(threads) schedule(static, 1) if (threads > 1)
     for (int t = 0; t < threads; ++t) {
         const std::size_t c0 = bound[static_cast<std::size_t>(t)], c1 = bound[static_cast<std::size_t>(t) + 1];

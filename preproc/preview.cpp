@@ -19,7 +19,7 @@
 namespace sphdeck::preproc {
 namespace {
 
-void add_note(std::string& notes, const std::string& note) {
+void add_preview_note(std::string& notes, const std::string& note) {
     if (note.empty()) return;
     if (!notes.empty()) notes += "; ";
     notes += note;
@@ -75,12 +75,13 @@ PartModel resolve(const model::Model& m, long long id, std::string& notes) {
     PartModel r;
     r.part = m.part(std::to_string(id));
     if (!r.part) {
-        add_note(notes, fmt::format("part {} is not defined: *SECTION_SPH defaults used", id));
+        add_preview_note(notes, fmt::format("part {} is not defined: *SECTION_SPH defaults used", id));
         return r;
     }
     r.section = m.section(r.part->section.value);
     if (!r.section || !r.section->sph) {
-        add_note(notes, fmt::format("section {} is not a *SECTION_SPH: its defaults used", r.part->section.value));
+        add_preview_note(notes,
+                         fmt::format("section {} is not a *SECTION_SPH: its defaults used", r.part->section.value));
         r.section = nullptr;
     }
     r.material = m.material(r.part->material.value);
@@ -120,7 +121,7 @@ void preview_part(const model::Model& m, const ParticlePositions& at, const Part
             volumes.push_back(particle_volume(particles.mass[i], volume_flag, pv.density));
     }
     if (count < pv.particles)
-        add_note(pv.notes, fmt::format("{} particles without a *NODE left out", pv.particles - count));
+        add_preview_note(pv.notes, fmt::format("{} particles without a *NODE left out", pv.particles - count));
     pv.mass_median = stats_of(std::move(masses)).median;
 
     // Model indices of the located particles; none kept when they are every particle of the model
@@ -180,17 +181,17 @@ void preview_part(const model::Model& m, const ParticlePositions& at, const Part
     const SmoothingLength h = initial_smoothing_length({pm.section, mode, distance, volumes, out.dimension});
     pv.h0 = h.h0;
     pv.sphini_given = h.from_sphini;
-    add_note(pv.notes, h.note);
+    add_preview_note(pv.notes, h.note);
     if (h.mode == model::IniMode::FromMass && !h.from_sphini && out.dimension == 2 &&
         m.controls.sph.idim.value == model::Dimension::Axisymmetric)
-        add_note(pv.notes, "INI 2 in axisymmetry: mass taken per unit thickness (not verified)");
+        add_preview_note(pv.notes, "INI 2 in axisymmetry: mass taken per unit thickness (not verified)");
     const model::Section defaults;
     const model::Section& section = pm.section ? *pm.section : defaults;
     pv.h_min = section.hmin.value * pv.h0;
     pv.h_max = section.hmax.value * pv.h0;
     pv.support = kernel_support_factor(section.kernel.value) * pv.h0;
     if (section.kernel.value == model::Kernel::Quadratic || section.kernel.value == model::Kernel::QuarticBSpline)
-        add_note(pv.notes, "kernel support assumed 2h (SPHKERN 2 and 3 are not documented)");
+        add_preview_note(pv.notes, "kernel support assumed 2h (SPHKERN 2 and 3 are not documented)");
 
     if (arrays)
         for (std::size_t k = 0; k < count; ++k) pp.h[model_index(k)] = pv.h0;
@@ -198,7 +199,7 @@ void preview_part(const model::Model& m, const ParticlePositions& at, const Part
     const SoundSpeed c = sound_speed(m, pm.material, pm.eos);
     pv.sound_speed = c.c;
     pv.sound_source = c.source;
-    add_note(pv.notes, c.note);
+    add_preview_note(pv.notes, c.note);
     const double tssfac = m.controls.tssfac.value > 0 ? m.controls.tssfac.value : 0.9;
     pv.dt_estimate = cfl_time_step(pv.h0, c.c, tssfac);
     pv.dt_radioss = radioss_particle_time_step(pv.h0, c.c, tssfac);
@@ -262,9 +263,9 @@ void count_all_neighbours(const ParticlePositions& at, Preview& out) {
     for (std::size_t q = 0; q < out.parts.size(); ++q) {
         out.parts[q].neighbours = stats_of(std::move(per_part[q]));
         if (counts.sample_stride > 1)
-            add_note(out.parts[q].notes,
-                     fmt::format("neighbours counted for every {}th particle only (too many per particle)",
-                                 counts.sample_stride));
+            add_preview_note(out.parts[q].notes,
+                             fmt::format("neighbours counted for every {}th particle only (too many per particle)",
+                                         counts.sample_stride));
     }
     for (auto [a, b] : counts.coincident)
         out.coincident.emplace_back(static_cast<std::uint32_t>(model_index(a)),
@@ -332,9 +333,9 @@ Preview compute(const model::Model& m, const PreviewOptions& options, const Prev
         for (std::size_t q = 0; q < out.parts.size(); ++q) {
             out.parts[q].neighbours = old->parts[q].neighbours;
             if (old->neighbour_sample_stride > 1)
-                add_note(out.parts[q].notes,
-                         fmt::format("neighbours counted for every {}th particle only (too many per particle)",
-                                     old->neighbour_sample_stride));
+                add_preview_note(out.parts[q].notes,
+                                 fmt::format("neighbours counted for every {}th particle only (too many per particle)",
+                                             old->neighbour_sample_stride));
         }
     } else {
         count_all_neighbours(at, out);

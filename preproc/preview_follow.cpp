@@ -31,7 +31,7 @@ double squared_distance(const Place& a, const Place& b) {
 }
 
 // sqrt(r2) <= d, the square root taken only near the bound (most particles stand far away).
-bool within(double r2, double d) { return r2 <= d * d * (1 + 1e-9) && std::sqrt(r2) <= d; }
+bool within_reach(double r2, double d) { return r2 <= d * d * (1 + 1e-9) && std::sqrt(r2) <= d; }
 
 Place place_of(const ParticlePositions& at, std::size_t i) { return {at.x(i), at.y(i), at.z(i)}; }
 
@@ -302,7 +302,7 @@ private:
                 const double r2 = squared_distance(p, c.at);
                 const double r = 0.5 * (sj + support(c.part));
                 if (r2 < r * r && !forget_old_places) --count;
-                if (c.part == q && (nearest == 0 || within(r2, nearest))) search = true;
+                if (c.part == q && (nearest == 0 || within_reach(r2, nearest))) search = true;
             }
             for (const Changed& c : came_) {
                 const double r2 = squared_distance(p, c.at);
@@ -311,7 +311,7 @@ private:
                 if (c.part != q) continue;
                 if (nearest == 0)
                     search = true;  // no neighbour before, or one at the same place: search again
-                else if (within(r2, nearest))
+                else if (within_reach(r2, nearest))
                     nearest = std::min(nearest, std::sqrt(r2));
             }
             if (count != b.neighbours[j] || nearest != b.nn_distance[j] || search) {

@@ -16,13 +16,13 @@ namespace sphdeck::preproc {
 namespace {
 
 // (x - O) . n of a plane with origin O and normal n (not normalised: the plane's tail-to-head vector).
-double signed_distance(const RadiossPlanePreview& plane, double x, double y, double z) {
+double plane_signed_distance(const RadiossPlanePreview& plane, double x, double y, double z) {
     const Eigen::Vector3d origin(plane.origin[0], plane.origin[1], plane.origin[2]);
     const Eigen::Vector3d normal(plane.normal[0], plane.normal[1], plane.normal[2]);
     return (Eigen::Vector3d(x, y, z) - origin).dot(normal);
 }
 
-void add_note(std::string& notes, const std::string& note) {
+void add_radioss_note(std::string& notes, const std::string& note) {
     if (note.empty()) return;
     if (!notes.empty()) notes += "; ";
     notes += note;
@@ -51,7 +51,7 @@ double median_of(std::vector<double> v) {
     return m;
 }
 
-std::string h_evolution(long long h_1d) {
+std::string radioss_h_evolution(long long h_1d) {
     switch (h_1d) {
         case 1: return "h_1D 1: h follows the volume change with coefficient 1 (1D), unbounded";
         case 2: return "h_1D 2: h stays constant during the run";
@@ -105,8 +105,8 @@ void radioss_preview_part(const model::Model& m, std::span<const std::uint32_t> 
     const model::RadiossSphProperty* prop = part ? f.sph_property(id_number(part->section.value)) : nullptr;
     const long long material = part ? id_number(part->material.value) : 0;
     if (part && !prop)
-        add_note(pv.notes, fmt::format("property {} is not a /PROP/SPH: mp 1, h automatic, qa 2, qb 1 assumed",
-                                       part->section.value));
+        add_radioss_note(pv.notes, fmt::format("property {} is not a /PROP/SPH: mp 1, h automatic, qa 2, qb 1 assumed",
+                                               part->section.value));
     if (prop) {
         r.property = prop->id;
         r.mp = prop->mp.value, r.property_h = prop->h.value, r.h_1d = prop->h_1d.value;
@@ -116,7 +116,7 @@ void radioss_preview_part(const model::Model& m, std::span<const std::uint32_t> 
         r.mp = 1.0;
     }
     const double rho = pv.density;
-    r.h_evolution = h_evolution(r.h_1d);
+    r.h_evolution = radioss_h_evolution(r.h_1d);
 
     // h0 per particle (spinih.F, sph-algorithms.md §4).
     double largest_nn = 0;
@@ -140,7 +140,8 @@ void radioss_preview_part(const model::Model& m, std::span<const std::uint32_t> 
         r.h_rule =
             fmt::format("hcst {:.4g} x the largest nearest same-part distance {:.4g} (h_1D 3)", r.hcst, largest_nn);
         if (!(largest_nn > 0))
-            add_note(pv.notes, "h_1D 3 with no nearest-neighbour distance (one particle, or all at one place): h 0");
+            add_radioss_note(pv.notes,
+                             "h_1D 3 with no nearest-neighbour distance (one particle, or all at one place): h 0");
     } else {
         std::vector<std::string> rules;
         const auto sources = std::count_if(by_source.begin(), by_source.end(), [](std::size_t n) { return n > 0; });
@@ -153,7 +154,7 @@ void radioss_preview_part(const model::Model& m, std::span<const std::uint32_t> 
                                             : std::string(words[k]));
         for (std::size_t k = 0; k < rules.size(); ++k) r.h_rule += (k ? "; " : "") + rules[k];
         if (by_source[static_cast<std::size_t>(RadiossHSource::Unknown)] > 0)
-            add_note(pv.notes, "the material density is not positive: h from the mass is unknown");
+            add_radioss_note(pv.notes, "the material density is not positive: h from the mass is unknown");
     }
 
     // Symmetry planes at t = 0: a particle on n planes keeps m / (1 + n) (§8.5).
@@ -166,7 +167,7 @@ void radioss_preview_part(const model::Model& m, std::span<const std::uint32_t> 
         if (pp.located[i]) {
             for (std::size_t k = 0; k < glob.planes.size(); ++k) {
                 const RadiossPlanePreview& plane = glob.planes[k];
-                const double dd = signed_distance(plane, pp.x[i], pp.y[i], pp.z[i]);
+                const double dd = plane_signed_distance(plane, pp.x[i], pp.y[i], pp.z[i]);
                 if (radioss_on_plane(dd, h_ref)) {
                     ++n;
                     ++glob.planes[k].on_plane;
@@ -183,9 +184,9 @@ void radioss_preview_part(const model::Model& m, std::span<const std::uint32_t> 
     pv.mass_total = r.mass_after;
     pv.mass_median = median_of(mass_after);
     if (r.on_planes[3] > 0)
-        add_note(pv.notes, fmt::format("{} particle(s) on three or more symmetry planes keep m / (1 + n), not "
-                                       "the physical share m / 2^n",
-                                       r.on_planes[3]));
+        add_radioss_note(pv.notes, fmt::format("{} particle(s) on three or more symmetry planes keep m / (1 + n), not "
+                                               "the physical share m / 2^n",
+                                               r.on_planes[3]));
 
     if (!h_located.empty()) {
         auto [lo, hi] = std::minmax_element(h_located.begin(), h_located.end());
@@ -209,7 +210,7 @@ void radioss_preview_part(const model::Model& m, std::span<const std::uint32_t> 
     const RadiossSoundSpeed c = radioss_sound_speed(f, material);
     pv.sound_speed = c.c;
     pv.sound_source = c.source;
-    add_note(pv.notes, c.note);
+    add_radioss_note(pv.notes, c.note);
     double dt_particle = 0, dt_nodal = 0;
     for (std::uint32_t i : members) {
         if (!pp.located[i] || !(pp.h[i] > 0) || !(c.c > 0)) continue;
@@ -242,7 +243,7 @@ void radioss_count_ghosts(Preview& out) {
     const double alpha = glob.alpha_sort, widen = std::sqrt(1.0 + alpha);
 
     auto distance = [&](std::uint32_t i, const RadiossPlanePreview& p) {
-        return signed_distance(p, pp.x[i], pp.y[i], pp.z[i]);
+        return plane_signed_distance(p, pp.x[i], pp.y[i], pp.z[i]);
     };
     // Candidates pass the coded bound, which contains the documented one (max h_j <= h_max). The
     // neighbour search is needed only where the documented test depends on it: i itself (bound

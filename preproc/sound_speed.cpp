@@ -26,7 +26,7 @@ const model::KeywordRecord* record_of(const model::Model& m, std::optional<std::
     return index && *index < m.records.size() ? &m.records[*index] : nullptr;
 }
 
-double number(const model::KeywordRecord* r, std::string_view name, double fallback = 0.0) {
+double sound_number(const model::KeywordRecord* r, std::string_view name, double fallback = 0.0) {
     const model::FieldRecord* f = r ? r->field(name) : nullptr;
     return f && f->valid ? f->number : fallback;
 }
@@ -40,13 +40,14 @@ double eos_sound_speed(const model::Model& m, const model::Eos& eos, double rho0
         return 0;
     }
     if (eos.keyword == "*EOS_MURNAGHAN") {
-        c = murnaghan_sound_speed(number(r, "GAMMA"), number(r, "K0"), rho0);
+        c = murnaghan_sound_speed(sound_number(r, "GAMMA"), sound_number(r, "K0"), rho0);
     } else if (eos.keyword == "*EOS_GRUNEISEN") {
-        c = number(r, "C");
+        c = sound_number(r, "C");
     } else if (eos.keyword == "*EOS_LINEAR_POLYNOMIAL") {
-        const double coefficients[7] = {number(r, "C0"), number(r, "C1"), number(r, "C2"), number(r, "C3"),
-                                        number(r, "C4"), number(r, "C5"), number(r, "C6")};
-        c = linear_polynomial_sound_speed(coefficients, number(r, "E0"), rho0);
+        const double coefficients[7] = {sound_number(r, "C0"), sound_number(r, "C1"), sound_number(r, "C2"),
+                                        sound_number(r, "C3"), sound_number(r, "C4"), sound_number(r, "C5"),
+                                        sound_number(r, "C6")};
+        c = linear_polynomial_sound_speed(coefficients, sound_number(r, "E0"), rho0);
     } else {
         note = eos.keyword + ": no sound speed formula";
         return 0;
@@ -71,9 +72,9 @@ SoundSpeed sound_speed(const model::Model& m, const model::Material* material, c
     const model::KeywordRecord* r = record_of(m, material->record);
     const std::string& kw = material->keyword;
     const bool elastic = kw == "*MAT_ELASTIC" || kw == "*MAT_PLASTIC_KINEMATIC" || kw == "*MAT_JOHNSON_COOK";
-    double young = number(r, "E"), poisson = number(r, "PR"), shear = 0;
+    double young = sound_number(r, "E"), poisson = sound_number(r, "PR"), shear = 0;
     if (kw == "*MAT_JOHNSON_COOK")
-        shear = number(r, "G");
+        shear = sound_number(r, "G");
     else if (elastic && young > 0 && poisson > -1)
         shear = young / (2 * (1 + poisson));
 
@@ -86,7 +87,7 @@ SoundSpeed sound_speed(const model::Model& m, const model::Material* material, c
         return out;
     }
     if (kw == "*MAT_ELASTIC" && r && r->has_option("FLUID")) {
-        const double bulk = number(r, "K");
+        const double bulk = sound_number(r, "K");
         out.c = bulk > 0 ? std::sqrt(bulk / rho0) : 0.0;
     } else if (elastic) {
         out.c = elastic_sound_speed(young, poisson, rho0);

@@ -10,25 +10,25 @@
 namespace sphdeck::preproc {
 namespace {
 
-double number(const model::KeywordRecord& r, std::string_view field) {
+double box_number(const model::KeywordRecord& r, std::string_view field) {
     const model::FieldRecord* f = r.field(field);
     return f && f->valid ? f->number : 0.0;
 }
 
 // A count field as an integer; 0 when blank, not a whole number or absurd.
-long long count(const model::KeywordRecord& r, std::string_view field) {
-    const double v = number(r, field);
+long long count_in_box(const model::KeywordRecord& r, std::string_view field) {
+    const double v = box_number(r, field);
     return v >= 1 && v <= 1e9 && v == std::floor(v) ? static_cast<long long>(v) : 0;
 }
 
 MeshBox read_box(const model::KeywordRecord& r) {
     MeshBox b;
     b.span = r.span;
-    b.part = grammar::saturating_integer<long long>(number(r, "IPID"));
-    b.nx = count(r, "NX"), b.ny = count(r, "NY"), b.nz = count(r, "NZ");
-    b.x0 = number(r, "XMIN"), b.y0 = number(r, "YMIN"), b.z0 = number(r, "ZMIN");
-    const double lx = number(r, "XLEN"), ly = number(r, "YLEN"), lz = number(r, "ZLEN");
-    if (number(r, "IDSEG") != 0)
+    b.part = grammar::saturating_integer<long long>(box_number(r, "IPID"));
+    b.nx = count_in_box(r, "NX"), b.ny = count_in_box(r, "NY"), b.nz = count_in_box(r, "NZ");
+    b.x0 = box_number(r, "XMIN"), b.y0 = box_number(r, "YMIN"), b.z0 = box_number(r, "ZMIN");
+    const double lx = box_number(r, "XLEN"), ly = box_number(r, "YLEN"), lz = box_number(r, "ZLEN");
+    if (box_number(r, "IDSEG") != 0)
         b.skipped =
             "IDSEG is set: the solver removes the particles on one side of the segment set, which the "
             "preview does not follow";

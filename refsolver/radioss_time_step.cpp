@@ -30,7 +30,7 @@ struct Pair {
     Eigen::Vector3d g = Eigen::Vector3d::Zero(), v = Eigen::Vector3d::Zero(), x = Eigen::Vector3d::Zero();
 };
 
-Pair pair(const Particles& s, std::size_t i, std::size_t j) {
+Pair stiffness_pair(const Particles& s, std::size_t i, std::size_t j) {
     Pair p;
     p.x = Eigen::Vector3d(s.x[i], s.y[i], s.z[i]) - Eigen::Vector3d(s.x[j], s.y[j], s.z[j]);
     const double r2 = p.x.squaredNorm();
@@ -72,13 +72,13 @@ void for_each_interacting_pair(const Particles& s, const NeighbourList& list, Re
         for (std::uint32_t k = list.forward_offsets[i]; k < list.forward_offsets[i + 1]; ++k) {
             const std::uint32_t j = list.forward[k];
             if (!s.interacting[j]) continue;
-            const Pair p = pair(s, i, j);
+            const Pair p = stiffness_pair(s, i, j);
             if (p.inside) real(i, std::size_t(j), p);
         }
         for (std::uint32_t k = list.ghost_offsets[i]; k < list.ghost_offsets[i + 1]; ++k) {
             const std::uint32_t j = list.ghost[k];
             if (!s.interacting[j]) continue;
-            const Pair p = pair(s, i, j);
+            const Pair p = stiffness_pair(s, i, j);
             if (p.inside) ghost(i, std::size_t(j), p);
         }
     }

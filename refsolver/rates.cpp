@@ -54,12 +54,12 @@ template <int Dimension, bool Renormalise>
 }
 
 // Sums of one particle: ax ay az drho de.
-using Sums = std::array<double, 5>;
+using RateSums = std::array<double, 5>;
 
 // Adds j's share of pair (i, j) to i's sums: m_j A_ij g_ij and the continuity and energy terms
 // (FORM 1: the volume-weighted forms, FORM 0 the number-density forms, continuity.hpp).
 template <bool Renormalise>
-inline void add_to(Sums& sums, const PairTerms& t, const PackedParticle& i, const PackedParticle& j) {
+inline void add_to(RateSums& sums, const PairTerms& t, const PackedParticle& i, const PackedParticle& j) {
     sums[0] -= j.m * t.a * t.gx, sums[1] -= j.m * t.a * t.gy, sums[2] -= j.m * t.a * t.gz;
     sums[3] += continuity_term<Renormalise>(j.s7, t.v_dot_g);
     sums[4] += energy_term<Renormalise>(i.s6, i.s7, j.s7, j.m, t.pi, t.v_dot_g);
@@ -67,7 +67,7 @@ inline void add_to(Sums& sums, const PairTerms& t, const PackedParticle& i, cons
 
 // Adds i's share of pair (i, j) to j's sums: g_ji = -g_ij and v_ji . g_ji = v_ij . g_ij.
 template <bool Renormalise>
-inline void add_reverse(Sums& sums, const PairTerms& t, const PackedParticle& i, const PackedParticle& j) {
+inline void add_reverse(RateSums& sums, const PairTerms& t, const PackedParticle& i, const PackedParticle& j) {
     sums[0] += i.m * t.a * t.gx, sums[1] += i.m * t.a * t.gy, sums[2] += i.m * t.a * t.gz;
     sums[3] += continuity_term<Renormalise>(i.s7, t.v_dot_g);
     sums[4] += energy_term<Renormalise>(j.s6, j.s7, i.s7, i.m, t.pi, t.v_dot_g);
@@ -99,7 +99,7 @@ using GradientSums = std::array<double, 18>;  // P, then Q (stress.hpp)
 }
 
 // `sign` +1 for i (m, volume: j's), -1 for j (i's).
-inline void add_stress(Sums& sums, GradientSums& gradient, const StressTerms& st, double m, double volume,
+inline void add_stress(RateSums& sums, GradientSums& gradient, const StressTerms& st, double m, double volume,
                        double sign) {
     sums[0] += sign * m * st.dg[0], sums[1] += sign * m * st.dg[1], sums[2] += sign * m * st.dg[2];
     sums[4] -= 0.5 * m * st.v_dot_dg;
@@ -158,7 +158,7 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
     const Correction* correction = s.correction.data();
     // Zero once; afterwards the final pass zeroes each entry as it reads it.
     if (scratch.received.size() != real * static_cast<std::size_t>(team))
-        scratch.received.assign(real * static_cast<std::size_t>(team), Sums{0, 0, 0, 0, 0});
+        scratch.received.assign(real * static_cast<std::size_t>(team), RateSums{0, 0, 0, 0, 0});
     scratch.inside.resize(static_cast<std::size_t>(team));
     const SymmetricTensor* stress = scratch.stress_over_rho2.data();
     if constexpr (Solid) {
@@ -176,7 +176,7 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
 #pragma omp parallel num_threads(team)
     {
         const auto t = static_cast<std::size_t>(omp_get_thread_num());
-        Sums* received = scratch.received.data() + t * real;
+        RateSums* received = scratch.received.data() + t * real;
         GradientSums* received_gradient = Solid ? scratch.received_gradient.data() + t * real : nullptr;
         std::vector<std::uint32_t>& inside = scratch.inside[t];
         if (fast.run) {
@@ -195,7 +195,7 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
             if (!interacting[i]) continue;
             const PackedParticle& me = nb[i];
             const Correction& bi = correction[i];
-            Sums own{rp.body[0], rp.body[1], rp.body[2], 0, 0};
+            RateSums own{rp.body[0], rp.body[1], rp.body[2], 0, 0};
             GradientSums own_gradient{};
             const std::size_t pairs = within_support(me, nb, list.forward.data(), list.forward_offsets[i],
                                                      list.forward_offsets[i + 1], inside);
@@ -236,9 +236,9 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
 #pragma omp for schedule(static)
         for (std::size_t i = 0; i < real; ++i) {
             for (int u = 0; u < team; ++u) {
-                Sums& r = scratch.received[static_cast<std::size_t>(u) * real + i];
+                RateSums& r = scratch.received[static_cast<std::size_t>(u) * real + i];
                 s.ax[i] += r[0], s.ay[i] += r[1], s.az[i] += r[2], s.drho[i] += r[3], s.de[i] += r[4];
-                r = Sums{0, 0, 0, 0, 0};
+                r = RateSums{0, 0, 0, 0, 0};
             }
             if constexpr (Solid) {
                 GradientSums& sum = scratch.gradient[i];

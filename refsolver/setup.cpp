@@ -32,10 +32,6 @@ long long record_integer(const model::KeywordRecord* r, std::string_view name, l
     return n ? *n : fallback;
 }
 
-// In setup_controls.cpp and setup_velocities.cpp.
-void setup_controls(const model::Model& m, const RunOptions& options, SolverInput& in, std::vector<Unsupported>& out);
-void setup_initial_velocities(const model::Model& m, SolverInput& in, std::vector<Unsupported>& out);
-
 namespace {
 
 struct PartProblem {

@@ -85,4 +85,9 @@ long long record_integer(const model::KeywordRecord* r, std::string_view name, l
 const model::FieldRecord* record_field(const model::KeywordRecord* r, std::string_view name);
 const model::KeywordRecord* model_record(const model::Model& m, std::optional<std::size_t> index);
 
+// The steps of build_setup after the particles (setup.cpp): the controls, planes and loads
+// (setup_controls.cpp), the initial velocities (setup_velocities.cpp).
+void setup_controls(const model::Model& m, const RunOptions& options, SolverInput& in, std::vector<Unsupported>& out);
+void setup_initial_velocities(const model::Model& m, SolverInput& in, std::vector<Unsupported>& out);
+
 }  // namespace sphdeck::refsolver

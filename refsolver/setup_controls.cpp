@@ -10,20 +10,20 @@ namespace sphdeck::refsolver {
 
 namespace {
 
-void note(std::vector<Unsupported>& out, std::string what, grammar::Span span, bool fatal = true,
-          bool blocking = false) {
+void control_note(std::vector<Unsupported>& out, std::string what, grammar::Span span, bool fatal = true,
+                  bool blocking = false) {
     Unsupported u{std::move(what), span, fatal};
     u.blocking = blocking;
     out.push_back(std::move(u));
 }
 
-bool keyword_is(const model::KeywordRecord& r, std::string_view name) {
+bool control_keyword_is(const model::KeywordRecord& r, std::string_view name) {
     return r.schema ? r.schema->name == name : r.keyword == name;
 }
 
 const model::KeywordRecord* find_curve(const model::Model& m, long long lcid) {
     for (const model::KeywordRecord& r : m.records)
-        if (keyword_is(r, "*DEFINE_CURVE") && record_integer(&r, "LCID", -1) == lcid) return &r;
+        if (control_keyword_is(r, "*DEFINE_CURVE") && record_integer(&r, "LCID", -1) == lcid) return &r;
     return nullptr;
 }
 
@@ -47,39 +47,39 @@ LoadCurve read_curve(const model::KeywordRecord& r) {
 void setup_loads(const model::Model& m, SolverInput& in, std::vector<Unsupported>& out) {
     for (const model::KeywordRecord& r : m.records) {
         int axis = -1;
-        if (keyword_is(r, "*LOAD_BODY_X"))
+        if (control_keyword_is(r, "*LOAD_BODY_X"))
             axis = 0;
-        else if (keyword_is(r, "*LOAD_BODY_Y"))
+        else if (control_keyword_is(r, "*LOAD_BODY_Y"))
             axis = 1;
-        else if (keyword_is(r, "*LOAD_BODY_Z"))
+        else if (control_keyword_is(r, "*LOAD_BODY_Z"))
             axis = 2;
         if (axis < 0) continue;
         if (record_number(&r, "CID") != 0)
-            note(out,
-                 fmt::format("{} CID {}: local coordinate systems are not supported", r.keyword,
-                             record_number(&r, "CID")),
-                 record_field(&r, "CID")->span);
+            control_note(out,
+                         fmt::format("{} CID {}: local coordinate systems are not supported", r.keyword,
+                                     record_number(&r, "CID")),
+                         record_field(&r, "CID")->span);
         if (record_number(&r, "LCIDDR") != 0)
-            note(out,
-                 fmt::format("{} LCIDDR {}: there is no dynamic relaxation phase; the curve is not used", r.keyword,
-                             record_number(&r, "LCIDDR")),
-                 record_field(&r, "LCIDDR")->span, false);
+            control_note(out,
+                         fmt::format("{} LCIDDR {}: there is no dynamic relaxation phase; the curve is not used",
+                                     r.keyword, record_number(&r, "LCIDDR")),
+                         record_field(&r, "LCIDDR")->span, false);
         const long long lcid = record_integer(&r, "LCID");
         const model::KeywordRecord* curve = find_curve(m, lcid);
         if (!curve) {
             const model::FieldRecord* f = record_field(&r, "LCID");
-            note(out, fmt::format("{}: load curve {} is not defined (*DEFINE_CURVE)", r.keyword, lcid),
-                 f ? f->span : r.span, true, true);
+            control_note(out, fmt::format("{}: load curve {} is not defined (*DEFINE_CURVE)", r.keyword, lcid),
+                         f ? f->span : r.span, true, true);
             continue;
         }
         BodyLoad load{axis, record_number(&r, "SF", 1.0), read_curve(*curve)};
         if (load.curve.t.empty())
-            note(out, fmt::format("*DEFINE_CURVE {} has no points", lcid), curve->span, true, true);
+            control_note(out, fmt::format("*DEFINE_CURVE {} has no points", lcid), curve->span, true, true);
         if (record_number(curve, "DATTYP") != 0)
-            note(out,
-                 fmt::format("*DEFINE_CURVE {} DATTYP {} is not supported: points are read as time, value", lcid,
-                             record_number(curve, "DATTYP")),
-                 record_field(curve, "DATTYP")->span);
+            control_note(out,
+                         fmt::format("*DEFINE_CURVE {} DATTYP {} is not supported: points are read as time, value",
+                                     lcid, record_number(curve, "DATTYP")),
+                         record_field(curve, "DATTYP")->span);
         in.loads.push_back(std::move(load));
     }
 }
@@ -89,23 +89,25 @@ void setup_planes(const model::Model& m, SolverInput& in, std::vector<Unsupporte
         std::array<double, 3> n{q.head[0] - q.tail[0], q.head[1] - q.tail[1], q.head[2] - q.tail[2]};
         const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
         if (!(length > 0)) {
-            note(out, "*BOUNDARY_SPH_SYMMETRY_PLANE with tail = head: no normal", q.span, true, true);
+            control_note(out, "*BOUNDARY_SPH_SYMMETRY_PLANE with tail = head: no normal", q.span, true, true);
             continue;
         }
         for (double& v : n) v /= length;
         if (in.dimension == 2 && std::abs(n[2]) > 1e-12) {
-            note(out,
-                 fmt::format("*BOUNDARY_SPH_SYMMETRY_PLANE normal ({:.3g}, {:.3g}, {:.3g}) leaves the x-y plane "
-                             "of a 2D model",
-                             n[0], n[1], n[2]),
-                 q.span, true, true);
+            control_note(
+                out,
+                fmt::format("*BOUNDARY_SPH_SYMMETRY_PLANE normal ({:.3g}, {:.3g}, {:.3g}) leaves the x-y plane "
+                            "of a 2D model",
+                            n[0], n[1], n[2]),
+                q.span, true, true);
             continue;
         }
         in.planes.push_back({n, n[0] * q.tail[0] + n[1] * q.tail[1] + n[2] * q.tail[2]});
     }
     if (in.planes.size() > 8)
-        note(out, fmt::format("{} symmetry planes: the solver mirrors across the first 8 only", in.planes.size()),
-             m.symmetry_planes[8].span);
+        control_note(out,
+                     fmt::format("{} symmetry planes: the solver mirrors across the first 8 only", in.planes.size()),
+                     m.symmetry_planes[8].span);
 }
 
 }  // namespace
@@ -123,18 +125,19 @@ void setup_controls(const model::Model& m, const RunOptions& options, SolverInpu
     in.sph_death = sph.dt.value > 0 ? sph.dt.value : 1e20;
     in.maxv = sph.maxv.value;
     for (const model::KeywordRecord& r : m.records)
-        if (keyword_is(r, "*CONTROL_TERMINATION")) in.end_cycle = record_integer(&r, "ENDCYC");
+        if (control_keyword_is(r, "*CONTROL_TERMINATION")) in.end_cycle = record_integer(&r, "ENDCYC");
     if (!(in.end_time > 0))
-        note(out,
-             fmt::format("end time {} is not positive: give *CONTROL_TERMINATION ENDTIM or --end-time", in.end_time),
-             c.endtim.span, true, true);
+        control_note(out,
+                     fmt::format("end time {} is not positive: give *CONTROL_TERMINATION ENDTIM or --end-time",
+                                 in.end_time),
+                     c.endtim.span, true, true);
     if (sph.boxid.value != 0) {
         const model::Box* box = m.box(std::to_string(sph.boxid.value));
         if (box)
             in.box = box->bounds;
         else
-            note(out, fmt::format("*CONTROL_SPH BOXID {} is not defined (*DEFINE_BOX)", sph.boxid.value),
-                 sph.boxid.span, true, true);
+            control_note(out, fmt::format("*CONTROL_SPH BOXID {} is not defined (*DEFINE_BOX)", sph.boxid.value),
+                         sph.boxid.span, true, true);
     }
     setup_planes(m, in, out);
     setup_loads(m, in, out);

@@ -17,8 +17,8 @@ namespace sphdeck::refsolver {
 
 namespace {
 
-void add(std::vector<Unsupported>& out, std::string what, grammar::Span span, bool fatal = true,
-         bool blocking = false) {
+void add_radioss_unsupported(std::vector<Unsupported>& out, std::string what, grammar::Span span, bool fatal = true,
+                             bool blocking = false) {
     Unsupported u{std::move(what), span, fatal};
     u.blocking = blocking;
     out.push_back(std::move(u));
@@ -44,7 +44,7 @@ constexpr std::array<OpaqueRule, 11> opaque_rules = {{
     {"/STOP", "energy and mass stop criteria are not evaluated", false},
 }};
 
-bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
+bool radioss_starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
 
 const model::IdSet* node_group(const model::Model& m, long long id) {
     for (const model::IdSet& s : m.node_sets)
@@ -59,39 +59,48 @@ std::vector<Unsupported> radioss_unsupported(const model::Model& m, const model:
     const model::RadiossFacts& f = *m.radioss;
     for (const model::RadiossKeptBlock& b : run.blocks)
         for (const OpaqueRule& r : opaque_rules)
-            if (starts_with(b.keyword, r.prefix) &&
+            if (radioss_starts_with(b.keyword, r.prefix) &&
                 (b.keyword.size() == r.prefix.size() || b.keyword[r.prefix.size()] == '/'))
-                add(out, fmt::format("{}: {}", b.keyword, r.why), b.span, r.fatal);
+                add_radioss_unsupported(out, fmt::format("{}: {}", b.keyword, r.why), b.span, r.fatal);
     if (f.analysis != 0)
-        add(out,
+        add_radioss_unsupported(
+            out,
             fmt::format("/ANALY N2D3D {} (2D) is not supported for OpenRadioss decks: the solver runs them in 3D",
                         f.analysis),
             f.analysis_span);
     for (const model::RadiossInout& io : f.inouts)
-        add(out, fmt::format("/SPH/INOUT {}: particle inlets and outlets are not modelled", io.id), io.span);
+        add_radioss_unsupported(out, fmt::format("/SPH/INOUT {}: particle inlets and outlets are not modelled", io.id),
+                                io.span);
     for (const model::RadiossReserve& r : f.reserves)
-        add(out,
+        add_radioss_unsupported(
+            out,
             fmt::format("/SPH/RESERVE for part {}: reserve particles stay inactive (no inlet releases them)", r.part),
             r.span, false);
     for (const model::RadiossSolidProperty& p : f.solid_properties)
         if (p.sol2sph())
-            add(out, fmt::format("{} {}: SOL2SPH (solids turned into particles) is not modelled", p.keyword, p.id),
-                p.span);
+            add_radioss_unsupported(out,
+                                    fmt::format("{} {}: SOL2SPH (solids turned into particles) is not modelled",
+                                                p.keyword, p.id),
+                                    p.span);
     if (f.bricks.size() + f.tetra4.size() + f.tetra10.size() + f.penta6.size() > 0)
-        add(out, "solid elements are not modelled: the solver runs the SPH particles only", {}, true);
+        add_radioss_unsupported(out, "solid elements are not modelled: the solver runs the SPH particles only", {},
+                                true);
     if (!f.initial_states.empty())
-        add(out, fmt::format("/INISPHCEL: {} initial particle state(s) are not read", f.initial_states.size()),
-            f.initial_states.front().span);
+        add_radioss_unsupported(out,
+                                fmt::format("/INISPHCEL: {} initial particle state(s) are not read",
+                                            f.initial_states.size()),
+                                f.initial_states.front().span);
     for (const model::RadiossSymmetry& s : f.symmetries) {
         if (!s.plane) {
-            add(out,
-                fmt::format("/SPHBCS {}: its plane is not known (frame {} or direction '{}')", s.id, s.frame_id.value,
-                            s.dir.value),
-                s.span, true, true);
+            add_radioss_unsupported(out,
+                                    fmt::format("/SPHBCS {}: its plane is not known (frame {} or direction '{}')", s.id,
+                                                s.frame_id.value, s.dir.value),
+                                    s.span, true, true);
             continue;
         }
         if (s.ilev.value == 0)
-            add(out,
+            add_radioss_unsupported(
+                out,
                 fmt::format("/SPHBCS {} Ilev 0: particles crossing the plane are put back with their normal "
                             "velocity reversed (Ilev 1), not dropped",
                             s.id),
@@ -99,7 +108,8 @@ std::vector<Unsupported> radioss_unsupported(const model::Model& m, const model:
     }
     // /DT/NODA/CST (and /DT/NODA/SET...) with a minimum step adds mass to keep the step (dtnoda.F).
     if (const model::RadiossDt* dt = f.time_step(model::DtKind::Nodal); dt && dt->dtmin.value > 0)
-        add(out,
+        add_radioss_unsupported(
+            out,
             fmt::format("{}: the minimum step {} is not enforced (the engine adds nodal mass or stops there): "
                         "the solver runs the nodal step as computed",
                         dt->keyword, dt->dtmin.value),
@@ -120,16 +130,20 @@ bool read_polynomial(const model::RadiossFacts& f, const model::RadiossMaterial&
         if (e->rho0 > 0) eos.rho0 = e->rho0;
         e0 = e->e0;
         if (e->psh != 0)
-            add(out, fmt::format("/EOS/POLYNOMIAL {}: Psh {} (pressure shift) is not supported", e->material, e->psh),
-                e->span);
+            add_radioss_unsupported(out,
+                                    fmt::format("/EOS/POLYNOMIAL {}: Psh {} (pressure shift) is not supported",
+                                                e->material, e->psh),
+                                    e->span);
         return true;
     }
     if (mat.bulk > 0) {
         eos.c[1] = mat.bulk;
         return true;
     }
-    add(out, fmt::format("part {}: {} {} has no /EOS/POLYNOMIAL and no C1: no pressure", part, mat.keyword, mat.id),
-        mat.span, true, true);
+    add_radioss_unsupported(out,
+                            fmt::format("part {}: {} {} has no /EOS/POLYNOMIAL and no C1: no pressure", part,
+                                        mat.keyword, mat.id),
+                            mat.span, true, true);
     return false;
 }
 
@@ -150,8 +164,9 @@ bool read_radioss_part(const model::Model& m, long long id, PartSetup& ps, doubl
     const model::RadiossFacts& f = *m.radioss;
     const model::Part* part = m.part(std::to_string(id));
     if (!part) {
-        add(out, fmt::format("particles name part {}, which no /PART defines: no material for them", id), {}, true,
-            true);
+        add_radioss_unsupported(out,
+                                fmt::format("particles name part {}, which no /PART defines: no material for them", id),
+                                {}, true, true);
         return false;
     }
     long long prop_id = 0, mat_id = 0;
@@ -161,55 +176,64 @@ bool read_radioss_part(const model::Model& m, long long id, PartSetup& ps, doubl
     }
     const model::RadiossSphProperty* prop = f.sph_property(prop_id);
     if (!prop) {
-        add(out, fmt::format("part {}: property '{}' is not a /PROP/TYPE34 (SPH)", id, part->section.value),
-            part->section.span, true, true);
+        add_radioss_unsupported(out,
+                                fmt::format("part {}: property '{}' is not a /PROP/TYPE34 (SPH)", id,
+                                            part->section.value),
+                                part->section.span, true, true);
         return false;
     }
     if (prop->order.value == 0)
-        add(out,
+        add_radioss_unsupported(
+            out,
             fmt::format("part {}: /PROP/TYPE34 {} Order 0 (zeroth-order correction) is not supported: the solver "
                         "runs Order -1 (none) and 1 (first order)",
                         id, prop->id),
             prop->order.span);
     if (prop->xi_stab.value != 0)
-        add(out,
+        add_radioss_unsupported(
+            out,
             fmt::format("part {}: /PROP/TYPE34 {} Xi_Stab {} (tensile instability correction) is not modelled", id,
                         prop->id, prop->xi_stab.value),
             prop->xi_stab.span);
     if (prop->alpha_cs.value != 0)
-        add(out,
+        add_radioss_unsupported(
+            out,
             fmt::format("part {}: /PROP/TYPE34 {} alpha_cs {} (conservative smoothing) is not modelled", id, prop->id,
                         prop->alpha_cs.value),
             prop->alpha_cs.span);
     if (prop->h_1d.value == 1)
-        add(out,
+        add_radioss_unsupported(
+            out,
             fmt::format("part {}: /PROP/TYPE34 {} h_1D 1 is not supported: h follows the volume change", id, prop->id),
             prop->h_1d.span);
     const model::RadiossMaterial* mat = f.material(mat_id);
     if (!mat) {
-        add(out, fmt::format("part {}: material '{}' is not defined", id, part->material.value), part->material.span,
-            true, true);
+        add_radioss_unsupported(out, fmt::format("part {}: material '{}' is not defined", id, part->material.value),
+                                part->material.span, true, true);
         return false;
     }
     if (!(mat->density > 0)) {
-        add(out, fmt::format("part {}: {} {} density {} is not positive", id, mat->keyword, mat->id, mat->density),
-            mat->span, true, true);
+        add_radioss_unsupported(out,
+                                fmt::format("part {}: {} {} density {} is not positive", id, mat->keyword, mat->id,
+                                            mat->density),
+                                mat->span, true, true);
         return false;
     }
     switch (mat->law) {
         case 1: {  // LAW1 elastic: as *MAT_ELASTIC
             if (!(mat->young > 0) || !(mat->poisson > -1 && mat->poisson < 0.5)) {
-                add(out,
-                    fmt::format("part {}: {} {} needs E > 0 and -1 < nu < 0.5 (E {}, nu {})", id, mat->keyword, mat->id,
-                                mat->young, mat->poisson),
-                    mat->span, true, true);
+                add_radioss_unsupported(out,
+                                        fmt::format("part {}: {} {} needs E > 0 and -1 < nu < 0.5 (E {}, nu {})", id,
+                                                    mat->keyword, mat->id, mat->young, mat->poisson),
+                                        mat->span, true, true);
                 return false;
             }
             run_elastic(*mat, ps);
             return true;
         }
         case 2:
-            add(out,
+            add_radioss_unsupported(
+                out,
                 fmt::format("part {}: {} {} (Johnson-Cook plasticity) is not supported: with --ignore-unsupported "
                             "it runs elastic (E, nu)",
                             id, mat->keyword, mat->id),
@@ -218,29 +242,36 @@ bool read_radioss_part(const model::Model& m, long long id, PartSetup& ps, doubl
                 run_elastic(*mat, ps);
                 return true;
             }
-            add(out, fmt::format("part {}: {} {} has no E and nu the solver can run", id, mat->keyword, mat->id),
-                mat->span, true, true);
+            add_radioss_unsupported(out,
+                                    fmt::format("part {}: {} {} has no E and nu the solver can run", id, mat->keyword,
+                                                mat->id),
+                                    mat->span, true, true);
             return false;
         case 3:  // HYDPLA: the polynomial EOS; with E = 0 no deviatoric stress (a fluid)
         case 6:  // HYD_VISC: the polynomial EOS and a physical viscosity
             if (mat->law == 3 && mat->young != 0)
-                add(out,
+                add_radioss_unsupported(
+                    out,
                     fmt::format("part {}: {} {} E {}: the deviatoric stress and plastic flow (a, b, n) are not "
                                 "modelled; the part runs as a fluid",
                                 id, mat->keyword, mat->id, mat->young),
                     mat->span);
             if (mat->law == 6)
-                add(out,
+                add_radioss_unsupported(
+                    out,
                     fmt::format("part {}: {} {}: the physical viscosity is not modelled (only qa/qb)", id, mat->keyword,
                                 mat->id),
                     mat->span);
             return read_polynomial(f, *mat, id, ps, e0, out);
         case 0:
-            add(out, fmt::format("part {}: {} {} (void) gives particles no material", id, mat->keyword, mat->id),
-                mat->law_span, true, true);
+            add_radioss_unsupported(out,
+                                    fmt::format("part {}: {} {} (void) gives particles no material", id, mat->keyword,
+                                                mat->id),
+                                    mat->law_span, true, true);
             return false;
         default:
-            add(out,
+            add_radioss_unsupported(
+                out,
                 fmt::format("part {}: {} {} is not supported: the solver runs LAW1 (elastic), LAW3 (HYDPLA) and LAW6 "
                             "(HYD_VISC) with /EOS/POLYNOMIAL",
                             id, mat->keyword, mat->id),
@@ -252,7 +283,7 @@ bool read_radioss_part(const model::Model& m, long long id, PartSetup& ps, doubl
 namespace {
 
 using Projector = std::array<double, 9>;
-constexpr Projector identity{1, 0, 0, 0, 1, 0, 0, 0, 1};
+constexpr Projector identity_matrix{1, 0, 0, 0, 1, 0, 0, 0, 1};
 
 Projector times(const Projector& a, const Projector& b) {
     Projector c{};
@@ -281,23 +312,26 @@ void setup_symmetry(const model::Model& m, SolverInput& in, std::vector<Unsuppor
         if (s.grnod_id.value <= 0) continue;
         const model::IdSet* group = node_group(m, s.grnod_id.value);
         if (!group) {
-            add(out,
-                fmt::format("/SPHBCS {}: node group {} is not defined: no kinematic condition", s.id, s.grnod_id.value),
-                s.grnod_id.span, true, true);
+            add_radioss_unsupported(out,
+                                    fmt::format("/SPHBCS {}: node group {} is not defined: no kinematic condition",
+                                                s.id, s.grnod_id.value),
+                                    s.grnod_id.span, true, true);
             continue;
         }
         Projector p{};
         if (!plane.tied)
             for (int r = 0; r < 3; ++r)
                 for (int k = 0; k < 3; ++k) p[3 * r + k] = (r == k ? 1.0 : 0.0) - n[r] * n[k];
-        if (in.kinematic.empty()) in.kinematic.assign(m.particles.size(), identity);
+        if (in.kinematic.empty()) in.kinematic.assign(m.particles.size(), identity_matrix);
         for (long long node : group->members)
             if (auto it = node_to_particle.find(node); it != node_to_particle.end())
                 in.kinematic[it->second] = times(p, in.kinematic[it->second]);
     }
     if (in.planes.size() > 8)
-        add(out, fmt::format("{} symmetry planes: the solver mirrors across the first 8 only", in.planes.size()),
-            f.symmetries[8].span);
+        add_radioss_unsupported(out,
+                                fmt::format("{} symmetry planes: the solver mirrors across the first 8 only",
+                                            in.planes.size()),
+                                f.symmetries[8].span);
 }
 
 void setup_inivel(const model::Model& m, const model::RadiossRunInput& run, SolverInput& in,
@@ -306,20 +340,25 @@ void setup_inivel(const model::Model& m, const model::RadiossRunInput& run, Solv
     for (std::size_t i = 0; i < m.particles.size(); ++i) node_to_particle.emplace(m.particles.node[i], i);
     for (const model::RadiossInitialVelocity& v : run.initial_velocities) {
         if (v.kind != "TRA") {
-            add(out, fmt::format("/INIVEL/{} is not supported: the solver reads /INIVEL/TRA", v.kind), v.span);
+            add_radioss_unsupported(out,
+                                    fmt::format("/INIVEL/{} is not supported: the solver reads /INIVEL/TRA", v.kind),
+                                    v.span);
             continue;
         }
         if (!v.read) {
-            add(out, "/INIVEL/TRA: its card could not be read (Vx Vy Vz in 20 columns, then the group and skew)",
+            add_radioss_unsupported(
+                out, "/INIVEL/TRA: its card could not be read (Vx Vy Vz in 20 columns, then the group and skew)",
                 v.span, true, true);
             continue;
         }
         if (v.skew != 0)
-            add(out, fmt::format("/INIVEL/TRA: skew {} is not supported: the velocity is taken in global axes", v.skew),
+            add_radioss_unsupported(
+                out, fmt::format("/INIVEL/TRA: skew {} is not supported: the velocity is taken in global axes", v.skew),
                 v.span);
         const model::IdSet* group = node_group(m, v.group);
         if (!group) {
-            add(out, fmt::format("/INIVEL/TRA: node group {} is not defined", v.group), v.span, true, true);
+            add_radioss_unsupported(out, fmt::format("/INIVEL/TRA: node group {} is not defined", v.group), v.span,
+                                    true, true);
             continue;
         }
         for (long long node : group->members)
@@ -342,7 +381,8 @@ void setup_radioss_controls(const model::Model& m, const model::RadiossRunInput&
     else
         in.q1 = 2.0, in.q2 = 1.0;  // hm_read_prop34.F defaults
     if (pairs.size() > 1)
-        add(out,
+        add_radioss_unsupported(
+            out,
             fmt::format("{} different qa/qb pairs: the solver uses the first property's (qa {}, qb {}) for every "
                         "pair",
                         pairs.size(), in.q1, in.q2),
@@ -361,11 +401,13 @@ void setup_radioss_controls(const model::Model& m, const model::RadiossRunInput&
     in.ncbs = 1;
     in.maxv = 0;  // no velocity check in Radioss
     if (!(in.end_time > 0))
-        add(out,
-            run.end_time ? fmt::format("/RUN end time {} is not positive: give --end-time", *run.end_time)
-                         : std::string("no engine deck with /RUN (<run>_0001.rad next to the starter deck): give "
-                                       "--end-time"),
-            run.run_span, true, true);
+        add_radioss_unsupported(out,
+                                run.end_time
+                                    ? fmt::format("/RUN end time {} is not positive: give --end-time", *run.end_time)
+                                    : std::string(
+                                          "no engine deck with /RUN (<run>_0001.rad next to the starter deck): give "
+                                          "--end-time"),
+                                run.run_span, true, true);
     setup_symmetry(m, in, out);
     setup_inivel(m, run, in, out);
     if (!in.kinematic.empty())

@@ -58,7 +58,7 @@ constexpr std::array<Refused, 4> refused = {{
 
 bool starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
 
-void add(std::vector<Unsupported>& out, std::string what, grammar::Span span, bool fatal = true) {
+void add_unsupported(std::vector<Unsupported>& out, std::string what, grammar::Span span, bool fatal = true) {
     out.push_back({std::move(what), span, fatal});
 }
 
@@ -66,60 +66,68 @@ void control_sph_items(const model::Model& m, std::vector<Unsupported>& out) {
     const model::ControlSph& sph = m.controls.sph;
     const model::Form form = sph.form.value;
     if (form != model::Form::Default && form != model::Form::Renormalized)
-        add(out,
+        add_unsupported(
+            out,
             fmt::format("*CONTROL_SPH FORM {} ({}) is not supported: the solver runs FORM 0 (default) and FORM 1 "
                         "(renormalization); with --ignore-unsupported it runs FORM 0",
                         static_cast<int>(form), model::to_string(form)),
             sph.form.span);
     if (sph.idim.value == model::Dimension::Axisymmetric)
-        add(out,
+        add_unsupported(
+            out,
             "*CONTROL_SPH IDIM -2 (2D axisymmetric) is not supported: the solver runs IDIM 3 (3D) and 2 (plane "
             "strain); with --ignore-unsupported it runs plane strain",
             sph.idim.span);
     if (sph.idim.value == model::Dimension::Unset)
-        add(out, "*CONTROL_SPH IDIM not given: 3D assumed", sph.idim.span.valid() ? sph.idim.span : sph.keyword, false);
+        add_unsupported(out, "*CONTROL_SPH IDIM not given: 3D assumed",
+                        sph.idim.span.valid() ? sph.idim.span : sph.keyword, false);
     if (sph.iavis.value != model::ArtificialViscosity::Monaghan)
-        add(out,
+        add_unsupported(
+            out,
             fmt::format("*CONTROL_SPH IAVIS {} (solid-element bulk viscosity) is not supported: the solver runs "
                         "IAVIS 0 (Monaghan); with --ignore-unsupported it runs IAVIS 0",
                         static_cast<int>(sph.iavis.value)),
             sph.iavis.span);
     if (sph.deriv.value != 0 && sph.deriv.value != 1)
-        add(out,
-            fmt::format("*CONTROL_SPH DERIV {} is not supported: 0 or 1 expected; DERIV 0 is run", sph.deriv.value),
-            sph.deriv.span);
+        add_unsupported(out,
+                        fmt::format("*CONTROL_SPH DERIV {} is not supported: 0 or 1 expected; DERIV 0 is run",
+                                    sph.deriv.value),
+                        sph.deriv.span);
     if (sph.ishift.value != 0)
-        add(out, fmt::format("*CONTROL_SPH ISHIFT {} (particle shifting) is not supported", sph.ishift.value),
-            sph.ishift.span);
+        add_unsupported(out,
+                        fmt::format("*CONTROL_SPH ISHIFT {} (particle shifting) is not supported", sph.ishift.value),
+                        sph.ishift.span);
     if (sph.ierod.value != model::ErosionMode::StayActive)
-        add(out,
-            fmt::format("*CONTROL_SPH IEROD {} has no effect: the solver evaluates no erosion criteria",
-                        static_cast<int>(sph.ierod.value)),
-            sph.ierod.span, false);
+        add_unsupported(out,
+                        fmt::format("*CONTROL_SPH IEROD {} has no effect: the solver evaluates no erosion criteria",
+                                    static_cast<int>(sph.ierod.value)),
+                        sph.ierod.span, false);
     std::set<long long> parts(m.particles.part.begin(), m.particles.part.end());
     if (sph.cont.value == 1 && parts.size() > 1)
-        add(out, "*CONTROL_SPH CONT 1 (no interaction between parts) is not supported: all parts interact",
-            sph.cont.span);
+        add_unsupported(out, "*CONTROL_SPH CONT 1 (no interaction between parts) is not supported: all parts interact",
+                        sph.cont.span);
     if (sph.ncbs.value < 1)
-        add(out, fmt::format("*CONTROL_SPH NCBS {} taken as 1", sph.ncbs.value), sph.ncbs.span, false);
+        add_unsupported(out, fmt::format("*CONTROL_SPH NCBS {} taken as 1", sph.ncbs.value), sph.ncbs.span, false);
 }
 
 void timestep_items(const model::Model& m, std::vector<Unsupported>& out) {
     for (const model::KeywordRecord& r : m.records) {
         if (!r.schema || r.schema->name != "*CONTROL_TIMESTEP") continue;
         if (record_number(&r, "DT2MS") != 0)
-            add(out,
-                fmt::format("*CONTROL_TIMESTEP DT2MS {} (mass scaling) is not supported", record_number(&r, "DT2MS")),
-                record_field(&r, "DT2MS")->span);
+            add_unsupported(out,
+                            fmt::format("*CONTROL_TIMESTEP DT2MS {} (mass scaling) is not supported",
+                                        record_number(&r, "DT2MS")),
+                            record_field(&r, "DT2MS")->span);
         if (record_number(&r, "LCTM") != 0)
-            add(out,
-                fmt::format("*CONTROL_TIMESTEP LCTM {} (time-step limit curve) is not used", record_number(&r, "LCTM")),
-                record_field(&r, "LCTM")->span, false);
+            add_unsupported(out,
+                            fmt::format("*CONTROL_TIMESTEP LCTM {} (time-step limit curve) is not used",
+                                        record_number(&r, "LCTM")),
+                            record_field(&r, "LCTM")->span, false);
         if (record_number(&r, "ERODE") != 0)
-            add(out,
-                fmt::format("*CONTROL_TIMESTEP ERODE {} has no effect: particles are never eroded",
-                            record_number(&r, "ERODE")),
-                record_field(&r, "ERODE")->span, false);
+            add_unsupported(out,
+                            fmt::format("*CONTROL_TIMESTEP ERODE {} has no effect: particles are never eroded",
+                                        record_number(&r, "ERODE")),
+                            record_field(&r, "ERODE")->span, false);
     }
 }
 
@@ -136,7 +144,8 @@ void hourglass_items(const model::Model& m, std::vector<Unsupported>& out) {
             const double q1 = record_number(&r, "Q1", m.controls.q1.value),
                          q2 = record_number(&r, "Q2", m.controls.q2.value);
             if (q1 != m.controls.q1.value || q2 != m.controls.q2.value)
-                add(out,
+                add_unsupported(
+                    out,
                     fmt::format("part {}: *HOURGLASS {} Q1 {} / Q2 {} per part are not supported: the solver uses "
                                 "*CONTROL_BULK_VISCOSITY's Q1 {} / Q2 {} for every pair",
                                 part.id, part.hourglass.value, q1, q2, m.controls.q1.value, m.controls.q2.value),
@@ -161,10 +170,10 @@ std::vector<Unsupported> unsupported_features(const model::Model& m) {
             continue;  // materials and EOS are checked per part that uses them
         bool listed = false;
         for (const Refused& f : refused)
-            if (name == f.keyword) add(out, fmt::format("{}: {}", r.keyword, f.why), r.span), listed = true;
+            if (name == f.keyword) add_unsupported(out, fmt::format("{}: {}", r.keyword, f.why), r.span), listed = true;
         if (name == "*MAT_ADD_EROSION")
-            add(out, "*MAT_ADD_EROSION: erosion criteria are not evaluated", r.span), listed = true;
-        if (!listed) add(out, fmt::format("{} is not used by the solver", r.keyword), r.span, false);
+            add_unsupported(out, "*MAT_ADD_EROSION: erosion criteria are not evaluated", r.span), listed = true;
+        if (!listed) add_unsupported(out, fmt::format("{} is not used by the solver", r.keyword), r.span, false);
     }
     return out;
 }

@@ -8,18 +8,20 @@ namespace sphdeck::refsolver {
 
 namespace {
 
-constexpr double inf = std::numeric_limits<double>::infinity();
+constexpr double infinite_skin = std::numeric_limits<double>::infinity();
 
 struct Box : DisplacementBox {
-    Box() : DisplacementBox{{inf, inf, inf}, {-inf, -inf, -inf}} {}
+    Box()
+        : DisplacementBox{{infinite_skin, infinite_skin, infinite_skin},
+                          {-infinite_skin, -infinite_skin, -infinite_skin}} {}
 };
-void add(DisplacementBox& b, const double p[3]) {
+void add_skin(DisplacementBox& b, const double p[3]) {
     for (int a = 0; a < 3; ++a) b.lo[a] = std::min(b.lo[a], p[a]), b.hi[a] = std::max(b.hi[a], p[a]);
 }
 bool empty(const DisplacementBox& b) { return !(b.lo[0] <= b.hi[0]); }
 
 // The diagonal of the box bounding two boxes (0 when both are empty).
-double diagonal(const DisplacementBox& a, const DisplacementBox& b) {
+double box_diagonal(const DisplacementBox& a, const DisplacementBox& b) {
     double sum = 0;
     for (int k = 0; k < 3; ++k) {
         const double extent = std::max(a.hi[k], b.hi[k]) - std::min(a.lo[k], b.lo[k]);
@@ -64,10 +66,10 @@ double closing_bound(const Particles& s, const std::vector<SymmetryPlane>& plane
         const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
         finite = finite && std::isfinite(length);
         largest = std::max(largest, length);
-        add(where, at);
+        add_skin(where, at);
     });
     if (empty(where)) return 0.0;
-    if (!finite || !std::isfinite(support) || !std::isfinite(diagonal(where, where))) return inf;
+    if (!finite || !std::isfinite(support) || !std::isfinite(box_diagonal(where, where))) return infinite_skin;
     // Cells of at least support + 2 max|d| (the margin covers the rounding of the cell indices);
     // coarser when that would make too many cells.
     double cell = (support + 2 * largest) * (1 + 1e-9) + 1e-300;
@@ -92,7 +94,7 @@ double closing_bound(const Particles& s, const std::vector<SymmetryPlane>& plane
     for_each_point(s, planes, [&](const double at[3], const double d[3]) {
         std::size_t c[3];
         index(at, c);
-        add(cells[(c[2] * n[1] + c[1]) * n[0] + c[0]], d);
+        add_skin(cells[(c[2] * n[1] + c[1]) * n[0] + c[0]], d);
     });
     // Each cell with itself and its neighbours (both orders give the same box: the forward half).
     double bound = 0;
@@ -112,7 +114,7 @@ double closing_bound(const Particles& s, const std::vector<SymmetryPlane>& plane
                                 continue;
                             const DisplacementBox& there =
                                 cells[(oz * n[1] + static_cast<std::size_t>(oy)) * n[0] + static_cast<std::size_t>(ox)];
-                            if (!empty(there)) bound = std::max(bound, diagonal(here, there));
+                            if (!empty(there)) bound = std::max(bound, box_diagonal(here, there));
                         }
             }
     return bound;

@@ -20,11 +20,11 @@
 namespace sphdeck::verify {
 namespace {
 
-constexpr double gravity = 9.81;              // as in the decks
-constexpr double first_T = 1.5;               // earlier points left out (§3)
-constexpr double front_tolerance = 0.10;      // relative, the upper end of §3's 5-10 %
-constexpr double sample_dT = 0.02;            // front sampled every 0.02 in T
-constexpr double max_diagnostic_delay = 0.6;  // largest lag tried by the (ungated) delay diagnostic
+constexpr double dam_gravity = 9.81;           // as in the decks
+constexpr double first_T = 1.5;                // earlier points left out (§3)
+constexpr double front_tolerance = 0.10;       // relative, the upper end of §3's 5-10 %
+constexpr double experiment_sample_dT = 0.02;  // front sampled every 0.02 in T
+constexpr double max_diagnostic_delay = 0.6;   // largest lag tried by the (ungated) delay diagnostic
 
 }  // namespace
 
@@ -45,9 +45,9 @@ CaseResult run_dam_break(const CaseOptions& options) {
             dx = 2.0 * *std::min_element(s.x.begin(), s.x.end());
             a = *std::max_element(s.x.begin(), s.x.end()) + 0.5 * dx;
         }
-        const double T = sim.time() * std::sqrt(2.0 * gravity / a);
+        const double T = sim.time() * std::sqrt(2.0 * dam_gravity / a);
         if (T < next_T && !sim.finished()) return;
-        next_T = T + sample_dT;
+        next_T = T + experiment_sample_dT;
         const auto front = surge_front(s.x, s.y, s.active, dx, 0.25 * a);
         Ts.push_back(T);
         fronts.push_back(front ? (*front + 0.5 * dx) / a : NAN);  // the fluid's edge is dx/2 past the particle
@@ -111,7 +111,7 @@ CaseResult run_dam_break(const CaseOptions& options) {
         if (g.T.empty()) continue;
         if (const auto lag = best_front_delay(Ts, fronts, g.T, g.z, max_diagnostic_delay, 0.01)) {
             Check shifted{fmt::format("Z/a largest error after a shift dT = {:.2f} (t = {:.4f} s), {}", lag->delay,
-                                      lag->delay / std::sqrt(2.0 * gravity / a), g.label),
+                                      lag->delay / std::sqrt(2.0 * dam_gravity / a), g.label),
                           lag->worst_error, std::nullopt, lag->worst_error, front_tolerance};
             shifted.gated = false;
             result.checks.push_back(std::move(shifted));

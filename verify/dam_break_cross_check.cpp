@@ -14,7 +14,7 @@
 namespace sphdeck::verify {
 namespace {
 
-constexpr double tolerance = 0.03;  // relative, on max x; the codes agree to ~1 % (docs/verification.md §3)
+constexpr double cross_check_tolerance = 0.03;  // relative, on max x; the codes agree to ~1 % (docs/verification.md §3)
 // Gated times: every 0.4 in T, and T = 2.2, the last row before the front reaches the far wall at H/80.
 constexpr std::array<double, 6> gated_T = {0.4, 0.8, 1.2, 1.6, 2.0, 2.2};
 constexpr double last_compared_T = 2.2;
@@ -30,7 +30,7 @@ constexpr Resolution full_runs[] = {{40, "dam_break_marrone_40.k"}, {80, "dam_br
 
 const char* scheme_name(TrixiScheme s) { return s == TrixiScheme::Wcsph ? "WCSPH" : "EDAC"; }
 
-bool gated(double T) {
+bool is_gated_time(double T) {
     return std::any_of(gated_T.begin(), gated_T.end(), [&](double g) { return std::abs(g - T) < 1e-9; });
 }
 
@@ -107,11 +107,11 @@ bool add_trixi_cross_check(CaseResult& result, const CaseOptions& options, std::
             for (const FrontComparison& c : rows) {
                 const double signed_error = (c.ours - c.theirs) / c.theirs;
                 lowest = std::min(lowest, signed_error), highest = std::max(highest, signed_error);
-                if (!gated(c.T)) continue;
+                if (!is_gated_time(c.T)) continue;
                 result.checks.push_back(
                     {fmt::format("cross-check: max x/H at T = {:.1f}, H/{} (TrixiParticles {} H/{})", c.T,
                                  res.per_height, scheme_name(scheme), res.per_height),
-                     c.ours, c.theirs, relative_error(c.ours, c.theirs), tolerance});
+                     c.ours, c.theirs, relative_error(c.ours, c.theirs), cross_check_tolerance});
             }
             ranges += fmt::format("{}{}: {:+.1f} to {:+.1f} %", ranges.empty() ? "" : "; ", scheme_name(scheme),
                                   100.0 * lowest, 100.0 * highest);
@@ -136,7 +136,7 @@ bool add_trixi_cross_check(CaseResult& result, const CaseOptions& options, std::
             "0.2 <= T <= {}, every 0.2: {} (gated at T = 0.4, 0.8, ..., 2.0 and 2.2, tolerance {:.0f} %). Our "
             "front rule of the experiments (particles below y = W/4 with a neighbour within 2 dx) stays within "
             "{:.2g} dx of max x (more would mean a droplet alone ahead).",
-            res.deck, res.per_height, last_compared_T, ranges, 100.0 * tolerance, rule_gap / f.dx));
+            res.deck, res.per_height, last_compared_T, ranges, 100.0 * cross_check_tolerance, rule_gap / f.dx));
         std::vector<double> our_y;
         for (double x : f.max_x) our_y.push_back(x / f.H);
         panel.series.push_back(

@@ -14,7 +14,7 @@
 namespace sphdeck::verify {
 namespace {
 
-constexpr double rho0 = 1000.0, gravity = 9.81;  // as in the decks (make_hydrostatic.py)
+constexpr double column_rho0 = 1000.0, column_gravity = 9.81;  // as in the decks (make_hydrostatic.py)
 
 // Tolerances: §2's suggested gate of 1-2 % on the bottom pressure (the ceiling 2 % taken); the L1 of the
 // pressure profile below the surface band, which includes the layer next to the floor; residual kinetic
@@ -66,16 +66,16 @@ CaseResult run_hydrostatic(const CaseOptions& options) {
         ps.push_back(s.p[i]);
         if (s.y[i] > band_top) continue;
         p.push_back(s.p[i]);
-        p_exact.push_back(rho0 * gravity * (depth - s.y[i]));
+        p_exact.push_back(column_rho0 * column_gravity * (depth - s.y[i]));
         volume.push_back(s.mass[i] / s.rho[i]);
         below.x.push_back(s.y[i]);
         below.f.push_back(s.p[i]);
     }
     const ErrorNorms norms = error_norms(p, p_exact, volume);
-    const double reference_bottom = rho0 * gravity * depth;
+    const double reference_bottom = column_rho0 * column_gravity * depth;
     const auto fit = fit_line(below, -INFINITY, INFINITY, -INFINITY, INFINITY);
     const double bottom = fit ? fit->intercept : NAN;  // p at y = 0 from the straight line through the column
-    const double kinetic_scale = rho0 * gravity * depth * depth * width;
+    const double kinetic_scale = column_rho0 * column_gravity * depth * depth * width;
     const double kinetic = run.simulation->totals().kinetic / kinetic_scale;
 
     result.checks.push_back({"L1(p) below the surface band", norms.l1, std::nullopt, norms.l1, l1_tolerance});
@@ -108,7 +108,7 @@ CaseResult run_hydrostatic(const CaseOptions& options) {
     }
     if (!t.empty()) {
         pb_ref_t = {t.front(), t.back()};
-        pb_ref = {rho0 * gravity * (depth - 0.5 * dx), rho0 * gravity * (depth - 0.5 * dx)};
+        pb_ref = {column_rho0 * column_gravity * (depth - 0.5 * dx), column_rho0 * column_gravity * (depth - 0.5 * dx)};
     }
     std::vector<io::PlotPanel> panels = {
         {"pressure at the end",

@@ -20,7 +20,7 @@ namespace ref = radioss_waves;
 // Tolerances (issue 41, fixed before the first run): energies within 3 % of the initial total
 // energy at every listed cycle, the time step within 3 % at every cycle, the cycle count to reach
 // the engine's last listed time within 2, the mass to the listing's 4 digits.
-constexpr double energy_tolerance = 0.03, dt_tolerance = 0.03, cycle_tolerance = 2, mass_tolerance = 0.05;
+constexpr double radioss_waves_energy_tolerance = 0.03, dt_tolerance = 0.03, cycle_tolerance = 2, mass_tolerance = 0.05;
 
 struct History {
     std::vector<double> time, kinetic, internal;  // after each step (and at the start)
@@ -28,7 +28,7 @@ struct History {
 };
 
 // Linear interpolation of `y` (sampled at `x`, increasing) at `t`; NAN outside.
-double at(const std::vector<double>& x, const std::vector<double>& y, double t) {
+double listing_at(const std::vector<double>& x, const std::vector<double>& y, double t) {
     if (x.empty() || t < x.front() || t > x.back()) return NAN;
     const auto it = std::lower_bound(x.begin(), x.end(), t);
     const std::size_t k = static_cast<std::size_t>(it - x.begin());
@@ -46,7 +46,7 @@ double step_of_cycle(const History& h, int k, bool last_cut) {
     return h.step_dt[static_cast<std::size_t>(k)];
 }
 
-std::string figure(const History& h, double end) {
+std::string radioss_waves_figure(const History& h, double end) {
     std::vector<double> t, ke, ie, dt;
     for (const ref::ListingRow& r : ref::listing)
         if (r.time <= end) t.push_back(r.time), ke.push_back(r.kinetic), ie.push_back(r.internal), dt.push_back(r.dt);
@@ -104,10 +104,10 @@ CaseResult run_radioss_waves(const CaseOptions& options) {
         if (r.time > end + 1e-9) break;
         last = &r;
         ++compared;
-        const double ke = std::abs(at(h.time, h.kinetic, r.time) - r.kinetic) / e_ref;
-        const double ie = std::abs(at(h.time, h.internal, r.time) - r.internal) / e_ref;
+        const double ke = std::abs(listing_at(h.time, h.kinetic, r.time) - r.kinetic) / e_ref;
+        const double ie = std::abs(listing_at(h.time, h.internal, r.time) - r.internal) / e_ref;
         const double step = step_of_cycle(h, r.cycle, last_cut), dt = std::abs(step / r.dt - 1);
-        const double ke_run = at(h.time, h.kinetic, r.time), ie_run = at(h.time, h.internal, r.time);
+        const double ke_run = listing_at(h.time, h.kinetic, r.time), ie_run = listing_at(h.time, h.internal, r.time);
         table += fmt::format(
             "| {} | {:.4g} | {:.4g} | {:.4g} | {:.4g} | {:.4g} | {:+.2f} % | {:.4g} | {:.4g} | {:+.2f} % |\n", r.cycle,
             r.time, r.dt, step, r.kinetic, ke_run, 100 * (ke_run - r.kinetic) / e_ref, r.internal, ie_run,
@@ -122,11 +122,11 @@ CaseResult run_radioss_waves(const CaseOptions& options) {
     result.checks.push_back({fmt::format("kinetic energy, worst of {} listed cycles (cycle {}), |sphdeck - engine| / "
                                          "E_total(0)",
                                          compared, ke_at),
-                             worst_ke, std::nullopt, worst_ke, energy_tolerance});
+                             worst_ke, std::nullopt, worst_ke, radioss_waves_energy_tolerance});
     result.checks.push_back({fmt::format("internal energy, worst of {} listed cycles (cycle {}), |sphdeck - engine| / "
                                          "E_total(0)",
                                          compared, ie_at),
-                             worst_ie, std::nullopt, worst_ie, energy_tolerance});
+                             worst_ie, std::nullopt, worst_ie, radioss_waves_energy_tolerance});
     result.checks.push_back(
         {fmt::format("time step, worst of {} cycles (cycle {}), |dt / dt_engine - 1|", steps_compared, dt_at), worst_dt,
          std::nullopt, steps_compared > 0 ? worst_dt : NAN, dt_tolerance});
@@ -153,7 +153,7 @@ CaseResult run_radioss_waves(const CaseOptions& options) {
                     h.kinetic.empty() ? NAN : h.kinetic.front() + h.internal.front()),
     };
     result.details = std::move(table);
-    result.svg = figure(h, end);
+    result.svg = radioss_waves_figure(h, end);
     return result;
 }
 

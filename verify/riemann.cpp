@@ -33,7 +33,7 @@ double star_density(double p_star, const GasState& k, double gamma) {
 }
 
 // Shock speed of side k, sign -1 for the left wave and +1 for the right one (Toro eqs. 4.52, 4.59).
-double shock_speed(double p_star, const GasState& k, double gamma, double sign) {
+double riemann_shock_speed(double p_star, const GasState& k, double gamma, double sign) {
     const double c = sound_speed(k, gamma);
     return k.u + sign * c * std::sqrt((gamma + 1.0) / (2.0 * gamma) * p_star / k.p + (gamma - 1.0) / (2.0 * gamma));
 }
@@ -68,13 +68,13 @@ std::optional<RiemannSolution> solve_riemann(const GasState& left, const GasStat
     s.left_shock = p > left.p;
     s.right_shock = p > right.p;
     if (s.left_shock) {
-        s.left_head = s.left_tail = shock_speed(p, left, gamma, -1.0);
+        s.left_head = s.left_tail = riemann_shock_speed(p, left, gamma, -1.0);
     } else {  // Toro eq. 4.55: head u_L - c_L, tail u* - c*_L
         s.left_head = left.u - cl;
         s.left_tail = s.u_star - cl * std::pow(p / left.p, (gamma - 1.0) / (2.0 * gamma));
     }
     if (s.right_shock) {
-        s.right_head = s.right_tail = shock_speed(p, right, gamma, +1.0);
+        s.right_head = s.right_tail = riemann_shock_speed(p, right, gamma, +1.0);
     } else {  // Toro eq. 4.62: head u_R + c_R, tail u* + c*_R
         s.right_head = right.u + cr;
         s.right_tail = s.u_star + cr * std::pow(p / right.p, (gamma - 1.0) / (2.0 * gamma));

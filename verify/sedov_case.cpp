@@ -16,16 +16,16 @@ namespace sphdeck::verify {
 namespace {
 
 // As in make_sedov.py.
-constexpr double gamma_gas = 1.4, rho0 = 1.0, energy = 1.0, box = 1.0;
+constexpr double sedov_gamma = 1.4, sedov_rho0 = 1.0, blast_energy = 1.0, sedov_box = 1.0;
 
 // Tolerances (issue 18, fixed before the first run): the shock radius within 2 % and the peak density
 // within 20 % at the finer resolution, and both closer there than at the coarser one. The radius is read
 // from rings one spacing wide, so it cannot be told apart below half a spacing of the finer run: once both
 // runs are that close, the radius counts as converged (docs/verification.md §4).
-constexpr double radius_tolerance = 0.02, peak_tolerance = 0.20;
+constexpr double sedov_radius_tolerance = 0.02, peak_tolerance = 0.20;
 constexpr double radius_resolution_spacings = 0.5;
 // Energy: the scheme conserves kinetic + internal energy up to the time integration (energy.hpp).
-constexpr double energy_tolerance = 0.01;
+constexpr double sedov_energy_tolerance = 0.01;
 
 struct SedovRun {
     DeckRun run;
@@ -37,9 +37,9 @@ struct SedovRun {
     RadialProfile profile;
 };
 
-SedovRun evaluate(DeckRun run, int n, const SedovSolution& exact) {
+SedovRun evaluate_sedov(DeckRun run, int n, const SedovSolution& exact) {
     SedovRun r;
-    r.n = n, r.spacing = box / n;
+    r.n = n, r.spacing = sedov_box / n;
     const ParticleState& s = run.simulation->state();
     r.profile = radial_profile(s, n);
     const double t = run.simulation->time();
@@ -48,17 +48,17 @@ SedovRun evaluate(DeckRun run, int n, const SedovSolution& exact) {
         if (!s.active[i]) continue;
         const double radius = std::hypot(s.x[i], s.y[i]);
         volume.push_back(s.mass[i] / s.rho[i]);
-        rho_exact.push_back(exact.sample(radius, energy, rho0, t).rho);
+        rho_exact.push_back(exact.sample(radius, blast_energy, sedov_rho0, t).rho);
     }
     r.rho = error_norms(r.profile.rho, rho_exact, volume);
     // Density averaged in rings one spacing wide: the peak is the largest ring mean, the shock where the
     // mean falls to halfway between the peak and the ambient density, outside the peak.
-    const Profile ring = binned_profile(r.profile.r, r.profile.rho, 0.0, box, r.spacing);
+    const Profile ring = binned_profile(r.profile.r, r.profile.rho, 0.0, sedov_box, r.spacing);
     if (!ring.f.empty()) {
         const auto top = std::max_element(ring.f.begin(), ring.f.end());
         r.peak = *top;
         const double from = ring.x[static_cast<std::size_t>(top - ring.f.begin())];
-        r.shock = level_crossing(ring, 0.5 * (r.peak + rho0), from, box).value_or(NAN);
+        r.shock = level_crossing(ring, 0.5 * (r.peak + sedov_rho0), from, sedov_box).value_or(NAN);
     }
     r.energy_start = total_energy(run.initial);
     r.energy_end = total_energy(s);
@@ -66,11 +66,11 @@ SedovRun evaluate(DeckRun run, int n, const SedovSolution& exact) {
     return r;
 }
 
-std::string figure(const std::vector<SedovRun>& runs, const SedovSolution& exact, double t) {
+std::string sedov_figure(const std::vector<SedovRun>& runs, const SedovSolution& exact, double t) {
     std::vector<double> rs, rho, u, p;
     for (int k = 0; k <= 2000; ++k) {
-        const double radius = box * k / 2000.0;
-        const SedovSolution::State g = exact.sample(radius, energy, rho0, t);
+        const double radius = sedov_box * k / 2000.0;
+        const SedovSolution::State g = exact.sample(radius, blast_energy, sedov_rho0, t);
         rs.push_back(radius), rho.push_back(g.rho), u.push_back(g.u), p.push_back(g.p);
     }
     std::vector<const RadialProfile*> profiles;
@@ -78,7 +78,7 @@ std::string figure(const std::vector<SedovRun>& runs, const SedovSolution& exact
     RadialCurve curve{"exact (Sedov, j = 2)", std::move(rs), std::move(rho), std::move(u), std::move(p)};
     const std::string title =
         fmt::format("Sedov-Taylor blast wave at t = {:.4g}: particles against the similarity solution", t);
-    return radial_figure(profiles, curve, box, title);
+    return radial_figure(profiles, curve, sedov_box, title);
 }
 
 }  // namespace
@@ -87,25 +87,25 @@ CaseResult run_sedov(const CaseOptions& options) {
     CaseResult result;
     result.name = "sedov";
     result.title = "Sedov-Taylor blast wave (2D, cylindrical) against the similarity solution";
-    const SedovSolution exact = *solve_sedov(2, gamma_gas);
+    const SedovSolution exact = *solve_sedov(2, sedov_gamma);
     const std::vector<int> resolutions = options.quick ? std::vector<int>{35, 70} : std::vector<int>{50, 100};
 
     std::vector<SedovRun> runs;
     for (int n : resolutions) {
         DeckRun run = run_deck(options.decks / fmt::format("sedov_2d_{}.k", n), options);
         if (!add_run(result, run)) return result;
-        runs.push_back(evaluate(std::move(run), n, exact));
+        runs.push_back(evaluate_sedov(std::move(run), n, exact));
     }
     const SedovRun& coarse = runs.front();
     const SedovRun& fine = runs.back();
     const double t = fine.run.simulation->time();
-    const double shock_exact = exact.shock_radius(energy, rho0, t);
-    const double peak_exact = exact.density_ratio * rho0;
+    const double shock_exact = exact.shock_radius(blast_energy, sedov_rho0, t);
+    const double peak_exact = exact.density_ratio * sedov_rho0;
     auto radius_error = [&](const SedovRun& r) { return relative_error(r.shock, shock_exact); };
     auto peak_error = [&](const SedovRun& r) { return relative_error(r.peak, peak_exact); };
 
     result.checks.push_back({fmt::format("shock radius, {} x {}", fine.n, fine.n), fine.shock, shock_exact,
-                             radius_error(fine), radius_tolerance});
+                             radius_error(fine), sedov_radius_tolerance});
     result.checks.push_back({fmt::format("peak density, {} x {}", fine.n, fine.n), fine.peak, peak_exact,
                              peak_error(fine), peak_tolerance});
     // Convergence: the finer run closer than the coarser; for the radius, or within what the rings resolve.
@@ -119,7 +119,7 @@ CaseResult run_sedov(const CaseOptions& options) {
     for (const SedovRun& r : runs) {
         const double drift = relative_error(r.energy_end, r.energy_start);
         result.checks.push_back({fmt::format("total energy drift, {} x {}", r.n, r.n), r.energy_end, r.energy_start,
-                                 drift, energy_tolerance});
+                                 drift, sedov_energy_tolerance});
     }
 
     const double ratio = fine.spacing > 0 ? coarse.spacing / fine.spacing : NAN;
@@ -144,7 +144,7 @@ CaseResult run_sedov(const CaseOptions& options) {
                     coarse.shock, fine.shock, coarse.peak, fine.peak, coarse.rho.l1, fine.rho.l1, ratio,
                     observed_order(coarse.rho.l1, fine.rho.l1, ratio)),
     };
-    result.svg = figure(runs, exact, t);
+    result.svg = sedov_figure(runs, exact, t);
     return result;
 }
 

@@ -23,7 +23,7 @@ namespace {
 
 using Vec = std::array<double, 3>;  // U, G, P
 
-Vec derivative(const Vec& y, int j, double gamma, double delta) {
+Vec sedov_derivative(const Vec& y, int j, double gamma, double delta) {
     const double U = y[0], G = y[1], P = y[2], w = U - delta;
     const double b0 = -j * G * U, b1 = U - U * U - 2 * P / G, b2 = 2 - 2 * U;
     // Row 0: G U' + w G' = b0 -> U' = (b0 - w G') / G.
@@ -59,10 +59,10 @@ std::optional<SedovSolution> solve_sedov(int j, double gamma) {
     double integral = 0, previous = integrand(y, 1.0);
     s.profile.push_back({1.0, 1.0, 1.0, 1.0});
     for (int k = 1; k <= steps; ++k) {
-        const Vec k1 = derivative(y, j, gamma, delta);
-        const Vec k2 = derivative(axpy(y, 0.5 * d, k1), j, gamma, delta);
-        const Vec k3 = derivative(axpy(y, 0.5 * d, k2), j, gamma, delta);
-        const Vec k4 = derivative(axpy(y, d, k3), j, gamma, delta);
+        const Vec k1 = sedov_derivative(y, j, gamma, delta);
+        const Vec k2 = sedov_derivative(axpy(y, 0.5 * d, k1), j, gamma, delta);
+        const Vec k3 = sedov_derivative(axpy(y, 0.5 * d, k2), j, gamma, delta);
+        const Vec k4 = sedov_derivative(axpy(y, d, k3), j, gamma, delta);
         for (int c = 0; c < 3; ++c) y[c] += d / 6 * (k1[c] + 2 * k2[c] + 2 * k3[c] + k4[c]);
         if (!std::isfinite(y[0]) || !std::isfinite(y[1]) || !std::isfinite(y[2]) || y[1] <= 0) break;
         const double xi = std::exp(d * k);

@@ -13,7 +13,7 @@
 namespace sphdeck::verify {
 namespace {
 
-constexpr double gamma_gas = 1.4, x0 = 0.5, tube_length = 1.0;
+constexpr double sod_gamma = 1.4, sod_x0 = 0.5, tube_length = 1.0;
 constexpr GasState left_state{1.0, 0.0, 1.0}, right_state{0.125, 0.0, 0.1};
 
 // Tolerances (ceilings, fixed from the first good runs and the literature of §1; see docs/verification.md).
@@ -34,7 +34,7 @@ struct SodRun {
     std::vector<double> x, rho_values, u_values, p_values, e_values;  // active particles
 };
 
-SodRun evaluate(DeckRun run, int particles_along, const RiemannSolution& exact) {
+SodRun evaluate_sod(DeckRun run, int particles_along, const RiemannSolution& exact) {
     SodRun r;
     r.spacing = tube_length / particles_along;
     const ParticleState& s = run.simulation->state();
@@ -42,7 +42,7 @@ SodRun evaluate(DeckRun run, int particles_along, const RiemannSolution& exact) 
     std::vector<double> volume, rho_exact, u_exact, p_exact;
     for (std::size_t i = 0; i < s.size(); ++i) {
         if (!s.active[i]) continue;
-        const GasState g = exact.sample((s.x[i] - x0) / t);
+        const GasState g = exact.sample((s.x[i] - sod_x0) / t);
         r.x.push_back(s.x[i]);
         r.rho_values.push_back(s.rho[i]);
         r.u_values.push_back(s.vx[i]);
@@ -61,11 +61,11 @@ SodRun evaluate(DeckRun run, int particles_along, const RiemannSolution& exact) 
     return r;
 }
 
-std::string figure(const std::vector<SodRun>& runs, const RiemannSolution& exact, double t) {
+std::string sod_figure(const std::vector<SodRun>& runs, const RiemannSolution& exact, double t) {
     std::vector<double> xs, rho, u, p, e;
     for (int k = 0; k <= 2000; ++k) {
         const double x = tube_length * k / 2000.0;
-        const GasState g = exact.sample((x - x0) / t);
+        const GasState g = exact.sample((x - sod_x0) / t);
         xs.push_back(x), rho.push_back(g.rho), u.push_back(g.u), p.push_back(g.p);
         e.push_back(exact.internal_energy(g));
     }
@@ -101,14 +101,14 @@ CaseResult run_sod(const CaseOptions& options) {
     CaseResult result;
     result.name = "sod";
     result.title = "Sod shock tube (2D strip) against the exact Riemann solution at t = 0.2";
-    const RiemannSolution exact = *solve_riemann(left_state, right_state, gamma_gas);
+    const RiemannSolution exact = *solve_riemann(left_state, right_state, sod_gamma);
     const std::vector<int> resolutions = options.quick ? std::vector<int>{200, 400} : std::vector<int>{400, 800};
 
     std::vector<SodRun> runs;
     for (int n : resolutions) {
         DeckRun run = run_deck(options.decks / fmt::format("sod_2d_{}.k", n), options);
         if (!add_run(result, run)) return result;
-        runs.push_back(evaluate(std::move(run), n, exact));
+        runs.push_back(evaluate_sod(std::move(run), n, exact));
     }
 
     for (const SodRun& r : runs) {
@@ -120,7 +120,7 @@ CaseResult run_sod(const CaseOptions& options) {
     }
     const SodRun& fine = runs.back();
     const double t = fine.run.simulation->time();
-    const SodWaves expected = exact_sod_waves(exact, x0, t);
+    const SodWaves expected = exact_sod_waves(exact, sod_x0, t);
     const double tolerance = position_tolerance_spacings * fine.spacing;
     auto position = [&](const char* name, const std::optional<double>& found, const std::optional<double>& wanted) {
         const double value = found.value_or(NAN);
@@ -155,7 +155,7 @@ CaseResult run_sod(const CaseOptions& options) {
         fmt::format("Extra norms (not gated): L2(rho) {:.4g} / {:.4g}, Linf(rho) {:.4g} / {:.4g} (coarse / fine).",
                     runs.front().rho.l2, fine.rho.l2, runs.front().rho.linf, fine.rho.linf),
     };
-    result.svg = figure(runs, exact, t);
+    result.svg = sod_figure(runs, exact, t);
     return result;
 }
 

@@ -148,10 +148,10 @@ std::string domain_problem(std::string_view function, Arguments a) {
 // --- actions ---------------------------------------------------------------------------------
 
 template <typename Rule>
-struct action : pegtl::nothing<Rule> {};
+struct expression_action : pegtl::nothing<Rule> {};
 
 template <>
-struct action<peg::factor> : pegtl::maybe_nothing {
+struct expression_action<peg::factor> : pegtl::maybe_nothing {
     // Counts nesting around the whole factor match (like pegtl's limit_depth, with our message).
     template <typename Rule, pegtl::apply_mode A, pegtl::rewind_mode M, template <typename...> class Action,
               template <typename...> class Control, typename ParseInput>
@@ -168,7 +168,7 @@ struct action<peg::factor> : pegtl::maybe_nothing {
 };
 
 template <>
-struct action<peg::number> {
+struct expression_action<peg::number> {
     template <typename ActionInput>
     static void apply(const ActionInput& in, State& st) {
         std::string text = in.string();
@@ -197,7 +197,7 @@ void push_parameter(const ActionInput& in, State& st, std::string_view name) {
 }
 
 template <>
-struct action<peg::reference> {
+struct expression_action<peg::reference> {
     template <typename ActionInput>
     static void apply(const ActionInput& in, State& st) {
         push_parameter(in, st, in.string_view().substr(1));  // without '&'
@@ -205,7 +205,7 @@ struct action<peg::reference> {
 };
 
 template <>
-struct action<peg::bare_name> {
+struct expression_action<peg::bare_name> {
     template <typename ActionInput>
     static void apply(const ActionInput& in, State& st) {
         if (iequals(in.string_view(), "pi"))
@@ -216,7 +216,7 @@ struct action<peg::bare_name> {
 };
 
 template <>
-struct action<peg::group> {
+struct expression_action<peg::group> {
     // The value of "(...)" spans the parentheses, so errors about it underline all of it.
     template <typename ActionInput>
     static void apply(const ActionInput& in, State& st) {
@@ -226,7 +226,7 @@ struct action<peg::group> {
 };
 
 template <>
-struct action<peg::function_name> {
+struct expression_action<peg::function_name> {
     template <typename ActionInput>
     static void apply(const ActionInput& in, State& st) {
         const Function* function = find_function(in.string_view());
@@ -238,7 +238,7 @@ struct action<peg::function_name> {
 };
 
 template <>
-struct action<peg::call> {
+struct expression_action<peg::call> {
     template <typename ActionInput>
     static void apply(const ActionInput& in, State& st) {
         const Call call = st.calls.back();
@@ -267,7 +267,7 @@ struct action<peg::call> {
 };
 
 template <>
-struct action<peg::negate> {
+struct expression_action<peg::negate> {
     template <typename ActionInput>
     static void apply(const ActionInput& in, State& st) {
         st.values.back().value = -st.values.back().value;
@@ -276,7 +276,7 @@ struct action<peg::negate> {
 };
 
 template <>
-struct action<peg::unary_plus> {
+struct expression_action<peg::unary_plus> {
     template <typename ActionInput>
     static void apply(const ActionInput& in, State& st) {
         st.values.back().begin = st.offset(in);
@@ -301,25 +301,25 @@ void binary(State& st, std::string_view symbol, Op op) {
 }
 
 template <>
-struct action<peg::power_tail> {
+struct expression_action<peg::power_tail> {
     static void apply0(State& st) {
         binary(st, "**", [](double a, double b) { return std::pow(a, b); });
     }
 };
 template <>
-struct action<peg::multiply> {
+struct expression_action<peg::multiply> {
     static void apply0(State& st) { binary(st, "*", std::multiplies<>()); }
 };
 template <>
-struct action<peg::divide> {
+struct expression_action<peg::divide> {
     static void apply0(State& st) { binary(st, "/", std::divides<>()); }
 };
 template <>
-struct action<peg::add> {
+struct expression_action<peg::add> {
     static void apply0(State& st) { binary(st, "+", std::plus<>()); }
 };
 template <>
-struct action<peg::subtract> {
+struct expression_action<peg::subtract> {
     static void apply0(State& st) { binary(st, "-", std::minus<>()); }
 };
 
@@ -362,7 +362,7 @@ ExpressionResult evaluate_expression(std::string_view text, const ParameterLooku
     pegtl::memory_input in(text.data(), text.size(), "expression");
     try {
         // The grammar either matches or raises; the check only guards against a grammar bug.
-        if (!pegtl::parse<peg::grammar, action, control>(in, st) || st.values.size() != 1)
+        if (!pegtl::parse<peg::grammar, expression_action, control>(in, st) || st.values.size() != 1)
             return failure(ExpressionError::Syntax, "syntax error", 0, text.size());
     } catch (const pegtl::parse_error& e) {
         const std::size_t offset = e.positions().empty() ? 0 : e.positions().front().byte;

@@ -6,11 +6,9 @@
 #include "grammar/dyna/include_not_found.hpp"
 #include "grammar/dyna/keyword_arguments.hpp"
 #include "grammar/file_paths.hpp"
+#include "grammar/dyna/include_text.hpp"
 
 namespace sphdeck::grammar::dyna {
-
-SourceText read_include_text(const std::string& path, const FileOverlay* overlay = nullptr, FileCache* cache = nullptr,
-                             std::shared_ptr<const FileCache::File>* cached = nullptr);  // reader.cpp
 
 namespace {
 constexpr std::size_t max_include_name = 236;  // *INCLUDE Remark 2, via dynareadout and pydyna

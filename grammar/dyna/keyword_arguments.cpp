@@ -11,14 +11,13 @@ namespace {
 namespace pegtl = tao::pegtl;
 
 struct blank : pegtl::one<' ', '\t', ',', '\r'> {};
-struct name : pegtl::plus<pegtl::sor<pegtl::alnum, pegtl::one<'_'>>> {};
+struct argument_name : pegtl::plus<pegtl::sor<pegtl::alnum, pegtl::one<'_'>>> {};
 struct value : pegtl::plus<pegtl::not_one<' ', '\t', ',', '\r', '='>> {};
-struct named
-    : pegtl::seq<name, pegtl::star<pegtl::one<' '>>, pegtl::one<'='>, pegtl::star<pegtl::one<' '>>, pegtl::opt<value>> {
-};
+struct named : pegtl::seq<argument_name, pegtl::star<pegtl::one<' '>>, pegtl::one<'='>, pegtl::star<pegtl::one<' '>>,
+                          pegtl::opt<value>> {};
 struct bare : value {};
 struct argument : pegtl::sor<named, bare> {};
-struct arguments : pegtl::seq<pegtl::star<blank>, pegtl::star<argument, pegtl::star<blank>>> {};
+struct argument_list : pegtl::seq<pegtl::star<blank>, pegtl::star<argument, pegtl::star<blank>>> {};
 
 struct Collector {
     KeywordArguments& out;
@@ -28,10 +27,10 @@ struct Collector {
 };
 
 template <typename Rule>
-struct action : pegtl::nothing<Rule> {};
+struct argument_action : pegtl::nothing<Rule> {};
 
 template <>
-struct action<name> {
+struct argument_action<argument_name> {
     template <typename Input>
     static void apply(const Input& in, Collector& c) {
         c.pending_name = in.string_view();
@@ -39,7 +38,7 @@ struct action<name> {
     }
 };
 template <>
-struct action<value> {
+struct argument_action<value> {
     template <typename Input>
     static void apply(const Input& in, Collector& c) {
         c.pending_value = in.string_view();
@@ -49,7 +48,7 @@ struct action<value> {
 bool is_yes(std::string_view v) { return !v.empty() && (v[0] == 'y' || v[0] == 'Y'); }
 
 template <>
-struct action<named> {
+struct argument_action<named> {
     template <typename Input>
     static void apply(const Input&, Collector& c) {
         std::string key = to_upper(c.pending_name);
@@ -68,7 +67,7 @@ struct action<named> {
     }
 };
 template <>
-struct action<bare> {
+struct argument_action<bare> {
     template <typename Input>
     static void apply(const Input& in, Collector& c) {
         if (c.first) c.out.memory = in.string();
@@ -85,7 +84,7 @@ KeywordArguments parse_keyword_arguments(std::string_view text) {
     pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf, const char*> in(text.data(),
                                                                                          text.data() + text.size(),
                                                                                          "*KEYWORD");
-    pegtl::parse<arguments, action>(in, collector);
+    pegtl::parse<argument_list, argument_action>(in, collector);
     return out;
 }
 

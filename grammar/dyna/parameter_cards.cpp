@@ -19,7 +19,7 @@ struct Context {
     bool local;
 };
 
-void report(RawDeck& deck, const char* code, diag::Severity s, std::string message, Span span) {
+void report_parameter_finding(RawDeck& deck, const char* code, diag::Severity s, std::string message, Span span) {
     deck.diagnostics.push_back(diag::Diagnostic{code, s, std::move(message), span, {}});
 }
 
@@ -46,19 +46,21 @@ bool accept_definition(Context& c, const Parameter& p) {
     const Parameter* old = c.deck.parameters.find_existing(p.name, p.span.file);
     if (!old) return true;
     if (old->name != p.name) {
-        report(c.deck, "DK024", diag::Severity::Warning,
-               "parameter '" + p.name + "' differs from '" + old->name + "' only by case", p.span);
+        report_parameter_finding(c.deck, "DK024", diag::Severity::Warning,
+                                 "parameter '" + p.name + "' differs from '" + old->name + "' only by case", p.span);
     }
     const std::string what = "parameter '" + p.name + "' is defined again";
     switch (c.deck.parameters.duplication) {
         case Duplication::WarnKeepFirst:
-            report(c.deck, "DK014", diag::Severity::Warning, what + "; the first definition is kept (DFLAG 1)", p.span);
+            report_parameter_finding(c.deck, "DK014", diag::Severity::Warning,
+                                     what + "; the first definition is kept (DFLAG 1)", p.span);
             return false;
         case Duplication::WarnReplace:
-            report(c.deck, "DK014", diag::Severity::Warning, what + "; the new value replaces it (DFLAG 2)", p.span);
+            report_parameter_finding(c.deck, "DK014", diag::Severity::Warning,
+                                     what + "; the new value replaces it (DFLAG 2)", p.span);
             return true;
         case Duplication::Error:
-            report(c.deck, "DK014", diag::Severity::Error, what + " (DFLAG 3 forbids it)", p.span);
+            report_parameter_finding(c.deck, "DK014", diag::Severity::Error, what + " (DFLAG 3 forbids it)", p.span);
             return false;
         case Duplication::SilentReplace: return true;
         case Duplication::SilentKeepFirst: return false;
@@ -87,24 +89,25 @@ bool value_of(Context& c, const Field& field, ParameterType type, Parameter& p) 
             return false;
         }
         if (found.parameter->type == ParameterType::Character) {
-            report(c.deck, "DK012", diag::Severity::Error, "undefined parameter '" + std::string(token.name) + "'",
-                   field.span);
+            report_parameter_finding(c.deck, "DK012", diag::Severity::Error,
+                                     "undefined parameter '" + std::string(token.name) + "'", field.span);
             return false;
         }
         p.number = token.negated ? -found.parameter->number : found.parameter->number;
     } else {
         RealValue v = to_real(token);
         if (v.status != NumberStatus::Ok) {
-            report(c.deck, "DK003", diag::Severity::Error,
-                   "parameter value '" + std::string(token.text) + "' is not a number", field.span);
+            report_parameter_finding(c.deck, "DK003", diag::Severity::Error,
+                                     "parameter value '" + std::string(token.text) + "' is not a number", field.span);
             return false;
         }
         p.number = v.value;
     }
     if (type == ParameterType::Integer) {
         if (p.number != std::trunc(p.number))
-            report(c.deck, "DK004", diag::Severity::Warning,
-                   "integer parameter '" + p.name + "' given a non-integral value; truncated", field.span);
+            report_parameter_finding(c.deck, "DK004", diag::Severity::Warning,
+                                     "integer parameter '" + p.name + "' given a non-integral value; truncated",
+                                     field.span);
         p.number = std::trunc(p.number);
     }
     return true;
@@ -120,17 +123,19 @@ void read_pairs(Context& c, const CardLine& line) {
     CutReport cut = cut_fields(text, line, positions, significant_width(positions, c.block.format), fields);
     if (cut.has_tab) {
         auto tab = static_cast<std::uint32_t>(text.find('\t'));
-        report(c.deck, "DK016", diag::Severity::Warning, "tab in a fixed-format card: columns become ambiguous",
-               Span{line.file, line.line, tab + 1, tab + 2});
+        report_parameter_finding(c.deck, "DK016", diag::Severity::Warning,
+                                 "tab in a fixed-format card: columns become ambiguous",
+                                 Span{line.file, line.line, tab + 1, tab + 2});
     }
     for (std::size_t i = 0; i + 1 < fields.size(); i += 2) {
         ParameterType type;
         std::string_view name;
         if (is_blank(fields[i].text)) continue;
         if (!split_type_and_name(fields[i].text, type, name)) {
-            report(c.deck, "DK013", diag::Severity::Error,
-                   "parameter name '" + std::string(fields[i].text) + "' must start with its type letter R, I or C",
-                   fields[i].span);
+            report_parameter_finding(c.deck, "DK013", diag::Severity::Error,
+                                     "parameter name '" + std::string(fields[i].text) +
+                                         "' must start with its type letter R, I or C",
+                                     fields[i].span);
             continue;
         }
         Parameter p;
@@ -171,8 +176,9 @@ void read_expressions(Context& c) {
         ParameterType type;
         std::string_view name;
         if (!split_type_and_name(name_field, type, name)) {
-            report(c.deck, "DK015", diag::Severity::Error,
-                   "parameter name '" + std::string(name_field) + "' must start with R, I or C", name_span);
+            report_parameter_finding(c.deck, "DK015", diag::Severity::Error,
+                                     "parameter name '" + std::string(name_field) + "' must start with R, I or C",
+                                     name_span);
             continue;
         }
         std::string undefined;
@@ -182,9 +188,10 @@ void read_expressions(Context& c) {
             return found.parameter->number;
         };
         if (std::string_view tab_at = text; tab_at.find('\t') != std::string_view::npos)
-            report(c.deck, "DK016", diag::Severity::Warning, "tab in a fixed-format card: columns become ambiguous",
-                   Span{first->file, first->line, static_cast<std::uint32_t>(tab_at.find('\t') + 1),
-                        static_cast<std::uint32_t>(tab_at.find('\t') + 2)});
+            report_parameter_finding(c.deck, "DK016", diag::Severity::Warning,
+                                     "tab in a fixed-format card: columns become ambiguous",
+                                     Span{first->file, first->line, static_cast<std::uint32_t>(tab_at.find('\t') + 1),
+                                          static_cast<std::uint32_t>(tab_at.find('\t') + 2)});
         ExpressionResult r = evaluate_expression(expression, lookup);
         if (!r.ok()) {
             const char* code = r.error == ExpressionError::UndefinedParameter ? "DK012" : "DK015";
@@ -193,8 +200,8 @@ void read_expressions(Context& c) {
                 where.column = static_cast<std::uint32_t>(expression_start + r.offset + 1);
                 where.end_column = static_cast<std::uint32_t>(where.column + std::max<std::size_t>(r.length, 1));
             }
-            report(c.deck, code, diag::Severity::Error, "in expression of '" + std::string(name) + "': " + r.message,
-                   where);
+            report_parameter_finding(c.deck, code, diag::Severity::Error,
+                                     "in expression of '" + std::string(name) + "': " + r.message, where);
             continue;
         }
         Parameter p;
@@ -203,8 +210,8 @@ void read_expressions(Context& c) {
         p.number = type == ParameterType::Integer ? std::trunc(r.value) : r.value;  // Fortran INT() truncates
         p.span = name_span;
         if (type == ParameterType::Character) {
-            report(c.deck, "DK013", diag::Severity::Error, "a character parameter cannot take an expression",
-                   name_span);
+            report_parameter_finding(c.deck, "DK013", diag::Severity::Error,
+                                     "a character parameter cannot take an expression", name_span);
             continue;
         }
         define(c, std::move(p));
@@ -218,7 +225,7 @@ void read_duplication(Context& c) {
     if (flag.status == NumberStatus::Blank) return;
     Span span{line.file, line.line, 1, 11};
     if (flag.status != NumberStatus::Ok || flag.value < 1 || flag.value > 5) {
-        report(c.deck, "DK007", diag::Severity::Error, "DFLAG must be 1 to 5", span);
+        report_parameter_finding(c.deck, "DK007", diag::Severity::Error, "DFLAG must be 1 to 5", span);
         return;
     }
     c.deck.parameters.duplication = static_cast<Duplication>(flag.value);

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "grammar/dyna/deck_reader.hpp"
+#include "grammar/dyna/include_text.hpp"
 #include "grammar/dyna/line_grammar.hpp"
 #include "grammar/file_paths.hpp"
 #include "grammar/line_chunks.hpp"
@@ -18,38 +19,38 @@ namespace {
 namespace pegtl = tao::pegtl;
 
 template <typename Rule>
-struct action : pegtl::nothing<Rule> {};
+struct line_action : pegtl::nothing<Rule> {};
 
 template <>
-struct action<rules::keyword_name> {
+struct line_action<rules::keyword_name> {
     template <typename Input>
     static void apply(const Input& in, DeckReader& r) {
         r.parts.name = in.string_view();
     }
 };
 template <>
-struct action<rules::suffix_char> {
+struct line_action<rules::suffix_char> {
     template <typename Input>
     static void apply(const Input& in, DeckReader& r) {
         r.parts.suffix = *in.begin();
     }
 };
 template <>
-struct action<rules::keyword_arguments> {
+struct line_action<rules::keyword_arguments> {
     template <typename Input>
     static void apply(const Input& in, DeckReader& r) {
         r.parts.arguments = in.string_view();
     }
 };
 template <>
-struct action<rules::comment_line> {
+struct line_action<rules::comment_line> {
     template <typename Input>
     static void apply(const Input&, DeckReader& r) {
         r.on_comment();
     }
 };
 template <>
-struct action<rules::keyword_line> {
+struct line_action<rules::keyword_line> {
     template <typename Input>
     static void apply(const Input& in, DeckReader& r) {
         // Copy first: an *INCLUDE closed by this keyword line parses another file with `r`.
@@ -59,28 +60,28 @@ struct action<rules::keyword_line> {
     }
 };
 template <>
-struct action<rules::pgp_begin_line> {
+struct line_action<rules::pgp_begin_line> {
     template <typename Input>
     static void apply(const Input& in, DeckReader& r) {
         r.on_pgp_begin(in.begin(), in.end());
     }
 };
 template <>
-struct action<rules::pgp_end_line> {
+struct line_action<rules::pgp_end_line> {
     template <typename Input>
     static void apply(const Input& in, DeckReader& r) {
         r.on_pgp_end(in.begin(), in.end());
     }
 };
 template <>
-struct action<rules::empty_line> {
+struct line_action<rules::empty_line> {
     template <typename Input>
     static void apply(const Input& in, DeckReader& r) {
         r.on_data(in.begin(), in.begin());
     }
 };
 template <>
-struct action<rules::data_line> {
+struct line_action<rules::data_line> {
     template <typename Input>
     static void apply(const Input& in, DeckReader& r) {
         r.on_data(in.begin(), in.end());
@@ -138,7 +139,7 @@ void DeckReader::read(FileId file, CardFormat inherited_format, const FileCache:
     } else {
         pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf, const char*> in(
             source.text.data(), source.text.data() + source.text.size(), source.path.c_str());
-        pegtl::parse<rules::file, action>(in, *this);
+        pegtl::parse<rules::file, line_action>(in, *this);
     }
     close_block();
     report_dropped_blocks(first_diagnostic);
@@ -152,7 +153,7 @@ void DeckReader::read(FileId file, CardFormat inherited_format, const FileCache:
 // One line read with the line grammar, as the file loop reads it there (`begin` starts a line).
 void DeckReader::grammar_line(const char* begin, const char* text_end) {
     pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf, const char*> in(begin, text_end, "");
-    pegtl::parse<rules::line, action>(in, *this);
+    pegtl::parse<rules::line, line_action>(in, *this);
 }
 
 RawDeck read_file(const std::string& path, const ReaderOptions& options) {

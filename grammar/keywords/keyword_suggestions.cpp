@@ -40,7 +40,7 @@ std::size_t token_count(std::string_view s) {
     return static_cast<std::size_t>(std::count(s.begin(), s.end(), '_')) + 1;
 }
 
-void add(std::vector<KnownName>& out, std::string name, std::string_view base, int tier) {
+void add_suggestion(std::vector<KnownName>& out, std::string name, std::string_view base, int tier) {
     const std::size_t tokens = token_count(name);
     const std::uint64_t letters = letters_in(name);
     out.push_back({std::move(name), base, tier, tokens, letters});
@@ -54,21 +54,22 @@ std::vector<KnownName> build_names() {
                  s.insert(s.end(), k.aliases.begin(), k.aliases.end());
                  return s;
              }()) {
-            add(out, std::string(spelling), k.name, 0);
+            add_suggestion(out, std::string(spelling), k.name, 0);
             for (const OptionSpec& o : k.options)
-                add(out, std::string(spelling) + "_" + std::string(o.suffix), k.name, 0);
+                add_suggestion(out, std::string(spelling) + "_" + std::string(o.suffix), k.name, 0);
         }
     }
     for (const generated::LayoutEntry& e : generated::layouts()) {
-        add(out, std::string(e.name), e.name, 1);
+        add_suggestion(out, std::string(e.name), e.name, 1);
         std::string_view options = e.body.substr(0, e.body.find('\n'));
         while (!options.empty()) {
             const std::size_t end = std::min(options.find(' '), options.size());
-            if (end > 0) add(out, std::string(e.name) + "_" + std::string(options.substr(0, end)), e.name, 1);
+            if (end > 0)
+                add_suggestion(out, std::string(e.name) + "_" + std::string(options.substr(0, end)), e.name, 1);
             options.remove_prefix(std::min(end + 1, options.size()));
         }
     }
-    for (std::string_view n : known_without_layout()) add(out, std::string(n), n, 2);
+    for (std::string_view n : known_without_layout()) add_suggestion(out, std::string(n), n, 2);
     return out;
 }
 

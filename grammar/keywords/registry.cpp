@@ -19,7 +19,7 @@ struct Registry {
     std::vector<std::pair<std::string_view, const KeywordSchema*>> names;
 };
 
-Registry build() {
+Registry build_index() {
     Registry r;
     for (auto family :
          {tables::deck_keywords, tables::control_keywords, tables::parameter_include_keywords, tables::part_keywords,
@@ -36,7 +36,7 @@ Registry build() {
 }
 
 const Registry& registry() {
-    static const Registry r = build();
+    static const Registry r = build_index();
     return r;
 }
 
@@ -48,14 +48,14 @@ const KeywordSchema* lookup_exact(std::string_view upper_name) {
     return nullptr;
 }
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+bool is_name_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
 // The keyword name proper: surrounding blanks, anything after the first blank (arguments, a
 // separated format suffix) and a glued format suffix ('+', '-', '%') removed.
 std::string_view name_part(std::string_view s) {
-    while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
+    while (!s.empty() && is_name_blank(s.front())) s.remove_prefix(1);
     std::size_t end = 0;
-    while (end < s.size() && !is_blank(s[end])) ++end;
+    while (end < s.size() && !is_name_blank(s[end])) ++end;
     s = s.substr(0, end);
     if (!s.empty() && (s.back() == '+' || s.back() == '-' || s.back() == '%')) s.remove_suffix(1);
     return s;

@@ -22,7 +22,7 @@ FieldSpec box_id() { return {.name = "BOXID", .column = 1, .width = 10, .type = 
 
 // `_LOCAL` (pydyna define_box_local.py, define_box_sph_local.py): the box is given in a local
 // system defined by two more cards after the base cards.
-OptionSpec local_option() {
+OptionSpec define_local_option() {
     return {
         .suffix = "LOCAL",
         .cards_after =
@@ -105,7 +105,7 @@ KeywordSchema define_box() {
         .name = "*DEFINE_BOX",
         .cards = {{.name = "Card 1", .fields = std::move(fields)}},
         .doc = "axis-aligned box (e.g. BOXID of *CONTROL_SPH)",
-        .options = {title_option(), local_option()},
+        .options = {title_option(), define_local_option()},
     };
 }
 
@@ -178,7 +178,7 @@ KeywordSchema define_box_sph() {
                 },
             },
         .doc = "moving SPH activation box",
-        .options = {title_option(), local_option()},
+        .options = {title_option(), define_local_option()},
     };
 }
 

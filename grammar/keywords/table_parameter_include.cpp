@@ -6,7 +6,7 @@ namespace sphdeck::keywords::tables {
 namespace {
 
 // Options shared by *PARAMETER and *PARAMETER_EXPRESSION (lsdyna-format.md §14.4).
-OptionSpec local_option() {
+OptionSpec parameter_local_option() {
     return {
         .suffix = "LOCAL",
         .doc = "parameters visible only in this file and the files it includes (971 R5+)",
@@ -37,7 +37,7 @@ KeywordSchema parameter() {
         .doc = "named values referenced as &name in later fields",
         .options =
             {
-                local_option(),
+                parameter_local_option(),
                 {.suffix = "MUTABLE", .doc = "parameters that may be redefined"},
                 noecho_option(),
                 // pydyna: PRMR, VAL, PRTYP per line (PRTYP names an id kind: SSID, PSID, PID...).
@@ -79,7 +79,7 @@ KeywordSchema parameter_expression() {
             .doc = "one parameter per line; lines with columns 1-10 blank continue the expression",
         }},
         .doc = "parameters defined by expressions of numbers and other parameters",
-        .options = {local_option(), noecho_option()},
+        .options = {parameter_local_option(), noecho_option()},
     };
 }
 

@@ -22,7 +22,7 @@ bool matches(std::string_view header, std::string_view prefix) {
            (header.size() == prefix.size() || header[prefix.size()] == '/');
 }
 
-std::size_t count_segments(std::string_view prefix) {
+std::size_t count_card_segments(std::string_view prefix) {
     return static_cast<std::size_t>(std::count(prefix.begin(), prefix.end(), '/'));
 }
 
@@ -102,7 +102,7 @@ const KeywordSpec* find_keyword(std::string_view header, std::size_t* prefix_seg
     }
     if (best && prefix_segments) {
         std::string_view prefix = header.substr(0, best_length);
-        *prefix_segments = count_segments(prefix);
+        *prefix_segments = count_card_segments(prefix);
     }
     return best;
 }

@@ -9,11 +9,7 @@
 #include "grammar/file_paths.hpp"
 #include "grammar/parameters.hpp"
 #include "grammar/fields.hpp"
-
-namespace sphdeck::grammar::dyna {
-SourceText read_include_text(const std::string& path, const FileOverlay* overlay = nullptr, FileCache* cache = nullptr,
-                             std::shared_ptr<const FileCache::File>* cached = nullptr);  // grammar/dyna/reader.cpp
-}
+#include "grammar/dyna/include_text.hpp"
 
 namespace sphdeck::grammar::radioss {
 namespace {

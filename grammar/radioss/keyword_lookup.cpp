@@ -28,7 +28,7 @@ constexpr std::array<std::string_view, 81> engine_keys = {
 // //SUBMODEL, //ENDSUB, /KEY, #enddata).
 constexpr std::array<std::string_view, 4> reader_keywords = {"SUBMODEL", "ENDSUB", "KEY", "ENDDATA"};
 
-std::size_t count_segments(std::string_view prefix) {
+std::size_t count_name_segments(std::string_view prefix) {
     return static_cast<std::size_t>(std::count(prefix.begin(), prefix.end(), '/'));
 }
 
@@ -70,7 +70,7 @@ const KeywordSpec* find_by_characters(std::string_view header, std::size_t* pref
         const std::string_view prefix = header.substr(0, length);
         if (prefix.back() == '/') continue;
         if (const KeywordSpec* k = generated_named(prefix)) {
-            if (prefix_segments) *prefix_segments = count_segments(prefix);
+            if (prefix_segments) *prefix_segments = count_name_segments(prefix);
             return k;
         }
     }
@@ -83,7 +83,7 @@ const KeywordSpec* find_generated(std::string_view header, std::size_t* prefix_s
     std::string_view prefix = header;
     while (!prefix.empty()) {
         if (const KeywordSpec* k = generated_named(prefix)) {
-            if (prefix_segments) *prefix_segments = count_segments(prefix);
+            if (prefix_segments) *prefix_segments = count_name_segments(prefix);
             return k;
         }
         const std::size_t slash = prefix.rfind('/');
