@@ -1,6 +1,7 @@
 #include "grammar/shifted_line.hpp"
 
 #include <algorithm>
+#include <array>
 
 #include "grammar/value.hpp"
 #include "text/line_rewrite.hpp"
@@ -36,15 +37,17 @@ bool aligned(const std::vector<LineToken>& tokens, std::span<const FixedField> s
 bool header_aligned(std::string_view header, std::span<const FixedField> slots, std::size_t fields) {
     const std::size_t marker = header.substr(0, 2) == "$#" ? 2 : header.substr(0, 1) == "#" ? 1 : 0;
     if (marker == 0) return false;
-    std::string names(header);
-    for (std::size_t i = 0; i < marker; ++i) names[i] = ' ';
-    const auto tokens = line_tokens(names);
-    if (tokens.size() < 2) return false;
-    return std::all_of(tokens.begin(), tokens.end(), [&](const LineToken& t) {
-        for (std::size_t s = 0; s < slots.size() && s < fields; ++s)
-            if (slot_end(slots[s]) == t.end) return true;
-        return false;
+    std::size_t names = 0;
+    bool all_at_ends = true;
+    for_each_token(header.substr(marker), [&](const LineToken& t) {
+        ++names;
+        const std::size_t end = marker + t.end;  // a column of the header line
+        all_at_ends = false;
+        for (std::size_t s = 0; s < slots.size() && s < fields && !all_at_ends; ++s)
+            all_at_ends = slot_end(slots[s]) == end;
+        return all_at_ends;
     });
+    return all_at_ends && names >= 2;
 }
 
 std::string_view shifted_field_text(std::string_view text, const FixedField& f) {
@@ -94,9 +97,10 @@ std::vector<FixedField> all_8_wide(std::span<const FixedField> standard) {
 // `text` with the columns of its text fields, moved `shift` right, blanked: a text value's own alignment
 // (LS-PrePost writes *SET_NODE_LIST's SOLVER `MECH` left-aligned, glued to DA4's `0.0`) is evidence
 // neither for nor against a shift; the numbers decide.
-std::string without_text_fields(std::string_view text, std::span<const FixedField> slots,
-                                std::span<const FieldType> types, int shift) {
-    std::string out(text);
+// Into `out`, reusing its capacity (a line is tried at up to 9 shifts).
+void without_text_fields(std::string_view text, std::span<const FixedField> slots, std::span<const FieldType> types,
+                         int shift, std::string& out) {
+    out.assign(text);
     for (std::size_t i = 0; i < slots.size() && i < types.size(); ++i) {
         if (types[i] != FieldType::Text) continue;
         const std::ptrdiff_t from = std::max<std::ptrdiff_t>(0, static_cast<std::ptrdiff_t>(slots[i].start) + shift);
@@ -104,7 +108,6 @@ std::string without_text_fields(std::string_view text, std::span<const FixedFiel
         for (std::ptrdiff_t c = from; c < to && c < static_cast<std::ptrdiff_t>(out.size()); ++c)
             out[static_cast<std::size_t>(c)] = ' ';
     }
-    return out;
 }
 
 // Every token placed in an integer field is written as an integer (or a parameter). A shift that would
@@ -169,7 +172,8 @@ std::optional<LineShift> find_shift(std::string_view text, std::string_view head
                                     std::span<const FieldType> types) {
     if (!cuttable(text)) return std::nullopt;
     // Judged at each shift on the numbers alone: the text fields' columns, moved as far, are blanked.
-    std::string numbers = without_text_fields(text, slots, types, 0);
+    std::string numbers;
+    without_text_fields(text, slots, types, 0, numbers);
     std::vector<LineToken> tokens = line_tokens(numbers);
     if (tokens.size() < 2) return std::nullopt;  // one value shows no consistent shift
     const bool by_header = header_aligned(header, slots, types.size());
@@ -181,8 +185,12 @@ std::optional<LineShift> find_shift(std::string_view text, std::string_view head
     for (int n = -max_shift; n <= max_shift; ++n) {
         if (n == 0) continue;
         if (text_fields) {
-            numbers = without_text_fields(text, slots, types, n);
-            tokens = line_tokens(numbers);
+            without_text_fields(text, slots, types, n, numbers);
+            tokens.clear();
+            for_each_token(numbers, [&](const LineToken& t) {
+                tokens.push_back(t);
+                return true;
+            });
         }
         if (tokens.size() < 2 || !place_tokens(numbers, tokens, slots, types, n)) continue;
         if (!integers_written_as_integers(numbers, tokens, types)) continue;
@@ -246,15 +254,20 @@ std::optional<WrittenWidths> find_written_widths(std::string_view text, const ke
     if (!cuttable(text, card)) return std::nullopt;
     std::vector<LineToken> tokens = line_tokens(text);
     if (tokens.size() < 2) return std::nullopt;
-    const std::vector<FixedField> read = keywords::layout(card, format);
+    // The layouts in the three formats (the one read among them), then 8-column variants of the standard one.
+    constexpr CardFormat formats[] = {CardFormat::Standard, CardFormat::I10, CardFormat::Long};
+    std::array<std::vector<FixedField>, 5> candidates;
+    const std::size_t read_at =
+        static_cast<std::size_t>(std::find(std::begin(formats), std::end(formats), format) - std::begin(formats));
+    candidates[read_at] = keywords::layout(card, format);
+    const std::vector<FixedField>& read = candidates[read_at];
     const auto types = field_types(card);
     if (place_tokens(text, tokens, read, types, 0)) return std::nullopt;
-    std::vector<std::vector<FixedField>> candidates;
-    const std::vector<FixedField> standard = keywords::layout(card, CardFormat::Standard);
-    for (CardFormat f : {CardFormat::Standard, CardFormat::I10, CardFormat::Long})
-        candidates.push_back(f == CardFormat::Standard ? standard : keywords::layout(card, f));
-    candidates.push_back(narrowed_to_8(standard));
-    candidates.push_back(all_8_wide(standard));
+    for (std::size_t i = 0; i < std::size(formats); ++i)
+        if (i != read_at) candidates[i] = keywords::layout(card, formats[i]);
+    const std::vector<FixedField>& standard = candidates[0];
+    candidates[3] = narrowed_to_8(standard);
+    candidates[4] = all_8_wide(standard);
     std::optional<WrittenWidths> found;
     for (std::size_t i = 0; i < candidates.size(); ++i) {
         const auto& c = candidates[i];

@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <fmt/format.h>
+#include <map>
 #include <optional>
 
 #include "grammar/number_cast.hpp"
@@ -72,18 +74,35 @@ void CardDecoder::report(const char* code, diag::Severity s, std::string message
     out_.push_back(diag::Diagnostic{code, s, std::move(message), span, {}});
 }
 
-const CardDecoder::Layout& CardDecoder::layout_of(const keywords::CardSpec& card, grammar::CardFormat format) {
-    if (!layouts_.empty() && layouts_[last_layout_].card == &card && layouts_[last_layout_].format == format)
-        return layouts_[last_layout_];  // repeated cards: the same layout line after line
-    for (const Layout& l : layouts_)
-        if (l.card == &card && l.format == format) {
-            last_layout_ = static_cast<std::size_t>(&l - layouts_.data());
-            return l;
-        }
-    Layout l;
-    l.card = &card;
-    l.format = format;
+namespace {
+
+// What a card's layout is worked out from, to tell that the card at a cached address is still the same.
+struct LayoutSource {
+    std::uint16_t column = 0, width = 0;
+    FieldType type = FieldType::Unused;
+    bool operator==(const LayoutSource&) const = default;
+};
+
+struct CachedLayout {
+    CardLayout layout;
+    std::vector<LayoutSource> fields;
+    std::uint16_t line_width = 0;
+};
+
+bool same_card(const CachedLayout& cached, const keywords::CardSpec& card) {
+    return cached.line_width == card.line_width &&
+           std::equal(cached.fields.begin(), cached.fields.end(), card.fields.begin(), card.fields.end(),
+                      [](const LayoutSource& s, const keywords::FieldSpec& f) {
+                          return s == LayoutSource{f.column, f.width, f.type};
+                      }) &&
+           cached.layout.title_card ==
+               (cached.layout.text_card && card.fields.size() == 1 && keywords::is_title_field(card.fields[0].name));
+}
+
+void lay_out(const keywords::CardSpec& card, grammar::CardFormat format, CachedLayout& c) {
+    CardLayout& l = c.layout;
     l.positions = keywords::layout(card, format);
+    l.types = grammar::field_types(card);
     l.significant = keywords::significant_width(card, format);
     // A card that starts with a long text field (title, heading) is never in free format.
     l.text_card = !card.fields.empty() && card.fields[0].type == FieldType::Text && card.fields[0].width >= 70;
@@ -93,15 +112,38 @@ const CardDecoder::Layout& CardDecoder::layout_of(const keywords::CardSpec& card
                   return f.type == FieldType::Integer || f.type == FieldType::Real || f.type == FieldType::Label ||
                          f.type == FieldType::Unused;
               });
-    layouts_.push_back(std::move(l));
+    c.fields.clear();
+    for (const keywords::FieldSpec& f : card.fields) c.fields.push_back({f.column, f.width, f.type});
+    c.line_width = card.line_width;
+}
+
+}  // namespace
+
+const CardLayout& card_layout(const keywords::CardSpec& card, grammar::CardFormat format) {
+    // Node-based: an entry never moves. It is replaced only when another card took a dropped card's address.
+    thread_local std::map<std::pair<std::uintptr_t, grammar::CardFormat>, CachedLayout> cache;
+    auto [it, added] = cache.try_emplace({reinterpret_cast<std::uintptr_t>(&card), format});
+    if (added || !same_card(it->second, card)) lay_out(card, format, it->second);
+    return it->second.layout;
+}
+
+const CardLayout& CardDecoder::layout_of(const keywords::CardSpec& card, grammar::CardFormat format) {
+    if (!layouts_.empty() && layouts_[last_layout_].card == &card && layouts_[last_layout_].format == format)
+        return *layouts_[last_layout_].layout;  // repeated cards: the same layout line after line
+    for (const Layout& l : layouts_)
+        if (l.card == &card && l.format == format) {
+            last_layout_ = static_cast<std::size_t>(&l - layouts_.data());
+            return *l.layout;
+        }
+    layouts_.push_back({&card, format, &card_layout(card, format)});
     last_layout_ = layouts_.size() - 1;
-    return layouts_.back();
+    return *layouts_.back().layout;
 }
 
 void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& line, const keywords::CardSpec& card,
                          std::vector<FieldValue>& values) {
     const std::size_t first_finding = out_.size();
-    const Layout& layout = layout_of(card, block.format);
+    const CardLayout& layout = layout_of(card, block.format);
     const auto& positions_ = layout.positions;
     std::string_view text = deck_.text(line);
     line_text_ = text;

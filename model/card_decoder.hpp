@@ -38,6 +38,21 @@ inline constexpr double max_exact_integer = 9007199254740992.0;  // 2^53
 bool exceeds_integer_range(double number);                       // |number| > 2^53, or NaN
 std::string integer_range_message(std::string_view field, double number);
 
+// A card's widened columns in a format and what the decoders ask of them. A layout is a fact of the keyword
+// tables, not of a deck: worked out once per thread and kept across decks (the fuzzer, the editor and a check of
+// many decks read deck after deck through the same cards). Kept by the card's address and used only while the
+// card there has the same fields (a card a caller made and dropped lends its layout to no other). The reference
+// stays valid while the card lives.
+struct CardLayout {
+    std::vector<grammar::FixedField> positions;  // keywords::layout(card, format)
+    std::vector<keywords::FieldType> types;      // one per field
+    std::uint32_t significant = 80;              // keywords::significant_width(card, format)
+    bool text_card = false;                      // starts with a long text field: never free format
+    bool title_card = false;                     // a title or heading only: its tail past the last column is cosmetic
+    bool plain = false;                          // standard widths and number fields only: decode_plain may take it
+};
+const CardLayout& card_layout(const keywords::CardSpec& card, grammar::CardFormat format);
+
 class CardDecoder {
 public:
     CardDecoder(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out) : deck_(deck), out_(out) {}
@@ -83,17 +98,13 @@ private:
     bool glued_ = false;
     bool past_fields_ = false;  // the line decode() works on, for the notes that quote it
 
-    // Widened positions of a card in a format, computed once: decoding runs per line.
+    // The layouts this decoder used (card_layout's, looked up once per card: decoding runs per line).
     struct Layout {
         const keywords::CardSpec* card = nullptr;
         grammar::CardFormat format = grammar::CardFormat::Standard;
-        std::vector<grammar::FixedField> positions;
-        std::uint32_t significant = 80;
-        bool text_card = false;
-        bool title_card = false;  // a title or heading only: its tail past the last column is cosmetic
-        bool plain = false;       // standard widths and number fields only: decode_plain may take it
+        const CardLayout* layout = nullptr;
     };
-    const Layout& layout_of(const keywords::CardSpec& card, grammar::CardFormat format);
+    const CardLayout& layout_of(const keywords::CardSpec& card, grammar::CardFormat format);
 
     const grammar::RawDeck& deck_;
     std::vector<diag::Diagnostic>& out_;

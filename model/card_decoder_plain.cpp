@@ -36,7 +36,7 @@ bool in_plain_range(const keywords::FieldSpec& spec, double number) {
 
 bool CardDecoder::decode_plain(const grammar::Block& block, const grammar::CardLine& line,
                                const keywords::CardSpec& card, std::vector<FieldValue>& values) {
-    const Layout& layout = layout_of(card, block.format);
+    const CardLayout& layout = layout_of(card, block.format);
     if (!layout.plain) return false;
     // Free format (a comma), a tab, or text past the significant width: decode() says what.
     const grammar::ScannedLine scanned = grammar::scan_line(deck_, line);

@@ -163,10 +163,9 @@ private:
     std::span<const grammar::FixedField> layout_of(const CardSpec& card, grammar::CardFormat format) {
         if (layout_card_ != &card || layout_format_ != format) {
             layout_card_ = &card, layout_format_ = format;
-            layout_slots_ = keywords::layout(card, format);
-            layout_types_ = grammar::field_types(card);
+            layout_ = &card_layout(card, format);
         }
-        return layout_slots_;
+        return layout_->positions;
     }
 
     // A line from column 1 that is a keyword name without its '*' (only lines starting with a letter are looked up).
@@ -193,11 +192,11 @@ private:
         const auto slots = layout_of(card, block.format);
         // A lone value read as an integer written as a real (DK004) is still lone.
         if (lone_.size() < max_lone_candidates)
-            if (auto lone = grammar::find_lone_shift(text, slots, layout_types_)) {
+            if (auto lone = grammar::find_lone_shift(text, slots, layout_->types)) {
                 lone_.push_back({&block, &line, &card, std::move(*lone), refused});
                 return;
             }
-        if (!grammar::is_free_format(text)) grammar::tally_alignment(text, slots, layout_types_, alignment_);
+        if (!grammar::is_free_format(text)) grammar::tally_alignment(text, slots, layout_->types, alignment_);
     }
 
     // A line that made a finding, or the first line of a card under a `$#` header (one a block for
@@ -392,8 +391,7 @@ private:
     std::vector<LoneCandidate> lone_;
     const CardSpec* layout_card_ = nullptr;
     grammar::CardFormat layout_format_ = grammar::CardFormat::Standard;
-    std::vector<grammar::FixedField> layout_slots_;
-    std::vector<FieldType> layout_types_;
+    const CardLayout* layout_ = nullptr;
 };
 
 // A keyword that may appear once, where it appeared and in which case ("": every case).

@@ -9,6 +9,7 @@
 
 #include "grammar/fields.hpp"
 #include "grammar/shifted_line.hpp"
+#include "model/card_decoder.hpp"
 #include "text/line_rewrite.hpp"
 
 namespace sphdeck::model {
@@ -97,11 +98,14 @@ std::optional<diag::Diagnostic> straddling_value(const grammar::RawDeck& deck, c
     return d;
 }
 
-// `slots`: the layout of the line's card in the block's format.
+// `layout`: the line's card's in the block's format.
 std::optional<diag::Diagnostic> shifted_line(const grammar::RawDeck& deck, const grammar::Block& block,
-                                             const SuspectLine& s, std::span<const grammar::FixedField> slots) {
+                                             const SuspectLine& s, const CardLayout& layout) {
     const std::string_view text = deck.text(*s.line);
-    auto shift = grammar::find_shift(text, header_above(deck, *s.line), slots, *s.card);
+    const std::span<const grammar::FixedField> slots = layout.positions;
+    // A card that starts with a long text field (a title) is never looked at: its blanks are text.
+    auto shift = layout.text_card ? std::optional<grammar::LineShift>{}
+                                  : grammar::find_shift(text, header_above(deck, *s.line), slots, layout.types);
     if (!shift) return straddling_value(deck, block, s, text, slots);
     const int n = std::abs(shift->columns);
     const char* side = shift->columns > 0 ? "right" : "left";
@@ -247,10 +251,10 @@ void diagnose_shifts(const grammar::RawDeck& deck, const grammar::Block& block, 
     }();
     if (!widths) {
         const keywords::CardSpec* laid_out = nullptr;  // the suspects of a block mostly share a card
-        std::vector<grammar::FixedField> slots;
+        const CardLayout* layout = nullptr;
         for (const SuspectLine& s : suspects) {
-            if (s.card != laid_out) slots = keywords::layout(*s.card, block.format), laid_out = s.card;
-            if (auto d = shifted_line(deck, block, s, slots)) causes.push_back(std::move(*d));
+            if (s.card != laid_out) layout = &card_layout(*s.card, block.format), laid_out = s.card;
+            if (auto d = shifted_line(deck, block, s, *layout)) causes.push_back(std::move(*d));
         }
     }
     if (causes.empty()) return;

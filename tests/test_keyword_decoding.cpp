@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -314,5 +315,44 @@ TEST_CASE("keyword decoding: an explicit 0 means the default where the manual sa
         }
     }
     CHECK(checked > 0);
+}
+
+// card_layout keeps layouts across decks by the card's address: a card made where a dropped one lay (a test's, a
+// caller's) must get its own layout, not the dropped card's.
+TEST_CASE("card_layout: a card made at a dropped card's address gets its own layout") {
+    const auto same_positions = [](const std::vector<grammar::FixedField>& a,
+                                   const std::vector<grammar::FixedField>& b) {
+        return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                          [](const auto& x, const auto& y) { return x.start == y.start && x.width == y.width; });
+    };
+    std::optional<CardSpec> card;
+    card.emplace(CardSpec{.fields = {{.name = "TITLE", .column = 1, .width = 80, .type = FieldType::Text}}});
+    const CardSpec* first = &*card;
+    const model::CardLayout& title = model::card_layout(*card, CardFormat::Standard);
+    CHECK(title.title_card);
+    CHECK(title.text_card);
+    // The same columns, widths and types under a name that is no title: the cached layout no longer holds.
+    card.reset();
+    card.emplace(CardSpec{.fields = {{.name = "EXPR", .column = 1, .width = 80, .type = FieldType::Text}}});
+    REQUIRE(&*card == first);
+    CHECK_FALSE(model::card_layout(*card, CardFormat::Standard).title_card);
+    // Other fields at the same address, in every format: the layout of the card there now.
+    card.reset();
+    card.emplace(CardSpec{.fields = {{.name = "NID", .column = 1, .width = 8, .type = FieldType::Integer},
+                                     {.name = "X", .column = 9, .width = 16, .type = FieldType::Real}}});
+    REQUIRE(&*card == first);
+    for (CardFormat format : {CardFormat::Standard, CardFormat::I10, CardFormat::Long}) {
+        CAPTURE(grammar::to_string(format));
+        const model::CardLayout& l = model::card_layout(*card, format);
+        CHECK(same_positions(l.positions, keywords::layout(*card, format)));
+        CHECK(l.significant == keywords::significant_width(*card, format));
+        CHECK(l.types == std::vector<FieldType>{FieldType::Integer, FieldType::Real});
+        CHECK_FALSE(l.text_card);
+        CHECK(l.plain == (format == CardFormat::Standard));
+    }
+    // A table's card: the same answer, asked again, from the same entry.
+    const CardSpec& node = keywords::find_keyword("*NODE")->schema->cards.front();
+    CHECK(&model::card_layout(node, CardFormat::I10) == &model::card_layout(node, CardFormat::I10));
+    CHECK(same_positions(model::card_layout(node, CardFormat::I10).positions, keywords::layout(node, CardFormat::I10)));
 }
 }  // namespace test_keyword_decoding_cpp
