@@ -7,7 +7,7 @@
 namespace sphdeck::lsp {
 namespace {
 // The byte offset in `text` of an LSP position.
-std::size_t offset_of(std::string_view text, TextPosition position) {
+std::size_t byte_offset_of(std::string_view text, TextPosition position) {
     std::size_t line_start = 0;
     for (std::uint32_t line = 0; line < position.line; ++line) {
         const void* newline = std::memchr(text.data() + line_start, '\n', text.size() - line_start);
@@ -44,7 +44,7 @@ std::optional<std::string> changed_text(std::string_view text, const nlohmann::j
     if (!event) return std::nullopt;
     const std::string& inserted = *event->text;
     if (event->whole) return inserted;
-    std::size_t from = offset_of(text, event->start), to = offset_of(text, event->end);
+    std::size_t from = byte_offset_of(text, event->start), to = byte_offset_of(text, event->end);
     if (from > to) std::swap(from, to);
     // One pass: the text before, the new text, the text after.
     std::string out;
