@@ -68,6 +68,20 @@ std::string describe(const engine::CheckResult& r) {
 
 }  // namespace
 
+// The decks checked in one run that shares `share`, as the command line checks several: each prints what
+// it printed alone (`alone`).
+void check_in_one_run(const std::vector<std::string>& decks, const std::vector<std::string>& alone,
+                      engine::RunShare& share) {
+    grammar::FileCache cache;
+    engine::CheckOptions options;
+    options.reader.cache = &cache;
+    options.share = &share;
+    for (std::size_t i = 0; i < decks.size(); ++i) {
+        CAPTURE(decks[i]);
+        CHECK(describe(engine::check_file(decks[i], options)) == alone[i]);
+    }
+}
+
 TEST_CASE("shared decks: load cases over one mesh give the findings of each checked alone") {
     test::TempDir dir;
     dir.write("mesh.k", mesh("1.0e-6"));
@@ -84,15 +98,8 @@ TEST_CASE("shared decks: load cases over one mesh give the findings of each chec
     CHECK(alone[2] != alone[0]);
     CHECK(alone[2].find("REF") != std::string::npos);  // the particles of the undefined part 2
 
-    grammar::FileCache cache;
     engine::RunShare share;
-    engine::CheckOptions options;
-    options.reader.cache = &cache;
-    options.share = &share;
-    for (std::size_t i = 0; i < decks.size(); ++i) {
-        CAPTURE(decks[i]);
-        CHECK(describe(engine::check_file(decks[i], options)) == alone[i]);
-    }
+    check_in_one_run(decks, alone, share);
     const model::SharedBulkBlocks::Counters counters = share.bulk.counters();
     CHECK(counters.kept == 2);            // mesh.k's *NODE and *ELEMENT_SPH; mass.k's particles name &mass
     CHECK(counters.shared == 5);          // b and c take both, e its nodes
@@ -108,15 +115,8 @@ TEST_CASE("shared decks: a block read in another card format is not taken from t
     };
     std::vector<std::string> alone;
     for (const std::string& path : decks) alone.push_back(describe(engine::check_file(path)));
-    grammar::FileCache cache;
     engine::RunShare share;
-    engine::CheckOptions options;
-    options.reader.cache = &cache;
-    options.share = &share;
-    for (std::size_t i = 0; i < decks.size(); ++i) {
-        CAPTURE(decks[i]);
-        CHECK(describe(engine::check_file(decks[i], options)) == alone[i]);
-    }
+    check_in_one_run(decks, alone, share);
     CHECK(share.bulk.counters().shared == 0);
 }
 
