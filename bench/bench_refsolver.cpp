@@ -15,7 +15,8 @@
 //   one rebuild in steps = mean rebuild time / mean time of a step without one.
 // Medians are printed, with the load average (the machine may be shared).
 //   bench_refsolver [steps = 40] [repetitions = 3] [spacing = 0.01]
-// BENCH_THREADS=N measures N threads only, without the loaded-machine part. BENCH_SCALAR=1 runs the
+// BENCH_THREADS=N measures N threads only, without the loaded-machine part; BENCH_THREADS="1 2 4 8 16"
+// those counts, with each one's parallel efficiency and the split of a step by phase. BENCH_SCALAR=1 runs the
 // scalar pair loop, BENCH_AVX2=1 the AVX2 one where AVX-512 runs (for comparison).
 // Goal (issue 7): >= 1,000,000 particle updates/s on 2 threads, rebuild <= 5% of a step.
 // Loaded machine (issue 18): a busy loop (a child process pinned to the last allowed core) takes one
@@ -105,6 +106,8 @@ std::string load_average() {
 struct Repetition {
     double rate = 0, cpu_rate = 0, share = 0, rebuilds = 0, rebuild_in_steps = 0;
     int threads = 0;  // of the last step
+    // Milliseconds a step (wall clock), by phase (refsolver::Timings): the profile of a thread count.
+    double step_ms = 0, rates_ms = 0, merge_ms = 0, neighbours_ms = 0, skin_ms = 0, grad_h_ms = 0;
 };
 
 // CPU time of the process (all threads): on a shared machine, updates per CPU second of one
@@ -149,6 +152,10 @@ Repetition measure(const model::Model& model, int threads, int warm_up, int step
     r.rebuilds = rebuilds;
     r.threads = sim.threads();
     r.rebuild_in_steps = rebuilds > 0 ? (rebuilding / rebuilds) / ((total - rebuilding) / steps) : 0.0;
+    r.step_ms = 1e3 * total / steps, r.neighbours_ms = 1e3 * rebuilding / steps;
+    r.rates_ms = 1e3 * (after.rates - before.rates) / steps, r.merge_ms = 1e3 * (after.merge - before.merge) / steps;
+    r.skin_ms = 1e3 * (after.skin_check - before.skin_check) / steps;
+    r.grad_h_ms = 1e3 * (after.grad_h - before.grad_h) / steps;
     return r;
 }
 
@@ -197,17 +204,34 @@ int main(int argc, char** argv) {
         load_average());
     bool met = true;
     double alone_one_thread = 0;
-    // BENCH_THREADS=1 (or 2): that thread count only, for profiling and quick comparisons.
-    const char* only = std::getenv("BENCH_THREADS");
+    // BENCH_THREADS=1 (or 2): that thread count only, for profiling and quick comparisons;
+    // BENCH_THREADS="1 2 4 8 16": a scaling run (each count's efficiency against 1 thread, and the
+    // split of a step by phase).
     std::vector<int> thread_counts{1, 2};
-    if (only && std::atoi(only) > 0) thread_counts = {std::atoi(only)};
+    if (const char* only = std::getenv("BENCH_THREADS")) {
+        std::vector<int> asked;
+        for (const char* c = only; *c;) {
+            char* end = nullptr;
+            const long t = std::strtol(c, &end, 10);
+            if (end == c) {
+                ++c;
+                continue;
+            }
+            if (t > 0) asked.push_back(static_cast<int>(t));
+            c = end;
+        }
+        if (!asked.empty()) thread_counts = asked;
+    }
     for (int threads : thread_counts) {
-        std::vector<double> rate, cpu_rate, share, rebuilds, rebuild_in_steps;
+        std::vector<double> rate, cpu_rate, share, rebuilds, rebuild_in_steps, step_ms, rates_ms, merge_ms,
+            neighbours_ms, skin_ms, grad_h_ms;
         for (int r = 0; r < repetitions; ++r) {
             const Repetition m = measure(deck.model, threads, warm_up, steps);
             rate.push_back(m.rate), cpu_rate.push_back(m.cpu_rate), share.push_back(m.share);
             rebuilds.push_back(m.rebuilds);
             rebuild_in_steps.push_back(m.rebuild_in_steps);
+            step_ms.push_back(m.step_ms), rates_ms.push_back(m.rates_ms), merge_ms.push_back(m.merge_ms);
+            neighbours_ms.push_back(m.neighbours_ms), skin_ms.push_back(m.skin_ms), grad_h_ms.push_back(m.grad_h_ms);
         }
         const double r = median(rate), s = median(share);
         const double baseline = threads == 1 ? baseline_one_thread : baseline_two_threads;
@@ -219,6 +243,14 @@ int main(int argc, char** argv) {
             median(rebuild_in_steps));
         if (threads == 2) met = r >= 1e6 && s <= 0.05;
         if (threads == 1) alone_one_thread = r;
+        const double rates = median(rates_ms), merge = median(merge_ms), neighbours = median(neighbours_ms),
+                     skin = median(skin_ms), grad_h = median(grad_h_ms), step = median(step_ms);
+        fmt::print(
+            "  a step {:.3f} ms: pair loop {:.3f} (of it adding received sums {:.3f}), grad-h {:.3f}, neighbour "
+            "lists {:.3f}, rebuild test {:.3f}, the rest (integration, ghosts, EOS, time step) {:.3f}\n",
+            step, rates, merge, grad_h, neighbours, skin, step - rates - grad_h - neighbours - skin);
+        if (alone_one_thread > 0 && threads > 1)
+            fmt::print("  parallel efficiency against 1 thread: {:.0f}%\n", 100 * r / (threads * alone_one_thread));
         fmt::print(
             "  per core: {:.3g} updates/s, x{:.2f} the scalar loop on the EPYC VM ({:.3g} per core, 1 thread; "
             "goal x2)\n",

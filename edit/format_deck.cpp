@@ -112,9 +112,18 @@ bool casts_doubt(const diag::Diagnostic& d) {
 FormatResult format_deck(const grammar::RawDeck& deck, const std::vector<diag::Diagnostic>& findings,
                          const std::vector<grammar::FileId>& files, const FormatOptions& options) {
     detail::FormatScope scope{deck, options, {files.begin(), files.end()}, {}};
-    for (const diag::Diagnostic& d : findings)
-        if (d.span.valid() && casts_doubt(d) && scope.formats(d.span.file))
-            scope.doubtful.emplace(detail::line_key(d.span.file, d.span.line), d.code);
+    // A finding's notes name more lines of the same doubt (a card's other non-numbers under one error):
+    // they are kept too, else moving them changes which line the finding lands on, and a second
+    // format moves another (fuzz format_dyna, 29 Nov 2026).
+    const auto doubt = [&](const text::Span& span, const std::string& code) {
+        if (span.valid() && scope.formats(span.file))
+            scope.doubtful.emplace(detail::line_key(span.file, span.line), code);
+    };
+    for (const diag::Diagnostic& d : findings) {
+        if (!d.span.valid() || !casts_doubt(d)) continue;
+        doubt(d.span, d.code);
+        for (const diag::Note& note : d.notes) doubt(note.span, d.code);
+    }
 
     detail::LineChanges changes;
     if (grammar::format_of(deck) == grammar::DeckFormat::Radioss)

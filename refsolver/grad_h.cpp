@@ -7,7 +7,9 @@ namespace sphdeck::refsolver {
 void compute_grad_h(Particles& s, const NeighbourList& list, const CubicSpline& kernel, bool follows_density,
                     int threads) {
     const std::size_t real = s.real;
-#pragma omp parallel for schedule(static) num_threads(threads)
+    // Dynamic: only thinning particles walk their lists, and in cell order they come in regions (a
+    // static split left most threads waiting for the one holding a free surface).
+#pragma omp parallel for schedule(dynamic, 512) num_threads(threads)
     for (std::size_t i = 0; i < real; ++i) {
         const double hi = s.h[i];
         // s.drho: the rate of the last evaluation (grad_h.hpp: thinning particles only).
@@ -28,6 +30,7 @@ void compute_grad_h(Particles& s, const NeighbourList& list, const CubicSpline& 
         s.omega[i] = applied_omega(grad_h_omega(hi, s.rho[i], s.m[i], sum, kernel.dimension), s.drho[i]);
     }
     const std::size_t ghosts = s.ghosts();
+#pragma omp parallel for schedule(static) num_threads(threads)
     for (std::size_t k = 0; k < ghosts; ++k) s.omega[real + k] = s.omega[s.ghost_source[k]];
 }
 

@@ -81,6 +81,7 @@ std::vector<std::size_t> split_cells(const NeighbourGrid& grid, std::size_t poin
 
 void NeighbourList::build(Particles& s, double search_radius, int threads, bool full) {
     radius = search_radius;
+    ++builds;
     const std::size_t real = s.real, ghosts = s.ghosts();
     const int team = threads > 0 ? threads : omp_get_max_threads();
 

@@ -38,6 +38,7 @@ struct NeighbourList {
     // (`full` in build: FORM 1's renormalisation.cpp reads them).
     std::vector<std::uint32_t> offsets, neighbours;
     double radius = 0;
+    std::uint64_t builds = 0;  // counts build(): what is derived from the lists can tell they changed
 
     // Sorts the real particles of `s` into cell order (ghosts must be built: their sources are
     // renumbered) and lists the pairs within `radius` of each active real particle; inactive

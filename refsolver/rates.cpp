@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <omp.h>
 
@@ -124,16 +125,11 @@ inline void add_stress(RateSums& sums, GradientSums& gradient, const StressTerms
     return n;
 }
 
-// The SIMD rows' view of the pair loop's input and output (pair_rows.hpp), per-thread scratch
-// sized for the longest row (the threads set their own pointers).
+// The SIMD rows' view of the pair loop's input and output (pair_rows.hpp); the threads set their
+// own scratch pointers.
 template <int Dimension, bool Renormalise>
 PairRows pair_rows_view(Particles& s, const NeighbourList& list, const RateParameters& rp, RateScratch& scratch) {
-    PairRows v;
-    std::uint32_t longest = 0;
-    for (std::size_t i = 0; i < s.real; ++i)
-        longest = std::max(longest, list.forward_offsets[i + 1] - list.forward_offsets[i] + list.ghost_offsets[i + 1] -
-                                        list.ghost_offsets[i]);
-    v.stride = longest + 16;
+    PairRows v;  // stride and inside: each thread's own (pair_loop)
     v.records = scratch.records.data(), v.positions = reinterpret_cast<const double*>(scratch.positions.data());
     v.positions_f = reinterpret_cast<const float*>(scratch.positions_f.data()), v.margin = scratch.margin;
     v.interacting = s.interacting.data();
@@ -145,6 +141,34 @@ PairRows pair_rows_view(Particles& s, const NeighbourList& list, const RateParam
     v.dimension = Dimension, v.renormalise = Renormalise;
     v.ax = s.ax.data(), v.ay = s.ay.data(), v.az = s.az.data(), v.drho = s.drho.data(), v.de = s.de.data();
     return v;
+}
+
+// One block of contiguous real particles per thread, of about equal work: the partners listed
+// (forward and ghost: the offsets are their prefix sums) plus a row's own cost. Contiguous in cell
+// order, a block's forward partners lie just after it, so each thread writes its received sums
+// into a narrow band (RateScratch::reach) instead of across every particle, and the merge reads
+// those bands only: with a team of 16 that is the difference between a few and 16 passes over
+// the particles' sums.
+void split_pair_blocks(const NeighbourList& list, std::size_t real, int team, std::vector<std::size_t>& begin) {
+    constexpr std::uint64_t row_cost = 8;  // a row's fixed cost, in listed partners
+    const auto work_before = [&](std::size_t i) {
+        return std::uint64_t{list.forward_offsets[i]} + list.ghost_offsets[i] + row_cost * i;
+    };
+    const std::uint64_t total = work_before(real);
+    begin.assign(static_cast<std::size_t>(team) + 1, real);
+    begin[0] = 0;
+    for (int t = 1; t < team; ++t) {
+        const std::uint64_t goal = total * static_cast<std::uint64_t>(t) / static_cast<std::uint64_t>(team);
+        std::size_t low = begin[static_cast<std::size_t>(t) - 1], high = real;  // first i with work_before(i) >= goal
+        while (low < high) {
+            const std::size_t middle = low + (high - low) / 2;
+            if (work_before(middle) < goal)
+                low = middle + 1;
+            else
+                high = middle;
+        }
+        begin[static_cast<std::size_t>(t)] = low;
+    }
 }
 
 template <int Dimension, bool Renormalise, bool Solid>
@@ -171,72 +195,101 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
     // then has nothing to do.
     const PairRowsPath fast = !Solid && rp.simd && !rp.viscosity_switch ? best_pair_rows(rp.avx512) : PairRowsPath{};
     const PairRows view = fast.run ? pair_rows_view<Dimension, Renormalise>(s, list, rp, scratch) : PairRows{};
-    const std::size_t scalar_end = fast.run ? 0 : real;
+
+    const RateScratch::BlocksKey key{&list, list.builds, static_cast<std::size_t>(team), real, list.pairs()};
+    if (!(scratch.blocks_of == key)) {
+        split_pair_blocks(list, real, team, scratch.block_begin);
+        scratch.reach.assign(static_cast<std::size_t>(team), 0);
+        scratch.longest.assign(static_cast<std::size_t>(team), 0);
+#pragma omp parallel for schedule(static, 1) num_threads(team)
+        for (std::size_t b = 0; b < static_cast<std::size_t>(team); ++b) {
+            // The block's longest row (the size of `inside`) and the highest partner it writes to.
+            const std::size_t first = scratch.block_begin[b], last = scratch.block_begin[b + 1];
+            std::uint32_t longest = 0;
+            std::size_t top = first;
+            for (std::size_t i = first; i < last; ++i) {
+                const std::uint32_t from = list.forward_offsets[i], to = list.forward_offsets[i + 1];
+                longest = std::max(longest, to - from + list.ghost_offsets[i + 1] - list.ghost_offsets[i]);
+                for (std::uint32_t k = from; k < to; ++k) top = std::max<std::size_t>(top, list.forward[k]);
+            }
+            scratch.reach[b] = top, scratch.longest[b] = longest;
+        }
+        scratch.blocks_of = key;
+    }
+    std::chrono::steady_clock::time_point pairs_done;
 
 #pragma omp parallel num_threads(team)
     {
+        // Block b's sums go to received copy b; a thread runs blocks t, t + threads... (one each
+        // unless the runtime gave fewer threads than asked).
         const auto t = static_cast<std::size_t>(omp_get_thread_num());
-        RateSums* received = scratch.received.data() + t * real;
-        GradientSums* received_gradient = Solid ? scratch.received_gradient.data() + t * real : nullptr;
+        const auto threads = static_cast<std::size_t>(omp_get_num_threads());
         std::vector<std::uint32_t>& inside = scratch.inside[t];
-        if (fast.run) {
-            PairRows mine = view;
-            if (inside.size() < view.stride) inside.resize(view.stride);
-            mine.inside = inside.data();
-            mine.received = received->data();  // Sums: 5 contiguous doubles per particle
-            // Chunks of 256 particles dealt round-robin: the same schedule as the scalar loop's.
-#pragma omp for schedule(static, 1)
-            for (std::size_t first = 0; first < real; first += 256) fast.run(mine, first, std::min(real, first + 256));
-        }
-        // schedule(static, chunk): a fixed assignment of particles to threads, so the sums are
-        // added in the same order at every run with this thread count.
-#pragma omp for schedule(static, 256)
-        for (std::size_t i = 0; i < scalar_end; ++i) {
-            if (!interacting[i]) continue;
-            const PackedParticle& me = nb[i];
-            const Correction& bi = correction[i];
-            RateSums own{rp.body[0], rp.body[1], rp.body[2], 0, 0};
-            GradientSums own_gradient{};
-            const std::size_t pairs = within_support(me, nb, list.forward.data(), list.forward_offsets[i],
-                                                     list.forward_offsets[i + 1], inside);
-            for (std::size_t k = 0; k < pairs; ++k) {
-                const std::uint32_t j = inside[k];
-                const PackedParticle& o = nb[j];
-                const double dx = me.x - o.x, dy = me.y - o.y, dz = me.z - o.z;
-                const PairTerms terms =
-                    pair_terms<Dimension, Renormalise>(me, o, bi, correction[j], dx, dy, dz,
-                                                       dx * dx + dy * dy + dz * dz, norm, viscosity);
-                add_to<Renormalise>(own, terms, me, o);
-                add_reverse<Renormalise>(received[j], terms, me, o);
-                if constexpr (Solid) {
-                    const StressTerms st = stress_terms(stress[i], stress[j], me, o, terms, dx, dy, dz);
-                    add_stress(own, own_gradient, st, o.m, o.volume, 1.0);
-                    add_stress(received[j], received_gradient[j], st, me.m, me.volume, -1.0);
+        for (std::size_t b = t; b < static_cast<std::size_t>(team); b += threads) {
+            const std::size_t first = scratch.block_begin[b], last = scratch.block_begin[b + 1];
+            RateSums* received = scratch.received.data() + b * real;
+            GradientSums* received_gradient = Solid ? scratch.received_gradient.data() + b * real : nullptr;
+            if (fast.run) {
+                PairRows mine = view;
+                mine.stride = scratch.longest[b] + 16;
+                if (inside.size() < mine.stride) inside.resize(mine.stride);
+                mine.inside = inside.data();
+                mine.received = received->data();  // Sums: 5 contiguous doubles per particle
+                for (std::size_t from = first; from < last; from += 256)
+                    fast.run(mine, from, std::min(last, from + 256));
+                continue;
+            }
+            for (std::size_t i = first; i < last; ++i) {
+                if (!interacting[i]) continue;
+                const PackedParticle& me = nb[i];
+                const Correction& bi = correction[i];
+                RateSums own{rp.body[0], rp.body[1], rp.body[2], 0, 0};
+                GradientSums own_gradient{};
+                const std::size_t pairs = within_support(me, nb, list.forward.data(), list.forward_offsets[i],
+                                                         list.forward_offsets[i + 1], inside);
+                for (std::size_t k = 0; k < pairs; ++k) {
+                    const std::uint32_t j = inside[k];
+                    const PackedParticle& o = nb[j];
+                    const double dx = me.x - o.x, dy = me.y - o.y, dz = me.z - o.z;
+                    const PairTerms terms =
+                        pair_terms<Dimension, Renormalise>(me, o, bi, correction[j], dx, dy, dz,
+                                                           dx * dx + dy * dy + dz * dz, norm, viscosity);
+                    add_to<Renormalise>(own, terms, me, o);
+                    add_reverse<Renormalise>(received[j], terms, me, o);
+                    if constexpr (Solid) {
+                        const StressTerms st = stress_terms(stress[i], stress[j], me, o, terms, dx, dy, dz);
+                        add_stress(own, own_gradient, st, o.m, o.volume, 1.0);
+                        add_stress(received[j], received_gradient[j], st, me.m, me.volume, -1.0);
+                    }
                 }
+                // Ghosts act on real particles only: one-sided.
+                const std::size_t images =
+                    within_support(me, nb, list.ghost.data(), list.ghost_offsets[i], list.ghost_offsets[i + 1], inside);
+                for (std::size_t k = 0; k < images; ++k) {
+                    const std::uint32_t j = inside[k];
+                    const PackedParticle& o = nb[j];
+                    const double dx = me.x - o.x, dy = me.y - o.y, dz = me.z - o.z;
+                    const PairTerms terms =
+                        pair_terms<Dimension, Renormalise>(me, o, bi, correction[j], dx, dy, dz,
+                                                           dx * dx + dy * dy + dz * dz, norm, viscosity);
+                    add_to<Renormalise>(own, terms, me, o);
+                    if constexpr (Solid)
+                        add_stress(own, own_gradient, stress_terms(stress[i], stress[j], me, o, terms, dx, dy, dz), o.m,
+                                   o.volume, 1.0);
+                }
+                s.ax[i] = own[0], s.ay[i] = own[1], s.az[i] = own[2], s.drho[i] = own[3], s.de[i] = own[4];
+                if constexpr (Solid) scratch.gradient[i] = own_gradient;
             }
-            // Ghosts act on real particles only: one-sided.
-            const std::size_t images =
-                within_support(me, nb, list.ghost.data(), list.ghost_offsets[i], list.ghost_offsets[i + 1], inside);
-            for (std::size_t k = 0; k < images; ++k) {
-                const std::uint32_t j = inside[k];
-                const PackedParticle& o = nb[j];
-                const double dx = me.x - o.x, dy = me.y - o.y, dz = me.z - o.z;
-                const PairTerms terms =
-                    pair_terms<Dimension, Renormalise>(me, o, bi, correction[j], dx, dy, dz,
-                                                       dx * dx + dy * dy + dz * dz, norm, viscosity);
-                add_to<Renormalise>(own, terms, me, o);
-                if constexpr (Solid)
-                    add_stress(own, own_gradient, stress_terms(stress[i], stress[j], me, o, terms, dx, dy, dz), o.m,
-                               o.volume, 1.0);
-            }
-            s.ax[i] = own[0], s.ay[i] = own[1], s.az[i] = own[2], s.drho[i] = own[3], s.de[i] = own[4];
-            if constexpr (Solid) scratch.gradient[i] = own_gradient;
         }
-        // Implicit barrier: every pair is done. Add what each particle received, in thread order.
+#pragma omp barrier  // every pair is done: add what each particle received, in thread order
+#pragma omp master
+        pairs_done = std::chrono::steady_clock::now();
 #pragma omp for schedule(static)
         for (std::size_t i = 0; i < real; ++i) {
             for (int u = 0; u < team; ++u) {
-                RateSums& r = scratch.received[static_cast<std::size_t>(u) * real + i];
+                const auto w = static_cast<std::size_t>(u);  // entries outside a block's band stay zero
+                if (i < scratch.block_begin[w] || i > scratch.reach[w]) continue;
+                RateSums& r = scratch.received[w * real + i];
                 s.ax[i] += r[0], s.ay[i] += r[1], s.az[i] += r[2], s.drho[i] += r[3], s.de[i] += r[4];
                 r = RateSums{0, 0, 0, 0, 0};
             }
@@ -244,7 +297,9 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
                 GradientSums& sum = scratch.gradient[i];
                 if (!interacting[i]) sum = GradientSums{};
                 for (int u = 0; u < team; ++u) {
-                    GradientSums& r = scratch.received_gradient[static_cast<std::size_t>(u) * real + i];
+                    const auto w = static_cast<std::size_t>(u);
+                    if (i < scratch.block_begin[w] || i > scratch.reach[w]) continue;
+                    GradientSums& r = scratch.received_gradient[w * real + i];
                     for (int k = 0; k < 18; ++k) sum[k] += r[k];
                     r = GradientSums{};
                 }
@@ -268,11 +323,10 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
             s.dh[i] = smoothing_length_rate(rp.h_rule, Dimension, s.h[i], s.rho[i], s.drho[i]);
         }
     }
+    scratch.merge_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - pairs_done).count();
 }
 
-}  // namespace
-
-void compute_rates(Particles& s, const NeighbourList& list, const RateParameters& parameters, RateScratch& scratch) {
+void evaluate_rates(Particles& s, const NeighbourList& list, const RateParameters& parameters, RateScratch& scratch) {
     // Pack what neighbours are read for, ghosts included; the formulation's two values (continuity.hpp)
     // and V = m / rho once per particle.
     // The SIMD loop reads the same values from two arrays (rates.hpp), the scalar loop from one.
@@ -332,6 +386,14 @@ void compute_rates(Particles& s, const NeighbourList& list, const RateParameters
     else
         two ? pair_loop<2, false, false>(s, list, parameters, scratch)
             : pair_loop<3, false, false>(s, list, parameters, scratch);
+}
+
+}  // namespace
+
+void compute_rates(Particles& s, const NeighbourList& list, const RateParameters& parameters, RateScratch& scratch) {
+    const auto start = std::chrono::steady_clock::now();
+    evaluate_rates(s, list, parameters, scratch);
+    scratch.rates_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace sphdeck::refsolver

@@ -54,11 +54,26 @@ struct RateScratch {
     // Per thread, per real particle: ax ay az drho de received from pairs listed under another
     // particle (no two threads write the same entry; the sums are added in thread order).
     std::vector<std::array<double, 5>> received;
+    // Per block of the pair loop (one a thread): its real particles [block_begin[b], block_begin[b + 1]),
+    // the highest particle its pairs reach and its longest row. Blocks are contiguous in cell order,
+    // so a block's received sums stay within a narrow band: the merge reads only those, not team x
+    // real entries. Derived from the lists: kept until they are rebuilt (`blocks_of`).
+    std::vector<std::size_t> block_begin, reach;
+    std::vector<std::uint32_t> longest;
+    struct BlocksKey {
+        const NeighbourList* list = nullptr;
+        std::uint64_t builds = 0;
+        std::size_t team = 0, real = 0, pairs = 0;
+        bool operator==(const BlocksKey&) const = default;
+    } blocks_of;
     std::vector<std::vector<std::uint32_t>> inside;  // per thread: one particle's pairs within the support
     // Solid decks only: S / rho^2 (real + ghost), and per real particle the P and Q sums of
     // stress.hpp, own and (per thread) received.
     std::vector<SymmetricTensor> stress_over_rho2;
     std::vector<std::array<double, 18>> gradient, received_gradient;
+    // Wall-clock seconds, summed: compute_rates, and of it the adding of the received sums
+    // (Simulation::timings: the benchmark's split of a step).
+    double rates_seconds = 0, merge_seconds = 0;
 };
 
 // Fills ax, ay, az, drho, de, dh (and dstress when parameters.solid) of the real particles. Deterministic for a given

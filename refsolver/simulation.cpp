@@ -111,6 +111,7 @@ struct Simulation::Impl {
     void update_interacting();
     void rebuild();
     bool needs_rebuild() const;
+    bool timed_needs_rebuild();  // needs_rebuild, its time added to timings.skin_check
     // FORM 0's number-density continuity takes the grad-h factor where a particle thins out (grad_h.hpp).
     bool grad_h() const { return !rates.renormalise; }
     void check_finite();
@@ -172,6 +173,13 @@ void Simulation::Impl::rebuild() {
 //   support of a plane can have such a ghost within the support, so only they count; the radius
 //   of the build stands for the support (if h grew past it, the first term asks for a rebuild).
 // The support is 2 h_max now, so: rebuild when 2 (h_max - h_max_built) + either bound >= skin.
+bool Simulation::Impl::timed_needs_rebuild() {
+    const auto t0 = Clock::now();
+    const bool needed = needs_rebuild();
+    timings.skin_check += seconds_since(t0);
+    return needed;
+}
+
 bool Simulation::Impl::needs_rebuild() const {
     if (rebuilds == 0 || rebuild_every_step) return true;
     if (since_rebuild + 1 < static_cast<std::size_t>(in.ncbs)) return false;  // NCBS: not more often than this
@@ -216,14 +224,14 @@ bool Simulation::Impl::needs_rebuild() const {
     // The global bound is spent: the local one (verlet_skin.hpp), which follows only the spread of
     // displacements between neighbouring regions. Written so that a NaN (a non-finite state) asks
     // for a rebuild too.
-    const double local = closing_bound(s, in.planes, CubicSpline::support_factor * h_max, skin_cells);
+    const double local = closing_bound(s, in.planes, CubicSpline::support_factor * h_max, skin_cells, rates.threads);
     return !(grown + std::max(local, towards) < skin);
 }
 
 void Simulation::Impl::evaluate() {
     update_interacting();
     update_eos();
-    if (needs_rebuild())
+    if (timed_needs_rebuild())
         rebuild();
     else
         update_ghosts(s, in.planes, rates.threads);
@@ -231,7 +239,11 @@ void Simulation::Impl::evaluate() {
         compute_corrections(s, list, rates.kernel, rates.threads);
         update_ghosts(s, in.planes, rates.threads);
     }
-    if (grad_h()) compute_grad_h(s, list, rates.kernel, in.h_rule == SmoothingLengthRule::Divergence, rates.threads);
+    if (grad_h()) {
+        const auto t0 = Clock::now();
+        compute_grad_h(s, list, rates.kernel, in.h_rule == SmoothingLengthRule::Divergence, rates.threads);
+        timings.grad_h += seconds_since(t0);
+    }
     rates.body = body_acceleration(in.loads, time);
     compute_rates(s, list, rates, scratch);
     if (!in.kinematic.empty()) apply_kinematic();
@@ -382,7 +394,7 @@ void Simulation::Impl::step() {
 void Simulation::Impl::radioss_cycle(double dt1) {
     update_interacting();
     update_eos();
-    if (needs_rebuild())
+    if (timed_needs_rebuild())
         rebuild();
     else
         update_ghosts(s, in.planes, rates.threads);
@@ -503,7 +515,11 @@ double Simulation::end_time() const { return impl_->in.end_time; }
 double Simulation::dt() const { return impl_->steps == 0 ? impl_->dt_next : impl_->dt; }
 std::size_t Simulation::steps() const { return impl_->steps; }
 int Simulation::dimension() const { return impl_->in.dimension; }
-Timings Simulation::timings() const { return impl_->timings; }
+Timings Simulation::timings() const {
+    Timings t = impl_->timings;
+    t.rates = impl_->scratch.rates_seconds, t.merge = impl_->scratch.merge_seconds;
+    return t;
+}
 const std::vector<long long>& Simulation::part_ids() const { return impl_->part_ids; }
 const std::string& Simulation::failure() const { return impl_->failure; }
 std::size_t Simulation::neighbour_rebuilds() const { return impl_->rebuilds; }

@@ -83,6 +83,10 @@ struct Totals {
 struct Timings {
     double total = 0;
     double neighbours = 0;  // rebuilding the neighbour grid and lists
+    double skin_check = 0;  // deciding whether to rebuild them (the displacement bounds)
+    double grad_h = 0;      // FORM 0's grad-h factors (grad_h.hpp)
+    double rates = 0;       // the pair loop: packing, the pairs, adding the received sums
+    double merge = 0;       // of `rates`: adding the sums each thread received
 };
 
 class Simulation {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <omp.h>
+#include <utility>
 
 namespace sphdeck::refsolver {
 
@@ -30,16 +32,18 @@ double box_diagonal(const DisplacementBox& a, const DisplacementBox& b) {
     return std::sqrt(sum);
 }
 
-// Calls f(build position, displacement) for every active real particle and every ghost of one.
+// Calls f(build position, displacement) for the points [first, last) of the active real particles
+// (0 .. real) and the ghosts of active ones (real .. real + ghosts).
 template <class F>
-void for_each_point(const Particles& s, const std::vector<SymmetryPlane>& planes, F&& f) {
-    for (std::size_t i = 0; i < s.real; ++i) {
+void for_each_point(const Particles& s, const std::vector<SymmetryPlane>& planes, std::size_t first, std::size_t last,
+                    F&& f) {
+    for (std::size_t i = first; i < std::min(last, s.real); ++i) {
         if (!s.active[i]) continue;
         const double at[3] = {s.x_built[i], s.y_built[i], s.z_built[i]};
         const double d[3] = {s.x[i] - at[0], s.y[i] - at[1], s.z[i] - at[2]};
         f(at, d);
     }
-    for (std::size_t k = 0; k < s.ghosts(); ++k) {
+    for (std::size_t k = std::max(first, s.real) - s.real; k + s.real < last; ++k) {
         const std::size_t j = s.ghost_source[k];
         if (!s.active[j]) continue;
         double at[3] = {s.x_built[j], s.y_built[j], s.z_built[j]};
@@ -55,19 +59,42 @@ void for_each_point(const Particles& s, const std::vector<SymmetryPlane>& planes
     }
 }
 
+// The part of [0, points) that thread t of `threads` takes.
+std::pair<std::size_t, std::size_t> share_of(std::size_t points, int threads, int t) {
+    const auto team = static_cast<std::size_t>(threads), u = static_cast<std::size_t>(t);
+    return {points * u / team, points * (u + 1) / team};
+}
+
+void merge_skin(DisplacementBox& into, const DisplacementBox& b) {
+    for (int a = 0; a < 3; ++a) into.lo[a] = std::min(into.lo[a], b.lo[a]), into.hi[a] = std::max(into.hi[a], b.hi[a]);
+}
+
 }  // namespace
 
 double closing_bound(const Particles& s, const std::vector<SymmetryPlane>& planes, double support,
-                     std::vector<DisplacementBox>& cells) {
+                     std::vector<DisplacementBox>& cells, int threads) {
+    // Every step of a stretching flow asks this (the global bound is spent): each pass runs on the
+    // threads. Boxes only grow by min and max, so the result is the same at any thread count.
+    const std::size_t points = s.real + s.ghosts();
+    threads = std::max(1, threads);
     double largest = 0;  // max |d|
     bool finite = true;
-    Box where;  // of the build positions
-    for_each_point(s, planes, [&](const double at[3], const double d[3]) {
-        const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-        finite = finite && std::isfinite(length);
-        largest = std::max(largest, length);
-        add_skin(where, at);
-    });
+    double lo[3] = {infinite_skin, infinite_skin, infinite_skin},
+           hi[3] = {-infinite_skin, -infinite_skin, -infinite_skin};
+#pragma omp parallel num_threads(threads) reduction(max : largest) reduction(&& : finite) reduction(min : lo[:3]) \
+    reduction(max : hi[:3])
+    {
+        const auto [first, last] = share_of(points, omp_get_num_threads(), omp_get_thread_num());
+        Box where;  // of the build positions
+        for_each_point(s, planes, first, last, [&](const double at[3], const double d[3]) {
+            const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            finite = finite && std::isfinite(length);
+            largest = std::max(largest, length);
+            add_skin(where, at);
+        });
+        for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], where.lo[a]), hi[a] = std::max(hi[a], where.hi[a]);
+    }
+    DisplacementBox where{{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
     if (empty(where)) return 0.0;
     if (!finite || !std::isfinite(support) || !std::isfinite(box_diagonal(where, where))) return infinite_skin;
     // Cells of at least support + 2 max|d| (the margin covers the rounding of the cell indices);
@@ -87,17 +114,32 @@ double closing_bound(const Particles& s, const std::vector<SymmetryPlane>& plane
         if (total <= static_cast<double>(most_cells)) break;
         cell *= 2;
     }
-    cells.assign(n[0] * n[1] * n[2], Box{});
+    const std::size_t count = n[0] * n[1] * n[2];
+    // One set of cells per thread while they are few beside the points (else one thread bins them).
+    const int binning = count * static_cast<std::size_t>(threads) <= std::max<std::size_t>(points, 4096) ? threads : 1;
+    cells.assign(count * static_cast<std::size_t>(binning), Box{});
     const auto index = [&](const double at[3], std::size_t c[3]) {
         for (int a = 0; a < 3; ++a) c[a] = std::min(n[a] - 1, static_cast<std::size_t>((at[a] - where.lo[a]) / cell));
     };
-    for_each_point(s, planes, [&](const double at[3], const double d[3]) {
-        std::size_t c[3];
-        index(at, c);
-        add_skin(cells[(c[2] * n[1] + c[1]) * n[0] + c[0]], d);
-    });
+#pragma omp parallel num_threads(binning)
+    {
+        const int t = omp_get_thread_num();
+        const auto [first, last] = share_of(points, omp_get_num_threads(), t);
+        DisplacementBox* own = cells.data() + static_cast<std::size_t>(t) * count;
+        for_each_point(s, planes, first, last, [&](const double at[3], const double d[3]) {
+            std::size_t c[3];
+            index(at, c);
+            add_skin(own[(c[2] * n[1] + c[1]) * n[0] + c[0]], d);
+        });
+#pragma omp barrier
+#pragma omp for schedule(static)
+        for (std::size_t c = 0; c < count; ++c)
+            for (std::size_t u = 1; u < static_cast<std::size_t>(binning); ++u)
+                merge_skin(cells[c], cells[u * count + c]);
+    }
     // Each cell with itself and its neighbours (both orders give the same box: the forward half).
     double bound = 0;
+#pragma omp parallel for schedule(static) reduction(max : bound) num_threads(threads)
     for (std::size_t z = 0; z < n[2]; ++z)
         for (std::size_t y = 0; y < n[1]; ++y)
             for (std::size_t x = 0; x < n[0]; ++x) {

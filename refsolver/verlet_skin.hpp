@@ -23,8 +23,9 @@ struct DisplacementBox {
 // An upper bound of |d_a - d_b| over every pair of active particles (real, or a ghost that exists;
 // a ghost's build position and displacement are its source's, mirrored) that lie within `support`
 // of each other now. Reads x, y, z and x_built, y_built, z_built; `cells` is scratch, kept by the
-// caller between calls (no allocation per step). +infinity when the state is not finite.
+// caller between calls (no allocation per step). +infinity when the state is not finite. On
+// `threads` threads; the result does not depend on how many.
 double closing_bound(const Particles& s, const std::vector<SymmetryPlane>& planes, double support,
-                     std::vector<DisplacementBox>& cells);
+                     std::vector<DisplacementBox>& cells, int threads = 1);
 
 }  // namespace sphdeck::refsolver

@@ -265,6 +265,8 @@ TEST_CASE("refsolver neighbours: the local skin bound covers every pair within t
     const double support = 0.1;
     std::vector<DisplacementBox> cells;
     const double bound = closing_bound(s, planes, support, cells);
+    // On threads (each bins its share of the points into its own cells): the same bound, to the bit.
+    for (int threads : {2, 3}) CHECK(closing_bound(s, planes, support, cells, threads) == bound);
     // Every point (active real particle, or ghost of one) now and at the build, by brute force.
     struct Point {
         double now[3], built[3];
