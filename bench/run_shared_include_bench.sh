@@ -12,6 +12,9 @@
 #     alone on one core: at most 2x;
 #   - the decks together on N cores (--jobs N, N CPUs) for each N of BENCH_CORES (default: 1 2 4 8 16, those
 #     the machine has): the speed-up against one core, near N.
+#   - on a shared machine the steadier figure: CPU seconds (user + sys, /usr/bin/time) of one deck alone
+#     and of the decks together on one core, run in turns BENCH_CPU_RUNS times (default 5; 0 skips),
+#     their medians and the ratio of the medians.
 # BENCH_RUNS (default 3) runs of each command, BENCH_RUNS_MANY (default 1) of the 32 decks on one core;
 # BENCH_ARGS adds options to every check (e.g. --no-geometry). Exit status: 0 when the measurements ran,
 # 1 when a run failed, 2 on a usage or set-up error.
@@ -35,6 +38,7 @@ nodes=${BENCH_NODES:-1000000}
 decks=${BENCH_DECKS:-32}
 runs=${BENCH_RUNS:-3}
 runs_many=${BENCH_RUNS_MANY:-1}
+cpu_runs=${BENCH_CPU_RUNS:-5}
 extra=${BENCH_ARGS:-}
 cpus=$(nproc)
 cores_list=${BENCH_CORES:-"1 2 4 8 16"}
@@ -98,3 +102,25 @@ for n in $cores_list; do
   awk -v a="$one_core" -v b="$median_s" -v n="$n" \
     'BEGIN { s = a / b; printf "  speed-up over 1 core: %.2fx of %d (goal: near-linear; efficiency %.0f %%)\n", s, n, 100 * s / n }'
 done
+
+# CPU seconds, one deck alone and the decks together taking turns (the load then weighs on both alike).
+cpu_of() {  # cpu_of CMD...: prints the command's user + sys seconds
+  local times
+  times=$(mktemp)
+  /usr/bin/time -f '%U %S' -o "$times" "$@" >/dev/null 2>&1 || true
+  awk '{ print $1 + $2 }' "$times"
+  rm -f "$times"
+}
+if [ "$cpu_runs" -gt 0 ] && [ -x /usr/bin/time ]; then
+  alone_cpu=() many_cpu=()
+  for _ in $(seq 1 "$cpu_runs"); do
+    # shellcheck disable=SC2046,SC2086
+    alone_cpu+=("$(cpu_of $(on_cpus 1) "$build/sphdeck" check --format concise --alone $extra "$out/case_01.k")")
+    # shellcheck disable=SC2046,SC2086
+    many_cpu+=("$(cpu_of $(on_cpus 1) "$build/sphdeck" check --format concise --jobs 1 $extra "$out")")
+  done
+  median_of() { printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { print NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+  a=$(median_of "${alone_cpu[@]}") b=$(median_of "${many_cpu[@]}")
+  echo "CPU (user + sys), 1 core, $cpu_runs runs each in turns: one deck alone ${a} s (${alone_cpu[*]}), $decks decks ${b} s (${many_cpu[*]})"
+  awk -v a="$b" -v b="$a" 'BEGIN { r = a / b; printf "  ratio of the CPU medians: %.2fx (goal: at most 2x: %s)\n", r, r <= 2 ? "met" : "not met" }'
+fi

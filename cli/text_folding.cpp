@@ -12,40 +12,49 @@ namespace {
 
 constexpr std::size_t no_block = static_cast<std::size_t>(-1);
 
-// The block whose keyword line or card lines hold a span: per file, line ranges sorted by start.
+// The block whose keyword line or card lines hold a span: per file, the blocks sorted by their keyword
+// line. A block's last line is found when a span falls after its keyword line, once: a pass over every
+// card line of a deck (two million for a 1M-particle mesh) for a handful of findings costs more than
+// the folding (the decks of a run over one mesh each paid it).
 class BlockOfLine {
 public:
-    explicit BlockOfLine(const grammar::RawDeck& deck) {
+    explicit BlockOfLine(const grammar::RawDeck& deck) : deck_(deck), last_(deck.blocks.size(), unknown) {
         for (std::size_t i = 0; i < deck.blocks.size(); ++i) {
             const grammar::Block& b = deck.blocks[i];
-            if (!b.span.valid()) continue;
-            std::uint32_t last = b.span.line;
-            for (const grammar::CardLine* l = deck.begin_lines(b); l != deck.end_lines(b); ++l)
-                if (l->file == b.span.file) last = std::max(last, l->line);
-            ranges_[b.span.file].push_back({b.span.line, last, i});
+            if (b.span.valid()) starts_[b.span.file].push_back({b.span.line, i});
         }
-        for (auto& [file, ranges] : ranges_) std::sort(ranges.begin(), ranges.end());
+        for (auto& [file, starts] : starts_) std::sort(starts.begin(), starts.end());
     }
 
     std::size_t operator()(const grammar::Span& span) const {
-        auto it = ranges_.find(span.file);
-        if (!span.valid() || it == ranges_.end()) return no_block;
+        auto it = starts_.find(span.file);
+        if (!span.valid() || it == starts_.end()) return no_block;
         const auto& r = it->second;
-        auto after = std::upper_bound(r.begin(), r.end(), Range{span.line, UINT32_MAX, no_block});
+        auto after = std::upper_bound(r.begin(), r.end(), Start{span.line, no_block});
         if (after == r.begin()) return no_block;
         --after;
-        return span.line <= after->last ? after->block : no_block;
+        return span.line <= last_line(after->block) ? after->block : no_block;
     }
 
 private:
-    struct Range {
-        std::uint32_t first, last;
+    static constexpr std::uint32_t unknown = UINT32_MAX;
+    struct Start {
+        std::uint32_t line;  // the keyword line: one block a line in a file
         std::size_t block;
-        bool operator<(const Range& o) const {
-            return std::tie(first, last, block) < std::tie(o.first, o.last, o.block);
-        }
+        bool operator<(const Start& o) const { return std::tie(line, block) < std::tie(o.line, o.block); }
     };
-    std::map<grammar::FileId, std::vector<Range>> ranges_;
+    // The last line of block `i` in its keyword's file.
+    std::uint32_t last_line(std::size_t i) const {
+        if (last_[i] != unknown) return last_[i];
+        const grammar::Block& b = deck_.blocks[i];
+        std::uint32_t last = b.span.line;
+        for (const grammar::CardLine* l = deck_.begin_lines(b); l != deck_.end_lines(b); ++l)
+            if (l->file == b.span.file) last = std::max(last, l->line);
+        return last_[i] = last;
+    }
+    const grammar::RawDeck& deck_;
+    std::map<grammar::FileId, std::vector<Start>> starts_;
+    mutable std::vector<std::uint32_t> last_;  // by block; `unknown` until asked
 };
 
 struct Run {

@@ -46,6 +46,7 @@ CheckResult analyse(grammar::RawDeck deck, const CheckOptions& options, const Ch
                        ? model::build_radioss_model(result.deck, result.diagnostics, &result.summary)
                        : build_dyna_model(result, previous, changed, options.share, provenance);
     lint::RuleContext context(result.model, result.deck, options.rules, result.diagnostics);
+    if (options.share) context.use_bulk_facts(options.share->lookups.facts(result.model, provenance));
     if (options.share) context.use_lookups(options.share->lookups.find(result.model, provenance));
     if (previous && previous->preview) {
         const bool arrays = options.rules.preview_arrays;

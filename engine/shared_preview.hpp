@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <future>
 #include <list>
 #include <memory>
 #include <mutex>
@@ -16,6 +17,7 @@
 #include <string_view>
 #include <vector>
 
+#include "lint/bulk_facts.hpp"
 #include "lint/rule_context.hpp"
 #include "model/model.hpp"
 #include "model/shared_bulk.hpp"
@@ -41,7 +43,7 @@ private:
         model::BulkProvenance provenance;
         model::Model settings;  // the model without its nodes and particles
         bool particle_arrays = false, neighbour_counts = false;
-        std::shared_ptr<const preproc::Preview> preview;
+        std::shared_future<std::shared_ptr<const preproc::Preview>> preview;  // ready once computed
     };
     static constexpr std::size_t max_entries = 4;  // the most recent previews kept
     mutable std::mutex mutex_;
@@ -66,21 +68,29 @@ private:
 };
 
 // The rules' id lookups (node index, particle index, each particle's node: lint::RuleContext::Lookups)
-// of a model made of shared blocks, for the next model made of the same blocks (the same node ids and
-// particle nodes). Several threads may ask at once.
+// and their facts of the nodes and particles alone (lint/bulk_facts.hpp: the parts the particles
+// name, the parts' extents, duplicated ids...) of a model made of shared blocks, for the next model
+// made of the same blocks (the same nodes and particles, in the same order). Several threads may ask
+// at once: decks checked at once (--jobs) share one BulkFacts, so a fact is computed once.
 class SharedLookups {
 public:
     // The lookups kept for models of `provenance`'s blocks (empty when none or not covered).
     lint::RuleContext::Lookups find(const model::Model& model, const model::BulkProvenance& provenance) const;
-    // Keeps what the rules built for `model` (when it is made of shared blocks and nothing is kept yet).
+    // The facts of models of `provenance`'s blocks, made on the first ask; a model not wholly made of
+    // shared blocks gets facts of its own.
+    std::shared_ptr<lint::BulkFacts> facts(const model::Model& model, const model::BulkProvenance& provenance);
+    // Keeps what the rules built for `model` (when it is made of shared blocks), where nothing is kept yet.
     void keep(const model::Model& model, const model::BulkProvenance& provenance,
               const lint::RuleContext::Lookups& built);
+    std::size_t facts_computed() const;  // over the facts kept (tests)
 
 private:
     struct Entry {
         model::BulkProvenance provenance;
         lint::RuleContext::Lookups lookups;
+        std::shared_ptr<lint::BulkFacts> facts;
     };
+    Entry& entry(const model::BulkProvenance& provenance);  // kept or made; under mutex_
     static constexpr std::size_t max_entries = 4;
     mutable std::mutex mutex_;
     std::list<Entry> entries_;  // oldest first

@@ -41,6 +41,11 @@ const std::vector<std::uint32_t>& RuleContext::particle_nodes() const {
     return *particle_nodes_;
 }
 
+BulkFacts& RuleContext::bulk_facts() const {
+    if (!bulk_facts_) bulk_facts_ = std::make_shared<BulkFacts>();
+    return *bulk_facts_;
+}
+
 namespace {
 const model::IdSet* find_set(std::unique_ptr<std::unordered_map<model::Id, const model::IdSet*>>& index,
                              const std::vector<model::IdSet>& sets, const model::Id& id) {

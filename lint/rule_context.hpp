@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "diag/diagnostic.hpp"
+#include "lint/bulk_facts.hpp"
 #include "grammar/raw_deck.hpp"
 #include "model/id_index.hpp"
 #include "model/model.hpp"
@@ -84,8 +85,14 @@ public:
         particle_nodes_ = built.particle_nodes;
     }
 
+    // Facts of the nodes and particles alone (lint/bulk_facts.hpp), computed on first use. The engine
+    // gives the decks of one run whose nodes and particles are the same shared blocks one object.
+    BulkFacts& bulk_facts() const;
+    void use_bulk_facts(std::shared_ptr<BulkFacts> facts) { bulk_facts_ = std::move(facts); }
+
 private:
     std::vector<diag::Diagnostic>& out_;
+    mutable std::shared_ptr<BulkFacts> bulk_facts_;
     mutable std::shared_ptr<const model::IdIndex> node_index_, particle_index_;
     mutable std::shared_ptr<const std::vector<std::uint32_t>> particle_nodes_;
     using SetIndex = std::unordered_map<model::Id, const model::IdSet*>;

@@ -24,18 +24,25 @@ Criterion field_criterion(const model::FieldRecord& f, const model::Material& ma
 
 }  // namespace
 
-std::vector<const model::Part*> sph_parts(const model::Model& m) {
-    std::set<model::Id> used;
-    long long last = -1;  // particles come in long runs of the same part
-    for (long long pid : m.particles.part) {
-        if (pid == last) continue;
-        used.insert(std::to_string(pid));
-        last = pid;
-    }
+std::vector<const model::Part*> sph_parts(const RuleContext& c) {
+    const model::Model& m = c.model;
+    struct UsedParts {  // the parts the particles name: a fact of the particles alone (lint/bulk_facts.hpp)
+        std::set<model::Id> ids;
+    };
+    const auto used = c.bulk_facts().get<UsedParts>([&] {
+        UsedParts out;
+        long long last = -1;  // particles come in long runs of the same part
+        for (long long pid : m.particles.part) {
+            if (pid == last) continue;
+            out.ids.insert(std::to_string(pid));
+            last = pid;
+        }
+        return out;
+    });
     std::vector<const model::Part*> out;
     for (const model::Part& p : m.parts) {
         const model::Section* s = m.section(p.section.value);
-        if (used.count(p.id) || (s && s->sph)) out.push_back(&p);
+        if (used->ids.count(p.id) || (s && s->sph)) out.push_back(&p);
     }
     return out;
 }
@@ -136,7 +143,7 @@ void check_control_sph(RuleContext& c) {
         control_sph::check_forms(c, {});
         return;
     }
-    const std::vector<const model::Part*> parts = control_sph::sph_parts(c.model);
+    const std::vector<const model::Part*> parts = control_sph::sph_parts(c);
     control_sph::check_forms(c, parts);
     control_sph::check_erosion(c, parts);
     control_sph::check_limits(c);

@@ -12,7 +12,7 @@
 namespace sphdeck::lint::control_sph {
 
 // Parts that particles use, and every part whose section is a *SECTION_SPH*, in deck order.
-std::vector<const model::Part*> sph_parts(const model::Model& m);
+std::vector<const model::Part*> sph_parts(const RuleContext& c);
 
 // A failure or erosion criterion: where it is written and a short description ("FS 0.3 on
 // *MAT_PLASTIC_KINEMATIC 2").

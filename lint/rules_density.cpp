@@ -36,7 +36,7 @@ bool rigid(const model::Material& m) { return m.keyword == "*MAT_RIGID" || m.key
 void check_lsdyna_densities(RuleContext& c) {
     const model::Model& m = c.model;
     std::set<const model::Part*> sph;
-    for (const model::Part* p : control_sph::sph_parts(m)) sph.insert(p);
+    for (const model::Part* p : control_sph::sph_parts(c)) sph.insert(p);
     std::set<const model::Material*> reported;
     for (const model::Part& part : m.parts) {
         const model::Section* section = m.section(part.section.value);

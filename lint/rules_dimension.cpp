@@ -32,21 +32,35 @@ void check_missing_control_sph(RuleContext& c) {
                          "states them"));
 }
 
+// The extent of the particles that have a node, their count and the first of them: a fact of the
+// particles alone (lint/bulk_facts.hpp).
+struct ParticleCloud {
+    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    std::size_t count = 0, first = 0;
+};
+
+ParticleCloud particle_cloud(const RuleContext& c) {
+    const model::Nodes& n = c.model.nodes;
+    const std::vector<std::uint32_t>& node_of = c.particle_nodes();
+    ParticleCloud out;
+    for (std::size_t i = 0; i < node_of.size(); ++i) {
+        const std::uint32_t k = node_of[i];
+        if (k == RuleContext::no_node) continue;  // REF001
+        if (out.count++ == 0) out.first = i;
+        const double x[3] = {n.x[k], n.y[k], n.z[k]};
+        for (int a = 0; a < 3; ++a) out.lo[a] = std::min(out.lo[a], x[a]), out.hi[a] = std::max(out.hi[a], x[a]);
+    }
+    return out;
+}
+
 // Every particle within 1e-6 of the cloud's extent of one coordinate value: a plane (or a line).
 void check_planar_3d(RuleContext& c) {
     const model::ControlSph& sph = c.model.controls.sph;
     if (sph.present && sph.idim.value != model::Dimension::ThreeD && sph.idim.value != model::Dimension::Unset) return;
-    const model::Nodes& n = c.model.nodes;
-    const std::vector<std::uint32_t>& node_of = c.particle_nodes();
-    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-    std::size_t count = 0, first = 0;
-    for (std::size_t i = 0; i < node_of.size(); ++i) {
-        const std::uint32_t k = node_of[i];
-        if (k == RuleContext::no_node) continue;  // REF001
-        if (count++ == 0) first = i;
-        const double x[3] = {n.x[k], n.y[k], n.z[k]};
-        for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], x[a]), hi[a] = std::max(hi[a], x[a]);
-    }
+    const auto cloud = c.bulk_facts().get<ParticleCloud>([&] { return particle_cloud(c); });
+    const double* lo = cloud->lo;
+    const double* hi = cloud->hi;
+    const std::size_t count = cloud->count, first = cloud->first;
     if (count < 3) return;
     double extent = 0;
     for (int a = 0; a < 3; ++a) extent = std::max(extent, hi[a] - lo[a]);

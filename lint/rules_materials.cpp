@@ -246,7 +246,11 @@ void check_murnaghan(RuleContext& c, const std::map<Id, PartStats>& parts) {
 
 void check_sph_materials(RuleContext& c) {
     const std::vector<std::uint32_t>& node_of = c.particle_nodes();
-    std::map<Id, PartStats> parts = particle_parts(c.model, node_of);
+    struct PartExtents {  // the parts' extents, no speed yet: a fact of the particles alone (lint/bulk_facts.hpp)
+        std::map<Id, PartStats> parts;
+    };
+    std::map<Id, PartStats> parts =
+        c.bulk_facts().get<PartExtents>([&] { return PartExtents{particle_parts(c.model, node_of)}; })->parts;
     check_null_without_eos(c, parts);
     add_initial_velocities(c, node_of, parts);
     check_murnaghan(c, parts);

@@ -128,13 +128,20 @@ void check_planar(RuleContext& c) {
 // covers them all.
 void check_particle_mass(RuleContext& c) {
     const model::Particles& p = c.model.particles;
-    PartGroups zero, volume;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        if (p.mass[i] == 0.0)
-            zero.add(p.part[i], i);
-        else if (p.mass[i] < 0.0 && !p.volume[i])
-            volume.add(p.part[i], i);
-    }
+    struct MassGroups {  // massless particles and volumes by part: a fact of the particles alone (lint/bulk_facts.hpp)
+        PartGroups zero, volume;
+    };
+    const auto groups = c.bulk_facts().get<MassGroups>([&] {
+        MassGroups out;
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            if (p.mass[i] == 0.0)
+                out.zero.add(p.part[i], i);
+            else if (p.mass[i] < 0.0 && !p.volume[i])
+                out.volume.add(p.part[i], i);
+        }
+        return out;
+    });
+    const PartGroups &zero = groups->zero, &volume = groups->volume;
     auto mass_span = [&](std::size_t i) {
         return field_span(c.deck, p.line[i], "*ELEMENT_SPH", "MASS", c.particle_span(i));
     };

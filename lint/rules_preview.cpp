@@ -114,9 +114,16 @@ void check_coincident(RuleContext& c, const Preview& p) {
     }
 }
 
-// SPH115: a particle far from the rest of its part (one pass over the particles).
-void check_stray(RuleContext& c, const Preview& p) {
+// The particles far from the rest of their part, the first few of each part (one pass over the
+// particles): a fact of the preview alone, kept under it (lint/bulk_facts.hpp), so the decks of a run
+// that share a preview share this pass too.
+struct StrayParticles {
+    std::vector<std::size_t> particles;
+};
+
+StrayParticles stray_particles(const Preview& p) {
     const auto& pp = p.particles;
+    StrayParticles out;
     std::vector<std::size_t> listed(p.parts.size(), 0);
     for (std::size_t i = 0; i < pp.part.size(); ++i) {
         const std::uint32_t q = pp.part[i];
@@ -125,6 +132,17 @@ void check_stray(RuleContext& c, const Preview& p) {
             listed[q] == preview_max_listed)
             continue;
         ++listed[q];
+        out.particles.push_back(i);
+    }
+    return out;
+}
+
+// SPH115: a particle far from the rest of its part.
+void check_stray(RuleContext& c, const Preview& p) {
+    const auto& pp = p.particles;
+    const auto stray = c.bulk_facts().get<StrayParticles>([&] { return stray_particles(p); }, c.preview);
+    for (const std::size_t i : stray->particles) {
+        const PartPreview& part = p.parts[pp.part[i]];
         const bool sets_h0 =
             !part.sphini_given && part.ini != model::IniMode::FromMass && pp.nn_distance[i] == part.nn_distance.max;
         const std::string effect = sets_h0 ? fmt::format("; it sets h0 = {:.4g} for the whole part", part.h0) : "";

@@ -1,6 +1,7 @@
 // REF001-REF009: references between definitions (particle → node, part → section, material,
 // EOS; sets; boxes), duplicate ids and unused definitions.
 #include <algorithm>
+#include <vector>
 #include <fmt/format.h>
 #include <tuple>
 #include <map>
@@ -80,29 +81,46 @@ void report_undefined_parts(RuleContext& c, const PartGroups& missing, bool part
 
 // REF001 and REF002 for particles: grouped per missing id, so a million bad particles make a
 // handful of findings, each at the first particle that names it.
-// Whether some particle names a missing node or an undefined part (a part id that could not be
-// read, below 0, is DK002's). One pass on every thread; each thread looks a part up once per run.
-bool any_missing(const RuleContext& c, const model::IdIndex& nodes) {
+// What any_missing needs of the particles alone (lint/bulk_facts.hpp: one pass, shared by the decks
+// of a run over one mesh): whether one names a node that does not exist, and the parts they name
+// (a part id that could not be read, below 0, is DK002's). One pass on every thread; each thread
+// takes a part once per run of equal ids.
+struct ParticleNodesAndParts {
+    bool node_missing = false;
+    std::vector<long long> parts;  // sorted, each once
+};
+
+ParticleNodesAndParts particle_nodes_and_parts(const RuleContext& c, const model::IdIndex& nodes) {
     const model::Particles& p = c.model.particles;
     const std::size_t n = p.size();
+    ParticleNodesAndParts out;
     bool missing = false;
+    std::vector<long long> parts;
 #pragma omp parallel reduction(|| : missing) if (n > 65536)
     {
-        std::unordered_map<long long, bool> known;  // this thread's part lookups
+        std::vector<long long> named;  // this thread's parts
 #pragma omp for schedule(static)
         for (std::size_t i = 0; i < n; ++i) {
-            if (missing) continue;  // this thread found one: the answer is known
-            if (!nodes.find(p.node[i])) {
-                missing = true;
-            } else if (p.part[i] >= 0 && (i == 0 || p.part[i] != p.part[i - 1])) {
-                auto it = known.find(p.part[i]);
-                if (it == known.end())
-                    it = known.emplace(p.part[i], c.model.part(std::to_string(p.part[i])) != nullptr).first;
-                missing = !it->second;
-            }
+            if (!missing && !nodes.find(p.node[i])) missing = true;
+            if (p.part[i] >= 0 && (i == 0 || p.part[i] != p.part[i - 1])) named.push_back(p.part[i]);
         }
+#pragma omp critical(sphdeck_particle_parts_named)
+        parts.insert(parts.end(), named.begin(), named.end());
     }
-    return missing;
+    std::sort(parts.begin(), parts.end());
+    parts.erase(std::unique(parts.begin(), parts.end()), parts.end());
+    out.node_missing = missing;
+    out.parts = std::move(parts);
+    return out;
+}
+
+// Whether some particle names a missing node or an undefined part.
+bool any_missing(const RuleContext& c, const model::IdIndex& nodes) {
+    const auto facts = c.bulk_facts().get<ParticleNodesAndParts>([&] { return particle_nodes_and_parts(c, nodes); });
+    if (facts->node_missing) return true;
+    for (long long part : facts->parts)
+        if (!c.model.part(std::to_string(part))) return true;
+    return false;
 }
 
 void check_particles(RuleContext& c, const model::IdIndex& nodes) {
@@ -186,8 +204,13 @@ void check_node_duplicates(RuleContext& c, const model::IdIndex& index) {
 
 void check_particle_duplicates(RuleContext& c) {
     const auto& ids = c.model.particles.node;
+    struct ParticleDuplicates {  // a fact of the particles alone (lint/bulk_facts.hpp)
+        std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    };
+    const auto duplicates =
+        c.bulk_facts().get<ParticleDuplicates>([&] { return ParticleDuplicates{model::find_duplicate_ids(ids)}; });
     std::size_t reported = 0;
-    for (const auto& [first, again] : model::find_duplicate_ids(ids)) {
+    for (const auto& [first, again] : duplicates->pairs) {
         if (reported++ == max_duplicate_reports) break;
         c.report("REF006", c.particle_span(again), fmt::format("particle {} is defined twice", ids[again]))
             .notes.push_back({c.particle_span(first), "first defined here"});

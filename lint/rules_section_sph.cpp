@@ -95,15 +95,20 @@ void check_kernel(RuleContext& c, const Section& s) {
 
 // SPH104: parts holding particles must have an SPH section. One finding per part.
 void check_particle_sections(RuleContext& c) {
-    std::map<long long, std::size_t> counts;  // part id → particles
-    const auto& parts = c.model.particles.part;
-    long long last = 0;
-    std::size_t* count = nullptr;
-    for (long long p : parts) {
-        if (!count || p != last) count = &counts[p], last = p;  // particles come in runs of one part
-        ++*count;
-    }
-    for (const auto& [id, n] : counts) {
+    struct PartCounts {  // part id → particles: a fact of the particles alone (lint/bulk_facts.hpp)
+        std::map<long long, std::size_t> counts;
+    };
+    const auto counted = c.bulk_facts().get<PartCounts>([&] {
+        PartCounts out;
+        long long last = 0;
+        std::size_t* count = nullptr;
+        for (long long p : c.model.particles.part) {
+            if (!count || p != last) count = &out.counts[p], last = p;  // particles come in runs of one part
+            ++*count;
+        }
+        return out;
+    });
+    for (const auto& [id, n] : counted->counts) {
         const model::Part* part = c.model.part(std::to_string(id));
         if (!part) continue;  // REF002
         const Section* section = c.model.section(part->section.value);

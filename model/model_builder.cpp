@@ -37,6 +37,38 @@ void resize_columns(Nodes& n, std::size_t size) {
 void resize_columns(Particles& p, std::size_t size) {
     p.node.resize(size), p.part.resize(size), p.mass.resize(size), p.volume.resize(size), p.line.resize(size);
 }
+
+// A cleanly decoded block taken whole from where it was decoded before (the last check's model, or a
+// shared block of the run): its `count` nodes or particles, one a line, from `from` in those columns.
+// Returns the block's first slot in `n` or `p`.
+std::size_t append_block(Nodes& n, const std::vector<long long>& id, const std::vector<double>& x,
+                         const std::vector<double>& y, const std::vector<double>& z, std::size_t from,
+                         std::size_t count) {
+    const std::size_t slot = n.id.size();
+    const auto copy = [&](const auto& source, auto& target) {
+        const auto begin = source.begin() + static_cast<std::ptrdiff_t>(from);
+        target.insert(target.end(), begin, begin + static_cast<std::ptrdiff_t>(count));
+    };
+    copy(id, n.id), copy(x, n.x), copy(y, n.y), copy(z, n.z);
+    return slot;
+}
+
+// The same for particles; the block's keyword gives their volume flag, and its lines from `first_line`
+// on (in RawDeck::lines) are theirs in this deck.
+std::size_t append_block(Particles& p, const std::vector<long long>& node, const std::vector<long long>& part,
+                         const std::vector<double>& mass, std::size_t from, std::size_t count, bool volume,
+                         std::uint32_t first_line) {
+    const std::size_t slot = p.size();
+    const auto copy = [&](const auto& source, auto& target) {
+        const auto begin = source.begin() + static_cast<std::ptrdiff_t>(from);
+        target.insert(target.end(), begin, begin + static_cast<std::ptrdiff_t>(count));
+    };
+    copy(node, p.node), copy(part, p.part), copy(mass, p.mass);
+    p.volume.resize(slot + count, volume);
+    p.line.resize(slot + count);
+    for (std::size_t i = 0; i < count; ++i) p.line[slot + i] = first_line + static_cast<std::uint32_t>(i);
+    return slot;
+}
 }  // namespace
 
 ModelBuilder::ModelBuilder(const grammar::RawDeck& deck, const BulkReuse* previous) : deck_(deck), previous_(previous) {
@@ -171,28 +203,14 @@ bool ModelBuilder::Bulk::reuse(const grammar::Block& block, const keywords::Card
     if (!owner_.previous_) return owner_.shared_ && reuse_shared(block, card);
     const DecodedBulkBlock* same = same_bulk_block(*owner_.previous_, owner_.deck_, block, card);
     if (!same) return false;
+    // A clean block is one entry a line: its particles' lines are this block's, wherever it moved.
     const Model& before = owner_.previous_->model;
-    const auto from = static_cast<std::ptrdiff_t>(same->first_slot);
-    const auto to = from + static_cast<std::ptrdiff_t>(same->line_count);
-    const auto copy = [&](const auto& source, auto& target) {
-        target.insert(target.end(), source.begin() + from, source.begin() + to);
-    };
-    std::size_t slot = 0;
-    if (block.keyword.rfind("*ELEMENT_SPH", 0) == 0) {
-        const Particles& old = before.particles;
-        Particles& p = owner_.model_.particles;
-        slot = p.size();
-        copy(old.node, p.node), copy(old.part, p.part), copy(old.mass, p.mass), copy(old.volume, p.volume);
-        // A particle's line is its place in RawDeck::lines, which lines added or removed above shift.
-        const std::uint32_t shift = block.first_line - same->first_line;  // modulo 2^32, undone by the sum
-        p.line.reserve(p.line.size() + same->line_count);
-        for (auto at = old.line.begin() + from; at != old.line.begin() + to; ++at) p.line.push_back(*at + shift);
-    } else {
-        const Nodes& old = before.nodes;
-        Nodes& n = owner_.model_.nodes;
-        slot = n.id.size();
-        copy(old.id, n.id), copy(old.x, n.x), copy(old.y, n.y), copy(old.z, n.z);
-    }
+    const std::size_t slot = block.keyword.rfind("*ELEMENT_SPH", 0) == 0
+                                 ? append_block(owner_.model_.particles, before.particles.node, before.particles.part,
+                                                before.particles.mass, same->first_slot, same->line_count,
+                                                block.keyword.find("_VOLUME") != std::string::npos, block.first_line)
+                                 : append_block(owner_.model_.nodes, before.nodes.id, before.nodes.x, before.nodes.y,
+                                                before.nodes.z, same->first_slot, same->line_count);
     owner_.decoded_bulk_.push_back(decoded_bulk_block(owner_.deck_, block, card, slot));
     return true;
 }
@@ -201,23 +219,10 @@ bool ModelBuilder::Bulk::reuse(const grammar::Block& block, const keywords::Card
 bool ModelBuilder::Bulk::reuse_shared(const grammar::Block& block, const keywords::CardSpec& card) {
     std::shared_ptr<const SharedBulkBlock> kept = owner_.shared_->find(owner_.deck_, block, card);
     if (!kept) return false;
-    const auto append = [](const auto& source, auto& target) {
-        target.insert(target.end(), source.begin(), source.end());
-    };
-    std::size_t slot = 0;
-    if (kept->particles) {
-        Particles& p = owner_.model_.particles;
-        slot = p.size();
-        append(kept->ids, p.node), append(kept->part, p.part), append(kept->mass, p.mass);
-        p.volume.resize(slot + kept->ids.size(), kept->volume);
-        p.line.resize(slot + kept->ids.size());
-        for (std::size_t i = 0; i < kept->ids.size(); ++i)
-            p.line[slot + i] = block.first_line + static_cast<std::uint32_t>(i);  // one particle a line
-    } else {
-        Nodes& n = owner_.model_.nodes;
-        slot = n.id.size();
-        append(kept->ids, n.id), append(kept->x, n.x), append(kept->y, n.y), append(kept->z, n.z);
-    }
+    const std::size_t slot =
+        kept->particles ? append_block(owner_.model_.particles, kept->ids, kept->part, kept->mass, 0, kept->ids.size(),
+                                       kept->volume != 0, block.first_line)
+                        : append_block(owner_.model_.nodes, kept->ids, kept->x, kept->y, kept->z, 0, kept->ids.size());
     owner_.decoded_bulk_.push_back(decoded_bulk_block(owner_.deck_, block, card, slot));
     owner_.provenance_.add(std::move(kept));
     return true;
