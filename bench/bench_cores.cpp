@@ -78,8 +78,7 @@ int main(int argc, char** argv) {
         if (threads == 1) one_compute = seconds;
         fmt::print("threads {:3}: compute {:.3f} s ({}), triad {:.1f} GB/s\n", threads, seconds,
                    one_compute > 0 ? fmt::format("{:.2f}x one thread's work rate, {:.0f}% of ideal",
-                                                 threads * one_compute / seconds,
-                                                 100 * one_compute / seconds)
+                                                 threads * one_compute / seconds, 100 * one_compute / seconds)
                                    : std::string("no 1-thread figure"),
                    median(triad));
     }
