@@ -34,9 +34,9 @@ option(SPHDECK_UNITY_BUILD "Compile each target's sources in batches (cmake/spee
 option(SPHDECK_PCH "Precompiled headers for the standard and third-party headers (cmake/speed_up.cmake)" ON)
 set(SPHDECK_UNITY_BATCH_SIZE 32 CACHE STRING "Sources per unity batch (cmake/speed_up.cmake)")
 # A room (and cli/) in one batch where its clashes allow: the largest, grammar/, has 63 files. Each batch
-# more of a room costs its fixed price again (issue 42, measured under the same load: grammar's three
-# batches 64.9 CPU s, one 52.8; model's two 47.6, one 40.7). The tests keep SPHDECK_UNITY_BATCH_SIZE:
-# a test batch of 64 files would be one compile longer than the rest of `make test` together on 2 cores.
+# more of a room costs its fixed price again (issue 42, both compiled side by side under the same load:
+# grammar's three batches 66.1 CPU s, one 58.0; model's two 47.3, one 44.0). The tests keep
+# SPHDECK_UNITY_BATCH_SIZE: their batch of 32 files is already `make test`'s longest compile.
 set(SPHDECK_ROOM_BATCH_SIZE 64 CACHE STRING "Sources per unity batch of a room and of cli/ (cmake/speed_up.cmake)")
 
 # Files that compile alone, with why.
