@@ -1,4 +1,5 @@
-# Build speed, one call a target: sphdeck_speed_up(<target> [HEADERS <header>...] [PCH_FROM <target>]).
+# Build speed, one call a target:
+#   sphdeck_speed_up(<target> [HEADERS <header>...] [PCH_FROM <target>] [BATCH_SIZE <n>])
 #
 # A unity build compiles a target's sources in batches (one generated file that #includes up to 32 of
 # them), so the standard library and the third-party headers are parsed, and their inline functions
@@ -27,13 +28,16 @@
 # is named for what it does in its file (`shown_json`, `evaluate_noh`, `trim_cell`), not with a word that
 # another file of its room also uses for its own (`shown`, `evaluate`, `trim`), and a declaration two files
 # share goes in a header: each room then compiles in as few batches as its size allows (issue 42: the
-# program's 46 batches became 19 at 32 a batch, its compiles 19 % less CPU under the same load).
+# program's 46 batches became 18 at 32 a batch, its compiles 19 % less CPU under the same load; then 15,
+# one a room but lint/'s table of starter checks, at up to 64 a room: SPHDECK_ROOM_BATCH_SIZE below).
 option(SPHDECK_UNITY_BUILD "Compile each target's sources in batches (cmake/speed_up.cmake)" ON)
 option(SPHDECK_PCH "Precompiled headers for the standard and third-party headers (cmake/speed_up.cmake)" ON)
 set(SPHDECK_UNITY_BATCH_SIZE 32 CACHE STRING "Sources per unity batch (cmake/speed_up.cmake)")
-if(SPHDECK_UNITY_BUILD)
-  find_package(Python3 COMPONENTS Interpreter)  # forms the batches (scripts/check_unity_clashes.py)
-endif()
+# A room (and cli/) in one batch where its clashes allow: the largest, grammar/, has 63 files. Each batch
+# more of a room costs its fixed price again (issue 42, both compiled side by side under the same load:
+# grammar's three batches 66.1 CPU s, one 58.0; model's two 47.3, one 44.0). The tests keep
+# SPHDECK_UNITY_BATCH_SIZE: their batch of 32 files is already `make test`'s longest compile.
+set(SPHDECK_ROOM_BATCH_SIZE 64 CACHE STRING "Sources per unity batch of a room and of cli/ (cmake/speed_up.cmake)")
 
 # Files that compile alone, with why.
 set(SPHDECK_UNITY_ALONE
@@ -66,10 +70,10 @@ function(sphdeck_form_unity_batches)
   string(REPLACE ";" "\n" text "${entries}")
   file(WRITE ${list_file} "${text}\n")
   set(status "no Python 3")
-  if(Python3_Interpreter_FOUND)
+  if(Python3_FOUND)  # found by the top-level CMakeLists.txt
     execute_process(
       COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/check_unity_clashes.py
-              --batch-size ${SPHDECK_UNITY_BATCH_SIZE} --source ${PROJECT_SOURCE_DIR}
+              --source ${PROJECT_SOURCE_DIR}
               --cache ${PROJECT_BINARY_DIR}/unity_batches_parsed.pickle --group-targets ${list_file}
       OUTPUT_VARIABLE batches RESULT_VARIABLE status)
   endif()
@@ -91,7 +95,10 @@ function(sphdeck_form_unity_batches)
 endfunction()
 
 function(sphdeck_speed_up target)
-  cmake_parse_arguments(ARG "" "PCH_FROM" "HEADERS" ${ARGN})
+  cmake_parse_arguments(ARG "" "PCH_FROM;BATCH_SIZE" "HEADERS" ${ARGN})
+  if(NOT ARG_BATCH_SIZE)
+    set(ARG_BATCH_SIZE ${SPHDECK_UNITY_BATCH_SIZE})
+  endif()
   get_target_property(sources ${target} SOURCES)
   get_target_property(source_dir ${target} SOURCE_DIR)
   # Files with compile options of their own (the SIMD units, -ffp-contract=off) already stay out of
@@ -119,7 +126,7 @@ function(sphdeck_speed_up target)
     # Formed for every target at once, at the end of the configure (one Python run, not one a target:
     # each run parsed the project's headers again, a third of a fresh configure).
     foreach(path IN LISTS batched)
-      set_property(GLOBAL APPEND PROPERTY SPHDECK_UNITY_SOURCES "${target}|${path}")
+      set_property(GLOBAL APPEND PROPERTY SPHDECK_UNITY_SOURCES "${target}|${ARG_BATCH_SIZE}|${path}")
     endforeach()
     get_property(deferred GLOBAL PROPERTY SPHDECK_UNITY_DEFERRED)
     if(NOT deferred)

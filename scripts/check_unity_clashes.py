@@ -24,6 +24,7 @@ The parse is a tokenizer, not a compiler: it errs towards reporting (a later fil
 of a lent name counts as a borrow), which only makes a batch smaller.
 """
 import argparse
+import functools
 import glob
 import json
 import os
@@ -32,6 +33,7 @@ import re
 import sys
 
 IDENT = re.compile(r"[A-Za-z_]\w*")
+IDENT_START = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz_")  # a token that starts so is one
 TOKEN = re.compile(r'R"(?P<d>[^(\s]*)\((?:.|\n)*?\)(?P=d)"|"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\''
                    r"|//[^\n]*|/\*(?:.|\n)*?\*/|::|->|[A-Za-z_]\w*|\d[\w.']*|\S")
 KEYWORDS = {"const", "constexpr", "consteval", "constinit", "static", "inline", "extern", "thread_local",
@@ -71,30 +73,23 @@ def preprocess(text):
 
 def tokens(text):
     out = []
+    append = out.append
     for m in TOKEN.finditer(text):
-        t = m.group(0)
-        if t.startswith("//") or t.startswith("/*"):
+        t = m.group()
+        c = t[0]
+        if c == "/" and t[1:2] in ("/", "*"):  # a comment
             continue
-        if t[0] in "\"'" or t.startswith('R"'):
-            out.append('"')
+        if c == '"' or c == "'" or (c == "R" and t[1:2] == '"'):  # a string or character literal
+            append('"')
             continue
-        out.append(t)
+        append(t)
     return out
 
 
 def declared_name(stmt):
     """(kind, name) that a namespace-scope statement declares, or None (a definition of a qualified
     name, an operator, a static_assert...)."""
-    toks = list(stmt)
-    while toks and toks[0] == "template":  # template <...>
-        depth, i = 0, 1
-        while i < len(toks):
-            depth += toks[i] == "<"
-            depth -= toks[i] == ">"
-            i += 1
-            if depth == 0:
-                break
-        toks = toks[i:]
+    toks = without_template_head(list(stmt))
     if not toks or toks[0] in ("static_assert", "friend"):
         return None
     if toks[0] == "using":
@@ -155,9 +150,24 @@ def more_declarators(toks):
     return names
 
 
+def without_template_head(toks):
+    """The tokens after a leading `template <...>` (any number of them)."""
+    while toks and toks[0] == "template":
+        depth, i = 0, 1
+        while i < len(toks):
+            depth += toks[i] == "<"
+            depth -= toks[i] == ">"
+            i += 1
+            if depth == 0:
+                break
+        toks = toks[i:]
+    return toks
+
+
 def is_function_head(head):
     """True when the tokens before a namespace-scope `{` open a function body: a ( before any =, and
-    no class, struct, union or enum in front."""
+    no class, struct, union or enum in front (after a `template <class F>`, whose `class` is no class)."""
+    head = without_template_head(head)
     if not head or any(t in ("struct", "class", "union", "enum") for t in head[:3]):
         return False
     for t in head:
@@ -173,20 +183,27 @@ def declarations(toks, spelled=None):
     name, statement text). `spelled` (a dict), when given, gets the names spelled unqualified in each
     namespace (members after . or -> left out)."""
     found = []
-    stack = []  # ("ns", name) or ("block", None)
+    # The namespaces open at this point, ("ns", name) each, and the braces open inside the innermost
+    # (a function body, a class body, an initializer): only namespace scope declares what a file lends.
+    stack = []
+    blocks = 0
+    path = ""  # ns_path(stack), kept as the stack changes
     stmt = []
     i = 0
-    while i < len(toks):
+    n = len(toks)
+    while i < n:
         t = toks[i]
-        if spelled is not None and IDENT.fullmatch(t) and not (i and toks[i - 1] in (".", "->", "::")):
-            spelled.setdefault(ns_path(stack), set()).add(t)
-        at_ns = all(kind == "ns" for kind, _ in stack)
-        if not at_ns:
+        if spelled is not None and t[0] in IDENT_START and not (i and toks[i - 1] in (".", "->", "::")):
+            names = spelled.get(path)
+            if names is None:
+                names = spelled[path] = set()
+            names.add(t)
+        if blocks:
             if t == "{":
-                stack.append(("block", None))
+                blocks += 1
             elif t == "}":
-                stack.pop()
-                if all(kind == "ns" for kind, _ in stack) and is_function_head(stmt[: stmt.index("{")]):
+                blocks -= 1
+                if not blocks and is_function_head(stmt[: stmt.index("{")]):
                     # a function body ends the statement; a class body or an initializer runs to its ;
                     record(found, stack, stmt)
                     stmt = []
@@ -195,23 +212,25 @@ def declarations(toks, spelled=None):
         if t == "namespace" and not stmt:
             j = i + 1
             name = []
-            while j < len(toks) and toks[j] not in ("{", "=", ";"):
+            while j < n and toks[j] not in ("{", "=", ";"):
                 name.append(toks[j])
                 j += 1
-            if j < len(toks) and toks[j] == "{":
+            if j < n and toks[j] == "{":
                 stack.append(("ns", "".join(name)))
+                path = ns_path(stack)
                 i = j + 1
                 continue
             stmt = toks[i:j]
             i = j
             continue
-        if t == "extern" and i + 2 < len(toks) and toks[i + 1] == '"' and toks[i + 2] == "{":
+        if t == "extern" and i + 2 < n and toks[i + 1] == '"' and toks[i + 2] == "{":
             stack.append(("ns", None))  # extern "C" { ... }: transparent
             i += 3
             continue
         if t == "}" and not stmt:
             if stack:
                 stack.pop()
+                path = ns_path(stack)
             i += 1
             continue
         if t == ";":
@@ -221,9 +240,8 @@ def declarations(toks, spelled=None):
             i += 1
             continue
         if t == "{":
-            stmt_before = list(stmt)
-            stack.append(("block", None))
-            stmt = stmt_before + ["{"]
+            blocks = 1
+            stmt = stmt + ["{"]
             i += 1
             continue
         stmt.append(t)
@@ -260,7 +278,7 @@ def identifiers(toks):
     . or -> left out)."""
     plain, qualified = set(), set()
     for k, t in enumerate(toks):
-        if not IDENT.fullmatch(t) or (k and toks[k - 1] in (".", "->")):
+        if t[0] not in IDENT_START or (k and toks[k - 1] in (".", "->")):
             continue
         if k > 1 and toks[k - 1] == "::":
             qualified.add((toks[k - 2], t))
@@ -347,12 +365,15 @@ class Headers:
                 names = re.findall(r"(?:^|, )\s*(\w+)", m.group(2).strip())
                 self.enumerators.setdefault(m.group(1), set()).update(names)
 
-    def same_entity(self, text):
+    def same_entity(self, text, aliases=None):
         """True for `using A::B::N;` where the headers declare N in one namespace only, ending in A::B:
-        a later file that spells N can mean nothing else."""
+        a later file that spells N can mean nothing else. `aliases`: the file's namespace aliases
+        (`namespace rad = grammar::radioss;` makes `using rad::CardSpec;` grammar::radioss's)."""
         parts = [t for t in text.split() if t not in ("using", "::", ";")]
         if len(parts) < 2:
             return False
+        if aliases and parts[0] in aliases:
+            parts = aliases[parts[0]] + parts[1:]
         qualifier, name = "::".join(parts[:-1]), parts[-1]
         where = self.where.get(name, set())
         return len(where) == 1 and (next(iter(where)) + "::").endswith(qualifier + "::")
@@ -372,6 +393,9 @@ def directive_functions(text, functions):
 def lent_names(src, headers):
     """The names a file leaves in sight of the files after it, with what declares them."""
     lent = {}
+    aliases = {name: [t for t in text.split("=", 1)[1].split() if t not in ("::", ";")]
+               for _ns, _anon, _static, kind, name, text in src.decls
+               if kind == "alias" and text.startswith("namespace ")}
     for ns, anon, static, kind, name, text in src.decls:
         if kind == "using-directive":
             lent[text] = (kind, ns, text)
@@ -380,7 +404,7 @@ def lent_names(src, headers):
             for e in headers.enumerators.get(name, ()):
                 lent.setdefault(e, (kind, ns, text))
             continue
-        if kind == "using" and headers.same_entity(text):
+        if kind == "using" and headers.same_entity(text, aliases):
             continue
         if kind == "function" and name == "main" and not ns:
             continue  # found only where nothing else of that name is
@@ -393,6 +417,16 @@ def lent_names(src, headers):
     return lent
 
 
+@functools.lru_cache(maxsize=None)
+def resolved_include(folder, root, inc):
+    """The file `#include "inc"` names from a file in `folder`: beside it, else under root; None."""
+    for base in (folder, root):
+        cand = os.path.normpath(os.path.join(base, inc))
+        if os.path.isfile(cand):
+            return cand
+    return None
+
+
 def project_headers(src_path, cache, root, seen):
     """The project headers a file includes, transitively, in first-inclusion order, those in `seen`
     left out (a header is parsed once a batch: where it is first included)."""
@@ -402,14 +436,11 @@ def project_headers(src_path, cache, root, seen):
         if path not in cache:
             cache[path] = parsed(path)
         for inc in cache[path].includes:
-            for base in (os.path.dirname(path), root):
-                cand = os.path.normpath(os.path.join(base, inc))
-                if os.path.isfile(cand):
-                    if cand not in seen:
-                        seen.add(cand)
-                        visit(cand)
-                        order.append(cand)
-                    break
+            cand = resolved_include(os.path.dirname(path), root, inc)
+            if cand is not None and cand not in seen:
+                seen.add(cand)
+                visit(cand)
+                order.append(cand)
 
     visit(src_path)
     return order
@@ -450,6 +481,11 @@ def lends(src_a, lent, src_b, spelled, qualified, headers):
             for f in sorted(directive_functions(text, headers.functions) & own_functions):
                 found.append((f, kind, ns, text))
             continue
+        if kind == "alias" and text.startswith("namespace "):
+            # A namespace alias is found only before `::` (or in a using-directive): a later file's own
+            # variable of that name hides it, and its own alias of another namespace would not compile.
+            if not any(q == name for q, _n in qualified) and f"namespace {name} " not in src_b.joined + " ":
+                continue
         last = ns.split("::")[-1]
         if not any(name in names and inside(where, ns) for where, names in spelled.items()) \
                 and (last, name) not in qualified:
@@ -508,9 +544,9 @@ def group(sources, batch_size, root, headers=None):
     headers = headers or Headers(root)
     cache = {}
     info = {}
+    headers_of = {}
     for src in sources:
-        seen = set()
-        hdrs = project_headers(src, cache, root, seen)
+        hdrs = headers_of[src] = project_headers(src, cache, root, set())
         spelled, qualified = merge_spelled([cache[src]] + [cache[h] for h in hdrs])
         info[src] = (lent_names(cache[src], headers), spelled, qualified)
 
@@ -525,7 +561,7 @@ def group(sources, batch_size, root, headers=None):
     # inline code is compiled in as few batches as possible.
     def costly(src):
         used = set(cache[src].system_includes)
-        for h in project_headers(src, cache, root, set()):
+        for h in headers_of[src]:
             used.update(cache[h].system_includes)
         return tuple(h for h in COSTLY_HEADERS if h in used)
 
@@ -549,9 +585,9 @@ def main():
     ap.add_argument("--group", nargs="+", metavar="SOURCE",
                     help="print batches for these sources, one `index|path` line a file (cmake/speed_up.cmake)")
     ap.add_argument("--group-targets", metavar="FILE",
-                    help="the same for several targets: FILE has a `target|source` line a file; prints "
-                         "`target|index|path` lines")
-    ap.add_argument("--batch-size", type=int, default=16)
+                    help="the same for several targets: FILE has a `target|batch size|source` line a file; "
+                         "prints `target|index|path` lines")
+    ap.add_argument("--batch-size", type=int, default=16, help="sources per batch (--group)")
     ap.add_argument("--cache", help="a file that keeps the parsed sources between runs (the build tree's)")
     ap.add_argument("--source", default=os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     args = ap.parse_args()
@@ -564,15 +600,17 @@ def main():
                 for src in batch:
                     print(f"{index}|{src}")
         else:
-            sources_of = {}  # target -> its sources, in the order given
+            sources_of, size_of = {}, {}  # target -> its sources, in the order given; its batch size
             with open(args.group_targets, encoding="utf-8") as f:
                 for line in f:
-                    target, sep, path = line.rstrip("\n").partition("|")
-                    if sep:
+                    fields = line.rstrip("\n").split("|", 2)
+                    if len(fields) == 3:
+                        target, size, path = fields
                         sources_of.setdefault(target, []).append(path)
+                        size_of[target] = int(size)
             headers = Headers(root)
             for target, sources in sources_of.items():
-                for index, batch in enumerate(group(sources, args.batch_size, root, headers)):
+                for index, batch in enumerate(group(sources, size_of[target], root, headers)):
                     for src in batch:
                         print(f"{target}|{index}|{src}")
         if args.cache:

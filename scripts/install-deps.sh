@@ -37,9 +37,11 @@ for arg in "$@"; do
     *) echo "usage: scripts/install-deps.sh [--build] [--fuzz]" >&2; exit 2 ;;
   esac
 done
+# One dpkg-query for all of them (it runs before every `make demo` and `make test`).
+installed=" $(dpkg-query -W -f='${Package}:${Status} ' "${packages[@]}" 2>/dev/null | grep -o '[^ ]*:install ok installed' | sed 's/:install ok installed//' | tr '\n' ' ') "
 missing=()
 for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  [[ "$installed" == *" $p "* ]] || missing+=("$p")
 done
 if [ ${#missing[@]} -gt 0 ]; then
   echo "installing: ${missing[*]}"
