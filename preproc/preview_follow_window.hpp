@@ -94,8 +94,9 @@ public:
             const auto lo = std::lower_bound(under_.begin(), under_.end(), m);
             const auto hi = std::upper_bound(lo, under_.end(), m);
             if (lo == under_.begin() && first > 0) return false;  // copies of m below the window?
-            std::vector<T> over(hi, hi + static_cast<std::ptrdiff_t>(std::min<std::size_t>(
-                                             width_, static_cast<std::size_t>(under_.end() - hi))));
+            std::vector<T> over(hi,
+                                hi + static_cast<std::ptrdiff_t>(
+                                         std::min<std::size_t>(width_, static_cast<std::size_t>(under_.end() - hi))));
             over.insert(over.end(), std::min(equal_, width_ - over.size()), pivot_);
             over.insert(over.end(), over_.begin(),
                         over_.begin() + static_cast<std::ptrdiff_t>(std::min(over_.size(), width_ - over.size())));
@@ -113,7 +114,8 @@ public:
             if (hi == over_.end() && last > 0) return false;  // copies of m above the window?
             const auto before = static_cast<std::size_t>(lo - over_.begin());
             std::vector<T> under;  // the largest values below m, in order
-            const std::size_t from_under = std::min(under_.size(), width_ > before + equal_ ? width_ - before - equal_ : 0);
+            const std::size_t from_under =
+                std::min(under_.size(), width_ > before + equal_ ? width_ - before - equal_ : 0);
             under.insert(under.end(), under_.end() - static_cast<std::ptrdiff_t>(from_under), under_.end());
             under.insert(under.end(), std::min(equal_, width_ > before ? width_ - before : 0), pivot_);
             const std::size_t from_over = std::min(before, width_);
@@ -124,7 +126,8 @@ public:
             equal_ = static_cast<std::size_t>(hi - lo);
             under_ = std::move(under), over_ = std::move(over);
         } else {
-            if (under_.size() > width_) under_.erase(under_.begin(), under_.end() - static_cast<std::ptrdiff_t>(width_));
+            if (under_.size() > width_)
+                under_.erase(under_.begin(), under_.end() - static_cast<std::ptrdiff_t>(width_));
             if (over_.size() > width_) over_.resize(width_);
         }
         pivot_ = m;
