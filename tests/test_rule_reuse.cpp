@@ -274,7 +274,7 @@ TEST_CASE("rule reuse: random edits through the editor keep what they may and pu
         workspace.open(uri, deck.second, 1);
         workspace.flush();
         std::vector<std::string> lines = lines_of(deck.second);
-        for (int edit = 0; edit < 30; ++edit) {
+        for (int edit = 0; edit < 16; ++edit) {
             const nlohmann::json change = reuse_edit(lines, random);
             if (change.is_null()) continue;
             CAPTURE(edit);
@@ -294,8 +294,8 @@ TEST_CASE("rule reuse: random edits through the editor keep what they may and pu
         }
     }
     MESSAGE(reused, " families reused, ", rerun, " run again");
-    CHECK(reused > 200);  // most edits leave most families' inputs alone
-    CHECK(rerun > 100);
+    CHECK(reused > 120);  // most edits leave most families' inputs alone
+    CHECK(rerun > 60);
 }
 
 TEST_CASE("rule reuse: findings move with their lines, and those on a line the edit changed are found again") {
