@@ -48,11 +48,18 @@ CheckResult analyse(grammar::RawDeck deck, const CheckOptions& options, const Ch
     lint::RuleContext context(result.model, result.deck, options.rules, result.diagnostics);
     if (options.share) context.use_bulk_facts(options.share->lookups.facts(result.model, provenance));
     if (options.share) context.use_lookups(options.share->lookups.find(result.model, provenance));
+    result.rule_findings.kept = options.rules.keep_preview;
+    result.rule_findings.options = options.rules;
+    // A spliced re-check runs only the rule families whose inputs the edit changed.
+    const CheckResult* reusable = changed ? previous : nullptr;
     if (previous && previous->preview) {
         const bool arrays = options.rules.preview_arrays;
-        lint::run_rules(context, [previous, arrays](const model::Model& model) {
-            return preview_after_edit(*previous, model, arrays);  // kept, followed or new
-        });
+        run_rules_reusing(
+            context,
+            [previous, arrays](const model::Model& model) {
+                return preview_after_edit(*previous, model, arrays);  // kept, followed or new
+            },
+            result.diagnostics, result.rule_findings, reusable, changed);
     } else if (options.share) {
         // The preview another deck of the run computed from the same inputs (engine/shared_preview.hpp).
         const bool arrays = options.rules.preview_arrays, counts = options.rules.keep_preview;
@@ -62,8 +69,13 @@ CheckResult analyse(grammar::RawDeck deck, const CheckOptions& options, const Ch
             });
         });
     } else {
-        lint::run_rules(context);
+        const bool arrays = options.rules.preview_arrays, counts = options.rules.keep_preview;
+        run_rules_reusing(
+            context,
+            [arrays, counts](const model::Model& model) { return lint::compute_rules_preview(model, arrays, counts); },
+            result.diagnostics, result.rule_findings, reusable, changed);
     }
+    if (options.rules.keep_preview) result.rule_lookups = context.lookups();
     if (options.share) options.share->lookups.keep(result.model, provenance, context.lookups());
     lint::point_to_misspelt_keywords(result.diagnostics);
     result.preview = std::move(context.preview);

@@ -12,6 +12,7 @@
 #include "diag/diagnostic.hpp"
 #include "engine/documents.hpp"
 #include "engine/include_graph.hpp"
+#include "engine/rule_reuse.hpp"
 #include "grammar/dyna/reader.hpp"
 #include "grammar/raw_deck.hpp"
 #include "grammar/read_deck.hpp"
@@ -43,6 +44,10 @@ struct CheckResult {
     std::shared_ptr<const preproc::Preview> preview;   // when CheckOptions::rules.keep_preview (else null)
     std::vector<model::DecodedBulkBlock> bulk_blocks;  // what the next re-check may copy (model/bulk_reuse.hpp)
     std::vector<bool> marker_free;  // by file: no suppression directive in it (lint/suppressions.hpp), for a re-check
+    // Each rule family's findings and the rules' id look-ups, for a re-check (engine/rule_reuse.hpp);
+    // kept when CheckOptions::rules.keep_preview.
+    RuleFindings rule_findings;
+    lint::RuleContext::Lookups rule_lookups;
 };
 
 // Checks the deck at `path`; its text and its includes' come from `documents` where they hold the

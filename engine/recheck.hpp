@@ -4,7 +4,8 @@
 // *NODE and *ELEMENT_SPH blocks (copied where unchanged, decoded only around the edit,
 // model/bulk_reuse.hpp) and the geometry preview (neighbour grid, nearest neighbours, neighbour
 // counts: the costliest rules of a big deck), kept or followed when the model's geometry inputs allow
-// (engine/preview_reuse.hpp, engine/preview_after_edit.hpp). The other rules run again in full.
+// (engine/preview_reuse.hpp, engine/preview_after_edit.hpp). After a spliced edit only the rule
+// families whose inputs it changed run again (engine/rule_reuse.hpp, lint/rule_inputs.hpp).
 #pragma once
 
 #include <string>

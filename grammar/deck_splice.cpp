@@ -140,7 +140,11 @@ std::optional<SplicedDeck> splice_edit(const RawDeck& previous, SourceText text,
                    new_end,
                    first_index,
                    last_index,
-                   static_cast<std::uint32_t>(first_index + read.lines.size())};
+                   static_cast<std::uint32_t>(first_index + read.lines.size()),
+                   first_line,
+                   after,
+                   first_line + new_lines,
+                   host_index};
     RawDeck& deck = out.deck;
     SourceFile source;
     source.path = old_file.path;

@@ -24,6 +24,10 @@ struct SplicedLines {
     // The card lines (RawDeck::lines) that went: [first_card, old_card_end) of the old reading,
     // [first_card, new_card_end) of the new one; the lines before are the same, those after moved.
     std::uint32_t first_card = 0, old_card_end = 0, new_card_end = 0;
+    // The physical lines (1-based): [first_line, old_line_end) of the old text became [first_line,
+    // new_line_end) of the new one; the lines after moved by new_line_end - old_line_end.
+    std::uint32_t first_line = 0, old_line_end = 0, new_line_end = 0;
+    std::size_t block = 0;  // the block (RawDeck::blocks) the edit fell in, the same index in both readings
 };
 
 struct SplicedDeck {

@@ -4,6 +4,7 @@
 #include <functional>
 
 #include "lint/rule_context.hpp"
+#include "lint/rule_inputs.hpp"
 
 namespace sphdeck::lint {
 
@@ -27,6 +28,16 @@ void check_preview(RuleContext& c);  // rules_preview.cpp: SPH090, SPH113-SPH115
 // the editor's re-check hands back the last check's preview when the geometry inputs are unchanged.
 using PreviewSource = std::function<std::shared_ptr<const preproc::Preview>(const model::Model&)>;
 void run_rules(RuleContext& context, const PreviewSource& preview_source);
+// run_rules with a say before each family it reaches (in order, after the preview): `run` returns
+// false to leave the family out (the caller put its last findings in its place, engine/rule_reuse.hpp);
+// `ran` follows each family that ran. Either may be empty.
+struct FamilySteps {
+    std::function<bool(RuleFamily)> run;
+    std::function<void(RuleFamily)> ran;
+};
+void run_rules(RuleContext& context, const PreviewSource& preview_source, const FamilySteps& steps);
+// The one family, as run_rules runs it.
+void run_family(RuleContext& context, RuleFamily family);
 void check_radioss(RuleContext& c);  // rules_radioss*.cpp: RAD002-RAD029 (Radioss decks only)
 
 }  // namespace sphdeck::lint

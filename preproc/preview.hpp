@@ -14,6 +14,7 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -35,6 +36,7 @@ struct PreviewOptions {
     // preview needs to follow an edit of particle positions (preproc/preview_follow.hpp).
     bool neighbour_counts = false;
 };
+struct FollowWindows;  // preproc/preview_follow_window.hpp
 struct PartPreview {
     long long part = 0;
     std::size_t particles = 0;
@@ -55,6 +57,8 @@ struct PartPreview {
     double mass_median = 0;                     // median particle mass
     std::string sound_source;                   // where the sound speed comes from ("*EOS_MURNAGHAN", ...)
     std::optional<RadiossPartPreview> radioss;  // Radioss decks only (docs/radioss.md)
+    // A followed preview's values near the medians, for the next followed edit (preview_follow.hpp).
+    std::shared_ptr<const FollowWindows> follow;
 };
 struct ParticlePreview {  // one entry per particle, in model order
     std::vector<double> x, y, z, mass, nn_distance, h;

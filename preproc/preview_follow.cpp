@@ -13,6 +13,7 @@
 
 #include "preproc/nearest_neighbours.hpp"
 #include "preproc/particle_positions.hpp"
+#include "preproc/preview_follow_window.hpp"
 #include "preproc/smoothing_length.hpp"
 #include "preproc/stats_of.hpp"
 
@@ -157,6 +158,7 @@ public:
 
     std::optional<Preview> run(const FollowOptions& options) {
         if (!applies()) return std::nullopt;
+        window_width_ = options.window_width;
         diff_ = diff_particles(before_.particles, now_.particles);
         if (!find_changes(options.max_changed)) return std::nullopt;
         if (!build_arrays()) return std::nullopt;
@@ -289,38 +291,45 @@ private:
         ParticlePreview& b = out_.particles;
         const std::size_t n_new = now_.particles.size();
         const int threads = pass_threads(n_new);
-#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
-        for (std::size_t j = 0; j < n_new; ++j) {
-            if (changed_[j] || !b.located[j]) continue;
-            const std::uint32_t q = b.part[j];
-            const double sj = support(q);
-            const Place p = place_of(at_now_, j);
-            double nearest = b.nn_distance[j];
-            std::uint32_t count = b.neighbours[j];
-            bool search = false;
-            for (const Changed& c : gone_) {
-                const double r2 = squared_distance(p, c.at);
-                const double r = 0.5 * (sj + support(c.part));
-                if (r2 < r * r && !forget_old_places) --count;
-                if (c.part == q && (nearest == 0 || within_reach(r2, nearest))) search = true;
-            }
-            for (const Changed& c : came_) {
-                const double r2 = squared_distance(p, c.at);
-                const double r = 0.5 * (sj + support(c.part));
-                if (r2 < r * r) ++count;
-                if (c.part != q) continue;
-                if (nearest == 0)
-                    search = true;  // no neighbour before, or one at the same place: search again
-                else if (within_reach(r2, nearest))
-                    nearest = std::min(nearest, std::sqrt(r2));
-            }
-            if (count != b.neighbours[j] || nearest != b.nn_distance[j] || search) {
+#pragma omp parallel num_threads(threads) if (threads > 1)
+        {
+            std::vector<std::uint32_t> mine;  // the particles whose values changed
+#pragma omp for schedule(static) nowait
+            for (std::size_t j = 0; j < n_new; ++j) {
+                if (changed_[j] || !b.located[j]) continue;
+                const std::uint32_t q = b.part[j];
+                const double sj = support(q);
+                const Place p = place_of(at_now_, j);
+                double nearest = b.nn_distance[j];
+                std::uint32_t count = b.neighbours[j];
+                bool search = false;
+                for (const Changed& c : gone_) {
+                    const double r2 = squared_distance(p, c.at);
+                    const double r = 0.5 * (sj + support(c.part));
+                    if (r2 < r * r && !forget_old_places) --count;
+                    if (c.part == q && (nearest == 0 || within_reach(r2, nearest))) search = true;
+                }
+                for (const Changed& c : came_) {
+                    const double r2 = squared_distance(p, c.at);
+                    const double r = 0.5 * (sj + support(c.part));
+                    if (r2 < r * r) ++count;
+                    if (c.part != q) continue;
+                    if (nearest == 0)
+                        search = true;  // no neighbour before, or one at the same place: search again
+                    else if (within_reach(r2, nearest))
+                        nearest = std::min(nearest, std::sqrt(r2));
+                }
+                if (count != b.neighbours[j] || nearest != b.nn_distance[j] || search) {
 #pragma omp atomic write
-                touched_[q] = 1;
+                    touched_[q] = 1;
+                    mine.push_back(static_cast<std::uint32_t>(j));
+                }
+                b.neighbours[j] = count;
+                b.nn_distance[j] = nearest;
+                if (search) again_[j] = 1;
             }
-            b.neighbours[j] = count;
-            b.nn_distance[j] = nearest;
-            if (search) again_[j] = 1;
+#pragma omp critical(sphdeck_preview_follow_edited)
+            edited_.insert(edited_.end(), mine.begin(), mine.end());
         }
     }
 
@@ -358,6 +367,7 @@ private:
             if (again_[j] || changed_[j])
                 queries.push_back({static_cast<std::uint32_t>(j), b.part[j], place_of(at_now_, j), changed_[j] != 0});
         if (queries.empty()) return;
+        for (const Query& q : queries) edited_.push_back(q.index);
         const int threads = pass_threads(n_new);
 #pragma omp parallel num_threads(threads) if (threads > 1)
         {
@@ -430,13 +440,30 @@ private:
             }
             const std::span<const double> d = whole ? std::span<const double>(pp.nn_distance) : distances;
             const std::span<const std::uint32_t> c = whole ? std::span<const std::uint32_t>(pp.neighbours) : counts;
-            const Stats nn = statistics_from(d, pv.nn_distance.median);
-            const SmoothingLength h = initial_smoothing_length({section.section, mode, d, volumes, out_.dimension});
+            std::optional<FollowWindows> windows;
+            if (whole) windows = follow_windows(pv, d, c);
+            const auto window_stats = [](const auto& window, const auto& values) {
+                if (auto s = window.stats()) return *s;
+                using T = typename std::decay_t<decltype(values)>::value_type;
+                return stats_of(std::vector<T>(values.begin(), values.end()));
+            };
+            const Stats nn =
+                windows ? window_stats(windows->nn_distance, d) : statistics_from(d, pv.nn_distance.median);
+            // h0 of INI 0 and 1 is CSLH times the largest nearest distance, known from the statistics.
+            const double largest[2] = {nn.max, nn.max};
+            const std::span<const double> for_h0 = windows && d.size() >= 2 ? std::span<const double>(largest) : d;
+            const SmoothingLength h =
+                initial_smoothing_length({section.section, mode, for_h0, volumes, out_.dimension});
             if (h.h0 != pv.h0) return false;
-            if (nn.median != pv.spacing && !spacing_may_move(pv, nn.median, d)) return false;
+            if (nn.median != pv.spacing && !spacing_may_move(pv, nn, d)) return false;
             pv.spacing = nn.median;
             pv.nn_distance = nn;
-            pv.neighbours = statistics_from(c, pv.neighbours.median);
+            pv.neighbours = windows ? window_stats(windows->neighbours, c) : statistics_from(c, pv.neighbours.median);
+            pv.follow = nullptr;
+            if (windows && windows->nn_distance.recentre() && windows->neighbours.recentre()) {
+                windows->nn_distance_data = pp.nn_distance.data(), windows->neighbours_data = pp.neighbours.data();
+                pv.follow = std::make_shared<const FollowWindows>(std::move(*windows));
+            }
             if (masses_changed_) {
                 pv.particles = members;
                 pv.mass_total = mass_total;
@@ -450,10 +477,35 @@ private:
     // changing: it sets the tolerance of the coincident pairs (1e-9 spacing), so no pair may lie within
     // the larger of the two tolerances: no particle of the part has a nearest distance there, and no
     // other part has particles that could stand there (pairs across parts are not searched here).
-    bool spacing_may_move(const PartPreview& pv, double spacing, std::span<const double> distances) const {
+    bool spacing_may_move(const PartPreview& pv, const Stats& nn, std::span<const double> distances) const {
         if (out_.parts.size() > 1) return false;
-        const double band = 1e-9 * std::max(spacing, pv.spacing);
-        return std::none_of(distances.begin(), distances.end(), [&](double d) { return d <= band; });
+        const double band = 1e-9 * std::max(nn.median, pv.spacing);
+        // None of the distances within the band: their smallest is past it.
+        return distances.empty() || nn.min > band;
+    }
+
+    // The part's values near their medians: those the last followed edit kept, moved by the values this
+    // edit changed (a few), or taken in a pass (the first followed edit, particles added or removed).
+    FollowWindows follow_windows(const PartPreview& pv, std::span<const double> d, std::span<const std::uint32_t> c) {
+        const std::size_t width = window_width_;
+        const bool same_particles = diff_.prefix == diff_.old_end && diff_.prefix == diff_.new_end &&
+                                    old_.particles.nn_distance.size() == d.size();
+        const ParticlePreview& before = old_.particles;
+        if (!pv.follow || !same_particles || pv.follow->nn_distance_data != before.nn_distance.data() ||
+            pv.follow->neighbours_data != before.neighbours.data() || pv.follow->nn_distance.size() != d.size() ||
+            pv.follow->neighbours.size() != c.size())
+            return {RankWindow<double>::make(d, pv.nn_distance.median, width),
+                    RankWindow<std::uint32_t>::make(c, static_cast<std::uint32_t>(pv.neighbours.median), width)};
+        FollowWindows w = *pv.follow;
+        std::sort(edited_.begin(), edited_.end());
+        edited_.erase(std::unique(edited_.begin(), edited_.end()), edited_.end());
+        for (const std::uint32_t j : edited_) {
+            w.nn_distance.replace(before.nn_distance[j], d[j]);
+            w.neighbours.replace(before.neighbours[j], c[j]);
+        }
+        w.nn_distance.settle_bounds(d);
+        w.neighbours.settle_bounds(c);
+        return w;
     }
 
     struct SectionOf {
@@ -482,6 +534,8 @@ private:
     std::vector<std::uint8_t> again_;    // per new particle: its nearest neighbour is searched again
     std::vector<std::uint8_t> touched_;  // per part: statistics to take again
     std::vector<long long> part_delta_;  // per part: particles added less removed
+    std::size_t window_width_ = 1024;
+    std::vector<std::uint32_t> edited_;  // new particles whose nearest distance or count may have changed
     bool masses_changed_ = false;
     Preview out_;
 };

@@ -30,6 +30,8 @@ struct FollowOptions {
     // A deliberately wrong update (the old places of moved and removed particles are not taken out of
     // their neighbours' counts): tests prove with it that their comparison catches a wrong update.
     bool forget_old_places = false;
+    // Values kept on each side of a part's medians for the next followed edit (preview_follow_window.hpp).
+    std::size_t window_width = 1024;
 };
 
 // `old` is compute_preview(before) (with neighbour_counts); `before` and `now` have the same
