@@ -17,6 +17,7 @@
 #include "grammar/deck_splice.hpp"
 #include "grammar/read_deck.hpp"
 #include "text/text_file.hpp"
+#include "workspace_check.hpp"
 #include "lsp/uri.hpp"
 #include "lsp/workspace.hpp"
 #include "test_support.hpp"
@@ -50,17 +51,6 @@ std::string join_lines(const std::vector<std::string>& lines) {
         out += lines[i];
     }
     return out;
-}
-
-// The diagnostics a workspace holding only `text` at `path` publishes for it: a full check.
-nlohmann::json full_check(const std::filesystem::path& path, const std::string& text) {
-    nlohmann::json published;
-    lsp::Workspace workspace([&](const nlohmann::json& params) {
-        if (params["uri"] == lsp::uri_from_path(path)) published = params["diagnostics"];
-    });
-    workspace.open(lsp::uri_from_path(path), text, 1);
-    workspace.flush();
-    return published;
 }
 
 // The lines of the bulk blocks (*NODE, *ELEMENT_SPH) and the keyword lines of `lines`.
@@ -279,7 +269,7 @@ TEST_CASE("recheck: random edits in and out of the bulk blocks, across keyword l
             workspace.flush();
             const std::string text = join_lines(lines);
             REQUIRE(*workspace.text(uri) == text);
-            const nlohmann::json full = full_check(path, text);
+            const nlohmann::json full = test::published_by_full_check(path, text);
             REQUIRE(published.size() == full.size());
             for (std::size_t i = 0; i < full.size(); ++i) CHECK(published[i] == full[i]);
         }
@@ -390,7 +380,7 @@ TEST_CASE(
         CAPTURE(change.dump());
         REQUIRE(workspace.change(uri, edit + 2, nlohmann::json::array({change})));
         workspace.flush();
-        const nlohmann::json expected = full_check(path, join_lines(lines));
+        const nlohmann::json expected = test::published_by_full_check(path, join_lines(lines));
         REQUIRE(published.size() == expected.size());
         for (std::size_t i = 0; i < expected.size(); ++i) CHECK(published[i] == expected[i]);
         // The model too: a value copied from the last check where it changed need not change a finding.
@@ -432,17 +422,17 @@ TEST_CASE("recheck: a suppression directive typed into a big block is seen, and 
     lines.insert(lines.begin() + node + 500, directive);
     REQUIRE(workspace.change(uri, 2, change_at(node + 500, node + 500, directive + "\n")));
     workspace.flush();
-    nlohmann::json expected = full_check(path, join_lines(lines));
+    nlohmann::json expected = test::published_by_full_check(path, join_lines(lines));
     CHECK(std::any_of(expected.begin(), expected.end(), [](const nlohmann::json& d) { return d["code"] == "DK026"; }));
     CHECK(published == expected);
     lines[node + 900][12] = lines[node + 900][12] == '9' ? '8' : '9';  // a digit of x
     REQUIRE(workspace.change(uri, 3, change_at(node + 900, node + 901, lines[node + 900] + "\n")));
     workspace.flush();
-    CHECK(published == full_check(path, join_lines(lines)));
+    CHECK(published == test::published_by_full_check(path, join_lines(lines)));
     lines.erase(lines.begin() + node + 500);
     REQUIRE(workspace.change(uri, 4, change_at(node + 500, node + 501, "")));
     workspace.flush();
-    expected = full_check(path, join_lines(lines));
+    expected = test::published_by_full_check(path, join_lines(lines));
     CHECK(std::none_of(expected.begin(), expected.end(), [](const nlohmann::json& d) { return d["code"] == "DK026"; }));
     CHECK(published == expected);
 }

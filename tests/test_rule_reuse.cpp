@@ -21,6 +21,7 @@
 #include "grammar/deck_splice.hpp"
 #include "lint/rule_inputs.hpp"
 #include "text/text_file.hpp"
+#include "workspace_check.hpp"
 #include "lsp/uri.hpp"
 #include "lsp/workspace.hpp"
 
@@ -183,16 +184,6 @@ nlohmann::json reuse_edit(std::vector<std::string>& lines, std::mt19937& random)
     }
 }
 
-// The diagnostics a workspace holding only `text` at `path` publishes for it: a full check.
-nlohmann::json published_by_full_check(const std::filesystem::path& path, const std::string& text) {
-    nlohmann::json published;
-    lsp::Workspace workspace([&](const nlohmann::json& params) {
-        if (params["uri"] == lsp::uri_from_path(path)) published = params["diagnostics"];
-    });
-    workspace.open(lsp::uri_from_path(path), text, 1);
-    workspace.flush();
-    return published;
-}
 }  // namespace
 
 TEST_CASE("rule reuse: an edit reruns the families that read what it changed, the others' findings move") {
@@ -281,7 +272,7 @@ TEST_CASE("rule reuse: random edits through the editor keep what they may and pu
             CAPTURE(change.dump());
             REQUIRE(workspace.change(uri, edit + 2, nlohmann::json::array({change})));
             workspace.flush();
-            const nlohmann::json full = published_by_full_check(path, text_of(lines));
+            const nlohmann::json full = test::published_by_full_check(path, text_of(lines));
             REQUIRE(published.size() == full.size());
             for (std::size_t i = 0; i < full.size(); ++i) CHECK(published[i] == full[i]);
             REQUIRE(workspace.checked_decks().size() == 1);
