@@ -8,6 +8,8 @@
 #include <omp.h>
 #endif
 
+#include "preproc/thread_share.hpp"
+
 namespace sphdeck::preproc {
 
 namespace {
@@ -26,11 +28,6 @@ int bin_threads(std::size_t points) {
 #endif
 }
 
-// Thread t's share [begin, end) of `count` items cut in `threads` equal runs.
-std::pair<std::size_t, std::size_t> share_of(std::size_t count, int t, int threads) {
-    return {count * static_cast<std::size_t>(t) / static_cast<std::size_t>(threads),
-            count * static_cast<std::size_t>(t + 1) / static_cast<std::size_t>(threads)};
-}
 }  // namespace
 
 NeighbourGrid::NeighbourGrid(std::span<const double> x, std::span<const double> y, std::span<const double> z,

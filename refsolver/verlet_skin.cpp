@@ -6,6 +6,8 @@
 #include <omp.h>
 #include <utility>
 
+#include "preproc/thread_share.hpp"
+
 namespace sphdeck::refsolver {
 
 namespace {
@@ -59,12 +61,6 @@ void for_each_point(const Particles& s, const std::vector<SymmetryPlane>& planes
     }
 }
 
-// The part of [0, points) that thread t of `threads` takes.
-std::pair<std::size_t, std::size_t> share_of(std::size_t points, int threads, int t) {
-    const auto team = static_cast<std::size_t>(threads), u = static_cast<std::size_t>(t);
-    return {points * u / team, points * (u + 1) / team};
-}
-
 void merge_skin(DisplacementBox& into, const DisplacementBox& b) {
     for (int a = 0; a < 3; ++a) into.lo[a] = std::min(into.lo[a], b.lo[a]), into.hi[a] = std::max(into.hi[a], b.hi[a]);
 }
@@ -84,7 +80,7 @@ double closing_bound(const Particles& s, const std::vector<SymmetryPlane>& plane
 #pragma omp parallel num_threads(threads) reduction(max : largest) reduction(&& : finite) reduction(min : lo[:3]) \
     reduction(max : hi[:3])
     {
-        const auto [first, last] = share_of(points, omp_get_num_threads(), omp_get_thread_num());
+        const auto [first, last] = preproc::share_of(points, omp_get_thread_num(), omp_get_num_threads());
         Box where;  // of the build positions
         for_each_point(s, planes, first, last, [&](const double at[3], const double d[3]) {
             const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
@@ -124,7 +120,7 @@ double closing_bound(const Particles& s, const std::vector<SymmetryPlane>& plane
 #pragma omp parallel num_threads(binning)
     {
         const int t = omp_get_thread_num();
-        const auto [first, last] = share_of(points, omp_get_num_threads(), t);
+        const auto [first, last] = preproc::share_of(points, t, omp_get_num_threads());
         DisplacementBox* own = cells.data() + static_cast<std::size_t>(t) * count;
         for_each_point(s, planes, first, last, [&](const double at[3], const double d[3]) {
             std::size_t c[3];
