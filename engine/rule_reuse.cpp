@@ -114,8 +114,6 @@ bool only_titles_changed(const CheckResult& previous, const grammar::RawDeck& de
     return true;
 }
 
-bool starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
-
 bool follow_span(text::Span& span, const LineMap& map) {
     if (!span.valid()) return true;
     const auto line = map(span);
@@ -129,7 +127,7 @@ lint::DeckInputs changed_inputs(const CheckResult& previous, const grammar::RawD
                                 const grammar::SplicedLines& changed, const LineMap& map) {
     lint::DeckInputs out;
     const std::string& keyword = deck.blocks[changed.block].keyword;
-    const bool nodes = keyword == "*NODE", particles = starts_with(keyword, "*ELEMENT_SPH");
+    const bool nodes = keyword == "*NODE", particles = keyword.starts_with("*ELEMENT_SPH");
     // The cards as they were, comment lines added or removed beside them: the same values (a bulk
     // block's values come from its cards' text alone; a record is compared to be sure).
     const bool same_cards = map.same_card_count() && map.edited_cards().empty();
