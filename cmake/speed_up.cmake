@@ -1,5 +1,5 @@
 # Build speed, one call a target:
-#   sphdeck_speed_up(<target> [HEADERS <header>...] [PCH_FROM <target>] [BATCH_SIZE <n>])
+#   sphdeck_speed_up(<target> [HEADERS <header>...] [PCH_FROM <target>] [BATCH_SIZE <n>] [NO_PCH])
 #
 # A unity build compiles a target's sources in batches (one generated file that #includes up to 32 of
 # them), so the standard library and the third-party headers are parsed, and their inline functions
@@ -95,7 +95,7 @@ function(sphdeck_form_unity_batches)
 endfunction()
 
 function(sphdeck_speed_up target)
-  cmake_parse_arguments(ARG "" "PCH_FROM;BATCH_SIZE" "HEADERS" ${ARGN})
+  cmake_parse_arguments(ARG "NO_PCH" "PCH_FROM;BATCH_SIZE" "HEADERS" ${ARGN})
   if(NOT ARG_BATCH_SIZE)
     set(ARG_BATCH_SIZE ${SPHDECK_UNITY_BATCH_SIZE})
   endif()
@@ -139,7 +139,9 @@ function(sphdeck_speed_up target)
       target_compile_options(${target} PRIVATE -Wno-array-bounds -Wno-stringop-overflow -Wno-stringop-overread)
     endif()
   endif()
-  if(SPHDECK_PCH)
+  # NO_PCH: a target of one batch gains nothing from a PCH (it would parse the headers once either way)
+  # and would pay the PCH's own compile.
+  if(SPHDECK_PCH AND NOT ARG_NO_PCH)
     if(ARG_PCH_FROM)
       # Several small libraries with the same compile options can share one PCH (some 7 CPU seconds
       # each to build); a mismatch is an error (-Winvalid-pch with -Werror), not a silent slow-down.
