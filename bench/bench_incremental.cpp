@@ -157,10 +157,10 @@ void profile(const std::string& path, const std::string& text) {
     const nlohmann::json open = {{"jsonrpc", "2.0"},
                                  {"method", "textDocument/didOpen"},
                                  {"params", {{"textDocument", {{"uri", lsp::uri_from_path(path)}, {"text", text}}}}}};
-    const std::string body = open.dump();
+    std::string body = open.dump();  // as the server's reader holds it, and gives it up
     auto start = Clock::now();
     double cpu = cpu_ms();
-    auto parsed = lsp::parse_body(body);
+    auto parsed = lsp::parse_body_taking(body);
     std::printf("  %-44s %9.1f ms wall %9.1f ms CPU\n", "didOpen body parsed (JSON)", ms_since(start), cpu_ms() - cpu);
     start = Clock::now(), cpu = cpu_ms();
     std::string copy = (*parsed)["params"]["textDocument"]["text"].get<std::string>();
@@ -254,10 +254,11 @@ int main(int argc, char** argv) {
         for (int run = 0; run < runs; ++run) {
             Editor editor;
             editor.uri = sphdeck::lsp::uri_from_path(big_path);
+            std::string body = open_body;  // the body as the server's reader holds it (it gives it up)
             const auto start = Clock::now();
             const double cpu = cpu_ms();
             {
-                auto message = sphdeck::lsp::parse_body(open_body);
+                auto message = sphdeck::lsp::parse_body_taking(body);
                 auto& text = (*message)["params"]["textDocument"]["text"].get_ref<std::string&>();
                 editor.workspace.open(editor.uri, std::move(text), 1);
             }
