@@ -11,7 +11,8 @@
 //
 //   bench_incremental BIG_DECK SMALL_DECK [RUNS]      (RUNS defaults to 5; decks: gen_big_deck)
 //   BENCH_PROFILE_EDITS=N [BENCH_PROFILE_BULK=1] bench_incremental ...: one open, then N edits of the
-//   title (or of a *NODE x) and nothing else, for a profiler (perf record -g).
+//   title (or of a *NODE x) and nothing else, for a profiler (perf record -g); BENCH_PROFILE_SMALL=1:
+//   N edits of the 10,000-line deck's *NODE x instead.
 //
 // It drives lsp::Workspace in-process (no pipe): bench/bench_lsp.py measures the same over stdio.
 #include <algorithm>
@@ -157,10 +158,10 @@ void profile(const std::string& path, const std::string& text) {
     const nlohmann::json open = {{"jsonrpc", "2.0"},
                                  {"method", "textDocument/didOpen"},
                                  {"params", {{"textDocument", {{"uri", lsp::uri_from_path(path)}, {"text", text}}}}}};
-    const std::string body = open.dump();
+    std::string body = open.dump();  // as the server's reader holds it, and gives it up
     auto start = Clock::now();
     double cpu = cpu_ms();
-    auto parsed = lsp::parse_body(body);
+    auto parsed = lsp::parse_body_taking(body);
     std::printf("  %-44s %9.1f ms wall %9.1f ms CPU\n", "didOpen body parsed (JSON)", ms_since(start), cpu_ms() - cpu);
     start = Clock::now(), cpu = cpu_ms();
     std::string copy = (*parsed)["params"]["textDocument"]["text"].get<std::string>();
@@ -238,6 +239,18 @@ int main(int argc, char** argv) {
     const std::string small_path = std::filesystem::absolute(argv[2]).string();
     try {
         const std::string big = read_all(big_path), small = read_all(small_path);
+        if (std::getenv("BENCH_PROFILE_EDITS") && std::getenv("BENCH_PROFILE_SMALL")) {
+            Editor editor;
+            editor.uri = sphdeck::lsp::uri_from_path(small_path);
+            editor.workspace.open(editor.uri, small, 1);
+            editor.workspace.flush();
+            const std::uint32_t node = line_of(split_lines(small), "*NODE") + 1200;
+            const int n = std::max(1, std::atoi(std::getenv("BENCH_PROFILE_EDITS")));
+            const Timed times = editor.edit(n, node, 8, 24, " 1.00000000e-03", "-1.00000000e-03");
+            std::printf("%d edits of the small deck: median %.2f ms wall, %.2f ms CPU\n", n, median(times.wall),
+                        median(times.cpu));
+            return 0;
+        }
         if (!std::getenv("BENCH_NO_PROFILE")) profile(big_path, big);
 
         const auto big_lines = split_lines(big);
@@ -254,10 +267,11 @@ int main(int argc, char** argv) {
         for (int run = 0; run < runs; ++run) {
             Editor editor;
             editor.uri = sphdeck::lsp::uri_from_path(big_path);
+            std::string body = open_body;  // the body as the server's reader holds it (it gives it up)
             const auto start = Clock::now();
             const double cpu = cpu_ms();
             {
-                auto message = sphdeck::lsp::parse_body(open_body);
+                auto message = sphdeck::lsp::parse_body_taking(body);
                 auto& text = (*message)["params"]["textDocument"]["text"].get_ref<std::string&>();
                 editor.workspace.open(editor.uri, std::move(text), 1);
             }

@@ -1,6 +1,8 @@
 #include "lsp/json_long_strings.hpp"
 
+#include <cstdint>
 #include <cstring>
+#include <utility>
 
 namespace sphdeck::lsp {
 namespace {
@@ -22,12 +24,27 @@ std::size_t string_end(std::string_view body, std::size_t open) {
     }
 }
 
-// Appends the bytes of `raw` (no escapes in it) when JSON allows them in a string: no control
-// character, well-formed UTF-8 (RFC 3629, as nlohmann-json checks it).
-bool append_checked(std::string_view raw, std::string& out) {
+// Whether some byte of the 8 in `word` is a control character (below 0x20) or not ASCII (0x80 and
+// above): exact for "some", which is all the fast path asks (Hacker's Delight, "has less than").
+bool word_needs_a_look(std::uint64_t word) {
+    constexpr std::uint64_t ones = 0x0101010101010101ULL, highs = 0x8080808080808080ULL;
+    return (((word - ones * 0x20) & ~word) | word) & highs;
+}
+
+// Whether JSON allows the bytes of `raw` (no escapes in it) in a string: no control character,
+// well-formed UTF-8 (RFC 3629, as nlohmann-json checks it). Printable ASCII is passed 8 bytes at a time.
+bool plain_bytes_allowed(std::string_view raw) {
     const auto* p = reinterpret_cast<const unsigned char*>(raw.data());
     const auto* end = p + raw.size();
     while (p < end) {
+        if (end - p >= 8) {
+            std::uint64_t word;
+            std::memcpy(&word, p, 8);
+            if (!word_needs_a_look(word)) {
+                p += 8;
+                continue;
+            }
+        }
         const unsigned char c = *p;
         if (c >= 0x20 && c < 0x80) {
             ++p;
@@ -55,34 +72,61 @@ bool append_checked(std::string_view raw, std::string& out) {
         if (length == 0) return false;
         p += length;
     }
-    out.append(raw);
     return true;
 }
 
-// The JSON string body `raw` (between its quotes) decoded; false for what is left to nlohmann-json.
-bool decode(std::string_view raw, std::string& out) {
-    out.reserve(raw.size());
+// What the escape `\c` stands for; 0 for what is left to nlohmann-json (\u: surrogates...) and bad escapes.
+char unescaped(char c) {
+    switch (c) {
+        case '"': return '"';
+        case '\\': return '\\';
+        case '/': return '/';
+        case 'b': return '\b';
+        case 'f': return '\f';
+        case 'n': return '\n';
+        case 'r': return '\r';
+        case 't': return '\t';
+        default: return 0;
+    }
+}
+
+// Whether decode() takes the JSON string body `raw` (between its quotes): allowed bytes, and only
+// the escapes unescaped() knows.
+bool decodable(std::string_view raw) {
     std::size_t at = 0;
     while (at < raw.size()) {
         const void* found = std::memchr(raw.data() + at, '\\', raw.size() - at);
         const std::size_t escape =
             found ? static_cast<std::size_t>(static_cast<const char*>(found) - raw.data()) : raw.size();
-        if (!append_checked(raw.substr(at, escape - at), out)) return false;
+        if (!plain_bytes_allowed(raw.substr(at, escape - at))) return false;
         if (escape == raw.size()) break;
-        if (escape + 1 >= raw.size()) return false;
-        switch (raw[escape + 1]) {
-            case '"': out += '"'; break;
-            case '\\': out += '\\'; break;
-            case '/': out += '/'; break;
-            case 'b': out += '\b'; break;
-            case 'f': out += '\f'; break;
-            case 'n': out += '\n'; break;
-            case 'r': out += '\r'; break;
-            case 't': out += '\t'; break;
-            default: return false;  // \u (surrogates...) and bad escapes: nlohmann-json decides
-        }
+        if (escape + 1 >= raw.size() || unescaped(raw[escape + 1]) == 0) return false;
         at = escape + 2;
     }
+    return true;
+}
+
+// Decodes the decodable() string body at [begin, end) of `buffer` into `buffer` from `to` on (to <=
+// begin: the text only shrinks, so it never overtakes what is still to read); returns its end.
+std::size_t decode_into(char* buffer, std::size_t begin, std::size_t end, std::size_t to) {
+    std::size_t at = begin;
+    while (at < end) {
+        const void* found = std::memchr(buffer + at, '\\', end - at);
+        const std::size_t escape = found ? static_cast<std::size_t>(static_cast<const char*>(found) - buffer) : end;
+        if (to != at) std::memmove(buffer + to, buffer + at, escape - at);
+        to += escape - at;
+        if (escape == end) break;
+        buffer[to++] = unescaped(buffer[escape + 1]);
+        at = escape + 2;
+    }
+    return to;
+}
+
+// The JSON string body `raw` (between its quotes) decoded; false for what is left to nlohmann-json.
+bool decode(std::string_view raw, std::string& out) {
+    if (!decodable(raw)) return false;
+    out.assign(raw);
+    out.resize(decode_into(out.data(), 0, out.size(), 0));
     return true;
 }
 
@@ -114,9 +158,9 @@ void restore(nlohmann::json& value, std::vector<std::string>& strings, std::vect
 }
 }  // namespace
 
-std::optional<LiftedStrings> lift_long_strings(std::string_view body, std::size_t min_length) {
+std::optional<LongStrings> find_long_strings(std::string_view body, std::size_t min_length) {
     if (body.size() < min_length) return std::nullopt;
-    LiftedStrings out;
+    LongStrings out;
     std::size_t copied = 0, at = 0;
     while (true) {
         const void* found = std::memchr(body.data() + at, '"', body.size() - at);
@@ -129,18 +173,54 @@ std::optional<LiftedStrings> lift_long_strings(std::string_view body, std::size_
         std::size_t next = end;
         while (next < body.size() && is_space(body[next])) ++next;
         if (next < body.size() && body[next] == ':') continue;  // an object's key
-        std::string decoded;
-        if (!decode(body.substr(open + 1, end - open - 2), decoded)) return std::nullopt;
+        if (!decodable(body.substr(open + 1, end - open - 2))) return std::nullopt;
         out.rest.append(body.substr(copied, open - copied));
         out.rest += '"';
         out.rest.append(kPlaceholder);
-        out.rest += std::to_string(out.strings.size());
+        out.rest += std::to_string(out.ranges.size());
         out.rest += '"';
         copied = end;
+        out.ranges.emplace_back(open + 1, end - 1);
+    }
+    if (out.ranges.empty()) return std::nullopt;
+    out.rest.append(body.substr(copied));
+    return out;
+}
+
+std::optional<LiftedStrings> lift_long_strings(std::string_view body, std::size_t min_length) {
+    auto found = find_long_strings(body, min_length);
+    if (!found) return std::nullopt;
+    LiftedStrings out{std::move(found->rest), {}};
+    for (const auto& [begin, end] : found->ranges) {
+        std::string decoded;
+        decode(body.substr(begin, end - begin), decoded);  // decodable: find_long_strings checked it
         out.strings.push_back(std::move(decoded));
     }
-    if (out.strings.empty()) return std::nullopt;
-    out.rest.append(body.substr(copied));
+    return out;
+}
+
+bool only_placeholders_escape_u(const LongStrings& found) {
+    std::size_t escapes = 0;
+    for (std::size_t at = found.rest.find("\\u"); at != std::string::npos; at = found.rest.find("\\u", at + 2))
+        ++escapes;
+    return escapes == found.ranges.size();
+}
+
+std::vector<std::string> take_long_strings(std::string& body, const LongStrings& found) {
+    std::vector<std::string> out(found.ranges.size());
+    std::size_t longest = 0;
+    for (std::size_t i = 0; i < found.ranges.size(); ++i)
+        if (found.ranges[i].second - found.ranges[i].first > found.ranges[longest].second - found.ranges[longest].first)
+            longest = i;
+    for (std::size_t i = 0; i < found.ranges.size(); ++i)  // while the body is whole
+        if (i != longest) {
+            const auto [begin, end] = found.ranges[i];
+            decode(std::string_view(body).substr(begin, end - begin), out[i]);
+        }
+    const auto [begin, end] = found.ranges[longest];
+    body.resize(decode_into(body.data(), begin, end, 0));
+    out[longest] = std::move(body);
+    body = std::string();
     return out;
 }
 

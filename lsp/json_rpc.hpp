@@ -82,6 +82,10 @@ private:
 
 // Parses a body; nullopt when it is not JSON or nests deeper than the bound.
 std::optional<nlohmann::json> parse_body(std::string_view body);
+// The same for a body the caller gives up: a long string (a didOpen's document) is decoded into the
+// body's own buffer, so a 100 MB text is not held twice; `body` is left empty then. When nullopt,
+// `body` is unchanged.
+std::optional<nlohmann::json> parse_body_taking(std::string& body);
 
 // Writes one message with its Content-Length header and flushes. Text that is not UTF-8 (deck bytes
 // in a diagnostic message) is replaced, never an exception.

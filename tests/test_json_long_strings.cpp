@@ -100,6 +100,38 @@ TEST_CASE("json long strings: random texts give nlohmann-json's answer") {
         const auto got = lsp::parse_body(body);
         REQUIRE(got.has_value() == expected.has_value());
         if (got) CHECK(*got == *expected);
+        std::string taken = body;  // the server's way: the text takes the body's buffer
+        const auto got_taking = lsp::parse_body_taking(taken);
+        REQUIRE(got_taking.has_value() == expected.has_value());
+        if (got_taking) CHECK(*got_taking == *expected);
+        if (!got_taking) CHECK(taken == body);  // left whole for the reader's resync
+    }
+}
+
+TEST_CASE("json long strings: a body given up lends its buffer to the document, and only then") {
+    const std::string lines = repeated(R"(       1 -4.94938015e-02 caf\u00e9\n)", 100000);
+    const std::string plain = repeated(R"(       1 -4.94938015e-02 \"q\" caf)"
+                                       "\xC3\xA9"
+                                       R"(\n)",
+                                       100000);
+    std::string body = did_open(plain);
+    const char* buffer = body.data();
+    auto parsed = lsp::parse_body_taking(body);
+    REQUIRE(parsed);
+    CHECK(*parsed == *reference(did_open(plain)));
+    CHECK(body.empty());
+    CHECK((*parsed)["params"]["textDocument"]["text"].get_ref<const std::string&>().data() == buffer);
+    // Left to nlohmann-json, the body unchanged when it is not JSON: a \u in the text, a short string
+    // that looks like a placeholder (parsed whole: it is no placeholder), a repeated key.
+    for (const std::string& text :
+         {did_open(lines), R"({"b":"\u0000sphdeck-long-string:0","a":")" + plain + R"("})",
+          R"({"a":")" + plain + R"(","a":")" + plain + R"(x"})", did_open(plain) + ",", did_open(plain + "\x01")}) {
+        std::string taken = text;
+        const auto expected = reference(text);
+        const auto got = lsp::parse_body_taking(taken);
+        REQUIRE(got.has_value() == expected.has_value());
+        if (got) CHECK(*got == *expected);
+        if (!got) CHECK(taken == text);
     }
 }
 }  // namespace test_json_long_strings_cpp
