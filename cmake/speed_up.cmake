@@ -159,15 +159,15 @@ function(sphdeck_speed_up target)
   endif()
 endfunction()
 
-# A lighter optimisation level for code no user waits on (issue 42): the test code, the command line's
-# option handling (cli/), the MCP server and the verification cases at -O1; the rooms that read, check,
+# A lighter optimisation level for code no user waits on (issue 42): the test code at -O0
+# (CMakeLists.txt), the command line's option handling (cli/), the MCP server, the verification cases
+# and the Python module at -O1; the rooms that read, check,
 # preview and solve keep the build type's -O3. Measured a batch at a time: four test files 27.1 CPU s at
 # -O3, 17.3 at -O1; the command line's larger batch (CLI11's templates) 55.4 at -O3, 48.8 at -O2, 42.5 at
 # -O1; the MCP room 27.0, 24.8, 17.8. -O2 saves little (most of a batch's time is instantiating the
 # headers' templates, which the level does not change), so what users wait on keeps -O3. -O2 and -O1 can
 # reuse a PCH built at -O3 (GCC compares macros, and __OPTIMIZE__ is the same); -Os and -O0 could not.
-# Release builds only (the sanitizer trees keep -O0). The test build at -O1 passed with -Werror, and its
-# test cases and every deck test ran no slower. -DSPHDECK_LIGHT_OPTIMISATION=OFF: everything at -O3.
+# Release builds only (the sanitizer trees keep -O0). -DSPHDECK_LIGHT_OPTIMISATION=OFF: everything at -O3.
 option(SPHDECK_LIGHT_OPTIMISATION "Compile code no user waits on at -O1 in Release builds (cmake/speed_up.cmake)" ON)
 function(sphdeck_optimise target level)
   if(SPHDECK_LIGHT_OPTIMISATION)
