@@ -14,6 +14,7 @@
 #include "preproc/preview.hpp"
 #include "preproc/smoothing_length.hpp"
 #include "preproc/sound_speed.hpp"
+#include "preproc/stats_of.hpp"
 #include "preproc/time_step.hpp"
 #include "test_support.hpp"
 
@@ -183,6 +184,27 @@ void check_counts_against_brute_force(const Cloud& c, double support_one = 2.4, 
         CHECK(grid.count == brute);
         CHECK(grid.coincident.empty());
     }
+}
+
+TEST_CASE("preview: statistics of counts (counted) and of distances (partly sorted) are min, median, max") {
+    std::mt19937 rng(4);
+    for (std::size_t size : {1u, 2u, 7u, 1000u, 1001u})
+        for (unsigned span : {1u, 40u, 300u, 100000u}) {  // the last one too wide to count
+            CAPTURE(size);
+            CAPTURE(span);
+            std::vector<std::uint32_t> counts(size);
+            for (auto& c : counts) c = 17 + rng() % span;
+            std::vector<std::uint32_t> sorted = counts;
+            std::sort(sorted.begin(), sorted.end());
+            const std::size_t mid = size / 2;
+            const double median = size % 2 ? sorted[mid] : 0.5 * (double(sorted[mid]) + double(sorted[mid - 1]));
+            const preproc::Stats s = preproc::stats_of(counts);
+            CHECK(s.min == sorted.front());
+            CHECK(s.max == sorted.back());
+            CHECK(s.median == median);
+            const std::vector<double> as_doubles(counts.begin(), counts.end());
+            CHECK(preproc::stats_of(as_doubles).median == median);
+        }
 }
 
 TEST_CASE("preview: neighbour counts on exact lattices, pairs at the support and on cell faces") {
