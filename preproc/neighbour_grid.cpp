@@ -78,16 +78,6 @@ NeighbourGrid::NeighbourGrid(std::span<const double> x, std::span<const double> 
         bin_dense(x, y, z);
 }
 
-NeighbourGrid::Cell NeighbourGrid::cell_of(double px, double py, double pz) const {
-    Cell c{};
-    const double p[3] = {px, py, pz};
-    for (int a = 0; a < 3; ++a) {
-        const double f = std::floor((p[a] - origin_[a]) * inv_cell_);
-        c[a] = !(f > 0) ? 0 : f >= n_[a] - 1 ? n_[a] - 1 : static_cast<std::uint32_t>(f);  // NaN → 0
-    }
-    return c;
-}
-
 // A counting sort by cell, stable (points of a cell in input order), the same on any number of
 // threads: each thread owns a run of cells and scans every point for those in its run, so no
 // two threads write one counter or one slot, and nothing per thread and cell is allocated.
@@ -235,20 +225,6 @@ double NeighbourGrid::block_cells(Cell c, std::uint32_t reach) const {
     for (int a = 0; a < 3; ++a)
         cells *= std::min<double>(double(c[a]) + reach, n_[a] - 1) - std::max<double>(double(c[a]) - reach, 0) + 1;
     return cells;
-}
-
-NeighbourGrid::BlockBounds NeighbourGrid::block_bounds(Cell c, std::uint32_t reach) const {
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    BlockBounds b{{-inf, -inf, -inf}, {inf, inf, inf}, 0.0};
-    for (int a = 0; a < 3; ++a) {
-        if (c[a] > reach)  // cells exist below the block
-            b.lower[a] = origin_[a] + (static_cast<double>(c[a]) - reach) * cell_;
-        if (c[a] + reach < n_[a] - 1)  // and above it
-            b.upper[a] = origin_[a] + (static_cast<double>(c[a]) + reach + 1) * cell_;
-    }
-    // A margin for the rounding of cell boundaries: never claim more than is certain.
-    b.margin = 1e-9 * cell_;
-    return b;
 }
 
 double NeighbourGrid::crowding() const {

@@ -51,8 +51,18 @@ public:
         return hashed_ ? Range{start_[o], start_[o + 1]} : Range{start_[occupied_[o]], start_[occupied_[o] + 1]};
     }
 
-    // Cell coordinates of a point, clamped into the grid.
-    Cell cell_of(double px, double py, double pz) const;
+    // Cell coordinates of a point: floor((p - origin) / cell) clamped into the grid, NaN to 0.
+    // Without std::floor (a library call in the x86-64 baseline, a third of the binning): a value
+    // of at least 1 truncates to its floor, and one below 1 is cell 0 either way.
+    Cell cell_of(double px, double py, double pz) const {
+        Cell c{};
+        const double p[3] = {px, py, pz};
+        for (int a = 0; a < 3; ++a) {
+            const double f = (p[a] - origin_[a]) * inv_cell_;
+            c[a] = !(f >= 1) ? 0 : f >= n_[a] - 1 ? n_[a] - 1 : static_cast<std::uint32_t>(f);
+        }
+        return c;
+    }
 
     // The points of cells x0..x1 (x0 <= x1 < cells()[0]) of row (iy, iz): one sorted range.
     Range row_range(std::uint32_t x0, std::uint32_t x1, std::uint32_t iy, std::uint32_t iz) const {
@@ -92,8 +102,13 @@ public:
         std::vector<Range> ranges(rows.size());
         std::vector<std::size_t> cursor(rows.size(), 0);
         const std::size_t count = occupied();
+        Cell c{};
         for (std::size_t o = begin; o < end_cell; ++o) {
-            const Cell c = occupied_cell(o);
+            // The next cell along x when the key is one more (no division to decode it).
+            if (o > begin && occupied_[o] == occupied_[o - 1] + 1 && c[0] + 1 < n_[0])
+                ++c[0];
+            else
+                c = occupied_cell(o);
             for (std::size_t r = 0; r < rows.size(); ++r) {
                 const RowOffset& row = rows[r];
                 const long long y = static_cast<long long>(c[1]) + row.dy, z = static_cast<long long>(c[2]) + row.dz;
@@ -150,7 +165,19 @@ public:
             return clear - margin;
         }
     };
-    BlockBounds block_bounds(Cell c, std::uint32_t reach) const;
+    BlockBounds block_bounds(Cell c, std::uint32_t reach) const {
+        constexpr double inf = std::numeric_limits<double>::infinity();
+        BlockBounds b{{-inf, -inf, -inf}, {inf, inf, inf}, 0.0};
+        for (int a = 0; a < 3; ++a) {
+            if (c[a] > reach)  // cells exist below the block
+                b.lower[a] = origin_[a] + (static_cast<double>(c[a]) - reach) * cell_;
+            if (c[a] + reach < n_[a] - 1)  // and above it
+                b.upper[a] = origin_[a] + (static_cast<double>(c[a]) + reach + 1) * cell_;
+        }
+        // A margin for the rounding of cell boundaries: never claim more than is certain.
+        b.margin = 1e-9 * cell_;
+        return b;
+    }
     bool block_covers_grid(Cell c, std::uint32_t reach) const;
     // Cells in the block of `reach` around c, clipped to the grid.
     double block_cells(Cell c, std::uint32_t reach) const;

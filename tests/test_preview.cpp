@@ -14,6 +14,7 @@
 #include "preproc/preview.hpp"
 #include "preproc/smoothing_length.hpp"
 #include "preproc/sound_speed.hpp"
+#include "preproc/stats_of.hpp"
 #include "preproc/time_step.hpp"
 #include "test_support.hpp"
 
@@ -172,19 +173,60 @@ TEST_CASE("preview: grid nearest neighbours equal all pairs on jittered and rand
     CHECK(a.distance == b.distance);
 }
 
+// Grid counts against brute force, one support for all and two parts' supports.
+void check_counts_against_brute_force(const Cloud& c, double support_one = 2.4, double support_two = 3.6) {
+    std::vector<double> uniform(c.size(), support_one), varied(c.size()), tolerance(c.size(), 0.0);
+    for (std::size_t i = 0; i < c.size(); ++i) varied[i] = i % 3 ? support_one : support_two;
+    for (const auto* support : {&uniform, &varied}) {
+        const auto grid = preproc::count_neighbours(c.x, c.y, c.z, *support, tolerance);
+        const auto brute = preproc::count_neighbours_all_pairs(c.x, c.y, c.z, *support);
+        CHECK(grid.sample_stride == 1);
+        CHECK(grid.count == brute);
+        CHECK(grid.coincident.empty());
+    }
+}
+
+TEST_CASE("preview: statistics of counts (counted) and of distances (partly sorted) are min, median, max") {
+    std::mt19937 rng(4);
+    for (std::size_t size : {1u, 2u, 7u, 1000u, 1001u})
+        for (unsigned span : {1u, 40u, 300u, 100000u}) {  // the last one too wide to count
+            CAPTURE(size);
+            CAPTURE(span);
+            std::vector<std::uint32_t> counts(size);
+            for (auto& c : counts) c = 17 + rng() % span;
+            std::vector<std::uint32_t> sorted = counts;
+            std::sort(sorted.begin(), sorted.end());
+            const std::size_t mid = size / 2;
+            const double median = size % 2 ? sorted[mid] : 0.5 * (double(sorted[mid]) + double(sorted[mid - 1]));
+            const preproc::Stats s = preproc::stats_of(counts);
+            CHECK(s.min == sorted.front());
+            CHECK(s.max == sorted.back());
+            CHECK(s.median == median);
+            const std::vector<double> as_doubles(counts.begin(), counts.end());
+            CHECK(preproc::stats_of(as_doubles).median == median);
+        }
+}
+
+TEST_CASE("preview: neighbour counts on exact lattices, pairs at the support and on cell faces") {
+    // Supports of whole spacings put pairs exactly at the support (not counted: r < support) and
+    // points on the cell faces, where the corner rows a point's support cannot reach are left out
+    // (issue 40): the counts must not move. Far from the origin, the binning rounds the most.
+    for (double offset : {0.0, 1.0e6}) {
+        CAPTURE(offset);
+        Cloud c = jittered(9, 3, 0.0, 1);
+        for (double* axis : {c.x.data(), c.y.data(), c.z.data()})
+            for (std::size_t i = 0; i < c.size(); ++i) axis[i] += offset;
+        check_counts_against_brute_force(c, 2.0, 3.0);
+        check_counts_against_brute_force(c, 1.5, std::sqrt(2.0));
+    }
+}
+
 TEST_CASE("preview: neighbour counts equal brute force") {
     for (int dims : {2, 3}) {
         CAPTURE(dims);
         const Cloud c = jittered(dims == 3 ? 10 : 25, dims, 0.3, 7);
-        std::vector<double> uniform(c.size(), 2.4), varied(c.size()), tolerance(c.size(), 0.0);
-        for (std::size_t i = 0; i < c.size(); ++i) varied[i] = i % 3 ? 2.4 : 3.6;  // two parts' supports
-        for (const auto* support : {&uniform, &varied}) {
-            const auto grid = preproc::count_neighbours(c.x, c.y, c.z, *support, tolerance);
-            const auto brute = preproc::count_neighbours_all_pairs(c.x, c.y, c.z, *support);
-            CHECK(grid.sample_stride == 1);
-            CHECK(grid.count == brute);
-            CHECK(grid.coincident.empty());
-        }
+        check_counts_against_brute_force(c);
+        std::vector<double> uniform(c.size(), 2.4), tolerance(c.size(), 0.0);
         // Over budget: only every k-th point is counted, the rest copy a nearby count.
         const auto sampled = preproc::count_neighbours(c.x, c.y, c.z, uniform, tolerance, 1000.0);
         CHECK(sampled.sample_stride > 1);

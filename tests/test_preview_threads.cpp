@@ -1,6 +1,6 @@
 // The preview on several threads and without copies (issue 30): the grid, the nearest neighbours
-// and the counts are the same on 1 and 4 threads, bit for bit; the rules' preview (no per-particle
-// arrays) and a model whose particles are not in node order give the same numbers.
+// and the counts are the same on 1 thread as on 2, 4 and 16 (issue 40), bit for bit; the rules' preview (no
+// per-particle arrays) and a model whose particles are not in node order give the same numbers.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -116,20 +116,32 @@ TEST_CASE("preview threads: the grid bins the same on 1 and 4 threads") {
     }
 }
 
-TEST_CASE("preview threads: nearest neighbours and counts are the same on 1 and 4 threads") {
+TEST_CASE("preview threads: nearest neighbours and counts are the same on 1, 2, 4 and 16 threads") {
     const Points p = cloud(24, 2, 5);  // 13,824 lattice points and 1,600 clustered
     const auto nn = [&] { return preproc::nearest_neighbours_grid(p.x, p.y, p.z); };
-    const preproc::NearestNeighbours a = with_threads(1, nn), b = with_threads(4, nn);
-    CHECK(a.distance == b.distance);
-    CHECK(a.index == b.index);
-    const std::vector<std::uint32_t> group(p.x.size(), 0);
-    const double support[] = {2.4}, tolerance[] = {1e-9};
-    const auto counts = [&] {
-        return preproc::count_neighbours(p.x, p.y, p.z, preproc::GroupedRadii{group, support, tolerance});
+    // Two groups of different supports (the mixed counting loop) and one for all (the uniform one).
+    std::vector<std::uint32_t> one_group(p.x.size(), 0), two_groups(p.x.size(), 0);
+    for (std::size_t i = 0; i < p.x.size(); ++i) two_groups[i] = p.x[i] < 12.0 ? 0 : 1;
+    const double support[] = {2.4, 1.9}, tolerance[] = {1e-9, 1e-9};
+    const auto counts = [&](const std::vector<std::uint32_t>& group) {
+        return [&] {
+            return preproc::count_neighbours(p.x, p.y, p.z, preproc::GroupedRadii{group, support, tolerance});
+        };
     };
-    const preproc::NeighbourCounts c = with_threads(1, counts), d = with_threads(4, counts);
-    CHECK(c.count == d.count);
-    CHECK(c.coincident == d.coincident);
+    const preproc::NearestNeighbours a = with_threads(1, nn);
+    const preproc::NeighbourCounts c = with_threads(1, counts(one_group)), m = with_threads(1, counts(two_groups));
+    for (int threads : {2, 4, 16}) {
+        CAPTURE(threads);
+        const preproc::NearestNeighbours b = with_threads(threads, nn);
+        CHECK(a.distance == b.distance);
+        CHECK(a.index == b.index);
+        const preproc::NeighbourCounts d = with_threads(threads, counts(one_group));
+        CHECK(c.count == d.count);
+        CHECK(c.coincident == d.coincident);
+        const preproc::NeighbourCounts e = with_threads(threads, counts(two_groups));
+        CHECK(m.count == e.count);
+        CHECK(m.coincident == e.coincident);
+    }
 }
 
 TEST_CASE("preview threads: positions in place, in node order or not, and the rules' preview without arrays") {
