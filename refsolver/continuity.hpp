@@ -7,28 +7,20 @@
 //   positions say. For equal masses it is the common sum_j m_j v_ij . grad W; unlike that one it has
 //   no jump where the masses jump on an even lattice (Sod's contact, 8:1), where the heavy neighbours'
 //   masses would drive a light particle's density negative.
-// - FORM 1, the volume-weighted form:  d rho_i / dt = rho_i sum_j w_ij v_ij . g_ij,
-//   g_ij the renormalised gradient (renormalisation.hpp), w_ij the volume neighbour j lends:
-//   LS-DYNA decks: w_ij = m_j / rho_ij, rho_ij = (rho_i + rho_j) / 2 (pair_mean_volume below);
-//   OpenRadioss decks: w_ij = V_j = m_j / rho_j, their engine's form (spdens.F).
-//   The correction B_i = -sum_j V_j ... is built with the neighbours' volumes V_j; where neighbours
-//   share one density w_ij = V_j and the divergence of a linear velocity field is exact, which is
-//   what FORM 1 is for.
+// - FORM 1, the volume-weighted form:  d rho_i / dt = rho_i sum_j (m_j / rho_j) v_ij . g_ij,
+//   g_ij the renormalised gradient (renormalisation.hpp). The correction B_i = -sum_j V_j ... is built
+//   with the neighbours' volumes V_j, and with the same weights the divergence of a linear velocity
+//   field is exact, which is what FORM 1 is for.
 // Why FORM 0 changed (Nov 2026, docs/verification.md §5): the volume-weighted form is the derivative
 // of no density of the positions. It integrates the kernel-smoothed divergence along the particle's
 // path, and a particle slows down as it crosses a shock, so it lingers where the kernel still sees the
 // shock's compression behind it and ends too dense by the same share at every resolution (Noh,
 // exact 16: 20.5 / 21.4 at 50 x 50 / 100 x 100 with FORM 0, 15.5 / 16.0 with the number density).
-// FORM 1 kept it until Nov 2026 (Noh 17.3 / 17.8): with the number density the 8 hot particles of the
-// Sedov decks (FORM 1), 1,000 times hotter than their neighbours, are thinned to a negative density.
-// Why FORM 1 of LS-DYNA decks lends m_j / rho_ij (Nov 2026, issue 41 item 4, docs/verification.md §5,
-// fourth round): rho_ij is the pair mean density of the Monaghan viscosity (viscosity.hpp; *CONTROL_SPH
-// manual Remark 4). A particle behind a shock, denser than its neighbours ahead, borrows less than their
-// own volumes, so it integrates less of the compression the kernel still sees ahead: the drift above
-// goes (Noh 15.1 at 100 x 100, exact 16, against 17.8). A particle far thinner than its neighbours (the
-// Sedov decks' hot core) borrows at most 2 V_j, so its rate stays proportional to rho_i and cannot take
-// it through zero, unlike the number density's V_i. No free parameter: a blend of V_j and m_j / rho_ij
-// (branch h-noh41b) could place Noh and Sedov anywhere between, a fit to the gates.
+// FORM 1 keeps it (Noh 17.3 / 17.8): with the number density the 8 hot particles of the Sedov decks
+// (FORM 1), 1,000 times hotter than their neighbours, are thinned to a negative density and thrown out.
+// Lending the pair's mean density, m_j / rho_ij, instead of V_j takes Noh's drift out (15.1 at 100 x 100)
+// but leaves the density variable 18 % below the positions at Sedov's shell peak, 25 % low at N = 100
+// (gate 20 %): §5's fourth round, not adopted.
 #pragma once
 
 namespace sphdeck::refsolver {
@@ -47,13 +39,8 @@ inline FormValues form_values(bool volume_weighted, double p, double rho, double
     return {p * volume * volume / omega, m_or_zero > 0 ? 1.0 / m : 0.0};
 }
 
-// FORM 1 of LS-DYNA decks: the volume w_ij neighbour j lends i's sums, m_j / rho_ij (above). A
-// neighbour that does not interact (m_j = 0 in the packed particles) lends nothing.
-inline double pair_mean_volume(double m_j, double rho_i, double rho_j) { return 2 * m_j / (rho_i + rho_j); }
-
-// One neighbour's share of d rho_i / dt before the factor continuity_factor: w_ij v_ij . g_ij (FORM 1,
-// s7_j = w_ij: V_j or pair_mean_volume), v_ij . g_ij (FORM 0). A neighbour that does not interact (s7 = 0
-// in both forms) adds nothing.
+// One neighbour's share of d rho_i / dt before the factor continuity_factor: V_j v_ij . g_ij (FORM 1),
+// v_ij . g_ij (FORM 0). A neighbour that does not interact (s7 = 0 in both forms) adds nothing.
 template <bool VolumeWeighted>
 inline double continuity_term(double s7_j, double v_dot_g) {
     if constexpr (VolumeWeighted) return s7_j * v_dot_g;

@@ -2,8 +2,7 @@
 // momentum.hpp:
 //   de_i/dt = (p_i / rho_i^2) d rho_i/dt + 1/2 sum_j m_j Pi_ij v_ij . g_ij
 //           = (p_i V_i / rho_i) sum_j v_ij . g_ij + ...         (FORM 0, number density)
-//           = (p_i / rho_i) sum_j w_ij v_ij . g_ij + ...        (FORM 1, volume-weighted; w_ij
-//             continuity.hpp's volume j lends: V_j, or m_j / rho_ij on LS-DYNA decks)
+//           = (p_i / rho_i) sum_j V_j v_ij . g_ij + ...         (FORM 1, volume-weighted)
 // The first term is each particle's own pdV work (as an EOS integrates energy from its own volume
 // change: de = -p dv, v = 1/rho), the second splits the viscous work of each pair equally (Monaghan
 // 1992, Annu. Rev. Astron. Astrophys. 30, 543; literature, cited from general knowledge). Summed
@@ -17,8 +16,7 @@
 
 namespace sphdeck::refsolver {
 
-// j's share of de_i, from i's and j's s6, s7 (continuity.hpp FormValues; s7_j = 0: j does not interact;
-// FORM 1: s7_j = w_ij, the volume j lends).
+// j's share of de_i, from i's and j's s6, s7 (continuity.hpp FormValues; s7_j = 0: j does not interact).
 template <bool VolumeWeighted>
 inline double energy_term(double s6_i, double s7_i, double s7_j, double m_j, double pi_ij, double v_dot_g) {
     const double own_work = VolumeWeighted ? s7_j * s6_i : s7_j > 0 ? s6_i * s7_i : 0.0;

@@ -4,9 +4,7 @@
 //   dv_i/dt = -sum_j m_j (A_ij + Pi_ij) g_ij + a_body, with
 //   FORM 0 (number density):   A_ij = (p_i V_i^2 / Omega_i + p_j V_j^2 / Omega_j) / (m_i m_j),   V = m / rho,
 //                              Omega the grad-h factor (grad_h.hpp; 1 on most particles)
-//   FORM 1 (volume-weighted):  A_ij = (p_i / rho_i) w_ij / m_j + (p_j / rho_j) w_ji / m_i, w_ij continuity.hpp's
-//                              volume j lends i: V_j (OpenRadioss decks) gives (p_i + p_j) / (rho_i rho_j),
-//                              m_j / rho_ij (LS-DYNA decks) gives (p_i / rho_i + p_j / rho_j) / rho_ij
+//   FORM 1 (volume-weighted):  A_ij = (p_i + p_j) / (rho_i rho_j)
 // With either continuity the pressure work of the pairs is sum_pairs m_i m_j A_ij v_ij . g_ij
 // (energy.hpp), so these are the momentum equations that make kinetic plus internal energy a constant
 // of the motion while e follows de = (p / rho^2) d rho exactly (the thermodynamically consistent
@@ -23,15 +21,11 @@
 
 namespace sphdeck::refsolver {
 
-// A_ij + Pi_ij from both particles' s6, s7 (continuity.hpp FormValues) and densities; `pair_mean` (FORM 1):
-// continuity.hpp's pair_mean_volume is the volume the pair lends.
+// A_ij + Pi_ij from both particles' s6, s7 (continuity.hpp FormValues) and densities.
 template <bool VolumeWeighted>
 inline double momentum_factor(double s6_i, double s7_i, double rho_i, double s6_j, double s7_j, double rho_j,
-                              double pi_ij, bool pair_mean = false) {
-    if constexpr (VolumeWeighted) {
-        if (pair_mean) return 2 * (s6_i + s6_j) / (rho_i + rho_j) + pi_ij;
-        return (s6_i * rho_i + s6_j * rho_j) / (rho_i * rho_j) + pi_ij;
-    }
+                              double pi_ij) {
+    if constexpr (VolumeWeighted) return (s6_i * rho_i + s6_j * rho_j) / (rho_i * rho_j) + pi_ij;
     return (s6_i + s6_j) * s7_i * s7_j + pi_ij;
 }
 

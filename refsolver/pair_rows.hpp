@@ -33,7 +33,6 @@ struct PairRows {
     double body[3] = {0, 0, 0};
     int dimension = 3;
     bool renormalise = false;
-    bool pair_mean_volume = false;  // FORM 1: continuity.hpp's m_j / rho_ij instead of V_j (rates.hpp)
     double *ax = nullptr, *ay = nullptr, *az = nullptr, *drho = nullptr, *de = nullptr;  // own sums, set
     double* received = nullptr;  // this thread's: ax ay az drho de per real particle, added to
     // Scratch of this thread: `inside` holds `stride` entries, the most listed partners of a

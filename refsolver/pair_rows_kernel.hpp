@@ -109,7 +109,6 @@ void row(const PairRows& p, std::size_t i, OwnSums& own) {
     const V h = splat(at[3]), m = splat(me.m), rho = splat(me.rho), c = splat(me.c), s6 = splat(me.s6);
     const V s7 = splat(me.s7), own_work = s6 * s7, norm = splat(p.norm), q1 = splat(p.q1), q2 = splat(p.q2);
     const V half = splat(0.5), one = splat(1.0), zero = {};
-    const bool pair_mean = p.pair_mean_volume;  // FORM 1 of LS-DYNA decks (continuity.hpp)
     V lane_index = {};
     for (int l = 0; l < lanes; ++l) lane_index[l] = l;
     [[maybe_unused]] const double* ci = Renormalise ? p.correction + 6 * i : nullptr;
@@ -159,33 +158,27 @@ void row(const PairRows& p, std::size_t i, OwnSums& own) {
         const V phi = hij * v_dot_x * inv.c;
         const V pi_all = (-q2 * (half * (c + o[5])) * phi + q1 * phi * phi) * (splat(2.0) * inv.d);
         const V pi = select((M)(v_dot_x < zero), pi_all, zero);
-        // FORM 1: the volumes the pair lends, continuity.hpp's w_ij and w_ji: V_j and V_i, or with
-        // pair_mean m_j / rho_ij and m_i / rho_ij (inv.d = 1 / (rho_i + rho_j)).
-        const V two_inv_d = splat(2.0) * inv.d;
-        [[maybe_unused]] const V w_ij = pair_mean ? o[3] * two_inv_d : o[7], w_ji = pair_mean ? m * two_inv_d : s7;
         // momentum.hpp's A_ij.
-        const V a = (Renormalise ? pair_mean ? (s6 + o[6]) * two_inv_d : (s6 * rho + o[6] * o[4]) * inv.e
-                                 : (s6 + o[6]) * s7 * o[7]) +
-                    pi;
+        const V a = (Renormalise ? (s6 * rho + o[6] * o[4]) * inv.e : (s6 + o[6]) * s7 * o[7]) + pi;
         // add_to, lanes past the row's end masked.
         const M valid = (M)(lane_index < splat(static_cast<double>(n - k)));
         own.ax += select(valid, o[3] * a * gx, zero);
         own.ay += select(valid, o[3] * a * gy, zero);
         own.az += select(valid, o[3] * a * gz, zero);
-        // continuity.hpp and energy.hpp: w_ij v_ij . g_ij and w_ij p_i / rho_i (FORM 1), v_ij . g_ij and
+        // continuity.hpp and energy.hpp: V_j v_ij . g_ij and V_j p_i / rho_i (FORM 1), v_ij . g_ij and
         // p_i V_i^2 / m_i (FORM 0).
         // FORM 0: a partner that does not interact (1 / m = 0) adds no pdV term (its m = 0 drops the rest).
         if constexpr (Renormalise) {
-            own.drho += select(valid, w_ij * v_dot_g, zero);
-            own.de += select(valid, (w_ij * s6 + half * o[3] * pi) * v_dot_g, zero);
+            own.drho += select(valid, o[7] * v_dot_g, zero);
+            own.de += select(valid, (o[7] * s6 + half * o[3] * pi) * v_dot_g, zero);
         } else {
             const M present = valid & (M)(o[7] > zero);
             own.drho += select(present, v_dot_g, zero);
             own.de += select(valid, (select(present, own_work, zero) + half * o[3] * pi) * v_dot_g, zero);
         }
         if (k < forward) {  // add_reverse: g_ji = -g_ij, v_ji . g_ji = v_ij . g_ij
-            const V share[5] = {m * a * gx, m * a * gy, m * a * gz, Renormalise ? w_ji * v_dot_g : v_dot_g,
-                                ((Renormalise ? w_ji * o[6] : o[6] * o[7]) + half * m * pi) * v_dot_g};
+            const V share[5] = {m * a * gx, m * a * gy, m * a * gz, Renormalise ? s7 * v_dot_g : v_dot_g,
+                                ((Renormalise ? s7 * o[6] : o[6] * o[7]) + half * m * pi) * v_dot_g};
             add_shares(p.received, inside + k, forward - k < lanes ? forward - k : std::size_t{lanes}, share);
         }
     }

@@ -20,11 +20,9 @@ namespace {
 using Correction = std::array<double, 6>;
 
 // The geometry of one pair (i, j), seen from i (g = g_ij), the momentum factor A_ij (momentum.hpp,
-// symmetric: both particles' sums use it), Pi_ij for the viscous heating (energy.hpp) and the
-// volumes each lends the other's sums (FORM 1: continuity.hpp's w_ij, w_ji; FORM 0: s7_j, s7_i).
+// symmetric: both particles' sums use it) and Pi_ij for the viscous heating (energy.hpp).
 struct PairTerms {
     double gx, gy, gz, v_dot_g, a, pi;  // a: momentum.hpp's A_ij (= A_ji)
-    double w_ij, w_ji;
 };
 
 // One pair within the support (r2 < 4 h_ij^2). One square root and two divisions for the kernel
@@ -34,7 +32,7 @@ template <int Dimension, bool Renormalise>
 [[gnu::always_inline]] inline PairTerms pair_terms(const PackedParticle& a, const PackedParticle& b,
                                                    const Correction& ba, const Correction& bb, double dx, double dy,
                                                    double dz, double r2, double norm,
-                                                   const MonaghanViscosity& viscosity, bool pair_mean) {
+                                                   const MonaghanViscosity& viscosity) {
     // grad_i W_ij = F x_ij (kernel.hpp), F = C_d / h^(d+2) theta'(q) / q.
     const double hij = 0.5 * (a.h + b.h);
     const double inv_h = 1.0 / hij, r = std::sqrt(r2), q = r * inv_h;
@@ -53,11 +51,7 @@ template <int Dimension, bool Renormalise>
     const double v_dot_g = dvx * gx + dvy * gy + dvz * gz;
     const double v_dot_x = dvx * dx + dvy * dy + dvz * dz;
     const double pi_ij = viscosity.pi(v_dot_x, r2, hij, 0.5 * (a.c + b.c), 0.5 * (a.rho + b.rho), 0.5 * (a.f + b.f));
-    const double a_ij = momentum_factor<Renormalise>(a.s6, a.s7, a.rho, b.s6, b.s7, b.rho, pi_ij, pair_mean);
-    if (Renormalise && pair_mean)
-        return {
-            gx, gy, gz, v_dot_g, a_ij, pi_ij, pair_mean_volume(b.m, a.rho, b.rho), pair_mean_volume(a.m, a.rho, b.rho)};
-    return {gx, gy, gz, v_dot_g, a_ij, pi_ij, b.s7, a.s7};
+    return {gx, gy, gz, v_dot_g, momentum_factor<Renormalise>(a.s6, a.s7, a.rho, b.s6, b.s7, b.rho, pi_ij), pi_ij};
 }
 
 // Sums of one particle: ax ay az drho de.
@@ -68,16 +62,16 @@ using RateSums = std::array<double, 5>;
 template <bool Renormalise>
 inline void add_to(RateSums& sums, const PairTerms& t, const PackedParticle& i, const PackedParticle& j) {
     sums[0] -= j.m * t.a * t.gx, sums[1] -= j.m * t.a * t.gy, sums[2] -= j.m * t.a * t.gz;
-    sums[3] += continuity_term<Renormalise>(t.w_ij, t.v_dot_g);
-    sums[4] += energy_term<Renormalise>(i.s6, i.s7, t.w_ij, j.m, t.pi, t.v_dot_g);
+    sums[3] += continuity_term<Renormalise>(j.s7, t.v_dot_g);
+    sums[4] += energy_term<Renormalise>(i.s6, i.s7, j.s7, j.m, t.pi, t.v_dot_g);
 }
 
 // Adds i's share of pair (i, j) to j's sums: g_ji = -g_ij and v_ji . g_ji = v_ij . g_ij.
 template <bool Renormalise>
 inline void add_reverse(RateSums& sums, const PairTerms& t, const PackedParticle& i, const PackedParticle& j) {
     sums[0] += i.m * t.a * t.gx, sums[1] += i.m * t.a * t.gy, sums[2] += i.m * t.a * t.gz;
-    sums[3] += continuity_term<Renormalise>(t.w_ji, t.v_dot_g);
-    sums[4] += energy_term<Renormalise>(j.s6, j.s7, t.w_ji, i.m, t.pi, t.v_dot_g);
+    sums[3] += continuity_term<Renormalise>(i.s7, t.v_dot_g);
+    sums[4] += energy_term<Renormalise>(j.s6, j.s7, i.s7, i.m, t.pi, t.v_dot_g);
 }
 
 // The stress terms of pair (i, j) of a deck with *MAT_ELASTIC parts (stress.hpp; sph-algorithms.md
@@ -144,7 +138,7 @@ PairRows pair_rows_view(Particles& s, const NeighbourList& list, const RateParam
     v.ghost_offsets = list.ghost_offsets.data(), v.ghost = list.ghost.data();
     v.norm = CubicSpline{Dimension}.normalisation(), v.q1 = rp.viscosity.q1, v.q2 = rp.viscosity.q2;
     v.body[0] = rp.body[0], v.body[1] = rp.body[1], v.body[2] = rp.body[2];
-    v.dimension = Dimension, v.renormalise = Renormalise, v.pair_mean_volume = rp.pair_mean_volume;
+    v.dimension = Dimension, v.renormalise = Renormalise;
     v.ax = s.ax.data(), v.ay = s.ay.data(), v.az = s.az.data(), v.drho = s.drho.data(), v.de = s.de.data();
     return v;
 }
@@ -183,7 +177,6 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
     const int team = rp.threads > 0 ? rp.threads : 1;
     const double norm = CubicSpline{Dimension}.normalisation();
     const MonaghanViscosity viscosity = rp.viscosity;
-    const bool pair_mean = rp.pair_mean_volume;
     const PackedParticle* nb = scratch.packed.data();
     const std::uint8_t* interacting = s.interacting.data();
     const Correction* correction = s.correction.data();
@@ -260,7 +253,7 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
                     const double dx = me.x - o.x, dy = me.y - o.y, dz = me.z - o.z;
                     const PairTerms terms =
                         pair_terms<Dimension, Renormalise>(me, o, bi, correction[j], dx, dy, dz,
-                                                           dx * dx + dy * dy + dz * dz, norm, viscosity, pair_mean);
+                                                           dx * dx + dy * dy + dz * dz, norm, viscosity);
                     add_to<Renormalise>(own, terms, me, o);
                     add_reverse<Renormalise>(received[j], terms, me, o);
                     if constexpr (Solid) {
@@ -278,7 +271,7 @@ void pair_loop(Particles& s, const NeighbourList& list, const RateParameters& rp
                     const double dx = me.x - o.x, dy = me.y - o.y, dz = me.z - o.z;
                     const PairTerms terms =
                         pair_terms<Dimension, Renormalise>(me, o, bi, correction[j], dx, dy, dz,
-                                                           dx * dx + dy * dy + dz * dz, norm, viscosity, pair_mean);
+                                                           dx * dx + dy * dy + dz * dz, norm, viscosity);
                     add_to<Renormalise>(own, terms, me, o);
                     if constexpr (Solid)
                         add_stress(own, own_gradient, stress_terms(stress[i], stress[j], me, o, terms, dx, dy, dz), o.m,

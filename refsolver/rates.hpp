@@ -27,9 +27,6 @@ struct RateParameters {
     MonaghanViscosity viscosity;
     bool renormalise =
         false;  // the volume-weighted equations (FORM 1, OpenRadioss decks); s.correction is I unless FORM 1
-    // FORM 1 of LS-DYNA decks: a neighbour lends m_j / rho_ij instead of V_j (continuity.hpp's
-    // pair_mean_volume); false for OpenRadioss decks (their engine's V_j).
-    bool pair_mean_volume = false;
     SmoothingLengthRule h_rule = SmoothingLengthRule::Divergence;
     std::array<double, 3> body{0, 0, 0};  // body acceleration (body_load.hpp)
     int threads = 1;

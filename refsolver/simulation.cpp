@@ -281,8 +281,6 @@ void Simulation::Impl::initialise() {
     rates.kernel.dimension = in.dimension;
     rates.viscosity = {in.q1, in.q2};
     rates.renormalise = in.renormalise || in.volume_weighted;  // the volume-weighted equations
-    // LS-DYNA FORM 1: continuity.hpp's pair-mean volume (OpenRadioss decks keep V_j, their engine's).
-    rates.pair_mean_volume = in.renormalise && !in.volume_weighted;
     rates.h_rule = in.h_rule;
     deactivation.maxv = in.maxv, deactivation.box = in.box, deactivation.dimension = in.dimension;
     const auto t0 = Clock::now();

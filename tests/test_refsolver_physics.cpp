@@ -1,14 +1,12 @@
 // Reference solver, the pieces against hand calculations: kernel normalisation and gradient,
-// equations of state, the FORM 1 correction inverse and pair volumes, load curves.
+// equations of state, the FORM 1 correction inverse, load curves.
 #include <doctest/doctest.h>
 
 #include <cmath>
 
 #include "refsolver/body_load.hpp"
-#include "refsolver/continuity.hpp"
 #include "refsolver/eos.hpp"
 #include "refsolver/kernel.hpp"
-#include "refsolver/momentum.hpp"
 #include "refsolver/renormalisation.hpp"
 
 namespace test_refsolver_physics_cpp {  // each test file's names stay its own in a unity batch
@@ -126,36 +124,6 @@ TEST_CASE("refsolver renormalisation: the inverse of B, identity when singular")
     const auto two = inverse_correction({2, 2, 0, 1, 0, 0}, 2);  // det 3
     CHECK(two[0] == doctest::Approx(2.0 / 3));
     CHECK(two[3] == doctest::Approx(-1.0 / 3));
-}
-
-// continuity.hpp: the volume j lends i's FORM 1 sums on LS-DYNA decks, m_j / rho_ij.
-TEST_CASE("refsolver FORM 1 pair volume: V_j where densities agree, less behind a shock, below 2 V_j") {
-    // One density: V_j (the renormalised divergence stays exact there).
-    CHECK(pair_mean_volume(1.0, 2.0, 2.0) == 0.5);
-    // i denser than j (i behind a shock, j ahead): 2 rho_j / (rho_i + rho_j) of V_j, here 0.4 V_j.
-    CHECK(pair_mean_volume(1.0, 4.0, 1.0) == doctest::Approx(0.4));
-    // i far thinner than j (a hot particle among cold ones): just under 2 V_j, a rate proportional to
-    // rho_i (the number form's V_i would be 4e6 V_j here).
-    CHECK(pair_mean_volume(1.0, 1e-6, 4.0) == doctest::Approx(0.5).epsilon(1e-6));
-    CHECK(pair_mean_volume(1.0, 1e-6, 4.0) < 0.5);
-    // Not interacting (m_j = 0 in the packed particles): nothing.
-    CHECK(pair_mean_volume(0.0, 1.0, 3.0) == 0.0);
-}
-
-// momentum.hpp: A_ij = (p_i / rho_i) w_ij / m_j + (p_j / rho_j) w_ji / m_i, so that the pair's pressure work
-// in the energy equation, (p_i / rho_i) m_i w_ij + (p_j / rho_j) m_j w_ji (energy.hpp), equals the work of
-// the pair forces m_i m_j A_ij: kinetic plus internal energy stays a constant of the motion.
-TEST_CASE("refsolver FORM 1 pair volume: the momentum factor does the continuity's pressure work") {
-    const double m_i = 1.3, m_j = 0.6, rho_i = 2.1, rho_j = 0.45, p_i = 3.2, p_j = 0.7;
-    const double s6_i = p_i / rho_i, s6_j = p_j / rho_j, v_i = m_i / rho_i, v_j = m_j / rho_j;
-    const double w_ij = pair_mean_volume(m_j, rho_i, rho_j), w_ji = pair_mean_volume(m_i, rho_j, rho_i);
-    const double mean = momentum_factor<true>(s6_i, v_i, rho_i, s6_j, v_j, rho_j, 0.0, true);
-    CHECK(m_i * m_j * mean == doctest::Approx(s6_i * m_i * w_ij + s6_j * m_j * w_ji).epsilon(1e-13));
-    // With V_j (OpenRadioss decks): (p_i + p_j) / (rho_i rho_j), the same balance with w_ij = V_j.
-    const double own = momentum_factor<true>(s6_i, v_i, rho_i, s6_j, v_j, rho_j, 0.0);
-    CHECK(own == doctest::Approx((p_i + p_j) / (rho_i * rho_j)).epsilon(1e-13));
-    CHECK(m_i * m_j * own == doctest::Approx(s6_i * m_i * v_j + s6_j * m_j * v_i).epsilon(1e-13));
-    CHECK(mean != doctest::Approx(own));  // the densities differ, so the two forms do
 }
 
 TEST_CASE("refsolver body load: curve interpolation and the LS-DYNA sign") {

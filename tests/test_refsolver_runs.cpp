@@ -71,8 +71,8 @@ TEST_CASE("refsolver: a uniform lattice at rest in a box of symmetry planes stay
         }
 }
 
-// FORM 1 too: its pair volumes m_j / rho_ij (continuity.hpp) with the momentum factor that pairs with
-// them; masses 1 and 2, so the densities differ and the pair volume differs from V_j.
+// FORM 1 too: the volume-weighted continuity with its momentum factor (continuity.hpp, momentum.hpp);
+// masses 1 and 2, so the two particles' densities differ.
 TEST_CASE("refsolver: two particles approaching conserve momentum and energy; mass is exact") {
     for (int form : {0, 1}) {
         CAPTURE(form);
