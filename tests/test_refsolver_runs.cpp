@@ -71,32 +71,38 @@ TEST_CASE("refsolver: a uniform lattice at rest in a box of symmetry planes stay
         }
 }
 
+// FORM 1 too: the volume-weighted continuity with its momentum factor (continuity.hpp, momentum.hpp);
+// masses 1 and 2, so the two particles' densities differ.
 TEST_CASE("refsolver: two particles approaching conserve momentum and energy; mass is exact") {
-    TestDeck deck;
-    deck.sphini = 1.0;
-    deck.hmin = deck.hmax = 1.0;
-    deck.eos = "*EOS_LINEAR_POLYNOMIAL\n1,0,0,0,0,0.4,0.4,0\n1.0,1\n";  // ideal gas, e0 = 1
-    deck.particles = {{0, 0, 0, 1.0, 0.3, 0.05, 0}, {1.5, 0.2, 0, 2.0, -0.4, 0, 0.1}};
-    deck.endtim = 6.0;
-    deck.tssfac = 0.1;
-    auto setup = solver_for(deck);
-    REQUIRE_MESSAGE(setup.simulation, unsupported_text(setup));
-    refsolver::Simulation& sim = *setup.simulation;
-    const refsolver::Totals start = sim.totals();
-    // Momentum by hand: 1 (0.3, 0.05, 0) + 2 (-0.4, 0, 0.1) = (-0.5, 0.05, 0.2).
-    CHECK(start.momentum[0] == doctest::Approx(-0.5));
-    CHECK(start.internal == doctest::Approx(3.0));  // sum m e0 = 1 + 2
-    double closest = 1e9;
-    sim.run([&](const refsolver::Simulation& s) {
-        const auto& st = s.state();
-        closest = std::min(closest, std::hypot(st.x[0] - st.x[1], st.y[0] - st.y[1], st.z[0] - st.z[1]));
-    });
-    const refsolver::Totals end = sim.totals();
-    CHECK(closest < 1.4);  // they did interact (support 2h = 2)
-    for (int a = 0; a < 3; ++a) CHECK(std::abs(end.momentum[a] - start.momentum[a]) < 1e-14);
-    CHECK(end.mass == start.mass);
-    CHECK(end.total == doctest::Approx(start.total).epsilon(1e-4));
-    CHECK(end.internal != doctest::Approx(start.internal).epsilon(1e-4));  // energy did change form
+    for (int form : {0, 1}) {
+        CAPTURE(form);
+        TestDeck deck;
+        deck.form = form;
+        deck.sphini = 1.0;
+        deck.hmin = deck.hmax = 1.0;
+        deck.eos = "*EOS_LINEAR_POLYNOMIAL\n1,0,0,0,0,0.4,0.4,0\n1.0,1\n";  // ideal gas, e0 = 1
+        deck.particles = {{0, 0, 0, 1.0, 0.3, 0.05, 0}, {1.5, 0.2, 0, 2.0, -0.4, 0, 0.1}};
+        deck.endtim = 6.0;
+        deck.tssfac = 0.1;
+        auto setup = solver_for(deck);
+        REQUIRE_MESSAGE(setup.simulation, unsupported_text(setup));
+        refsolver::Simulation& sim = *setup.simulation;
+        const refsolver::Totals start = sim.totals();
+        // Momentum by hand: 1 (0.3, 0.05, 0) + 2 (-0.4, 0, 0.1) = (-0.5, 0.05, 0.2).
+        CHECK(start.momentum[0] == doctest::Approx(-0.5));
+        CHECK(start.internal == doctest::Approx(3.0));  // sum m e0 = 1 + 2
+        double closest = 1e9;
+        sim.run([&](const refsolver::Simulation& s) {
+            const auto& st = s.state();
+            closest = std::min(closest, std::hypot(st.x[0] - st.x[1], st.y[0] - st.y[1], st.z[0] - st.z[1]));
+        });
+        const refsolver::Totals end = sim.totals();
+        CHECK(closest < 1.4);  // they did interact (support 2h = 2)
+        for (int a = 0; a < 3; ++a) CHECK(std::abs(end.momentum[a] - start.momentum[a]) < 1e-14);
+        CHECK(end.mass == start.mass);
+        CHECK(end.total == doctest::Approx(start.total).epsilon(1e-4));
+        CHECK(end.internal != doctest::Approx(start.internal).epsilon(1e-4));  // energy did change form
+    }
 }
 
 // energy.hpp / momentum.hpp: each particle's internal energy follows its own compression, de = (p / rho^2)
