@@ -27,7 +27,7 @@ std::string_view trim_spaces(std::string_view s, std::size_t& offset) {
 
 // text.substr(start, width) for start <= text.size(), without substr's check and throw (a call per
 // field of two million lines).
-std::string_view field_text(std::string_view text, std::size_t start, std::size_t width) {
+std::string_view plain_field_text(std::string_view text, std::size_t start, std::size_t width) {
     return start < text.size() ? std::string_view(text.data() + start, std::min(width, text.size() - start))
                                : std::string_view{};
 }
@@ -56,7 +56,7 @@ bool CardDecoder::decode_plain(const grammar::Block& block, const grammar::CardL
         const grammar::FixedField& at = layout.positions[i];
         FieldValue& v = values[i];
         std::size_t offset = 0;
-        const std::string_view field = trim_spaces(field_text(text, at.start, at.width), offset);
+        const std::string_view field = trim_spaces(plain_field_text(text, at.start, at.width), offset);
         v.spec = &spec;
         v.span = grammar::Span{line.file, line.line, at.start + 1, at.start + at.width + 1};
         v.text = field;

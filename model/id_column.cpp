@@ -11,7 +11,8 @@ constexpr std::size_t aside_allowance(std::size_t size) { return size / 16 + 64;
 }  // namespace
 
 long long IdColumn::aside(std::size_t i) const {
-    const auto it = std::lower_bound(aside_.begin(), aside_.end(), i, [](const Aside& a, std::size_t at) { return a.first < at; });
+    const auto it =
+        std::lower_bound(aside_.begin(), aside_.end(), i, [](const Aside& a, std::size_t at) { return a.first < at; });
     return it->second;
 }
 
@@ -30,7 +31,8 @@ void IdColumn::push_back(long long id) {
 
 void IdColumn::set(std::size_t i, long long id) {
     if (full_) return void(wide_ids_[i] = id);
-    auto it = std::lower_bound(aside_.begin(), aside_.end(), i, [](const Aside& a, std::size_t at) { return a.first < at; });
+    auto it =
+        std::lower_bound(aside_.begin(), aside_.end(), i, [](const Aside& a, std::size_t at) { return a.first < at; });
     const bool was_aside = narrow_[i] == aside_mark && it != aside_.end() && it->first == i;
     if (fits(id)) {
         if (was_aside) aside_.erase(it);
@@ -48,7 +50,8 @@ void IdColumn::set(std::size_t i, long long id) {
 void IdColumn::resize(std::size_t n) {
     if (full_) return wide_ids_.resize(n);
     if (n < narrow_.size()) {
-        auto it = std::lower_bound(aside_.begin(), aside_.end(), n, [](const Aside& a, std::size_t at) { return a.first < at; });
+        auto it = std::lower_bound(aside_.begin(), aside_.end(), n,
+                                   [](const Aside& a, std::size_t at) { return a.first < at; });
         aside_.erase(it, aside_.end());
     }
     narrow_.resize(n, 0);
@@ -123,7 +126,8 @@ std::size_t common_tail(const IdColumn& a, std::size_t a_end, const IdColumn& b,
     if (!a.full_ && !b.full_ && a.aside_.empty() && b.aside_.empty()) {
         constexpr std::size_t block = 1024;
         const std::int32_t *x = a.narrow_.data(), *y = b.narrow_.data();
-        while (k + block <= n && std::memcmp(x + a_end - k - block, y + b_end - k - block, block * sizeof(std::int32_t)) == 0)
+        while (k + block <= n &&
+               std::memcmp(x + a_end - k - block, y + b_end - k - block, block * sizeof(std::int32_t)) == 0)
             k += block;
     }
     while (k < n && a[a_end - k - 1] == b[b_end - k - 1]) ++k;

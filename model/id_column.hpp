@@ -107,7 +107,8 @@ public:
 
     // Bytes held (capacity aside): 4 an entry while narrow.
     std::size_t bytes() const {
-        return narrow_.size() * sizeof(std::int32_t) + aside_.size() * sizeof(Aside) + wide_ids_.size() * sizeof(long long);
+        return narrow_.size() * sizeof(std::int32_t) + aside_.size() * sizeof(Aside) +
+               wide_ids_.size() * sizeof(long long);
     }
     bool narrow() const { return !full_; }
 

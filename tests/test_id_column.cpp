@@ -115,7 +115,7 @@ TEST_CASE("particle lines: runs read back each particle's line") {
     CHECK_THROWS(l.at(lines.size()));
 
     model::ParticleLines block;
-    block.append_run(1000, 40, 1);  // a block decoded one particle a line
+    block.append_run(1000, 40, 1);   // a block decoded one particle a line
     block.append_run(500, 1040, 1);  // the next block, right after: still one run
     CHECK(block.runs() == 1);
     CHECK(block[1499] == 1539);
