@@ -77,6 +77,21 @@ double median(std::vector<double> v) {
     return v.empty() ? 0 : v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
+// What the model's bulk columns and the deck's card lines hold (issue 40 item 2), once.
+void print_holdings(const grammar::RawDeck& deck, const model::Model& m) {
+    const model::Nodes& n = m.nodes;
+    const model::Particles& p = m.particles;
+    const double nodes = static_cast<double>(n.id.bytes() + (n.x.size() + n.y.size() + n.z.size()) * sizeof(double));
+    const double particles = static_cast<double>(p.node.bytes() + p.part.bytes() + p.mass.size() * sizeof(double) +
+                                                 p.volume.size() + p.line.runs() * 24);
+    const double lines = static_cast<double>(deck.lines.size() * sizeof(grammar::CardLine));
+    const double count = static_cast<double>(std::max<std::size_t>(1, p.size()));
+    std::printf(
+        "model: nodes %.1f MB, particles %.1f MB: %.1f bytes a particle with its node; card lines %.1f MB "
+        "(%.1f bytes a particle)\n",
+        nodes / 1e6, particles / 1e6, (nodes + particles) / count, lines / 1e6, lines / count);
+}
+
 void one_check(const std::string& path) {
     timed("read line by line (as before issue 40)", [&] {
         grammar::set_line_chunk_bytes(grammar::read_line_by_line);
@@ -87,6 +102,7 @@ void one_check(const std::string& path) {
     grammar::RawDeck deck = timed("read (lines, includes)", [&] { return grammar::read_deck(path); });
     std::vector<diag::Diagnostic> out = deck.diagnostics;
     model::Model m = timed("decode + model", [&] { return model::build_model(deck, out); });
+    if (phases["decode + model"].seconds.size() == 1) print_holdings(deck, m);
     lint::RuleOptions options;
     lint::RuleContext c(m, deck, options, out);
     timed("geometry preview (all of it)", [&] { c.preview = lint::compute_rules_preview(m); });

@@ -210,7 +210,7 @@ void note_id(std::vector<long long>& ids, long long id) {
 // n-th occurrence on one side is matched with the n-th on the other.
 class IdOccurrences {
 public:
-    explicit IdOccurrences(const std::vector<long long>& ids) {
+    explicit IdOccurrences(const model::IdColumn& ids) {
         where_.reserve(ids.size());
         for (std::size_t i = 0; i < ids.size(); ++i) where_[ids[i]].push_back(i);
     }

@@ -267,7 +267,7 @@ std::vector<grammar::Span> particle_spans(const CheckResult& deck, const std::st
     const auto wanted = integer_id(id);
     if (!wanted) return out;
     const bool part = kind == "PART";
-    const std::vector<long long>& column = part ? particles.part : particles.node;
+    const model::IdColumn& column = part ? particles.part : particles.node;
     std::uint32_t last_line = 0xFFFFFFFFu;
     for (std::size_t i = 0; i < particles.size() && out.size() < limit; ++i) {
         if (column[i] != *wanted || particles.line[i] == last_line) continue;

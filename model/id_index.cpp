@@ -4,7 +4,11 @@
 
 namespace sphdeck::model {
 
-IdIndex::IdIndex(const std::vector<long long>& ids) {
+IdIndex::IdIndex(const std::vector<long long>& ids) { build(ids); }
+IdIndex::IdIndex(const IdColumn& ids) { build(ids); }
+
+template <typename Ids>
+void IdIndex::build(const Ids& ids) {
     if (ids.empty()) return;
     auto [lo, hi] = std::minmax_element(ids.begin(), ids.end());
     min_ = *lo;
@@ -44,7 +48,9 @@ std::optional<std::size_t> IdIndex::find(long long id) const {
     return it->second;
 }
 
-std::vector<std::pair<std::size_t, std::size_t>> find_duplicate_ids(const std::vector<long long>& ids) {
+namespace {
+template <typename Ids>
+std::vector<std::pair<std::size_t, std::size_t>> duplicate_ids_of(const Ids& ids) {
     std::vector<std::pair<std::size_t, std::size_t>> out;
     if (ids.empty()) return out;
     auto [lo, hi] = std::minmax_element(ids.begin(), ids.end());
@@ -62,6 +68,14 @@ std::vector<std::pair<std::size_t, std::size_t>> find_duplicate_ids(const std::v
         if (out.size() > 1000) break;  // enough to report; the scan for `first` is linear
     }
     return out;
+}
+}  // namespace
+
+std::vector<std::pair<std::size_t, std::size_t>> find_duplicate_ids(const std::vector<long long>& ids) {
+    return duplicate_ids_of(ids);
+}
+std::vector<std::pair<std::size_t, std::size_t>> find_duplicate_ids(const IdColumn& ids) {
+    return duplicate_ids_of(ids);
 }
 
 }  // namespace sphdeck::model

@@ -7,11 +7,14 @@
 #include <utility>
 #include <vector>
 
+#include "model/id_column.hpp"
+
 namespace sphdeck::model {
 
 class IdIndex {
 public:
     explicit IdIndex(const std::vector<long long>& ids);
+    explicit IdIndex(const IdColumn& ids);
 
     // Position of `id` in the indexed array (the first one when duplicated).
     std::optional<std::size_t> find(long long id) const;
@@ -20,6 +23,9 @@ public:
     const std::vector<std::pair<std::size_t, std::size_t>>& duplicates() const { return duplicates_; }
 
 private:
+    template <typename Ids>
+    void build(const Ids& ids);
+
     long long min_ = 0;
     static constexpr std::uint32_t absent = 0xFFFFFFFFu;
     std::vector<std::uint32_t> dense_;  // id - min_ → position, `absent` when none (4 bytes: decks of 1e7)
@@ -30,5 +36,6 @@ private:
 // (first position, repeated position) of duplicated ids without building an index: one bit per
 // id for compact ranges, a sorted copy otherwise. For particle ids, checked only for duplicates.
 std::vector<std::pair<std::size_t, std::size_t>> find_duplicate_ids(const std::vector<long long>& ids);
+std::vector<std::pair<std::size_t, std::size_t>> find_duplicate_ids(const IdColumn& ids);
 
 }  // namespace sphdeck::model

@@ -11,7 +11,9 @@
 
 #include "grammar/keywords/schema.hpp"
 #include "text/source_map.hpp"
+#include "model/id_column.hpp"
 #include "model/id_links.hpp"
+#include "model/particle_lines.hpp"
 #include "model/radioss_facts.hpp"
 #include "model/settings.hpp"
 
@@ -138,20 +140,22 @@ struct IdSet {
     bool truncated = false;  // a _GENERATE range far larger than the model was not expanded fully
 };
 
-// Particles and nodes as structure-of-arrays: decks of 1e7 particles are normal.
+// Particles and nodes as structure-of-arrays: decks of 1e7 particles are normal. Ids in 4 bytes
+// while they fit (model/id_column.hpp), each particle's line as runs (model/particle_lines.hpp):
+// 45 bytes a particle with its node, as long as the ids fit.
 // No per-node line index: nodes are 10^7 in big decks and their lines are needed only for the
 // rare duplicate report, which finds them by scanning (RuleContext::node_lines).
 struct Nodes {
-    std::vector<long long> id;
+    IdColumn id;
     std::vector<double> x, y, z;
 };
 
 struct Particles {
-    std::vector<long long> node;       // node id (= element id)
-    std::vector<long long> part;       // PID as an integer (-1 when it could not be read: DK002)
+    IdColumn node;                     // node id (= element id)
+    IdColumn part;                     // PID as an integer (-1 when it could not be read: DK002)
     std::vector<double> mass;          // > 0 mass; < 0 |mass| is a volume
     std::vector<std::uint8_t> volume;  // 1 when *ELEMENT_SPH_VOLUME: mass holds a volume
-    std::vector<std::uint32_t> line;   // index into RawDeck::lines
+    ParticleLines line;                // index into RawDeck::lines
     std::size_t size() const { return node.size(); }
 };
 

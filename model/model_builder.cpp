@@ -1,6 +1,7 @@
 #include "model/model_builder.hpp"
 
 #include <algorithm>
+#include <type_traits>
 
 #include "grammar/number_cast.hpp"
 #include "model/extract.hpp"
@@ -41,32 +42,28 @@ void resize_columns(Particles& p, std::size_t size) {
 // A cleanly decoded block taken whole from where it was decoded before (the last check's model, or a
 // shared block of the run): its `count` nodes or particles, one a line, from `from` in those columns.
 // Returns the block's first slot in `n` or `p`.
-std::size_t append_block(Nodes& n, const std::vector<long long>& id, const std::vector<double>& x,
-                         const std::vector<double>& y, const std::vector<double>& z, std::size_t from,
-                         std::size_t count) {
+std::size_t append_block(Nodes& n, const IdColumn& id, const std::vector<double>& x, const std::vector<double>& y,
+                         const std::vector<double>& z, std::size_t from, std::size_t count) {
     const std::size_t slot = n.id.size();
     const auto copy = [&](const auto& source, auto& target) {
         const auto begin = source.begin() + static_cast<std::ptrdiff_t>(from);
         target.insert(target.end(), begin, begin + static_cast<std::ptrdiff_t>(count));
     };
-    copy(id, n.id), copy(x, n.x), copy(y, n.y), copy(z, n.z);
+    n.id.append(id, from, count);
+    copy(x, n.x), copy(y, n.y), copy(z, n.z);
     return slot;
 }
 
 // The same for particles; the block's keyword gives their volume flag, and its lines from `first_line`
 // on (in RawDeck::lines) are theirs in this deck.
-std::size_t append_block(Particles& p, const std::vector<long long>& node, const std::vector<long long>& part,
-                         const std::vector<double>& mass, std::size_t from, std::size_t count, bool volume,
-                         std::uint32_t first_line) {
+std::size_t append_block(Particles& p, const IdColumn& node, const IdColumn& part, const std::vector<double>& mass,
+                         std::size_t from, std::size_t count, bool volume, std::uint32_t first_line) {
     const std::size_t slot = p.size();
-    const auto copy = [&](const auto& source, auto& target) {
-        const auto begin = source.begin() + static_cast<std::ptrdiff_t>(from);
-        target.insert(target.end(), begin, begin + static_cast<std::ptrdiff_t>(count));
-    };
-    copy(node, p.node), copy(part, p.part), copy(mass, p.mass);
+    const auto begin = mass.begin() + static_cast<std::ptrdiff_t>(from);
+    p.node.append(node, from, count), p.part.append(part, from, count);
+    p.mass.insert(p.mass.end(), begin, begin + static_cast<std::ptrdiff_t>(count));
     p.volume.resize(slot + count, volume);
-    p.line.resize(slot + count);
-    for (std::size_t i = 0; i < count; ++i) p.line[slot + i] = first_line + static_cast<std::uint32_t>(i);
+    p.line.append_run(count, first_line, 1);
     return slot;
 }
 }  // namespace
@@ -152,9 +149,14 @@ void ModelBuilder::Bulk::begin(const grammar::Block& block, std::size_t lines, i
     particles_ = block.keyword.rfind("*ELEMENT_SPH", 0) == 0;
     volume_ = block.keyword.find("_VOLUME") != std::string::npos;
     irregular_.assign(static_cast<std::size_t>(threads), {});
+    wide_.assign(static_cast<std::size_t>(threads), {});
     if (particles_) {
-        base_ = owner_.model_.particles.size();
-        resize_columns(owner_.model_.particles, base_ + lines);
+        Particles& p = owner_.model_.particles;
+        base_ = p.size();
+        resize_columns(p, base_ + lines);
+        // One particle a line: the block's lines are one run (an irregular line is undone in end()).
+        p.line.resize(base_);
+        p.line.append_run(lines, block.first_line, 1);
     } else {
         base_ = owner_.model_.nodes.id.size();
         resize_columns(owner_.model_.nodes, base_ + lines);
@@ -165,22 +167,29 @@ void ModelBuilder::Bulk::line(const grammar::Block&, std::size_t index, int thre
                               const std::vector<FieldValue>& v) {
     const std::size_t slot = base_ + index;
     auto& irregular = irregular_[static_cast<std::size_t>(thread)];
+    auto& wide = wide_[static_cast<std::size_t>(thread)];
+    // An id too wide for its column's 4 bytes is set after the threads (IdColumn::set_narrow).
+    const auto put = [&](IdColumn& column, bool is_part, long long id) {
+        if (!column.set_narrow(slot, id)) wide.push_back({slot, id, is_part});
+    };
     if (!particles_) {
         if (v.size() < 4 || !v[0].valid) return irregular.push_back({index, 0, true});  // as add_node
         Nodes& n = owner_.model_.nodes;
-        n.id[slot] = grammar::saturating_integer<long long>(v[0].number);
+        put(n.id, false, grammar::saturating_integer<long long>(v[0].number));
         n.x[slot] = v[1].number, n.y[slot] = v[2].number, n.z[slot] = v[3].number;
         return;
     }
     if (v.size() < 3 || !v[0].valid) return irregular.push_back({index, 0, true});  // as add_particles
     Particles& p = owner_.model_.particles;
-    p.node[slot] = grammar::saturating_integer<long long>(v[0].number);
-    p.part[slot] = v[1].valid ? grammar::saturating_integer<long long>(v[1].number) : -1;
+    const long long node = grammar::saturating_integer<long long>(v[0].number);
+    put(p.node, false, node);
+    put(p.part, true, v[1].valid ? grammar::saturating_integer<long long>(v[1].number) : -1);
     p.mass[slot] = v[2].valid ? v[2].number : 0.0;
     p.volume[slot] = volume_;
-    p.line[slot] = static_cast<std::uint32_t>(&line - owner_.deck_.lines.data());
+    // The particle's line is the block's run laid in begin(): first_line + index, `line` itself.
+    (void)line;
     if (const std::size_t extra = range_extra(v))
-        irregular.push_back({index, p.node[slot] + static_cast<long long>(extra), false});
+        irregular.push_back({index, node + static_cast<long long>(extra), false});
 }
 
 void ModelBuilder::Bulk::drop_range(std::size_t index) {
@@ -191,7 +200,19 @@ void ModelBuilder::Bulk::drop_range(std::size_t index) {
     }
 }
 
+void ModelBuilder::Bulk::set_wide_ids() {
+    for (const auto& list : wide_)
+        for (const WideId& w : list) {
+            if (!particles_)
+                owner_.model_.nodes.id.set(w.slot, w.id);
+            else
+                (w.part ? owner_.model_.particles.part : owner_.model_.particles.node).set(w.slot, w.id);
+        }
+    wide_.clear();
+}
+
 void ModelBuilder::Bulk::end(const grammar::Block&) {
+    set_wide_ids();
     bool regular = true;
     for (const auto& list : irregular_) regular = regular && list.empty();
     if (!regular && particles_) end_particles();
@@ -254,22 +275,23 @@ std::optional<BulkVisitor::Around> ModelBuilder::Bulk::reuse_around(const gramma
         const std::size_t old_tail = before.first_slot + (changed.old_card_end - before.first_line);
         const std::size_t new_tail = head + added;
         const auto copy = [&](const auto& source, auto& target) {
-            const auto from = source.begin() + static_cast<std::ptrdiff_t>(before.first_slot);
-            std::copy(from, from + static_cast<std::ptrdiff_t>(head),
-                      target.begin() + static_cast<std::ptrdiff_t>(base_));
-            const auto rest = source.begin() + static_cast<std::ptrdiff_t>(old_tail);
-            std::copy(rest, rest + static_cast<std::ptrdiff_t>(tail),
-                      target.begin() + static_cast<std::ptrdiff_t>(base_ + new_tail));
+            if constexpr (std::is_same_v<std::decay_t<decltype(target)>, IdColumn>) {
+                target.copy_from(source, before.first_slot, head, base_);
+                target.copy_from(source, old_tail, tail, base_ + new_tail);
+            } else {
+                const auto from = source.begin() + static_cast<std::ptrdiff_t>(before.first_slot);
+                std::copy(from, from + static_cast<std::ptrdiff_t>(head),
+                          target.begin() + static_cast<std::ptrdiff_t>(base_));
+                const auto rest = source.begin() + static_cast<std::ptrdiff_t>(old_tail);
+                std::copy(rest, rest + static_cast<std::ptrdiff_t>(tail),
+                          target.begin() + static_cast<std::ptrdiff_t>(base_ + new_tail));
+            }
         };
         if (particles_) {
             const Particles& old = previous->model.particles;
             Particles& p = owner_.model_.particles;
-            const std::size_t size = base_ + block.line_count;
             copy(old.node, p.node), copy(old.part, p.part), copy(old.mass, p.mass), copy(old.volume, p.volume);
-            copy(old.line, p.line);
-            // The lines after the edit moved in RawDeck::lines by what it added (modulo 2^32, undone by the sum).
-            const auto shift = static_cast<std::uint32_t>(added - removed);
-            for (std::size_t i = base_ + new_tail; i < size; ++i) p.line[i] += shift;
+            // A clean block is one particle a line: the lines are the block's run that begin() laid.
         } else {
             const Nodes& old = previous->model.nodes;
             Nodes& n = owner_.model_.nodes;
@@ -281,6 +303,7 @@ std::optional<BulkVisitor::Around> ModelBuilder::Bulk::reuse_around(const gramma
 }
 
 bool ModelBuilder::Bulk::kept_around(const grammar::Block& block, const keywords::CardSpec& card, bool clean) {
+    set_wide_ids();
     for (const auto& list : irregular_) clean = clean && list.empty();
     irregular_.clear();
     if (clean) {
@@ -301,11 +324,11 @@ void ModelBuilder::Bulk::end_nodes() {
     for (const auto& list : irregular_)
         for (const Irregular& skip : list) {
             for (; read < base_ + skip.index; ++read, ++write)
-                n.id[write] = n.id[read], n.x[write] = n.x[read], n.y[write] = n.y[read], n.z[write] = n.z[read];
+                n.id.set(write, n.id[read]), n.x[write] = n.x[read], n.y[write] = n.y[read], n.z[write] = n.z[read];
             ++read;  // the skipped line's slot
         }
     for (; read < n.id.size(); ++read, ++write)
-        n.id[write] = n.id[read], n.x[write] = n.x[read], n.y[write] = n.y[read], n.z[write] = n.z[read];
+        n.id.set(write, n.id[read]), n.x[write] = n.x[read], n.y[write] = n.y[read], n.z[write] = n.z[read];
     resize_columns(n, write);
 }
 
@@ -327,11 +350,10 @@ void ModelBuilder::Bulk::end_particles() {
         }
     for (; read < p.size(); ++read) copy(read, p.node[read]);
     resize_columns(p, base_);
-    p.node.insert(p.node.end(), rebuilt.node.begin(), rebuilt.node.end());
-    p.part.insert(p.part.end(), rebuilt.part.begin(), rebuilt.part.end());
+    p.node.append(rebuilt.node, 0, rebuilt.node.size()), p.part.append(rebuilt.part, 0, rebuilt.part.size());
     p.mass.insert(p.mass.end(), rebuilt.mass.begin(), rebuilt.mass.end());
     p.volume.insert(p.volume.end(), rebuilt.volume.begin(), rebuilt.volume.end());
-    p.line.insert(p.line.end(), rebuilt.line.begin(), rebuilt.line.end());
+    for (std::uint32_t line : rebuilt.line.all()) p.line.push_back(line);
 }
 
 Model ModelBuilder::finish(std::vector<diag::Diagnostic>& out) {

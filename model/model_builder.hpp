@@ -61,6 +61,12 @@ private:
             long long last = 0;  // last id of an NEND range; unused for a skipped line
             bool skipped = false;
         };
+        struct WideId {  // an id that did not fit its column's 4 bytes, set after the threads
+            std::size_t slot;
+            long long id;
+            bool part;  // the particles' part column (else the ids or the particles' nodes)
+        };
+        void set_wide_ids();
         void end_nodes();
         void end_particles();
         bool reuse_shared(const grammar::Block& block, const keywords::CardSpec& card);
@@ -70,6 +76,7 @@ private:
         bool volume_ = false;
         std::size_t base_ = 0;                           // first slot of the block in the arrays
         std::vector<std::vector<Irregular>> irregular_;  // per thread
+        std::vector<std::vector<WideId>> wide_;          // per thread
     };
 
     void add_node(const std::vector<FieldValue>& values);

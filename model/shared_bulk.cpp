@@ -40,8 +40,7 @@ bool same_bytes(const SharedBulkBlock& kept, const BlockBytes& bytes) {
 }  // namespace
 
 std::size_t SharedBulkBlock::bytes() const {
-    return ids.size() * sizeof(long long) + (x.size() + y.size() + z.size() + mass.size()) * sizeof(double) +
-           part.size() * sizeof(long long);
+    return ids.bytes() + (x.size() + y.size() + z.size() + mass.size()) * sizeof(double) + part.bytes();
 }
 
 bool BulkProvenance::covers(const Model& model) const {
@@ -85,14 +84,14 @@ std::shared_ptr<const SharedBulkBlock> SharedBulkBlocks::offer(const grammar::Ra
     if (made->particles) {
         const Particles& p = model.particles;
         if (static_cast<std::size_t>(to) > p.size()) return nullptr;
-        made->ids.assign(p.node.begin() + from, p.node.begin() + to);
-        made->part.assign(p.part.begin() + from, p.part.begin() + to);
+        made->ids.append(p.node, first_slot, block.line_count);
+        made->part.append(p.part, first_slot, block.line_count);
         made->mass.assign(p.mass.begin() + from, p.mass.begin() + to);
         made->volume = block.keyword.find("_VOLUME") != std::string::npos;
     } else {
         const Nodes& n = model.nodes;
         if (static_cast<std::size_t>(to) > n.id.size()) return nullptr;
-        made->ids.assign(n.id.begin() + from, n.id.begin() + to);
+        made->ids.append(n.id, first_slot, block.line_count);
         made->x.assign(n.x.begin() + from, n.x.begin() + to);
         made->y.assign(n.y.begin() + from, n.y.begin() + to);
         made->z.assign(n.z.begin() + from, n.z.begin() + to);

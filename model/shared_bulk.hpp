@@ -17,6 +17,7 @@
 
 #include "grammar/keywords/schema.hpp"
 #include "grammar/raw_deck.hpp"
+#include "model/id_column.hpp"
 #include "text/source_text.hpp"
 
 namespace sphdeck::model {
@@ -32,9 +33,9 @@ struct SharedBulkBlock {
     grammar::SourceText text;        // the file the block was read from: kept, so its bytes stay put
     std::size_t begin = 0, end = 0;  // the block's bytes in `text`
     bool particles = false;          // *ELEMENT_SPH (else *NODE)
-    std::vector<long long> ids;      // node ids, or the particles' nodes
+    IdColumn ids;                    // node ids, or the particles' nodes
     std::vector<double> x, y, z;     // nodes only
-    std::vector<long long> part;     // particles only
+    IdColumn part;                   // particles only
     std::vector<double> mass;        // particles only
     std::uint8_t volume = 0;         // particles only: *ELEMENT_SPH_VOLUME
     std::size_t bytes() const;       // what its columns hold

@@ -8,8 +8,8 @@ namespace {
 // Particle i names node i for every i, and no earlier node has its id (ids rising: the index
 // would find no earlier copy), so the node index would map every particle to itself.
 bool particles_in_node_order(const model::Model& m) {
-    const std::vector<long long>& ids = m.nodes.id;
-    const std::vector<long long>& named = m.particles.node;
+    const model::IdColumn& ids = m.nodes.id;
+    const model::IdColumn& named = m.particles.node;
     const std::size_t n = named.size();
     if (n > ids.size()) return false;
     bool in_order = true;
@@ -24,7 +24,7 @@ ParticlePositions::ParticlePositions(const model::Model& m) : nodes_(m.nodes), s
     if (in_place_) return;
     const model::IdIndex index(m.nodes.id);
     node_of_.assign(size_, none);
-    const std::vector<long long>& named = m.particles.node;
+    const model::IdColumn& named = m.particles.node;
 #pragma omp parallel for schedule(static) if (size_ > 65536)
     for (std::size_t i = 0; i < size_; ++i)
         if (auto at = index.find(named[i])) node_of_[i] = static_cast<std::uint32_t>(*at);

@@ -35,7 +35,7 @@ struct PartGroups {
 };
 
 // `members` stays empty when there is one part and `always_members` is false: member k is then k.
-PartGroups group_by_part(const std::vector<long long>& part, bool always_members) {
+PartGroups group_by_part(const model::IdColumn& part, bool always_members) {
     PartGroups g;
     // One id per run of equal parts (particles come grouped by part in decks), then sorted: not a
     // copy of every particle's part, nor a sort of a million equal values.

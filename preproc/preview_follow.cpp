@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <type_traits>
 #include <functional>
 #include <span>
 #include <limits>
@@ -72,13 +73,16 @@ ParticleDiff diff_particles(const model::Particles& before, const model::Particl
     ParticleDiff d;
     const std::size_t n_old = before.size(), n_new = now.size(), common = std::min(n_old, n_new);
     // Bitwise (a mass written -0.0 for 0.0 counts as changed: the particle is then computed again).
-    d.prefix = std::min({first_difference(before.node.data(), now.node.data(), common),
-                         first_difference(before.part.data(), now.part.data(), common),
+    d.prefix = std::min({first_difference(before.node, now.node, common),  // model::IdColumn's
+                         first_difference(before.part, now.part, common),
                          first_difference(before.mass.data(), now.mass.data(), common),
                          first_difference(before.volume.data(), now.volume.data(), common)});
     const auto tail = [&](const auto& a, const auto& b) {
-        return common_tail(a.data() + n_old - (common - d.prefix), b.data() + n_new - (common - d.prefix),
-                           common - d.prefix);
+        if constexpr (std::is_same_v<std::decay_t<decltype(a)>, model::IdColumn>)
+            return common_tail(a, n_old, b, n_new, common - d.prefix);
+        else
+            return common_tail(a.data() + n_old - (common - d.prefix), b.data() + n_new - (common - d.prefix),
+                               common - d.prefix);
     };
     const std::size_t suffix = std::min({tail(before.node, now.node), tail(before.part, now.part),
                                          tail(before.mass, now.mass), tail(before.volume, now.volume)});

@@ -122,14 +122,14 @@ void random_edit(model::Model& m, std::mt19937& rng, int parts) {
             particles.part.insert(particles.part.begin() + at, 1 + static_cast<long long>(rng() % parts));
             particles.mass.insert(particles.mass.begin() + at, 1.5e-3);
             particles.volume.insert(particles.volume.begin() + at, 0);
-            particles.line.insert(particles.line.begin() + at, 0);
+            particles.line.insert(static_cast<std::size_t>(at), 0);
             break;
         }
         default: {  // a removal
             const auto at = static_cast<std::ptrdiff_t>(any(rng));
             particles.node.erase(particles.node.begin() + at), particles.part.erase(particles.part.begin() + at);
             particles.mass.erase(particles.mass.begin() + at), particles.volume.erase(particles.volume.begin() + at);
-            particles.line.erase(particles.line.begin() + at);
+            particles.line.erase(static_cast<std::size_t>(at));
         }
     }
 }
@@ -304,7 +304,7 @@ TEST_CASE("preview follow: a deliberately wrong update is caught, and the update
     no_counts.neighbour_counts = false;
     CHECK_FALSE(preproc::follow_particle_edit(preproc::compute_preview(before, no_counts), before, now));
     model::Model lost = before;
-    lost.particles.node[5] = 999999;
+    lost.particles.node.set(5, 999999);
     CHECK_FALSE(preproc::follow_particle_edit(old, before, lost));
 }
 

@@ -93,7 +93,7 @@ model::Model lattice_model(int side, bool shuffled_nodes) {
     if (shuffled_nodes) std::shuffle(at.begin(), at.end(), std::mt19937(3));
     m.nodes.id.resize(n), m.nodes.x.resize(n), m.nodes.y.resize(n), m.nodes.z.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-        m.nodes.id[at[i]] = static_cast<long long>(i + 1);
+        m.nodes.id.set(at[i], static_cast<long long>(i + 1));
         m.nodes.x[at[i]] = p.x[i], m.nodes.y[at[i]] = p.y[i], m.nodes.z[at[i]] = p.z[i];
         m.particles.node.push_back(static_cast<long long>(i + 1));
         m.particles.part.push_back(p.x[i] < side / 2.0 ? 1 : 2);

@@ -1,0 +1,137 @@
+#include "model/id_column.hpp"
+
+#include <cstring>
+#include <stdexcept>
+
+namespace sphdeck::model {
+
+namespace {
+// Ids kept aside cost 16 bytes each; past one in 16 entries the column holds all in 8 bytes.
+constexpr std::size_t aside_allowance(std::size_t size) { return size / 16 + 64; }
+}  // namespace
+
+long long IdColumn::aside(std::size_t i) const {
+    const auto it =
+        std::lower_bound(aside_.begin(), aside_.end(), i, [](const Aside& a, std::size_t at) { return a.first < at; });
+    return it->second;
+}
+
+long long IdColumn::at(std::size_t i) const {
+    if (i >= size()) throw std::out_of_range("IdColumn::at");
+    return (*this)[i];
+}
+
+void IdColumn::push_back(long long id) {
+    if (full_) return wide_ids_.push_back(id);
+    if (fits(id)) return narrow_.push_back(static_cast<std::int32_t>(id));
+    aside_.emplace_back(narrow_.size(), id);
+    narrow_.push_back(aside_mark);
+    widen_if_many();
+}
+
+void IdColumn::set(std::size_t i, long long id) {
+    if (full_) return void(wide_ids_[i] = id);
+    auto it =
+        std::lower_bound(aside_.begin(), aside_.end(), i, [](const Aside& a, std::size_t at) { return a.first < at; });
+    const bool was_aside = narrow_[i] == aside_mark && it != aside_.end() && it->first == i;
+    if (fits(id)) {
+        if (was_aside) aside_.erase(it);
+        narrow_[i] = static_cast<std::int32_t>(id);
+        return;
+    }
+    narrow_[i] = aside_mark;
+    if (was_aside)
+        it->second = id;
+    else
+        aside_.insert(it, {i, id});
+    widen_if_many();
+}
+
+void IdColumn::resize(std::size_t n) {
+    if (full_) return wide_ids_.resize(n);
+    if (n < narrow_.size()) {
+        auto it = std::lower_bound(aside_.begin(), aside_.end(), n,
+                                   [](const Aside& a, std::size_t at) { return a.first < at; });
+        aside_.erase(it, aside_.end());
+    }
+    narrow_.resize(n, 0);
+}
+
+void IdColumn::append(const IdColumn& from, std::size_t first, std::size_t count) {
+    if (!full_ && !from.full_ && from.aside_.empty()) {
+        const auto begin = from.narrow_.begin() + static_cast<std::ptrdiff_t>(first);
+        narrow_.insert(narrow_.end(), begin, begin + static_cast<std::ptrdiff_t>(count));
+        return;
+    }
+    reserve(size() + count);
+    for (std::size_t i = first; i < first + count; ++i) push_back(from[i]);
+}
+
+void IdColumn::copy_from(const IdColumn& from, std::size_t first, std::size_t count, std::size_t to) {
+    if (!full_ && !from.full_ && from.aside_.empty() && aside_.empty()) {
+        const auto begin = from.narrow_.begin() + static_cast<std::ptrdiff_t>(first);
+        std::copy(begin, begin + static_cast<std::ptrdiff_t>(count), narrow_.begin() + static_cast<std::ptrdiff_t>(to));
+        return;
+    }
+    for (std::size_t i = 0; i < count; ++i) set(to + i, from[first + i]);
+}
+
+IdColumn::const_iterator IdColumn::insert(const_iterator at, long long id) {
+    std::vector<long long> all(begin(), end());
+    const std::size_t i = at.index();
+    all.insert(all.begin() + static_cast<std::ptrdiff_t>(i), id);
+    clear();
+    for (long long v : all) push_back(v);
+    return {this, i};
+}
+
+IdColumn::const_iterator IdColumn::erase(const_iterator at) {
+    std::vector<long long> all(begin(), end());
+    const std::size_t i = at.index();
+    all.erase(all.begin() + static_cast<std::ptrdiff_t>(i));
+    clear();
+    for (long long v : all) push_back(v);
+    return {this, i};
+}
+
+void IdColumn::widen_if_many() {
+    if (aside_.size() <= aside_allowance(narrow_.size())) return;
+    std::vector<long long> all(begin(), end());
+    wide_ids_ = std::move(all);
+    full_ = true;
+    narrow_ = {}, aside_ = {};
+}
+
+bool operator==(const IdColumn& a, const IdColumn& b) {
+    if (a.size() != b.size()) return false;
+    if (!a.full_ && !b.full_ && a.aside_ == b.aside_) return a.narrow_ == b.narrow_;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (a[i] != b[i]) return false;
+    return true;
+}
+
+std::size_t first_difference(const IdColumn& a, const IdColumn& b, std::size_t n) {
+    std::size_t i = 0;
+    if (!a.full_ && !b.full_ && a.aside_.empty() && b.aside_.empty()) {
+        constexpr std::size_t block = 1024;
+        const std::int32_t *x = a.narrow_.data(), *y = b.narrow_.data();
+        while (i + block <= n && std::memcmp(x + i, y + i, block * sizeof(std::int32_t)) == 0) i += block;
+    }
+    while (i < n && a[i] == b[i]) ++i;
+    return i;
+}
+
+std::size_t common_tail(const IdColumn& a, std::size_t a_end, const IdColumn& b, std::size_t b_end, std::size_t n) {
+    std::size_t k = 0;
+    if (!a.full_ && !b.full_ && a.aside_.empty() && b.aside_.empty()) {
+        constexpr std::size_t block = 1024;
+        const std::int32_t *x = a.narrow_.data(), *y = b.narrow_.data();
+        while (k + block <= n &&
+               std::memcmp(x + a_end - k - block, y + b_end - k - block, block * sizeof(std::int32_t)) == 0)
+            k += block;
+    }
+    while (k < n && a[a_end - k - 1] == b[b_end - k - 1]) ++k;
+    return k;
+}
+
+}  // namespace sphdeck::model
