@@ -71,19 +71,24 @@ TEST_CASE("refsolver: a uniform lattice at rest in a box of symmetry planes stay
         }
 }
 
-// FORM 1 too: the volume-weighted continuity with its momentum factor (continuity.hpp, momentum.hpp);
-// masses 1 and 2, so the two particles' densities differ.
+// Two particles of ideal gas (e0 = 1) approaching each other, masses 1 and 2 (so their densities differ).
+TestDeck two_approaching_particles(double tssfac) {
+    TestDeck deck;
+    deck.sphini = 1.0;
+    deck.hmin = deck.hmax = 1.0;
+    deck.eos = "*EOS_LINEAR_POLYNOMIAL\n1,0,0,0,0,0.4,0.4,0\n1.0,1\n";
+    deck.particles = {{0, 0, 0, 1.0, 0.3, 0.05, 0}, {1.5, 0.2, 0, 2.0, -0.4, 0, 0.1}};
+    deck.endtim = 6.0;
+    deck.tssfac = tssfac;
+    return deck;
+}
+
+// FORM 1 too: the volume-weighted continuity with its momentum factor (continuity.hpp, momentum.hpp).
 TEST_CASE("refsolver: two particles approaching conserve momentum and energy; mass is exact") {
     for (int form : {0, 1}) {
         CAPTURE(form);
-        TestDeck deck;
+        TestDeck deck = two_approaching_particles(0.1);
         deck.form = form;
-        deck.sphini = 1.0;
-        deck.hmin = deck.hmax = 1.0;
-        deck.eos = "*EOS_LINEAR_POLYNOMIAL\n1,0,0,0,0,0.4,0.4,0\n1.0,1\n";  // ideal gas, e0 = 1
-        deck.particles = {{0, 0, 0, 1.0, 0.3, 0.05, 0}, {1.5, 0.2, 0, 2.0, -0.4, 0, 0.1}};
-        deck.endtim = 6.0;
-        deck.tssfac = 0.1;
         auto setup = solver_for(deck);
         REQUIRE_MESSAGE(setup.simulation, unsupported_text(setup));
         refsolver::Simulation& sim = *setup.simulation;
@@ -111,13 +116,7 @@ TEST_CASE("refsolver: two particles approaching conserve momentum and energy; ma
 // p_j / rho_j^2) v_ij . g_ij, heated each particle by its neighbour's pressure: with masses 1 and 2 (so
 // different densities as they approach) e / rho^0.4 drifted by 2.6e-3, now 3e-6 (time integration).
 TEST_CASE("refsolver: without viscosity each particle stays on its adiabat, e / rho^(gamma - 1) constant") {
-    TestDeck deck;
-    deck.sphini = 1.0;
-    deck.hmin = deck.hmax = 1.0;
-    deck.eos = "*EOS_LINEAR_POLYNOMIAL\n1,0,0,0,0,0.4,0.4,0\n1.0,1\n";  // ideal gas, e0 = 1
-    deck.particles = {{0, 0, 0, 1.0, 0.3, 0.05, 0}, {1.5, 0.2, 0, 2.0, -0.4, 0, 0.1}};
-    deck.endtim = 6.0;
-    deck.tssfac = 0.05;
+    const TestDeck deck = two_approaching_particles(0.05);
     auto setup = solver_for(deck);
     REQUIRE_MESSAGE(setup.simulation, unsupported_text(setup));
     refsolver::Simulation& sim = *setup.simulation;
