@@ -39,6 +39,37 @@ def fuzz_lists_agree():
     return out
 
 
+def install_deps_on_fresh_machine():
+    """scripts/install-deps.sh on a machine where some packages were never installed: dpkg-query then exits 1
+    (as Debian's does for a name it has no record of) and the script must go on to install exactly the
+    missing ones, not stop (it did, under pipefail, so `make demo` failed on a fresh Debian 12)."""
+    out = []
+    with tempfile.TemporaryDirectory() as work:
+        fake = {
+            # cmake and python3 installed, the rest unknown to dpkg: exit 1 as the real dpkg-query does.
+            "dpkg-query": "printf 'cmake:install ok installed python3:install ok installed '; "
+                          "echo 'dpkg-query: no packages found matching tao-pegtl-dev' >&2; exit 1",
+            "apt-get": f'echo "$@" >> {work}/apt.log',
+            "id": "echo 0",
+        }
+        for name, body in fake.items():
+            path = os.path.join(work, name)
+            with open(path, "w") as f:
+                f.write("#!/bin/sh\n" + body + "\n")
+            os.chmod(path, 0o755)
+        env = dict(os.environ, PATH=work + os.pathsep + os.environ["PATH"])
+        done = run(["bash", os.path.join(ROOT, "scripts/install-deps.sh"), "--build"], env)
+        log = open(os.path.join(work, "apt.log")).read() if os.path.exists(os.path.join(work, "apt.log")) else ""
+        installs = [line.split() for line in log.splitlines() if line.startswith("install")]
+        if done.returncode != 0:
+            out.append(f"install-deps on a fresh machine: exit {done.returncode}: {done.stderr[-300:]}")
+        elif len(installs) != 1 or "tao-pegtl-dev" not in installs[0] or "cmake" in installs[0] \
+                or "python3" in installs[0]:
+            out.append(f"install-deps on a fresh machine: apt-get calls {log!r}, expected one install of the "
+                       "missing packages only")
+    return out
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--sphdeck", required=True)
@@ -97,6 +128,7 @@ def main():
     if not re.fullmatch(r"key=sphdeck-\S+-\S+-[0-9a-f]{20}", keys[0]) or keys[0] != keys[1]:
         failures.append(f"action, build key: {keys}, expected the same key=sphdeck-SYSTEM-ARCH-HASH twice")
     failures += fuzz_lists_agree()
+    failures += install_deps_on_fresh_machine()
     for f in failures:
         print("FAIL " + f)
     print(f"ci packaging: {'passed' if not failures else 'failed'} (2 hooks, 2 action formats)")
