@@ -1,6 +1,7 @@
 // `sphdeck check` over folders and standard input, --exclude, --statistics, --exit-zero and
 // --output-file (issue 33 items 1 and 3).
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
 #include <fstream>
 #include <sstream>
@@ -59,6 +60,25 @@ TEST_CASE("check inputs: standard input, named by --stdin-filename, resolves inc
     CHECK(run.out.find("model/include/parts.k:3:30: error: part 1 names material 3") != std::string::npos);
     const test::Run unnamed = test::run_sphdeck(dir, "check --format concise - < model/main.k");
     CHECK(unnamed.out.find("<stdin>:3:1: error") != std::string::npos);  // the include is not found: DK010
+}
+
+TEST_CASE("check inputs: a deck of several megabytes through a pipe reads as the same file does") {
+    // Standard input is read in blocks of 1 MiB from a pipe, in one block from a redirected file: the
+    // deck spans several blocks, and its last line holds a mistake, so every byte must arrive in order.
+    test::TempDir dir;
+    std::string deck = "*KEYWORD\n*NODE\n";
+    for (int id = 1; id <= 60000; ++id) deck += fmt::format("{:8d}{:16.6f}{:16.6f}{:16.6f}\n", id, id * 0.01, 0.0, 0.0);
+    deck += "*CONTROL_TERMINATION\n       abc\n*END\n";  // DK003 on the deck's second last line
+    dir.write("big.k", deck);
+    REQUIRE(deck.size() > 3u << 20);
+    const test::Run file = test::run_sphdeck(dir, "check --format concise big.k");
+    const test::Run piped = test::run_sphdeck(dir, "check --format concise --stdin-filename big.k - < big.k");
+    const test::Run through_cat =
+        test::run_sphdeck(dir, "check --format concise --stdin-filename big.k -", "cat big.k | ");
+    CHECK(file.exit_code == 1);
+    CHECK(file.out.find("big.k:60004:8: error") != std::string::npos);
+    CHECK(piped.out == file.out);
+    CHECK(through_cat.out == file.out);
 }
 
 TEST_CASE("check inputs: --statistics, --exit-zero and --output-file") {
