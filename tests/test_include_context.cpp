@@ -95,6 +95,25 @@ TEST_CASE("include context: a file no deck includes gets none; roots of sphdeck.
     CHECK(engine::check_in_context(parts, engine::Documents{}, options).decks.empty());  // main.k reads the other
 }
 
+TEST_CASE("include context: a big deck naming the file across its 1 MiB search slices") {
+    // The decks around a file are searched in slices of 1 MiB released behind the search: a name cut by
+    // a slice's end is still found (each slice reaches into the next).
+    for (const std::size_t cut : {std::size_t{0}, std::size_t{1}, std::size_t{4}, std::size_t{6}, std::size_t{7}}) {
+        CAPTURE(cut);
+        test::TempDir dir;
+        dir.write("sphdeck.toml", "");
+        // "*KEYWORD\n" + comment + "\n*INCLUDE\ninclude/parts.k": "parts.k" starts 27 bytes after the
+        // comment's start; it starts `cut` bytes before the first slice's end.
+        const std::string comment = "$" + std::string((std::size_t{1} << 20) - cut - 27 - 1, '-');
+        const std::string main =
+            "*KEYWORD\n" + comment + "\n*INCLUDE\ninclude/parts.k\n*SECTION_SOLID\n         1\n*END\n";
+        REQUIRE(main.find("parts.k") == (std::size_t{1} << 20) - cut);
+        dir.write("big_main.k", main);
+        const std::string parts = dir.write("include/parts.k", kParts);
+        CHECK(engine::check_in_context(parts, engine::Documents{}, {}).decks.size() == 1);
+    }
+}
+
 TEST_CASE("include context: sphdeck check names the deck and reports only the file's findings") {
     test::TempDir dir;
     dir.write("sphdeck.toml", "");
