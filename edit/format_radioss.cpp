@@ -31,7 +31,8 @@ CellKind kind_of(rad::Cell cell) {
 struct CellColumns {
     std::vector<grammar::FixedField> slots;
     std::vector<CellKind> kinds;
-    bool numbers = false;  // a card of text only (a title, a name) is kept as written
+    std::uint64_t integer_fields = 0;  // bit i: cell i reads an integer
+    bool numbers = false;              // a card of text only (a title, a name) is kept as written
 };
 
 class ColumnCache {
@@ -43,6 +44,7 @@ public:
         CellColumns& c = it->second;
         c.slots = rad::layout(card, version_);
         for (const auto& f : card.fields) {
+            if (f.cell == rad::Cell::Int && c.kinds.size() < 64) c.integer_fields |= std::uint64_t{1} << c.kinds.size();
             c.kinds.push_back(kind_of(f.cell));
             c.numbers = c.numbers || c.kinds.back() == CellKind::Number;
         }
@@ -98,7 +100,7 @@ void format_block(const FormatScope& scope, const grammar::Block& block, int ver
         const CellColumns& c = columns.of(card);
         // Commas: the starter's free reading of some cards; kept as written.
         if (c.numbers && scope.formats(l->file) && text.find(',') == std::string_view::npos)
-            format_card_line(scope, *l, text, c.slots, c.kinds, true, buffer, out);
+            format_card_line(scope, *l, text, {c.slots, c.kinds, c.integer_fields}, true, buffer, out);
         if (sequence.needs_values(next.index)) {
             decoder.decode(*l, card, version, false, values, {}, keyword->trailing_checked);
             dropped.clear();
@@ -114,6 +116,7 @@ void format_radioss(const FormatScope& scope, LineChanges& out) {
     ColumnCache columns(version);
     const EngineBlocks engine(scope.deck);
     for (const grammar::Block& block : scope.deck.blocks) {
+        if (scope.abandoned()) return;
         if (!scope.formats(block.span.file) || engine.engine(block)) continue;
         format_block(scope, block, version, columns, out);
     }
