@@ -10,6 +10,10 @@
 
 namespace sphdeck::edit {
 namespace detail {
+bool has_letter(std::string_view text) {
+    return std::any_of(text.begin(), text.end(),
+                       [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); });
+}
 
 void LineChanges::append(LineChanges&& other) {
     if (changes.empty()) {
@@ -33,7 +37,10 @@ CardLineState format_card_line(const FormatScope& scope, const grammar::CardLine
     const auto kinds = cells.kinds;
     if (no_comma_or_tab && already_laid_out(text, slots, kinds)) return CardLineState::Fixed;
     if (grammar::is_blank(text)) return CardLineState::Blank;  // a blank card: every default, kept as written
-    if (!free_allowed) return CardLineState::Fixed;            // titles, headings, file names: their text as written
+    if (!free_allowed) {                                       // titles, headings, file names: their text as written
+        if (scope.findings_needed && !has_letter(text)) scope.give_up();  // a heading of numbers (DK032)?
+        return CardLineState::Fixed;
+    }
     // Without the findings: a line laid out already in plain numbers is one no finding of the reading holds
     // back (a finding's line is kept even when laid out: DK004 `1.0` in an integer field).
     if (scope.findings_needed && plain_laid_out(text, slots, kinds, cells.integer_fields)) return CardLineState::Fixed;

@@ -196,7 +196,10 @@ void format_repeated(const FormatScope& scope, const grammar::CardLine* from, co
 void format_dyna_block(const FormatScope& scope, const grammar::Block& block, DynaColumnCache& columns,
                        LineChanges& out) {
     const auto match = decodable_match(block);
-    if (!match) return;
+    if (!match) {
+        if (block.line_count > 0) scope.give_up();  // lines it does not lay out: their findings unknown
+        return;
+    }
     const grammar::RawDeck& deck = scope.deck;
     std::vector<diag::Diagnostic> dropped;
     model::CardDecoder decoder(deck, dropped);
@@ -206,7 +209,10 @@ void format_dyna_block(const FormatScope& scope, const grammar::Block& block, Dy
     const CardSpec* previous = nullptr;
     for (const grammar::CardLine* l = deck.begin_lines(block); l != deck.end_lines(block); ++l) {
         const CardSpec* card = sequence.next();
-        if (!card) return;  // past the block's cards: kept as written
+        if (!card) {  // past the block's cards: kept as written
+            scope.give_up();
+            return;
+        }
         const CardColumns& c = columns.of(block.keyword, *card, block.format);
         if (sequence.only_repeats(*card) && !scope.options.headers) {
             if (scope.formats(l->file)) format_repeated(scope, l, deck.end_lines(block), c, out);

@@ -80,12 +80,18 @@ void format_block(const FormatScope& scope, const grammar::Block& block, int ver
                   LineChanges& out) {
     if (block.keyword.empty() || block.keyword[0] != '/') return;
     const rad::KeywordSpec* keyword = rad::find_keyword(block.keyword);
-    if (!keyword || !keyword->decoded || keyword->engine) return;
+    if (!keyword || !keyword->decoded || keyword->engine) {
+        if (block.line_count > 0) scope.give_up();  // lines it does not lay out: their findings unknown
+        return;
+    }
     const grammar::RawDeck& deck = scope.deck;
     const rad::FormatSpec& format = keyword->format_for(version);
     const grammar::CardLine* l = deck.begin_lines(block);
     const grammar::CardLine* end = deck.end_lines(block);
-    if (keyword->title && !rad::is_v4(version) && l != end) ++l;  // the title line: text
+    if (keyword->title && !rad::is_v4(version) && l != end) {  // the title line: text
+        if (scope.formats(l->file) && !has_letter(deck.text(*l))) scope.give_up();
+        ++l;
+    }
     model::RadiossCardSequence sequence(format.cards);
     std::vector<diag::Diagnostic> dropped;
     model::RadiossCardDecoder decoder(deck, dropped);
@@ -94,13 +100,18 @@ void format_block(const FormatScope& scope, const grammar::Block& block, int ver
     for (; l != end; ++l) {
         const std::string_view text = deck.text(*l);
         const auto next = sequence.next(text);
-        if (next.step == model::RadiossCardSequence::Step::Past) return;
+        if (next.step == model::RadiossCardSequence::Step::Past) {
+            scope.give_up();
+            return;
+        }
         if (next.step == model::RadiossCardSequence::Step::Blank) continue;
         const rad::CardSpec& card = format.cards[next.index];
         const CellColumns& c = columns.of(card);
         // Commas: the starter's free reading of some cards; kept as written.
         if (c.numbers && scope.formats(l->file) && text.find(',') == std::string_view::npos)
             format_card_line(scope, *l, text, {c.slots, c.kinds, c.integer_fields}, true, buffer, out);
+        else if (scope.formats(l->file) && (c.numbers || !has_letter(text)))
+            scope.give_up();  // a free line, or a name of numbers: may be a misreading's cause
         if (sequence.needs_values(next.index)) {
             decoder.decode(*l, card, version, false, values, {}, keyword->trailing_checked);
             dropped.clear();

@@ -32,6 +32,13 @@ struct FormatScope {
 
     bool formats(grammar::FileId file) const { return files.count(file) != 0; }
     bool abandoned() const { return findings_needed && findings_needed->load(std::memory_order_relaxed); }
+    // Without the findings, a reading that may hold a misreading's cause gives up too: a cause (DK032 a
+    // missing heading, DK033 a keyword without its '*', DK029/DK030 shifts) folds the findings of other
+    // lines into notes, which hold those lines back even when laid out. Such readings show lines past a
+    // block's cards, a heading or title of numbers, or a block the formatter does not lay out.
+    void give_up() const {
+        if (findings_needed) findings_needed->store(true, std::memory_order_relaxed);
+    }
     const std::string_view* doubt(grammar::FileId file, std::uint32_t line) const {
         if (findings_needed) {
             findings_needed->store(true, std::memory_order_relaxed);
@@ -41,6 +48,8 @@ struct FormatScope {
         return it == doubtful.end() ? nullptr : &it->second;
     }
 };
+
+bool has_letter(std::string_view text);  // an ASCII letter in it (a title, not a line of numbers)
 
 // The `$#` line naming `card`'s fields over their columns at `slots`, as LS-PrePost writes it.
 std::string field_header(std::span<const std::string_view> names, std::span<const grammar::FixedField> slots);
