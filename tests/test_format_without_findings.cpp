@@ -105,9 +105,12 @@ TEST_CASE("format without findings: the one-pass test of a bulk line agrees with
         }
     lines.push_back("      ab" + base.substr(8));  // a name in the label field
     lines.push_back(base.substr(0, 40) + std::string(16, ' ') + "       0");
+    lines.push_back(base + std::string(100, '1'));  // wider than the bit masks
+    // What follows the line: the next line (long enough for the 16-byte chunks, or not), or the file's end.
+    const std::string tail(200, '7');
     for (const std::string& line : lines)
-        for (const std::string& after :
-             {std::string("\n*END\n"), std::string("\r\n"), std::string(), std::string("\r")}) {
+        for (const std::string& after : {std::string("\n*END\n"), std::string("\r\n"), std::string(), std::string("\r"),
+                                         "\n" + tail, "\r\n" + tail, "\r" + tail}) {
             CAPTURE(line);
             CAPTURE(after.size());
             const std::string file = line + after;
