@@ -1,6 +1,7 @@
 // sphdeck format DECK...: rewrite decks in their canonical layout (edit/format_deck.hpp), in place, or
 // tell whether they would change (--check, for CI and pre-commit), or print the diff (--diff). The deck
-// is read and checked first: the findings of the deck syntax say which lines to leave as written.
+// is read; it is checked too, its findings saying which lines to leave as written, unless its reading
+// alone settles every line (a deck laid out already: edit::format_deck_without_findings).
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>

@@ -10,6 +10,7 @@
 
 namespace sphdeck::edit {
 namespace detail {
+
 bool has_letter(std::string_view text) {
     return std::any_of(text.begin(), text.end(),
                        [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); });
