@@ -1,11 +1,13 @@
 // sphdeck format DECK...: rewrite decks in their canonical layout (edit/format_deck.hpp), in place, or
 // tell whether they would change (--check, for CI and pre-commit), or print the diff (--diff). The deck
-// is read and checked first: the findings of the deck syntax say which lines to leave as written.
+// is read; it is checked too, its findings saying which lines to leave as written, unless its reading
+// alone settles every line (a deck laid out already: edit::format_deck_without_findings).
 #include <filesystem>
 #include <fmt/format.h>
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <optional>
 #include <unistd.h>
 
 #include "cli/check_inputs.hpp"
@@ -17,6 +19,7 @@
 #include "engine/check.hpp"
 #include "engine/config_file.hpp"
 #include "grammar/file_paths.hpp"
+#include "grammar/read_deck.hpp"
 
 namespace sphdeck::cli {
 namespace {
@@ -61,34 +64,64 @@ std::vector<std::string> include_paths_for(const std::string& deck, const Format
     return paths;
 }
 
-// Reads one input: a file, or standard input ("-") named and resolved as --stdin-filename says.
-engine::CheckResult read_input(const CheckInput& input, const FormatArgs& args) {
+// Reads and checks one input: a file, or standard input ("-") named and resolved as --stdin-filename says.
+engine::CheckResult read_input(const CheckInput& input, const FormatArgs& args,
+                               const std::vector<std::string>& include_paths) {
     engine::CheckOptions options;
     options.rules.geometry = false;  // the layout needs the reading's findings, not the particles' geometry
-    if (input.path != "-") {
-        options.reader.include_paths = include_paths_for(input.path, args);
-        return engine::check_file(input.path, options);
-    }
-    options.reader.include_paths =
-        include_paths_for(args.stdin_filename.empty() ? "." : deck_display_name("-", args.stdin_filename), args);
+    options.reader.include_paths = include_paths;
+    if (input.path != "-") return engine::check_file(input.path, options);
     return check_deck_input("-", args.stdin_filename, options);
+}
+
+// A deck and its formatting. Most decks are laid out already, and then the layout needs only the reading
+// (edit::format_deck_without_findings): the model and rules run only when a line may change or be kept.
+struct FormattedDeck {
+    std::optional<grammar::RawDeck> read;        // the reading alone, or
+    std::optional<engine::CheckResult> checked;  // the check, with the findings
+    std::vector<grammar::FileId> files;
+    edit::FormatResult formatted;
+    const grammar::RawDeck& deck() const { return read ? *read : checked->deck; }
+};
+
+FormattedDeck read_and_format(const CheckInput& input, const FormatArgs& args, const edit::FormatOptions& options) {
+    std::string anchor = input.path;  // where the configuration is looked for
+    if (input.path == "-") anchor = args.stdin_filename.empty() ? "." : deck_display_name("-", args.stdin_filename);
+    const std::vector<std::string> include_paths = include_paths_for(anchor, args);
+    FormattedDeck out;
+    if (input.path != "-") {                  // standard input can be read once: it is checked at once
+        grammar::dyna::ReaderOptions reader;  // as engine::check_file reads it
+        reader.include_paths = include_paths;
+        out.read = grammar::read_deck(input.path, reader);
+        out.files = edit::files_to_format(*out.read, options.includes);
+        if (auto formatted = edit::format_deck_without_findings(*out.read, out.files, options)) {
+            out.formatted = std::move(*formatted);
+            return out;
+        }
+        out.read.reset();  // the check reads it again: never two copies at once
+    }
+    out.checked = read_input(input, args, include_paths);
+    out.files = edit::files_to_format(out.checked->deck, options.includes);
+    out.formatted = edit::format_deck(out.checked->deck, out.checked->diagnostics, out.files, options);
+    return out;
 }
 
 // Formats one deck (and its includes when asked, or when it was found in a folder: the folder's decks
 // are formatted through the decks that include them); true when a file changed or would change. A deck
 // read from standard input is written to standard output (with --check and --diff: nothing written).
 bool format_one(const CheckInput& input, const FormatArgs& args, Totals& totals) {
-    const engine::CheckResult r = read_input(input, args);
     const bool from_stdin = input.path == "-";
     edit::FormatOptions format_options = args.options;
     format_options.includes = args.options.includes || input.found_in_folder;
-    const auto files = edit::files_to_format(r.deck, format_options.includes);
-    edit::FormatResult formatted = edit::format_deck(r.deck, r.diagnostics, files, format_options);
+    FormattedDeck read = read_and_format(input, args, format_options);
+    const grammar::RawDeck& deck = read.deck();
+    const std::vector<grammar::FileId>& files = read.files;
+    edit::FormatResult& formatted = read.formatted;
     for (std::size_t k = 0; k < totals.changes.size(); ++k) totals.changes[k] += formatted.changes[k];
     totals.kept += formatted.kept;
     if (args.verbose)
         for (const auto& kept : formatted.kept_lines)
-            fmt::print(stderr, "{}:{}: left as written: {}\n", r.deck.sources.file(kept.file).display_name, kept.line,
+            fmt::print(stderr, "{}:{}: left as written: {}\n", deck.sources.file(kept.file).display_name, kept.line,
                        kept.reason);
 
     // The edits come in file order, one per changed line (a line's new text always differs from its old):
@@ -103,7 +136,7 @@ bool format_one(const CheckInput& input, const FormatArgs& args, Totals& totals)
         std::size_t end = at;
         while (end < count && all[end].span.file == id) ++end;
         if (end == at) {
-            if (from_stdin && !args.check && !args.diff) fmt::print("{}", r.deck.sources.file(id).text);
+            if (from_stdin && !args.check && !args.diff) fmt::print("{}", deck.sources.file(id).text);
             continue;
         }
         std::vector<diag::TextEdit> edits;
@@ -113,7 +146,7 @@ bool format_one(const CheckInput& input, const FormatArgs& args, Totals& totals)
             edits.assign(std::make_move_iterator(all.begin() + static_cast<std::ptrdiff_t>(at)),
                          std::make_move_iterator(all.begin() + static_cast<std::ptrdiff_t>(end)));
         at = end;
-        const grammar::SourceFile& file = r.deck.sources.file(id);
+        const grammar::SourceFile& file = deck.sources.file(id);
         any = true;
         ++totals.changed;
         if (args.diff)

@@ -11,6 +11,11 @@
 namespace sphdeck::edit {
 namespace detail {
 
+bool has_letter(std::string_view text) {
+    return std::any_of(text.begin(), text.end(),
+                       [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); });
+}
+
 void LineChanges::append(LineChanges&& other) {
     if (changes.empty()) {
         changes = std::move(other.changes);
@@ -27,15 +32,24 @@ void LineChanges::append(LineChanges&& other) {
 }
 
 CardLineState format_card_line(const FormatScope& scope, const grammar::CardLine& line, std::string_view text,
-                               std::span<const grammar::FixedField> slots, std::span<const CellKind> kinds,
-                               bool free_allowed, std::string& buffer, LineChanges& out, bool no_comma_or_tab) {
+                               const CardCells& cells, bool free_allowed, std::string& buffer, LineChanges& out,
+                               bool no_comma_or_tab) {
+    const auto slots = cells.slots;
+    const auto kinds = cells.kinds;
     if (no_comma_or_tab && already_laid_out(text, slots, kinds)) return CardLineState::Fixed;
     if (grammar::is_blank(text)) return CardLineState::Blank;  // a blank card: every default, kept as written
-    if (!free_allowed) return CardLineState::Fixed;            // titles, headings, file names: their text as written
+    if (!free_allowed) {                                       // titles, headings, file names: their text as written
+        if (scope.findings_needed && !has_letter(text)) scope.give_up();  // a heading of numbers (DK032)?
+        return CardLineState::Fixed;
+    }
+    // Without the findings: a line laid out already in plain numbers is one no finding of the reading holds
+    // back (a finding's line is kept even when laid out: DK004 `1.0` in an integer field).
+    if (scope.findings_needed && plain_laid_out(text, slots, kinds, cells.integer_fields)) return CardLineState::Fixed;
     if (const std::string_view* code = scope.doubt(line.file, line.line)) {
         out.keep(line.file, line.line, std::string("finding ") + std::string(*code));
         return CardLineState::Kept;
     }
+    if (scope.abandoned()) return CardLineState::Kept;  // the findings are needed: this pass's result is not used
     const bool free = free_allowed && grammar::is_free_format(text);
     if (free && !scope.options.to_fixed) return CardLineState::Free;  // free lines stay free
     const LineLayout laid =
@@ -107,7 +121,39 @@ bool casts_doubt(const diag::Diagnostic& d) {
     return codes.count(d.code) != 0 || !d.fixes.empty();
 }
 
+// Both formatters, then the changes of their passes in file and line order.
+FormatResult run_formatters(const detail::FormatScope& scope) {
+    detail::LineChanges changes;
+    if (grammar::format_of(scope.deck) == grammar::DeckFormat::Radioss)
+        detail::format_radioss(scope, changes);
+    else
+        detail::format_dyna(scope, changes);
+
+    // Keyword lines, headers and card lines come from different passes: in file and line order.
+    const auto before = [](const diag::TextEdit& a, const diag::TextEdit& b) {
+        return a.span.file != b.span.file ? a.span.file < b.span.file : a.span.line < b.span.line;
+    };
+    if (!std::is_sorted(changes.changes.begin(), changes.changes.end(), before))  // includes interleave files
+        std::stable_sort(changes.changes.begin(), changes.changes.end(), before);
+    FormatResult result;
+    result.edits = std::move(changes.changes);
+    result.changes = changes.counts;
+    result.kept = changes.kept_count;
+    result.kept_lines = std::move(changes.kept);
+    return result;
+}
+
 }  // namespace
+
+std::optional<FormatResult> format_deck_without_findings(const grammar::RawDeck& deck,
+                                                         const std::vector<grammar::FileId>& files,
+                                                         const FormatOptions& options) {
+    std::atomic<bool> findings_needed{false};
+    detail::FormatScope scope{deck, options, {files.begin(), files.end()}, {}, &findings_needed};
+    FormatResult result = run_formatters(scope);
+    if (findings_needed.load()) return std::nullopt;
+    return result;
+}
 
 FormatResult format_deck(const grammar::RawDeck& deck, const std::vector<diag::Diagnostic>& findings,
                          const std::vector<grammar::FileId>& files, const FormatOptions& options) {
@@ -125,24 +171,7 @@ FormatResult format_deck(const grammar::RawDeck& deck, const std::vector<diag::D
         for (const diag::Note& note : d.notes) doubt(note.span, d.code);
     }
 
-    detail::LineChanges changes;
-    if (grammar::format_of(deck) == grammar::DeckFormat::Radioss)
-        detail::format_radioss(scope, changes);
-    else
-        detail::format_dyna(scope, changes);
-
-    // Keyword lines, headers and card lines come from different passes: in file and line order.
-    const auto before = [](const diag::TextEdit& a, const diag::TextEdit& b) {
-        return a.span.file != b.span.file ? a.span.file < b.span.file : a.span.line < b.span.line;
-    };
-    if (!std::is_sorted(changes.changes.begin(), changes.changes.end(), before))  // includes interleave files
-        std::stable_sort(changes.changes.begin(), changes.changes.end(), before);
-    FormatResult result;
-    result.edits = std::move(changes.changes);
-    result.changes = changes.counts;
-    result.kept = changes.kept_count;
-    result.kept_lines = std::move(changes.kept);
-    return result;
+    return run_formatters(scope);
 }
 
 }  // namespace sphdeck::edit

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,5 +47,13 @@ std::vector<grammar::FileId> files_to_format(const grammar::RawDeck& deck, bool 
 // line, DK016 a tab...; RAD025, RAD030; any finding with a fix) is left as written.
 FormatResult format_deck(const grammar::RawDeck& deck, const std::vector<diag::Diagnostic>& findings,
                          const std::vector<grammar::FileId>& files, const FormatOptions& options);
+
+// The same result without the findings, when it does not depend on them: nullopt as soon as a card line
+// would be asked whether a finding lies on it (a line not laid out already: it may change or be kept).
+// `format --check` of a deck laid out already then needs only its reading, not the model and rules that
+// make the findings (issue 40); on nullopt the caller checks the deck and calls format_deck.
+std::optional<FormatResult> format_deck_without_findings(const grammar::RawDeck& deck,
+                                                         const std::vector<grammar::FileId>& files,
+                                                         const FormatOptions& options);
 
 }  // namespace sphdeck::edit

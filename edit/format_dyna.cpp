@@ -35,8 +35,10 @@ CellKind dyna_kind_of(FieldType t) {
 struct CardColumns {
     std::vector<grammar::FixedField> slots;
     std::vector<CellKind> kinds;
+    std::uint64_t integer_fields = 0;  // bit i: field i reads an integer
     bool free_allowed = false;
     std::string header;
+    CardCells cells() const { return {slots, kinds, integer_fields}; }
 };
 
 class DynaColumnCache {
@@ -48,6 +50,8 @@ public:
         c.slots = keywords::layout_to_write(keyword, card, format);
         std::vector<std::string_view> names;
         for (const auto& f : card.fields) {
+            if (f.type == FieldType::Integer && c.kinds.size() < 64)
+                c.integer_fields |= std::uint64_t{1} << c.kinds.size();
             c.kinds.push_back(dyna_kind_of(f.type));
             c.free_allowed = c.free_allowed || (f.type != FieldType::Text && f.type != FieldType::Unused);
             names.push_back(f.type == FieldType::Unused ? std::string_view{} : f.name);
@@ -159,6 +163,7 @@ void format_repeated(const FormatScope& scope, const grammar::CardLine* from, co
     const std::size_t n = static_cast<std::size_t>(to - from);
     const int threads = n < 8192 ? 1 : omp_get_max_threads();
     std::vector<LineChanges> parts(static_cast<std::size_t>(threads));
+    const CardCells cells = columns.cells();
 #pragma omp parallel num_threads(threads)
     {
         const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
@@ -167,14 +172,21 @@ void format_repeated(const FormatScope& scope, const grammar::CardLine* from, co
         std::string buffer;
         const grammar::SourceText& source = scope.deck.sources.file(from->file).text;
         std::size_t released = begin;
+        const std::string_view file = source.view();
         for (std::size_t i = begin; i < end; ++i) {
-            const grammar::ScannedLine line = grammar::scan_line(scope.deck, from[i]);
-            format_card_line(scope, from[i], line.text, columns.slots, columns.kinds, columns.free_allowed, buffer,
-                             parts[t], !line.comma_or_tab);
+            // Most lines are laid out already: one pass over the text says so; the others are read as usual.
+            std::optional<std::size_t> length = laid_out_length(file.substr(from[i].offset), cells.slots, cells.kinds);
+            if (!length) {
+                const grammar::ScannedLine line = grammar::scan_line(scope.deck, from[i]);
+                format_card_line(scope, from[i], line.text, cells, columns.free_allowed, buffer, parts[t],
+                                 !line.comma_or_tab);
+                length = line.text.size();
+            }
             // As the reader does once the model is built: mapped pages read go back (peak memory).
             if (i + 1 - released == 16384 || i + 1 == end) {
-                source.release(from[released].offset, from[i].offset + line.text.size());
+                source.release(from[released].offset, from[i].offset + *length);
                 released = i + 1;
+                if (scope.abandoned()) break;  // the findings are needed: this pass's result is not used
             }
         }
     }
@@ -184,7 +196,10 @@ void format_repeated(const FormatScope& scope, const grammar::CardLine* from, co
 void format_dyna_block(const FormatScope& scope, const grammar::Block& block, DynaColumnCache& columns,
                        LineChanges& out) {
     const auto match = decodable_match(block);
-    if (!match) return;
+    if (!match) {
+        if (block.line_count > 0) scope.give_up();  // lines it does not lay out: their findings unknown
+        return;
+    }
     const grammar::RawDeck& deck = scope.deck;
     std::vector<diag::Diagnostic> dropped;
     model::CardDecoder decoder(deck, dropped);
@@ -194,7 +209,10 @@ void format_dyna_block(const FormatScope& scope, const grammar::Block& block, Dy
     const CardSpec* previous = nullptr;
     for (const grammar::CardLine* l = deck.begin_lines(block); l != deck.end_lines(block); ++l) {
         const CardSpec* card = sequence.next();
-        if (!card) return;  // past the block's cards: kept as written
+        if (!card) {  // past the block's cards: kept as written
+            scope.give_up();
+            return;
+        }
         const CardColumns& c = columns.of(block.keyword, *card, block.format);
         if (sequence.only_repeats(*card) && !scope.options.headers) {
             if (scope.formats(l->file)) format_repeated(scope, l, deck.end_lines(block), c, out);
@@ -202,8 +220,7 @@ void format_dyna_block(const FormatScope& scope, const grammar::Block& block, Dy
         }
         const std::string_view text = deck.text(*l);
         if (scope.formats(l->file)) {
-            const CardLineState state =
-                format_card_line(scope, *l, text, c.slots, c.kinds, c.free_allowed, buffer, out);
+            const CardLineState state = format_card_line(scope, *l, text, c.cells(), c.free_allowed, buffer, out);
             if (scope.options.headers && card != previous && (state == CardLineState::Fixed))
                 header_above(scope, *l, text, c.header, out);
         }
@@ -224,6 +241,7 @@ void format_dyna(const FormatScope& scope, LineChanges& out) {
     for (const grammar::Block& block : scope.deck.blocks) {
         if (block.keyword.empty() || block.keyword[0] != '*') continue;
         if (!scope.formats(block.span.file)) continue;
+        if (scope.abandoned()) return;
         keyword_case(block, keyword_lines, out);
         format_dyna_block(scope, block, columns, out);
         if (block.line_count > 0) keyword_lines.seen(*(scope.deck.end_lines(block) - 1));

@@ -31,7 +31,8 @@ CellKind kind_of(rad::Cell cell) {
 struct CellColumns {
     std::vector<grammar::FixedField> slots;
     std::vector<CellKind> kinds;
-    bool numbers = false;  // a card of text only (a title, a name) is kept as written
+    std::uint64_t integer_fields = 0;  // bit i: cell i reads an integer
+    bool numbers = false;              // a card of text only (a title, a name) is kept as written
 };
 
 class ColumnCache {
@@ -43,6 +44,7 @@ public:
         CellColumns& c = it->second;
         c.slots = rad::layout(card, version_);
         for (const auto& f : card.fields) {
+            if (f.cell == rad::Cell::Int && c.kinds.size() < 64) c.integer_fields |= std::uint64_t{1} << c.kinds.size();
             c.kinds.push_back(kind_of(f.cell));
             c.numbers = c.numbers || c.kinds.back() == CellKind::Number;
         }
@@ -78,12 +80,18 @@ void format_block(const FormatScope& scope, const grammar::Block& block, int ver
                   LineChanges& out) {
     if (block.keyword.empty() || block.keyword[0] != '/') return;
     const rad::KeywordSpec* keyword = rad::find_keyword(block.keyword);
-    if (!keyword || !keyword->decoded || keyword->engine) return;
+    if (!keyword || !keyword->decoded || keyword->engine) {
+        if (block.line_count > 0) scope.give_up();  // lines it does not lay out: their findings unknown
+        return;
+    }
     const grammar::RawDeck& deck = scope.deck;
     const rad::FormatSpec& format = keyword->format_for(version);
     const grammar::CardLine* l = deck.begin_lines(block);
     const grammar::CardLine* end = deck.end_lines(block);
-    if (keyword->title && !rad::is_v4(version) && l != end) ++l;  // the title line: text
+    if (keyword->title && !rad::is_v4(version) && l != end) {  // the title line: text
+        if (scope.formats(l->file) && !has_letter(deck.text(*l))) scope.give_up();
+        ++l;
+    }
     model::RadiossCardSequence sequence(format.cards);
     std::vector<diag::Diagnostic> dropped;
     model::RadiossCardDecoder decoder(deck, dropped);
@@ -92,13 +100,18 @@ void format_block(const FormatScope& scope, const grammar::Block& block, int ver
     for (; l != end; ++l) {
         const std::string_view text = deck.text(*l);
         const auto next = sequence.next(text);
-        if (next.step == model::RadiossCardSequence::Step::Past) return;
+        if (next.step == model::RadiossCardSequence::Step::Past) {
+            scope.give_up();
+            return;
+        }
         if (next.step == model::RadiossCardSequence::Step::Blank) continue;
         const rad::CardSpec& card = format.cards[next.index];
         const CellColumns& c = columns.of(card);
         // Commas: the starter's free reading of some cards; kept as written.
         if (c.numbers && scope.formats(l->file) && text.find(',') == std::string_view::npos)
-            format_card_line(scope, *l, text, c.slots, c.kinds, true, buffer, out);
+            format_card_line(scope, *l, text, {c.slots, c.kinds, c.integer_fields}, true, buffer, out);
+        else if (scope.formats(l->file) && (c.numbers || !has_letter(text)))
+            scope.give_up();  // a free line, or a name of numbers: may be a misreading's cause
         if (sequence.needs_values(next.index)) {
             decoder.decode(*l, card, version, false, values, {}, keyword->trailing_checked);
             dropped.clear();
@@ -114,6 +127,7 @@ void format_radioss(const FormatScope& scope, LineChanges& out) {
     ColumnCache columns(version);
     const EngineBlocks engine(scope.deck);
     for (const grammar::Block& block : scope.deck.blocks) {
+        if (scope.abandoned()) return;
         if (!scope.formats(block.span.file) || engine.engine(block)) continue;
         format_block(scope, block, version, columns, out);
     }

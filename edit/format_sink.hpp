@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -25,13 +26,30 @@ struct FormatScope {
     const FormatOptions& options;
     std::unordered_set<grammar::FileId> files;                     // the files formatted
     std::unordered_map<std::uint64_t, std::string_view> doubtful;  // line key -> the finding's code
+    // Set when the findings are not known (format_deck_without_findings): the first line asked about them
+    // raises it, and the passes stop, their result unused (threads read it too).
+    std::atomic<bool>* findings_needed = nullptr;
 
     bool formats(grammar::FileId file) const { return files.count(file) != 0; }
+    bool abandoned() const { return findings_needed && findings_needed->load(std::memory_order_relaxed); }
+    // Without the findings, a reading that may hold a misreading's cause gives up too: a cause (DK032 a
+    // missing heading, DK033 a keyword without its '*', DK029/DK030 shifts) folds the findings of other
+    // lines into notes, which hold those lines back even when laid out. Such readings show lines past a
+    // block's cards, a heading or title of numbers, or a block the formatter does not lay out.
+    void give_up() const {
+        if (findings_needed) findings_needed->store(true, std::memory_order_relaxed);
+    }
     const std::string_view* doubt(grammar::FileId file, std::uint32_t line) const {
+        if (findings_needed) {
+            findings_needed->store(true, std::memory_order_relaxed);
+            return nullptr;
+        }
         auto it = doubtful.find(line_key(file, line));
         return it == doubtful.end() ? nullptr : &it->second;
     }
 };
+
+bool has_letter(std::string_view text);  // an ASCII letter in it (a title, not a line of numbers)
 
 // The `$#` line naming `card`'s fields over their columns at `slots`, as LS-PrePost writes it.
 std::string field_header(std::span<const std::string_view> names, std::span<const grammar::FixedField> slots);
@@ -56,13 +74,20 @@ struct LineChanges {
     void append(LineChanges&& other);
 };
 
-// How a card line of `text` lays out, given its kinds and slots; records the change or the doubt.
+// A card's columns: where its fields are written, their kinds, which read integers (bit i: field i).
+struct CardCells {
+    std::span<const grammar::FixedField> slots;
+    std::span<const CellKind> kinds;
+    std::uint64_t integer_fields = 0;
+};
+
+// How a card line of `text` lays out in `cells`; records the change or the doubt.
 // `free_allowed`: the card has a field that is not text (a comma in a title is text); `no_comma_or_tab`:
 // the caller scanned the line (grammar::scan_line), so a line laid out already is passed at once.
 enum class CardLineState { Blank, Kept, Free, Fixed };
 CardLineState format_card_line(const FormatScope& scope, const grammar::CardLine& line, std::string_view text,
-                               std::span<const grammar::FixedField> slots, std::span<const CellKind> kinds,
-                               bool free_allowed, std::string& buffer, LineChanges& out, bool no_comma_or_tab = false);
+                               const CardCells& cells, bool free_allowed, std::string& buffer, LineChanges& out,
+                               bool no_comma_or_tab = false);
 
 void format_dyna(const FormatScope& scope, LineChanges& out);
 void format_radioss(const FormatScope& scope, LineChanges& out);
