@@ -107,6 +107,22 @@ void format_dyna_deck(const std::uint8_t* data, std::size_t size) {
     } catch (const std::exception&) {
         return;  // not a deck at all (empty, binary): refused before any formatting
     }
+    // format's quick way (the reading alone, edit::format_deck_without_findings): whenever it answers, it
+    // answers as the formatter given the findings does, line for line and kept line for kept line.
+    if (const auto quick = edit::format_deck_without_findings(before.deck, {0}, options)) {
+        const edit::FormatResult full = edit::format_deck(before.deck, before.diagnostics, {0}, options);
+        if (quick->changes != full.changes || quick->kept != full.kept || quick->edits.size() != full.edits.size() ||
+            quick->kept_lines.size() != full.kept_lines.size())
+            __builtin_trap();
+        for (std::size_t i = 0; i < full.edits.size(); ++i)
+            if (quick->edits[i].span.line != full.edits[i].span.line ||
+                quick->edits[i].replacement != full.edits[i].replacement)
+                __builtin_trap();
+        for (std::size_t i = 0; i < full.kept_lines.size(); ++i)
+            if (quick->kept_lines[i].line != full.kept_lines[i].line ||
+                quick->kept_lines[i].reason != full.kept_lines[i].reason)
+                __builtin_trap();
+    }
     const std::string formatted = format(before, text);
     if (formatted == text) return;
     const engine::CheckResult after =
