@@ -71,8 +71,9 @@ Places places_of(const std::vector<std::string>& lines) {
     return out;
 }
 
-// One random edit of `lines` as an LSP change; `lines` becomes the edited text.
-nlohmann::json random_edit(std::vector<std::string>& lines, std::mt19937& random) {
+// One random edit of `lines` as an LSP change; `lines` becomes the edited text. `outside_bulk`: on a
+// line of the small blocks (a title, a setting: the bulk blocks' columns are then taken whole).
+nlohmann::json random_edit(std::vector<std::string>& lines, std::mt19937& random, bool outside_bulk = false) {
     const auto pick = [&](std::size_t n) {
         return static_cast<std::uint32_t>(std::uniform_int_distribution<std::size_t>(0, n - 1)(random));
     };
@@ -84,6 +85,14 @@ nlohmann::json random_edit(std::vector<std::string>& lines, std::mt19937& random
     if (where == 2 && !places.keywords.empty())
         line = std::min<std::uint32_t>(places.keywords[pick(places.keywords.size())] + pick(3),
                                        static_cast<std::uint32_t>(lines.size() - 1));
+    if (outside_bulk) {
+        std::vector<std::uint32_t> small;
+        for (std::uint32_t i = 0; i < lines.size(); ++i)
+            if (!std::binary_search(places.bulk.begin(), places.bulk.end(), i) &&
+                !std::binary_search(places.keywords.begin(), places.keywords.end(), i))
+                small.push_back(i);
+        if (!small.empty()) line = small[pick(small.size())];
+    }
     static const std::vector<std::string> pieces = {"0",     "1",        "7",         "-1",  "2.5e-3", " ",
                                                     "     ", "12345678", "&rho",      "abc", ",",      "1.0e+20",
                                                     "*NODE", "*PART",    "$ comment", ""};
@@ -372,9 +381,12 @@ TEST_CASE(
     workspace.flush();
     std::vector<std::string> lines = split_lines(text);
     std::mt19937 random(91);
-    for (int edit = 0; edit < 10; ++edit) {
-        // Every other edit one digit of a bulk line (the same length: its block's size does not tell it apart).
-        const nlohmann::json change = edit % 2 ? random_edit(lines, random) : digit_edit_in_bulk(lines, random);
+    for (int edit = 0; edit < 15; ++edit) {
+        // One edit in three one digit of a bulk line (the same length: its block's size does not tell it
+        // apart), one in three on a line of the small blocks (the bulk columns moved, not copied).
+        const nlohmann::json change = edit % 3 == 0   ? digit_edit_in_bulk(lines, random)
+                                      : edit % 3 == 1 ? random_edit(lines, random)
+                                                      : random_edit(lines, random, true);
         if (change.is_null()) continue;
         CAPTURE(edit);
         CAPTURE(change.dump());
