@@ -515,7 +515,7 @@ TEST_CASE("recheck: random edits of an open include and of its deck: incremental
     }
 }
 
-TEST_CASE("recheck: the columns of bulk blocks an edit left alone are moved out of the last check, not copied") {
+TEST_CASE("recheck: card lines and the bulk blocks' columns an edit left alone are moved out of the last check") {
     // 91 x 91 particles: one *NODE and one *ELEMENT_SPH block on the bulk path, each all of its column.
     const std::filesystem::path path = std::filesystem::absolute("incremental_taken_lattice.k");
     const std::string text = lattice_deck(91);
@@ -533,6 +533,11 @@ TEST_CASE("recheck: the columns of bulk blocks an edit left alone are moved out 
         CHECK(result.model.particles.mass == full.model.particles.mass);
         CHECK(result.model.particles.volume == full.model.particles.volume);
         CHECK(result.model.particles.line == full.model.particles.line);
+        REQUIRE(result.deck.lines.size() == full.deck.lines.size());
+        for (std::size_t i = 0; i < full.deck.lines.size(); ++i) {
+            const grammar::CardLine &a = result.deck.lines[i], &b = full.deck.lines[i];
+            if (a.file != b.file || a.line != b.line || a.offset != b.offset) FAIL_CHECK("card line " << i);
+        }
         REQUIRE(result.diagnostics.size() == full.diagnostics.size());
         for (std::size_t i = 0; i < full.diagnostics.size(); ++i) {
             CHECK(result.diagnostics[i].code == full.diagnostics[i].code);
@@ -552,6 +557,7 @@ TEST_CASE("recheck: the columns of bulk blocks an edit left alone are moved out 
     engine::CheckResult again = engine::recheck_deck_taking(path.string(), documents, options, first);
     CHECK(first.taken.nodes);
     CHECK(first.taken.particles);
+    CHECK(first.deck.lines.empty());  // moved into the new reading too
     CHECK(first.model.nodes.x.empty());
     CHECK(first.model.particles.size() == 0);
     CHECK(again.model.nodes.x.data() == first_x);
