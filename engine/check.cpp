@@ -169,8 +169,8 @@ CheckResult check_file(const std::string& path, const CheckOptions& options) {
 
 namespace {
 // recheck_deck; `take_from`: `previous` when the caller drops it afterwards.
-CheckResult recheck(const std::string& path, const Documents& documents, const CheckOptions& options,
-                    const CheckResult& previous, CheckResult* take_from) {
+CheckResult recheck_keeping(const std::string& path, const Documents& documents, const CheckOptions& options,
+                            const CheckResult& previous, CheckResult* take_from) {
     CheckOptions with_documents = options;
     if (!documents.empty()) with_documents.reader.overlay = &documents;
     with_documents.rules.keep_preview = true;  // for the next re-check
@@ -198,12 +198,12 @@ CheckResult recheck(const std::string& path, const Documents& documents, const C
 
 CheckResult recheck_deck(const std::string& path, const Documents& documents, const CheckOptions& options,
                          const CheckResult& previous) {
-    return recheck(path, documents, options, previous, nullptr);
+    return recheck_keeping(path, documents, options, previous, nullptr);
 }
 
 CheckResult recheck_deck_taking(const std::string& path, const Documents& documents, const CheckOptions& options,
                                 CheckResult& previous) {
-    return recheck(path, documents, options, previous, &previous);
+    return recheck_keeping(path, documents, options, previous, &previous);
 }
 
 CheckResult check_buffer(std::string text, const std::string& name, const CheckOptions& options,
