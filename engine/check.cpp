@@ -25,10 +25,15 @@ namespace {
 // The LS-DYNA model of `result.deck`; a re-check copies the bulk blocks the edit left alone, and every
 // check notes those the next may copy.
 // `share`: the run's shared bulk blocks (null: none); `provenance` receives those the model was made of.
+// `take_from`: `previous` itself when its owner drops it after this check (its whole columns are then
+// moved, `taken` says which).
 model::Model build_dyna_model(CheckResult& result, const CheckResult* previous, const grammar::SplicedLines* changed,
-                              RunShare* share, model::BulkProvenance& provenance) {
+                              RunShare* share, model::BulkProvenance& provenance, CheckResult* take_from,
+                              model::BulkTaken& taken) {
     std::optional<model::BulkReuse> reuse;
-    if (previous) reuse.emplace(model::BulkReuse{previous->deck, previous->model, previous->bulk_blocks, changed});
+    if (previous)
+        reuse.emplace(model::BulkReuse{previous->deck, previous->model, previous->bulk_blocks, changed,
+                                       take_from ? &take_from->model : nullptr, take_from ? &taken : nullptr});
     return model::build_model(result.deck, result.diagnostics, &result.summary, reuse ? &*reuse : nullptr,
                               result.bulk_blocks, share ? &share->bulk : nullptr, &provenance);
 }
@@ -36,15 +41,18 @@ model::Model build_dyna_model(CheckResult& result, const CheckResult* previous, 
 // read → model → rules, the findings of each line's cause folded into it.
 // `previous`: the last check of the same deck (a re-check), or null; `changed`: where the deck was
 // spliced into the last one's reading (grammar/deck_splice.hpp), or null.
+// `take_from`: as build_dyna_model's.
 CheckResult analyse(grammar::RawDeck deck, const CheckOptions& options, const CheckResult* previous,
-                    const grammar::SplicedLines* changed = nullptr) {
+                    const grammar::SplicedLines* changed = nullptr, CheckResult* take_from = nullptr) {
     CheckResult result;
     result.deck = std::move(deck);
     result.diagnostics = result.deck.diagnostics;
     model::BulkProvenance provenance;
+    model::BulkTaken taken;
     result.model = grammar::format_of(result.deck) == grammar::DeckFormat::Radioss
                        ? model::build_radioss_model(result.deck, result.diagnostics, &result.summary)
-                       : build_dyna_model(result, previous, changed, options.share, provenance);
+                       : build_dyna_model(result, previous, changed, options.share, provenance, take_from, taken);
+    if (take_from && taken.any()) take_from->taken = taken;
     lint::RuleContext context(result.model, result.deck, options.rules, result.diagnostics);
     if (options.share) context.use_bulk_facts(options.share->lookups.facts(result.model, provenance));
     if (options.share) context.use_lookups(options.share->lookups.find(result.model, provenance));
@@ -56,8 +64,8 @@ CheckResult analyse(grammar::RawDeck deck, const CheckOptions& options, const Ch
         const bool arrays = options.rules.preview_arrays;
         run_rules_reusing(
             context,
-            [previous, arrays](const model::Model& model) {
-                return preview_after_edit(*previous, model, arrays);  // kept, followed or new
+            [previous, arrays, &taken](const model::Model& model) {
+                return preview_after_edit(*previous, model, arrays, taken);  // kept, followed or new
             },
             result.diagnostics, result.rule_findings, reusable, changed);
     } else if (options.share) {
@@ -83,6 +91,10 @@ CheckResult analyse(grammar::RawDeck deck, const CheckOptions& options, const Ch
     return result;
 }
 
+bool is_bulk_keyword(const std::string& keyword) {
+    return keyword.rfind("*NODE", 0) == 0 || keyword.rfind("*ELEMENT_SPH", 0) == 0;
+}
+
 // A spliced re-check on the calling thread alone: it decodes only the lines around an edit, and
 // between its short parallel regions OpenMP's idle workers spin (libgomp's default wait policy), which
 // on a busy 2-core machine cost more than the threads gained: a *NODE edit of a 1M-particle deck
@@ -103,8 +115,9 @@ private:
 using Reread = std::function<grammar::RawDeck(const grammar::dyna::ReaderOptions&, const grammar::RawDeck& original)>;
 
 CheckResult finish(grammar::RawDeck deck, const CheckOptions& options, const Reread& reread,
-                   const CheckResult* previous = nullptr, const grammar::SplicedLines* changed = nullptr) {
-    CheckResult result = analyse(std::move(deck), options, previous, changed);
+                   const CheckResult* previous = nullptr, const grammar::SplicedLines* changed = nullptr,
+                   CheckResult* take_from = nullptr) {
+    CheckResult result = analyse(std::move(deck), options, previous, changed, take_from);
     fold_mended_consequences(result.deck, result.diagnostics, options.reader.overlay,
                              [&](const grammar::FileOverlay& mended) {
                                  CheckOptions again = options;
@@ -154,25 +167,43 @@ CheckResult check_file(const std::string& path, const CheckOptions& options) {
                   });
 }
 
-CheckResult recheck_deck(const std::string& path, const Documents& documents, const CheckOptions& options,
-                         const CheckResult& previous) {
+namespace {
+// recheck_deck; `take_from`: `previous` when the caller drops it afterwards.
+CheckResult recheck_keeping(const std::string& path, const Documents& documents, const CheckOptions& options,
+                            const CheckResult& previous, CheckResult* take_from) {
     CheckOptions with_documents = options;
     if (!documents.empty()) with_documents.reader.overlay = &documents;
     with_documents.rules.keep_preview = true;  // for the next re-check
     // An edit of an open main file inside one ordinary block: only its lines are read again.
     std::optional<grammar::SplicedDeck> spliced;
     if (documents.find(path) && previous.deck.sources.size() == 1 && previous.deck.sources.file(0).path == path)
-        spliced =
-            grammar::splice_edit(previous.deck, grammar::read_source_text(path, &documents), documents.revision(path));
+        spliced = take_from ? grammar::splice_edit_taking(take_from->deck, grammar::read_source_text(path, &documents),
+                                                          documents.revision(path))
+                            : grammar::splice_edit(previous.deck, grammar::read_source_text(path, &documents),
+                                                   documents.revision(path));
     grammar::RawDeck deck = spliced ? std::move(spliced->deck) : grammar::read_deck(path, with_documents.reader);
     std::optional<OneThreadForSplicedRecheck> one_thread;
     if (spliced) one_thread.emplace();
+    // Columns are taken only after an edit outside the bulk blocks: an edit inside one is followed by
+    // the preview (engine/preview_after_edit.hpp), which reads the last model's columns.
+    if (take_from && !(spliced && !is_bulk_keyword(deck.blocks[spliced->changed.block].keyword))) take_from = nullptr;
     return finish(
         std::move(deck), with_documents,
         [&](const grammar::dyna::ReaderOptions& reader, const grammar::RawDeck&) {
             return grammar::read_deck(path, reader);
         },
-        &previous, spliced ? &spliced->changed : nullptr);
+        &previous, spliced ? &spliced->changed : nullptr, take_from);
+}
+}  // namespace
+
+CheckResult recheck_deck(const std::string& path, const Documents& documents, const CheckOptions& options,
+                         const CheckResult& previous) {
+    return recheck_keeping(path, documents, options, previous, nullptr);
+}
+
+CheckResult recheck_deck_taking(const std::string& path, const Documents& documents, const CheckOptions& options,
+                                CheckResult& previous) {
+    return recheck_keeping(path, documents, options, previous, &previous);
 }
 
 CheckResult check_buffer(std::string text, const std::string& name, const CheckOptions& options,

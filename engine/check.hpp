@@ -48,6 +48,9 @@ struct CheckResult {
     // kept when CheckOptions::rules.keep_preview.
     RuleFindings rule_findings;
     lint::RuleContext::Lookups rule_lookups;
+    // The columns of `model` a later re-check took instead of copying them (engine/recheck.hpp):
+    // empty now, so the check is fit only to be dropped.
+    model::BulkTaken taken;
 };
 
 // Checks the deck at `path`; its text and its includes' come from `documents` where they hold the

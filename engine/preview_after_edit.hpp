@@ -14,8 +14,9 @@ namespace sphdeck::engine {
 
 // The preview for `now`, re-checked after `previous` (whose kept preview it reads); `particle_arrays`
 // as lint::compute_rules_preview. A new or followed preview keeps its neighbour counts, so that the
-// next edit can be followed in its turn.
+// next edit can be followed in its turn. `taken`: the columns `now` took from `previous`
+// (engine/recheck.hpp); a preview is not followed from a model whose columns went.
 std::shared_ptr<const preproc::Preview> preview_after_edit(const CheckResult& previous, const model::Model& now,
-                                                           bool particle_arrays);
+                                                           bool particle_arrays, const model::BulkTaken& taken = {});
 
 }  // namespace sphdeck::engine

@@ -68,18 +68,30 @@ bool all_same(const std::vector<T>& a, const std::vector<T>& b, Same&& same_item
 }
 }  // namespace
 
-bool same_geometry_inputs(const model::Model& before, const model::Model& now) {
+namespace {
+// Columns `now` took whole from `before` are the same, unless more were appended to them since.
+bool took_nodes(const model::Model& now, const model::BulkTaken& taken) {
+    return taken.nodes && now.nodes.id.size() == taken.node_count;
+}
+bool took_particles(const model::Model& now, const model::BulkTaken& taken) {
+    return taken.particles && now.particles.size() == taken.particle_count;
+}
+}  // namespace
+
+bool same_geometry_inputs(const model::Model& before, const model::Model& now, const model::BulkTaken& taken) {
     const model::Particles& p = before.particles;
     const model::Particles& q = now.particles;
-    return same_geometry_settings(before, now) && same_particle_places(before, now) && p.mass == q.mass &&
-           p.volume == q.volume;
+    return same_geometry_settings(before, now) && same_particle_places(before, now, taken) &&
+           (took_particles(now, taken) || (p.mass == q.mass && p.volume == q.volume));
 }
 
-bool same_particle_places(const model::Model& before, const model::Model& now) {
+bool same_particle_places(const model::Model& before, const model::Model& now, const model::BulkTaken& taken) {
     const model::Particles& p = before.particles;
     const model::Particles& q = now.particles;
-    return !before.radioss && !now.radioss && before.nodes.id == now.nodes.id && before.nodes.x == now.nodes.x &&
-           before.nodes.y == now.nodes.y && before.nodes.z == now.nodes.z && p.node == q.node && p.part == q.part;
+    const model::Nodes &a = before.nodes, &b = now.nodes;
+    return !before.radioss && !now.radioss &&
+           (took_nodes(now, taken) || (a.id == b.id && a.x == b.x && a.y == b.y && a.z == b.z)) &&
+           (took_particles(now, taken) || (p.node == q.node && p.part == q.part));
 }
 
 namespace {

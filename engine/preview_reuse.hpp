@@ -3,6 +3,7 @@
 // change: an edit of a title, a comment or a control the preview does not read.
 #pragma once
 
+#include "model/bulk_reuse.hpp"
 #include "model/model.hpp"
 
 namespace sphdeck::engine {
@@ -12,7 +13,8 @@ namespace sphdeck::engine {
 // they point at, the nodes and the particles (their lines aside). Positions (spans) are not compared:
 // the preview holds model indices, never a place in the deck. Radioss decks: false (their preview
 // reads properties, groups and cells as well). Keep this beside what compute_preview reads.
-bool same_geometry_inputs(const model::Model& before, const model::Model& now);
+// `taken`: columns `now` took from `before` (model/bulk_reuse.hpp), the same when `now` holds them alone.
+bool same_geometry_inputs(const model::Model& before, const model::Model& now, const model::BulkTaken& taken = {});
 
 // The same but for the nodes and particles: whether only where particles stand and which particles
 // there are changed, the edit a kept preview can follow (preproc/preview_follow.hpp).
@@ -25,6 +27,6 @@ bool same_preview_settings(const model::Model& before, const model::Model& now);
 
 // Whether the particles, their parts and the places of their nodes are the same (masses aside): what
 // the nearest distances and the coincident pairs depend on (preproc::recompute_settings).
-bool same_particle_places(const model::Model& before, const model::Model& now);
+bool same_particle_places(const model::Model& before, const model::Model& now, const model::BulkTaken& taken = {});
 
 }  // namespace sphdeck::engine

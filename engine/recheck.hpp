@@ -20,4 +20,11 @@ namespace sphdeck::engine {
 CheckResult recheck_deck(const std::string& path, const Documents& documents, const CheckOptions& options,
                          const CheckResult& previous);
 
+// The same for a caller that drops `previous` afterwards (the editor replaces it by the result): a
+// spliced reading moves the card lines of `previous` instead of copying them (24 MB on a 1M-particle
+// deck), and after an edit outside the bulk blocks their columns are moved out of `previous` into the
+// result as well (previous.taken says which; 45 MB neither copied nor held twice).
+CheckResult recheck_deck_taking(const std::string& path, const Documents& documents, const CheckOptions& options,
+                                CheckResult& previous);
+
 }  // namespace sphdeck::engine

@@ -127,7 +127,7 @@ std::string Workspace::uri_of(const fs::path& key, const std::string& path) cons
 
 bool Workspace::reads(const Deck& deck, const fs::path& key) const { return deck.findings.count(key) > 0; }
 
-Workspace::Deck Workspace::check(const fs::path& main, const engine::CheckResult* previous) const {
+Workspace::Deck Workspace::check(const fs::path& main, engine::CheckResult* previous) const {
     Deck out;
     out.checked.main = main;
     out.opened_as = main;
@@ -135,8 +135,10 @@ Workspace::Deck Workspace::check(const fs::path& main, const engine::CheckResult
     settings.options.rules.keep_preview = true;  // for the next re-check
     const ThreadsForDeck threads(deck_bytes(main, documents_, previous));
     try {
-        out.checked.result = previous ? engine::recheck_deck(main.string(), documents_, settings.options, *previous)
-                                      : engine::check_deck(main.string(), documents_, settings.options);
+        // The last check is replaced by this one: what it holds is moved rather than copied.
+        out.checked.result = previous
+                                 ? engine::recheck_deck_taking(main.string(), documents_, settings.options, *previous)
+                                 : engine::check_deck(main.string(), documents_, settings.options);
     } catch (const std::exception& e) {
         out.checked.result = engine::CheckResult{};
         out.checked.result.includes.main = main;
@@ -157,7 +159,7 @@ Workspace::Deck Workspace::check(const fs::path& main, const engine::CheckResult
 }
 
 std::optional<Workspace::Deck> Workspace::check_in_context(const fs::path& include, const fs::path& known_main,
-                                                           const engine::CheckResult* previous) const {
+                                                           engine::CheckResult* previous) const {
     DeckSettings settings = settings_for(include, roots_);
     if (settings.error) return std::nullopt;     // checked on its own, which reports the bad settings
     settings.options.rules.keep_preview = true;  // for the next re-check
@@ -167,8 +169,9 @@ std::optional<Workspace::Deck> Workspace::check_in_context(const fs::path& inclu
     // The deck found last time first: re-searching the folders at every edit of the include costs more.
     if (!known_main.empty()) {
         try {
-            result = previous ? engine::recheck_deck(known_main.string(), documents_, settings.options, *previous)
-                              : engine::check_deck(known_main.string(), documents_, settings.options);
+            result = previous
+                         ? engine::recheck_deck_taking(known_main.string(), documents_, settings.options, *previous)
+                         : engine::check_deck(known_main.string(), documents_, settings.options);
             found = result.includes.depends_on(include);
         } catch (const std::exception&) {
         }

@@ -80,13 +80,14 @@ private:
         std::filesystem::path opened_as;
     };
 
-    // `previous`: the deck's last check, whose geometry preview is kept when the edit left its inputs alone.
-    Deck check(const std::filesystem::path& main, const engine::CheckResult* previous = nullptr) const;
+    // `previous`: the deck's last check, whose geometry preview is kept when the edit left its inputs
+    // alone; the caller drops it after (its bulk columns may have moved into the result).
+    Deck check(const std::filesystem::path& main, engine::CheckResult* previous = nullptr) const;
     // An open include checked as part of the deck around it that includes it (engine/include_context),
     // `known_main` first when given; nullopt when no deck does. Only the include's findings are kept.
     std::optional<Deck> check_in_context(const std::filesystem::path& include,
                                          const std::filesystem::path& known_main = {},
-                                         const engine::CheckResult* previous = nullptr) const;
+                                         engine::CheckResult* previous = nullptr) const;
     std::string uri_of(const std::filesystem::path& key, const std::string& path) const;
     bool reads(const Deck& deck, const std::filesystem::path& key) const;
     void publish(const std::set<std::filesystem::path>& files);

@@ -30,6 +30,13 @@ struct DecodedBulkBlock {
     std::size_t first_slot = 0;  // its nodes or particles in the model, one a line
 };
 
+// The columns a re-check moved out of the last model (BulkReuse::take_from): empty there now.
+struct BulkTaken {
+    bool nodes = false, particles = false;           // Model::nodes, Model::particles
+    std::size_t node_count = 0, particle_count = 0;  // their sizes when taken
+    bool any() const { return nodes || particles; }
+};
+
 // The last check: its deck and model (alive during the re-check) and the blocks it decoded cleanly.
 // `changed`: where this deck's reading was spliced into that deck's (null when read in full): blocks
 // outside it are known the same without comparing their bytes.
@@ -38,6 +45,11 @@ struct BulkReuse {
     const Model& model;
     const std::vector<DecodedBulkBlock>& blocks;
     const grammar::SplicedLines* changed = nullptr;
+    // When set (`model` itself, which its owner is about to drop): a block that is the whole of its
+    // column there is moved instead of copied (no 45 MB copy of a 1M-particle deck's columns an edit),
+    // and `taken` says which columns went; the rest is copied as before.
+    Model* take_from = nullptr;
+    BulkTaken* taken = nullptr;
 };
 
 // The block of `previous` that `block` of `deck` may be copied from: same keyword, card, format and

@@ -226,13 +226,51 @@ bool ModelBuilder::Bulk::reuse(const grammar::Block& block, const keywords::Card
     if (!same) return false;
     // A clean block is one entry a line: its particles' lines are this block's, wherever it moved.
     const Model& before = owner_.previous_->model;
-    const std::size_t slot = block.keyword.rfind("*ELEMENT_SPH", 0) == 0
+    const bool particles = block.keyword.rfind("*ELEMENT_SPH", 0) == 0;
+    // Columns a re-check before this one took (BulkReuse::take_from) are gone: decoded again.
+    if (same->first_slot + same->line_count > (particles ? before.particles.size() : before.nodes.id.size()))
+        return false;
+    if (take_whole(*same, particles, block.first_line)) {
+        owner_.decoded_bulk_.push_back(decoded_bulk_block(owner_.deck_, block, card, 0));
+        return true;
+    }
+    const std::size_t slot = particles
                                  ? append_block(owner_.model_.particles, before.particles.node, before.particles.part,
                                                 before.particles.mass, same->first_slot, same->line_count,
                                                 block.keyword.find("_VOLUME") != std::string::npos, block.first_line)
                                  : append_block(owner_.model_.nodes, before.nodes.id, before.nodes.x, before.nodes.y,
                                                 before.nodes.z, same->first_slot, same->line_count);
     owner_.decoded_bulk_.push_back(decoded_bulk_block(owner_.deck_, block, card, slot));
+    return true;
+}
+
+// The whole of a column of the last model, which its owner drops after this check, moved instead of
+// copied: only into empty columns, from a block that is all of its column (one *NODE, one
+// *ELEMENT_SPH block: the big decks' shape). A clean block's particles all carry its keyword's volume
+// flag; their lines are this block's run.
+bool ModelBuilder::Bulk::take_whole(const DecodedBulkBlock& same, bool particles, std::uint32_t first_line) {
+    const BulkReuse& previous = *owner_.previous_;
+    if (!previous.take_from || !previous.taken || same.first_slot != 0) return false;
+    Model& before = *previous.take_from;
+    Model& now = owner_.model_;
+    if (particles) {
+        if (now.particles.size() != 0 || same.line_count != before.particles.size()) return false;
+        now.particles.node = std::move(before.particles.node);
+        now.particles.part = std::move(before.particles.part);
+        now.particles.mass = std::move(before.particles.mass);
+        now.particles.volume = std::move(before.particles.volume);
+        now.particles.line = ParticleLines{};
+        now.particles.line.append_run(same.line_count, first_line, 1);
+        before.particles = Particles{};
+        previous.taken->particles = true;
+        previous.taken->particle_count = same.line_count;
+    } else {
+        if (now.nodes.id.size() != 0 || same.line_count != before.nodes.id.size()) return false;
+        now.nodes = std::move(before.nodes);
+        before.nodes = Nodes{};
+        previous.taken->nodes = true;
+        previous.taken->node_count = same.line_count;
+    }
     return true;
 }
 

@@ -70,6 +70,7 @@ private:
         void end_nodes();
         void end_particles();
         bool reuse_shared(const grammar::Block& block, const keywords::CardSpec& card);
+        bool take_whole(const DecodedBulkBlock& same, bool particles, std::uint32_t first_line);
 
         ModelBuilder& owner_;
         bool particles_ = false;

@@ -71,8 +71,9 @@ Places places_of(const std::vector<std::string>& lines) {
     return out;
 }
 
-// One random edit of `lines` as an LSP change; `lines` becomes the edited text.
-nlohmann::json random_edit(std::vector<std::string>& lines, std::mt19937& random) {
+// One random edit of `lines` as an LSP change; `lines` becomes the edited text. `outside_bulk`: on a
+// line of the small blocks (a title, a setting: the bulk blocks' columns are then taken whole).
+nlohmann::json random_edit(std::vector<std::string>& lines, std::mt19937& random, bool outside_bulk = false) {
     const auto pick = [&](std::size_t n) {
         return static_cast<std::uint32_t>(std::uniform_int_distribution<std::size_t>(0, n - 1)(random));
     };
@@ -84,6 +85,14 @@ nlohmann::json random_edit(std::vector<std::string>& lines, std::mt19937& random
     if (where == 2 && !places.keywords.empty())
         line = std::min<std::uint32_t>(places.keywords[pick(places.keywords.size())] + pick(3),
                                        static_cast<std::uint32_t>(lines.size() - 1));
+    if (outside_bulk) {
+        std::vector<std::uint32_t> small;
+        for (std::uint32_t i = 0; i < lines.size(); ++i)
+            if (!std::binary_search(places.bulk.begin(), places.bulk.end(), i) &&
+                !std::binary_search(places.keywords.begin(), places.keywords.end(), i))
+                small.push_back(i);
+        if (!small.empty()) line = small[pick(small.size())];
+    }
     static const std::vector<std::string> pieces = {"0",     "1",        "7",         "-1",  "2.5e-3", " ",
                                                     "     ", "12345678", "&rho",      "abc", ",",      "1.0e+20",
                                                     "*NODE", "*PART",    "$ comment", ""};
@@ -372,9 +381,12 @@ TEST_CASE(
     workspace.flush();
     std::vector<std::string> lines = split_lines(text);
     std::mt19937 random(91);
-    for (int edit = 0; edit < 10; ++edit) {
-        // Every other edit one digit of a bulk line (the same length: its block's size does not tell it apart).
-        const nlohmann::json change = edit % 2 ? random_edit(lines, random) : digit_edit_in_bulk(lines, random);
+    for (int edit = 0; edit < 15; ++edit) {
+        // One edit in three one digit of a bulk line (the same length: its block's size does not tell it
+        // apart), one in three on a line of the small blocks (the bulk columns moved, not copied).
+        const nlohmann::json change = edit % 3 == 0   ? digit_edit_in_bulk(lines, random)
+                                      : edit % 3 == 1 ? random_edit(lines, random)
+                                                      : random_edit(lines, random, true);
         if (change.is_null()) continue;
         CAPTURE(edit);
         CAPTURE(change.dump());
@@ -502,4 +514,77 @@ TEST_CASE("recheck: random edits of an open include and of its deck: incremental
         }
     }
 }
+
+TEST_CASE("recheck: card lines and the bulk blocks' columns an edit left alone are moved out of the last check") {
+    // 91 x 91 particles: one *NODE and one *ELEMENT_SPH block on the bulk path, each all of its column.
+    const std::filesystem::path path = std::filesystem::absolute("incremental_taken_lattice.k");
+    const std::string text = lattice_deck(91);
+    engine::Documents documents;
+    documents.set(path, text);
+    engine::CheckOptions options;
+    options.rules.keep_preview = true;
+    const auto same_as_full = [&](const engine::CheckResult& result) {
+        const engine::CheckResult full = engine::check_deck(path.string(), documents, options);
+        CHECK(result.model.nodes.id == full.model.nodes.id);
+        CHECK(result.model.nodes.x == full.model.nodes.x);
+        CHECK(result.model.nodes.y == full.model.nodes.y);
+        CHECK(result.model.particles.node == full.model.particles.node);
+        CHECK(result.model.particles.part == full.model.particles.part);
+        CHECK(result.model.particles.mass == full.model.particles.mass);
+        CHECK(result.model.particles.volume == full.model.particles.volume);
+        CHECK(result.model.particles.line == full.model.particles.line);
+        REQUIRE(result.deck.lines.size() == full.deck.lines.size());
+        for (std::size_t i = 0; i < full.deck.lines.size(); ++i) {
+            const grammar::CardLine &a = result.deck.lines[i], &b = full.deck.lines[i];
+            if (a.file != b.file || a.line != b.line || a.offset != b.offset) FAIL_CHECK("card line " << i);
+        }
+        REQUIRE(result.diagnostics.size() == full.diagnostics.size());
+        for (std::size_t i = 0; i < full.diagnostics.size(); ++i) {
+            CHECK(result.diagnostics[i].code == full.diagnostics[i].code);
+            CHECK(result.diagnostics[i].message == full.diagnostics[i].message);
+            CHECK(result.diagnostics[i].span.line == full.diagnostics[i].span.line);
+        }
+    };
+    engine::CheckResult first = engine::check_deck(path.string(), documents, options);
+    REQUIRE(first.bulk_blocks.size() == 2);
+    const double* first_x = first.model.nodes.x.data();
+
+    // The title retyped and a comment line added under it: both blocks taken whole (the same arrays),
+    // their lines moved by one, the preview kept as it was.
+    std::string retitled = text;
+    retitled.replace(retitled.find("water"), 5, "water 2\n$ the part's cards");
+    documents.set(path, retitled);
+    engine::CheckResult again = engine::recheck_deck_taking(path.string(), documents, options, first);
+    CHECK(first.taken.nodes);
+    CHECK(first.taken.particles);
+    CHECK(first.deck.lines.empty());  // moved into the new reading too
+    CHECK(first.model.nodes.x.empty());
+    CHECK(first.model.particles.size() == 0);
+    CHECK(again.model.nodes.x.data() == first_x);
+    CHECK(again.preview == first.preview);
+    same_as_full(again);
+
+    // CSLH after a take: the preview's settings computed again over the taken places.
+    std::string cslh = retitled;
+    cslh.replace(cslh.find("       1.2"), 10, "       1.5");
+    documents.set(path, cslh);
+    engine::CheckResult third = engine::recheck_deck_taking(path.string(), documents, options, again);
+    CHECK(again.taken.nodes);
+    CHECK(third.preview != again.preview);
+    same_as_full(third);
+
+    // An edit inside *NODE: followed by the preview from the last model, so nothing is taken.
+    std::string moved = cslh;
+    moved.replace(moved.find("*NODE\n") + 6 + 8 + 4, 1, "7");
+    documents.set(path, moved);
+    const engine::CheckResult fourth = engine::recheck_deck_taking(path.string(), documents, options, third);
+    CHECK_FALSE(third.taken.any());
+    CHECK(fourth.preview != third.preview);
+    same_as_full(fourth);
+
+    // A re-check from a check whose columns went: decoded again, not read from the empty columns.
+    const engine::CheckResult from_emptied = engine::recheck_deck(path.string(), documents, options, first);
+    same_as_full(from_emptied);
+}
+
 }  // namespace test_incremental_cpp
