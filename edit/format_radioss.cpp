@@ -81,8 +81,8 @@ void format_block(const FormatScope& scope, const grammar::Block& block, int ver
     if (!keyword || !keyword->decoded || keyword->engine) return;
     const grammar::RawDeck& deck = scope.deck;
     const rad::FormatSpec& format = keyword->format_for(version);
-    const grammar::CardLine* l = deck.begin_lines(block);
-    const grammar::CardLine* end = deck.end_lines(block);
+    grammar::CardLinePtr l = deck.begin_lines(block);
+    grammar::CardLinePtr end = deck.end_lines(block);
     if (keyword->title && !rad::is_v4(version) && l != end) ++l;  // the title line: text
     model::RadiossCardSequence sequence(format.cards);
     std::vector<diag::Diagnostic> dropped;

@@ -159,24 +159,13 @@ std::optional<SplicedDeck> splice_edit(const RawDeck& previous, SourceText text,
     const std::int64_t line_shift = static_cast<std::int64_t>(new_lines) - static_cast<std::int64_t>(old_lines);
     const std::int64_t count_shift =
         static_cast<std::int64_t>(read.lines.size()) - static_cast<std::int64_t>(last_index - first_index);
-    deck.lines.reserve(static_cast<std::size_t>(static_cast<std::int64_t>(previous.lines.size()) + count_shift));
-    deck.lines.insert(deck.lines.end(), previous.lines.begin(), first);
-    for (const CardLine& l : read.lines)
-        deck.lines.push_back(
-            CardLine{file, first_line + l.line - 2, static_cast<std::uint32_t>(begin + l.offset - lead)});
-    // The lines after the edit: copied whole, then moved by what the edit added (a plain loop over
-    // 2 million lines, and none when the edit kept the lengths).
-    const std::size_t moved_from = deck.lines.size();
-    deck.lines.insert(deck.lines.end(), last, previous.lines.end());
-    if (line_shift != 0 || byte_shift != 0) {
-        const auto lines = static_cast<std::uint32_t>(line_shift), bytes = static_cast<std::uint32_t>(byte_shift);
-        CardLine* const moved = deck.lines.data() + moved_from;
-        const std::size_t n = deck.lines.size() - moved_from;
-        for (std::size_t i = 0; i < n; ++i) {  // modulo 2^32: a negative shift wraps back into range
-            moved[i].line += lines;
-            moved[i].offset += bytes;
-        }
-    }
+    deck.lines.append(previous.lines, 0, first_index);
+    deck.lines.append(read.lines, 0, read.lines.size(),
+                      CardLines::Move{first_line - 2, static_cast<std::uint32_t>(begin - lead), true, file});
+    // The lines after the edit, moved by what the edit added (modulo 2^32: a negative shift wraps back
+    // into range); runs stay runs, so a bulk block costs no loop over its lines.
+    deck.lines.append(previous.lines, last_index, previous.lines.size(),
+                      CardLines::Move{static_cast<std::uint32_t>(line_shift), static_cast<std::uint32_t>(byte_shift)});
 
     deck.blocks = previous.blocks;
     deck.blocks[host_index].line_count = static_cast<std::uint32_t>(host.line_count + count_shift);
