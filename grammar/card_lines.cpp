@@ -18,7 +18,8 @@ void CardLinePtr::settle() {
 CardLine CardLinePtr::slow() const {
     CardLinePtr p = *this;
     p.settle();
-    return *p;  // settled: in its stretch (the caller reads no line past the end)
+    if (p.hi_ == p.lo_) return CardLine{};  // past the end or null: nothing to read (as a past-the-end pointer)
+    return *p;
 }
 
 void CardLinesBody::describe(CardLinePtr& p) const {
