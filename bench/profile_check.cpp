@@ -84,7 +84,9 @@ void print_holdings(const grammar::RawDeck& deck, const model::Model& m) {
     const double nodes = static_cast<double>(n.id.bytes() + (n.x.size() + n.y.size() + n.z.size()) * sizeof(double));
     const double particles = static_cast<double>(p.node.bytes() + p.part.bytes() + p.mass.size() * sizeof(double) +
                                                  p.volume.size() + p.line.runs() * 24);
-    const double lines = static_cast<double>(deck.lines.size() * sizeof(grammar::CardLine));
+    // Card lines stored one by one, and runs of regular ones (a bulk block's: grammar/card_lines.hpp).
+    const double lines = static_cast<double>(deck.lines.stored_lines() * sizeof(grammar::CardLine) +
+                                             deck.lines.runs() * sizeof(grammar::CardLinesBody::Run));
     const double count = static_cast<double>(std::max<std::size_t>(1, p.size()));
     std::printf(
         "model: nodes %.1f MB, particles %.1f MB: %.1f bytes a particle with its node; card lines %.1f MB "

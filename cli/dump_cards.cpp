@@ -70,8 +70,8 @@ std::string cards_json(const grammar::RawDeck& deck) {
         };
         for (const grammar::Block& block : deck.blocks)
             engine::walk_radioss_block(deck, block, version,
-                                       [&](const grammar::CardLine& line, const engine::RadiossCard& c) {
-                                           append_card(out, block.keyword, c.title ? "title" : "card", line, c.values,
+                                       [&](grammar::CardLinePtr line, const engine::RadiossCard& c) {
+                                           append_card(out, block.keyword, c.title ? "title" : "card", *line, c.values,
                                                        skipped);
                                            return true;
                                        });
@@ -80,9 +80,9 @@ std::string cards_json(const grammar::RawDeck& deck) {
         std::vector<diag::Diagnostic> dropped;
         model::check_deck(deck, dropped,
                           [&](const grammar::Block& block, const keywords::KeywordMatch&,
-                              const keywords::CardSpec& card, const grammar::CardLine& line,
+                              const keywords::CardSpec& card, grammar::CardLinePtr line,
                               const std::vector<model::FieldValue>& values) {
-                              append_card(out, block.keyword, card.name, line, values, skipped);
+                              append_card(out, block.keyword, card.name, *line, values, skipped);
                           });
     }
     out += ']';

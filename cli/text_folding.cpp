@@ -48,7 +48,7 @@ private:
         if (last_[i] != unknown) return last_[i];
         const grammar::Block& b = deck_.blocks[i];
         std::uint32_t last = b.span.line;
-        for (const grammar::CardLine* l = deck_.begin_lines(b); l != deck_.end_lines(b); ++l)
+        for (grammar::CardLinePtr l = deck_.begin_lines(b); l != deck_.end_lines(b); ++l)
             if (l->file == b.span.file) last = std::max(last, l->line);
         return last_[i] = last;
     }

@@ -158,7 +158,7 @@ void header_above(const FormatScope& scope, const grammar::CardLine& line, std::
 
 // Every line from `from` on read as one repeated card (*NODE, *ELEMENT_SPH: millions of lines), laid
 // out on all threads, each on a contiguous range, merged back in order.
-void format_repeated(const FormatScope& scope, const grammar::CardLine* from, const grammar::CardLine* to,
+void format_repeated(const FormatScope& scope, grammar::CardLinePtr from, grammar::CardLinePtr to,
                      const CardColumns& columns, LineChanges& out) {
     const std::size_t n = static_cast<std::size_t>(to - from);
     const int threads = n < 8192 ? 1 : omp_get_max_threads();
@@ -207,7 +207,7 @@ void format_dyna_block(const FormatScope& scope, const grammar::Block& block, Dy
     std::vector<model::FieldValue> values;
     std::string buffer;
     const CardSpec* previous = nullptr;
-    for (const grammar::CardLine* l = deck.begin_lines(block); l != deck.end_lines(block); ++l) {
+    for (grammar::CardLinePtr l = deck.begin_lines(block); l != deck.end_lines(block); ++l) {
         const CardSpec* card = sequence.next();
         if (!card) {  // past the block's cards: kept as written
             scope.give_up();

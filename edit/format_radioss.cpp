@@ -86,8 +86,8 @@ void format_block(const FormatScope& scope, const grammar::Block& block, int ver
     }
     const grammar::RawDeck& deck = scope.deck;
     const rad::FormatSpec& format = keyword->format_for(version);
-    const grammar::CardLine* l = deck.begin_lines(block);
-    const grammar::CardLine* end = deck.end_lines(block);
+    grammar::CardLinePtr l = deck.begin_lines(block);
+    grammar::CardLinePtr end = deck.end_lines(block);
     if (keyword->title && !rad::is_v4(version) && l != end) {  // the title line: text
         if (scope.formats(l->file) && !has_letter(deck.text(*l))) scope.give_up();
         ++l;

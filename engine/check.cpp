@@ -177,10 +177,8 @@ CheckResult recheck_keeping(const std::string& path, const Documents& documents,
     // An edit of an open main file inside one ordinary block: only its lines are read again.
     std::optional<grammar::SplicedDeck> spliced;
     if (documents.find(path) && previous.deck.sources.size() == 1 && previous.deck.sources.file(0).path == path)
-        spliced = take_from ? grammar::splice_edit_taking(take_from->deck, grammar::read_source_text(path, &documents),
-                                                          documents.revision(path))
-                            : grammar::splice_edit(previous.deck, grammar::read_source_text(path, &documents),
-                                                   documents.revision(path));
+        spliced =
+            grammar::splice_edit(previous.deck, grammar::read_source_text(path, &documents), documents.revision(path));
     grammar::RawDeck deck = spliced ? std::move(spliced->deck) : grammar::read_deck(path, with_documents.reader);
     std::optional<OneThreadForSplicedRecheck> one_thread;
     if (spliced) one_thread.emplace();

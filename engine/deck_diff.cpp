@@ -153,7 +153,7 @@ std::vector<RawLine> undecoded_lines(const json& keyword, const grammar::RawDeck
     if (keyword.contains("cards"))
         for (const json& card : keyword["cards"]) decoded_lines(card, decoded);
     std::vector<RawLine> out;
-    for (const grammar::CardLine* l = deck.begin_lines(*found->second); l != deck.end_lines(*found->second); ++l) {
+    for (grammar::CardLinePtr l = deck.begin_lines(*found->second); l != deck.end_lines(*found->second); ++l) {
         if (decoded.count(l->line)) continue;
         std::string_view text = deck.text(*l);
         const auto first = text.find_first_not_of(" \t");

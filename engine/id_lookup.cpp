@@ -72,7 +72,7 @@ void collect_radioss(const CheckResult& deck, const grammar::Block& block, int v
         out.push_back({header->role.kind, header->id, header->span, header->role.defines, &block, title});
     }
     if (bulk_block(block)) return;
-    walk_radioss_block(raw, block, version, [&](const grammar::CardLine&, const RadiossCard& card) {
+    walk_radioss_block(raw, block, version, [&](grammar::CardLinePtr, const RadiossCard& card) {
         for (const auto& v : card.values) {
             if (!v.spec) continue;
             auto role = radioss_id_role(*v.spec);
@@ -181,7 +181,7 @@ const grammar::Block* block_of_line(const grammar::RawDeck& raw, std::uint32_t i
 std::optional<IdUse> node_on_line(const grammar::RawDeck& raw, std::uint32_t index, long long id) {
     const grammar::Block* block = block_of_line(raw, index);
     if (!block) return std::nullopt;
-    auto card = dyna_card_at(raw, *block, raw.lines[index]);
+    auto card = dyna_card_at(raw, *block, raw.lines.at(index));
     if (!card || card->values.empty() || !card->values[0].valid || card->values[0].number != static_cast<double>(id))
         return std::nullopt;
     return IdUse{"NODE", std::to_string(id), card->values[0].span, true, block, ""};
@@ -272,10 +272,9 @@ std::vector<grammar::Span> particle_spans(const CheckResult& deck, const std::st
     for (std::size_t i = 0; i < particles.size() && out.size() < limit; ++i) {
         if (column[i] != *wanted || particles.line[i] == last_line) continue;
         last_line = particles.line[i];
-        const grammar::CardLine& line = raw.lines[last_line];
         const grammar::Block* block = block_of_line(raw, last_line);
         if (!block) continue;
-        auto card = dyna_card_at(raw, *block, line);
+        auto card = dyna_card_at(raw, *block, raw.lines.at(last_line));
         if (!card || card->values.size() < 2) continue;
         out.push_back(card->values[part ? 1 : 0].span);  // NID, PID, MASS, NEND
     }

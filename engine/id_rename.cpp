@@ -72,13 +72,13 @@ std::optional<Slot> slot_of(const CheckResult& deck, const grammar::Span& span) 
     if (!block) return std::nullopt;
     const bool radioss = deck.model.radioss.has_value();
     if (radioss && span.line == block->span.line) return Slot{0, 0, false, false, "header"};
-    const grammar::CardLine* card_line = card_line_at(raw, *block, span.line);
+    grammar::CardLinePtr card_line = card_line_at(raw, *block, span.line);
     if (!card_line) return std::nullopt;
     const std::string_view text = raw.text(*card_line);
     if (!radioss && starts_with(block->keyword, "*PARAMETER")) return parameter_slot(*block, text, span.column);
     if (radioss) {
         const int version = model::radioss_version(raw);
-        auto card = radioss_card_at(raw, *block, *card_line, version);
+        auto card = radioss_card_at(raw, *block, card_line, version);
         if (!card || !card->card) return std::nullopt;
         auto index = radioss_field_at_column(*card, text, span.column);
         if (!index) return std::nullopt;
@@ -87,7 +87,7 @@ std::optional<Slot> slot_of(const CheckResult& deck, const grammar::Span& span) 
         return Slot{positions[*index].start, positions[*index].width, grammar::is_free_format(text), true,
                     std::string(card->card->fields[*index].name)};
     }
-    auto card = dyna_card_at(raw, *block, *card_line);
+    auto card = dyna_card_at(raw, *block, card_line);
     if (!card || !card->card) return std::nullopt;
     auto index = dyna_field_at_column(*card->card, block->format, card->values, text, span.column);
     if (!index) return std::nullopt;
@@ -185,7 +185,7 @@ std::optional<grammar::Span> bare_use_in_expression(const CheckResult& deck, con
         if (!starts_with(block.keyword, "*PARAMETER") || block.keyword.find("EXPRESSION") == std::string::npos)
             continue;
         const std::size_t width = block.format == grammar::CardFormat::Long ? 20 : 10;
-        for (const grammar::CardLine* l = raw.begin_lines(block); l != raw.end_lines(block); ++l) {
+        for (grammar::CardLinePtr l = raw.begin_lines(block); l != raw.end_lines(block); ++l) {
             const std::string_view text = raw.text(*l);
             for (std::size_t at = width; at + name.size() <= text.size(); ++at) {
                 if (!same_name(text.substr(at, name.size()), name)) continue;

@@ -33,10 +33,10 @@ const grammar::Block* block_at(const grammar::RawDeck& deck, grammar::FileId fil
     return found;
 }
 
-const grammar::CardLine* card_line_at(const grammar::RawDeck& deck, const grammar::Block& block, std::uint32_t line) {
-    const grammar::CardLine* begin = deck.begin_lines(block);
-    const grammar::CardLine* end = deck.end_lines(block);
-    const grammar::CardLine* at =
+grammar::CardLinePtr card_line_at(const grammar::RawDeck& deck, const grammar::Block& block, std::uint32_t line) {
+    grammar::CardLinePtr begin = deck.begin_lines(block);
+    grammar::CardLinePtr end = deck.end_lines(block);
+    grammar::CardLinePtr at =
         std::lower_bound(begin, end, line, [](const grammar::CardLine& l, std::uint32_t n) { return l.line < n; });
     return at != end && at->line == line && at->file == block.span.file ? at : nullptr;
 }
@@ -61,7 +61,7 @@ void walk_dyna_block(const grammar::RawDeck& deck, const grammar::Block& block, 
     model::CardDecoder decoder(deck, dropped);
     CardSequence sequence(*match);
     DynaCard card{*match, nullptr, nullptr, {}};
-    for (const grammar::CardLine* l = deck.begin_lines(block); l != deck.end_lines(block); ++l) {
+    for (grammar::CardLinePtr l = deck.begin_lines(block); l != deck.end_lines(block); ++l) {
         card.card = sequence.next();
         if (!card.card) return;
         card.line = l;
@@ -73,19 +73,19 @@ void walk_dyna_block(const grammar::RawDeck& deck, const grammar::Block& block, 
 }
 
 std::optional<DynaCard> dyna_card_at(const grammar::RawDeck& deck, const grammar::Block& block,
-                                     const grammar::CardLine& line) {
+                                     grammar::CardLinePtr line) {
     auto match = decodable_match(block);
     if (!match) return std::nullopt;
     std::vector<diag::Diagnostic> dropped;
     model::CardDecoder decoder(deck, dropped);
     CardSequence sequence(*match);
     DynaCard card{*match, nullptr, nullptr, {}};
-    for (const grammar::CardLine* l = deck.begin_lines(block); l != deck.end_lines(block); ++l) {
+    for (grammar::CardLinePtr l = deck.begin_lines(block); l != deck.end_lines(block); ++l) {
         const CardSpec* spec = sequence.next();
         if (!spec) return std::nullopt;
         // A block of one repeated card (*NODE, *ELEMENT_SPH): every line is that card.
-        if (sequence.only_repeats(*spec)) l = &line;
-        if (l == &line) {
+        if (sequence.only_repeats(*spec)) l = line;
+        if (l == line) {
             card.card = spec;
             card.line = l;
             decoder.decode(block, *l, *spec, card.values);
@@ -99,15 +99,15 @@ std::optional<DynaCard> dyna_card_at(const grammar::RawDeck& deck, const grammar
 }
 
 const keywords::CardSpec* dyna_card_after(const grammar::RawDeck& deck, const grammar::Block& block,
-                                          const grammar::CardLine* before) {
+                                          grammar::CardLinePtr before) {
     auto match = decodable_match(block);
     if (!match) return nullptr;
     std::vector<diag::Diagnostic> dropped;
     model::CardDecoder decoder(deck, dropped);
     CardSequence sequence(*match);
     std::vector<model::FieldValue> values;
-    const grammar::CardLine* stop = before ? before + 1 : deck.begin_lines(block);
-    for (const grammar::CardLine* l = deck.begin_lines(block); l != stop; ++l) {
+    grammar::CardLinePtr stop = before ? before + 1 : deck.begin_lines(block);
+    for (grammar::CardLinePtr l = deck.begin_lines(block); l != stop; ++l) {
         const CardSpec* spec = sequence.next();
         if (!spec) return nullptr;
         if (sequence.only_repeats(*spec)) return spec;
@@ -140,8 +140,8 @@ namespace {
 // model::RadiossCardSequence. `target` set: only that
 // line is decoded, and a single repeated card jumps straight to it.
 template <typename Visit>
-void radioss_walk(const grammar::RawDeck& deck, const grammar::Block& block, int version,
-                  const grammar::CardLine* target, Visit visit) {
+void radioss_walk(const grammar::RawDeck& deck, const grammar::Block& block, int version, grammar::CardLinePtr target,
+                  Visit visit) {
     RadiossCard out;
     out.keyword = radioss_keyword(block);
     if (!out.keyword || !out.keyword->decoded) return;
@@ -149,12 +149,12 @@ void radioss_walk(const grammar::RawDeck& deck, const grammar::Block& block, int
     if (out.keyword->engine != out.engine) return;
     out.version = out.engine ? rad::latest_version : version;
     const rad::FormatSpec& format = out.keyword->format_for(out.version);
-    const grammar::CardLine* l = deck.begin_lines(block);
-    const grammar::CardLine* end = deck.end_lines(block);
+    grammar::CardLinePtr l = deck.begin_lines(block);
+    grammar::CardLinePtr end = deck.end_lines(block);
     if (out.keyword->title && !out.engine && !rad::is_v4(version) && l != end) {
         if (l == target) {
             out.title = true;
-            visit(*l, out);
+            visit(l, out);
             return;
         }
         ++l;
@@ -181,7 +181,7 @@ void radioss_walk(const grammar::RawDeck& deck, const grammar::Block& block, int
         sequence.advance(next.index, out.values);
         if (!wanted) continue;
         out.card = &cards[next.index];
-        if (!visit(*l, out)) return;
+        if (!visit(l, out)) return;
     }
 }
 }  // namespace
@@ -192,9 +192,9 @@ void walk_radioss_block(const grammar::RawDeck& deck, const grammar::Block& bloc
 }
 
 std::optional<RadiossCard> radioss_card_at(const grammar::RawDeck& deck, const grammar::Block& block,
-                                           const grammar::CardLine& line, int version) {
+                                           grammar::CardLinePtr line, int version) {
     std::optional<RadiossCard> found;
-    radioss_walk(deck, block, version, &line, [&](const grammar::CardLine&, const RadiossCard& card) {
+    radioss_walk(deck, block, version, line, [&](grammar::CardLinePtr, const RadiossCard& card) {
         found = card;
         return false;
     });

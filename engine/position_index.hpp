@@ -30,7 +30,7 @@ namespace sphdeck::engine {
 const grammar::Block* block_at(const grammar::RawDeck& deck, grammar::FileId file, std::uint32_t line);
 
 // The card line of `block` on file line `line`, or nullptr (the keyword line, a comment line).
-const grammar::CardLine* card_line_at(const grammar::RawDeck& deck, const grammar::Block& block, std::uint32_t line);
+grammar::CardLinePtr card_line_at(const grammar::RawDeck& deck, const grammar::Block& block, std::uint32_t line);
 
 // The last line (1-based) a block covers in its file: its last card line, or the keyword line.
 std::uint32_t block_last_line(const grammar::RawDeck& deck, const grammar::Block& block);
@@ -39,7 +39,7 @@ std::uint32_t block_last_line(const grammar::RawDeck& deck, const grammar::Block
 struct DynaCard {
     keywords::KeywordMatch match;
     const keywords::CardSpec* card = nullptr;
-    const grammar::CardLine* line = nullptr;
+    grammar::CardLinePtr line = nullptr;
     std::vector<model::FieldValue> values;
 };
 
@@ -55,12 +55,12 @@ void walk_dyna_block(const grammar::RawDeck& deck, const grammar::Block& block, 
 
 // The decoded card of one line of an LS-DYNA block; nullopt for a line past the block's cards.
 std::optional<DynaCard> dyna_card_at(const grammar::RawDeck& deck, const grammar::Block& block,
-                                     const grammar::CardLine& line);
+                                     grammar::CardLinePtr line);
 
 // The card spec the next line of `block` after `before` would be read as (for completion on a
 // line being typed); `before` null: the first card.
 const keywords::CardSpec* dyna_card_after(const grammar::RawDeck& deck, const grammar::Block& block,
-                                          const grammar::CardLine* before);
+                                          grammar::CardLinePtr before);
 
 // One decoded Radioss card line.
 struct RadiossCard {
@@ -81,11 +81,11 @@ bool radioss_engine_block(const grammar::RawDeck& deck, const grammar::Block& bl
 // The card of one line of a Radioss block, as model/radioss_decoder.cpp reads it: the title
 // line after the header, then the format's cards (a trailing repeated group cycles).
 std::optional<RadiossCard> radioss_card_at(const grammar::RawDeck& deck, const grammar::Block& block,
-                                           const grammar::CardLine& line, int version);
+                                           grammar::CardLinePtr line, int version);
 
 // Walks every card line of a Radioss block (not the title line), as radioss_card_at reads them,
 // until `visit` returns false.
-using RadiossCardVisitor = std::function<bool(const grammar::CardLine&, const RadiossCard&)>;
+using RadiossCardVisitor = std::function<bool(grammar::CardLinePtr, const RadiossCard&)>;
 void walk_radioss_block(const grammar::RawDeck& deck, const grammar::Block& block, int version,
                         const RadiossCardVisitor& visit);
 
@@ -129,7 +129,7 @@ std::optional<ColumnRange> radioss_field_columns(const RadiossCard& card, std::s
 // line after the card line above it would be read as.
 struct CardAt {
     const grammar::Block* block = nullptr;
-    const grammar::CardLine* line = nullptr;        // nullptr: a line the last check did not read as a card
+    grammar::CardLinePtr line = nullptr;            // nullptr: a line the last check did not read as a card
     std::uint32_t line_number = 0;                  // 1-based line of the block's file
     std::string_view text;                          // the line's text
     std::optional<DynaCard> dyna;                   // LS-DYNA: the decoded card line
@@ -178,7 +178,7 @@ bool is_bulk_block(const grammar::Block& block, bool radioss);
 // One card line as the decoders read it; exactly one of `dyna` and `radioss` is set.
 struct DecodedLine {
     const grammar::Block* block = nullptr;
-    const grammar::CardLine* line = nullptr;
+    grammar::CardLinePtr line = nullptr;
     const DynaCard* dyna = nullptr;
     const RadiossCard* radioss = nullptr;  // with `title` set on a Radioss title line
 };

@@ -17,10 +17,9 @@ namespace {
 std::string number_text(double v) { return fmt::format("{:g}", v); }
 
 // The card line of `block` just above `line` (nullptr: none), for a line the last check did not read.
-const grammar::CardLine* card_line_above(const grammar::RawDeck& deck, const grammar::Block& block,
-                                         std::uint32_t line) {
-    const grammar::CardLine* before = nullptr;
-    for (const grammar::CardLine* l = deck.begin_lines(block); l != deck.end_lines(block) && l->line < line; ++l)
+grammar::CardLinePtr card_line_above(const grammar::RawDeck& deck, const grammar::Block& block, std::uint32_t line) {
+    grammar::CardLinePtr before = nullptr;
+    for (grammar::CardLinePtr l = deck.begin_lines(block); l != deck.end_lines(block) && l->line < line; ++l)
         before = l;
     return before;
 }
@@ -51,12 +50,12 @@ std::optional<CardAt> card_at(const grammar::RawDeck& deck, const grammar::Block
     at.text = at.line ? deck.text(*at.line) : deck.sources.line_text(block.span.file, line);
     if (radioss) {
         if (!at.line) return std::nullopt;
-        at.radioss = radioss_card_at(deck, block, *at.line, model::radioss_version(deck));
+        at.radioss = radioss_card_at(deck, block, at.line, model::radioss_version(deck));
         if (!at.radioss) return std::nullopt;
         return at;
     }
     if (at.line) {
-        at.dyna = dyna_card_at(deck, block, *at.line);
+        at.dyna = dyna_card_at(deck, block, at.line);
         if (!at.dyna) return std::nullopt;
         at.dyna_card = at.dyna->card;
         return at;

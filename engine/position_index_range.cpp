@@ -12,8 +12,7 @@ namespace {
 constexpr std::uint32_t kWalkWholeBlockBelow = 512;
 
 // The first card line of `block` at or after `line` (card lines are in line order).
-const grammar::CardLine* first_line_from(const grammar::RawDeck& deck, const grammar::Block& block,
-                                         std::uint32_t line) {
+grammar::CardLinePtr first_line_from(const grammar::RawDeck& deck, const grammar::Block& block, std::uint32_t line) {
     return std::lower_bound(deck.begin_lines(block), deck.end_lines(block), line,
                             [](const grammar::CardLine& l, std::uint32_t n) { return l.line < n; });
 }
@@ -30,11 +29,11 @@ void visit_dyna(const grammar::RawDeck& deck, const grammar::Block& block, LineR
                 const DecodedLineVisitor& visit) {
     const bool partial = block.line_count >= kWalkWholeBlockBelow;
     if (partial && only_repeated_card(block)) {
-        for (const grammar::CardLine* l = first_line_from(deck, block, range.first);
+        for (grammar::CardLinePtr l = first_line_from(deck, block, range.first);
              l != deck.end_lines(block) && l->line <= range.last; ++l)
             if (l->file != block.span.file)
                 continue;
-            else if (auto card = dyna_card_at(deck, block, *l))
+            else if (auto card = dyna_card_at(deck, block, l))
                 visit({&block, l, &*card, nullptr});
         return;
     }
@@ -50,14 +49,14 @@ void visit_radioss(const grammar::RawDeck& deck, const grammar::Block& block, Li
                    const DecodedLineVisitor& visit) {
     if (!radioss_keyword(block) || block.line_count == 0) return;
     const int version = model::radioss_version(deck);
-    const grammar::CardLine& first = *deck.begin_lines(block);
-    if (range.holds(first.line))
+    const grammar::CardLinePtr first = deck.begin_lines(block);
+    if (range.holds(first->line))
         if (auto card = radioss_card_at(deck, block, first, version); card && card->title)
-            visit({&block, &first, nullptr, &*card});
-    walk_radioss_block(deck, block, version, [&](const grammar::CardLine& line, const RadiossCard& card) {
-        if (line.file != block.span.file) return true;
-        if (line.line > range.last) return false;
-        if (range.holds(line.line)) visit({&block, &line, nullptr, &card});
+            visit({&block, first, nullptr, &*card});
+    walk_radioss_block(deck, block, version, [&](grammar::CardLinePtr line, const RadiossCard& card) {
+        if (line->file != block.span.file) return true;
+        if (line->line > range.last) return false;
+        if (range.holds(line->line)) visit({&block, line, nullptr, &card});
         return true;
     });
 }

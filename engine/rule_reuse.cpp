@@ -22,9 +22,8 @@ public:
         same_count_ = changed.old_card_end - changed.first_card == changed.new_card_end - changed.first_card;
         if (!same_count_) return;
         for (std::uint32_t k = changed.first_card; k < changed.old_card_end; ++k) {
-            const grammar::CardLine& old = changed.old_card(before, k);
-            if (before.text(old) == now.text(now.lines[k]))
-                kept_.emplace_back(old.line, now.lines[k].line);
+            if (before.text(before.lines[k]) == now.text(now.lines[k]))
+                kept_.emplace_back(before.lines[k].line, now.lines[k].line);
             else
                 edited_.push_back(k);
         }
@@ -103,7 +102,7 @@ bool only_titles_changed(const CheckResult& previous, const grammar::RawDeck& de
         before->options != now->options || before->rows.size() != now->rows.size())
         return false;
     for (const std::uint32_t k : map.edited_cards())
-        if (!on_title_row(*before, changed.old_card(previous.deck, k).line) || !on_title_row(*now, deck.lines[k].line))
+        if (!on_title_row(*before, previous.deck.lines[k].line) || !on_title_row(*now, deck.lines[k].line))
             return false;
     for (std::size_t i = 0; i < now->rows.size(); ++i) {
         const auto &a = before->rows[i], &b = now->rows[i];

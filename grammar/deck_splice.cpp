@@ -63,10 +63,9 @@ void shift_span(text::Span& span, FileId file, std::uint32_t from_line, std::int
 bool touches(const text::Span& span, FileId file, std::uint32_t first, std::uint32_t end) {
     return span.file == file && span.line >= first && span.line < end;
 }
+}  // namespace
 
-// splice_edit; `take`: `previous` itself when its card lines are to be moved (splice_edit_taking).
-std::optional<SplicedDeck> splice(const RawDeck& previous, SourceText text, const TextRevision* revision,
-                                  RawDeck* take) {
+std::optional<SplicedDeck> splice_edit(const RawDeck& previous, SourceText text, const TextRevision* revision) {
     constexpr FileId file = 0;
     if (previous.sources.size() != 1 || previous.blocks.empty() || previous.lines.empty() ||
         !previous.parameters.definitions().empty() || format_of(previous) != DeckFormat::LsDyna)
@@ -145,9 +144,7 @@ std::optional<SplicedDeck> splice(const RawDeck& previous, SourceText text, cons
                    first_line,
                    after,
                    first_line + new_lines,
-                   host_index,
-                   false,
-                   {}};
+                   host_index};
     RawDeck& deck = out.deck;
     SourceFile source;
     source.path = old_file.path;
@@ -162,43 +159,13 @@ std::optional<SplicedDeck> splice(const RawDeck& previous, SourceText text, cons
     const std::int64_t line_shift = static_cast<std::int64_t>(new_lines) - static_cast<std::int64_t>(old_lines);
     const std::int64_t count_shift =
         static_cast<std::int64_t>(read.lines.size()) - static_cast<std::int64_t>(last_index - first_index);
-    const auto spliced_line = [&](const CardLine& l) {
-        return CardLine{file, first_line + l.line - 2, static_cast<std::uint32_t>(begin + l.offset - lead)};
-    };
-    std::size_t moved_from = 0;  // the first line after the edit in deck.lines
-    if (take) {
-        // The old lines moved, the edit's replaced where they stand: no copy of the 2 million lines, and
-        // no move of those after the edit when it kept their count.
-        out.changed.lines_taken = true;
-        out.changed.old_cards.assign(first, last);
-        deck.lines = std::move(take->lines);
-        take->lines = {};
-        const std::size_t old_count = last_index - first_index, new_count = read.lines.size();
-        const auto at = deck.lines.begin() + static_cast<std::ptrdiff_t>(first_index);
-        if (new_count > old_count)
-            deck.lines.insert(at + static_cast<std::ptrdiff_t>(old_count), new_count - old_count, CardLine{});
-        else if (new_count < old_count)
-            deck.lines.erase(at + static_cast<std::ptrdiff_t>(new_count), at + static_cast<std::ptrdiff_t>(old_count));
-        for (std::size_t i = 0; i < new_count; ++i) deck.lines[first_index + i] = spliced_line(read.lines[i]);
-        moved_from = first_index + new_count;
-    } else {
-        deck.lines.reserve(static_cast<std::size_t>(static_cast<std::int64_t>(previous.lines.size()) + count_shift));
-        deck.lines.insert(deck.lines.end(), previous.lines.begin(), first);
-        for (const CardLine& l : read.lines) deck.lines.push_back(spliced_line(l));
-        // The lines after the edit: copied whole, then moved by what the edit added (a plain loop over
-        // 2 million lines, and none when the edit kept the lengths).
-        moved_from = deck.lines.size();
-        deck.lines.insert(deck.lines.end(), last, previous.lines.end());
-    }
-    if (line_shift != 0 || byte_shift != 0) {
-        const auto lines = static_cast<std::uint32_t>(line_shift), bytes = static_cast<std::uint32_t>(byte_shift);
-        CardLine* const moved = deck.lines.data() + moved_from;
-        const std::size_t n = deck.lines.size() - moved_from;
-        for (std::size_t i = 0; i < n; ++i) {  // modulo 2^32: a negative shift wraps back into range
-            moved[i].line += lines;
-            moved[i].offset += bytes;
-        }
-    }
+    deck.lines.append(previous.lines, 0, first_index);
+    deck.lines.append(read.lines, 0, read.lines.size(),
+                      CardLines::Move{first_line - 2, static_cast<std::uint32_t>(begin - lead), true, file});
+    // The lines after the edit, moved by what the edit added (modulo 2^32: a negative shift wraps back
+    // into range); runs stay runs, so a bulk block costs no loop over its lines.
+    deck.lines.append(previous.lines, last_index, previous.lines.size(),
+                      CardLines::Move{static_cast<std::uint32_t>(line_shift), static_cast<std::uint32_t>(byte_shift)});
 
     deck.blocks = previous.blocks;
     deck.blocks[host_index].line_count = static_cast<std::uint32_t>(host.line_count + count_shift);
@@ -221,15 +188,6 @@ std::optional<SplicedDeck> splice(const RawDeck& previous, SourceText text, cons
     deck.stats.lines = static_cast<std::size_t>(static_cast<std::int64_t>(previous.stats.lines) + line_shift);
     deck.stats.cards = static_cast<std::size_t>(static_cast<std::int64_t>(previous.stats.cards) + count_shift);
     return out;
-}
-}  // namespace
-
-std::optional<SplicedDeck> splice_edit(const RawDeck& previous, SourceText text, const TextRevision* revision) {
-    return splice(previous, std::move(text), revision, nullptr);
-}
-
-std::optional<SplicedDeck> splice_edit_taking(RawDeck& previous, SourceText text, const TextRevision* revision) {
-    return splice(previous, std::move(text), revision, &previous);
 }
 
 }  // namespace sphdeck::grammar

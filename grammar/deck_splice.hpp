@@ -9,7 +9,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
-#include <vector>
 
 #include "grammar/file_overlay.hpp"
 #include "grammar/raw_deck.hpp"
@@ -29,15 +28,6 @@ struct SplicedLines {
     // new_line_end) of the new one; the lines after moved by new_line_end - old_line_end.
     std::uint32_t first_line = 0, old_line_end = 0, new_line_end = 0;
     std::size_t block = 0;  // the block (RawDeck::blocks) the edit fell in, the same index in both readings
-    // splice_edit_taking moved the old reading's card lines into the new one: the old ones the edit
-    // replaced, [first_card, old_card_end), are kept here (old_card()).
-    bool lines_taken = false;
-    std::vector<CardLine> old_cards;
-
-    // Card line k of the old reading, first_card <= k < old_card_end.
-    const CardLine& old_card(const RawDeck& old, std::uint32_t k) const {
-        return lines_taken ? old_cards[k - first_card] : old.lines[k];
-    }
 };
 
 struct SplicedDeck {
@@ -51,11 +41,5 @@ struct SplicedDeck {
 // two texts byte by byte (a pass over both, tens of ms on a 100 MB deck).
 std::optional<SplicedDeck> splice_edit(const RawDeck& previous, SourceText text,
                                        const TextRevision* revision = nullptr);
-
-// The same for a caller that drops `previous` after (the editor's re-check): its card lines are moved
-// into the new reading, the edit's replaced in place, instead of copied (24 MB on a 1M-particle deck);
-// `previous` keeps no card line then (SplicedLines::old_card has those the edit replaced).
-std::optional<SplicedDeck> splice_edit_taking(RawDeck& previous, SourceText text,
-                                              const TextRevision* revision = nullptr);
 
 }  // namespace sphdeck::grammar

@@ -29,7 +29,7 @@ inline constexpr FileId reading_file = no_file - 1;
 // with FileId reading_file, block lines counted from 0, scope and parameter epoch 0.
 struct FileReading {
     std::vector<Block> blocks;
-    std::vector<CardLine> lines;
+    CardLines lines;
     std::vector<diag::Diagnostic> diagnostics;
     std::uint32_t physical_lines = 0;  // ReadStats::lines of the file
     SourceText text;                   // what it was read from: compared when another path has the same hash

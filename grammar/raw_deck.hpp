@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "diag/diagnostic.hpp"
+#include "grammar/card_lines.hpp"
 #include "grammar/parameters.hpp"
 #include "text/source_map.hpp"
 
@@ -16,15 +17,6 @@ namespace sphdeck::grammar {
 enum class CardFormat : std::uint8_t { Standard, I10, Long };
 
 std::string_view to_string(CardFormat f);
-
-// One data line of a block: where it starts in its file's text. 12 bytes on purpose: a deck of
-// 10 million particles keeps 20 million of these. The length is not stored: the line ends at the
-// next '\n' (the readers split lines there), found again with memchr when the text is asked for.
-struct CardLine {
-    FileId file = 0;
-    std::uint32_t line = 0;    // 1-based line number
-    std::uint32_t offset = 0;  // byte offset of the line in the file text
-};
 
 // One keyword (or Radioss header) and the data lines that follow it up to the next keyword.
 struct Block {
@@ -60,7 +52,7 @@ struct ReadStats {
 struct RawDeck {
     SourceMap sources;
     std::vector<Block> blocks;
-    std::vector<CardLine> lines;
+    CardLines lines;  // a bulk block's regular lines kept as runs (grammar/card_lines.hpp)
     ParameterTable parameters;
     KeywordArguments keyword_arguments;
     std::vector<diag::Diagnostic> diagnostics;
@@ -70,8 +62,8 @@ struct RawDeck {
     std::string_view text(const CardLine& l) const;
     // Its length in bytes, without "\r\n" (for spans covering the whole line).
     std::uint32_t length(const CardLine& l) const { return static_cast<std::uint32_t>(text(l).size()); }
-    const CardLine* begin_lines(const Block& b) const { return lines.data() + b.first_line; }
-    const CardLine* end_lines(const Block& b) const { return lines.data() + b.first_line + b.line_count; }
+    CardLinePtr begin_lines(const Block& b) const { return lines.at(b.first_line); }
+    CardLinePtr end_lines(const Block& b) const { return CardLinePtr(lines, b.first_line + b.line_count, false); }
 };
 
 }  // namespace sphdeck::grammar

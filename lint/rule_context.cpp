@@ -86,7 +86,7 @@ std::map<long long, std::vector<grammar::Span>> RuleContext::node_lines(const st
         const std::uint32_t width = b.format == grammar::CardFormat::Long  ? 20
                                     : b.format == grammar::CardFormat::I10 ? 10
                                                                            : 8;
-        for (const grammar::CardLine* l = deck.begin_lines(b); l != deck.end_lines(b); ++l) {
+        for (grammar::CardLinePtr l = deck.begin_lines(b); l != deck.end_lines(b); ++l) {
             std::string_view text = deck.text(*l);
             std::string_view first = grammar::is_free_format(text)
                                          ? text.substr(0, text.find(','))

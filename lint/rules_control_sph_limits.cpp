@@ -94,7 +94,7 @@ Speed largest_initial_speed(const RuleContext& c) {
         if (b.keyword != "*INITIAL_VELOCITY_NODE") continue;
         const std::uint32_t w = b.format == grammar::CardFormat::Long ? 20 : 10;
         const grammar::FixedField layout[] = {{0, w}, {w, w}, {2 * w, w}, {3 * w, w}};
-        for (const grammar::CardLine* l = c.deck.begin_lines(b); l != c.deck.end_lines(b); ++l) {
+        for (grammar::CardLinePtr l = c.deck.begin_lines(b); l != c.deck.end_lines(b); ++l) {
             grammar::cut_fields(c.deck.text(*l), *l, layout, 8 * w, fields);
             grammar::IntegerValue nid = grammar::parse_integer(fields[0].text);
             if (nid.status != grammar::NumberStatus::Ok || !c.particle_index().find(nid.value)) continue;

@@ -166,8 +166,8 @@ void check_ithk(RuleContext& c, const std::vector<const model::Part*>& parts) {
         if (k.find("NODES_TO_SURFACE") == k.npos && k.find("SURFACE_TO_SURFACE") == k.npos &&
             k.find("SINGLE_SURFACE") == k.npos && k.find("AUTOMATIC_GENERAL") == k.npos)
             continue;
-        const grammar::CardLine* l = c.deck.begin_lines(b);
-        const grammar::CardLine* end = c.deck.end_lines(b);
+        grammar::CardLinePtr l = c.deck.begin_lines(b);
+        grammar::CardLinePtr end = c.deck.end_lines(b);
         if (has_token(k, "ID") || has_token(k, "TITLE")) ++l;
         if (has_token(k, "MPP") && ++l < end) {
             const std::string_view t = c.deck.text(*l);

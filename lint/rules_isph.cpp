@@ -22,7 +22,7 @@ std::vector<std::vector<model::FieldValue>> decoded_cards(const grammar::RawDeck
     model::CardDecoder decoder(deck, dropped);
     const auto cards = keywords::cards_for(match);
     std::size_t next = 0;
-    for (const grammar::CardLine* l = deck.begin_lines(b); l != deck.end_lines(b) && next < cards.size(); ++l, ++next) {
+    for (grammar::CardLinePtr l = deck.begin_lines(b); l != deck.end_lines(b) && next < cards.size(); ++l, ++next) {
         if (cards[next]->unknown_layout || cards[next]->present_if ||
             cards[next]->repeat == keywords::CardRepeat::Repeated)
             break;

@@ -46,7 +46,7 @@ std::optional<std::uint32_t> line_index(const grammar::RawDeck& deck, std::strin
         if (first == last || first->file != at.file) continue;
         auto l = std::lower_bound(first, last, at.line,
                                   [](const grammar::CardLine& c, std::uint32_t n) { return c.line < n; });
-        if (l != last && l->line == at.line) return static_cast<std::uint32_t>(l - deck.lines.data());
+        if (l != last && l->line == at.line) return l.index();
     }
     return std::nullopt;
 }

@@ -83,8 +83,8 @@ public:
 private:
     // The block's lines through the law's cards, up to the first card kept as text.
     void read() {
-        const grammar::CardLine* line = c_.deck.begin_lines(block_);
-        const grammar::CardLine* end = c_.deck.end_lines(block_);
+        grammar::CardLinePtr line = c_.deck.begin_lines(block_);
+        grammar::CardLinePtr end = c_.deck.end_lines(block_);
         if (!rad::is_v4(version_) && line != end) ++line;  // the title
         std::vector<diag::Diagnostic> ignored;             // the model's reading reported them
         model::RadiossCardDecoder decoder(c_.deck, ignored);
@@ -147,7 +147,7 @@ private:
     int version_;
     BlockValues read_;
     std::vector<bool> decoded_;
-    const grammar::CardLine* last_ = nullptr;
+    grammar::CardLinePtr last_ = nullptr;
 };
 
 // Blocks of the engine deck (<run>_0001.rad and its includes) are no starter input.

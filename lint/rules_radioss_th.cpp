@@ -97,7 +97,7 @@ std::set<long long> defined_ids(const grammar::RawDeck& deck, const ThKind& kind
                 if (auto id = integer(segments[k])) ids.insert(*id);
             continue;
         }
-        for (const grammar::CardLine* l = deck.begin_lines(block); l != deck.end_lines(block); ++l) {
+        for (grammar::CardLinePtr l = deck.begin_lines(block); l != deck.end_lines(block); ++l) {
             const std::string_view text = deck.text(*l);
             if (auto id = integer(text.substr(0, std::min<std::size_t>(text.size(), 10)))) ids.insert(*id);
         }
@@ -125,8 +125,8 @@ void check_time_history_selections(RuleContext& c) {
         if (!kind || (kind->selection == "SPHCEL" && starter_makes_cells(f))) continue;
         auto known = defined.find(kind);
         if (known == defined.end()) known = defined.emplace(kind, defined_ids(c.deck, *kind)).first;
-        const grammar::CardLine* line = c.deck.begin_lines(block);
-        const grammar::CardLine* end = c.deck.end_lines(block);
+        grammar::CardLinePtr line = c.deck.begin_lines(block);
+        grammar::CardLinePtr end = c.deck.end_lines(block);
         if (line != end) ++line;  // the title
         bool ids_begun = false;   // the variable names come first
         for (; line != end; ++line) {

@@ -46,7 +46,7 @@ Definitions definitions_of(const grammar::RawDeck& deck, std::string_view kind) 
     Definitions d;
     for (const grammar::Block& b : deck.blocks) {
         if (!keywords::defines_kind(b.keyword, kind)) continue;
-        const grammar::CardLine* line = deck.begin_lines(b);
+        grammar::CardLinePtr line = deck.begin_lines(b);
         line += keywords::title_lines(b.keyword);
         if (line >= deck.end_lines(b)) continue;
         if (auto id = first_integer(deck.text(*line), b.format))
@@ -145,7 +145,7 @@ void check_followed_references(RuleContext& c, std::set<model::Id>& boxes) {
             for (const grammar::Block& b : c.deck.blocks)
                 if (references_links_starts_with(b.keyword, "*MAT_THERMAL_") &&
                     c.deck.begin_lines(b) < c.deck.end_lines(b)) {
-                    const grammar::CardLine* line = c.deck.begin_lines(b) + keywords::title_lines(b.keyword);
+                    grammar::CardLinePtr line = c.deck.begin_lines(b) + keywords::title_lines(b.keyword);
                     if (line >= c.deck.end_lines(b)) continue;
                     if (auto id = first_integer(c.deck.text(*line), b.format))
                         d.ids.insert(*id);

@@ -19,7 +19,7 @@ struct ThermalId {
 // TMID: the first field of the first card (after the title line of _TITLE); nullopt when it is not a
 // plain integer (a parameter, free format: left alone).
 std::optional<ThermalId> thermal_id(const grammar::RawDeck& deck, const grammar::Block& b) {
-    const grammar::CardLine* line = deck.begin_lines(b) + keywords::title_lines(b.keyword);
+    grammar::CardLinePtr line = deck.begin_lines(b) + keywords::title_lines(b.keyword);
     if (line >= deck.end_lines(b)) return std::nullopt;
     const std::string_view text = deck.text(*line);
     if (grammar::is_free_format(text)) return std::nullopt;

@@ -159,7 +159,7 @@ nlohmann::json radioss_hover(const CheckedDeck& deck, const grammar::Block& bloc
     const std::optional<CardAt> at = spec ? card_at(raw, block, line, true) : std::nullopt;
     if (!at) return nullptr;
     const RadiossCard* card = &*at->radioss;
-    const grammar::CardLine* card_line = at->line;
+    grammar::CardLinePtr card_line = at->line;
     if (card->title) {
         grammar::Span span{card_line->file, card_line->line, 1, raw.length(*card_line) + 1};
         return hover_json(fmt::format("title of `{}`", spec->name), raw.sources, span);

@@ -91,7 +91,7 @@ public:
             return walk_in_parallel(block, *cards[0], summary, bound);
         const bool particles = block.keyword.rfind("*ELEMENT_SPH", 0) == 0;
         std::size_t walked = 0;
-        for (const grammar::CardLine* l = deck_.begin_lines(block); l != deck_.end_lines(block); ++l) {
+        for (grammar::CardLinePtr l = deck_.begin_lines(block); l != deck_.end_lines(block); ++l) {
             if (++walked % trim_lines == 0) bound.trim(out_);
             const CardSpec* next = sequence.next();
             if (!next && sequence.layout_unknown()) {  // generated layout ends here
@@ -99,23 +99,22 @@ public:
                 return;
             }
             if (!next) {
-                report_extra(block, *l, cards.size());
+                report_extra(block, l, cards.size());
                 return;
             }
             const CardSpec& card = *next;
             note_lost_asterisk(*l, card.fields.empty() || card.fields[0].type == FieldType::Text);
-            if (!heading_.line && sequence.card_after()) note_missing_heading(block, *l, card, *sequence.card_after());
+            if (!heading_.line && sequence.card_after()) note_missing_heading(block, l, card, *sequence.card_after());
             const std::size_t found_before = out_.size();
             decoder_.decode(block, *l, card, values_);
-            note_alignment(block, *l, card,
+            note_alignment(block, l, card,
                            std::any_of(out_.begin() + static_cast<std::ptrdiff_t>(found_before), out_.end(),
                                        [](const diag::Diagnostic& d) { return d.severity == diag::Severity::Error; }));
-            note_suspect(block, *l, card,
-                         out_.size() > found_before || decoder_.glued() || decoder_.text_past_fields());
+            note_suspect(block, l, card, out_.size() > found_before || decoder_.glued() || decoder_.text_past_fields());
             std::optional<diag::Diagnostic> refused;
             if (particles) refused = take_range(values_);
             sequence.advance(card, values_);  // conditions look at header cards
-            if (visit_) visit_(block, match, card, *l, values_);
+            if (visit_) visit_(block, match, card, l, values_);
             if (particles) summary.particles += count_particles(deck_, *l, block.format, values_, out_);
             if (refused) out_.push_back(std::move(*refused));  // last of the line's findings, as in parallel
         }
@@ -128,7 +127,7 @@ public:
     const std::vector<LostAsteriskLine>& lost_asterisks() const { return lost_; }
     // A *PART heading that reads as the card after it (model/missing_heading.hpp), and that card.
     struct HeadingSuspect {
-        const grammar::CardLine* line = nullptr;
+        grammar::CardLinePtr line = nullptr;
         const CardSpec* next = nullptr;
     };
     const HeadingSuspect& heading_suspect() const { return heading_; }
@@ -153,7 +152,7 @@ public:
 private:
     struct LoneCandidate {
         const grammar::Block* block = nullptr;
-        const grammar::CardLine* line = nullptr;
+        grammar::CardLinePtr line = nullptr;
         const CardSpec* card = nullptr;
         grammar::LoneShift shift;
         bool refused = false;  // the line as written makes an error (a required field left blank)
@@ -177,23 +176,22 @@ private:
     }
 
     // A *PART heading line that reads as the card after it: the heading was left out.
-    void note_missing_heading(const grammar::Block& block, const grammar::CardLine& line, const CardSpec& card,
+    void note_missing_heading(const grammar::Block& block, grammar::CardLinePtr line, const CardSpec& card,
                               const CardSpec& next) {
         if (card.fields.empty() || card.fields[0].name != "HEADING" || block.keyword.rfind("*PART", 0) != 0) return;
-        if (reads_as_integer_card(deck_.text(line), layout_of(next, block.format), next)) heading_ = {&line, &next};
+        if (reads_as_integer_card(deck_.text(*line), layout_of(next, block.format), next)) heading_ = {line, &next};
     }
 
     // Tallies how the line's numbers sit in their fields, or keeps it as a lone shifted value. `refused`: the
     // line as written made an error.
-    void note_alignment(const grammar::Block& block, const grammar::CardLine& line, const CardSpec& card,
-                        bool refused) {
+    void note_alignment(const grammar::Block& block, grammar::CardLinePtr line, const CardSpec& card, bool refused) {
         if (card.fields.empty() || (card.fields[0].type == FieldType::Text && card.fields[0].width >= 70)) return;
-        const std::string_view text = deck_.text(line);
+        const std::string_view text = deck_.text(*line);
         const auto slots = layout_of(card, block.format);
         // A lone value read as an integer written as a real (DK004) is still lone.
         if (lone_.size() < max_lone_candidates)
             if (auto lone = grammar::find_lone_shift(text, slots, layout_->types)) {
-                lone_.push_back({&block, &line, &card, std::move(*lone), refused});
+                lone_.push_back({&block, line, &card, std::move(*lone), refused});
                 return;
             }
         if (!grammar::is_free_format(text)) grammar::tally_alignment(text, slots, layout_->types, alignment_);
@@ -201,21 +199,21 @@ private:
 
     // A line that made a finding, or the first line of a card under a `$#` header (one a block for
     // repeated cards: the header check reads back over the line above).
-    void note_suspect(const grammar::Block& block, const grammar::CardLine& line, const CardSpec& card, bool found) {
+    void note_suspect(const grammar::Block& block, grammar::CardLinePtr line, const CardSpec& card, bool found) {
         if (suspects_.size() >= max_suspect_lines) return;
-        if (!suspects_.empty() && suspects_.back().line == &line) return;
-        const bool first_of_card = card.repeat != CardRepeat::Repeated || &line == deck_.begin_lines(block);
-        if (found || (first_of_card && !header_above(deck_, line).empty())) suspects_.push_back({&line, &card});
+        if (!suspects_.empty() && suspects_.back().line == line) return;
+        const bool first_of_card = card.repeat != CardRepeat::Repeated || line == deck_.begin_lines(block);
+        if (found || (first_of_card && !header_above(deck_, *line).empty())) suspects_.push_back({line, &card});
     }
 
     // The bulk path: the lines of the first findings (the lines of a block are in file order).
     void note_bulk_suspects(const grammar::Block& block, const CardSpec& card, std::size_t from) {
-        const grammar::CardLine* begin = deck_.begin_lines(block);
-        const grammar::CardLine* end = deck_.end_lines(block);
+        grammar::CardLinePtr begin = deck_.begin_lines(block);
+        grammar::CardLinePtr end = deck_.end_lines(block);
         for (std::size_t i = from; i < out_.size() && suspects_.size() < max_suspect_lines; ++i) {
             const grammar::Span& at = out_[i].span;
             if (!suspects_.empty() && suspects_.back().line->line == at.line) continue;
-            const grammar::CardLine* l =
+            grammar::CardLinePtr l =
                 std::lower_bound(begin, end, at.line,
                                  [](const grammar::CardLine& c, std::uint32_t n) { return c.line < n; });
             if (l != end && l->line == at.line && l->file == at.file) suspects_.push_back({l, &card});
@@ -246,7 +244,7 @@ private:
         std::vector<FloodBound> bounds(static_cast<std::size_t>(threads), FloodBound(0));
         std::vector<std::size_t> counted(static_cast<std::size_t>(threads), 0);
         std::vector<char> all_plain(static_cast<std::size_t>(threads), 1);  // char: threads write their own
-        const grammar::CardLine* lines = deck_.begin_lines(block);
+        const grammar::CardLinePtr lines = deck_.begin_lines(block);
         // Ranges longer than the deck's nodes are refused on the threads; the deck's running
         // budget is spent afterwards, range by range in line order.
         struct Range {
@@ -272,10 +270,12 @@ private:
             std::size_t count = 0;
             std::size_t released = first;  // lines whose text went back (a mapped file's pages)
             FloodBound& trimmed = bounds[static_cast<std::size_t>(t)];
-            for (std::size_t i = first; i < last; ++i) {
-                if (i - released == release_lines) release_text(lines[released], lines[i]), released = i;
+            grammar::CardLinePtr at = lines + static_cast<std::ptrdiff_t>(first);  // this thread's own walk
+            for (std::size_t i = first; i < last; ++i, ++at) {
+                const grammar::CardLine line = *at;
+                if (i - released == release_lines) release_text(lines[released], line), released = i;
                 if ((i - first + 1) % trim_lines == 0) trimmed.trim(out);
-                if (!decoder.decode_bulk(block, lines[i], card, values)) all_plain[static_cast<std::size_t>(t)] = 0;
+                if (!decoder.decode_bulk(block, line, card, values)) all_plain[static_cast<std::size_t>(t)] = 0;
                 std::optional<std::string> refused;
                 if (particles) {
                     refused = ranges_.check_alone(range_extra(values));
@@ -284,8 +284,8 @@ private:
                     else if (std::size_t extra = range_extra(values))
                         ranges[static_cast<std::size_t>(t)].push_back({i, extra, values[3].span});
                 }
-                bulk_->line(block, i, t, lines[i], values);
-                if (particles) count += count_particles(deck_, lines[i], block.format, values, out);
+                bulk_->line(block, i, t, line, values);
+                if (particles) count += count_particles(deck_, line, block.format, values, out);
                 if (refused) out.push_back(range_error(values[3].span, *refused));
             }
             counted[static_cast<std::size_t>(t)] = count;
@@ -329,7 +329,7 @@ private:
         std::vector<diag::Diagnostic> found;
         CardDecoder decoder(deck_, found);
         std::vector<FieldValue> values;
-        const grammar::CardLine* lines = deck_.begin_lines(block);
+        grammar::CardLinePtr lines = deck_.begin_lines(block);
         bool clean = true;
         for (std::size_t i = around->first; clean && i < around->last; ++i) {
             clean = decoder.decode_bulk(block, lines[i], card, values) && !(particles && range_extra(values) > 0);
@@ -353,13 +353,14 @@ private:
     // Blank lines past a keyword's last card hold no value, so ignoring them loses nothing: LS-PrePost
     // and hand-written decks leave them before the next keyword (a blank line that stands for a
     // mandatory card is another matter: it is read as that card).
-    void report_extra(const grammar::Block& block, const grammar::CardLine& line, std::size_t expected) {
-        const bool all_blank = std::all_of(&line, deck_.end_lines(block), [&](const grammar::CardLine& l) {
+    void report_extra(const grammar::Block& block, grammar::CardLinePtr from, std::size_t expected) {
+        const bool all_blank = std::all_of(from, deck_.end_lines(block), [&](const grammar::CardLine& l) {
             return deck_.text(l).find_first_not_of(" \t") == std::string_view::npos;
         });
         if (all_blank) return;
-        for (const grammar::CardLine* l = &line; l != deck_.end_lines(block); ++l) note_lost_asterisk(*l, false);
-        std::size_t extra = static_cast<std::size_t>(deck_.end_lines(block) - &line);
+        for (grammar::CardLinePtr l = from; l != deck_.end_lines(block); ++l) note_lost_asterisk(*l, false);
+        std::size_t extra = static_cast<std::size_t>(deck_.end_lines(block) - from);
+        const grammar::CardLine line = *from;
         out_.push_back({"DK009",
                         diag::Severity::Warning,
                         fmt::format("{} takes {} card(s); {} more line(s) ignored", block.keyword, expected, extra),

@@ -21,7 +21,7 @@ struct DeckSummary {
 
 // Called for every decoded card: the block, its keyword match, the card spec and the values.
 using CardVisitor = std::function<void(const grammar::Block&, const keywords::KeywordMatch&, const keywords::CardSpec&,
-                                       const grammar::CardLine&, const std::vector<FieldValue>&)>;
+                                       grammar::CardLinePtr, const std::vector<FieldValue>&)>;
 
 // Receives the cards of big blocks made of one repeated card (*NODE, *ELEMENT_SPH: millions of
 // lines), which check_deck decodes on several threads. begin() and end() run on the calling

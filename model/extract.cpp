@@ -245,7 +245,7 @@ void extract_record(const KeywordRecord& r, std::size_t index, Model& m) {
 // The first id of a block the schema does not know (*SECTION_SHELL, *MAT_RIGID, *EOS_JWL...):
 // LS-DYNA puts it in columns 1-10 of the first data card, after the title line of _TITLE.
 bool raw_first_id(const grammar::RawDeck& deck, const grammar::Block& block, Id& id, grammar::Span& span) {
-    const grammar::CardLine* line = deck.begin_lines(block);
+    grammar::CardLinePtr line = deck.begin_lines(block);
     line += keywords::title_lines(block.keyword);
     if (line >= deck.end_lines(block)) return false;
     std::string_view text = deck.text(*line);
@@ -264,11 +264,11 @@ bool raw_first_id(const grammar::RawDeck& deck, const grammar::Block& block, Id&
 struct RawField {
     std::string_view text;
     grammar::Span span;
-    const grammar::CardLine* line = nullptr;
+    grammar::CardLinePtr line = nullptr;
 };
 std::optional<RawField> raw_field(const grammar::RawDeck& deck, const grammar::Block& b, std::string_view id_field,
                                   std::string_view name) {
-    const grammar::CardLine* line = deck.begin_lines(b) + keywords::title_lines(b.keyword);
+    grammar::CardLinePtr line = deck.begin_lines(b) + keywords::title_lines(b.keyword);
     if (line >= deck.end_lines(b)) return std::nullopt;
     const std::optional<keywords::KeywordMatch> known = keywords::find_keyword(b.keyword);
     if (!known) return std::nullopt;
@@ -315,7 +315,7 @@ long long raw_shell_form(const grammar::RawDeck& deck, const grammar::Block& b) 
 // materials), enough for mass and sound-speed checks but not for SPH119 (has_density stays false).
 Material raw_material(const grammar::RawDeck& deck, const grammar::Block& b, const Id& id, grammar::Span span) {
     Material mat{id, b.keyword, span, {}, std::nullopt, false};
-    const grammar::CardLine* line = deck.begin_lines(b) + keywords::title_lines(b.keyword);
+    grammar::CardLinePtr line = deck.begin_lines(b) + keywords::title_lines(b.keyword);
     if (line >= deck.end_lines(b)) return mat;
     const std::optional<keywords::KeywordMatch> known = keywords::find_keyword(b.keyword);
     if (!known || known->schema->cards.empty()) {
@@ -350,7 +350,7 @@ Material raw_material(const grammar::RawDeck& deck, const grammar::Block& b, con
 // *PART's heading and data card (PID SECID MID EOSID HGID), then cards of their own follow. We read
 // the first part of the block; variants with several parts per block are rare.
 void extract_part_variant(const grammar::RawDeck& deck, const grammar::Block& b, Model& m) {
-    const grammar::CardLine* first = deck.begin_lines(b);
+    grammar::CardLinePtr first = deck.begin_lines(b);
     if (deck.end_lines(b) - first < 2) return;
     const grammar::CardLine& data = first[1];
     std::string_view text = deck.text(data);

@@ -61,10 +61,10 @@ std::optional<LostAsteriskLine> lost_asterisk_line(grammar::FileId file, std::ui
                             read_as_text};
 }
 
-void note_lost_in_unread(const grammar::RawDeck& deck, const grammar::Block& block, const grammar::CardLine* from,
+void note_lost_in_unread(const grammar::RawDeck& deck, const grammar::Block& block, grammar::CardLinePtr from,
                          std::vector<LostAsteriskLine>& out) {
     const bool titled = block.keyword.find("TITLE") != std::string::npos;
-    for (const grammar::CardLine* l = from; l != deck.end_lines(block) && out.size() < max_lost_lines; ++l) {
+    for (grammar::CardLinePtr l = from; l != deck.end_lines(block) && out.size() < max_lost_lines; ++l) {
         if (titled && l == deck.begin_lines(block)) continue;
         if (auto lost = lost_asterisk_line(l->file, l->line, deck.text(*l), false)) out.push_back(std::move(*lost));
     }

@@ -36,7 +36,7 @@ std::optional<LostAsteriskLine> lost_asterisk_line(grammar::FileId file, std::ui
 
 // Candidates among the lines of `block` from `from` on that no card reads (an unknown keyword, a generated
 // layout that ends): a title line (the block's first, under a _TITLE keyword) is never one.
-void note_lost_in_unread(const grammar::RawDeck& deck, const grammar::Block& block, const grammar::CardLine* from,
+void note_lost_in_unread(const grammar::RawDeck& deck, const grammar::Block& block, grammar::CardLinePtr from,
                          std::vector<LostAsteriskLine>& out);
 
 // Candidates among the text of a *COMMENT block (its lines, up to the next keyword line, are no cards: read

@@ -81,8 +81,7 @@ void ModelBuilder::add_node(const std::vector<FieldValue>& v) {
     n.z.push_back(v[3].number);
 }
 
-void ModelBuilder::add_particles(const grammar::Block& block, const std::vector<FieldValue>& v,
-                                 const grammar::CardLine& line) {
+void ModelBuilder::add_particles(const grammar::Block& block, const std::vector<FieldValue>& v, std::uint32_t index) {
     if (v.size() < 3 || !v[0].valid) return;
     Particles& p = model_.particles;
     const long long first = grammar::saturating_integer<long long>(v[0].number);
@@ -91,7 +90,6 @@ void ModelBuilder::add_particles(const grammar::Block& block, const std::vector<
     const long long last = first + static_cast<long long>(range_extra(v));
     const long long part = v[1].valid ? grammar::saturating_integer<long long>(v[1].number) : -1;
     const bool volume = block.keyword.find("_VOLUME") != std::string::npos;
-    const auto index = static_cast<std::uint32_t>(&line - deck_.lines.data());
     for (long long id = first; id <= last; ++id) {
         p.node.push_back(id);
         p.part.push_back(part);
@@ -102,7 +100,7 @@ void ModelBuilder::add_particles(const grammar::Block& block, const std::vector<
 }
 
 void ModelBuilder::on_card(const grammar::Block& block, const keywords::KeywordMatch& match, const keywords::CardSpec&,
-                           const grammar::CardLine& line, const std::vector<FieldValue>& values) {
+                           grammar::CardLinePtr line, const std::vector<FieldValue>& values) {
     // Generated layouts are checked, not read into the model, but the ids they name are followed.
     if (match.schema->generated) return links_.on_card(match, values);
     const std::string_view name = match.schema->name;
@@ -114,7 +112,7 @@ void ModelBuilder::on_card(const grammar::Block& block, const keywords::KeywordM
     }
     if (name == "*ELEMENT_SPH") {
         if (new_block) reserve_more(model_.particles, block.line_count);
-        return add_particles(block, values, line);
+        return add_particles(block, values, line.index());
     }
     // Hand-written schemas may mark ids too (*DEFINE_SPH_MESH_BOX IPID): followed like generated ones.
     for (const FieldValue& v : values)
@@ -418,7 +416,7 @@ Model build_model(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& o
     DeckSummary s = check_deck(
         deck, out,
         [&](const grammar::Block& b, const keywords::KeywordMatch& m, const keywords::CardSpec& c,
-            const grammar::CardLine& l, const std::vector<FieldValue>& v) { builder.on_card(b, m, c, l, v); },
+            grammar::CardLinePtr l, const std::vector<FieldValue>& v) { builder.on_card(b, m, c, l, v); },
         &builder.bulk_visitor());
     if (summary) *summary = s;
     Model model = builder.finish(out);

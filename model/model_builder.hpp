@@ -21,7 +21,7 @@ public:
 
     // The CardVisitor of check_deck.
     void on_card(const grammar::Block& block, const keywords::KeywordMatch& match, const keywords::CardSpec& card,
-                 const grammar::CardLine& line, const std::vector<FieldValue>& values);
+                 grammar::CardLinePtr line, const std::vector<FieldValue>& values);
 
     // Typed extraction; reports model-level findings (IDIM without a value) into `out`.
     Model finish(std::vector<diag::Diagnostic>& out);
@@ -81,8 +81,7 @@ private:
     };
 
     void add_node(const std::vector<FieldValue>& values);
-    void add_particles(const grammar::Block& block, const std::vector<FieldValue>& values,
-                       const grammar::CardLine& line);
+    void add_particles(const grammar::Block& block, const std::vector<FieldValue>& values, std::uint32_t line);
 
     const grammar::RawDeck& deck_;
     Model model_;

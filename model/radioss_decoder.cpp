@@ -201,8 +201,8 @@ private:
         split_arguments(block, prefix, b);
         const rad::FormatSpec& format = cards->format_for(engine ? rad::latest_version : version_);
         b.format = format.since;
-        const grammar::CardLine* line = deck_.begin_lines(block);
-        const grammar::CardLine* end = deck_.end_lines(block);
+        grammar::CardLinePtr line = deck_.begin_lines(block);
+        grammar::CardLinePtr end = deck_.end_lines(block);
         // A family's generic table read through a law's generated cards: the family says whether a
         // title follows (the CFG files of /MAT write the title in their export branches only).
         const bool titled = spec->fallback ? spec->title : cards->title;
@@ -224,7 +224,7 @@ private:
     // `table`: the keyword whose cards the lines are (b.spec, or the generated layout of a family
     // table's keyword); the builder sees the values only when they are b.spec's own.
     void walk_cards(const RadiossBlock& b, const rad::KeywordSpec& table, const rad::FormatSpec& format,
-                    const grammar::CardLine* line, const grammar::CardLine* end) {
+                    grammar::CardLinePtr line, grammar::CardLinePtr end) {
         const auto& cards = format.cards;
         RadiossCardSequence sequence(cards);
         const std::string newer = newer_format(table, format);
@@ -251,7 +251,7 @@ private:
             sequence.advance(next.index, values_);
             if (!b.engine) note_id_uses(table);
             if (to_builder)
-                builder_.card(b, next.index, static_cast<std::uint32_t>(line - deck_.lines.data()), values_);
+                builder_.card(b, next.index, line.index(), values_);
             else if (by_name && next.index < sequence.first_repeated())
                 builder_.named_card(values_);
             if (reading_) record(next.index < sequence.first_repeated());

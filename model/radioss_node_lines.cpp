@@ -27,14 +27,13 @@ std::map<long long, std::vector<grammar::Span>> radioss_node_lines(const grammar
         const grammar::FileId root = deck.sources.include_chain(b.span.file).front();
         if (rad::is_engine_file_name(deck.sources.file(root).display_name)) continue;
         const rad::CardSpec& card = spec->formats.front().cards.front();
-        for (const grammar::CardLine* l = deck.begin_lines(b); l != deck.end_lines(b); ++l) {
+        for (grammar::CardLinePtr l = deck.begin_lines(b); l != deck.end_lines(b); ++l) {
             std::string_view text = deck.text(*l);
             std::string_view first = grammar::is_free_format(text) ? text.substr(0, text.find(','))
                                                                    : text.substr(0, std::min(text.size(), width));
             grammar::IntegerValue id = grammar::parse_integer(first);
             if (id.status == grammar::NumberStatus::Ok && ids.count(id.value))
-                found[id.value].push_back(
-                    radioss_field_span(deck, static_cast<std::uint32_t>(l - deck.lines.data()), card, version, 0));
+                found[id.value].push_back(radioss_field_span(deck, l.index(), card, version, 0));
         }
     }
     return found;

@@ -95,8 +95,8 @@ void RadiossParameters::collect(const grammar::RawDeck& deck, int version, Radio
         const auto segments = rad::path_segments(b.keyword);  // PARAMETER, scope, type, id
         const std::string_view scope = segments.size() > 1 ? segments[1] : "";
         const std::string_view type = segments.size() > 2 ? segments[2] : "";
-        const grammar::CardLine* line = deck.begin_lines(b);
-        const grammar::CardLine* end = deck.end_lines(b);
+        grammar::CardLinePtr line = deck.begin_lines(b);
+        grammar::CardLinePtr end = deck.end_lines(b);
         if (line != end) ++line;  // the title line
         if (line == end) {
             report_parameter(out, "DK008", diag::Severity::Error, "/PARAMETER without its name and value card", b.span);

@@ -69,7 +69,7 @@ RadiossRunInput read_radioss_run_input(const grammar::RawDeck& deck) {
         const bool inivel = block.keyword.rfind("/INIVEL/", 0) == 0;
         if (!(run && engine[b]) && !(inivel && !engine[b])) continue;
         std::vector<std::string_view> data;
-        for (const grammar::CardLine* l = deck.begin_lines(block); l != deck.end_lines(block); ++l)
+        for (grammar::CardLinePtr l = deck.begin_lines(block); l != deck.end_lines(block); ++l)
             if (const std::string_view t = deck.text(*l); !comment_line(t)) data.push_back(t);
         if (inivel) {
             in.initial_velocities.push_back(read_inivel(block, data));

@@ -134,7 +134,7 @@ std::vector<diag::TextEdit> rewrite_block(const grammar::RawDeck& deck, const gr
                                           std::span<const grammar::FixedField> to_write) {
     std::vector<diag::TextEdit> edits;
     if (block.line_count > max_fix_lines) return edits;
-    for (const grammar::CardLine* l = deck.begin_lines(block); l != deck.end_lines(block); ++l) {
+    for (grammar::CardLinePtr l = deck.begin_lines(block); l != deck.end_lines(block); ++l) {
         const std::string_view text = deck.text(*l);
         if (!grammar::reads_aligned(text, written, card) || grammar::reads_aligned(text, read, card)) continue;
         if (auto rewritten = grammar::rewrite_fields(text, written, to_write, card))

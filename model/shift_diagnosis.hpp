@@ -17,7 +17,7 @@
 namespace sphdeck::model {
 
 struct SuspectLine {
-    const grammar::CardLine* line = nullptr;
+    grammar::CardLinePtr line = nullptr;
     const keywords::CardSpec* card = nullptr;
 };
 

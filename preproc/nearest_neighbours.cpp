@@ -241,9 +241,11 @@ constexpr NeighbourGrid::RowOffset block_rows[] = {{-1, 1, -1, -1}, {-1, 1, 0, -
 NearestNeighbours nearest_neighbours_grid(std::span<const double> x, std::span<const double> y,
                                           std::span<const double> z) {
     const std::size_t n = x.size();
-    NearestNeighbours out{std::vector<double>(n, 0.0), std::vector<std::uint32_t>(n, NearestNeighbours::none)};
-    if (n < 2) return out;
+    if (n < 2) return {std::vector<double>(n, 0.0), std::vector<std::uint32_t>(n, NearestNeighbours::none)};
     const NeighbourGrid g = nearest_neighbour_grid(x, y, z);
+    // The results after the grid: its binning's cell index of every point (4 bytes a point) is gone by
+    // then, and so no longer beside them at the preview's peak of memory (issue 40 item 2).
+    NearestNeighbours out{std::vector<double>(n, 0.0), std::vector<std::uint32_t>(n, NearestNeighbours::none)};
     // Each point's search is its own and writes only its own entry: contiguous runs of cells
     // go to the threads, and the numbers are those of one thread.
     const int threads = pass_threads(n);

@@ -54,7 +54,7 @@ Built build(const grammar::RawDeck& deck, bool parallel) {
     b.summary = model::check_deck(
         deck, b.diagnostics,
         [&](const grammar::Block& bl, const keywords::KeywordMatch& m, const keywords::CardSpec& c,
-            const grammar::CardLine& l, const std::vector<model::FieldValue>& v) { builder.on_card(bl, m, c, l, v); },
+            grammar::CardLinePtr l, const std::vector<model::FieldValue>& v) { builder.on_card(bl, m, c, l, v); },
         parallel ? &builder.bulk_visitor() : nullptr);
     b.model = builder.finish(b.diagnostics);
     return b;

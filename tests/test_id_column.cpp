@@ -31,7 +31,7 @@ Decoded decode(const std::string& text, bool parallel) {
     model::check_deck(
         d.deck, found,
         [&](const grammar::Block& bl, const keywords::KeywordMatch& m, const keywords::CardSpec& c,
-            const grammar::CardLine& l, const std::vector<model::FieldValue>& v) { builder.on_card(bl, m, c, l, v); },
+            grammar::CardLinePtr l, const std::vector<model::FieldValue>& v) { builder.on_card(bl, m, c, l, v); },
         parallel ? &builder.bulk_visitor() : nullptr);
     d.model = builder.finish(found);
     return d;

@@ -52,7 +52,7 @@ std::vector<std::pair<std::string, Span>> DeckReader::file_names(const Block& bl
     std::string name;
     Span span;
     bool continuing = false;
-    for (const CardLine* l = deck_.begin_lines(block); l != deck_.end_lines(block); ++l) {
+    for (CardLinePtr l = deck_.begin_lines(block); l != deck_.end_lines(block); ++l) {
         std::size_t lead = 0;
         std::string_view text = trim(deck_.text(*l), &lead);
         if (!continuing) {

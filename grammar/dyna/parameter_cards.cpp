@@ -148,9 +148,9 @@ void read_pairs(Context& c, const CardLine& line) {
 
 // PRMR in columns 1-10, the expression in 11-80; following lines with blank columns 1-10 continue it.
 void read_expressions(Context& c) {
-    const CardLine* begin = c.deck.begin_lines(c.block);
-    const CardLine* end = c.deck.end_lines(c.block);
-    for (const CardLine* l = begin; l != end;) {
+    CardLinePtr begin = c.deck.begin_lines(c.block);
+    CardLinePtr end = c.deck.end_lines(c.block);
+    for (CardLinePtr l = begin; l != end;) {
         std::string_view text = c.deck.text(*l);
         const std::size_t fixed_width = c.block.format == CardFormat::Long ? 20 : 10;
         // Free format: a comma in the name field ends the name there ("Rf_r, 2-f_f"), and the
@@ -160,7 +160,7 @@ void read_expressions(Context& c) {
         const std::size_t name_width = free_format ? comma : fixed_width;
         const std::size_t expression_start = free_format ? comma + 1 : fixed_width;
         std::string_view name_field = text.substr(0, std::min(text.size(), name_width));
-        const CardLine* first = l++;
+        CardLinePtr first = l++;
         if (is_blank(name_field)) continue;
         std::string expression(text.size() > expression_start ? text.substr(expression_start) : std::string_view{});
         while (l != end) {
@@ -299,7 +299,7 @@ void define_parameters(RawDeck& deck, const Block& block) {
     Context c{deck, block, k.find("_LOCAL") != std::string::npos};
     if (k == "*PARAMETER_DUPLICATION") return read_duplication(c);
     if (k.rfind("*PARAMETER_EXPRESSION", 0) == 0) return read_expressions(c);
-    for (const CardLine* l = deck.begin_lines(block); l != deck.end_lines(block); ++l) read_pairs(c, *l);
+    for (CardLinePtr l = deck.begin_lines(block); l != deck.end_lines(block); ++l) read_pairs(c, *l);
 }
 
 }  // namespace sphdeck::grammar::dyna

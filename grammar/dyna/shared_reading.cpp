@@ -25,8 +25,7 @@ FileReading DeckReader::reading_of(FileId file, std::size_t first_block, std::si
     FileReading reading;
     reading.text = deck_.sources.file(file).text;
     reading.physical_lines = physical_lines;
-    reading.lines.assign(deck_.lines.begin() + static_cast<std::ptrdiff_t>(first_line), deck_.lines.end());
-    for (CardLine& line : reading.lines) line.file = reading_file;
+    reading.lines.append(deck_.lines, first_line, deck_.lines.size(), CardLines::Move{0, 0, true, reading_file});
     reading.blocks.assign(deck_.blocks.begin() + static_cast<std::ptrdiff_t>(first_block), deck_.blocks.end());
     for (Block& block : reading.blocks) {
         block.first_line -= static_cast<std::uint32_t>(first_line);
@@ -44,7 +43,7 @@ void DeckReader::lay_in(FileId file, const FileReading& reading) {
     const auto first_line = static_cast<std::uint32_t>(deck_.lines.size());
     const std::uint32_t epoch = deck_.parameters.epoch();
     deck_.lines.reserve(deck_.lines.size() + reading.lines.size());
-    for (const CardLine& line : reading.lines) deck_.lines.push_back(CardLine{file, line.line, line.offset});
+    deck_.lines.append(reading.lines, 0, reading.lines.size(), CardLines::Move{0, 0, true, file});
     deck_.blocks.reserve(deck_.blocks.size() + reading.blocks.size());
     for (Block block : reading.blocks) {
         block.first_line += first_line;
