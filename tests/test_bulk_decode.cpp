@@ -8,6 +8,8 @@
 
 #include "grammar/read_deck.hpp"
 #include "model/model_builder.hpp"
+#include "same_model.hpp"
+#include "same_model.hpp"
 
 namespace test_bulk_decode_cpp {  // each test file's names stay its own in a unity batch
 
@@ -73,26 +75,10 @@ TEST_CASE("bulk decode: the parallel walk gives the model and findings of the se
     CHECK(serial.model.particles.size() == static_cast<std::size_t>(n - 1));  // 7..10 from one line, zz dropped
     CHECK(serial.summary.particles == static_cast<std::size_t>(n - 1 + 1));   // the skipped line still counts
 
-    const auto& a = serial.model;
     const auto& b = parallel.model;
-    CHECK(a.nodes.id == b.nodes.id);
-    CHECK(a.nodes.x == b.nodes.x);
-    CHECK(a.nodes.y == b.nodes.y);
-    CHECK(a.nodes.z == b.nodes.z);
-    CHECK(a.particles.node == b.particles.node);
-    CHECK(a.particles.part == b.particles.part);
-    CHECK(a.particles.mass == b.particles.mass);
-    CHECK(a.particles.volume == b.particles.volume);
-    CHECK(a.particles.line == b.particles.line);
+    test::check_same_bulk_columns(serial.model, b);
     CHECK(serial.summary.particles == parallel.summary.particles);
-
-    REQUIRE(serial.diagnostics.size() == parallel.diagnostics.size());
-    for (std::size_t i = 0; i < serial.diagnostics.size(); ++i) {
-        CHECK(serial.diagnostics[i].code == parallel.diagnostics[i].code);
-        CHECK(serial.diagnostics[i].message == parallel.diagnostics[i].message);
-        CHECK(serial.diagnostics[i].span.line == parallel.diagnostics[i].span.line);
-        CHECK(serial.diagnostics[i].span.column == parallel.diagnostics[i].span.column);
-    }
+    test::check_same_findings(serial.diagnostics, parallel.diagnostics);
     CHECK(serial.diagnostics.size() >= 3);  // the two DK003 on nodes and the one on particles at least
 
     // The NEND range expands in place, with the mass and line of its card.
@@ -208,25 +194,9 @@ TEST_CASE("bulk decode: lines the lean path must leave to the full decoder") {
     Built serial = build(deck, false);
     Built parallel = build(deck, true);
 
-    CHECK(serial.model.nodes.id == parallel.model.nodes.id);
-    CHECK(serial.model.nodes.x == parallel.model.nodes.x);
-    CHECK(serial.model.nodes.y == parallel.model.nodes.y);
-    CHECK(serial.model.nodes.z == parallel.model.nodes.z);
-    CHECK(serial.model.particles.node == parallel.model.particles.node);
-    CHECK(serial.model.particles.part == parallel.model.particles.part);
-    CHECK(serial.model.particles.mass == parallel.model.particles.mass);
-    CHECK(serial.model.particles.line == parallel.model.particles.line);
+    test::check_same_bulk_columns(serial.model, parallel.model);
     CHECK(serial.summary.particles == parallel.summary.particles);
-    REQUIRE(serial.diagnostics.size() == parallel.diagnostics.size());
-    for (std::size_t i = 0; i < serial.diagnostics.size(); ++i) {
-        CAPTURE(serial.diagnostics[i].message);
-        CHECK(serial.diagnostics[i].code == parallel.diagnostics[i].code);
-        CHECK(serial.diagnostics[i].message == parallel.diagnostics[i].message);
-        CHECK(serial.diagnostics[i].span.line == parallel.diagnostics[i].span.line);
-        CHECK(serial.diagnostics[i].span.column == parallel.diagnostics[i].span.column);
-        CHECK(serial.diagnostics[i].span.end_column == parallel.diagnostics[i].span.end_column);
-        CHECK(serial.diagnostics[i].notes.size() == parallel.diagnostics[i].notes.size());
-    }
+    test::check_same_findings(serial.diagnostics, parallel.diagnostics);
     // The odd lines do report: the comparison is not between two empty lists.
     std::set<std::string> codes;
     for (const auto& d : serial.diagnostics) codes.insert(d.code);

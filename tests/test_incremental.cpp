@@ -20,6 +20,7 @@
 #include "workspace_check.hpp"
 #include "lsp/uri.hpp"
 #include "lsp/workspace.hpp"
+#include "same_model.hpp"
 #include "test_support.hpp"
 
 namespace test_incremental_cpp {  // each test file's names stay its own in a unity batch
@@ -525,25 +526,13 @@ TEST_CASE("recheck: the bulk blocks' columns an edit left alone are moved out of
     options.rules.keep_preview = true;
     const auto same_as_full = [&](const engine::CheckResult& result) {
         const engine::CheckResult full = engine::check_deck(path.string(), documents, options);
-        CHECK(result.model.nodes.id == full.model.nodes.id);
-        CHECK(result.model.nodes.x == full.model.nodes.x);
-        CHECK(result.model.nodes.y == full.model.nodes.y);
-        CHECK(result.model.particles.node == full.model.particles.node);
-        CHECK(result.model.particles.part == full.model.particles.part);
-        CHECK(result.model.particles.mass == full.model.particles.mass);
-        CHECK(result.model.particles.volume == full.model.particles.volume);
-        CHECK(result.model.particles.line == full.model.particles.line);
+        test::check_same_bulk_columns(result.model, full.model);
         REQUIRE(result.deck.lines.size() == full.deck.lines.size());
         for (std::size_t i = 0; i < full.deck.lines.size(); ++i) {
             const grammar::CardLine &a = result.deck.lines[i], &b = full.deck.lines[i];
             if (a.file != b.file || a.line != b.line || a.offset != b.offset) FAIL_CHECK("card line " << i);
         }
-        REQUIRE(result.diagnostics.size() == full.diagnostics.size());
-        for (std::size_t i = 0; i < full.diagnostics.size(); ++i) {
-            CHECK(result.diagnostics[i].code == full.diagnostics[i].code);
-            CHECK(result.diagnostics[i].message == full.diagnostics[i].message);
-            CHECK(result.diagnostics[i].span.line == full.diagnostics[i].span.line);
-        }
+        test::check_same_findings(result.diagnostics, full.diagnostics);
     };
     engine::CheckResult first = engine::check_deck(path.string(), documents, options);
     REQUIRE(first.bulk_blocks.size() == 2);
