@@ -172,20 +172,25 @@ void format_repeated(const FormatScope& scope, grammar::CardLinePtr from, gramma
         std::string buffer;
         const grammar::SourceText& source = scope.deck.sources.file(from->file).text;
         std::size_t released = begin;
+        std::size_t released_offset = begin < end ? from[begin].offset : 0;
         const std::string_view file = source.view();
-        for (std::size_t i = begin; i < end; ++i) {
+        // One walk of the lines, each read once (a CardLinePtr jumped to line i looks its stretch up).
+        grammar::CardLinePtr at = from + static_cast<std::ptrdiff_t>(begin);
+        for (std::size_t i = begin; i < end; ++i, ++at) {
+            const grammar::CardLine card = *at;
             // Most lines are laid out already: one pass over the text says so; the others are read as usual.
-            std::optional<std::size_t> length = laid_out_length(file.substr(from[i].offset), cells.slots, cells.kinds);
+            std::optional<std::size_t> length = laid_out_length(file.substr(card.offset), cells.slots, cells.kinds);
             if (!length) {
-                const grammar::ScannedLine line = grammar::scan_line(scope.deck, from[i]);
-                format_card_line(scope, from[i], line.text, cells, columns.free_allowed, buffer, parts[t],
+                const grammar::ScannedLine line = grammar::scan_line(scope.deck, card);
+                format_card_line(scope, card, line.text, cells, columns.free_allowed, buffer, parts[t],
                                  !line.comma_or_tab);
                 length = line.text.size();
             }
             // As the reader does once the model is built: mapped pages read go back (peak memory).
             if (i + 1 - released == 16384 || i + 1 == end) {
-                source.release(from[released].offset, from[i].offset + *length);
+                source.release(released_offset, card.offset + *length);
                 released = i + 1;
+                if (i + 1 < end) released_offset = (at + 1)->offset;
                 if (scope.abandoned()) break;  // the findings are needed: this pass's result is not used
             }
         }
