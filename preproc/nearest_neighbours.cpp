@@ -502,7 +502,6 @@ NeighbourCounts count_neighbours(std::span<const double> x, std::span<const doub
                                  const GroupedRadii& radii, double pair_budget) {
     const std::size_t n = x.size();
     NeighbourCounts out;
-    out.count.assign(n, 0);
     if (n == 0) return out;
     const auto support_of = [&](std::size_t i) { return radii.support[radii.group[i]]; };
     const auto tolerance_of = [&](std::size_t i) { return radii.tolerance[radii.group[i]]; };
@@ -521,7 +520,7 @@ NeighbourCounts count_neighbours(std::span<const double> x, std::span<const doub
     }
     double cell = std::max(largest_support, largest_tolerance) / count_reach;
     if (cell <= 0) cell = estimated_spacing(x, y, z);
-    const NeighbourGrid g(x, y, z, cell);
+    NeighbourGrid g(x, y, z, cell);
     const auto& order = g.order();
     // The distance evaluations a count takes: points per cell times points in its half-block.
     double work = 0;
@@ -553,9 +552,6 @@ NeighbourCounts count_neighbours(std::span<const double> x, std::span<const doub
         count_symmetric<false>(g, s, largest_tolerance * largest_tolerance, largest_reach, count, close_points);
     }
     s = {};
-#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
-    for (std::size_t k = 0; k < n; ++k) out.count[order[k]] = static_cast<std::uint32_t>(count[k]);
-    count = {};
     // Coincident pairs: the few points with a pair inside the largest tolerance, checked exactly.
     for (std::uint32_t k : close_points) {
         const std::uint32_t i = order[k];
@@ -572,6 +568,12 @@ NeighbourCounts count_neighbours(std::span<const double> x, std::span<const doub
     }
     std::sort(out.coincident.begin(), out.coincident.end());
     out.coincident.erase(std::unique(out.coincident.begin(), out.coincident.end()), out.coincident.end());
+    // The counts in input order, made once the grid's coordinates are gone: not beside them and the
+    // counts in grid order at the preview's peak of memory (4 bytes a point, issue 40).
+    const std::vector<std::uint32_t> input_of = std::move(g).release_order();
+    out.count.resize(n);
+#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
+    for (std::size_t k = 0; k < n; ++k) out.count[input_of[k]] = static_cast<std::uint32_t>(count[k]);
     return out;
 }
 

@@ -71,7 +71,8 @@ NeighbourGrid::NeighbourGrid(std::span<const double> x, std::span<const double> 
         }
         dense_cells *= n_[a];
     }
-    hashed_ = dense_cells > 2.0 * static_cast<double>(n) + 64.0;
+    // Dense cell indices are 4 bytes (bin_dense's cell_id, occupied_cells_): more cells than that, hashed.
+    hashed_ = dense_cells > 2.0 * static_cast<double>(n) + 64.0 || dense_cells >= 4294967295.0;
     if (hashed_)
         bin_hashed(x, y, z);
     else
@@ -94,13 +95,13 @@ void NeighbourGrid::bin_dense(std::span<const double> x, std::span<const double>
     if (threads == 1) {
         for (std::size_t i = 0; i < n; ++i) ++start_[cell_id[i] + 1];
         for (std::size_t c = 0; c < cells; ++c) {
-            if (start_[c + 1]) occupied_.push_back(c);
+            if (start_[c + 1]) occupied_cells_.push_back(static_cast<std::uint32_t>(c));
             start_[c + 1] += start_[c];
         }
         return gather(x, y, z, cell_id);
     }
     // Counts and running sums per run of cells, then each run's offset.
-    std::vector<std::vector<std::uint64_t>> occupied(static_cast<std::size_t>(threads));
+    std::vector<std::vector<std::uint32_t>> occupied(static_cast<std::size_t>(threads));
     std::vector<std::uint32_t> run_total(static_cast<std::size_t>(threads) + 1, 0);
 #pragma omp parallel for num_threads(threads) schedule(static, 1)
     for (int t = 0; t < threads; ++t) {
@@ -108,7 +109,7 @@ void NeighbourGrid::bin_dense(std::span<const double> x, std::span<const double>
         for (std::size_t i = 0; i < n; ++i)
             if (cell_id[i] >= c0 && cell_id[i] < c1) ++start_[cell_id[i] + 1];
         for (std::size_t c = c0; c < c1; ++c) {
-            if (start_[c + 1]) occupied[static_cast<std::size_t>(t)].push_back(c);
+            if (start_[c + 1]) occupied[static_cast<std::size_t>(t)].push_back(static_cast<std::uint32_t>(c));
             if (c > c0) start_[c + 1] += start_[c];
         }
         run_total[static_cast<std::size_t>(t) + 1] = c1 > c0 ? start_[c1] : 0;
@@ -122,7 +123,7 @@ void NeighbourGrid::bin_dense(std::span<const double> x, std::span<const double>
         const std::uint32_t offset = run_total[static_cast<std::size_t>(t)];
         for (std::size_t c = c0 + 1; c <= c1; ++c) start_[c] += offset;
     }
-    for (auto& o : occupied) occupied_.insert(occupied_.end(), o.begin(), o.end());
+    for (auto& o : occupied) occupied_cells_.insert(occupied_cells_.end(), o.begin(), o.end());
     gather(x, y, z, cell_id);
 }
 
@@ -133,26 +134,26 @@ void NeighbourGrid::bin_hashed(std::span<const double> x, std::span<const double
         const Cell c = cell_of(x[i], y[i], z[i]);
         keys[i] = key(c[0], c[1], c[2]);
     }
-    occupied_ = keys;
-    std::sort(occupied_.begin(), occupied_.end());
-    occupied_.erase(std::unique(occupied_.begin(), occupied_.end()), occupied_.end());
+    occupied_keys_ = keys;
+    std::sort(occupied_keys_.begin(), occupied_keys_.end());
+    occupied_keys_.erase(std::unique(occupied_keys_.begin(), occupied_keys_.end()), occupied_keys_.end());
     std::size_t capacity = 16;
-    while (capacity < 2 * occupied_.size()) capacity *= 2;
+    while (capacity < 2 * occupied_keys_.size()) capacity *= 2;
     table_keys_.assign(capacity, 0);
     table_ids_.assign(capacity, none);
-    for (std::size_t o = 0; o < occupied_.size(); ++o) {
-        std::size_t slot = (occupied_[o] * 0x9E3779B97F4A7C15ull) >> 20 & (capacity - 1);
+    for (std::size_t o = 0; o < occupied_keys_.size(); ++o) {
+        std::size_t slot = (occupied_keys_[o] * 0x9E3779B97F4A7C15ull) >> 20 & (capacity - 1);
         while (table_keys_[slot]) slot = (slot + 1) & (capacity - 1);
-        table_keys_[slot] = occupied_[o] + 1;
+        table_keys_[slot] = occupied_keys_[o] + 1;
         table_ids_[slot] = static_cast<std::uint32_t>(o);
     }
-    start_.assign(occupied_.size() + 1, 0);
+    start_.assign(occupied_keys_.size() + 1, 0);
     std::vector<std::uint32_t> cell_id(n);
     for (std::size_t i = 0; i < n; ++i) {
         cell_id[i] = find(keys[i]);
         ++start_[cell_id[i] + 1];
     }
-    for (std::size_t o = 0; o < occupied_.size(); ++o) start_[o + 1] += start_[o];
+    for (std::size_t o = 0; o < occupied_keys_.size(); ++o) start_[o + 1] += start_[o];
     gather(x, y, z, cell_id);
 }
 

@@ -39,16 +39,24 @@ public:
 
     // Sorted (cell-order) position k holds the input point order()[k].
     const std::vector<std::uint32_t>& order() const { return order_; }
+    // The order taken out of the grid, which is left empty (no query after it): its coordinates freed
+    // before the caller's next array.
+    std::vector<std::uint32_t> release_order() && {
+        std::vector<std::uint32_t> order = std::move(order_);
+        *this = NeighbourGrid();
+        return order;
+    }
     // Coordinates in cell order.
     const std::vector<double>& x() const { return x_; }
     const std::vector<double>& y() const { return y_; }
     const std::vector<double>& z() const { return z_; }
 
     // The occupied cells, in cell order: their coordinates and sorted ranges.
-    std::size_t occupied() const { return occupied_.size(); }
-    Cell occupied_cell(std::size_t o) const { return decode(occupied_[o]); }
+    std::size_t occupied() const { return hashed_ ? occupied_keys_.size() : occupied_cells_.size(); }
+    Cell occupied_cell(std::size_t o) const { return decode(occupied_key(o)); }
     Range occupied_range(std::size_t o) const {
-        return hashed_ ? Range{start_[o], start_[o + 1]} : Range{start_[occupied_[o]], start_[occupied_[o] + 1]};
+        return hashed_ ? Range{start_[o], start_[o + 1]}
+                       : Range{start_[occupied_cells_[o]], start_[occupied_cells_[o] + 1]};
     }
 
     // Cell coordinates of a point: floor((p - origin) / cell) clamped into the grid, NaN to 0.
@@ -105,7 +113,7 @@ public:
         Cell c{};
         for (std::size_t o = begin; o < end_cell; ++o) {
             // The next cell along x when the key is one more (no division to decode it).
-            if (o > begin && occupied_[o] == occupied_[o - 1] + 1 && c[0] + 1 < n_[0])
+            if (o > begin && occupied_key(o) == occupied_key(o - 1) + 1 && c[0] + 1 < n_[0])
                 ++c[0];
             else
                 c = occupied_cell(o);
@@ -124,9 +132,9 @@ public:
                 const std::uint64_t first = key(static_cast<std::uint32_t>(x0), yy, zz);
                 const std::uint64_t last = key(static_cast<std::uint32_t>(x1), yy, zz);
                 std::size_t& at = cursor[r];
-                while (at < count && occupied_[at] < first) ++at;
+                while (at < count && occupied_keys_[at] < first) ++at;
                 std::size_t end = at;
-                while (end < count && occupied_[end] <= last) ++end;
+                while (end < count && occupied_keys_[end] <= last) ++end;
                 ranges[r] = {start_[at], start_[end]};
             }
             f(o, c, ranges);
@@ -194,6 +202,8 @@ private:
     std::uint64_t key(std::uint32_t ix, std::uint32_t iy, std::uint32_t iz) const {
         return hashed_ ? (std::uint64_t{iz} << 42) | (std::uint64_t{iy} << 21) | ix : index(ix, iy, iz);
     }
+    // An occupied cell's key: its cell index (dense) or its hashed key.
+    std::uint64_t occupied_key(std::size_t o) const { return hashed_ ? occupied_keys_[o] : occupied_cells_[o]; }
     Cell decode(std::uint64_t k) const;
     std::uint32_t find(std::uint64_t k) const;  // occupied id of a hashed cell, or `none`
     Range hashed_row_range(std::uint32_t x0, std::uint32_t x1, std::uint32_t iy, std::uint32_t iz) const;
@@ -206,9 +216,13 @@ private:
     std::array<double, 3> origin_{};
     Cell n_{1, 1, 1};
     bool hashed_ = false;
-    std::vector<std::uint32_t> start_;       // dense: per cell + 1; hashed: per occupied cell + 1
-    std::vector<std::uint64_t> occupied_;    // dense: cell index; hashed: key; in cell order
-    std::vector<std::uint64_t> table_keys_;  // hashed: open addressing, key + 1 (0 = empty)
+    std::vector<std::uint32_t> start_;  // dense: per cell + 1; hashed: per occupied cell + 1
+    // The occupied cells in cell order: a dense grid's cell indices fit in 4 bytes (it has fewer than 2^32
+    // cells), a hashed grid's keys take 8. One point per cell in a nearest-neighbour search: 4 bytes a point
+    // less at the preview's peak of memory (issue 40).
+    std::vector<std::uint32_t> occupied_cells_;  // dense
+    std::vector<std::uint64_t> occupied_keys_;   // hashed
+    std::vector<std::uint64_t> table_keys_;      // hashed: open addressing, key + 1 (0 = empty)
     std::vector<std::uint32_t> table_ids_;
     std::vector<std::uint32_t> order_;
     std::vector<double> x_, y_, z_;
