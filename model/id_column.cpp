@@ -22,6 +22,7 @@ long long IdColumn::at(std::size_t i) const {
 }
 
 void IdColumn::push_back(long long id) {
+    write_out();
     if (full_) return wide_ids_.push_back(id);
     if (fits(id)) return narrow_.push_back(static_cast<std::int32_t>(id));
     aside_.emplace_back(narrow_.size(), id);
@@ -30,6 +31,7 @@ void IdColumn::push_back(long long id) {
 }
 
 void IdColumn::set(std::size_t i, long long id) {
+    write_out();
     if (full_) return void(wide_ids_[i] = id);
     auto it =
         std::lower_bound(aside_.begin(), aside_.end(), i, [](const Aside& a, std::size_t at) { return a.first < at; });
@@ -48,6 +50,7 @@ void IdColumn::set(std::size_t i, long long id) {
 }
 
 void IdColumn::resize(std::size_t n) {
+    write_out();
     if (full_) return wide_ids_.resize(n);
     if (n < narrow_.size()) {
         auto it = std::lower_bound(aside_.begin(), aside_.end(), n,
@@ -58,9 +61,15 @@ void IdColumn::resize(std::size_t n) {
 }
 
 void IdColumn::append(const IdColumn& from, std::size_t first, std::size_t count) {
-    if (!full_ && !from.full_ && from.aside_.empty()) {
+    write_out();
+    if (!full_ && from.plain_narrow()) {
         const auto begin = from.narrow_.begin() + static_cast<std::ptrdiff_t>(first);
         narrow_.insert(narrow_.end(), begin, begin + static_cast<std::ptrdiff_t>(count));
+        return;
+    }
+    if (!full_ && from.sequence_) {  // a sequence's entries all fit in 4 bytes
+        narrow_.reserve(narrow_.size() + count);
+        for (std::size_t i = first; i < first + count; ++i) narrow_.push_back(static_cast<std::int32_t>(from[i]));
         return;
     }
     reserve(size() + count);
@@ -68,9 +77,14 @@ void IdColumn::append(const IdColumn& from, std::size_t first, std::size_t count
 }
 
 void IdColumn::copy_from(const IdColumn& from, std::size_t first, std::size_t count, std::size_t to) {
-    if (!full_ && !from.full_ && from.aside_.empty() && aside_.empty()) {
+    write_out();
+    if (plain_narrow() && from.plain_narrow()) {
         const auto begin = from.narrow_.begin() + static_cast<std::ptrdiff_t>(first);
         std::copy(begin, begin + static_cast<std::ptrdiff_t>(count), narrow_.begin() + static_cast<std::ptrdiff_t>(to));
+        return;
+    }
+    if (plain_narrow() && from.sequence_) {
+        for (std::size_t i = 0; i < count; ++i) narrow_[to + i] = static_cast<std::int32_t>(from[first + i]);
         return;
     }
     for (std::size_t i = 0; i < count; ++i) set(to + i, from[first + i]);
@@ -94,17 +108,41 @@ IdColumn::const_iterator IdColumn::erase(const_iterator at) {
     return {this, i};
 }
 
+bool IdColumn::compact() {
+    // 64 KiB of entries at least: below that the pages freed are few, and small decks (an editor's) are
+    // left as they were.
+    constexpr std::size_t least = 16384;
+    if (sequence_) return true;
+    if (!plain_narrow() || narrow_.size() < least) return false;
+    const long long first = narrow_[0], step = static_cast<long long>(narrow_[1]) - first;
+    for (std::size_t i = 2; i < narrow_.size(); ++i)
+        if (narrow_[i] != first + step * static_cast<long long>(i)) return false;
+    sequence_size_ = narrow_.size(), first_ = first, step_ = step, sequence_ = true;
+    std::vector<std::int32_t>().swap(narrow_);  // given back (`narrow_ = {}` would keep its capacity)
+    return true;
+}
+
+void IdColumn::write_out_sequence() {
+    // Every entry fits in 4 bytes: the sequence was made from narrow entries (and a prefix of it stays one).
+    std::vector<std::int32_t> entries(sequence_size_);
+    for (std::size_t i = 0; i < sequence_size_; ++i)
+        entries[i] = static_cast<std::int32_t>(first_ + step_ * static_cast<long long>(i));
+    sequence_ = false;
+    narrow_ = std::move(entries);
+}
+
 void IdColumn::widen_if_many() {
     if (aside_.size() <= aside_allowance(narrow_.size())) return;
     std::vector<long long> all(begin(), end());
     wide_ids_ = std::move(all);
     full_ = true;
-    narrow_ = {}, aside_ = {};
+    std::vector<std::int32_t>().swap(narrow_), std::vector<Aside>().swap(aside_);
 }
 
 bool operator==(const IdColumn& a, const IdColumn& b) {
     if (a.size() != b.size()) return false;
-    if (!a.full_ && !b.full_ && a.aside_ == b.aside_) return a.narrow_ == b.narrow_;
+    if (a.sequence_ && b.sequence_) return a.first_ == b.first_ && (a.step_ == b.step_ || a.size() == 1);
+    if (!a.sequence_ && !b.sequence_ && !a.full_ && !b.full_ && a.aside_ == b.aside_) return a.narrow_ == b.narrow_;
     for (std::size_t i = 0; i < a.size(); ++i)
         if (a[i] != b[i]) return false;
     return true;
@@ -112,7 +150,7 @@ bool operator==(const IdColumn& a, const IdColumn& b) {
 
 std::size_t first_difference(const IdColumn& a, const IdColumn& b, std::size_t n) {
     std::size_t i = 0;
-    if (!a.full_ && !b.full_ && a.aside_.empty() && b.aside_.empty()) {
+    if (a.plain_narrow() && b.plain_narrow()) {
         constexpr std::size_t block = 1024;
         const std::int32_t *x = a.narrow_.data(), *y = b.narrow_.data();
         while (i + block <= n && std::memcmp(x + i, y + i, block * sizeof(std::int32_t)) == 0) i += block;
@@ -123,7 +161,7 @@ std::size_t first_difference(const IdColumn& a, const IdColumn& b, std::size_t n
 
 std::size_t common_tail(const IdColumn& a, std::size_t a_end, const IdColumn& b, std::size_t b_end, std::size_t n) {
     std::size_t k = 0;
-    if (!a.full_ && !b.full_ && a.aside_.empty() && b.aside_.empty()) {
+    if (a.plain_narrow() && b.plain_narrow()) {
         constexpr std::size_t block = 1024;
         const std::int32_t *x = a.narrow_.data(), *y = b.narrow_.data();
         while (k + block <= n &&

@@ -2,8 +2,10 @@
 // the ids fit, as nearly every deck's do: a deck of 1e7 particles keeps 3e7 of them (issue 40 item 2).
 // An id that does not fit (10-digit I10 ids, labels read as numbers) is kept aside, sorted by
 // position; a column with many such ids holds all of them in 8 bytes instead, so no deck pays more
-// than a std::vector<long long> would. Read like one (index, iterate, compare); written through
-// push_back, set and resize.
+// than a std::vector<long long> would. A column that is first + step * i (node ids 1..n, the particles'
+// nodes 1..n, one part for every particle: what preprocessors write) can be kept as those two numbers
+// (compact(): no bytes an entry, issue 40), and is written out again by the first change. Read like a
+// std::vector<long long> (index, iterate, compare); written through push_back, set and resize.
 #pragma once
 
 #include <algorithm>
@@ -64,9 +66,10 @@ public:
         for (; first != last; ++first) push_back(*first);
     }
 
-    std::size_t size() const { return full_ ? wide_ids_.size() : narrow_.size(); }
+    std::size_t size() const { return sequence_ ? sequence_size_ : full_ ? wide_ids_.size() : narrow_.size(); }
     bool empty() const { return size() == 0; }
     long long operator[](std::size_t i) const {
+        if (sequence_) return first_ + step_ * static_cast<long long>(i);
         if (full_) return wide_ids_[i];
         const std::int32_t v = narrow_[i];
         return v != aside_mark ? v : aside(i);
@@ -84,15 +87,21 @@ public:
     // The parallel decoding's write: `id` stored at `i` when it fits in 4 bytes (true), else false and
     // the caller hands it to set() afterwards, on one thread. Distinct `i` on several threads at once.
     bool set_narrow(std::size_t i, long long id) {
+        if (sequence_) return false;  // written out by set(), on one thread
         if (full_) return wide_ids_[i] = id, true;
         if (!fits(id) || narrow_[i] == aside_mark) return false;
         narrow_[i] = static_cast<std::int32_t>(id);
         return true;
     }
     void resize(std::size_t n);  // new entries are 0
-    void reserve(std::size_t n) { full_ ? wide_ids_.reserve(n) : narrow_.reserve(n); }
-    std::size_t capacity() const { return full_ ? wide_ids_.capacity() : narrow_.capacity(); }
-    void clear() { narrow_.clear(), aside_.clear(), wide_ids_.clear(), full_ = false; }
+    void reserve(std::size_t n) {
+        write_out();
+        full_ ? wide_ids_.reserve(n) : narrow_.reserve(n);
+    }
+    std::size_t capacity() const {
+        return sequence_ ? sequence_size_ : full_ ? wide_ids_.capacity() : narrow_.capacity();
+    }
+    void clear() { narrow_.clear(), aside_.clear(), wide_ids_.clear(), full_ = false, sequence_ = false; }
     void assign(std::size_t n, long long id) {
         clear();
         for (std::size_t i = 0; i < n; ++i) push_back(id);
@@ -105,12 +114,22 @@ public:
     const_iterator insert(const_iterator at, long long id);
     const_iterator erase(const_iterator at);
 
-    // Bytes held (capacity aside): 4 an entry while narrow.
+    // Keeps the column as first + step * i when it is one and long enough for that to free whole pages
+    // (true then): its entries are given back. Any later change writes them out again.
+    bool compact();
+    bool sequence() const { return sequence_; }
+
+    // Bytes held (capacity aside): 4 an entry while narrow, none as a sequence.
     std::size_t bytes() const {
         return narrow_.size() * sizeof(std::int32_t) + aside_.size() * sizeof(Aside) +
                wide_ids_.size() * sizeof(long long);
     }
-    bool narrow() const { return !full_; }
+    // Heap bytes held, capacities included: what compact() gives back.
+    std::size_t heap_bytes() const {
+        return narrow_.capacity() * sizeof(std::int32_t) + aside_.capacity() * sizeof(Aside) +
+               wide_ids_.capacity() * sizeof(long long);
+    }
+    bool narrow() const { return !full_; }  // 4 bytes an entry at most (a sequence is narrow)
 
     friend bool operator==(const IdColumn& a, const IdColumn& b);
     friend bool operator==(const IdColumn& a, const std::vector<long long>& b) {
@@ -128,11 +147,22 @@ private:
     static bool fits(long long id) { return id > aside_mark && id <= std::numeric_limits<std::int32_t>::max(); }
     [[gnu::cold, gnu::noinline]] long long aside(std::size_t i) const;  // out of line: operator[] stays small
     void widen_if_many();
+    // A sequence's entries written out as narrow ones, before any change.
+    void write_out() {
+        if (sequence_) write_out_sequence();
+    }
+    [[gnu::cold, gnu::noinline]] void write_out_sequence();
+    // Whether the entries may be compared as narrow_ arrays (no sequence, no aside, not full).
+    bool plain_narrow() const { return !sequence_ && !full_ && aside_.empty(); }
 
     std::vector<std::int32_t> narrow_;  // the ids, or aside_mark where the id is in aside_
     std::vector<Aside> aside_;
     std::vector<long long> wide_ids_;  // every id, once the column is full_
     bool full_ = false;
+    // A sequence: entry i is first_ + step_ * i, and narrow_, aside_ and wide_ids_ are empty.
+    bool sequence_ = false;
+    long long first_ = 0, step_ = 0;
+    std::size_t sequence_size_ = 0;
 };
 
 }  // namespace sphdeck::model

@@ -17,6 +17,10 @@ bool KeywordRecord::has_option(std::string_view suffix) const {
     return false;
 }
 
+void compact_bulk_ids(Model& model) {
+    model.nodes.id.compact(), model.particles.node.compact(), model.particles.part.compact();
+}
+
 Id normalise_id(std::string_view text) {
     while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
     while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r')) text.remove_suffix(1);

@@ -185,4 +185,9 @@ struct Model {
 // "0001" → "1"; labels stay as written (trimmed).
 Id normalise_id(std::string_view text);
 
+// The builders' last step: node ids, particle nodes and parts that run first + step * i kept as those two
+// numbers (IdColumn::compact), 12 bytes a particle with its node less through the rest of a check, whose
+// peak of memory is the geometry preview's (issue 40).
+void compact_bulk_ids(Model& model);
+
 }  // namespace sphdeck::model

@@ -395,6 +395,7 @@ void ModelBuilder::Bulk::end_particles() {
 Model ModelBuilder::finish(std::vector<diag::Diagnostic>& out) {
     model_.id_references = links_.take();
     extract_typed(deck_, model_, out);
+    compact_bulk_ids(model_);
     return std::move(model_);
 }
 

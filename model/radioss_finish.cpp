@@ -179,6 +179,7 @@ Model RadiossBuilder::finish() {
     resolve_links();
     collect_surfaces();
     model_.radioss = std::move(facts_);
+    compact_bulk_ids(model_);
     return std::move(model_);
 }
 

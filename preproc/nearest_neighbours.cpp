@@ -551,7 +551,7 @@ NeighbourCounts count_neighbours(std::span<const double> x, std::span<const doub
     } else {
         count_symmetric<false>(g, s, largest_tolerance * largest_tolerance, largest_reach, count, close_points);
     }
-    s = {};
+    std::vector<double>().swap(s);  // given back (`s = {}` would keep its capacity)
     // Coincident pairs: the few points with a pair inside the largest tolerance, checked exactly.
     for (std::uint32_t k : close_points) {
         const std::uint32_t i = order[k];

@@ -104,6 +104,87 @@ TEST_CASE("id column: copies, inserts and the common runs the preview's follow-u
     CHECK(std::find(c.begin(), c.end(), 4) - c.begin() == 3);
 }
 
+TEST_CASE("id column: a column that runs first + step * i kept as two numbers reads and writes as before") {
+    const std::size_t n = 20000;  // past compact()'s least size
+    model::IdColumn ids, parts;
+    for (std::size_t i = 0; i < n; ++i) ids.push_back(7 + 3 * static_cast<long long>(i)), parts.push_back(4);
+    const std::vector<long long> written = values_of(ids);
+    REQUIRE(ids.compact());
+    REQUIRE(parts.compact());
+    CHECK(ids.sequence());
+    CHECK(ids.heap_bytes() == 0);  // the entries were given back, not only emptied
+    CHECK(ids.bytes() == 0);
+    CHECK(ids.size() == n);
+    CHECK(values_of(ids) == written);
+    CHECK(ids[n - 1] == 7 + 3 * static_cast<long long>(n - 1));
+    CHECK(parts[n - 1] == 4);
+    CHECK(*std::max_element(ids.begin(), ids.end()) == ids.back());
+
+    // Compared with one of the same entries written out, and with another sequence.
+    model::IdColumn same;
+    for (long long v : written) same.push_back(v);
+    CHECK(ids == same);
+    CHECK(same == ids);
+    CHECK(first_difference(ids, same, n) == n);
+    CHECK(common_tail(ids, n, same, n, n) == n);
+    model::IdColumn other = same;
+    REQUIRE(other.compact());
+    CHECK(other == ids);
+    CHECK_FALSE(parts == ids);
+    same.set(n - 2, -1);
+    CHECK_FALSE(ids == same);
+    CHECK(first_difference(ids, same, n) == n - 2);
+    CHECK(common_tail(ids, n, same, n, n) == 1);
+
+    // The parallel decoding's write goes to set() on a sequence; any change writes the entries out.
+    CHECK_FALSE(ids.set_narrow(5, 1));
+    model::IdColumn changed = ids;
+    changed.set(5, 1);
+    CHECK_FALSE(changed.sequence());
+    CHECK(changed[5] == 1);
+    CHECK(changed[6] == written[6]);
+    CHECK(changed.size() == n);
+    model::IdColumn longer = ids;
+    longer.push_back(6'000'000'000LL);
+    CHECK(longer.size() == n + 1);
+    CHECK(longer[n] == 6'000'000'000LL);
+    CHECK(longer[n - 1] == written[n - 1]);
+    model::IdColumn shorter = ids;
+    shorter.resize(3);
+    CHECK(values_of(shorter) == std::vector<long long>{7, 10, 13});
+
+    // Copied from: appended and laid over entries of a written-out column.
+    model::IdColumn appended{1, 2};
+    appended.append(ids, 10, 3);
+    CHECK(values_of(appended) == std::vector<long long>{1, 2, 37, 40, 43});
+    appended.copy_from(parts, 0, 2, 0);
+    CHECK(values_of(appended) == std::vector<long long>{4, 4, 37, 40, 43});
+
+    // Not a sequence, or too short to be worth it: left as it is.
+    CHECK_FALSE(same.compact());
+    model::IdColumn small{1, 2, 3};
+    CHECK_FALSE(small.compact());
+    CHECK(small.heap_bytes() > 0);
+}
+
+TEST_CASE("id column: a decoded deck's consecutive ids kept as sequences read back alike") {
+    const int n = 17000;
+    std::string text = "*KEYWORD\n*NODE\n";
+    for (int i = 0; i < n; ++i) text += fmt::format("{:8d}{:16.6f}{:16.6f}{:16.6f}\n", i + 1, 0.001 * i, 0.0, 0.5);
+    text += "*ELEMENT_SPH\n";
+    for (int i = 0; i < n; ++i) text += fmt::format("{:8d}{:8d}{:16.6f}\n", i + 1, 2, 1.0);
+    text += "*END\n";
+    const Decoded serial = decode(text, false), parallel = decode(text, true);
+    for (const Decoded* d : {&serial, &parallel}) {
+        CHECK(d->model.nodes.id.sequence());
+        CHECK(d->model.particles.node.sequence());
+        CHECK(d->model.particles.part.sequence());
+        CHECK(d->model.nodes.id[n - 1] == n);
+        CHECK(d->model.particles.node[123] == 124);
+        CHECK(d->model.particles.part[n - 1] == 2);
+    }
+}
+
 TEST_CASE("particle lines: runs read back each particle's line") {
     model::ParticleLines l;
     const std::vector<std::uint32_t> lines = {5, 6, 7, 7, 7, 7, 8, 20, 21, 3, 3};

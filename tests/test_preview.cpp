@@ -131,6 +131,13 @@ TEST_CASE("preview: the grid sorts every point into its cell, in cell order, den
             }
             CHECK(found == expected);
         }
+        // The order taken out (the neighbour counts' last step): the same, and the grid left empty.
+        preproc::NeighbourGrid taken = g;
+        const std::vector<std::uint32_t> order = std::move(taken).release_order();
+        CHECK(order == g.order());
+        CHECK(taken.size() == 0);
+        CHECK(taken.x().empty());
+        CHECK(taken.occupied() == 0);
     }
 }
 
