@@ -307,7 +307,7 @@ TEST_CASE("deck splice: an edit's lines read again and spliced in equal a full r
                before[before.size() - 1 - suffix] == text[text.size() - 1 - suffix])
             ++suffix;
         const grammar::TextRevision told{before.data(), before.size(), prefix - prefix * (edit % 3) / 3,
-                                         suffix - suffix * (edit % 4) / 4};
+                                         suffix - suffix * (edit % 4) / 4, nullptr};
         auto splice = grammar::splice_edit(previous, grammar::SourceText(text), edit % 2 ? &told : nullptr);
         if (splice) {
             ++spliced;
