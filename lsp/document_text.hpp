@@ -32,7 +32,7 @@ class DocumentText {
 public:
     // Views `text` (shared, never copied) until a change touches it.
     explicit DocumentText(std::shared_ptr<const std::string> text);
-    // The same for a text only readers share: once none reads it, the joins take turns patching it.
+    // The same for a text this document owns (its holder gave it up): the joins patch it in place.
     explicit DocumentText(std::shared_ptr<std::string> text);
 
     // Applies one LSP change event with the rules of lsp/text_change.hpp (UTF-16 positions, lines
