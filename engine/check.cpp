@@ -27,13 +27,15 @@ namespace {
 // `share`: the run's shared bulk blocks (null: none); `provenance` receives those the model was made of.
 // `take_from`: `previous` itself when its owner drops it after this check (its whole columns are then
 // moved, `taken` says which).
+// `documents`: the texts held in memory that the check reads (null: none).
 model::Model build_dyna_model(CheckResult& result, const CheckResult* previous, const grammar::SplicedLines* changed,
                               RunShare* share, model::BulkProvenance& provenance, CheckResult* take_from,
-                              model::BulkTaken& taken) {
+                              model::BulkTaken& taken, const grammar::FileOverlay* documents) {
     std::optional<model::BulkReuse> reuse;
     if (previous)
         reuse.emplace(model::BulkReuse{previous->deck, previous->model, previous->bulk_blocks, changed,
-                                       take_from ? &take_from->model : nullptr, take_from ? &taken : nullptr});
+                                       take_from ? &take_from->model : nullptr, take_from ? &taken : nullptr,
+                                       documents});
     return model::build_model(result.deck, result.diagnostics, &result.summary, reuse ? &*reuse : nullptr,
                               result.bulk_blocks, share ? &share->bulk : nullptr, &provenance);
 }
@@ -41,17 +43,21 @@ model::Model build_dyna_model(CheckResult& result, const CheckResult* previous, 
 // read → model → rules, the findings of each line's cause folded into it.
 // `previous`: the last check of the same deck (a re-check), or null; `changed`: where the deck was
 // spliced into the last one's reading (grammar/deck_splice.hpp), or null.
-// `take_from`: as build_dyna_model's.
+// `take_from`: as build_dyna_model's. `documents`: the editor's texts `previous` was read from, when
+// not options.reader.overlay (a re-check of mended files lays them over those).
 CheckResult analyse(grammar::RawDeck deck, const CheckOptions& options, const CheckResult* previous,
-                    const grammar::SplicedLines* changed = nullptr, CheckResult* take_from = nullptr) {
+                    const grammar::SplicedLines* changed = nullptr, CheckResult* take_from = nullptr,
+                    const grammar::FileOverlay* documents = nullptr) {
+    if (!documents) documents = options.reader.overlay;
     CheckResult result;
     result.deck = std::move(deck);
     result.diagnostics = result.deck.diagnostics;
     model::BulkProvenance provenance;
     model::BulkTaken taken;
-    result.model = grammar::format_of(result.deck) == grammar::DeckFormat::Radioss
-                       ? model::build_radioss_model(result.deck, result.diagnostics, &result.summary)
-                       : build_dyna_model(result, previous, changed, options.share, provenance, take_from, taken);
+    result.model =
+        grammar::format_of(result.deck) == grammar::DeckFormat::Radioss
+            ? model::build_radioss_model(result.deck, result.diagnostics, &result.summary)
+            : build_dyna_model(result, previous, changed, options.share, provenance, take_from, taken, documents);
     if (take_from && taken.any()) take_from->taken = taken;
     lint::RuleContext context(result.model, result.deck, options.rules, result.diagnostics);
     if (options.share) context.use_bulk_facts(options.share->lookups.facts(result.model, provenance));
@@ -123,7 +129,9 @@ CheckResult finish(grammar::RawDeck deck, const CheckOptions& options, const Rer
                                  CheckOptions again = options;
                                  again.reader.overlay = &mended;
                                  again.rules.keep_preview = false;
-                                 return analyse(reread(again.reader, result.deck), again, previous).diagnostics;
+                                 return analyse(reread(again.reader, result.deck), again, previous, nullptr, nullptr,
+                                                options.reader.overlay)
+                                     .diagnostics;
                              });
     diag::sort_by_location(result.diagnostics);
     // What the deck's own comments and the configuration say about the findings: every consumer

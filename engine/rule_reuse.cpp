@@ -22,7 +22,7 @@ public:
         same_count_ = changed.old_card_end - changed.first_card == changed.new_card_end - changed.first_card;
         if (!same_count_) return;
         for (std::uint32_t k = changed.first_card; k < changed.old_card_end; ++k) {
-            if (before.text(before.lines[k]) == now.text(now.lines[k]))
+            if (old_text(before.lines[k]) == now.text(now.lines[k]))
                 kept_.emplace_back(before.lines[k].line, now.lines[k].line);
             else
                 edited_.push_back(k);
@@ -46,6 +46,16 @@ public:
     }
 
 private:
+    // An old card line the edit replaced, from the bytes the splice kept aside: the last reading's
+    // buffer may have been patched in place since (grammar/earlier_text.hpp).
+    std::string_view old_text(const grammar::CardLine& line) const {
+        const std::string_view lines = changed_.replaced;
+        std::string_view text = lines.substr(std::min<std::size_t>(line.offset - changed_.begin, lines.size()));
+        text = text.substr(0, text.find('\n'));
+        if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
+        return text;
+    }
+
     const grammar::SplicedLines& changed_;
     bool same_count_ = false;
     std::vector<std::pair<std::uint32_t, std::uint32_t>> kept_;

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "grammar/dyna/reader.hpp"
+#include "grammar/earlier_text.hpp"
 #include "grammar/read_deck.hpp"
 #include "text/text_file.hpp"
 
@@ -80,8 +81,16 @@ std::optional<SplicedDeck> splice_edit(const RawDeck& previous, SourceText text,
         if (d.code == "DK022") return std::nullopt;
 
     // The changed bytes, widened to whole lines: [begin, old_end) of `before` is [begin, new_end) of `now`.
+    // The editor may have patched the buffer `previous` read in place (`before` views the patched bytes
+    // then): the bytes outside the change are read from `now`, which holds them too, and the replaced
+    // ones from what it kept aside (grammar/earlier_text.hpp).
+    const bool told = revision && revision->previous_data == before.data() && revision->previous_size == before.size();
+    const bool patched = told && revision->replaced;
+    if (patched ? before.data() != now.data() || !EarlierText::consistent(now, *revision)
+                : before.data() == now.data() && (told || before.size() != now.size()))
+        return std::nullopt;  // patched without being told how
     std::size_t prefix = 0, suffix = 0;
-    if (revision && revision->previous_data == before.data() && revision->previous_size == before.size()) {
+    if (told) {
         // Known from the editor's changes: at least these bytes are the same (fewer only widen the edit).
         const std::size_t shorter = std::min(before.size(), now.size());
         prefix = std::min(revision->same_prefix, shorter);
@@ -90,11 +99,19 @@ std::optional<SplicedDeck> splice_edit(const RawDeck& previous, SourceText text,
         prefix = common_prefix(before, now);
         suffix = common_suffix(before, now, prefix);
     }
+    const std::size_t shift = now.size() - before.size();  // of the bytes after the edit (modulo 2^64)
     std::size_t begin = prefix;
-    while (begin > 0 && before[begin - 1] != '\n') --begin;
-    std::size_t old_end = before.find('\n', before.size() - suffix);
-    old_end = old_end == std::string_view::npos ? before.size() : old_end + 1;
-    const std::size_t new_end = now.size() - (before.size() - old_end);
+    while (begin > 0 && now[begin - 1] != '\n') --begin;
+    std::size_t old_end = now.find('\n', now.size() - suffix);
+    old_end = old_end == std::string_view::npos ? before.size() : old_end + 1 - shift;
+    const std::size_t new_end = old_end + shift;
+    // The old bytes of the edit's lines, and the count of '\n' in the old text's bytes [begin, to).
+    const std::string replaced =
+        patched ? EarlierText(now, *revision).copy(begin, old_end) : std::string(before.substr(begin, old_end - begin));
+    const auto old_newlines = [&](std::size_t to) {
+        if (to <= old_end) return count_newlines(std::string_view(replaced).substr(0, to - begin));
+        return count_newlines(replaced) + count_newlines(now.substr(old_end + shift, to - old_end));
+    };
 
     // The card lines the edit replaced, and the physical line `begin` starts.
     const auto by_offset = [](const CardLine& l, std::size_t offset) { return l.offset < offset; };
@@ -102,13 +119,14 @@ std::optional<SplicedDeck> splice_edit(const RawDeck& previous, SourceText text,
     const auto last = std::lower_bound(first, previous.lines.end(), old_end, by_offset);
     std::uint32_t first_line = 0;  // the physical line at `begin`
     if (first != previous.lines.end())
-        first_line =
-            first->line - static_cast<std::uint32_t>(count_newlines(before.substr(begin, first->offset - begin)));
-    else
+        first_line = first->line - static_cast<std::uint32_t>(old_newlines(first->offset));
+    else  // the lines before `begin` are the same in both texts
         first_line =
             (first - 1)->line +
-            static_cast<std::uint32_t>(count_newlines(before.substr((first - 1)->offset, begin - (first - 1)->offset)));
-    const std::uint32_t old_lines = lines_in(before, begin, old_end), new_lines = lines_in(now, begin, new_end);
+            static_cast<std::uint32_t>(count_newlines(now.substr((first - 1)->offset, begin - (first - 1)->offset)));
+    const bool open_last = old_end == before.size() && !replaced.empty() && replaced.back() != '\n';
+    const auto old_lines = static_cast<std::uint32_t>(count_newlines(replaced) + (open_last ? 1 : 0));
+    const std::uint32_t new_lines = lines_in(now, begin, new_end);
     const std::uint32_t after = first_line + old_lines;  // the first physical line past the edit (old numbering)
 
     // The block the edit falls in: no keyword line among the replaced lines, and one the reader does not act on.
@@ -144,7 +162,8 @@ std::optional<SplicedDeck> splice_edit(const RawDeck& previous, SourceText text,
                    first_line,
                    after,
                    first_line + new_lines,
-                   host_index};
+                   host_index,
+                   std::move(replaced)};
     RawDeck& deck = out.deck;
     SourceFile source;
     source.path = old_file.path;

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include "grammar/file_overlay.hpp"
 #include "grammar/raw_deck.hpp"
@@ -28,6 +29,9 @@ struct SplicedLines {
     // new_line_end) of the new one; the lines after moved by new_line_end - old_line_end.
     std::uint32_t first_line = 0, old_line_end = 0, new_line_end = 0;
     std::size_t block = 0;  // the block (RawDeck::blocks) the edit fell in, the same index in both readings
+    // The old text's bytes [begin, old_end), copied: the last reading may view its buffer patched since
+    // (grammar/earlier_text.hpp), and the re-check compares the edit's old lines with the new ones.
+    std::string replaced;
 };
 
 struct SplicedDeck {
@@ -38,7 +42,8 @@ struct SplicedDeck {
 // `previous` read again with its main file's text now `text`, or nullopt when the edit needs a
 // full read (see above). `previous` is not changed. `revision`: what the editor knows changed
 // (grammar/file_overlay.hpp); used when it names the text `previous` read, instead of comparing the
-// two texts byte by byte (a pass over both, tens of ms on a 100 MB deck).
+// two texts byte by byte (a pass over both, tens of ms on a 100 MB deck), and needed when the editor
+// patched that text's buffer in place (`text` views the same buffer then).
 std::optional<SplicedDeck> splice_edit(const RawDeck& previous, SourceText text,
                                        const TextRevision* revision = nullptr);
 

@@ -18,10 +18,15 @@ namespace sphdeck::grammar {
 // (`previous_size` bytes, still alive where a reading views it), and at least their first
 // `same_prefix` and last `same_suffix` bytes are the same. A re-check that read the previous text
 // finds the changed lines from it without comparing the two texts (grammar/deck_splice.hpp).
+// An editor may patch the previous text's buffer in place instead of making a new one (the text held
+// once, lsp/document_text.hpp): `previous_data` is then the new text's own, a reading of the previous
+// text views patched bytes since, and `replaced` holds the previous text's bytes [same_prefix,
+// previous_size - same_suffix), kept aside before the patch (grammar/earlier_text.hpp reads it back).
 struct TextRevision {
     const char* previous_data = nullptr;
     std::size_t previous_size = 0;
     std::size_t same_prefix = 0, same_suffix = 0;
+    std::shared_ptr<const std::string> replaced;  // null: the previous text is alive and unchanged
 };
 
 class FileOverlay {
@@ -36,6 +41,9 @@ public:
     void set_shared(const std::filesystem::path& path, std::shared_ptr<const std::string> text,
                     const std::optional<TextRevision>& revision = std::nullopt);
     void erase(const std::filesystem::path& path);
+    // Forgets what every text was told to replace: a revision describes one change, from the text the
+    // last checks read, and holds only until they were checked again (an editor's next round of checks).
+    void forget_revisions() { revisions_.clear(); }
     // The text held for `path`, or nullptr when the file system has the say.
     const std::string* find(const std::filesystem::path& path) const;
     std::shared_ptr<const std::string> find_shared(const std::filesystem::path& path) const;

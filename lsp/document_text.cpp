@@ -1,17 +1,25 @@
 #include "lsp/document_text.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <utility>
 
 #include "lsp/text_change.hpp"
 #include "lsp/text_position.hpp"
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
+
 namespace sphdeck::lsp {
 namespace {
 // A chunk's size: small enough that rebuilding one is cheap (a few microseconds), big enough that
 // the chunks of a 400 MB document stay a few thousand to walk.
 constexpr std::size_t kChunkBytes = std::size_t{64} << 10;
+// What a join in place keeps aside and copies at least may reach (else a sixteenth of the text).
+constexpr std::size_t kKeptAsideBytes = std::size_t{4} << 20;
 
 std::size_t count_newlines(std::string_view text) {
     std::size_t count = 0;
@@ -26,6 +34,22 @@ std::size_t count_newlines(std::string_view text) {
     return count;
 }
 
+// The pages of `text`'s room past its bytes handed back to the system (not the room itself: a join
+// that grows the text faults them in again). An opened text keeps the buffer its message was read
+// into, whose JSON escapes took about 2 MB more than the text on a 100 MB deck, all of it touched.
+void hand_back_room(std::string& text) {
+#if defined(__linux__)
+    static const auto page = static_cast<std::uintptr_t>(::sysconf(_SC_PAGESIZE));
+    if (text.capacity() - text.size() < (std::size_t{1} << 20)) return;
+    const auto start = reinterpret_cast<std::uintptr_t>(text.data());
+    const std::uintptr_t first = (start + text.size() + 1 + page - 1) / page * page;  // past the '\0'
+    const std::uintptr_t last = (start + text.capacity()) / page * page;
+    if (first < last) ::madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED);
+#else
+    (void)text;
+#endif
+}
+
 }  // namespace
 
 DocumentText::DocumentText(std::shared_ptr<const std::string> text) : base_(std::move(text)) {
@@ -36,6 +60,7 @@ DocumentText::DocumentText(std::shared_ptr<const std::string> text) : base_(std:
 }
 
 DocumentText::DocumentText(std::shared_ptr<std::string> text) : DocumentText(std::shared_ptr<const std::string>(text)) {
+    if (text) hand_back_room(*text);
     own_base_ = std::move(text);
 }
 
@@ -98,7 +123,7 @@ bool DocumentText::apply(const nlohmann::json& change) {
     changed_ = true;
     const std::string& inserted = *event->text;
     if (event->whole) {
-        since_base_ = since_spare_ = Kept{};
+        since_base_ = Kept{};
         auto owner = std::make_shared<std::string>(inserted);
         base_.reset();  // no chunk views it any more
         chunks_.clear();
@@ -111,7 +136,6 @@ bool DocumentText::apply(const nlohmann::json& change) {
     if (to.chunk < from.chunk || (to.chunk == from.chunk && to.offset < from.offset)) std::swap(from, to);
     const std::size_t before = size(), begin = offset_of(from), end = offset_of(to);
     since_base_.changed(begin, end, before);
-    since_spare_.changed(begin, end, before);
     // The chunks the range touches are rebuilt; followers join them while the result is small, so
     // deletions do not leave a trail of tiny chunks.
     std::size_t last = to.chunk;
@@ -143,51 +167,61 @@ std::string DocumentText::joined() const {
     return out;
 }
 
-void DocumentText::copy_into(std::string& target, std::size_t begin, std::size_t end) const {
+void DocumentText::copy_into(char* target, std::size_t begin, std::size_t end) const {
     std::size_t offset = 0;
     for (const Chunk& chunk : chunks_) {
         const std::size_t chunk_end = offset + chunk.text.size();
         if (chunk_end > begin && offset < end) {
             const std::size_t from = std::max(begin, offset), to = std::min(end, chunk_end);
-            std::memcpy(target.data() + from, chunk.text.data() + (from - offset), to - from);
+            std::memcpy(target + (from - begin), chunk.text.data() + (from - offset), to - from);
         }
         if (chunk_end >= end) break;
         offset = chunk_end;
     }
 }
 
-// `target` held the text `kept` counts from; it becomes the text now: the bytes after the kept
-// prefix move with the length's change, and only those between are copied from the chunks.
-void DocumentText::patch(std::string& target, Kept kept, const DocumentText& now) {
-    const std::size_t old_size = target.size(), new_size = now.size();
-    const std::size_t shorter = std::min(old_size, new_size);
-    const std::size_t prefix = std::min(kept.prefix, shorter);
-    const std::size_t suffix = std::min(kept.suffix, shorter - prefix);
-    if (new_size > old_size) target.resize(new_size);
-    if (new_size != old_size && suffix > 0)
-        std::memmove(target.data() + new_size - suffix, target.data() + old_size - suffix, suffix);
-    if (new_size < old_size) target.resize(new_size);
-    now.copy_into(target, prefix, new_size - suffix);
+// The base made the text it is now, in its own buffer: the bytes the changes replaced are kept aside
+// first (the last check's reading views this buffer, and its re-check reads them: grammar::EarlierText),
+// the new ones copied out of the chunks (some may view the bytes about to move), then the bytes after
+// them move with the length's change and the new ones go in. Null when the buffer has no room for the
+// text or the changes span too much of it (then a fresh buffer is joined).
+std::optional<grammar::TextRevision> DocumentText::patch_base_in_place(std::size_t total) {
+    if (!own_base_ || own_base_.get() != base_.get() || total > own_base_->capacity()) return std::nullopt;
+    std::string& text = *own_base_;
+    const std::size_t old_size = text.size(), shorter = std::min(old_size, total);
+    const std::size_t prefix = std::min(since_base_.prefix, shorter);
+    const std::size_t suffix = std::min(since_base_.suffix, shorter - prefix);
+    const std::size_t old_middle = old_size - prefix - suffix, new_middle = total - prefix - suffix;
+    // Kept aside and copied: a few lines for an editor's edits; a change spread over the whole text
+    // is joined afresh instead (held twice until the last check goes, as every join was before).
+    if (old_middle + new_middle > std::max(kKeptAsideBytes, total / 16)) return std::nullopt;
+    auto replaced = std::make_shared<std::string>(text, prefix, old_middle);
+    std::string inserted(new_middle, '\0');
+    copy_into(inserted.data(), prefix, prefix + new_middle);
+    const char* const data = text.data();
+    if (total > old_size) text.resize(total);  // within its capacity: the buffer stays where it is
+    if (total != old_size && suffix > 0)
+        std::memmove(text.data() + total - suffix, text.data() + old_size - suffix, suffix);
+    if (total < old_size) text.resize(total);
+    if (new_middle > 0) std::memcpy(text.data() + prefix, inserted.data(), new_middle);
+    if (text.data() != data) std::abort();  // not reached: a reallocation would leave the last reading dangling
+    return grammar::TextRevision{data, old_size, prefix, suffix, std::move(replaced)};
 }
 
 DocumentText::Joined DocumentText::join_for_check() {
     const std::size_t total = size();
-    std::shared_ptr<std::string> text;
-    if (spare_ && spare_.use_count() == 1) {  // nothing reads the spare any more: patched, not rebuilt
-        text = std::move(spare_);
-        patch(*text, since_spare_, *this);
-    } else {
-        text = std::make_shared<std::string>();
-        text->reserve(total + total / 64 + 4096);  // room to grow, so that a patch seldom reallocates
-        for (const Chunk& chunk : chunks_) text->append(chunk.text);
-    }
     Joined out;
-    if (base_)  // none after a change of the whole text
-        out.revision = grammar::TextRevision{base_->data(), base_->size(), since_base_.prefix, since_base_.suffix};
-    spare_ = std::move(own_base_);  // null when the base was the opened text: the next join builds afresh
-    since_spare_ = since_base_;
-    own_base_ = text;
-    base_ = text;
+    if (base_) out.revision = patch_base_in_place(total);  // none after a change of the whole text
+    if (!out.revision) {
+        auto text = std::make_shared<std::string>();
+        text->reserve(total + total / 64 + 4096);  // room to grow, so that a patch seldom finds none
+        for (const Chunk& chunk : chunks_) text->append(chunk.text);
+        if (base_)
+            out.revision =
+                grammar::TextRevision{base_->data(), base_->size(), since_base_.prefix, since_base_.suffix, nullptr};
+        own_base_ = std::move(text);
+        base_ = own_base_;
+    }
     std::size_t offset = 0;
     for (Chunk& chunk : chunks_) {  // the same lengths: every chunk views the new text
         chunk.text = std::string_view(base_->data() + offset, chunk.text.size());
@@ -196,13 +230,12 @@ DocumentText::Joined DocumentText::join_for_check() {
     }
     since_base_ = Kept{total, total};
     changed_ = false;
-    out.text = std::move(text);
+    out.text = own_base_;
     return out;
 }
 
 void DocumentText::rebase(std::shared_ptr<const std::string> text) {
-    own_base_.reset();
-    spare_.reset();  // what it kept of the spare is not known for a text from elsewhere
+    own_base_.reset();  // a text from elsewhere is never patched
     base_ = std::move(text);
     since_base_ = Kept{base_->size(), base_->size()};
     std::size_t offset = 0;

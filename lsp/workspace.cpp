@@ -84,6 +84,9 @@ bool Workspace::change(const std::string& uri, std::int64_t version, const nlohm
 }
 
 void Workspace::join_changed_texts() {
+    // A revision told the checks of the last flush how a text changed; the checks of this one read
+    // the texts those checks read, but for the ones joined now (a join patches the buffer in place).
+    documents_.forget_revisions();
     for (auto& [key, document] : open_) {
         if (!document.text || !document.text->changed()) continue;
         DocumentText::Joined joined = document.text->join_for_check();

@@ -91,7 +91,9 @@ private:
     std::string uri_of(const std::filesystem::path& key, const std::string& path) const;
     bool reads(const Deck& deck, const std::filesystem::path& key) const;
     void publish(const std::set<std::filesystem::path>& files);
-    // Stores the changed open documents' texts in `documents_`, each joined once (not per change).
+    // Stores the changed open documents' texts in `documents_`, each joined once (not per change). A
+    // join patches the buffer the last checks read in place (lsp/document_text.hpp): every deck that
+    // read a joined text is checked again in the same flush, told how it changed.
     void join_changed_texts();
 
     Publish publish_;

@@ -2,6 +2,8 @@
 
 #include <cstring>
 
+#include "grammar/earlier_text.hpp"
+
 namespace sphdeck::model {
 
 DecodedBulkBlock decoded_bulk_block(const grammar::RawDeck& deck, const grammar::Block& block,
@@ -43,9 +45,14 @@ const DecodedBulkBlock* same_bulk_block(const BulkReuse& previous, const grammar
             // Bytes the edit replaced lie in it: not the same (no compare of a 100 MB block to find it).
             if (before.begin < changed->old_end && changed->begin < before.end) continue;
         }
-        const std::string_view old_text = previous.deck.sources.file(before.file).text.view();
+        const grammar::SourceFile& old_file = previous.deck.sources.file(before.file);
+        const std::string_view old_text = old_file.text.view();
         if (before.end > old_text.size() || now.end > text.size()) continue;
-        if (std::memcmp(old_text.data() + before.begin, text.data() + now.begin, now.end - now.begin) == 0)
+        const std::string_view block_now = text.substr(now.begin, now.end - now.begin);
+        const grammar::TextSince since = grammar::text_since(old_file.path, old_text, previous.documents);
+        if (since.state == grammar::TextSince::State::Unknown) continue;
+        if (since.earlier ? since.earlier->equals(before.begin, block_now)
+                          : std::memcmp(old_text.data() + before.begin, block_now.data(), block_now.size()) == 0)
             return &before;
     }
     return nullptr;

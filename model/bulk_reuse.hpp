@@ -50,6 +50,10 @@ struct BulkReuse {
     // and `taken` says which columns went; the rest is copied as before.
     Model* take_from = nullptr;
     BulkTaken* taken = nullptr;
+    // The texts held in memory the re-check reads (an editor's buffers, null: none): a buffer the last
+    // check read may have been patched in place since; its old bytes are then read as it tells
+    // (grammar/earlier_text.hpp).
+    const grammar::FileOverlay* documents = nullptr;
 };
 
 // The block of `previous` that `block` of `deck` may be copied from: same keyword, card, format and

@@ -307,7 +307,7 @@ TEST_CASE("deck splice: an edit's lines read again and spliced in equal a full r
                before[before.size() - 1 - suffix] == text[text.size() - 1 - suffix])
             ++suffix;
         const grammar::TextRevision told{before.data(), before.size(), prefix - prefix * (edit % 3) / 3,
-                                         suffix - suffix * (edit % 4) / 4};
+                                         suffix - suffix * (edit % 4) / 4, nullptr};
         auto splice = grammar::splice_edit(previous, grammar::SourceText(text), edit % 2 ? &told : nullptr);
         if (splice) {
             ++spliced;
@@ -573,6 +573,47 @@ TEST_CASE("recheck: the bulk blocks' columns an edit left alone are moved out of
     // A re-check from a check whose columns went: decoded again, not read from the empty columns.
     const engine::CheckResult from_emptied = engine::recheck_deck(path.string(), documents, options, first);
     same_as_full(from_emptied);
+}
+
+TEST_CASE(
+    "recheck: a text patched in place and read in full again reuses a bulk block only where its old bytes match") {
+    // 91 x 91 particles: *NODE and *ELEMENT_SPH on the bulk path. One change in each at once spans a
+    // keyword line, so the deck is read in full; the editor patched the buffer the last check read in
+    // place (lsp/document_text.hpp), so that check's blocks are compared with the bytes it held, not
+    // with what its reading views now (the same bytes as the new text's).
+    const std::filesystem::path path = std::filesystem::absolute("incremental_patched_lattice.k");
+    const int n = 91;
+    const std::string original = lattice_deck(n);
+    const std::string uri = lsp::uri_from_path(path);
+    lsp::Workspace workspace([](const nlohmann::json&) {});
+    REQUIRE(workspace.open(uri, original, 1));
+    workspace.flush();
+    std::mt19937 random(4545);
+    const auto pick = [&](int count) { return std::uniform_int_distribution<int>(0, count - 1)(random); };
+    const auto digit = [](int line, int character, int value) {
+        return nlohmann::json{{"range",
+                               {{"start", {{"line", line}, {"character", character}}},
+                                {"end", {{"line", line}, {"character", character + 1}}}}},
+                              {"text", std::string(1, static_cast<char>('0' + value))}};
+    };
+    const int first_node_line = 13, first_particle_line = first_node_line + n * n + 1;
+    for (int round = 0; round < 4; ++round) {
+        CAPTURE(round);
+        // A node's x and a particle's mass, each one digit of its mantissa (the same length).
+        const nlohmann::json changes =
+            nlohmann::json::array({digit(first_node_line + pick(n * n), 12, 1 + pick(9)),
+                                   digit(first_particle_line + pick(n * n), 20, 1 + pick(9))});
+        REQUIRE(workspace.change(uri, round + 2, changes));
+        workspace.flush();
+        const auto located = workspace.locate(path);
+        REQUIRE(located);
+        const engine::CheckResult& result = located->deck->result;
+        engine::Documents documents;
+        documents.set(path, *workspace.text(uri));
+        const engine::CheckResult full = engine::check_deck(path.string(), documents, engine::CheckOptions{});
+        REQUIRE(full.bulk_blocks.size() == 2);
+        test::check_same_bulk_columns(result.model, full.model);
+    }
 }
 
 }  // namespace test_incremental_cpp
