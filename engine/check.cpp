@@ -225,4 +225,11 @@ CheckResult check_buffer(std::string text, const std::string& name, const CheckO
                   });
 }
 
+CheckResult::CheckResult() = default;
+CheckResult::CheckResult(const CheckResult&) = default;
+CheckResult::CheckResult(CheckResult&&) = default;
+CheckResult& CheckResult::operator=(const CheckResult&) = default;
+CheckResult& CheckResult::operator=(CheckResult&&) noexcept = default;
+CheckResult::~CheckResult() = default;
+
 }  // namespace sphdeck::engine

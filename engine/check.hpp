@@ -36,6 +36,15 @@ struct CheckOptions {
 };
 
 struct CheckResult {
+    // Declared here and defaulted in engine/check.cpp: the special members of this large aggregate are compiled
+    // once, not in every room that copies, moves or drops one (issue 42).
+    CheckResult();
+    CheckResult(const CheckResult&);
+    CheckResult(CheckResult&&);
+    CheckResult& operator=(const CheckResult&);
+    CheckResult& operator=(CheckResult&&) noexcept;
+    ~CheckResult();
+
     grammar::RawDeck deck;
     std::vector<diag::Diagnostic> diagnostics;  // sorted by location
     model::DeckSummary summary;

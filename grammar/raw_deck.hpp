@@ -50,6 +50,15 @@ struct ReadStats {
 };
 
 struct RawDeck {
+    // Declared here and defaulted in grammar/raw_deck.cpp: the special members of this large aggregate
+    // are compiled once, not in every room that copies, moves or drops one (issue 42).
+    RawDeck();
+    RawDeck(const RawDeck&);
+    RawDeck(RawDeck&&);
+    RawDeck& operator=(const RawDeck&);
+    RawDeck& operator=(RawDeck&&) noexcept;
+    ~RawDeck();
+
     SourceMap sources;
     std::vector<Block> blocks;
     CardLines lines;  // a bulk block's regular lines kept as runs (grammar/card_lines.hpp)

@@ -160,6 +160,15 @@ struct Particles {
 };
 
 struct Model {
+    // Declared here and defaulted in model/model.cpp: the special members of this large aggregate are compiled
+    // once, not in every room that copies, moves or drops one (issue 42).
+    Model();
+    Model(const Model&);
+    Model(Model&&) noexcept;
+    Model& operator=(const Model&);
+    Model& operator=(Model&&) noexcept;
+    ~Model();
+
     std::vector<KeywordRecord> records;  // every known keyword block but *NODE/*ELEMENT_SPH
     Controls controls;
     std::vector<Section> sections;

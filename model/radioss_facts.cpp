@@ -35,4 +35,11 @@ const RadiossDt* RadiossFacts::time_step(DtKind kind) const {
     return found;
 }
 
+RadiossFacts::RadiossFacts() = default;
+RadiossFacts::RadiossFacts(const RadiossFacts&) = default;
+RadiossFacts::RadiossFacts(RadiossFacts&&) noexcept = default;
+RadiossFacts& RadiossFacts::operator=(const RadiossFacts&) = default;
+RadiossFacts& RadiossFacts::operator=(RadiossFacts&&) noexcept = default;
+RadiossFacts::~RadiossFacts() = default;
+
 }  // namespace sphdeck::model

@@ -207,6 +207,15 @@ struct RadiossIdUse {
 };
 
 struct RadiossFacts {
+    // Declared here and defaulted in model/radioss_facts.cpp: the special members of this large aggregate are compiled
+    // once, not in every room that copies, moves or drops one (issue 42).
+    RadiossFacts();
+    RadiossFacts(const RadiossFacts&);
+    RadiossFacts(RadiossFacts&&) noexcept;
+    RadiossFacts& operator=(const RadiossFacts&);
+    RadiossFacts& operator=(RadiossFacts&&) noexcept;
+    ~RadiossFacts();
+
     int version = 2026;  // Invers of /BEGIN (the latest when absent)
     bool begin_present = false;
     grammar::Span version_span;
