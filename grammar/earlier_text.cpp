@@ -59,10 +59,10 @@ TextSince text_since(const std::string& path, std::string_view read, const FileO
     const TextRevision* revision = overlay->revision(path);
     if (revision && revision->previous_data == read.data() && revision->previous_size == read.size() &&
         EarlierText::consistent(*held, *revision)) {
-        out.state = TextSince::State::Patched;
+        out.state = TextSince::Fate::Patched;
         out.earlier.emplace(*held, *revision);
     } else if (revision || held->size() != read.size()) {
-        out.state = TextSince::State::Unknown;
+        out.state = TextSince::Fate::Unknown;
     }
     return out;
 }

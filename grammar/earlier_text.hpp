@@ -41,7 +41,10 @@ private:
 // unchanged (the buffer is not the one `overlay` holds for the path now, or it is and was not patched),
 // patched in place (`earlier` reads it as it was), or unknown (patched, and not told how: compare nothing).
 struct TextSince {
-    enum class State { Unchanged, Patched, Unknown } state = State::Unchanged;
+    // Not `State`: grammar/dyna/expression.cpp has a file-local one, and the unity batches
+    // (cmake/speed_up.cmake) would keep the two files apart, a batch more for grammar/.
+    enum class Fate { Unchanged, Patched, Unknown };
+    Fate state = Fate::Unchanged;
     std::optional<EarlierText> earlier;
 };
 TextSince text_since(const std::string& path, std::string_view read, const FileOverlay* overlay);

@@ -50,7 +50,7 @@ const DecodedBulkBlock* same_bulk_block(const BulkReuse& previous, const grammar
         if (before.end > old_text.size() || now.end > text.size()) continue;
         const std::string_view block_now = text.substr(now.begin, now.end - now.begin);
         const grammar::TextSince since = grammar::text_since(old_file.path, old_text, previous.documents);
-        if (since.state == grammar::TextSince::State::Unknown) continue;
+        if (since.state == grammar::TextSince::Fate::Unknown) continue;
         if (since.earlier ? since.earlier->equals(before.begin, block_now)
                           : std::memcmp(old_text.data() + before.begin, block_now.data(), block_now.size()) == 0)
             return &before;
