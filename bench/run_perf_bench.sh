@@ -112,14 +112,8 @@ cat "$file" >/dev/null
 size=$(size_mb "$file")
 echo "== 1M-particle deck $file, $size MB (generated in ${gen} s; 0 = already there), $runs runs each (medians)"
 
-peer=${DYNAREADOUT_PEER:-}
-if [ -z "$peer" ] && [ -n "${DYNAREADOUT_SRC:-}" ]; then
-  peer=bench/out/dynareadout_peer
-  src=$DYNAREADOUT_SRC/src
-  ${CC:-cc} -O3 -DNDEBUG -I"$src" bench/dynareadout_peer.c "$src"/key.c "$src"/line.c "$src"/path.c \
-    "$src"/path_view.c "$src"/string_builder.c "$src"/extra_string.c "$src"/multi_file.c "$src"/sync.c \
-    "$src"/include_transform.c "$src"/binary_search.c -lm -lpthread -o "$peer"
-fi
+source bench/dynareadout_peer.sh
+peer=$(dynareadout_peer)
 peer_s=
 if [ -n "$peer" ]; then
   measure "dynareadout (peer), 1 thread" "$peer" "$file"
