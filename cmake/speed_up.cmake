@@ -161,8 +161,8 @@ endfunction()
 
 # A lighter optimisation level for code no user waits on (issue 42): the test code at -O0
 # (CMakeLists.txt), the command line's option handling (cli/), the MCP server, the verification cases,
-# the findings' renderers (diag/), the engine's orchestration (engine/) and the Python module at -O1; the rooms that read, check,
-# preview and solve keep the build type's -O3. Measured a batch at a time: four test files 27.1 CPU s at
+# the findings' renderers (diag/), the engine's orchestration (engine/) and the Python module at -O1;
+# the rooms that read, check, preview and solve keep the build type's -O3. Measured a batch at a time: four test files 27.1 CPU s at
 # -O3, 17.3 at -O1; the command line's larger batch (CLI11's templates) 55.4 at -O3, 48.8 at -O2, 42.5 at
 # -O1; the MCP room 27.0, 24.8, 17.8. -O2 saves little (most of a batch's time is instantiating the
 # headers' templates, which the level does not change), so what users wait on keeps -O3. -O2 and -O1 can
