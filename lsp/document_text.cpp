@@ -7,11 +7,7 @@
 
 #include "lsp/text_change.hpp"
 #include "lsp/text_position.hpp"
-
-#if defined(__linux__)
-#include <sys/mman.h>
-#include <unistd.h>
-#endif
+#include "text/page_release.hpp"
 
 namespace sphdeck::lsp {
 namespace {
@@ -34,20 +30,13 @@ std::size_t count_newlines(std::string_view text) {
     return count;
 }
 
-// The pages of `text`'s room past its bytes handed back to the system (not the room itself: a join
+// The pages of `buffer`'s room past its bytes handed back to the system (not the room itself: a join
 // that grows the text faults them in again). An opened text keeps the buffer its message was read
 // into, whose JSON escapes took about 2 MB more than the text on a 100 MB deck, all of it touched.
-void hand_back_room(std::string& text) {
-#if defined(__linux__)
-    static const auto page = static_cast<std::uintptr_t>(::sysconf(_SC_PAGESIZE));
-    if (text.capacity() - text.size() < (std::size_t{1} << 20)) return;
-    const auto start = reinterpret_cast<std::uintptr_t>(text.data());
-    const std::uintptr_t first = (start + text.size() + 1 + page - 1) / page * page;  // past the '\0'
-    const std::uintptr_t last = (start + text.capacity()) / page * page;
-    if (first < last) ::madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED);
-#else
-    (void)text;
-#endif
+void hand_back_room(std::string& buffer) {
+    if (buffer.capacity() - buffer.size() < (std::size_t{1} << 20)) return;
+    const std::size_t past_end = buffer.size() + 1;  // past the '\0'
+    text::release_whole_pages(buffer.data() + past_end, buffer.capacity() - past_end);
 }
 
 }  // namespace

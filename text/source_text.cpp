@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "text/page_release.hpp"
 #include "text/text_file.hpp"
 
 #if defined(__unix__) || defined(__APPLE__)
@@ -51,11 +52,8 @@ SourceText SourceText::read(const std::string& path, std::size_t min_bytes) {
 void SourceText::release(std::size_t begin, std::size_t end) const {
 #ifdef SPHDECK_HAS_MMAP
     if (!mapping_) return;
-    static const std::size_t page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
     end = std::min(end, size_);
-    const std::size_t first = (begin + page - 1) / page * page;  // whole pages inside [begin, end)
-    const std::size_t last = end / page * page;
-    if (first < last) ::madvise(const_cast<char*>(view_) + first, last - first, MADV_DONTNEED);
+    if (begin < end) release_whole_pages(view_ + begin, end - begin);
 #else
     (void)begin, (void)end;
 #endif
