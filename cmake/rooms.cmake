@@ -8,7 +8,10 @@
 #   sphdeck_add_room(model DEPENDS grammar diag text)
 #
 # DEPENDS names every room below, not just the next one: a room may include any room under it, and each
-# must be visible. Extra sources (a generated file) go after SOURCES. Everything above the rooms (cli/,
+# must be visible. Extra sources (a generated file) go after SOURCES. COLD names files (globs, relative to
+# the room's folder) that run once a process or only on a broken deck: they compile apart, in a batch of
+# their own at -O1 (sphdeck_<room>_cold, an object library whose objects the room's library holds), while
+# the rest of the room keeps -O3 (issue 42: grammar/'s keyword tables). Everything above the rooms (cli/,
 # tests, benchmarks, fuzz targets) links sphdeck_core, which sees the whole tree.
 
 set(SPHDECK_ROOMS_VIEW ${PROJECT_BINARY_DIR}/rooms)
@@ -20,14 +23,28 @@ include(CheckCXXCompilerFlag)
 check_cxx_compiler_flag(-fno-semantic-interposition SPHDECK_HAS_NO_SEMANTIC_INTERPOSITION)
 
 function(sphdeck_add_room room)
-  cmake_parse_arguments(PARSE_ARGV 1 ROOM "" "" "DEPENDS;SOURCES")
+  cmake_parse_arguments(PARSE_ARGV 1 ROOM "" "" "DEPENDS;SOURCES;COLD")
   file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${room}/*.cpp)
   set(target sphdeck_${room})
-  add_library(${target} STATIC ${sources} ${ROOM_SOURCES})
-  set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
-  if(SPHDECK_HAS_NO_SEMANTIC_INTERPOSITION)
-    target_compile_options(${target} PRIVATE -fno-semantic-interposition)
+  set(cold_sources "")
+  foreach(pattern IN LISTS ROOM_COLD)
+    file(GLOB matched CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${room}/${pattern})
+    if(NOT matched)
+      message(FATAL_ERROR "sphdeck_add_room(${room}): COLD ${pattern} matches no file")
+    endif()
+    list(APPEND cold_sources ${matched})
+  endforeach()
+  if(cold_sources)
+    list(REMOVE_ITEM sources ${cold_sources})
   endif()
+  add_library(${target} STATIC ${sources} ${ROOM_SOURCES})
+  set(targets ${target})
+  if(cold_sources)
+    add_library(${target}_cold OBJECT ${cold_sources})
+    target_sources(${target} PRIVATE $<TARGET_OBJECTS:${target}_cold>)
+    list(APPEND targets ${target}_cold)
+  endif()
+  set_target_properties(${targets} PROPERTIES POSITION_INDEPENDENT_CODE ON)
 
   # The room's view of the tree: links to itself and to the rooms it stands on.
   set(view ${SPHDECK_ROOMS_VIEW}/${room})
@@ -37,14 +54,21 @@ function(sphdeck_add_room room)
       file(CREATE_LINK ${PROJECT_SOURCE_DIR}/${visible} ${view}/${visible} SYMBOLIC)
     endif()
   endforeach()
-  target_include_directories(${target} PRIVATE ${view})
-
   set(below "")
   foreach(dependency ${ROOM_DEPENDS})
     list(APPEND below sphdeck_${dependency})
   endforeach()
-  target_link_libraries(${target} PUBLIC ${below} taocpp::pegtl Eigen3::Eigen fmt::fmt nlohmann_json::nlohmann_json
-    tomlplusplus::tomlplusplus OpenMP::OpenMP_CXX)
-  target_compile_definitions(${target} PRIVATE SPHDECK_VERSION="${PROJECT_VERSION}")
-  set_property(GLOBAL APPEND PROPERTY SPHDECK_ROOM_TARGETS ${target})
+  foreach(each IN LISTS targets)
+    if(SPHDECK_HAS_NO_SEMANTIC_INTERPOSITION)
+      target_compile_options(${each} PRIVATE -fno-semantic-interposition)
+    endif()
+    target_include_directories(${each} PRIVATE ${view})
+    target_link_libraries(${each} PUBLIC ${below} taocpp::pegtl Eigen3::Eigen fmt::fmt
+      nlohmann_json::nlohmann_json tomlplusplus::tomlplusplus OpenMP::OpenMP_CXX)
+    target_compile_definitions(${each} PRIVATE SPHDECK_VERSION="${PROJECT_VERSION}")
+  endforeach()
+  set_property(GLOBAL APPEND PROPERTY SPHDECK_ROOM_TARGETS ${targets})
+  if(cold_sources)
+    sphdeck_optimise(${target}_cold -O1)  # cmake/speed_up.cmake
+  endif()
 endfunction()
