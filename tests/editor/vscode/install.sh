@@ -26,7 +26,11 @@ node_major=$(node -p 'process.versions.node.split(".")[0]')
 [ "$node_major" = 20 ] || fail "code-server 4.99 needs Node 20, this is $(node --version)"
 command -v rg > /dev/null || fail "rg is missing (Debian package ripgrep: scripts/install-deps.sh --vscode-test)"
 [ -f /usr/include/node/node_api.h ] || fail "Node's headers are missing (/usr/include/node: NodeSource's nodejs package has them)"
-if [ -f "$ready" ] && [ "$(cat "$ready")" = "$(sha256sum < "$here/package-lock.json")" ]; then
+# Done once for these locks: the marker holds their hash.
+locks_hash() {
+  cat "$here/package-lock.json" "$source_dir/editors/vscode/package-lock.json" | sha256sum
+}
+if [ -f "$ready" ] && [ "$(cat "$ready")" = "$(locks_hash)" ]; then
   exit 0
 fi
 rm -f "$ready"
@@ -56,5 +60,5 @@ ln -sfn "$(command -v rg)" "$code_server/lib/vscode/node_modules/@vscode/ripgrep
 echo "vscode-test install: the extension's modules (npm ci in editors/vscode)"
 (cd "$source_dir/editors/vscode" && npm ci "${npm_quiet[@]}")
 
-sha256sum < "$here/package-lock.json" > "$ready"
+locks_hash > "$ready"
 echo "vscode-test install: done"
