@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Installs what the VS Code extension test (run_vscode_test.sh) runs in, from the npm registry only:
 # code-server (a real VS Code: its server and web workbench, the version package-lock.json pins), the
-# VS Code dependencies code-server ships a lock for (lib/vscode/npm-shrinkwrap.json), and the extension's
-# own (editors/vscode/package-lock.json). Chromium comes from Debian (scripts/install-deps.sh --vscode-test).
+# modules of its VS Code (lib/vscode, pinned by vscode-modules-lock.json), and the extension's own
+# (editors/vscode/package-lock.json). Chromium comes from Debian (scripts/install-deps.sh --vscode-test).
 #   bash tests/editor/vscode/install.sh      (again after a failure: it redoes what is not finished)
 # Install scripts are not run: code-server's postinstall and some of VS Code's modules download from
 # GitHub. The native modules the server loads at start are built here from source instead, against
@@ -28,7 +28,7 @@ command -v rg > /dev/null || fail "rg is missing (Debian package ripgrep: script
 [ -f /usr/include/node/node_api.h ] || fail "Node's headers are missing (/usr/include/node: NodeSource's nodejs package has them)"
 # Done once for these locks: the marker holds their hash.
 locks_hash() {
-  cat "$here/package-lock.json" "$source_dir/editors/vscode/package-lock.json" | sha256sum
+  cat "$here/package-lock.json" "$here/vscode-modules-lock.json" "$source_dir/editors/vscode/package-lock.json" | sha256sum
 }
 if [ -f "$ready" ] && [ "$(cat "$ready")" = "$(locks_hash)" ]; then
   exit 0
@@ -45,10 +45,12 @@ code_server="$here/node_modules/code-server"
 echo "vscode-test install: argon2 built from source"
 (cd "$here" && npm_config_build_from_source=true npm rebuild argon2 "${npm_quiet[@]}")
 
-# npm install as code-server's postinstall does, not npm ci: the shrinkwrap it ships misses a module or
-# two its package.json asks for (npm ci refuses it), which npm install then takes at their newest.
-echo "vscode-test install: VS Code's modules (npm install in code-server's lib/vscode, by its shrinkwrap)"
-(cd "$code_server/lib/vscode" && npm install --ignore-scripts --omit=dev "${npm_quiet[@]}")
+# The shrinkwrap code-server ships misses a module its package.json asks for (tslib: npm ci refuses it,
+# npm install as in code-server's postinstall takes its newest); vscode-modules-lock.json is that
+# shrinkwrap completed by npm install on 2026-11-30, so npm ci installs the same modules every time.
+echo "vscode-test install: VS Code's modules (npm ci in code-server's lib/vscode, by vscode-modules-lock.json)"
+cp "$here/vscode-modules-lock.json" "$code_server/lib/vscode/npm-shrinkwrap.json"
+(cd "$code_server/lib/vscode" && npm ci --ignore-scripts --omit=dev "${npm_quiet[@]}")
 echo "vscode-test install: @vscode/spdlog and native-watchdog built from source"
 (cd "$code_server/lib/vscode" && npm rebuild @vscode/spdlog native-watchdog "${npm_quiet[@]}")
 # What code-server's postinstall does besides: VS Code looks for its modules in node_modules.asar.
