@@ -6,6 +6,9 @@
 # Runs as root (CI, fresh machines) or through sudo when available.
 #   --fuzz  also Clang 14, its sanitizer and libFuzzer runtimes and its OpenMP library, for the
 #           Clang build and the fuzz targets (fuzz/README.md); the default install stays GCC only.
+#   --vscode-test  also what the VS Code extension's test runs in (tests/editor/vscode/README.md): Debian's
+#           Chromium and ripgrep, then code-server and the modules from the npm registry
+#           (tests/editor/vscode/install.sh, about 300 MB in all); .ci/run uses it, make test does not.
 set -euo pipefail
 #   --build only what building sphdeck needs (make demo, make build-cli, the GitHub Action).
 build_packages=(
@@ -30,11 +33,13 @@ command -v node > /dev/null || test_packages+=(nodejs)
 command -v npm > /dev/null || test_packages+=(npm)
 packages=("${build_packages[@]}" "${test_packages[@]}")
 with_tests=1
+with_vscode_test=0
 for arg in "$@"; do
   case $arg in
     --fuzz) packages+=(clang-14 libclang-rt-14-dev libomp-14-dev) ;;
     --build) packages=("${build_packages[@]}"); with_tests=0 ;;
-    *) echo "usage: scripts/install-deps.sh [--build] [--fuzz]" >&2; exit 2 ;;
+    --vscode-test) packages+=(chromium ripgrep); with_vscode_test=1 ;;
+    *) echo "usage: scripts/install-deps.sh [--build] [--fuzz] [--vscode-test]" >&2; exit 2 ;;
   esac
 done
 # One dpkg-query for all of them (it runs before every `make demo` and `make test`). It exits 1 when a
@@ -56,4 +61,7 @@ fi
 client_dir="$(cd "$(dirname "$0")/.." && pwd)/tests/mcp-client"
 if [ $with_tests -eq 1 ] && [ ! -f "$client_dir/node_modules/@modelcontextprotocol/sdk/package.json" ]; then
   (cd "$client_dir" && npm ci --no-audit --no-fund --loglevel=error)
+fi
+if [ $with_vscode_test -eq 1 ]; then
+  bash "$(cd "$(dirname "$0")/.." && pwd)/tests/editor/vscode/install.sh"
 fi
