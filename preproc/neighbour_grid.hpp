@@ -206,6 +206,11 @@ private:
     std::uint64_t occupied_key(std::size_t o) const { return hashed_ ? occupied_keys_[o] : occupied_cells_[o]; }
     Cell decode(std::uint64_t k) const;
     std::uint32_t find(std::uint64_t k) const;  // occupied id of a hashed cell, or `none`
+    // A key's first slot: the top bits of its product by 2^64 / golden ratio, which every bit of the key
+    // moves (bits 20 and up of the product left out the z of the cell: a column of cells shared a slot).
+    std::size_t slot_of(std::uint64_t k) const {
+        return static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> table_shift_);
+    }
     Range hashed_row_range(std::uint32_t x0, std::uint32_t x1, std::uint32_t iy, std::uint32_t iz) const;
     void bin_dense(std::span<const double> x, std::span<const double> y, std::span<const double> z);
     void bin_hashed(std::span<const double> x, std::span<const double> y, std::span<const double> z);
@@ -223,6 +228,7 @@ private:
     std::vector<std::uint32_t> occupied_cells_;  // dense
     std::vector<std::uint64_t> occupied_keys_;   // hashed
     std::vector<std::uint64_t> table_keys_;      // hashed: open addressing, key + 1 (0 = empty)
+    int table_shift_ = 60;                       // 64 - log2 of the table's size
     std::vector<std::uint32_t> table_ids_;
     std::vector<std::uint32_t> order_;
     std::vector<double> x_, y_, z_;
