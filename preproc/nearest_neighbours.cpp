@@ -296,11 +296,18 @@ NearestNeighbours nearest_neighbours(std::span<const double> x, std::span<const 
             }
             distances += std::uint64_t{block_points} * (last - first);
             const NeighbourGrid::BlockBounds block_bounds = g.block_bounds(at, 1);  // the cell's, not per point
+            const bool covers_at_one = g.block_covers_grid(at, 1);
             cell_best2.resize(last - first), cell_best.resize(last - first);
             nearest_in_block(g, first, last, block, cell_best2.data(), cell_best.data());
             for (std::uint32_t k = first; k < last; ++k) {
                 double best2 = cell_best2[k - first];
                 std::uint32_t best = cell_best[k - first];
+                // Most walks end with the block (the loop below, at reach 1, in short).
+                const double clear = covers_at_one ? 0.0 : block_bounds.clearance(g.x()[k], g.y()[k], g.z()[k]);
+                if (covers_at_one || (clear > 0 && best2 <= clear * clear)) {
+                    put(k, best2, best);
+                    continue;
+                }
                 // A walk that may pass walk_reach (its best so far farther than that block's clearance): the
                 // tree at once, not after crossing shells of cells, which cost most when the cells are small.
                 if (!walk_only && !g.block_covers_grid(at, walk_reach)) {
