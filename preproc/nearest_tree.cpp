@@ -94,14 +94,14 @@ std::uint32_t NearestTree::build(std::uint32_t begin, std::uint32_t end) {
     building_work_ += end - begin;
     for (std::uint32_t i = begin; i < end; ++i) {
         const Point& p = points_[i];
-        const double v[3] = {p.x, p.y, p.z};
-        const NeighbourGrid::Cell c = g_.cell_of(p.x, p.y, p.z);
-        for (int a = 0; a < 3; ++a) {
-            node.lo[a] = std::min(node.lo[a], v[a]), node.hi[a] = std::max(node.hi[a], v[a]);
-            node.cell_lo[a] = std::min(node.cell_lo[a], c[a]), node.cell_hi[a] = std::max(node.cell_hi[a], c[a]);
-        }
+        node.lo[0] = std::min(node.lo[0], p.x), node.hi[0] = std::max(node.hi[0], p.x);
+        node.lo[1] = std::min(node.lo[1], p.y), node.hi[1] = std::max(node.hi[1], p.y);
+        node.lo[2] = std::min(node.lo[2], p.z), node.hi[2] = std::max(node.hi[2], p.z);
         node.first_position = std::min(node.first_position, p.position);
     }
+    // A cell's coordinate along an axis grows with the point's along it alone: the cells' box is the box's.
+    node.cell_lo = g_.cell_of(node.lo[0], node.lo[1], node.lo[2]);
+    node.cell_hi = g_.cell_of(node.hi[0], node.hi[1], node.hi[2]);
     nodes_.push_back(node);
     if (end - begin <= leaf_points) return id;
     int axis = 0;
