@@ -251,13 +251,13 @@ constexpr NeighbourGrid::RowOffset block_rows[] = {{-1, 1, -1, -1}, {-1, 1, 0, -
                                                    {-1, 1, -1, 0},  {-1, 1, 0, 0},  {-1, 1, 1, 0},
                                                    {-1, 1, -1, 1},  {-1, 1, 0, 1},  {-1, 1, 1, 1}};
 
-// The same nine, then the 25 rows of the 5x5x5 block: on a hashed grid the walk's second shell comes from
-// these (a cursor's step each, per cell) rather than from a hash look-up per cell of the shell, per point
-// (a lattice with a stray point: its cells are smaller than the spacing, and most points need that shell).
-constexpr auto block_rows_and_reach_two = [] {
-    std::array<NeighbourGrid::RowOffset, 9 + 25> rows{};
-    for (std::size_t r = 0; r < 9; ++r) rows[r] = block_rows[r];
-    for (int dz = -2, r = 9; dz <= 2; ++dz)
+// The 25 rows of the 5x5x5 block: on a hashed grid the walk's second shell comes from these, through
+// cursors that step through the occupied cells (once a cell that needs them), rather than from a hash
+// look-up per cell of the shell and point (a lattice with a stray point, or blobs: cells smaller than the
+// spacing, and many points need that shell).
+constexpr auto reach_two_rows = [] {
+    std::array<NeighbourGrid::RowOffset, 25> rows{};
+    for (int dz = -2, r = 0; dz <= 2; ++dz)
         for (int dy = -2; dy <= 2; ++dy) rows[static_cast<std::size_t>(r++)] = {-2, 2, dy, dz};
     return rows;
 }();
@@ -297,14 +297,14 @@ NearestNeighbours nearest_neighbours(std::span<const double> x, std::span<const 
         std::vector<double> cell_best2;
         std::vector<std::uint32_t> cell_best;
         std::vector<NeighbourGrid::Range> shell;
-        const std::span<const NeighbourGrid::RowOffset> row_offsets =
-            g.hashed() ? std::span<const NeighbourGrid::RowOffset>(block_rows_and_reach_two) : block_rows;
-        g.for_each_cell_rows(row_offsets, from, to, [&](std::size_t o, NeighbourGrid::Cell at, const auto& ranges) {
-            const std::span<const NeighbourGrid::Range> block(ranges.data(), std::size(block_rows));
+        std::array<std::size_t, reach_two_rows.size()> reach_two_cursor{};
+        std::vector<NeighbourGrid::Range> reach_two;  // the cell's, once a point of it needs them
+        g.for_each_cell_rows(block_rows, from, to, [&](std::size_t o, NeighbourGrid::Cell at, const auto& block) {
+            reach_two.clear();
             const auto [first, last] = g.occupied_range(o);
             std::uint32_t block_points = 0;
             for (const auto& [b, e] : block) block_points += e - b;
-            rows += row_offsets.size();
+            rows += std::size(block_rows);
             if (block_points > most_block_points) {
                 for (std::uint32_t k = first; k < last; ++k) later.push_back(k);
                 return;
@@ -350,7 +350,12 @@ NearestNeighbours nearest_neighbours(std::span<const double> x, std::span<const 
                     if (reach == 1 && g.hashed()) {
                         // The 5x5x5 block's rows: its inner block's points again too, none of them closer than
                         // best2 (the least over them), so the strict comparison leaves them out as before.
-                        shell.assign(ranges.begin() + std::ssize(block_rows), ranges.end());
+                        if (reach_two.empty()) {
+                            for (std::size_t r = 0; r < reach_two_rows.size(); ++r)
+                                reach_two.push_back(g.offset_row_range(reach_two_rows[r], at, reach_two_cursor[r]));
+                            rows += reach_two_rows.size();
+                        }
+                        shell.assign(reach_two.begin(), reach_two.end());
                     } else {
                         rows += for_each_shell_range(g, at, reach + 1, [&](std::uint32_t b, std::uint32_t e) {
                             shell.push_back({b, e});

@@ -109,7 +109,6 @@ public:
     void for_each_cell_rows(std::span<const RowOffset> rows, std::size_t begin, std::size_t end_cell, F&& f) const {
         std::vector<Range> ranges(rows.size());
         std::vector<std::size_t> cursor(rows.size(), 0);
-        const std::size_t count = occupied();
         Cell c{};
         for (std::size_t o = begin; o < end_cell; ++o) {
             // The next cell along x when the key is one more (no division to decode it).
@@ -117,28 +116,28 @@ public:
                 ++c[0];
             else
                 c = occupied_cell(o);
-            for (std::size_t r = 0; r < rows.size(); ++r) {
-                const RowOffset& row = rows[r];
-                const long long y = static_cast<long long>(c[1]) + row.dy, z = static_cast<long long>(c[2]) + row.dz;
-                const long long x0 = std::max<long long>(0, static_cast<long long>(c[0]) + row.dx0);
-                const long long x1 = std::min<long long>(n_[0] - 1, static_cast<long long>(c[0]) + row.dx1);
-                ranges[r] = {0, 0};
-                if (y < 0 || y >= n_[1] || z < 0 || z >= n_[2] || x0 > x1) continue;
-                const auto yy = static_cast<std::uint32_t>(y), zz = static_cast<std::uint32_t>(z);
-                if (!hashed_) {
-                    ranges[r] = row_range(static_cast<std::uint32_t>(x0), static_cast<std::uint32_t>(x1), yy, zz);
-                    continue;
-                }
-                const std::uint64_t first = key(static_cast<std::uint32_t>(x0), yy, zz);
-                const std::uint64_t last = key(static_cast<std::uint32_t>(x1), yy, zz);
-                std::size_t& at = cursor[r];
-                while (at < count && occupied_keys_[at] < first) ++at;
-                std::size_t end = at;
-                while (end < count && occupied_keys_[end] <= last) ++end;
-                ranges[r] = {start_[at], start_[end]};
-            }
+            for (std::size_t r = 0; r < rows.size(); ++r) ranges[r] = offset_row_range(rows[r], c, cursor[r]);
             f(o, c, ranges);
         }
+    }
+
+    // The sorted range of a row relative to cell c (empty outside the grid). On a hashed grid `cursor`
+    // (0 at first) moves forward through the occupied cells: one cursor serves calls whose cells come in
+    // cell order, each a step or two, without a hash look-up.
+    Range offset_row_range(const RowOffset& row, Cell c, std::size_t& cursor) const {
+        const long long y = static_cast<long long>(c[1]) + row.dy, z = static_cast<long long>(c[2]) + row.dz;
+        const long long x0 = std::max<long long>(0, static_cast<long long>(c[0]) + row.dx0);
+        const long long x1 = std::min<long long>(n_[0] - 1, static_cast<long long>(c[0]) + row.dx1);
+        if (y < 0 || y >= n_[1] || z < 0 || z >= n_[2] || x0 > x1) return {0, 0};
+        const auto yy = static_cast<std::uint32_t>(y), zz = static_cast<std::uint32_t>(z);
+        if (!hashed_) return row_range(static_cast<std::uint32_t>(x0), static_cast<std::uint32_t>(x1), yy, zz);
+        const std::size_t count = occupied_keys_.size();
+        const std::uint64_t first = key(static_cast<std::uint32_t>(x0), yy, zz);
+        const std::uint64_t last = key(static_cast<std::uint32_t>(x1), yy, zz);
+        while (cursor < count && occupied_keys_[cursor] < first) ++cursor;
+        std::size_t end = cursor;
+        while (end < count && occupied_keys_[end] <= last) ++end;
+        return {start_[cursor], start_[end]};
     }
 
     // Calls f(j, r2) for every sorted point j != k within `radius` (r2 < radius^2) of sorted point
