@@ -347,7 +347,7 @@ NearestNeighbours nearest_neighbours(std::span<const double> x, std::span<const 
                         break;
                     }
                     shell.clear();
-                    if (reach == 1 && g.hashed()) {
+                    if (reach == 1 && g.hashed() && !walk_only) {
                         // The 5x5x5 block's rows: its inner block's points again too, none of them closer than
                         // best2 (the least over them), so the strict comparison leaves them out as before.
                         if (reach_two.empty()) {

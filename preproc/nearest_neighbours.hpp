@@ -51,8 +51,9 @@ struct NearestWork {
 
 NearestNeighbours nearest_neighbours_grid(std::span<const double> x, std::span<const double> y,
                                           std::span<const double> z, NearestWork* work = nullptr);
-// The same answers by the grid walk alone, every point's shells to the end (as before the tree): for tests,
-// whose reference it is; its work grows with the cube of the shells a point crosses.
+// The same answers by the grid walk alone, every point's shells to the end and each shell's rows looked up
+// cell by cell (as before the tree): for tests, whose reference it is; its work grows with the cube of the
+// shells a point crosses.
 NearestNeighbours nearest_neighbours_walk_only(std::span<const double> x, std::span<const double> y,
                                                std::span<const double> z, NearestWork* work = nullptr);
 

@@ -57,6 +57,15 @@ std::vector<Cloud> pathological_clouds() {
         c.add(1000, 500, 200);
         clouds.push_back(c);
     }
+    {  // a lattice, one small blob and a stray point: a hashed grid refined once, to cells of about 0.8 of
+       // the spacing, where many points need the second shell (its rows through cursors)
+        Cloud c;
+        c.name = "lattice, a small blob and a stray point";
+        lattice(c, 20, rng);
+        blob(c, 125, 10, 10, 10, 3e-3, rng);
+        c.add(-5e3, 20, 7);
+        clouds.push_back(c);
+    }
     {  // two lattices far apart (a hashed grid)
         Cloud c;
         c.name = "two far clusters";
