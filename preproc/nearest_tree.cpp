@@ -180,8 +180,11 @@ void NearestTree::visit(Query& q, std::uint32_t id) const {
         if (bounds[i].before(q.best)) visit(q, order[i]);
 }
 
+// One pass for both orders (with the shell, and by position alone for the walk's scan of every point).
 NearestFound nearest_by_scan(const NeighbourGrid& g, std::uint32_t k, std::uint64_t& visits) {
+    Key plain{inf, none, none};
     return as_the_walk(g, k, [&](bool by_shell) {
+        if (!by_shell) return NearestFound{plain.d2, plain.position};
         const double px = g.x()[k], py = g.y()[k], pz = g.z()[k];
         const double *gx = g.x().data(), *gy = g.y().data(), *gz = g.z().data();
         const NeighbourGrid::Cell at = g.cell_of(px, py, pz);
@@ -190,9 +193,10 @@ NearestFound nearest_by_scan(const NeighbourGrid& g, std::uint32_t k, std::uint6
         for (std::uint32_t j = 0; j < n; ++j) {
             const double dx = px - gx[j], dy = py - gy[j], dz = pz - gz[j];
             const double r2 = dx * dx + dy * dy + dz * dz;
-            if (j == k || !(r2 <= best.d2)) continue;
-            const Key key{r2, by_shell ? shell_of(at, g.cell_of(gx[j], gy[j], gz[j])) : 0, j};
+            if (j == k || !(r2 <= best.d2)) continue;  // both orders' least distance is the same
+            const Key key{r2, shell_of(at, g.cell_of(gx[j], gy[j], gz[j])), j};
             if (key.before(best)) best = key;
+            if (Key{r2, 0, j}.before(plain)) plain = Key{r2, 0, j};
         }
         visits += n;
         return NearestFound{best.d2, best.position};
