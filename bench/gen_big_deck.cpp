@@ -1,6 +1,6 @@
 // gen_big_deck: write a large, valid LS-DYNA SPH deck for reader benchmarks.
 //
-//   gen_big_deck OUTPUT [NODES]        (NODES defaults to 1000000)
+//   gen_big_deck OUTPUT [NODES] [--clusters]        (NODES defaults to 1000000)
 //
 // The deck holds *KEYWORD, *CONTROL_SPH (IDIM 3, FORM 15), *SECTION_SPH, *PART, *MAT_NULL,
 // *EOS_MURNAGHAN, then NODES *NODE lines (fixed I8,3E16,2I8) on a jittered cubic lattice centred on
@@ -8,6 +8,10 @@
 // so ~106 MB for a million. The output depends only on NODES: the jitter comes from std::mt19937
 // with a fixed seed, turned into reals by hand (std::uniform_real_distribution differs between
 // standard libraries).
+//
+// --clusters adds the nearest-neighbour search's old worst case (bench/README.md, "Tight clusters"): three
+// blobs of 800 particles 3 microns wide inside the lattice (at a quarter, half and three quarters of its
+// diagonal, mid-height) and one stray particle 10 m away, after the lattice's NODES.
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
@@ -23,10 +27,12 @@
 
 namespace {
 
-constexpr double kSpacing = 1.0e-3;          // m
-constexpr double kDensity = 1000.0;          // kg/m^3 (water)
-constexpr double kJitter = 0.1;              // max displacement per axis, in spacings
-constexpr long long kMaxNodes = 99'999'999;  // largest id an I8 field holds
+constexpr double kSpacing = 1.0e-3;           // m
+constexpr double kDensity = 1000.0;           // kg/m^3 (water)
+constexpr double kJitter = 0.1;               // max displacement per axis, in spacings
+constexpr long long kMaxNodes = 99'999'999;   // largest id an I8 field holds
+constexpr int kBlobs = 3, kBlobPoints = 800;  // --clusters
+constexpr double kBlobWidth = 3.0e-6;         // m
 
 // Buffered writer: lines are formatted into one large buffer and flushed with fwrite.
 class Out {
@@ -111,26 +117,35 @@ void write_header(Out& out, long long nodes) {
     out.put(eos);
 }
 
-bool write_deck(std::FILE* f, long long nodes) {
+bool write_deck(std::FILE* f, long long nodes, bool clusters) {
+    const long long lattice_nodes = nodes;
+    if (clusters) nodes += kBlobs * kBlobPoints + 1;
     Out out(f);
     write_header(out, nodes);
 
     // Smallest cube holding `nodes` lattice points, centred on the origin; filled x fastest.
-    auto side = static_cast<long long>(std::ceil(std::cbrt(static_cast<double>(nodes))));
-    while (side * side * side < nodes) ++side;
+    auto side = static_cast<long long>(std::ceil(std::cbrt(static_cast<double>(lattice_nodes))));
+    while (side * side * side < lattice_nodes) ++side;
     const double origin = -0.5 * static_cast<double>(side - 1) * kSpacing;
 
     out.put("*NODE\n");
     out.put("$#   nid               x               y               z      tc      rc\n");
     std::mt19937 rng(20240611u);
     constexpr std::size_t kNodeLine = 8 + 3 * 16 + 2 * 8 + 1;
+    const double extent = static_cast<double>(side - 1) * kSpacing;
     for (long long id = 1; id <= nodes; ++id) {
         const long long k = id - 1;
         const long long lattice[3] = {k % side, (k / side) % side, k / (side * side)};
         char* p = out.reserve(kNodeLine);
         put_int(p, 8, id);
         for (int a = 0; a < 3; ++a) {
-            const double x = origin + (static_cast<double>(lattice[a]) + kJitter * jitter(rng)) * kSpacing;
+            double x = origin + (static_cast<double>(lattice[a]) + kJitter * jitter(rng)) * kSpacing;
+            if (k >= lattice_nodes && k + 1 < nodes) {  // a blob: corner at (f, f, 1/2) of the lattice's box
+                const double f = 0.25 * static_cast<double>(1 + (k - lattice_nodes) / kBlobPoints);
+                x = origin + (a == 2 ? 0.5 : f) * extent + 0.5 * kBlobWidth * (1 + jitter(rng));
+            } else if (k >= lattice_nodes) {  // the stray particle
+                x = origin + extent + 10.0;
+            }
             put_e16(p + 8 + 16 * a, x);
         }
         put_int(p + 56, 8, 0);
@@ -159,15 +174,18 @@ bool write_deck(std::FILE* f, long long nodes) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    const bool clusters = argc >= 3 && std::strcmp(argv[argc - 1], "--clusters") == 0;
+    if (clusters) --argc;
     if (argc < 2 || argc > 3 || std::strcmp(argv[1], "-h") == 0 || std::strcmp(argv[1], "--help") == 0) {
-        std::fprintf(stderr, "usage: %s OUTPUT [NODES]   (NODES defaults to 1000000)\n", argv[0]);
+        std::fprintf(stderr, "usage: %s OUTPUT [NODES] [--clusters]   (NODES defaults to 1000000)\n", argv[0]);
         return 2;
     }
     long long nodes = 1'000'000;
     if (argc == 3) {
         const std::string_view s = argv[2];
         auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), nodes);
-        if (ec != std::errc() || end != s.data() + s.size() || nodes < 1 || nodes > kMaxNodes) {
+        if (ec != std::errc() || end != s.data() + s.size() || nodes < 1 ||
+            nodes > kMaxNodes - (clusters ? kBlobs * kBlobPoints + 1 : 0)) {
             std::fprintf(stderr, "gen_big_deck: NODES must be an integer from 1 to %lld, got '%s'\n", kMaxNodes,
                          argv[2]);
             return 2;
@@ -178,7 +196,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "gen_big_deck: cannot open '%s' for writing: %s\n", argv[1], std::strerror(errno));
         return 1;
     }
-    const bool ok = write_deck(f, nodes);
+    const bool ok = write_deck(f, nodes, clusters);
     if (std::fclose(f) != 0 || !ok) {
         std::fprintf(stderr, "gen_big_deck: write to '%s' failed: %s\n", argv[1], std::strerror(errno));
         return 1;

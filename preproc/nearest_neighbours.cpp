@@ -1,10 +1,12 @@
 #include "preproc/nearest_neighbours.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
 
+#include "preproc/nearest_tree.hpp"
 #include "preproc/neighbour_grid.hpp"
 
 #ifdef _OPENMP
@@ -167,9 +169,11 @@ SPHDECK_CLONES void nearest_in_block(const NeighbourGrid& g, std::uint32_t first
     }
 }
 
-// Calls f(begin, end) for the cells at Chebyshev distance exactly `reach` from cell c.
+// Calls f(begin, end) for the cells at Chebyshev distance exactly `reach` from cell c; returns the rows
+// looked up.
 template <typename F>
-void for_each_shell_range(const NeighbourGrid& g, NeighbourGrid::Cell c, std::uint32_t reach, F&& f) {
+std::uint64_t for_each_shell_range(const NeighbourGrid& g, NeighbourGrid::Cell c, std::uint32_t reach, F&& f) {
+    std::uint64_t rows = 0;
     const auto n = g.cells();
     const long long r = reach;
     const long long x0 = c[0] - r, x1 = c[0] + r;
@@ -180,6 +184,7 @@ void for_each_shell_range(const NeighbourGrid& g, NeighbourGrid::Cell c, std::ui
             const long long iy = c[1] + dy;
             if (iy < 0 || iy >= n[1]) continue;
             const auto row = [&](long long a, long long b) {
+                ++rows;
                 const auto [begin, end] = g.row_range(static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b),
                                                       static_cast<std::uint32_t>(iy), static_cast<std::uint32_t>(iz));
                 if (begin != end) f(begin, end);
@@ -193,6 +198,7 @@ void for_each_shell_range(const NeighbourGrid& g, NeighbourGrid::Cell c, std::ui
             }
         }
     }
+    return rows;
 }
 
 // A spacing from the interquartile box: (product of the quartile ranges / (n / 2^d))^(1/d) over
@@ -231,60 +237,180 @@ NeighbourGrid nearest_neighbour_grid(std::span<const double> x, std::span<const 
     return g;
 }
 
+// Where the grid walk hands a point to the tree (nearest_tree.hpp): a 3x3x3 block of more points than this
+// (a crowded cell: a lattice's block holds about 27), a walk that may pass this reach (a lattice point's
+// stops at reach 1 or 2), or shells of more points than this. Each bounds the walk's work a point.
+constexpr std::uint32_t walk_block_points = 256;
+constexpr std::uint32_t walk_reach = 3;
+constexpr std::uint32_t walk_shell_points = 256;
+// Up to this many points left to the tree, a scan of every point each instead (stray points): a scan costs
+// about a nanosecond a point, building the tree about 300 (measured at 1M points).
+constexpr std::size_t scanned_points = 128;
+
 // The nine rows of the 3x3x3 block around a cell.
 constexpr NeighbourGrid::RowOffset block_rows[] = {{-1, 1, -1, -1}, {-1, 1, 0, -1}, {-1, 1, 1, -1},
                                                    {-1, 1, -1, 0},  {-1, 1, 0, 0},  {-1, 1, 1, 0},
                                                    {-1, 1, -1, 1},  {-1, 1, 0, 1},  {-1, 1, 1, 1}};
 
-}  // namespace
+// The 25 rows of the 5x5x5 block: on a hashed grid the walk's second shell comes from these, through
+// cursors that step through the occupied cells (once a cell that needs them), rather than from a hash
+// look-up per cell of the shell and point (a lattice with a stray point, or blobs: cells smaller than the
+// spacing, and many points need that shell).
+constexpr auto reach_two_rows = [] {
+    std::array<NeighbourGrid::RowOffset, 25> rows{};
+    for (int dz = -2, r = 0; dz <= 2; ++dz)
+        for (int dy = -2; dy <= 2; ++dy) rows[static_cast<std::size_t>(r++)] = {-2, 2, dy, dz};
+    return rows;
+}();
 
-NearestNeighbours nearest_neighbours_grid(std::span<const double> x, std::span<const double> y,
-                                          std::span<const double> z) {
+// The search; `walk_only`: every point walks its shells to the end, as before the tree (tests' reference).
+NearestNeighbours nearest_neighbours(std::span<const double> x, std::span<const double> y, std::span<const double> z,
+                                     NearestWork* work, bool walk_only) {
     const std::size_t n = x.size();
     if (n < 2) return {std::vector<double>(n, 0.0), std::vector<std::uint32_t>(n, NearestNeighbours::none)};
     const NeighbourGrid g = nearest_neighbour_grid(x, y, z);
     // The results after the grid: its binning's cell index of every point (4 bytes a point) is gone by
     // then, and so no longer beside them at the preview's peak of memory (issue 40 item 2).
     NearestNeighbours out{std::vector<double>(n, 0.0), std::vector<std::uint32_t>(n, NearestNeighbours::none)};
+    const auto put = [&](std::uint32_t k, double best2, std::uint32_t best) {
+        const std::uint32_t i = g.order()[k];
+        out.distance[i] = std::sqrt(best2);
+        out.index[i] = best == NearestNeighbours::none ? best : g.order()[best];
+    };
+    const std::uint32_t most_block_points = walk_only ? NearestNeighbours::none : walk_block_points;
+    const std::uint64_t most_shell_points = walk_only ? std::uint64_t(-1) : walk_shell_points;
     // Each point's search is its own and writes only its own entry: contiguous runs of cells
-    // go to the threads, and the numbers are those of one thread.
+    // go to the threads, and the numbers are those of one thread. The points whose walk would be long
+    // (a crowded block, a nearest neighbour shells away) are left to a tree afterwards (nearest_tree.hpp).
     const int threads = pass_threads(n);
     const std::size_t cells = g.occupied();
-#pragma omp parallel for num_threads(threads) schedule(static, 1) if (threads > 1)
+    std::vector<std::vector<std::uint32_t>> left(static_cast<std::size_t>(threads));
+    std::uint64_t distances = 0, rows = 0;
+#pragma omp parallel for num_threads(threads) schedule(static, 1) if (threads > 1) reduction(+ : distances, rows)
     for (int t = 0; t < threads; ++t) {
         const std::size_t from = cells * static_cast<std::size_t>(t) / static_cast<std::size_t>(threads);
         const std::size_t to = cells * static_cast<std::size_t>(t + 1) / static_cast<std::size_t>(threads);
+        std::vector<std::uint32_t>& later = left[static_cast<std::size_t>(t)];
         std::vector<double> cell_best2;
         std::vector<std::uint32_t> cell_best;
+        std::vector<NeighbourGrid::Range> shell;
+        std::array<std::size_t, reach_two_rows.size()> reach_two_cursor{};
+        std::vector<NeighbourGrid::Range> reach_two;  // the cell's, once a point of it needs them
         g.for_each_cell_rows(block_rows, from, to, [&](std::size_t o, NeighbourGrid::Cell at, const auto& block) {
+            reach_two.clear();
             const auto [first, last] = g.occupied_range(o);
+            std::uint32_t block_points = 0;
+            for (const auto& [b, e] : block) block_points += e - b;
+            rows += std::size(block_rows);
+            if (block_points > most_block_points) {
+                for (std::uint32_t k = first; k < last; ++k) later.push_back(k);
+                return;
+            }
+            distances += std::uint64_t{block_points} * (last - first);
             const NeighbourGrid::BlockBounds block_bounds = g.block_bounds(at, 1);  // the cell's, not per point
+            const bool covers_at_one = g.block_covers_grid(at, 1);
             cell_best2.resize(last - first), cell_best.resize(last - first);
             nearest_in_block(g, first, last, block, cell_best2.data(), cell_best.data());
             for (std::uint32_t k = first; k < last; ++k) {
                 double best2 = cell_best2[k - first];
                 std::uint32_t best = cell_best[k - first];
+                // Most walks end with the block (the loop below, at reach 1, in short).
+                const double clear = covers_at_one ? 0.0 : block_bounds.clearance(g.x()[k], g.y()[k], g.z()[k]);
+                if (covers_at_one || (clear > 0 && best2 <= clear * clear)) {
+                    put(k, best2, best);
+                    continue;
+                }
+                // A walk that may pass walk_reach (its best so far farther than that block's clearance): the
+                // tree at once, not after crossing shells of cells, which cost most when the cells are small.
+                if (!walk_only && !g.block_covers_grid(at, walk_reach)) {
+                    const double reach_clear = g.block_clearance(g.x()[k], g.y()[k], g.z()[k], at, walk_reach);
+                    if (!(reach_clear > 0 && best2 <= reach_clear * reach_clear)) {
+                        later.push_back(k);
+                        continue;
+                    }
+                }
                 // Widen shell by shell until nothing outside the searched block can be closer; when the
-                // next block would hold more cells than there are points, scan all points instead.
+                // next block would hold more cells than there are points, scan all points instead; shells
+                // of more than most_shell_points, the tree decides.
+                std::uint64_t walked = 0;
+                bool done = true;
                 for (std::uint32_t reach = 1; !g.block_covers_grid(at, reach); ++reach) {
                     const double clear = reach == 1 ? block_bounds.clearance(g.x()[k], g.y()[k], g.z()[k])
                                                     : g.block_clearance(g.x()[k], g.y()[k], g.z()[k], at, reach);
                     if (clear > 0 && best2 <= clear * clear) break;
                     if (g.block_cells(at, reach + 1) > static_cast<double>(n)) {
                         scan_cells(g, k, 0, static_cast<std::uint32_t>(n), best2, best);
+                        distances += n;
                         break;
                     }
-                    for_each_shell_range(g, at, reach + 1, [&](std::uint32_t b, std::uint32_t e) {
-                        scan_cells(g, k, b, e, best2, best);
-                    });
+                    shell.clear();
+                    if (reach == 1 && g.hashed() && !walk_only) {
+                        // The 5x5x5 block's rows: its inner block's points again too, none of them closer than
+                        // best2 (the least over them), so the strict comparison leaves them out as before.
+                        if (reach_two.empty()) {
+                            for (std::size_t r = 0; r < reach_two_rows.size(); ++r)
+                                reach_two.push_back(g.offset_row_range(reach_two_rows[r], at, reach_two_cursor[r]));
+                            rows += reach_two_rows.size();
+                        }
+                        shell.assign(reach_two.begin(), reach_two.end());
+                    } else {
+                        rows += for_each_shell_range(g, at, reach + 1, [&](std::uint32_t b, std::uint32_t e) {
+                            shell.push_back({b, e});
+                        });
+                    }
+                    for (const auto& [b, e] : shell) walked += e - b;
+                    if (walked > most_shell_points) {
+                        done = false;
+                        break;
+                    }
+                    for (const auto& [b, e] : shell) scan_cells(g, k, b, e, best2, best);
                 }
-                const std::uint32_t i = g.order()[k];
-                out.distance[i] = std::sqrt(best2);
-                out.index[i] = best == NearestNeighbours::none ? best : g.order()[best];
+                distances += walked;
+                if (done)
+                    put(k, best2, best);
+                else
+                    later.push_back(k);
             }
         });
     }
+    std::vector<std::uint32_t> rest;
+    for (const auto& l : left) rest.insert(rest.end(), l.begin(), l.end());
+    std::uint64_t visits = 0;
+    if (rest.size() <= scanned_points) {  // a few stray points: a scan each, cheaper than a tree
+        for (std::uint32_t k : rest) {
+            const NearestFound f = nearest_by_scan(g, k, visits);
+            put(k, f.best2, f.best);
+        }
+    } else {
+        const NearestTree tree(g);
+        visits += tree.building_work();
+        const auto count = static_cast<std::ptrdiff_t>(rest.size());
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 256) if (threads > 1) reduction(+ : visits)
+        for (std::ptrdiff_t r = 0; r < count; ++r) {
+            const std::uint32_t k = rest[static_cast<std::size_t>(r)];
+            const NearestFound f = tree.nearest(k, visits);
+            put(k, f.best2, f.best);
+        }
+    }
+    if (work) {
+        work->distances += distances;
+        work->rows += rows;
+        work->tree_visits += visits;
+        work->left_to_tree += rest.size();
+    }
     return out;
+}
+
+}  // namespace
+
+NearestNeighbours nearest_neighbours_grid(std::span<const double> x, std::span<const double> y,
+                                          std::span<const double> z, NearestWork* work) {
+    return nearest_neighbours(x, y, z, work, false);
+}
+
+NearestNeighbours nearest_neighbours_walk_only(std::span<const double> x, std::span<const double> y,
+                                               std::span<const double> z, NearestWork* work) {
+    return nearest_neighbours(x, y, z, work, true);
 }
 
 NearestNeighbours nearest_neighbours_all_pairs(std::span<const double> x, std::span<const double> y,

@@ -5,6 +5,8 @@
 // - nearest_neighbours_grid: a cell list with ring expansion. The 3x3x3 block of cells around a
 //   point is searched first; the search widens shell by shell until no point outside the block
 //   searched can be closer. The result is therefore exact, not limited to the 27-cell stencil.
+//   A point whose walk would be long (a crowded block, a neighbour many shells away) gets the same
+//   answer from a k-d tree (nearest_tree.hpp): the work stays about n log n on any cloud.
 // - nearest_neighbours_all_pairs: every pair, O(n^2): the reference (INI = 1, "global
 //   computation on all the particles").
 // Both compute the squared distance with the same expression on the same doubles, so their
@@ -40,8 +42,20 @@ int pass_threads(std::size_t points);
 // span (d = 0..3). 0 when the points span no axis.
 double estimated_spacing(std::span<const double> x, std::span<const double> y, std::span<const double> z);
 
+// The work of a search, for tests that bound it: distances evaluated and rows of cells looked up by the
+// grid walk, nodes and points of the tree looked at (nearest_tree.hpp; its building's passes over the
+// points included), and the points left to the tree.
+struct NearestWork {
+    std::uint64_t distances = 0, rows = 0, tree_visits = 0, left_to_tree = 0;
+};
+
 NearestNeighbours nearest_neighbours_grid(std::span<const double> x, std::span<const double> y,
-                                          std::span<const double> z);
+                                          std::span<const double> z, NearestWork* work = nullptr);
+// The same answers by the grid walk alone, every point's shells to the end and each shell's rows looked up
+// cell by cell (as before the tree): for tests, whose reference it is; its work grows with the cube of the
+// shells a point crosses.
+NearestNeighbours nearest_neighbours_walk_only(std::span<const double> x, std::span<const double> y,
+                                               std::span<const double> z, NearestWork* work = nullptr);
 
 // `progress`, when set, is called now and then with the fraction done (0..1).
 NearestNeighbours nearest_neighbours_all_pairs(std::span<const double> x, std::span<const double> y,

@@ -1,6 +1,7 @@
 #include "preproc/neighbour_grid.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -139,10 +140,11 @@ void NeighbourGrid::bin_hashed(std::span<const double> x, std::span<const double
     occupied_keys_.erase(std::unique(occupied_keys_.begin(), occupied_keys_.end()), occupied_keys_.end());
     std::size_t capacity = 16;
     while (capacity < 2 * occupied_keys_.size()) capacity *= 2;
+    table_shift_ = 64 - std::countr_zero(capacity);
     table_keys_.assign(capacity, 0);
     table_ids_.assign(capacity, none);
     for (std::size_t o = 0; o < occupied_keys_.size(); ++o) {
-        std::size_t slot = (occupied_keys_[o] * 0x9E3779B97F4A7C15ull) >> 20 & (capacity - 1);
+        std::size_t slot = slot_of(occupied_keys_[o]);
         while (table_keys_[slot]) slot = (slot + 1) & (capacity - 1);
         table_keys_[slot] = occupied_keys_[o] + 1;
         table_ids_[slot] = static_cast<std::uint32_t>(o);
@@ -200,7 +202,7 @@ NeighbourGrid::Cell NeighbourGrid::decode(std::uint64_t k) const {
 
 std::uint32_t NeighbourGrid::find(std::uint64_t k) const {
     const std::size_t capacity = table_keys_.size();
-    for (std::size_t slot = (k * 0x9E3779B97F4A7C15ull) >> 20 & (capacity - 1);; slot = (slot + 1) & (capacity - 1)) {
+    for (std::size_t slot = slot_of(k);; slot = (slot + 1) & (capacity - 1)) {
         if (table_keys_[slot] == k + 1) return table_ids_[slot];
         if (table_keys_[slot] == 0) return none;
     }

@@ -109,7 +109,6 @@ public:
     void for_each_cell_rows(std::span<const RowOffset> rows, std::size_t begin, std::size_t end_cell, F&& f) const {
         std::vector<Range> ranges(rows.size());
         std::vector<std::size_t> cursor(rows.size(), 0);
-        const std::size_t count = occupied();
         Cell c{};
         for (std::size_t o = begin; o < end_cell; ++o) {
             // The next cell along x when the key is one more (no division to decode it).
@@ -117,28 +116,28 @@ public:
                 ++c[0];
             else
                 c = occupied_cell(o);
-            for (std::size_t r = 0; r < rows.size(); ++r) {
-                const RowOffset& row = rows[r];
-                const long long y = static_cast<long long>(c[1]) + row.dy, z = static_cast<long long>(c[2]) + row.dz;
-                const long long x0 = std::max<long long>(0, static_cast<long long>(c[0]) + row.dx0);
-                const long long x1 = std::min<long long>(n_[0] - 1, static_cast<long long>(c[0]) + row.dx1);
-                ranges[r] = {0, 0};
-                if (y < 0 || y >= n_[1] || z < 0 || z >= n_[2] || x0 > x1) continue;
-                const auto yy = static_cast<std::uint32_t>(y), zz = static_cast<std::uint32_t>(z);
-                if (!hashed_) {
-                    ranges[r] = row_range(static_cast<std::uint32_t>(x0), static_cast<std::uint32_t>(x1), yy, zz);
-                    continue;
-                }
-                const std::uint64_t first = key(static_cast<std::uint32_t>(x0), yy, zz);
-                const std::uint64_t last = key(static_cast<std::uint32_t>(x1), yy, zz);
-                std::size_t& at = cursor[r];
-                while (at < count && occupied_keys_[at] < first) ++at;
-                std::size_t end = at;
-                while (end < count && occupied_keys_[end] <= last) ++end;
-                ranges[r] = {start_[at], start_[end]};
-            }
+            for (std::size_t r = 0; r < rows.size(); ++r) ranges[r] = offset_row_range(rows[r], c, cursor[r]);
             f(o, c, ranges);
         }
+    }
+
+    // The sorted range of a row relative to cell c (empty outside the grid). On a hashed grid `cursor`
+    // (0 at first) moves forward through the occupied cells: one cursor serves calls whose cells come in
+    // cell order, each a step or two, without a hash look-up.
+    Range offset_row_range(const RowOffset& row, Cell c, std::size_t& cursor) const {
+        const long long y = static_cast<long long>(c[1]) + row.dy, z = static_cast<long long>(c[2]) + row.dz;
+        const long long x0 = std::max<long long>(0, static_cast<long long>(c[0]) + row.dx0);
+        const long long x1 = std::min<long long>(n_[0] - 1, static_cast<long long>(c[0]) + row.dx1);
+        if (y < 0 || y >= n_[1] || z < 0 || z >= n_[2] || x0 > x1) return {0, 0};
+        const auto yy = static_cast<std::uint32_t>(y), zz = static_cast<std::uint32_t>(z);
+        if (!hashed_) return row_range(static_cast<std::uint32_t>(x0), static_cast<std::uint32_t>(x1), yy, zz);
+        const std::size_t count = occupied_keys_.size();
+        const std::uint64_t first = key(static_cast<std::uint32_t>(x0), yy, zz);
+        const std::uint64_t last = key(static_cast<std::uint32_t>(x1), yy, zz);
+        while (cursor < count && occupied_keys_[cursor] < first) ++cursor;
+        std::size_t end = cursor;
+        while (end < count && occupied_keys_[end] <= last) ++end;
+        return {start_[cursor], start_[end]};
     }
 
     // Calls f(j, r2) for every sorted point j != k within `radius` (r2 < radius^2) of sorted point
@@ -206,6 +205,11 @@ private:
     std::uint64_t occupied_key(std::size_t o) const { return hashed_ ? occupied_keys_[o] : occupied_cells_[o]; }
     Cell decode(std::uint64_t k) const;
     std::uint32_t find(std::uint64_t k) const;  // occupied id of a hashed cell, or `none`
+    // A key's first slot: the top bits of its product by 2^64 / golden ratio, which every bit of the key
+    // moves (bits 20 and up of the product left out the z of the cell: a column of cells shared a slot).
+    std::size_t slot_of(std::uint64_t k) const {
+        return static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ull) >> table_shift_);
+    }
     Range hashed_row_range(std::uint32_t x0, std::uint32_t x1, std::uint32_t iy, std::uint32_t iz) const;
     void bin_dense(std::span<const double> x, std::span<const double> y, std::span<const double> z);
     void bin_hashed(std::span<const double> x, std::span<const double> y, std::span<const double> z);
@@ -223,6 +227,7 @@ private:
     std::vector<std::uint32_t> occupied_cells_;  // dense
     std::vector<std::uint64_t> occupied_keys_;   // hashed
     std::vector<std::uint64_t> table_keys_;      // hashed: open addressing, key + 1 (0 = empty)
+    int table_shift_ = 60;                       // 64 - log2 of the table's size
     std::vector<std::uint32_t> table_ids_;
     std::vector<std::uint32_t> order_;
     std::vector<double> x_, y_, z_;
