@@ -39,21 +39,6 @@ set(SPHDECK_UNITY_BATCH_SIZE 32 CACHE STRING "Sources per unity batch (cmake/spe
 # SPHDECK_UNITY_BATCH_SIZE: their batch of 32 files is already `make test`'s longest compile.
 set(SPHDECK_ROOM_BATCH_SIZE 64 CACHE STRING "Sources per unity batch of a room and of cli/ (cmake/speed_up.cmake)")
 
-# GCC collects its own garbage every time its heap has grown by ggc-min-expand percent past
-# ggc-min-heapsize (defaults set from the RAM, at most 30 % and 128 MB): in a unity batch of 40-50 CPU s
-# that is 4-5 % of the compile (-ftime-report, "garbage collection"). With 512 MB and 100 % the batches
-# collect once or twice; each compile then peaks at about 1.1 GB instead of 0.8 GB, so only where the
-# machine has 1.5 GB a core. It changes nothing in what is compiled. -DSPHDECK_GCC_LARGER_HEAP=OFF: the defaults.
-option(SPHDECK_GCC_LARGER_HEAP "Let GCC's heap grow to 512 MB before it collects (cmake/speed_up.cmake)" ON)
-if(SPHDECK_GCC_LARGER_HEAP AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
-  cmake_host_system_information(RESULT _sphdeck_ram_mb QUERY TOTAL_PHYSICAL_MEMORY)
-  cmake_host_system_information(RESULT _sphdeck_cores QUERY NUMBER_OF_LOGICAL_CORES)
-  math(EXPR _sphdeck_ram_needed "${_sphdeck_cores} * 1536")
-  if(_sphdeck_ram_mb GREATER_EQUAL _sphdeck_ram_needed)
-    add_compile_options(--param=ggc-min-expand=100 --param=ggc-min-heapsize=524288)
-  endif()
-endif()
-
 # Files that compile alone, with why.
 set(SPHDECK_UNITY_ALONE
   tests/main.cpp  # defines DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN before doctest.h: must come first, without the PCH
