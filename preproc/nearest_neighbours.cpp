@@ -542,32 +542,24 @@ template <bool Uniform, bool Weighted>
     }
 }
 
-// count_cell compiled for AVX2 and the baseline, for uniform and for mixed supports; weighted (points
-// collapsed: a deck with crowds at one place, not worth clones) in the baseline only.
+// count_cell compiled for AVX2 and the baseline, for uniform and for mixed supports, plain or weighted (points
+// collapsed: collapsed_points.hpp).
 using CountCell = void (*)(const NeighbourGrid&, const double*, const std::uint32_t*, std::uint32_t, std::uint32_t,
                            std::span<const NeighbourGrid::Range>, double, std::uint64_t*, std::vector<std::uint32_t>&,
                            const NeighbourGrid::BlockBounds&, double);
-SPHDECK_CLONES void count_cell_uniform(const NeighbourGrid& g, const double* support, const std::uint32_t* weight,
-                                       std::uint32_t first, std::uint32_t last,
-                                       std::span<const NeighbourGrid::Range> ranges, double tol2, std::uint64_t* count,
-                                       std::vector<std::uint32_t>& close_points, const NeighbourGrid::BlockBounds& box,
-                                       double largest) {
-    count_cell<true, false>(g, support, weight, first, last, ranges, tol2, count, close_points, box, largest);
-}
-SPHDECK_CLONES void count_cell_mixed(const NeighbourGrid& g, const double* support, const std::uint32_t* weight,
-                                     std::uint32_t first, std::uint32_t last,
-                                     std::span<const NeighbourGrid::Range> ranges, double tol2, std::uint64_t* count,
-                                     std::vector<std::uint32_t>& close_points, const NeighbourGrid::BlockBounds& box,
-                                     double largest) {
-    count_cell<false, false>(g, support, weight, first, last, ranges, tol2, count, close_points, box, largest);
-}
-template <bool Uniform>
-void count_cell_weighted(const NeighbourGrid& g, const double* support, const std::uint32_t* weight,
-                         std::uint32_t first, std::uint32_t last, std::span<const NeighbourGrid::Range> ranges,
-                         double tol2, std::uint64_t* count, std::vector<std::uint32_t>& close_points,
-                         const NeighbourGrid::BlockBounds& box, double largest) {
-    count_cell<Uniform, true>(g, support, weight, first, last, ranges, tol2, count, close_points, box, largest);
-}
+#define SPHDECK_COUNT_CELL(name, uniform, weighted)                                                                 \
+    SPHDECK_CLONES void name(const NeighbourGrid& g, const double* support, const std::uint32_t* weight,            \
+                             std::uint32_t first, std::uint32_t last, std::span<const NeighbourGrid::Range> ranges, \
+                             double tol2, std::uint64_t* count, std::vector<std::uint32_t>& close_points,           \
+                             const NeighbourGrid::BlockBounds& box, double largest) {                               \
+        count_cell<uniform, weighted>(g, support, weight, first, last, ranges, tol2, count, close_points, box,      \
+                                      largest);                                                                     \
+    }
+SPHDECK_COUNT_CELL(count_cell_uniform, true, false)
+SPHDECK_COUNT_CELL(count_cell_mixed, false, false)
+SPHDECK_COUNT_CELL(count_cell_weighted_uniform, true, true)
+SPHDECK_COUNT_CELL(count_cell_weighted_mixed, false, true)
+#undef SPHDECK_COUNT_CELL
 
 // Every pair once: for each occupied cell, the pairs inside it and with the cells after it in a
 // half-block: the rest of its row, then the rows above it (y + 1 in its plane, the whole next
@@ -588,9 +580,9 @@ void count_symmetric(const NeighbourGrid& g, std::span<const double> support, co
                              [&](std::size_t o, NeighbourGrid::Cell at,
                                  const std::vector<NeighbourGrid::Range>& ranges) {
                                  const auto [first, last] = g.occupied_range(o);
-                                 const CountCell cell = weight    ? count_cell_weighted<Uniform>
-                                                        : Uniform ? count_cell_uniform
-                                                                  : count_cell_mixed;
+                                 const CountCell cell =
+                                     weight ? (Uniform ? count_cell_weighted_uniform : count_cell_weighted_mixed)
+                                            : (Uniform ? count_cell_uniform : count_cell_mixed);
                                  cell(g, support.data(), weight, first, last, ranges, tol2, count.data(), close,
                                       g.block_bounds(at, 0), largest);
                              });
