@@ -1,6 +1,6 @@
 // gen_big_deck: write a large, valid LS-DYNA SPH deck for reader benchmarks.
 //
-//   gen_big_deck OUTPUT [NODES] [--clusters]        (NODES defaults to 1000000)
+//   gen_big_deck OUTPUT [NODES] [--clusters] [--coincident=M]        (NODES defaults to 1000000)
 //
 // The deck holds *KEYWORD, *CONTROL_SPH (IDIM 3, FORM 15), *SECTION_SPH, *PART, *MAT_NULL,
 // *EOS_MURNAGHAN, then NODES *NODE lines (fixed I8,3E16,2I8) on a jittered cubic lattice centred on
@@ -12,6 +12,9 @@
 // --clusters adds the nearest-neighbour search's old worst case (bench/README.md, "Tight clusters"): three
 // blobs of 800 particles 3 microns wide inside the lattice (at a quarter, half and three quarters of its
 // diagonal, mid-height) and one stray particle 10 m away, after the lattice's NODES.
+//
+// --coincident=M adds M particles at one place (the lattice's centre, bit for bit the same coordinates), after
+// the rest: the coincident pairs' worst case (M (M - 1) / 2 pairs, SPH114; bench/README.md).
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
@@ -117,9 +120,11 @@ void write_header(Out& out, long long nodes) {
     out.put(eos);
 }
 
-bool write_deck(std::FILE* f, long long nodes, bool clusters) {
+bool write_deck(std::FILE* f, long long nodes, bool clusters, long long coincident) {
     const long long lattice_nodes = nodes;
     if (clusters) nodes += kBlobs * kBlobPoints + 1;
+    const long long first_coincident = nodes;
+    nodes += coincident;
     Out out(f);
     write_header(out, nodes);
 
@@ -140,7 +145,10 @@ bool write_deck(std::FILE* f, long long nodes, bool clusters) {
         put_int(p, 8, id);
         for (int a = 0; a < 3; ++a) {
             double x = origin + (static_cast<double>(lattice[a]) + kJitter * jitter(rng)) * kSpacing;
-            if (k >= lattice_nodes && k + 1 < nodes) {  // a blob: corner at (f, f, 1/2) of the lattice's box
+            if (k >= first_coincident) {  // one place: the lattice's centre
+                x = origin + 0.5 * extent;
+            } else if (k >= lattice_nodes &&
+                       k + 1 < first_coincident) {  // a blob: corner at (f, f, 1/2) of the lattice's box
                 const double f = 0.25 * static_cast<double>(1 + (k - lattice_nodes) / kBlobPoints);
                 x = origin + (a == 2 ? 0.5 : f) * extent + 0.5 * kBlobWidth * (1 + jitter(rng));
             } else if (k >= lattice_nodes) {  // the stray particle
@@ -174,10 +182,22 @@ bool write_deck(std::FILE* f, long long nodes, bool clusters) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    long long coincident = 0;
+    if (argc >= 3 && std::strncmp(argv[argc - 1], "--coincident=", 13) == 0) {
+        const std::string_view s = argv[argc - 1] + 13;
+        auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), coincident);
+        if (ec != std::errc() || end != s.data() + s.size() || coincident < 0 || coincident > kMaxNodes / 2) {
+            std::fprintf(stderr, "gen_big_deck: --coincident=M takes an integer from 0 to %lld, got '%s'\n",
+                         kMaxNodes / 2, argv[argc - 1]);
+            return 2;
+        }
+        --argc;
+    }
     const bool clusters = argc >= 3 && std::strcmp(argv[argc - 1], "--clusters") == 0;
     if (clusters) --argc;
     if (argc < 2 || argc > 3 || std::strcmp(argv[1], "-h") == 0 || std::strcmp(argv[1], "--help") == 0) {
-        std::fprintf(stderr, "usage: %s OUTPUT [NODES] [--clusters]   (NODES defaults to 1000000)\n", argv[0]);
+        std::fprintf(stderr, "usage: %s OUTPUT [NODES] [--clusters] [--coincident=M]   (NODES defaults to 1000000)\n",
+                     argv[0]);
         return 2;
     }
     long long nodes = 1'000'000;
@@ -185,7 +205,7 @@ int main(int argc, char** argv) {
         const std::string_view s = argv[2];
         auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), nodes);
         if (ec != std::errc() || end != s.data() + s.size() || nodes < 1 ||
-            nodes > kMaxNodes - (clusters ? kBlobs * kBlobPoints + 1 : 0)) {
+            nodes > kMaxNodes - (clusters ? kBlobs * kBlobPoints + 1 : 0) - coincident) {
             std::fprintf(stderr, "gen_big_deck: NODES must be an integer from 1 to %lld, got '%s'\n", kMaxNodes,
                          argv[2]);
             return 2;
@@ -196,7 +216,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "gen_big_deck: cannot open '%s' for writing: %s\n", argv[1], std::strerror(errno));
         return 1;
     }
-    const bool ok = write_deck(f, nodes, clusters);
+    const bool ok = write_deck(f, nodes, clusters, coincident);
     if (std::fclose(f) != 0 || !ok) {
         std::fprintf(stderr, "gen_big_deck: write to '%s' failed: %s\n", argv[1], std::strerror(errno));
         return 1;

@@ -153,7 +153,7 @@ nlohmann::ordered_json to_json(const SmoothArgs& args, const preproc::Preview& p
                                   {"dimension", p.dimension},
                                   {"particles", p.particles.x.size()},
                                   {"ini_forced", args.ini.has_value()},
-                                  {"coincident_pairs", p.coincident.size()},
+                                  {"coincident_pairs", p.coincident_pairs},
                                   {"neighbour_sample_stride", p.neighbour_sample_stride},
                                   {"parts", std::move(parts)}};
     if (p.radioss) out["radioss"] = preproc::radioss_preview_json(*p.radioss);
@@ -221,8 +221,8 @@ void print_smooth(const SmoothArgs& args, const preproc::Preview& p, bool contro
         "'-' when the sound speed c is unknown\n");
     for (const preproc::PartPreview& pv : p.parts)
         for (const std::string& note : preproc::split_notes(pv.notes)) fmt::print("part {}: {}\n", pv.part, note);
-    if (!p.coincident.empty())
-        fmt::print("warning: {} pair(s) of particles at the same position\n", p.coincident.size());
+    if (p.coincident_pairs > 0)
+        fmt::print("warning: {} pair(s) of particles at the same position\n", p.coincident_pairs);
     if (p.radioss) print_radioss(p);
 }
 

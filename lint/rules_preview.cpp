@@ -106,7 +106,7 @@ void check_coincident(RuleContext& c, const Preview& p) {
         const auto [a, b] = p.coincident[k];
         const auto [x, y, z] = particle_position(c, p, b);
         std::string total =
-            k == 0 && p.coincident.size() > 1 ? fmt::format(" ({} pairs in all)", p.coincident.size()) : "";
+            k == 0 && p.coincident_pairs > 1 ? fmt::format(" ({} pairs in all)", p.coincident_pairs) : "";
         c.report("SPH114", c.particle_span(b),
                  fmt::format("particle {} is at the same position as particle {} ({:.6g}, {:.6g}, {:.6g}){}", ids[b],
                              ids[a], x, y, z, total))

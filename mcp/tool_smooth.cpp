@@ -33,7 +33,7 @@ ToolResult run_smooth_tool(const Arguments& args, const ToolContext& context) {
     for (const preproc::PartPreview& p : preview->parts) parts.push_back(json(preproc::part_preview_json(p)));
     json structured = {{"dimension", preview->dimension},
                        {"particles", model.particles.size()},
-                       {"coincident_pairs", preview->coincident.size()},
+                       {"coincident_pairs", preview->coincident_pairs},
                        {"parts", std::move(parts)},
                        {"findings", counts_json(r.diagnostics)}};
     return {std::move(structured), {}};

@@ -6,6 +6,8 @@
 #include <cstring>
 #include <limits>
 
+#include "preproc/collapsed_points.hpp"
+#include "preproc/first_pairs.hpp"
 #include "preproc/nearest_tree.hpp"
 #include "preproc/neighbour_grid.hpp"
 
@@ -447,14 +449,22 @@ namespace {
 // vectorised loop: measured at 1e6 particles, reach 1 was the fastest (0.35 s against 0.46 s).
 constexpr std::uint32_t count_reach = 1;
 
+// The fewest points at one place collapsed into one (collapsed_points.hpp): their pairs alone, 2016, pass
+// coincident_pairs_kept, so a deck with fewer pairs than that bound is counted as before, point by point.
+constexpr std::uint32_t collapsed_least = 64;
+static_assert(std::uint64_t{collapsed_least} * (collapsed_least - 1) / 2 > coincident_pairs_kept);
+
 // Symmetric counting: pairs (k, j) with j in sorted [b, e), all after k, each seen once; both
 // counts grow. `close` counts pairs within the largest tolerance (checked exactly afterwards).
-// Uniform: every point's support is support[0] (one value, no array in grid order).
-template <bool Uniform>
-[[gnu::always_inline]] inline void count_pairs(const NeighbourGrid& g, const double* support, std::uint32_t k,
-                                               std::uint32_t b, std::uint32_t e, double tol2, std::uint64_t* count,
+// Uniform: every point's support is support[0] (one value, no array in grid order). Weighted: a point
+// stands for weight[k] points at its place (collapsed_points.hpp), and a pair counts weight times.
+template <bool Uniform, bool Weighted>
+[[gnu::always_inline]] inline void count_pairs(const NeighbourGrid& g, const double* support,
+                                               const std::uint32_t* weight, std::uint32_t k, std::uint32_t b,
+                                               std::uint32_t e, double tol2, std::uint64_t* count,
                                                std::uint64_t& within, std::uint64_t& close) {
     const double px = g.x()[k], py = g.y()[k], pz = g.z()[k], sk = Uniform ? support[0] : support[k];
+    const std::uint64_t wk = Weighted ? weight[k] : 1;
     const double *gx = g.x().data(), *gy = g.y().data(), *gz = g.z().data();
     const double uniform_r2 = sk * sk;
     std::uint64_t w = 0, c = 0;
@@ -467,8 +477,13 @@ template <bool Uniform>
             radius2 = r * r;
         }
         const std::uint64_t m = r2 < radius2;
-        w += m;
-        count[j] += m;
+        if constexpr (Weighted) {
+            w += m * weight[j];
+            count[j] += m * wk;
+        } else {
+            w += m;
+            count[j] += m;
+        }
         c += r2 <= tol2;
     }
     within += w, close += c;
@@ -488,16 +503,26 @@ inline bool corner_out_of_reach(double gap_y, double gap_z, double reach2) {
 // (y - 1 and y + 1 in the next plane, ranges 2 and 4) are left out for a point whose support
 // cannot reach them, about one point in five: a tenth of the distance evaluations. Inlined into
 // the two cloned functions after it.
-template <bool Uniform>
-[[gnu::always_inline]] inline void count_cell(const NeighbourGrid& g, const double* support, std::uint32_t first,
-                                              std::uint32_t last, std::span<const NeighbourGrid::Range> ranges,
-                                              double tol2, std::uint64_t* count,
-                                              std::vector<std::uint32_t>& close_points,
+template <bool Uniform, bool Weighted>
+[[gnu::always_inline]] inline void count_cell(const NeighbourGrid& g, const double* support,
+                                              const std::uint32_t* weight, std::uint32_t first, std::uint32_t last,
+                                              std::span<const NeighbourGrid::Range> ranges, double tol2,
+                                              std::uint64_t* count, std::vector<std::uint32_t>& close_points,
                                               const NeighbourGrid::BlockBounds& box, double largest) {
     const double slack = 1e-9 * g.cell_size();
     for (std::uint32_t k = first; k < last; ++k) {
         std::uint64_t within = 0, close = 0;
-        count_pairs<Uniform>(g, support, k, k + 1, last, tol2, count, within, close);
+        if constexpr (Weighted) {  // the points k stands for, with each other: the same test as two points'
+            if (weight[k] > 1) {
+                const double dx = g.x()[k] - g.x()[k], dy = g.y()[k] - g.y()[k], dz = g.z()[k] - g.z()[k];
+                const double r2 = dx * dx + dy * dy + dz * dz;
+                const double sk = Uniform ? support[0] : support[k];
+                const double r = Uniform ? sk : 0.5 * (sk + sk);
+                within += std::uint64_t{r2 < r * r} * (weight[k] - 1);
+                close += r2 <= tol2;
+            }
+        }
+        count_pairs<Uniform, Weighted>(g, support, weight, k, k + 1, last, tol2, count, within, close);
         // The farthest any pair of k counts or is close: (|s_k| + |s_j|) / 2 at most, or the tolerance.
         const double reach = Uniform ? std::abs(support[0]) : 0.5 * (std::abs(support[k]) + largest);
         const double reach2 = std::max(reach * reach, tol2) * (1 + 1e-9);
@@ -510,26 +535,31 @@ template <bool Uniform>
         for (std::size_t r = 0; r < ranges.size(); ++r) {
             const auto [b, e] = ranges[r];
             if (b == e || (r == 2 && skip_low) || (r == 4 && skip_high)) continue;
-            count_pairs<Uniform>(g, support, k, b, e, tol2, count, within, close);
+            count_pairs<Uniform, Weighted>(g, support, weight, k, b, e, tol2, count, within, close);
         }
         count[k] += within;
         if (close) close_points.push_back(k);
     }
 }
 
-// count_cell compiled for AVX2 and the baseline, for uniform and for mixed supports.
-SPHDECK_CLONES void count_cell_uniform(const NeighbourGrid& g, const double* support, std::uint32_t first,
-                                       std::uint32_t last, std::span<const NeighbourGrid::Range> ranges, double tol2,
-                                       std::uint64_t* count, std::vector<std::uint32_t>& close_points,
-                                       const NeighbourGrid::BlockBounds& box, double largest) {
-    count_cell<true>(g, support, first, last, ranges, tol2, count, close_points, box, largest);
-}
-SPHDECK_CLONES void count_cell_mixed(const NeighbourGrid& g, const double* support, std::uint32_t first,
-                                     std::uint32_t last, std::span<const NeighbourGrid::Range> ranges, double tol2,
-                                     std::uint64_t* count, std::vector<std::uint32_t>& close_points,
-                                     const NeighbourGrid::BlockBounds& box, double largest) {
-    count_cell<false>(g, support, first, last, ranges, tol2, count, close_points, box, largest);
-}
+// count_cell compiled for AVX2 and the baseline, for uniform and for mixed supports, plain or weighted (points
+// collapsed: collapsed_points.hpp).
+using CountCell = void (*)(const NeighbourGrid&, const double*, const std::uint32_t*, std::uint32_t, std::uint32_t,
+                           std::span<const NeighbourGrid::Range>, double, std::uint64_t*, std::vector<std::uint32_t>&,
+                           const NeighbourGrid::BlockBounds&, double);
+#define SPHDECK_COUNT_CELL(name, uniform, weighted)                                                                 \
+    SPHDECK_CLONES void name(const NeighbourGrid& g, const double* support, const std::uint32_t* weight,            \
+                             std::uint32_t first, std::uint32_t last, std::span<const NeighbourGrid::Range> ranges, \
+                             double tol2, std::uint64_t* count, std::vector<std::uint32_t>& close_points,           \
+                             const NeighbourGrid::BlockBounds& box, double largest) {                               \
+        count_cell<uniform, weighted>(g, support, weight, first, last, ranges, tol2, count, close_points, box,      \
+                                      largest);                                                                     \
+    }
+SPHDECK_COUNT_CELL(count_cell_uniform, true, false)
+SPHDECK_COUNT_CELL(count_cell_mixed, false, false)
+SPHDECK_COUNT_CELL(count_cell_weighted_uniform, true, true)
+SPHDECK_COUNT_CELL(count_cell_weighted_mixed, false, true)
+#undef SPHDECK_COUNT_CELL
 
 // Every pair once: for each occupied cell, the pairs inside it and with the cells after it in a
 // half-block: the rest of its row, then the rows above it (y + 1 in its plane, the whole next
@@ -540,8 +570,8 @@ SPHDECK_CLONES void count_cell_mixed(const NeighbourGrid& g, const double* suppo
 // write disjoint planes and go together, then runs 1, 3, 5... Counts are sums of 0/1 terms, so
 // the order of the additions changes nothing.
 template <bool Uniform>
-void count_symmetric(const NeighbourGrid& g, std::span<const double> support, double tol2, double largest,
-                     std::vector<std::uint64_t>& count, std::vector<std::uint32_t>& close_points) {
+void count_symmetric(const NeighbourGrid& g, std::span<const double> support, const std::uint32_t* weight, double tol2,
+                     double largest, std::vector<std::uint64_t>& count, std::vector<std::uint32_t>& close_points) {
     static constexpr NeighbourGrid::RowOffset half[] = {
         {1, 1, 0, 0}, {-1, 1, 1, 0}, {-1, 1, -1, 1}, {-1, 1, 0, 1}, {-1, 1, 1, 1}};
     static_assert(count_reach == 1, "the half-block rows assume cells as large as the support");
@@ -550,8 +580,10 @@ void count_symmetric(const NeighbourGrid& g, std::span<const double> support, do
                              [&](std::size_t o, NeighbourGrid::Cell at,
                                  const std::vector<NeighbourGrid::Range>& ranges) {
                                  const auto [first, last] = g.occupied_range(o);
-                                 const auto cell = Uniform ? count_cell_uniform : count_cell_mixed;
-                                 cell(g, support.data(), first, last, ranges, tol2, count.data(), close,
+                                 const CountCell cell =
+                                     weight ? (Uniform ? count_cell_weighted_uniform : count_cell_weighted_mixed)
+                                            : (Uniform ? count_cell_uniform : count_cell_mixed);
+                                 cell(g, support.data(), weight, first, last, ranges, tol2, count.data(), close,
                                       g.block_bounds(at, 0), largest);
                              });
     };
@@ -594,9 +626,11 @@ void count_symmetric(const NeighbourGrid& g, std::span<const double> support, do
 }
 
 // Gather counting of every `stride`-th point (in cell order) over its whole block; the others
-// copy the last counted point before them.
-SPHDECK_CLONES void count_sampled(const NeighbourGrid& g, const std::vector<double>& support, std::size_t stride,
-                                  std::vector<std::uint64_t>& count) {
+// copy the last counted point before them. Weighted: as count_pairs.
+template <bool Weighted>
+[[gnu::always_inline]] inline void count_sampled(const NeighbourGrid& g, const std::vector<double>& support,
+                                                 const std::uint32_t* weight, std::size_t stride,
+                                                 std::vector<std::uint64_t>& count) {
     const std::size_t n = g.size();
     const double *gx = g.x().data(), *gy = g.y().data(), *gz = g.z().data(), *s = support.data();
     for (std::size_t k = 0; k < n; k += stride) {
@@ -606,47 +640,75 @@ SPHDECK_CLONES void count_sampled(const NeighbourGrid& g, const std::vector<doub
             for (std::uint32_t j = b; j < e; ++j) {
                 const double dx = px - gx[j], dy = py - gy[j], dz = pz - gz[j];
                 const double rr = 0.5 * (sk + s[j]);
-                w += dx * dx + dy * dy + dz * dz < rr * rr;
+                if constexpr (Weighted)
+                    w += std::uint64_t{dx * dx + dy * dy + dz * dz < rr * rr} * weight[j];
+                else
+                    w += dx * dx + dy * dy + dz * dz < rr * rr;
             }
         });
         if (sk > 0) --w;  // itself
         for (std::size_t i = k; i < std::min(n, k + stride); ++i) count[i] = w;
     }
 }
+SPHDECK_CLONES void count_sampled_plain(const NeighbourGrid& g, const std::vector<double>& support, std::size_t stride,
+                                        std::vector<std::uint64_t>& count) {
+    count_sampled<false>(g, support, nullptr, stride, count);
+}
+void count_sampled_weighted(const NeighbourGrid& g, const std::vector<double>& support, const std::uint32_t* weight,
+                            std::size_t stride, std::vector<std::uint64_t>& count) {
+    count_sampled<true>(g, support, weight, stride, count);
+}
 
 }  // namespace
 
 NeighbourCounts count_neighbours(std::span<const double> x, std::span<const double> y, std::span<const double> z,
-                                 std::span<const double> support, std::span<const double> tolerance,
-                                 double pair_budget) {
+                                 std::span<const double> support, std::span<const double> tolerance, double pair_budget,
+                                 std::size_t kept_pairs) {
     std::vector<std::uint32_t> own(x.size());  // every point its own group
     for (std::size_t i = 0; i < own.size(); ++i) own[i] = static_cast<std::uint32_t>(i);
-    return count_neighbours(x, y, z, GroupedRadii{own, support, tolerance}, pair_budget);
+    return count_neighbours(x, y, z, GroupedRadii{own, support, tolerance}, pair_budget, kept_pairs);
+}
+
+bool coincident_at(double ax, double ay, double az, double bx, double by, double bz, double t) {
+    const double dx = ax - bx, dy = ay - by, dz = az - bz;
+    return dx * dx + dy * dy + dz * dz <= t * t;
 }
 
 NeighbourCounts count_neighbours(std::span<const double> x, std::span<const double> y, std::span<const double> z,
-                                 const GroupedRadii& radii, double pair_budget) {
+                                 const GroupedRadii& radii, double pair_budget, std::size_t kept_pairs) {
     const std::size_t n = x.size();
     NeighbourCounts out;
     if (n == 0) return out;
-    const auto support_of = [&](std::size_t i) { return radii.support[radii.group[i]]; };
-    const auto tolerance_of = [&](std::size_t i) { return radii.tolerance[radii.group[i]]; };
     // The largest values over the points (not over the groups: a group without points must not
     // change the grid), and whether one support serves every point.
     double largest_support = 0, largest_tolerance = 0, largest_reach = 0;  // the last: of |support|
     bool uniform = true;
     const int threads = pass_threads(n);
+    {
+        const auto support_of = [&](std::size_t i) { return radii.support[radii.group[i]]; };
+        const auto tolerance_of = [&](std::size_t i) { return radii.tolerance[radii.group[i]]; };
 #pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1) \
     reduction(max : largest_support, largest_tolerance, largest_reach) reduction(&& : uniform)
-    for (std::size_t i = 0; i < n; ++i) {
-        largest_support = std::max(largest_support, support_of(i));
-        largest_reach = std::max(largest_reach, std::abs(support_of(i)));
-        largest_tolerance = std::max(largest_tolerance, tolerance_of(i));
-        uniform = uniform && support_of(i) == support_of(0);
+        for (std::size_t i = 0; i < n; ++i) {
+            largest_support = std::max(largest_support, support_of(i));
+            largest_reach = std::max(largest_reach, std::abs(support_of(i)));
+            largest_tolerance = std::max(largest_tolerance, tolerance_of(i));
+            uniform = uniform && support_of(i) == support_of(0);
+        }
     }
     double cell = std::max(largest_support, largest_tolerance) / count_reach;
     if (cell <= 0) cell = estimated_spacing(x, y, z);
     NeighbourGrid g(x, y, z, cell);
+    // Crowds at one place counted as one point each (collapsed_points.hpp): the grid is then over the
+    // collapsed points, `weight` (in grid order) says how many each stands for.
+    const CollapsedPoints collapsed = collapse_coincident(g, radii, collapsed_least);
+    if (!collapsed.empty()) g = NeighbourGrid(collapsed.x, collapsed.y, collapsed.z, cell);
+    const std::size_t points = g.size();
+    // Point p of the grid's input: an input point, or a collapsed one.
+    const std::span<const std::uint32_t> group =
+        collapsed.empty() ? radii.group : std::span<const std::uint32_t>(collapsed.group);
+    const auto support_of = [&](std::size_t p) { return radii.support[group[p]]; };
+    const auto tolerance_of = [&](std::size_t p) { return radii.tolerance[group[p]]; };
     const auto& order = g.order();
     // The distance evaluations a count takes: points per cell times points in its half-block.
     double work = 0;
@@ -659,47 +721,73 @@ NeighbourCounts count_neighbours(std::span<const double> x, std::span<const doub
     if (pair_budget <= 0) pair_budget = std::max(5.0e8, 400.0 * static_cast<double>(n));
     const bool sampled = work > pair_budget;
     // Supports in grid order: one value when uniform (and not sampled, which reads an array).
-    std::vector<double> s(uniform && !sampled ? 1 : n);
+    std::vector<double> s(uniform && !sampled ? 1 : points);
     if (s.size() == 1) {
         s[0] = support_of(0);
     } else {
 #pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
-        for (std::size_t k = 0; k < n; ++k) s[k] = support_of(order[k]);
+        for (std::size_t k = 0; k < points; ++k) s[k] = support_of(order[k]);
     }
-    std::vector<std::uint64_t> count(n, 0);
+    std::vector<std::uint32_t> weight;  // empty when nothing was collapsed
+    if (!collapsed.empty()) {
+        weight.resize(points);
+        for (std::size_t k = 0; k < points; ++k) weight[k] = collapsed.weight[order[k]];
+    }
+    const std::uint32_t* w = weight.empty() ? nullptr : weight.data();
+    std::vector<std::uint64_t> count(points, 0);
     std::vector<std::uint32_t> close_points;
     if (sampled) {
         // A sampled point costs its whole block (twice its half-block): a quarter of the budget.
         out.sample_stride = static_cast<std::size_t>(std::ceil(8 * work / pair_budget));
-        count_sampled(g, s, out.sample_stride, count);
+        if (w)
+            count_sampled_weighted(g, s, w, out.sample_stride, count);
+        else
+            count_sampled_plain(g, s, out.sample_stride, count);
     } else if (uniform) {
-        count_symmetric<true>(g, s, largest_tolerance * largest_tolerance, largest_reach, count, close_points);
+        count_symmetric<true>(g, s, w, largest_tolerance * largest_tolerance, largest_reach, count, close_points);
     } else {
-        count_symmetric<false>(g, s, largest_tolerance * largest_tolerance, largest_reach, count, close_points);
+        count_symmetric<false>(g, s, w, largest_tolerance * largest_tolerance, largest_reach, count, close_points);
     }
     std::vector<double>().swap(s);  // given back (`s = {}` would keep its capacity)
-    // Coincident pairs: the few points with a pair inside the largest tolerance, checked exactly.
+    // Coincident pairs: the few points with a pair inside the largest tolerance, checked exactly. Each such
+    // point is the first (in grid order) of its pairs (count_cell), so the pairs with the points after it in
+    // its block are every pair once: all counted, the first `kept_pairs` kept (first_pairs.hpp).
+    const auto members = [&](std::uint32_t k) {
+        return collapsed.empty() ? std::span<const std::uint32_t>(&order[k], 1) : collapsed.members_of(order[k]);
+    };
+    FirstPairs first(kept_pairs);
+    std::uint64_t total = 0;
     for (std::uint32_t k : close_points) {
-        const std::uint32_t i = order[k];
-        g.for_each_block_range(g.cell_of(g.x()[k], g.y()[k], g.z()[k]), count_reach,
-                               [&](std::uint32_t b, std::uint32_t e) {
-                                   for (std::uint32_t j = b; j < e; ++j) {
-                                       const double dx = g.x()[k] - g.x()[j], dy = g.y()[k] - g.y()[j],
-                                                    dz = g.z()[k] - g.z()[j];
-                                       const double t = std::max(tolerance_of(i), tolerance_of(order[j]));
-                                       if (j != k && dx * dx + dy * dy + dz * dz <= t * t)
-                                           out.coincident.emplace_back(std::min(i, order[j]), std::max(i, order[j]));
-                                   }
-                               });
+        const std::uint32_t p = order[k];
+        const double px = g.x()[k], py = g.y()[k], pz = g.z()[k];
+        const std::uint64_t wk = w ? w[k] : 1;
+        if (wk > 1 && coincident_at(px, py, pz, px, py, pz, tolerance_of(p))) {  // its points with each other
+            total += wk * (wk - 1) / 2;
+            first.offer_among(members(k));
+        }
+        g.for_each_block_range(g.cell_of(px, py, pz), count_reach, [&](std::uint32_t b, std::uint32_t e) {
+            for (std::uint32_t j = std::max(b, k + 1); j < e; ++j) {
+                const double t = std::max(tolerance_of(p), tolerance_of(order[j]));
+                if (!coincident_at(px, py, pz, g.x()[j], g.y()[j], g.z()[j], t)) continue;
+                total += wk * (w ? w[j] : 1);
+                first.offer_between(members(k), members(j));
+            }
+        });
     }
-    std::sort(out.coincident.begin(), out.coincident.end());
-    out.coincident.erase(std::unique(out.coincident.begin(), out.coincident.end()), out.coincident.end());
+    out.coincident = std::move(first).sorted();
+    out.coincident_pairs = total;
     // The counts in input order, made once the grid's coordinates are gone: not beside them and the
     // counts in grid order at the preview's peak of memory (4 bytes a point, issue 40).
     const std::vector<std::uint32_t> input_of = std::move(g).release_order();
     out.count.resize(n);
+    if (collapsed.empty()) {
 #pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
-    for (std::size_t k = 0; k < n; ++k) out.count[input_of[k]] = static_cast<std::uint32_t>(count[k]);
+        for (std::size_t k = 0; k < n; ++k) out.count[input_of[k]] = static_cast<std::uint32_t>(count[k]);
+    } else {
+        std::vector<std::uint32_t> of_point(points);
+        for (std::size_t k = 0; k < points; ++k) of_point[input_of[k]] = static_cast<std::uint32_t>(count[k]);
+        for (std::size_t i = 0; i < n; ++i) out.count[i] = of_point[collapsed.of[i]];
+    }
     return out;
 }
 

@@ -20,6 +20,7 @@
 // rule of *SECTION_SPH Remark 1 for both.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <span>
@@ -62,11 +63,19 @@ NearestNeighbours nearest_neighbours_all_pairs(std::span<const double> x, std::s
                                                std::span<const double> z,
                                                const std::function<void(double)>& progress = {});
 
+// The coincident pairs kept (the first, in order), whatever their number: m particles at one place make
+// m (m - 1) / 2 pairs, which must not cost memory without bound. More than the rules list (SPH114's 20),
+// and more than any deck's of the corpus (the editor's followed preview needs every pair and recomputes
+// past this: preview_follow.hpp); 8 KB.
+inline constexpr std::size_t coincident_pairs_kept = 1000;
+
 struct NeighbourCounts {
     // Per point: the other points j with r_ij < (support_i + support_j) / 2.
     std::vector<std::uint32_t> count;
-    // Pairs (i < j) closer than max(tolerance_i, tolerance_j), or at distance 0.
+    // Pairs (i < j) closer than max(tolerance_i, tolerance_j), or at distance 0 (coincident_at): all of
+    // them counted, the first `kept_pairs` (in order) kept. None when the counts were sampled.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> coincident;
+    std::uint64_t coincident_pairs = 0;
     // 1 when every point was counted; k when only every k-th point (in cell order) was and the
     // others copy the count of the last counted point before them: the work was over budget
     // (supports of many spacings, usually an h0 inflated by a stray particle).
@@ -75,10 +84,12 @@ struct NeighbourCounts {
 
 // Neighbour counts within the kernel support (a radius per point: kernel factor * h), on a grid
 // with cells as large as the largest support; each pair is evaluated once. `pair_budget` bounds
-// the distance evaluations (0: max(5e8, 400 per point), about a second).
+// the distance evaluations (0: max(5e8, 400 per point), about a second). Points at one place (64 or
+// more with one support and tolerance) are counted as one point of that weight: the work stays about
+// n log n however the points crowd (collapsed_points.hpp), with the same counts and pairs.
 NeighbourCounts count_neighbours(std::span<const double> x, std::span<const double> y, std::span<const double> z,
                                  std::span<const double> support, std::span<const double> tolerance,
-                                 double pair_budget = 0);
+                                 double pair_budget = 0, std::size_t kept_pairs = coincident_pairs_kept);
 
 // Support and tolerance shared by groups of points (the parts of a deck): point i has
 // support[group[i]] and tolerance[group[i]]. The same counts as above without two arrays of a
@@ -88,7 +99,12 @@ struct GroupedRadii {
     std::span<const double> support, tolerance;  // per group
 };
 NeighbourCounts count_neighbours(std::span<const double> x, std::span<const double> y, std::span<const double> z,
-                                 const GroupedRadii& radii, double pair_budget = 0);
+                                 const GroupedRadii& radii, double pair_budget = 0,
+                                 std::size_t kept_pairs = coincident_pairs_kept);
+
+// Whether points a and b make a coincident pair of count_neighbours, t the larger of their tolerances:
+// the very expression of its check (compiled without contraction, as the counts are).
+bool coincident_at(double ax, double ay, double az, double bx, double by, double bz, double t);
 
 // The same by brute force over all pairs, for tests.
 std::vector<std::uint32_t> count_neighbours_all_pairs(std::span<const double> x, std::span<const double> y,

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <span>
 #include <fmt/format.h>
 
@@ -213,6 +214,30 @@ void preview_part(const model::Model& m, const ParticlePositions& at, const Part
     pv.dt_radioss = radioss_particle_time_step(pv.h0, c.c, tssfac);
 }
 
+// The coincident pairs found so far (each part's nearest neighbours within the tolerance, or a kept
+// preview's pairs) merged with the counts' (model indices; all counted, the first kept): the pairs so far
+// that the counts' check does not hold for (or all, when the counts were sampled and checked none) are
+// the ones added to theirs, each pair once. Then the first coincident_pairs_kept kept.
+void merge_coincident(const ParticlePositions& at, Preview& out,
+                      const std::vector<std::pair<std::uint32_t, std::uint32_t>>& counted, std::uint64_t total,
+                      bool checked) {
+    auto& found = out.coincident;
+    std::sort(found.begin(), found.end());
+    found.erase(std::unique(found.begin(), found.end()), found.end());
+    const auto tolerance = [&](std::uint32_t i) { return 1e-9 * out.parts[out.particles.part[i]].spacing; };
+    for (auto [a, b] : found)
+        if (!checked ||
+            !coincident_at(at.x(a), at.y(a), at.z(a), at.x(b), at.y(b), at.z(b), std::max(tolerance(a), tolerance(b))))
+            ++total;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> merged;
+    merged.reserve(std::min(coincident_pairs_kept, found.size() + counted.size()));
+    std::set_union(found.begin(), found.end(), counted.begin(), counted.end(), std::back_inserter(merged));
+    if (merged.size() > coincident_pairs_kept) merged.resize(coincident_pairs_kept);
+    merged.shrink_to_fit();
+    out.coincident = std::move(merged);
+    out.coincident_pairs = total;
+}
+
 // Neighbour counts of every located particle, all parts on one grid. Support and tolerance are
 // the part's (per particle on Radioss decks, where h is per particle).
 void count_all_neighbours(const ParticlePositions& at, Preview& out) {
@@ -226,7 +251,7 @@ void count_all_neighbours(const ParticlePositions& at, Preview& out) {
     if (!all_located)
         for (std::size_t i = 0; i < n; ++i)
             if (pp.located[i]) located.push_back(static_cast<std::uint32_t>(i));
-    if (!all_located && located.empty()) return;
+    if (!all_located && located.empty()) return merge_coincident(at, out, {}, 0, false);
     const std::size_t m = all_located ? n : located.size();
     const auto model_index = [&](std::size_t k) { return all_located ? k : std::size_t{located[k]}; };
     // Positions: the model's own arrays when every particle has a node and they come in node
@@ -275,9 +300,10 @@ void count_all_neighbours(const ParticlePositions& at, Preview& out) {
                              fmt::format("neighbours counted for every {}th particle only (too many per particle)",
                                          counts.sample_stride));
     }
-    for (auto [a, b] : counts.coincident)
-        out.coincident.emplace_back(static_cast<std::uint32_t>(model_index(a)),
-                                    static_cast<std::uint32_t>(model_index(b)));
+    // Model indices grow with the located ones: the pairs stay in order.
+    for (auto& [a, b] : counts.coincident)
+        a = static_cast<std::uint32_t>(model_index(a)), b = static_cast<std::uint32_t>(model_index(b));
+    merge_coincident(at, out, counts.coincident, counts.coincident_pairs, counts.sample_stride == 1);
 }
 
 }  // namespace
@@ -331,7 +357,7 @@ Preview compute(const model::Model& m, const PreviewOptions& options, const Prev
     groups = PartGroups{};
     if (pp.nn_distance.size() != n) pp.nn_distance.assign(n, 0.0);  // no part had a located particle
     if (out.radioss) radioss_count_ghosts(out);
-    if (old) out.coincident = old->coincident;  // the same places, the same spacings
+    if (old) out.coincident = old->coincident, out.coincident_pairs = old->coincident_pairs;  // the same places
     const auto same_supports = [&] {
         for (std::size_t q = 0; q < out.parts.size(); ++q)
             if (out.parts[q].support != old->parts[q].support) return false;
@@ -348,10 +374,8 @@ Preview compute(const model::Model& m, const PreviewOptions& options, const Prev
                                              old->neighbour_sample_stride));
         }
     } else {
-        count_all_neighbours(at, out);
+        count_all_neighbours(at, out);  // merges the pairs so far with the counts'
     }
-    std::sort(out.coincident.begin(), out.coincident.end());
-    out.coincident.erase(std::unique(out.coincident.begin(), out.coincident.end()), out.coincident.end());
     progress(1.0);
     return out;
 }
@@ -360,7 +384,8 @@ Preview compute(const model::Model& m, const PreviewOptions& options, const Prev
 Preview compute_preview(const model::Model& m, const PreviewOptions& options) { return compute(m, options, nullptr); }
 
 std::optional<Preview> recompute_settings(const model::Model& m, const Preview& old, const PreviewOptions& options) {
-    if (m.radioss || old.radioss || old.particles.nn_distance.size() != m.particles.size() || options.ini)
+    if (m.radioss || old.radioss || old.particles.nn_distance.size() != m.particles.size() || options.ini ||
+        old.coincident.size() != old.coincident_pairs)
         return std::nullopt;
     return compute(m, options, &old);
 }

@@ -74,8 +74,11 @@ struct Preview {
     ParticlePreview particles;
     // Added beyond the shared interface:
     // Pairs of particles (model indices, first < second) at the same position: closer than 1e-9
-    // times their part's spacing, or at distance 0; any parts.
+    // times their part's spacing, or at distance 0; any parts. `coincident_pairs` of them in all, the
+    // first (in order) kept, at most coincident_pairs_kept (nearest_neighbours.hpp): m particles at one
+    // place make m (m - 1) / 2 pairs.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> coincident;
+    std::uint64_t coincident_pairs = 0;
     // 1 when every particle's neighbours were counted; k when only every k-th was (too much work,
     // usually a smoothing length inflated by a stray particle) and the others copy a nearby count.
     std::size_t neighbour_sample_stride = 1;
@@ -86,7 +89,8 @@ Preview compute_preview(const model::Model& model, const PreviewOptions& options
 // `old` is the preview of the same particles, in the same parts, at the same places (the caller
 // checks it: engine/preview_reuse.hpp). What depends on the places alone is kept (nearest distances,
 // coincident pairs), the counts too when no support moved; the rest is computed again. nullopt on
-// Radioss decks and with PreviewOptions::ini.
+// Radioss decks, with PreviewOptions::ini, and when `old` kept only the first of its coincident pairs
+// (they could not be merged with the counts' again).
 std::optional<Preview> recompute_settings(const model::Model& model, const Preview& old,
                                           const PreviewOptions& options = {});
 }  // namespace sphdeck::preproc

@@ -171,6 +171,11 @@ public:
         search_again();
         std::sort(out_.coincident.begin(), out_.coincident.end());
         out_.coincident.erase(std::unique(out_.coincident.begin(), out_.coincident.end()), out_.coincident.end());
+        out_.coincident_pairs = out_.coincident.size();  // every pair (applies()), the first kept
+        if (out_.coincident.size() > coincident_pairs_kept) {
+            out_.coincident.resize(coincident_pairs_kept);
+            out_.coincident.shrink_to_fit();
+        }
         if (!part_statistics()) return std::nullopt;
         return std::move(out_);
     }
@@ -180,6 +185,7 @@ private:
         const ParticlePreview& pp = old_.particles;
         return !before_.radioss && !now_.radioss && !old_.radioss && pp.x.empty() &&
                old_.neighbour_sample_stride == 1 && pp.neighbours.size() == before_.particles.size() &&
+               old_.coincident.size() == old_.coincident_pairs &&  // every pair kept, to renumber
                pp.part.size() == before_.particles.size() && pp.nn_distance.size() == before_.particles.size() &&
                now_.particles.size() > 0;
     }

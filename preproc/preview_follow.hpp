@@ -11,10 +11,11 @@
 // compares them after random moves, additions and removals), or nothing where it does not apply:
 // then the caller recomputes. It does not apply when a part's h0 moves (every support of the part
 // would change), when its spacing moves on a deck of several parts or with particles at about one
-// place (the tolerance of the coincident pairs moves with it), when a part appears or empties, when a changed particle
-// has no node, when more than `max_changed` particles changed, on Radioss decks, and on a preview kept without
-// per-particle counts (PreviewOptions::neighbour_counts) or with the other per-particle arrays
-// (PreviewOptions::particle_arrays).
+// place (the tolerance of the coincident pairs moves with it), when a part appears or empties, when a
+// changed particle has no node, when more than `max_changed` particles changed, when the preview kept
+// only the first of its coincident pairs (more than coincident_pairs_kept: the others' would be unknown),
+// on Radioss decks, and on a preview kept without per-particle counts (PreviewOptions::neighbour_counts)
+// or with the other per-particle arrays (PreviewOptions::particle_arrays).
 #pragma once
 
 #include <cstddef>

@@ -83,8 +83,9 @@ std::string difference(const preproc::Preview& a, const preproc::Preview& b) {
             return fmt::format("particle {}: {} neighbours against {}", i, x.neighbours[i], y.neighbours[i]);
     }
     if (x.nn_distance.size() != y.nn_distance.size() || x.neighbours.size() != y.neighbours.size()) return "sizes";
-    if (a.coincident != b.coincident)
-        return fmt::format("coincident pairs: {} against {}", a.coincident.size(), b.coincident.size());
+    if (a.coincident != b.coincident || a.coincident_pairs != b.coincident_pairs)
+        return fmt::format("coincident pairs: {} ({} kept) against {} ({} kept)", a.coincident_pairs,
+                           a.coincident.size(), b.coincident_pairs, b.coincident.size());
     return {};
 }
 
