@@ -64,14 +64,12 @@ std::vector<std::string> include_paths_for(const std::string& deck, const Format
     return paths;
 }
 
-// Reads and checks one input: a file, or standard input ("-") named and resolved as --stdin-filename says.
-engine::CheckResult read_input(const CheckInput& input, const FormatArgs& args,
-                               const std::vector<std::string>& include_paths) {
+// How a deck is checked for its layout: read as grammar::read_deck with these include paths reads it.
+engine::CheckOptions check_options(const std::vector<std::string>& include_paths) {
     engine::CheckOptions options;
     options.rules.geometry = false;  // the layout needs the reading's findings, not the particles' geometry
     options.reader.include_paths = include_paths;
-    if (input.path != "-") return engine::check_file(input.path, options);
-    return check_deck_input("-", args.stdin_filename, options);
+    return options;
 }
 
 // A deck and its formatting. Most decks are laid out already, and then the layout needs only the reading
@@ -88,19 +86,21 @@ FormattedDeck read_and_format(const CheckInput& input, const FormatArgs& args, c
     std::string anchor = input.path;  // where the configuration is looked for
     if (input.path == "-") anchor = args.stdin_filename.empty() ? "." : deck_display_name("-", args.stdin_filename);
     const std::vector<std::string> include_paths = include_paths_for(anchor, args);
+    const engine::CheckOptions check = check_options(include_paths);
     FormattedDeck out;
-    if (input.path != "-") {                  // standard input can be read once: it is checked at once
-        grammar::dyna::ReaderOptions reader;  // as engine::check_file reads it
-        reader.include_paths = include_paths;
-        out.read = grammar::read_deck(input.path, reader);
+    if (input.path != "-") {  // standard input can be read once: it is checked at once
+        out.read = grammar::read_deck(input.path, check.reader);  // as the check reads it
         out.files = edit::files_to_format(*out.read, options.includes);
         if (auto formatted = edit::format_deck_without_findings(*out.read, out.files, options)) {
             out.formatted = std::move(*formatted);
             return out;
         }
-        out.read.reset();  // the check reads it again: never two copies at once
+        // A line may change or be kept: the check takes the reading over, the deck is not read again.
+        out.checked = engine::check_read_file(input.path, std::move(*out.read), check);
+        out.read.reset();
+    } else {
+        out.checked = check_deck_input("-", args.stdin_filename, check);
     }
-    out.checked = read_input(input, args, include_paths);
     out.files = edit::files_to_format(out.checked->deck, options.includes);
     out.formatted = edit::format_deck(out.checked->deck, out.checked->diagnostics, out.files, options);
     return out;

@@ -169,10 +169,13 @@ CheckResult check_deck(const std::string& path, const Documents& documents, cons
 }
 
 CheckResult check_file(const std::string& path, const CheckOptions& options) {
-    return finish(grammar::read_deck(path, options.reader), options,
-                  [&](const grammar::dyna::ReaderOptions& reader, const grammar::RawDeck&) {
-                      return grammar::read_deck(path, reader);
-                  });
+    return check_read_file(path, grammar::read_deck(path, options.reader), options);
+}
+
+CheckResult check_read_file(const std::string& path, grammar::RawDeck deck, const CheckOptions& options) {
+    return finish(std::move(deck), options, [&](const grammar::dyna::ReaderOptions& reader, const grammar::RawDeck&) {
+        return grammar::read_deck(path, reader);
+    });
 }
 
 namespace {

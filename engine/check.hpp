@@ -69,6 +69,11 @@ CheckResult check_deck(const std::string& path, const Documents& documents, cons
 // The same with every file from disk.
 CheckResult check_file(const std::string& path, const CheckOptions& options = {});
 
+// check_file of a deck the caller has read already, `deck` = grammar::read_deck(path, options.reader):
+// the same result without reading it a second time (`sphdeck format` reads first and checks only when
+// a line changes).
+CheckResult check_read_file(const std::string& path, grammar::RawDeck deck, const CheckOptions& options = {});
+
 // A deck that exists only in memory under `name` (tests, fuzzing); relative includes are searched
 // from `base_directory`. `format`: the reader to use (LS-DYNA unless told; nullopt detects it from the
 // text and name).

@@ -2,6 +2,7 @@
 // messages out, parsed. For tests/test_mcp_*.cpp.
 #pragma once
 
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -42,9 +43,21 @@ inline std::string mcp_initialize(const json& capabilities = json::object(),
 
 inline const std::string mcp_initialized = R"({"jsonrpc":"2.0","method":"notifications/initialized"})";
 
-// initialize, then tools/call of `tool` (id 2) without roots (the root is the working directory): the
-// answer to the call.
-inline json mcp_call(const std::string& tool, const json& arguments) {
+// The working directory set to `folder` for a scope, and back however the scope ends.
+struct InFolder {
+    std::filesystem::path before = std::filesystem::current_path();
+    explicit InFolder(const std::filesystem::path& folder) { std::filesystem::current_path(folder); }
+    ~InFolder() { std::filesystem::current_path(before); }
+    InFolder(const InFolder&) = delete;
+    InFolder& operator=(const InFolder&) = delete;
+};
+
+// initialize, then tools/call of `tool` (id 2) without roots, run from `root` (the root is then the working
+// directory): the answer to the call. The source folder by default, so that "decks/..." is found from
+// wherever the tests run (ctest runs them there, a developer perhaps from build/).
+inline json mcp_call(const std::string& tool, const json& arguments,
+                     const std::filesystem::path& root = SPHDECK_SOURCE_DIR) {
+    InFolder in(root);
     const auto out = mcp_exchange(
         {mcp_initialize(), mcp_initialized, mcp_request(2, "tools/call", {{"name", tool}, {"arguments", arguments}})});
     REQUIRE(out.size() == 2);
@@ -52,8 +65,9 @@ inline json mcp_call(const std::string& tool, const json& arguments) {
 }
 
 // The structured result of a call that must succeed.
-inline json mcp_result(const std::string& tool, const json& arguments) {
-    const json answer = mcp_call(tool, arguments);
+inline json mcp_result(const std::string& tool, const json& arguments,
+                       const std::filesystem::path& root = SPHDECK_SOURCE_DIR) {
+    const json answer = mcp_call(tool, arguments, root);
     INFO(answer.dump());
     REQUIRE(answer.contains("result"));
     REQUIRE(answer["result"]["isError"] == false);

@@ -48,6 +48,24 @@ TEST_CASE("engine: a deck given as an in-memory document gives the findings it g
     CHECK(findings(engine::check_deck(kDeck, engine::Documents{})) == findings(disk));
 }
 
+TEST_CASE("engine: check_read_file of a deck read already gives check_file's findings and includes") {
+    // sphdeck format reads a deck, then checks that reading (not the file again) when a line changes.
+    const std::string source = std::string(SPHDECK_SOURCE_DIR) + "/decks/";
+    for (const std::string& deck : {kDeck, source + "tests/dk/DK003_fires_realign.k",  // with fixes
+                                    source + "sol2sph/bumper_0000.rad"}) {
+        CAPTURE(deck);
+        const engine::CheckResult disk = engine::check_file(deck);
+        engine::CheckOptions options;
+        const engine::CheckResult read =
+            engine::check_read_file(deck, grammar::read_deck(deck, options.reader), options);
+        CHECK(findings(read) == findings(disk));
+        CHECK(read.diagnostics.size() == disk.diagnostics.size());
+        CHECK(read.includes.files.size() == disk.includes.files.size());
+        CHECK(read.deck.sources.size() == disk.deck.sources.size());
+    }
+    CHECK(count_code(engine::check_read_file(kDeck, grammar::read_deck(kDeck, {}), {}).diagnostics, "REF002") == 3);
+}
+
 TEST_CASE("engine: an include held in memory is read instead of the file, as if it were saved") {
     // The include as an editor holds it: node 1 defined a second time (REF006).
     const std::string edited = text::read_text_file(kInclude) + "*NODE\n       1\n";

@@ -221,7 +221,8 @@ TEST_CASE("format without findings: OpenRadioss cards, laid out or not") {
 
 TEST_CASE("format without findings: a misreading's cause folds other lines' findings into notes: given up") {
     // DK032 (a *PART heading left out) and DK033 (*PART without its '*') hold back three laid-out lines each.
-    for (const char* path : {"decks/tests/dk/DK032_fires.k", "decks/tests/dk/DK033_fires.k"}) {
+    for (const char* name : {"DK032_fires.k", "DK033_fires.k"}) {
+        const std::string path = std::string(SPHDECK_SOURCE_DIR) + "/decks/tests/dk/" + name;  // from any folder
         CAPTURE(path);
         const engine::CheckResult r = engine::check_file(path);
         CHECK(edit::format_deck(r.deck, r.diagnostics, {0}, {}).kept == 3);
@@ -231,8 +232,8 @@ TEST_CASE("format without findings: a misreading's cause folds other lines' find
 
 TEST_CASE("format without findings: the rule decks (DK, RAD) give format_deck's result or give up") {
     std::size_t decks = 0, answered = 0;
-    for (const char* folder : {"decks/tests/dk", "decks/tests/rad"})
-        for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    for (const char* folder : {"/decks/tests/dk", "/decks/tests/rad"})
+        for (const auto& entry : std::filesystem::directory_iterator(std::string(SPHDECK_SOURCE_DIR) + folder)) {
             const std::string path = entry.path().string();
             if (!path.ends_with(".k") && !path.ends_with("_0000.rad")) continue;
             CAPTURE(path);

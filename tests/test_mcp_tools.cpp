@@ -84,7 +84,7 @@ TEST_CASE("mcp check_deck: neither or both of path and text, a bad name, a missi
 }
 
 TEST_CASE("mcp check_deck: a deck that includes a file outside the roots returns none of it") {
-    TempDir outside;  // in the temporary folder, not below the working directory (the root)
+    TempDir outside;  // in the temporary folder, not below the source folder (the root)
     const std::string secret = outside.write("secret.k", "*KEYWORD\n*CONTROL_TERMINATION\n      1.0\n*END\n");
     const json answer = mcp_call("check_deck", {{"text", "*KEYWORD\n*INCLUDE\n" + secret + "\n*END\n"}});
     CHECK(answer["result"]["isError"] == true);
@@ -108,16 +108,7 @@ TEST_CASE("mcp fix_deck: write: true mends the file in place") {
     TempDir dir;
     const std::string path = dir.write("deck.k", lower_case_keyword);
     // Run from the folder of the deck: it is the root.
-    struct InFolder {  // back to the source folder however the test ends
-        std::filesystem::path before = std::filesystem::current_path();
-        explicit InFolder(const std::filesystem::path& folder) { std::filesystem::current_path(folder); }
-        ~InFolder() { std::filesystem::current_path(before); }
-    };
-    json result;
-    {
-        InFolder in(dir.path());
-        result = mcp_result("fix_deck", {{"path", "deck.k"}, {"write", true}});
-    }
+    const json result = mcp_result("fix_deck", {{"path", "deck.k"}, {"write", true}}, dir.path());
     CHECK(result["written"] == true);
     CHECK(read_file(path).find("*CONTROL_TERMINATION\n") != std::string::npos);
 }
