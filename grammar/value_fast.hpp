@@ -148,7 +148,7 @@ enum class FieldShape : std::uint8_t { Blank, Number, Other };
 
 // An I8 field of 8 bytes at p: spaces, then "-"? and 1-8 digits up to the field's end (right-aligned).
 // Number: `value` and `lead`, the spaces before the number; Blank: 8 spaces.
-inline FieldShape integer8(const char* p, long long& value, std::uint32_t& lead) {
+[[gnu::always_inline]] inline FieldShape integer8(const char* p, long long& value, std::uint32_t& lead) {
     if constexpr (std::endian::native != std::endian::little) return FieldShape::Other;
     std::uint64_t v;
     std::memcpy(&v, p, 8);
