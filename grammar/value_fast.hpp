@@ -47,9 +47,7 @@ inline bool short_integer(const char* p, const char* end, long long& out) {
 
 // Eight ASCII digits at p (little-endian load): whether they all are digits, and their value.
 // The classic SWAR steps: a digit is 0x30-0x39, so its high nibble is 3 and adding 6 keeps it 3.
-inline bool eight_digits(const char* p, std::uint64_t& value) {
-    std::uint64_t v;
-    std::memcpy(&v, p, 8);
+inline bool eight_digits_word(std::uint64_t v, std::uint64_t& value) {
     if ((((v & 0xF0F0F0F0F0F0F0F0u) | (((v + 0x0606060606060606u) & 0xF0F0F0F0F0F0F0F0u) >> 4))) != 0x3333333333333333u)
         return false;
     v -= 0x3030303030303030u;
@@ -58,6 +56,11 @@ inline bool eight_digits(const char* p, std::uint64_t& value) {
              (((v >> 16) & 0x000000FF000000FFu) * (1 + (10000ull << 32)))) >>
             32;
     return true;
+}
+inline bool eight_digits(const char* p, std::uint64_t& value) {
+    std::uint64_t v;
+    std::memcpy(&v, p, 8);
+    return eight_digits_word(v, value);
 }
 
 // Reads digits from p into m (at most 19 digits in all, so m cannot overflow); false past 19.
@@ -83,7 +86,7 @@ inline bool e8_form(const char* p, const char* end, std::uint64_t& m, int& expon
         return false;
     m = static_cast<std::uint64_t>(p[0] - '0') * 100000000u + eight;
     const int e = (p[12] - '0') * 10 + (p[13] - '0');
-    exponent = -8 + (p[11] == '-' ? -e : e);
+    exponent = -8 + e * (1 - 2 * static_cast<int>(p[11] == '-'));
     return true;
 }
 
@@ -95,7 +98,8 @@ inline bool scale_exact(std::uint64_t m, int exponent, bool negative, double& ou
         if (exponent < -22 || exponent > 22) return false;
         v = exponent < 0 ? v / exact_powers_of_ten[-exponent] : v * exact_powers_of_ten[exponent];
     }
-    out = negative ? -v : v;
+    // The sign by its bit, not a branch: the signs of coordinates follow no pattern a predictor learns.
+    out = std::bit_cast<double>(std::bit_cast<std::uint64_t>(v) ^ (static_cast<std::uint64_t>(negative) << 63));
     return true;
 }
 
@@ -134,6 +138,50 @@ inline bool short_real(const char* p, const char* end, double& out) {
     }
     if (p != end) return false;
     return scale_exact(m, exponent, negative, out);
+}
+
+// Whole fixed-width fields of the bulk lines, read from their columns without trimming them first
+// (model/card_decoder_plain.cpp). Each takes only the one shape a preprocessor writes and answers
+// Other for anything else, which the caller then trims and reads with short_integer / short_real:
+// so each gives exactly what those give on the trimmed text, or nothing.
+enum class FieldShape : std::uint8_t { Blank, Number, Other };
+
+// An I8 field of 8 bytes at p: spaces, then "-"? and 1-8 digits up to the field's end (right-aligned).
+// Number: `value` and `lead`, the spaces before the number; Blank: 8 spaces.
+[[gnu::always_inline]] inline FieldShape integer8(const char* p, long long& value, std::uint32_t& lead) {
+    if constexpr (std::endian::native != std::endian::little) return FieldShape::Other;
+    std::uint64_t v;
+    std::memcpy(&v, p, 8);
+    constexpr std::uint64_t low7 = 0x7F7F7F7F7F7F7F7Fu, high = 0x8080808080808080u;
+    const std::uint64_t x = v ^ 0x2020202020202020u;                 // a space becomes 0
+    const std::uint64_t spaces = ~(((x & low7) + low7) | x | low7);  // 0x80 in each byte that was a space
+    if (spaces == high) return FieldShape::Blank;
+    const auto first = static_cast<std::uint32_t>(std::countr_zero(~spaces & high)) / 8;  // the first non-space
+    if ((spaces >> (8 * first)) != 0) return FieldShape::Other;  // a space after it: not right-aligned
+    std::uint64_t before = first == 0 ? 0 : ~std::uint64_t{0} >> (64 - 8 * first);  // the bytes of the spaces
+    const bool negative = ((v >> (8 * first)) & 0xFF) == '-';
+    if (negative) {
+        if (first == 7) return FieldShape::Other;  // "-" alone
+        before |= std::uint64_t{0xFF} << (8 * first);
+    }
+    std::uint64_t digits = 0;
+    if (!eight_digits_word((v & ~before) | (0x3030303030303030u & before), digits)) return FieldShape::Other;
+    const auto n = static_cast<long long>(digits);
+    value = negative ? -n : n;
+    lead = first;
+    return FieldShape::Number;
+}
+
+// An E16 field of 16 bytes at p holding C's "%16.8e" ("  d.dddddddde+dd", " -d.dddddddde-dd"): true with
+// short_real's double of the trimmed text (and `lead`, 2 or 1) when the field is that and scales exactly.
+inline bool e8_field16(const char* p, double& out, std::uint32_t& lead) {
+    if (p[0] != ' ' || (p[1] != ' ' && p[1] != '-')) return false;
+    const bool negative = p[1] == '-';
+    std::uint64_t m = 0;
+    int exponent = 0;
+    if (!e8_form(p + 2, p + 16, m, exponent) || !scale_exact(m, exponent, negative, out)) return false;
+    lead = 2 - static_cast<std::uint32_t>(negative);
+    return true;
 }
 
 }  // namespace fast_number

@@ -80,8 +80,16 @@ namespace {
 struct LayoutSource {
     std::uint16_t column = 0, width = 0;
     FieldType type = FieldType::Unused;
+    // What CardLayout::plain_fields keep of the field besides its place.
+    bool required = false, zero_is_default = false, checks_range = false;
+    std::optional<double> default_value;
     bool operator==(const LayoutSource&) const = default;
 };
+
+LayoutSource source_of(const keywords::FieldSpec& f) {
+    return {f.column,       f.width, f.type, f.required, f.zero_is_default, !f.choices.empty() || f.min || f.max,
+            f.default_value};
+}
 
 struct CachedLayout {
     CardLayout layout;
@@ -92,9 +100,7 @@ struct CachedLayout {
 bool same_card(const CachedLayout& cached, const keywords::CardSpec& card) {
     return cached.line_width == card.line_width &&
            std::equal(cached.fields.begin(), cached.fields.end(), card.fields.begin(), card.fields.end(),
-                      [](const LayoutSource& s, const keywords::FieldSpec& f) {
-                          return s == LayoutSource{f.column, f.width, f.type};
-                      }) &&
+                      [](const LayoutSource& s, const keywords::FieldSpec& f) { return s == source_of(f); }) &&
            cached.layout.title_card ==
                (cached.layout.text_card && card.fields.size() == 1 && keywords::is_title_field(card.fields[0].name));
 }
@@ -112,8 +118,27 @@ void lay_out(const keywords::CardSpec& card, grammar::CardFormat format, CachedL
                   return f.type == FieldType::Integer || f.type == FieldType::Real || f.type == FieldType::Label ||
                          f.type == FieldType::Unused;
               });
+    l.plain_fields.clear();
+    l.fields_end = 0;
+    l.contiguous = l.plain;
+    if (l.plain)
+        for (std::size_t i = 0; i < card.fields.size(); ++i) {
+            const keywords::FieldSpec& f = card.fields[i];
+            const grammar::FixedField& at = l.positions[i];
+            l.contiguous = l.contiguous && at.start == l.fields_end;
+            l.fields_end = std::max(l.fields_end, at.start + at.width);
+            l.plain_fields.push_back({.start = at.start,
+                                      .width = at.width,
+                                      .real = f.type == FieldType::Real,
+                                      .unused = f.type == FieldType::Unused,
+                                      .required = f.required,
+                                      .has_default = f.default_value.has_value(),
+                                      .zero_is_default = f.zero_is_default,
+                                      .checks_range = !f.choices.empty() || f.min || f.max,
+                                      .default_value = f.default_value.value_or(0.0)});
+        }
     c.fields.clear();
-    for (const keywords::FieldSpec& f : card.fields) c.fields.push_back({f.column, f.width, f.type});
+    for (const keywords::FieldSpec& f : card.fields) c.fields.push_back(source_of(f));
     c.line_width = card.line_width;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,6 +25,18 @@ struct FieldValue {
     double number = 0.0;          // I and F fields, after defaults and zero-means-default
 };
 
+// The numbers of a plain line as decode_plain reads them, without the spans and texts (CardDecoder::read_row):
+// for the bulk walk, whose model takes numbers only.
+struct PlainRow {
+    static constexpr std::size_t max_fields = 8;
+    double number[max_fields] = {};
+    std::uint32_t count = 0;    // fields of the card
+    std::uint32_t valid = 0;    // bit i: FieldValue::valid of field i
+    std::uint32_t written = 0;  // bit i: FieldValue::explicit_value of field i
+    bool is_valid(std::size_t i) const { return (valid >> i) & 1u; }
+    bool is_written(std::size_t i) const { return (written >> i) & 1u; }
+};
+
 // The value a card condition compares (CardCondition::holds_with): the number read or defaulted,
 // 0 for a blank field without default, NaN (equal to nothing) for a value that is not a number.
 inline double condition_value(const FieldValue& v) {
@@ -43,6 +56,18 @@ std::string integer_range_message(std::string_view field, double number);
 // many decks read deck after deck through the same cards). Kept by the card's address and used only while the
 // card there has the same fields (a card a caller made and dropped lends its layout to no other). The reference
 // stays valid while the card lives.
+// What decode_plain needs of one field, read once per card instead of from its FieldSpec on every line.
+struct PlainField {
+    std::uint32_t start = 0, width = 0;  // its columns (0-based)
+    bool real = false;                   // F (else I or I/A, read as integers), when not unused
+    bool unused = false;
+    bool required = false;
+    bool has_default = false;
+    bool zero_is_default = false;  // with has_default
+    bool checks_range = false;     // choices, min or max
+    double default_value = 0.0;
+};
+
 struct CardLayout {
     std::vector<grammar::FixedField> positions;  // keywords::layout(card, format)
     std::vector<keywords::FieldType> types;      // one per field
@@ -50,6 +75,11 @@ struct CardLayout {
     bool text_card = false;                      // starts with a long text field: never free format
     bool title_card = false;                     // a title or heading only: its tail past the last column is cosmetic
     bool plain = false;                          // standard widths and number fields only: decode_plain may take it
+    std::vector<PlainField> plain_fields;        // when plain: one per field
+    // When plain: the fields end at fields_end and leave no column before it between them (then a line whose
+    // end is known needs no scan for ',' and '\t' before fields_end: a field holding one reads no number).
+    std::uint32_t fields_end = 0;
+    bool contiguous = false;
 };
 const CardLayout& card_layout(const keywords::CardSpec& card, grammar::CardFormat format);
 
@@ -71,17 +101,28 @@ public:
     // column: read by no field, silently (a line shifted right pushes its last value there).
     bool text_past_fields() const { return past_fields_; }
 
-    // True when the line took the plain path (its values depend on its text alone).
+    // True when the line took the plain path (its values depend on its text alone). `next`: the deck's card
+    // line after `line`, when there is one (its start tells where `line` ends, without a scan).
     bool decode_bulk(const grammar::Block& block, const grammar::CardLine& line, const keywords::CardSpec& card,
-                     std::vector<FieldValue>& values) {
-        if (decode_plain(block, line, card, values)) return true;
+                     std::vector<FieldValue>& values, const grammar::CardLine* next = nullptr) {
+        if (decode_plain(block, line, card, values, next)) return true;
         decode(block, line, card, values);
         return false;
     }
 
+    // The plain path alone, numbers only: Read when decode_bulk would take the line on its plain path, with
+    // the valid, explicit_value and number of each of its FieldValues; NotPlain when it would not (decode()
+    // then reads it); TooWide for a card of more fields than a PlainRow holds (decode_bulk decides).
+    enum class RowRead : std::uint8_t { Read, NotPlain, TooWide };
+    RowRead read_row(const grammar::Block& block, const grammar::CardLine& line, const keywords::CardSpec& card,
+                     PlainRow& row, const grammar::CardLine* next = nullptr);
+
 private:
+    // The text of a line the plain path may take (nothing: decode() reads it).
+    std::optional<std::string_view> plain_text(const CardLayout& layout, const grammar::CardLine& line,
+                                               const grammar::CardLine* next);
     bool decode_plain(const grammar::Block& block, const grammar::CardLine& line, const keywords::CardSpec& card,
-                      std::vector<FieldValue>& values);
+                      std::vector<FieldValue>& values, const grammar::CardLine* next);
     // `field`: the text the value was cut from; `fixed_width`: its width in a fixed-format line, 0 in
     // free format (a parameter name that fills a fixed field may have been cut by it).
     void decode_number(const grammar::Block& block, const keywords::FieldSpec& spec, const grammar::ValueToken& token,
@@ -106,8 +147,16 @@ private:
     };
     const CardLayout& layout_of(const keywords::CardSpec& card, grammar::CardFormat format);
 
+    // The text of a file of the deck, looked up once for the lines of one file (a look-up a line showed).
+    std::string_view file_text(text::FileId file) {
+        if (!text_file_ || *text_file_ != file) text_file_ = file, file_text_ = deck_.sources.file(file).text;
+        return file_text_;
+    }
+
     const grammar::RawDeck& deck_;
     std::vector<diag::Diagnostic>& out_;
+    std::optional<text::FileId> text_file_;
+    std::string_view file_text_;
     std::vector<Layout> layouts_;
     std::size_t last_layout_ = 0;
     std::vector<grammar::Field> fields_;

@@ -2,6 +2,8 @@
 // fixed-format number lines. Anything it does not take whole (a comma, a tab, '&', text past the
 // significant width, a blank required field, a value outside the fast number forms or outside
 // its field's range) is left to decode(), which reports it: findings stay those of decode().
+// decode_plain fills FieldValues, read_row only the numbers; both walk the line with read_plain,
+// so they take the same lines and read the same numbers.
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -40,60 +42,156 @@ bool in_plain_range(const keywords::FieldSpec& spec, double number) {
     }
     return !(spec.min && number < *spec.min) && !(spec.max && number > *spec.max);
 }
-}  // namespace
 
-bool CardDecoder::decode_plain(const grammar::Block& block, const grammar::CardLine& line,
-                               const keywords::CardSpec& card, std::vector<FieldValue>& values) {
-    const CardLayout& layout = layout_of(card, block.format);
-    if (!layout.plain) return false;
-    // Free format (a comma), a tab, or text past the significant width: decode() says what.
-    const grammar::ScannedLine scanned = grammar::scan_line(deck_, line);
-    const std::string_view text = scanned.text;
-    if (text.size() > layout.significant || scanned.comma_or_tab) return false;
-    values.resize(card.fields.size());
-    for (std::size_t i = 0; i < card.fields.size(); ++i) {
-        const keywords::FieldSpec& spec = card.fields[i];
-        const grammar::FixedField& at = layout.positions[i];
-        FieldValue& v = values[i];
-        std::size_t offset = 0;
-        const std::string_view field = trim_spaces(plain_field_text(text, at.start, at.width), offset);
-        v.spec = &spec;
-        v.span = grammar::Span{line.file, line.line, at.start + 1, at.start + at.width + 1};
-        v.text = field;
-        v.explicit_value = !field.empty();
-        v.valid = false;
-        v.number = 0.0;
-        if (field.empty()) {
-            if (spec.type == FieldType::Unused) continue;
-            if (!spec.default_value) {
-                if (spec.required) return false;  // DK008
-                continue;
-            }
-            v.number = *spec.default_value;
-            v.valid = true;
-            continue;
-        }
-        if (spec.type == FieldType::Unused) return false;  // text in an unused field: rare, decode() keeps it
-        if (offset > 0) {
-            v.span.column += static_cast<std::uint32_t>(offset);
-            v.span.end_column = v.span.column + static_cast<std::uint32_t>(field.size());
-        }
-        if (spec.type == FieldType::Real) {
-            if (!grammar::plain_real(field, v.number)) return false;
-        } else {
+// Where a line ends when the deck's next card line is the line after it in the same file: just before the
+// '\n' in front of that line (the readers split lines there), less a '\r'. Nothing when it is not.
+std::optional<std::size_t> known_length(std::string_view file, const grammar::CardLine& line,
+                                        const grammar::CardLine* next) {
+    if (!next || next->file != line.file || next->line != line.line + 1 || next->offset <= line.offset ||
+        next->offset > file.size() || file[next->offset - 1] != '\n')
+        return std::nullopt;
+    std::size_t length = next->offset - 1 - line.offset;
+    if (length > 0 && file[line.offset + length - 1] == '\r') --length;
+    return length;
+}
+
+bool comma_or_tab(const char* begin, const char* end) {
+    for (; begin < end; ++begin)
+        if (*begin == ',' || *begin == '\t') return true;
+    return false;
+}
+
+// One field as read: its text (trimmed, as written), the spaces before it, and its number.
+struct ReadField {
+    std::string_view text;
+    std::uint32_t offset = 0;
+    bool valid = false;
+    double number = 0.0;
+};
+
+// Reads the fields of a plain line's text, handing each to `put(i, field)`; false at the first field that
+// leaves the line to decode(). Inline in both callers: a call a line, none a field.
+template <typename Put>
+inline bool read_plain(const CardLayout& layout, const keywords::CardSpec& card, std::string_view text, Put&& put) {
+    namespace fast = grammar::fast_number;
+    const std::size_t count = card.fields.size();
+    for (std::size_t i = 0; i < count; ++i) {
+        const PlainField& f = layout.plain_fields[i];
+        // The field's columns on this line (fewer at the line's end), then its value: the shapes a
+        // preprocessor writes straight from the columns, any other through trim_spaces and the short readers.
+        const std::string_view columns = plain_field_text(text, f.start, f.width);
+        ReadField r;
+        bool read = false;
+        if (columns.size() == 8 && !f.real && !f.unused) {
             long long n = 0;
-            if (!grammar::plain_integer(field, n)) return false;
-            v.number = static_cast<double>(n);
-            if (exceeds_integer_range(v.number)) return false;  // DK007
+            const fast::FieldShape shape = fast::integer8(columns.data(), n, r.offset);
+            if (shape == fast::FieldShape::Blank) {
+                r.text = std::string_view(columns.data() + 8, 0), r.offset = 0;
+                read = true;
+            } else if (shape == fast::FieldShape::Number) {
+                r.text = std::string_view(columns.data() + r.offset, 8 - r.offset), r.number = static_cast<double>(n);
+                read = true;
+            }
+        } else if (columns.size() == 16 && f.real) {
+            if (fast::e8_field16(columns.data(), r.number, r.offset)) {
+                r.text = std::string_view(columns.data() + r.offset, 16 - r.offset);
+                read = true;
+            }
         }
-        v.valid = true;
-        if (v.number == 0.0 && spec.zero_is_default && spec.default_value) {
-            v.number = *spec.default_value;
+        if (!read) {
+            std::size_t offset = 0;
+            r.text = trim_spaces(columns, offset);
+            r.offset = static_cast<std::uint32_t>(offset);
+        }
+        if (r.text.empty()) {
+            r.number = 0.0;
+            if (!f.unused && f.has_default) r.valid = true, r.number = f.default_value;
+            if (!f.unused && !f.has_default && f.required) return false;  // DK008
+            put(i, r);
             continue;
         }
-        if ((!spec.choices.empty() || spec.min || spec.max) && !in_plain_range(spec, v.number)) return false;  // DK007
+        if (f.unused) return false;  // text in an unused field: rare, decode() keeps it
+        if (!read) {
+            if (f.real) {
+                if (!grammar::plain_real(r.text, r.number)) return false;
+            } else {
+                long long n = 0;
+                if (!grammar::plain_integer(r.text, n)) return false;
+                r.number = static_cast<double>(n);
+                if (exceeds_integer_range(r.number)) return false;  // DK007
+            }
+        }
+        r.valid = true;
+        // The flags first: the tests of the number wait for its division only where a field asks for them.
+        if (f.zero_is_default && f.has_default && r.number == 0.0) {
+            r.number = f.default_value;
+            put(i, r);
+            continue;
+        }
+        if (f.checks_range && !in_plain_range(card.fields[i], r.number)) return false;  // DK007
+        put(i, r);
     }
     return true;
+}
+}  // namespace
+
+std::optional<std::string_view> CardDecoder::plain_text(const CardLayout& layout, const grammar::CardLine& line,
+                                                        const grammar::CardLine* next) {
+    // Free format (a comma), a tab, or text past the significant width: decode() says what. A line whose
+    // end is known needs its columns past the fields looked at only: a ',' or '\t' inside a field makes
+    // that field read as no number, and the line goes to decode() all the same.
+    if (!layout.plain) return std::nullopt;
+    const std::string_view file = file_text(line.file);
+    if (const std::optional<std::size_t> length = layout.contiguous ? known_length(file, line, next) : std::nullopt) {
+        const std::string_view text(file.data() + line.offset, *length);
+        if (text.size() > layout.significant) return std::nullopt;
+        if (text.size() > layout.fields_end && comma_or_tab(text.data() + layout.fields_end, text.data() + text.size()))
+            return std::nullopt;
+        return text;
+    }
+    const grammar::ScannedLine scanned = grammar::scan_line(deck_, line);
+    if (scanned.text.size() > layout.significant || scanned.comma_or_tab) return std::nullopt;
+    return scanned.text;
+}
+
+bool CardDecoder::decode_plain(const grammar::Block& block, const grammar::CardLine& line,
+                               const keywords::CardSpec& card, std::vector<FieldValue>& values,
+                               const grammar::CardLine* next) {
+    const CardLayout& layout = layout_of(card, block.format);
+    const std::optional<std::string_view> text = plain_text(layout, line, next);
+    if (!text) return false;
+    values.resize(card.fields.size());
+    return read_plain(layout, card, *text, [&](std::size_t i, const ReadField& r) {
+        const PlainField& f = layout.plain_fields[i];
+        FieldValue& v = values[i];
+        v.spec = &card.fields[i];
+        v.span = grammar::Span{line.file, line.line, f.start + 1, f.start + f.width + 1};
+        if (r.offset > 0 && !r.text.empty()) {
+            v.span.column += r.offset;
+            v.span.end_column = v.span.column + static_cast<std::uint32_t>(r.text.size());
+        }
+        v.text = r.text;
+        v.explicit_value = !r.text.empty();
+        v.valid = r.valid;
+        v.number = r.number;
+    });
+}
+
+CardDecoder::RowRead CardDecoder::read_row(const grammar::Block& block, const grammar::CardLine& line,
+                                           const keywords::CardSpec& card, PlainRow& row,
+                                           const grammar::CardLine* next) {
+    if (card.fields.size() > PlainRow::max_fields) return RowRead::TooWide;
+    const CardLayout& layout = layout_of(card, block.format);
+    const std::optional<std::string_view> text = plain_text(layout, line, next);
+    if (!text) return RowRead::NotPlain;
+    row.count = static_cast<std::uint32_t>(card.fields.size());
+    row.valid = 0, row.written = 0;
+    const bool plain = read_plain(layout, card, *text, [&](std::size_t i, const ReadField& r) {
+        row.number[i] = r.number;
+        row.valid |= static_cast<std::uint32_t>(r.valid) << i;
+        row.written |= static_cast<std::uint32_t>(!r.text.empty()) << i;
+    });
+    return plain ? RowRead::Read : RowRead::NotPlain;
 }
 
 }  // namespace sphdeck::model

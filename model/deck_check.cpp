@@ -267,15 +267,31 @@ private:
             auto& out = found[static_cast<std::size_t>(t)];
             CardDecoder decoder(deck_, out);
             std::vector<FieldValue> values;
+            PlainRow row;
             std::size_t count = 0;
             std::size_t released = first;  // lines whose text went back (a mapped file's pages)
             FloodBound& trimmed = bounds[static_cast<std::size_t>(t)];
             grammar::CardLinePtr at = lines + static_cast<std::ptrdiff_t>(first);  // this thread's own walk
-            for (std::size_t i = first; i < last; ++i, ++at) {
-                const grammar::CardLine line = *at;
+            grammar::CardLine next = first < last ? *at : grammar::CardLine{};
+            for (std::size_t i = first; i < last; ++i) {
+                const grammar::CardLine line = next;
+                const bool followed = i + 1 < n;  // by a line of the block: where this one ends, known
+                if (followed) next = *++at;
                 if (i - released == release_lines) release_text(lines[released], line), released = i;
                 if ((i - first + 1) % trim_lines == 0) trimmed.trim(out);
-                if (!decoder.decode_bulk(block, line, card, values)) all_plain[static_cast<std::size_t>(t)] = 0;
+                // Most lines: numbers only, one node or particle (a particle's NEND blank: no range, no DK023).
+                const CardDecoder::RowRead read = decoder.read_row(block, line, card, row, followed ? &next : nullptr);
+                if (read == CardDecoder::RowRead::Read && !(particles && row.is_written(3))) {
+                    bulk_->row(block, i, t, row);
+                    count += particles ? 1 : 0;
+                    continue;
+                }
+                if (read == CardDecoder::RowRead::NotPlain) {  // what decode_bulk would do, without trying again
+                    decoder.decode(block, line, card, values);
+                    all_plain[static_cast<std::size_t>(t)] = 0;
+                } else if (!decoder.decode_bulk(block, line, card, values, followed ? &next : nullptr)) {
+                    all_plain[static_cast<std::size_t>(t)] = 0;
+                }
                 std::optional<std::string> refused;
                 if (particles) {
                     refused = ranges_.check_alone(range_extra(values));
@@ -332,7 +348,9 @@ private:
         grammar::CardLinePtr lines = deck_.begin_lines(block);
         bool clean = true;
         for (std::size_t i = around->first; clean && i < around->last; ++i) {
-            clean = decoder.decode_bulk(block, lines[i], card, values) && !(particles && range_extra(values) > 0);
+            const grammar::CardLine next = i + 1 < block.line_count ? lines[i + 1] : grammar::CardLine{};
+            clean = decoder.decode_bulk(block, lines[i], card, values, i + 1 < block.line_count ? &next : nullptr) &&
+                    !(particles && range_extra(values) > 0);
             if (!clean) break;
             bulk_->line(block, i, 0, lines[i], values);
             if (particles) count_particles(deck_, lines[i], block.format, values, found);

@@ -33,6 +33,9 @@ public:
     virtual void begin(const grammar::Block& block, std::size_t lines, int threads) = 0;
     virtual void line(const grammar::Block& block, std::size_t index, int thread, const grammar::CardLine& line,
                       const std::vector<FieldValue>& values) = 0;
+    // line() for a line CardDecoder::read_row read (its FieldValues would hold these numbers and flags) that
+    // stands for one node or particle (a particle's NEND blank). Same thread rules as line().
+    virtual void row(const grammar::Block& block, std::size_t index, int thread, const PlainRow& row) = 0;
     // After every line(), before end(): the NEND range of line `index` is refused (the deck's
     // nodes cannot hold it); that line stands for NID alone.
     virtual void drop_range(std::size_t index) = 0;

@@ -161,33 +161,47 @@ void ModelBuilder::Bulk::begin(const grammar::Block& block, std::size_t lines, i
     }
 }
 
-void ModelBuilder::Bulk::line(const grammar::Block&, std::size_t index, int thread, const grammar::CardLine& line,
-                              const std::vector<FieldValue>& v) {
+template <typename Field>
+void ModelBuilder::Bulk::put(std::size_t index, int thread, std::size_t count, const Field& field) {
     const std::size_t slot = base_ + index;
     auto& irregular = irregular_[static_cast<std::size_t>(thread)];
     auto& wide = wide_[static_cast<std::size_t>(thread)];
     // An id too wide for its column's 4 bytes is set after the threads (IdColumn::set_narrow).
-    const auto put = [&](IdColumn& column, bool is_part, long long id) {
+    const auto set = [&](IdColumn& column, bool is_part, long long id) {
         if (!column.set_narrow(slot, id)) wide.push_back({slot, id, is_part});
     };
+    const auto [id_valid, id] = field(0);
     if (!particles_) {
-        if (v.size() < 4 || !v[0].valid) return irregular.push_back({index, 0, true});  // as add_node
+        if (count < 4 || !id_valid) return irregular.push_back({index, 0, true});  // as add_node
         Nodes& n = owner_.model_.nodes;
-        put(n.id, false, grammar::saturating_integer<long long>(v[0].number));
-        n.x[slot] = v[1].number, n.y[slot] = v[2].number, n.z[slot] = v[3].number;
+        set(n.id, false, grammar::saturating_integer<long long>(id));
+        n.x[slot] = field(1).second, n.y[slot] = field(2).second, n.z[slot] = field(3).second;
         return;
     }
-    if (v.size() < 3 || !v[0].valid) return irregular.push_back({index, 0, true});  // as add_particles
+    if (count < 3 || !id_valid) return irregular.push_back({index, 0, true});  // as add_particles
     Particles& p = owner_.model_.particles;
-    const long long node = grammar::saturating_integer<long long>(v[0].number);
-    put(p.node, false, node);
-    put(p.part, true, v[1].valid ? grammar::saturating_integer<long long>(v[1].number) : -1);
-    p.mass[slot] = v[2].valid ? v[2].number : 0.0;
+    const long long node = grammar::saturating_integer<long long>(id);
+    set(p.node, false, node);
+    const auto [part_valid, part] = field(1);
+    set(p.part, true, part_valid ? grammar::saturating_integer<long long>(part) : -1);
+    const auto [mass_valid, mass] = field(2);
+    p.mass[slot] = mass_valid ? mass : 0.0;
     p.volume[slot] = volume_;
-    // The particle's line is the block's run laid in begin(): first_line + index, `line` itself.
-    (void)line;
-    if (const std::size_t extra = range_extra(v))
-        irregular.push_back({index, node + static_cast<long long>(extra), false});
+    // The particle's line is the block's run laid in begin(): first_line + index. An NEND range: line().
+}
+
+void ModelBuilder::Bulk::line(const grammar::Block&, std::size_t index, int thread, const grammar::CardLine&,
+                              const std::vector<FieldValue>& v) {
+    put(index, thread, v.size(), [&](std::size_t i) { return std::pair<bool, double>(v[i].valid, v[i].number); });
+    if (particles_ && v.size() >= 3 && v[0].valid)
+        if (const std::size_t extra = range_extra(v))
+            irregular_[static_cast<std::size_t>(thread)].push_back(
+                {index, grammar::saturating_integer<long long>(v[0].number) + static_cast<long long>(extra), false});
+}
+
+void ModelBuilder::Bulk::row(const grammar::Block&, std::size_t index, int thread, const PlainRow& r) {
+    // A row stands for one node or particle: no NEND range.
+    put(index, thread, r.count, [&](std::size_t i) { return std::pair<bool, double>(r.is_valid(i), r.number[i]); });
 }
 
 void ModelBuilder::Bulk::drop_range(std::size_t index) {

@@ -48,6 +48,7 @@ private:
         void begin(const grammar::Block& block, std::size_t lines, int threads) override;
         void line(const grammar::Block& block, std::size_t index, int thread, const grammar::CardLine& line,
                   const std::vector<FieldValue>& values) override;
+        void row(const grammar::Block& block, std::size_t index, int thread, const PlainRow& row) override;
         void drop_range(std::size_t index) override;
         void end(const grammar::Block& block) override;
         bool reuse(const grammar::Block& block, const keywords::CardSpec& card) override;
@@ -66,6 +67,9 @@ private:
             long long id;
             bool part;  // the particles' part column (else the ids or the particles' nodes)
         };
+        // line() and row(): the line's `count` fields, field i's FieldValue::valid and number given by `field(i)`.
+        template <typename Field>
+        void put(std::size_t index, int thread, std::size_t count, const Field& field);
         void set_wide_ids();
         void end_nodes();
         void end_particles();
