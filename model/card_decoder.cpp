@@ -70,6 +70,11 @@ std::string integer_range_message(std::string_view field, double number) {
                        number_text(number), static_cast<long long>(max_exact_integer));
 }
 
+namespace {
+// Whether a field's value is checked against choices or bounds (DK007): decode() and the plain path's layout.
+bool checks_range(const keywords::FieldSpec& f) { return !f.choices.empty() || f.min || f.max; }
+}  // namespace
+
 void CardDecoder::report(const char* code, diag::Severity s, std::string message, grammar::Span span) {
     out_.push_back(diag::Diagnostic{code, s, std::move(message), span, {}});
 }
@@ -87,8 +92,7 @@ struct LayoutSource {
 };
 
 LayoutSource source_of(const keywords::FieldSpec& f) {
-    return {f.column,       f.width, f.type, f.required, f.zero_is_default, !f.choices.empty() || f.min || f.max,
-            f.default_value};
+    return {f.column, f.width, f.type, f.required, f.zero_is_default, checks_range(f), f.default_value};
 }
 
 struct CachedLayout {
@@ -134,7 +138,7 @@ void lay_out(const keywords::CardSpec& card, grammar::CardFormat format, CachedL
                                       .required = f.required,
                                       .has_default = f.default_value.has_value(),
                                       .zero_is_default = f.zero_is_default,
-                                      .checks_range = !f.choices.empty() || f.min || f.max,
+                                      .checks_range = checks_range(f),
                                       .default_value = f.default_value.value_or(0.0)});
         }
     c.fields.clear();
@@ -381,7 +385,7 @@ void CardDecoder::decode_number(const grammar::Block& block, const keywords::Fie
         v.number = *spec.default_value;  // the manual maps an explicit 0 to the default here
         return;
     }
-    if (!spec.choices.empty() || spec.min || spec.max) check_range(spec, v);
+    if (checks_range(spec)) check_range(spec, v);
 }
 
 void CardDecoder::check_text(const grammar::Block& block, const keywords::FieldSpec& spec, FieldValue& v) {

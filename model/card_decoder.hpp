@@ -51,11 +51,6 @@ inline constexpr double max_exact_integer = 9007199254740992.0;  // 2^53
 bool exceeds_integer_range(double number);                       // |number| > 2^53, or NaN
 std::string integer_range_message(std::string_view field, double number);
 
-// A card's widened columns in a format and what the decoders ask of them. A layout is a fact of the keyword
-// tables, not of a deck: worked out once per thread and kept across decks (the fuzzer, the editor and a check of
-// many decks read deck after deck through the same cards). Kept by the card's address and used only while the
-// card there has the same fields (a card a caller made and dropped lends its layout to no other). The reference
-// stays valid while the card lives.
 // What decode_plain needs of one field, read once per card instead of from its FieldSpec on every line.
 struct PlainField {
     std::uint32_t start = 0, width = 0;  // its columns (0-based)
@@ -68,6 +63,11 @@ struct PlainField {
     double default_value = 0.0;
 };
 
+// A card's widened columns in a format and what the decoders ask of them. A layout is a fact of the keyword
+// tables, not of a deck: worked out once per thread and kept across decks (the fuzzer, the editor and a check of
+// many decks read deck after deck through the same cards). Kept by the card's address and used only while the
+// card there has the same fields (a card a caller made and dropped lends its layout to no other). The reference
+// stays valid while the card lives.
 struct CardLayout {
     std::vector<grammar::FixedField> positions;  // keywords::layout(card, format)
     std::vector<keywords::FieldType> types;      // one per field
