@@ -6,6 +6,7 @@
 #include <cstring>
 #include <limits>
 
+#include "preproc/close_pairs.hpp"
 #include "preproc/collapsed_points.hpp"
 #include "preproc/first_pairs.hpp"
 #include "preproc/nearest_tree.hpp"
@@ -749,30 +750,40 @@ NeighbourCounts count_neighbours(std::span<const double> x, std::span<const doub
         count_symmetric<false>(g, s, w, largest_tolerance * largest_tolerance, largest_reach, count, close_points);
     }
     std::vector<double>().swap(s);  // given back (`s = {}` would keep its capacity)
-    // Coincident pairs: the few points with a pair inside the largest tolerance, checked exactly. Each such
-    // point is the first (in grid order) of its pairs (count_cell), so the pairs with the points after it in
-    // its block are every pair once: all counted, the first `kept_pairs` kept (first_pairs.hpp).
+    // Coincident pairs, checked exactly: all counted, the first `kept_pairs` kept (first_pairs.hpp).
     const auto members = [&](std::uint32_t k) {
         return collapsed.empty() ? std::span<const std::uint32_t>(&order[k], 1) : collapsed.members_of(order[k]);
     };
     FirstPairs first(kept_pairs);
     std::uint64_t total = 0;
-    for (std::uint32_t k : close_points) {
-        const std::uint32_t p = order[k];
-        const double px = g.x()[k], py = g.y()[k], pz = g.z()[k];
+    const auto offer_pair = [&](std::uint32_t k, std::uint32_t j) {  // grid points k and j (k != j)
+        const double t = std::max(tolerance_of(order[k]), tolerance_of(order[j]));
+        if (!coincident_at(g.x()[k], g.y()[k], g.z()[k], g.x()[j], g.y()[j], g.z()[j], t)) return;
+        total += (w ? std::uint64_t{w[k]} : 1) * (w ? w[j] : 1);
+        first.offer_between(members(k), members(j));
+    };
+    const auto offer_own = [&](std::uint32_t k) {  // a collapsed point's points with each other
         const std::uint64_t wk = w ? w[k] : 1;
-        if (wk > 1 && coincident_at(px, py, pz, px, py, pz, tolerance_of(p))) {  // its points with each other
-            total += wk * (wk - 1) / 2;
-            first.offer_among(members(k));
-        }
-        g.for_each_block_range(g.cell_of(px, py, pz), count_reach, [&](std::uint32_t b, std::uint32_t e) {
-            for (std::uint32_t j = std::max(b, k + 1); j < e; ++j) {
-                const double t = std::max(tolerance_of(p), tolerance_of(order[j]));
-                if (!coincident_at(px, py, pz, g.x()[j], g.y()[j], g.z()[j], t)) continue;
-                total += wk * (w ? w[j] : 1);
-                first.offer_between(members(k), members(j));
-            }
-        });
+        const double px = g.x()[k], py = g.y()[k], pz = g.z()[k];
+        if (wk < 2 || !coincident_at(px, py, pz, px, py, pz, tolerance_of(order[k]))) return;
+        total += wk * (wk - 1) / 2;
+        first.offer_among(members(k));
+    };
+    if (sampled) {
+        // The counts looked at no pair of most points: every pair within the largest tolerance, on keys of
+        // that size (close_pairs.hpp).
+        for (std::uint32_t k = 0; w && k < points; ++k) offer_own(k);
+        for_each_close_pair(g.x(), g.y(), g.z(), largest_tolerance, offer_pair);
+    }
+    // Otherwise the few points with a pair inside the largest tolerance. Each such point is the first (in
+    // grid order) of its pairs (count_cell), so the pairs with the points after it in its block are every
+    // pair once.
+    for (std::uint32_t k : close_points) {
+        offer_own(k);
+        g.for_each_block_range(g.cell_of(g.x()[k], g.y()[k], g.z()[k]), count_reach,
+                               [&](std::uint32_t b, std::uint32_t e) {
+                                   for (std::uint32_t j = std::max(b, k + 1); j < e; ++j) offer_pair(k, j);
+                               });
     }
     out.coincident = std::move(first).sorted();
     out.coincident_pairs = total;

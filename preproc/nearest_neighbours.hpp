@@ -73,7 +73,7 @@ struct NeighbourCounts {
     // Per point: the other points j with r_ij < (support_i + support_j) / 2.
     std::vector<std::uint32_t> count;
     // Pairs (i < j) closer than max(tolerance_i, tolerance_j), or at distance 0 (coincident_at): all of
-    // them counted, the first `kept_pairs` (in order) kept. None when the counts were sampled.
+    // them counted, the first `kept_pairs` (in order) kept; sampled counts too (close_pairs.hpp).
     std::vector<std::pair<std::uint32_t, std::uint32_t>> coincident;
     std::uint64_t coincident_pairs = 0;
     // 1 when every point was counted; k when only every k-th point (in cell order) was and the

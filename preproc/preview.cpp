@@ -216,8 +216,8 @@ void preview_part(const model::Model& m, const ParticlePositions& at, const Part
 
 // The coincident pairs found so far (each part's nearest neighbours within the tolerance, or a kept
 // preview's pairs) merged with the counts' (model indices; all counted, the first kept): the pairs so far
-// that the counts' check does not hold for (or all, when the counts were sampled and checked none) are
-// the ones added to theirs, each pair once. Then the first coincident_pairs_kept kept.
+// that the counts' check does not hold for (or all, when there were no counts) are the ones added to
+// theirs, each pair once. Then the first coincident_pairs_kept kept.
 void merge_coincident(const ParticlePositions& at, Preview& out,
                       const std::vector<std::pair<std::uint32_t, std::uint32_t>>& counted, std::uint64_t total,
                       bool checked) {
@@ -303,7 +303,7 @@ void count_all_neighbours(const ParticlePositions& at, Preview& out) {
     // Model indices grow with the located ones: the pairs stay in order.
     for (auto& [a, b] : counts.coincident)
         a = static_cast<std::uint32_t>(model_index(a)), b = static_cast<std::uint32_t>(model_index(b));
-    merge_coincident(at, out, counts.coincident, counts.coincident_pairs, counts.sample_stride == 1);
+    merge_coincident(at, out, counts.coincident, counts.coincident_pairs, true);
 }
 
 }  // namespace

@@ -1,17 +1,22 @@
 // Coincident particles (preproc/collapsed_points.hpp, preproc/first_pairs.hpp): the neighbour counts and the
 // coincident pairs of clouds with crowds at one place equal a brute force over all pairs, their number exact
 // and the first pairs kept in order; a crowd far past the pair bound is counted exactly without sampling;
+// sampled counts count them too, on 64-bit keys (preproc/close_pairs.hpp);
 // SPH114 says how many pairs there are; an edit that moves a particle into or out of a crowd gives the
 // preview a fresh one gives (preproc/preview_follow.hpp), followed or recomputed.
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
+#include <limits>
+#include <map>
 #include <random>
 #include <string>
 
 #include "engine/check.hpp"
 #include "engine/preview_after_edit.hpp"
+#include "preproc/close_pairs.hpp"
 #include "preproc/first_pairs.hpp"
 #include "preproc/nearest_neighbours.hpp"
 #include "preproc/preview.hpp"
@@ -78,12 +83,13 @@ Brute brute_force(const Cloud& c, const double* support, const double* tolerance
     return b;
 }
 
-// A one-part deck: a regular lattice (8 x 6 x 5, kSpacing apart; every nearest distance the same, so
-// that one particle moved keeps the part's spacing) and `crowd` more particles at the place of particle 0.
+// A one-part deck: a regular lattice (8 x 6 x 5 by default, kSpacing apart; every nearest distance the
+// same, so that one particle moved keeps the part's spacing) and `crowd` more particles at the place of
+// particle 0; `sphini` the section's h0.
 constexpr double kSpacing = 0.01;
-std::string crowd_deck(int crowd) {
+std::string crowd_deck(int crowd, int nx = 8, int ny = 6, int nz = 5, const char* sphini = "0.013") {
     std::string deck = "*KEYWORD\n*CONTROL_SPH\n         1         0   1.0e+20         3       150\n";
-    deck += fmt::format("*SECTION_SPH\n{:>10}{:>10}{:>10}{:>10}{:>10}\n", 1, "1.2", "0.2", "2.0", "0.013");
+    deck += fmt::format("*SECTION_SPH\n{:>10}{:>10}{:>10}{:>10}{:>10}\n", 1, "1.2", "0.2", "2.0", sphini);
     deck += "*PART\nblock\n         1         1         1         1\n";
     deck += "*MAT_NULL\n         1    1000.0\n*EOS_MURNAGHAN\n         1       7.0     340.0\n";
     std::string nodes = "*NODE\n", elements = "*ELEMENT_SPH\n";
@@ -93,9 +99,9 @@ std::string crowd_deck(int crowd) {
         nodes += fmt::format("{:>8}{:>16.9e}{:>16.9e}{:>16.9e}\n", id, x, y, z);
         elements += fmt::format("{:>8}{:>8}{:>16}\n", id, 1, "1.0e-3");
     };
-    for (int i = 0; i < 8; ++i)
-        for (int j = 0; j < 6; ++j)
-            for (int k = 0; k < 5; ++k) add(i * kSpacing, j * kSpacing, k * kSpacing);
+    for (int i = 0; i < nx; ++i)
+        for (int j = 0; j < ny; ++j)
+            for (int k = 0; k < nz; ++k) add(i * kSpacing, j * kSpacing, k * kSpacing);
     for (int m = 0; m < crowd; ++m) add(0, 0, 0);
     return deck + nodes + elements + "*END\n";
 }
@@ -154,6 +160,75 @@ TEST_CASE("coincident pairs: counts, number and first pairs equal a brute force 
             CHECK(counts.coincident == first);
         }
     }
+}
+
+TEST_CASE("coincident pairs: counted and kept in full when the counts are sampled") {
+    // A pair budget of 1000 sends the counts to their sampled path, which looks at no pair of most points; the
+    // coincident pairs must still be every one (close_pairs.hpp), with and without points collapsed.
+    const Cloud c = crowded(7, {3, 40, 70, 130}, 12);
+    const double support[2] = {2.4, 1.9}, tolerance[2] = {1e-9, 2e-9};
+    const Brute b = brute_force(c, support, tolerance);
+    for (const std::size_t keep : {std::size_t{37}, preproc::coincident_pairs_kept, std::size_t{1} << 20}) {
+        CAPTURE(keep);
+        const preproc::NeighbourCounts counts =
+            preproc::count_neighbours(c.x, c.y, c.z, preproc::GroupedRadii{c.group, support, tolerance}, 1000, keep);
+        CHECK(counts.sample_stride > 1);
+        CHECK(counts.coincident_pairs == b.pairs.size());
+        const std::vector<Pair> first(b.pairs.begin(),
+                                      b.pairs.begin() + static_cast<std::ptrdiff_t>(std::min(keep, b.pairs.size())));
+        CHECK(counts.coincident == first);
+    }
+}
+
+TEST_CASE("coincident pairs: a deck whose counts are sampled reports every pair once") {
+    // 32^3 particles in one support (h0 1.0 on a 0.31 cube): 5.4e8 pairs, past the budget, so the counts are
+    // sampled; 70 more at particle 0's place make 71 * 70 / 2 pairs, not the parts' nearest-neighbour pairs
+    // alone (70), nor those counted twice.
+    engine::CheckOptions options;
+    options.rules.keep_preview = true;
+    const engine::CheckResult checked = engine::check_buffer(crowd_deck(70, 32, 32, 32, "1.0"), "crowd.k", options);
+    REQUIRE(checked.preview);
+    CHECK(checked.preview->neighbour_sample_stride > 1);
+    CHECK(checked.preview->coincident_pairs == 71u * 70 / 2);
+    CHECK(checked.preview->coincident.size() == preproc::coincident_pairs_kept);
+    CHECK(checked.preview->coincident.front() == Pair{0, 32u * 32 * 32});
+}
+
+TEST_CASE("coincident pairs: every pair within the reach found once on 64-bit keys") {
+    // Pairs at, just inside and just outside the reach, along and across the axes, near the origin and far
+    // from it (where a coordinate's rounding is larger than the reach), and points with no finite place.
+    std::mt19937_64 rng(21);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (const double offset : {0.0, 1.0e6, -3.7e3, 1.0e-7})
+        for (const double reach : {1e-9, 1e-3, 0.25, 0.0}) {
+            CAPTURE(offset);
+            CAPTURE(reach);
+            Cloud c;
+            for (int i = 0; i < 300; ++i) {
+                const double x = offset + u(rng), y = u(rng), z = offset + u(rng);
+                c.add(x, y, z);
+                const double d = reach * (1 + 0.5 * u(rng));
+                c.add(x + (i % 3 == 0 ? d : 0), y + (i % 3 == 1 ? d : 0), z + (i % 3 == 2 ? d : 0));
+                c.add(std::nextafter(x + reach, 1e300), y, z);
+                c.add(x, y, std::nextafter(z - reach, -1e300));
+                if (i % 50 == 0) c.add(x, y, z), c.add(x, y, z);
+            }
+            c.add(std::nan(""), 0, 0), c.add(0, std::numeric_limits<double>::infinity(), 0), c.add(0, 0, 0);
+            std::map<Pair, int> found;
+            preproc::for_each_close_pair(c.x, c.y, c.z, reach, [&](std::uint32_t a, std::uint32_t b) {
+                ++found[{std::min(a, b), std::max(a, b)}];
+            });
+            std::size_t within = 0;
+            for (std::uint32_t i = 0; i < c.size(); ++i)
+                for (std::uint32_t j = i + 1; j < c.size(); ++j) {
+                    if (!preproc::coincident_at(c.x[i], c.y[i], c.z[i], c.x[j], c.y[j], c.z[j], reach)) continue;
+                    ++within;
+                    const auto at = found.find({i, j});
+                    CHECK_MESSAGE(at != found.end(), "pair ", i, " ", j, " not offered");
+                }
+            REQUIRE(within > (reach > 0 ? 100u : 10u));
+            for (const auto& [pair, times] : found) CHECK_MESSAGE(times == 1, "pair offered ", times, " times");
+        }
 }
 
 TEST_CASE("coincident pairs: a crowd far past the bound is counted exactly, its first pairs kept") {
