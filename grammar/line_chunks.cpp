@@ -6,6 +6,8 @@
 #include <cstring>
 #include <string_view>
 
+#include "text/source_map.hpp"
+
 namespace sphdeck::grammar {
 namespace {
 
@@ -41,6 +43,10 @@ std::size_t scan_chunk(const char* text, std::size_t size, std::size_t begin, st
         if (GrammarLines::match(p, text_end)) out.special.push_back(static_cast<std::uint32_t>(out.starts.size()));
         out.starts.push_back(static_cast<std::uint32_t>(p - text));
         const char* newline = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(text_end - p)));
+        // While the line is in the cache: what the suppressions would search the whole text for afterwards.
+        if ((*p == '$' || *p == '#') && !out.comment_holds_marker)
+            out.comment_holds_marker = std::string_view(p, static_cast<std::size_t>((newline ? newline : text_end) - p))
+                                           .find(text::directive_marker) != std::string_view::npos;
         p = newline ? newline + 1 : text_end;
         if (newline && newline >= text + end) break;
     }
@@ -97,7 +103,10 @@ SplitLines split_lines(const SourceText& source, std::size_t first, LineSyntax s
         source.release(from, scanned);  // a mapped file's pages: read again, line by line, when decoded
     }
     source.release(0, size);  // the folios the threads' edges mapped
-    for (const LineChunk& chunk : split.chunks) split.lines += chunk.starts.size();
+    for (const LineChunk& chunk : split.chunks) {
+        split.lines += chunk.starts.size();
+        split.comment_holds_marker = split.comment_holds_marker || chunk.comment_holds_marker;
+    }
     return split;
 }
 

@@ -21,11 +21,13 @@ enum class LineSyntax : std::uint8_t { Dyna, Radioss };
 struct LineChunk {
     std::vector<std::uint32_t> starts;   // byte offset in the file of each line that begins in the chunk
     std::vector<std::uint32_t> special;  // indexes into `starts` of the lines for the grammar, ascending
+    bool comment_holds_marker = false;   // a line starting with '$' or '#' holds text::directive_marker
 };
 
 struct SplitLines {
-    std::vector<LineChunk> chunks;  // in file order
-    std::size_t lines = 0;          // physical lines of the file
+    std::vector<LineChunk> chunks;      // in file order
+    std::size_t lines = 0;              // physical lines of the file
+    bool comment_holds_marker = false;  // in any chunk (text::SourceFile::comment_holds_marker)
 };
 
 // Files at least this long are read in chunks; shorter ones line by line (threads would cost more).
@@ -63,9 +65,11 @@ void walk_chunk(const LineChunk& chunk, GrammarLine&& grammar_line, DataLines&& 
 // A reader's whole chunked reading of `text` (both formats' DeckReader::read_chunked): the lines found
 // and sorted on all threads, then walked in file order, `grammar_line(line)` with a pointer to each line
 // for the grammar, `data_lines(starts, count)` for each run of data lines; `card_lines` (the deck's card
-// lines) gets room for all of the file's lines first.
+// lines) gets room for all of the file's lines first. Returns whether a line that starts with '$' or '#'
+// holds text::directive_marker (the line after a byte order mark counts, which the suppressions do not read as
+// a comment: the answer may say yes for nothing, never no for a directive).
 template <typename CardLines, typename GrammarLine, typename DataLines>
-void read_in_chunks(const SourceText& text, LineSyntax syntax, std::size_t chunk_bytes, CardLines& card_lines,
+bool read_in_chunks(const SourceText& text, LineSyntax syntax, std::size_t chunk_bytes, CardLines& card_lines,
                     GrammarLine&& grammar_line, DataLines&& data_lines) {
     const std::size_t first = text.view().starts_with("\xEF\xBB\xBF") ? 3 : 0;  // the grammars' byte_order_mark
     SplitLines split = split_lines(text, first, syntax, chunk_bytes);
@@ -75,6 +79,7 @@ void read_in_chunks(const SourceText& text, LineSyntax syntax, std::size_t chunk
             chunk, [&](std::uint32_t at) { grammar_line(text.data() + at); }, data_lines);
         chunk = {};  // its offsets are the deck's card lines now
     }
+    return split.comment_holds_marker;
 }
 
 }  // namespace sphdeck::grammar

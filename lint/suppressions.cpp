@@ -16,7 +16,7 @@
 namespace sphdeck::lint {
 namespace {
 
-constexpr std::string_view kMarker = "sphdeck";
+constexpr std::string_view kMarker = text::directive_marker;
 
 bool is_blank(char c) { return c == ' ' || c == '\t'; }
 
@@ -216,8 +216,11 @@ void apply_suppressions(const grammar::SourceMap& sources, std::vector<diag::Dia
     for (grammar::FileId f = 0; f < sources.size(); ++f) {
         if (marker_free && (*marker_free)[f]) continue;  // known to hold none
         const grammar::SourceFile& source = sources.file(f);
-        const bool none = !(may_hold_directives ? may_hold_directives(source, kMarker)
-                                                : source.text.contains(kMarker));  // the common case: no directive
+        // The common case: no directive. A directive is a comment line holding the marker (parse_suppression):
+        // the reader of a big file looked at each such line already, so its text is not read again.
+        const bool none = source.comment_holds_marker ? !*source.comment_holds_marker
+                          : may_hold_directives       ? !may_hold_directives(source, kMarker)
+                                                      : !source.text.contains(kMarker);
         if (marker_free) (*marker_free)[f] = none;
         if (none) continue;
         place_directives(source, f, kinds, placed, problems);

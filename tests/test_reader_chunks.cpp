@@ -17,6 +17,7 @@
 
 #include "grammar/line_chunks.hpp"
 #include "grammar/read_deck.hpp"
+#include "text/source_map.hpp"
 
 namespace test_reader_chunks_cpp {  // each test file's names stay its own in a unity batch
 
@@ -249,6 +250,43 @@ TEST_CASE("reader chunks: only lines that can be nothing but data skip the gramm
     };
     CHECK(special(grammar::LineSyntax::Dyna) == std::vector<std::uint32_t>{0, 1, 2});
     CHECK(special(grammar::LineSyntax::Radioss) == std::vector<std::uint32_t>{0, 6});
+}
+
+TEST_CASE("reader chunks: a comment line holding the suppressions' marker is seen at every chunk size") {
+    // The suppressions read a directive from a line that starts with '$' or '#' and holds the marker
+    // (lint/suppressions.cpp), the lines cut at '\n' from byte 0 on: the split must say yes whenever such a
+    // line exists. Random texts of the pieces that matter, every chunk size, from byte 0 and after a BOM.
+    const std::vector<std::string> pieces = {"$",    "#",  "sphdeck", "sphdec",        "k", " ", "\n",
+                                             "\r\n", "*K", "1",       "$ sphdeck: all"};
+    std::mt19937 random(40);
+    const auto holds = [](const std::string& text, std::size_t first) {
+        for (std::size_t at = first; at < text.size();) {
+            std::size_t end = text.find('\n', at);
+            if (end == std::string::npos) end = text.size();
+            const std::string_view line(text.data() + at, end - at);
+            if ((line.starts_with('$') || line.starts_with('#')) && line.find(text::directive_marker) != line.npos)
+                return true;
+            at = end + 1;
+        }
+        return false;
+    };
+    int with = 0, without = 0;
+    for (int round = 0; round < 400; ++round) {
+        std::string text = round % 5 == 0 ? "\xEF\xBB\xBF" : "";
+        const std::size_t first = text.size();
+        const int count = 1 + static_cast<int>(random() % 14);
+        for (int i = 0; i < count; ++i) text += pieces[random() % pieces.size()];
+        const bool expected = holds(text, first);
+        (expected ? with : without) += 1;
+        const grammar::SourceText source(text);
+        for (const grammar::LineSyntax syntax : {grammar::LineSyntax::Dyna, grammar::LineSyntax::Radioss})
+            for (std::size_t size = 1; size <= text.size() + 1; ++size) {
+                INFO("text '", text, "' cut every ", size, " bytes");
+                CHECK(grammar::split_lines(source, first, syntax, size).comment_holds_marker == expected);
+            }
+    }
+    CHECK(with > 40);  // both answers are tried
+    CHECK(without > 40);
 }
 
 TEST_CASE("reader chunks: small files are read line by line unless asked") {

@@ -28,7 +28,8 @@ grammar::FileId add(grammar::SourceMap& map, std::string name, std::string text,
                               .parent = parent,
                               .include_line = include_line,
                               .depth = 0,
-                              .line_starts = {}});
+                              .line_starts = {},
+                              .comment_holds_marker = {}});
 }
 
 std::string full(const Diagnostic& d, const grammar::SourceMap& map, bool colour = false) {

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,6 +27,9 @@ struct Span {
     bool valid() const { return file != no_file; }
 };
 
+// The word that opens an inline suppression in a comment ("$ sphdeck: ...", lint/suppressions.cpp).
+inline constexpr std::string_view directive_marker = "sphdeck";
+
 // One opened file: an include instance. The same path included twice is two instances,
 // because each has its own include chain and parameter scope.
 struct SourceFile {
@@ -37,6 +41,10 @@ struct SourceFile {
     unsigned depth = 0;              // 0 for a main file
 
     mutable std::vector<std::uint32_t> line_starts;  // built lazily and partly, for excerpts only
+    // Whether a line of `text` that starts with '$' or '#' holds directive_marker, where the reader looked
+    // at every line (a big file read in chunks, grammar/line_chunks.hpp); unknown otherwise. With it the
+    // suppressions need no second pass over a big text.
+    std::optional<bool> comment_holds_marker;
 };
 
 class SourceMap {

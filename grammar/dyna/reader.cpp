@@ -135,7 +135,7 @@ void DeckReader::read(FileId file, CardFormat inherited_format, const FileCache:
     open.text = &source.text;
     stack_.push_back(open);
     if (const std::size_t chunk_bytes = line_chunk_bytes(source.text.size())) {
-        read_chunked(source.text, chunk_bytes);
+        deck_.sources.file(file).comment_holds_marker = read_chunked(source.text, chunk_bytes);
     } else {
         pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf, const char*> in(
             source.text.data(), source.text.data() + source.text.size(), source.path.c_str());

@@ -6,9 +6,9 @@
 
 namespace sphdeck::grammar::radioss {
 
-void DeckReader::read_chunked(const SourceText& text, std::size_t chunk_bytes) {
+bool DeckReader::read_chunked(const SourceText& text, std::size_t chunk_bytes) {
     const char* const end = text.data() + text.size();
-    read_in_chunks(
+    return read_in_chunks(
         text, LineSyntax::Radioss, chunk_bytes, deck_.lines, [&](const char* line) { grammar_line(line, end); },
         [&](const std::uint32_t* starts, std::size_t count) { data_lines(starts, count, end); });
 }

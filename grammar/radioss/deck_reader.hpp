@@ -43,7 +43,8 @@ private:
 
     // A big file read in chunks on all threads (grammar/line_chunks.hpp, chunked_lines.cpp): the lines the
     // grammar must read go through it one by one (grammar_line, reader.cpp), runs of data lines in one step.
-    void read_chunked(const SourceText& text, std::size_t chunk_bytes);
+    // Whether a comment line holds the suppressions' marker (text::SourceFile::comment_holds_marker).
+    bool read_chunked(const SourceText& text, std::size_t chunk_bytes);
     void grammar_line(const char* begin, const char* text_end);
     void data_lines(const std::uint32_t* starts, std::size_t count, const char* text_end);
 

@@ -189,7 +189,7 @@ void DeckReader::read(FileId file) {
     open.base = source.text.data();
     stack_.push_back(open);
     if (const std::size_t chunk_bytes = line_chunk_bytes(source.text.size())) {
-        read_chunked(source.text, chunk_bytes);
+        deck_.sources.file(file).comment_holds_marker = read_chunked(source.text, chunk_bytes);
     } else {
         pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf, const char*> in(
             source.text.data(), source.text.data() + source.text.size(), source.path.c_str());
