@@ -67,10 +67,11 @@ inline bool middle_ranks_by_bins(const std::vector<double>& v, double lo, double
     return true;
 }
 
+// Min and max, and the median when counting or binning finds it (true); else `s.median` is left to
+// median_by_partial_sort.
 template <typename T>
-Stats stats_of(const std::vector<T>& values) {
-    Stats s;
-    if (values.empty()) return s;
+bool stats_without_sort(const std::vector<T>& values, Stats& s) {
+    if (values.empty()) return true;
     auto [lo, hi] = std::minmax_element(values.begin(), values.end());
     s.min = static_cast<double>(*lo), s.max = static_cast<double>(*hi);
     const std::size_t mid = values.size() / 2;
@@ -84,7 +85,7 @@ Stats stats_of(const std::vector<T>& values) {
             s.median = static_cast<double>(value_of_rank(counts, low, mid));
             if (values.size() % 2 == 0)
                 s.median = 0.5 * (s.median + static_cast<double>(value_of_rank(counts, low, mid - 1)));
-            return s;
+            return true;
         }
     }
     if constexpr (std::is_same_v<T, double>) {
@@ -92,14 +93,38 @@ Stats stats_of(const std::vector<T>& values) {
         if (values.size() >= 2 &&
             middle_ranks_by_bins(values, *lo, *hi, mid, values.size() % 2 == 0, at_mid, below_mid)) {
             s.median = values.size() % 2 == 0 ? 0.5 * (at_mid + below_mid) : at_mid;
-            return s;
+            return true;
         }
     }
-    std::vector<T> v(values);
+    return false;
+}
+
+// The median by a partial sort of `v` (reordered).
+template <typename T>
+void median_by_partial_sort(std::vector<T>& v, Stats& s) {
+    const std::size_t mid = v.size() / 2;
     std::nth_element(v.begin(), v.begin() + mid, v.end());
     s.median = static_cast<double>(v[mid]);
     if (v.size() % 2 == 0)
         s.median = 0.5 * (s.median + static_cast<double>(*std::max_element(v.begin(), v.begin() + mid)));
+}
+
+template <typename T>
+Stats stats_of(const std::vector<T>& values) {
+    Stats s;
+    if (stats_without_sort(values, s)) return s;
+    std::vector<T> v(values);
+    median_by_partial_sort(v, s);
+    return s;
+}
+
+// The same, the values given up: sorted in place when they must be, and freed on return, not left to the
+// caller until its end (the preview's peak of memory, issue 40 item 2).
+template <typename T>
+Stats stats_of(std::vector<T>&& values) {
+    std::vector<T> v = std::move(values);
+    Stats s;
+    if (!stats_without_sort(v, s)) median_by_partial_sort(v, s);
     return s;
 }
 
