@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace sphdeck::preproc {
 
@@ -184,7 +185,12 @@ bool count_cell_avx2(const NeighbourGrid& g, double support, std::uint32_t first
         std::int32_t fixed = 0;
         std::uint32_t close = 0;
         // One run of candidates [b, e): eight a step, the lanes past e sentinels.
-        const auto scan = [&](std::uint32_t b, std::uint32_t e) {
+        __m256 undecided_any = _mm256_setzero_ps();
+        // One run of candidates [b, e): eight a step, the lanes past e sentinels. First pass: the lanes decided
+        // in float counted, the undecided ones noted; second pass (a point with undecided lanes, rare): the
+        // same float values again (the same operations on the same values), the undecided lanes decided in
+        // double.
+        const auto scan = [&](std::uint32_t b, std::uint32_t e, auto second) {
             for (std::uint32_t j = b; j < e; j += lanes) {
                 const __m256 dx = px - _mm256_loadu_ps(fx + j), dy = py - _mm256_loadu_ps(fy + j),
                              dz = pz - _mm256_loadu_ps(fz + j);
@@ -192,16 +198,20 @@ bool count_cell_avx2(const NeighbourGrid& g, double support, std::uint32_t first
                 const __m256 in = _mm256_cmp_ps(r2, in_below, _CMP_LT_OQ);
                 const __m256 near = _mm256_cmp_ps(r2, out_above, _CMP_LE_OQ);
                 const __m256 maybe_close = _mm256_cmp_ps(r2, close_up_to, _CMP_LE_OQ);
-                const __m256i add = _mm256_castps_si256(in);  // -1 where counted
-                within = _mm256_sub_epi32(within, add);
-                auto* c = reinterpret_cast<__m256i*>(gained + j);
-                _mm256_storeu_si256(c, _mm256_sub_epi32(_mm256_loadu_si256(c), add));
                 // `in` implies `near`: their difference is the undecided lanes.
-                const int undecided = _mm256_movemask_ps(_mm256_or_ps(_mm256_xor_ps(in, near), maybe_close));
-                if (undecided) [[unlikely]] {
+                const __m256 undecided = _mm256_or_ps(_mm256_xor_ps(in, near), maybe_close);
+                if constexpr (!decltype(second)::value) {
+                    const __m256i add = _mm256_castps_si256(in);  // -1 where counted
+                    within = _mm256_sub_epi32(within, add);
+                    auto* c = reinterpret_cast<__m256i*>(gained + j);
+                    _mm256_storeu_si256(c, _mm256_sub_epi32(_mm256_loadu_si256(c), add));
+                    undecided_any = _mm256_or_ps(undecided_any, undecided);
+                } else {
+                    const int lanes_undecided = _mm256_movemask_ps(undecided);
+                    if (!lanes_undecided) continue;
                     const int counted = _mm256_movemask_ps(in);
                     for (std::uint32_t l = 0; l < lanes; ++l) {
-                        if (!((undecided >> l) & 1)) continue;
+                        if (!((lanes_undecided >> l) & 1)) continue;
                         const std::uint32_t q = sorted_at(j + l);
                         const double ex = gx[k] - gx[q], ey = gy[k] - gy[q], ez = gz[k] - gz[q];
                         const double exact = ex * ex + ey * ey + ez * ez;
@@ -214,9 +224,14 @@ bool count_cell_avx2(const NeighbourGrid& g, double support, std::uint32_t first
             }
         };
         const auto [skip_low, skip_high] = corner_rows_out_of_reach(g, box, gy[k], gz[k], reach2);
-        scan(i + 1, run_end[0]);
-        for (std::size_t r = 1; r < ranges.size(); ++r)
-            if (!((r == 2 && skip_low) || (r == 4 && skip_high))) scan(run_begin[r], run_end[r]);
+        const auto pass = [&](auto second) {
+            scan(i + 1, run_end[0], second);
+            for (std::size_t r = 1; r < ranges.size(); ++r)
+                if (!((r == 2 && skip_low) || (r == 4 && skip_high))) scan(run_begin[r], run_end[r], second);
+        };
+        pass(std::false_type{});
+        if (_mm256_movemask_ps(undecided_any)) [[unlikely]]
+            pass(std::true_type{});
         gained[i] += lane_sum(within) + fixed;
         if (close) close_points.push_back(k);
     }
