@@ -8,6 +8,7 @@
 
 #include "preproc/close_pairs.hpp"
 #include "preproc/collapsed_points.hpp"
+#include "preproc/count_cell_float.hpp"
 #include "preproc/first_pairs.hpp"
 #include "preproc/nearest_tree.hpp"
 #include "preproc/neighbour_grid.hpp"
@@ -490,14 +491,6 @@ template <bool Uniform, bool Weighted>
     within += w, close += c;
 }
 
-// Whether a point (py, pz) is farther than sqrt(reach2) from every point of a corner row of its
-// half-block: `gap_y` and `gap_z` are its distances to the planes that row lies beyond, less a
-// margin for the rounding of the binning (cell faces are computed, points are binned by a product
-// rounded on its own). Only ever a true statement: skipping the row then changes no count.
-inline bool corner_out_of_reach(double gap_y, double gap_z, double reach2) {
-    return gap_y > 0 && gap_z > 0 && gap_y * gap_y + gap_z * gap_z > reach2;
-}
-
 // The pairs of one occupied cell's points [first, last): with each other, and with the points of
 // `ranges` (cells after it in cell order: count_symmetric's half-block rows). `box`: the cell's
 // faces (block_bounds at reach 0); `largest`: the largest |support| of any point. The corner rows
@@ -510,7 +503,6 @@ template <bool Uniform, bool Weighted>
                                               std::span<const NeighbourGrid::Range> ranges, double tol2,
                                               std::uint64_t* count, std::vector<std::uint32_t>& close_points,
                                               const NeighbourGrid::BlockBounds& box, double largest) {
-    const double slack = 1e-9 * g.cell_size();
     for (std::uint32_t k = first; k < last; ++k) {
         std::uint64_t within = 0, close = 0;
         if constexpr (Weighted) {  // the points k stands for, with each other: the same test as two points'
@@ -527,12 +519,7 @@ template <bool Uniform, bool Weighted>
         // The farthest any pair of k counts or is close: (|s_k| + |s_j|) / 2 at most, or the tolerance.
         const double reach = Uniform ? std::abs(support[0]) : 0.5 * (std::abs(support[k]) + largest);
         const double reach2 = std::max(reach * reach, tol2) * (1 + 1e-9);
-        const double py = g.y()[k], pz = g.z()[k];
-        const double margin_y = slack + 1e-13 * (std::abs(py) + std::abs(box.lower[1]) + std::abs(box.upper[1]));
-        const double margin_z = slack + 1e-13 * (std::abs(pz) + std::abs(box.upper[2]));
-        const double up = box.upper[2] - pz - margin_z;
-        const bool skip_low = corner_out_of_reach(py - box.lower[1] - margin_y, up, reach2);
-        const bool skip_high = corner_out_of_reach(box.upper[1] - py - margin_y, up, reach2);
+        const auto [skip_low, skip_high] = corner_rows_out_of_reach(g, box, g.y()[k], g.z()[k], reach2);
         for (std::size_t r = 0; r < ranges.size(); ++r) {
             const auto [b, e] = ranges[r];
             if (b == e || (r == 2 && skip_low) || (r == 4 && skip_high)) continue;
@@ -573,14 +560,18 @@ SPHDECK_COUNT_CELL(count_cell_weighted_mixed, false, true)
 template <bool Uniform>
 void count_symmetric(const NeighbourGrid& g, std::span<const double> support, const std::uint32_t* weight, double tol2,
                      double largest, std::vector<std::uint64_t>& count, std::vector<std::uint32_t>& close_points) {
-    static constexpr NeighbourGrid::RowOffset half[] = {
-        {1, 1, 0, 0}, {-1, 1, 1, 0}, {-1, 1, -1, 1}, {-1, 1, 0, 1}, {-1, 1, 1, 1}};
     static_assert(count_reach == 1, "the half-block rows assume cells as large as the support");
+    // The plain uniform counts in float lanes where the CPU has them (count_cell_float.hpp): the same counts.
+    const CountCellFloat in_floats = Uniform && !weight ? count_cell_float() : nullptr;
     const auto run = [&](std::size_t from, std::size_t to, std::vector<std::uint32_t>& close) {
-        g.for_each_cell_rows(half, from, to,
+        FloatCellScratch scratch;
+        g.for_each_cell_rows(count_half_rows, from, to,
                              [&](std::size_t o, NeighbourGrid::Cell at,
                                  const std::vector<NeighbourGrid::Range>& ranges) {
                                  const auto [first, last] = g.occupied_range(o);
+                                 if (in_floats && in_floats(g, support[0], first, last, ranges, tol2, count.data(),
+                                                            close, g.block_bounds(at, 0), scratch))
+                                     return;
                                  const CountCell cell =
                                      weight ? (Uniform ? count_cell_weighted_uniform : count_cell_weighted_mixed)
                                             : (Uniform ? count_cell_uniform : count_cell_mixed);

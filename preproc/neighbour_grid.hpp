@@ -109,6 +109,29 @@ public:
     void for_each_cell_rows(std::span<const RowOffset> rows, std::size_t begin, std::size_t end_cell, F&& f) const {
         std::vector<Range> ranges(rows.size());
         std::vector<std::size_t> cursor(rows.size(), 0);
+        // A dense grid's cell whose rows all lie inside the grid: each row's first cell, and the cell after its
+        // last, at a fixed distance in cell indices from the cell's own (no clipping, no index to compute).
+        std::vector<long long> first_cell(rows.size()), after_cell(rows.size());
+        long long reach_lo[3] = {0, 0, 0}, reach_hi[3] = {0, 0, 0};
+        bool straight = !hashed_;
+        const long long plane = static_cast<long long>(n_[0]) * n_[1];
+        for (std::size_t r = 0; r < rows.size(); ++r) {
+            const RowOffset& w = rows[r];
+            straight = straight && w.dx0 <= w.dx1;
+            const long long shift = w.dy * static_cast<long long>(n_[0]) + w.dz * plane;
+            first_cell[r] = shift + w.dx0, after_cell[r] = shift + w.dx1 + 1;
+            reach_lo[0] = std::min<long long>(reach_lo[0], w.dx0),
+            reach_hi[0] = std::max<long long>(reach_hi[0], w.dx1);
+            reach_lo[1] = std::min<long long>(reach_lo[1], w.dy), reach_hi[1] = std::max<long long>(reach_hi[1], w.dy);
+            reach_lo[2] = std::min<long long>(reach_lo[2], w.dz), reach_hi[2] = std::max<long long>(reach_hi[2], w.dz);
+        }
+        const auto inside = [&](const Cell& c) {
+            for (int a = 0; a < 3; ++a)
+                if (static_cast<long long>(c[a]) + reach_lo[a] < 0 ||
+                    static_cast<long long>(c[a]) + reach_hi[a] >= static_cast<long long>(n_[a]))
+                    return false;
+            return true;
+        };
         Cell c{};
         for (std::size_t o = begin; o < end_cell; ++o) {
             // The next cell along x when the key is one more (no division to decode it).
@@ -116,7 +139,14 @@ public:
                 ++c[0];
             else
                 c = occupied_cell(o);
-            for (std::size_t r = 0; r < rows.size(); ++r) ranges[r] = offset_row_range(rows[r], c, cursor[r]);
+            if (straight && inside(c)) {
+                const long long at = occupied_cells_[o];
+                for (std::size_t r = 0; r < rows.size(); ++r)
+                    ranges[r] = {start_[static_cast<std::size_t>(at + first_cell[r])],
+                                 start_[static_cast<std::size_t>(at + after_cell[r])]};
+            } else {
+                for (std::size_t r = 0; r < rows.size(); ++r) ranges[r] = offset_row_range(rows[r], c, cursor[r]);
+            }
             f(o, c, ranges);
         }
     }

@@ -116,6 +116,7 @@ void preview_part(const model::Model& m, const ParticlePositions& at, const Part
     const bool arrays = !pp.mass.empty();
     std::size_t count = 0;  // the part's located particles
     std::vector<double> masses, volumes;
+    masses.reserve(groups.begin[q + 1] - groups.begin[q]);
     for (std::size_t k = groups.begin[q]; k < groups.begin[q + 1]; ++k) {
         const std::uint32_t i = groups.member(k);
         ++pv.particles;
