@@ -223,7 +223,9 @@ bool count_cell_avx2(const NeighbourGrid& g, double support, std::uint32_t first
                 }
             }
         };
-        const auto [skip_low, skip_high] = corner_rows_out_of_reach(g, box, gy[k], gz[k], reach2);
+        // Not a structured binding: clang 14 cannot capture one in a lambda.
+        const std::pair<bool, bool> skip = corner_rows_out_of_reach(g, box, gy[k], gz[k], reach2);
+        const bool skip_low = skip.first, skip_high = skip.second;
         const auto pass = [&](auto second) {
             scan(i + 1, run_end[0], second);
             for (std::size_t r = 1; r < ranges.size(); ++r)
