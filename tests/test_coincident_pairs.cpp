@@ -227,7 +227,7 @@ TEST_CASE("coincident pairs: every pair within the reach found once on 64-bit ke
                     CHECK_MESSAGE(at != found.end(), "pair ", i, " ", j, " not offered");
                 }
             REQUIRE(within > (reach > 0 ? 100u : 10u));
-            for (const auto& [pair, times] : found) CHECK_MESSAGE(times == 1, "pair offered ", times, " times");
+            for (const auto& entry : found) CHECK_MESSAGE(entry.second == 1, "pair offered ", entry.second, " times");
         }
 }
 
