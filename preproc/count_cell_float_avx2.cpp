@@ -184,8 +184,7 @@ bool count_cell_avx2(const NeighbourGrid& g, double support, std::uint32_t first
         __m256i within = _mm256_setzero_si256();
         std::int32_t fixed = 0;
         std::uint32_t close = 0;
-        // One run of candidates [b, e): eight a step, the lanes past e sentinels.
-        __m256 undecided_any = _mm256_setzero_ps();
+        __m256 undecided_any = _mm256_setzero_ps();  // any lane of the first pass left to the second
         // One run of candidates [b, e): eight a step, the lanes past e sentinels. First pass: the lanes decided
         // in float counted, the undecided ones noted; second pass (a point with undecided lanes, rare): the
         // same float values again (the same operations on the same values), the undecided lanes decided in
