@@ -24,12 +24,15 @@ Setting<double> setting_of(const StarterValue<double>& v) { return {v.value, v.e
 
 int radioss_law(std::string_view name) {
     if (name.rfind("LAW", 0) == 0) {
+        // The starter's laws have at most three digits; a longer number names none (and would overflow an int).
+        const std::string_view digits = name.substr(3);
+        if (digits.empty() || digits.size() > 6) return -1;
         int law = 0;
-        for (char c : name.substr(3)) {
+        for (char c : digits) {
             if (c < '0' || c > '9') return -1;
             law = law * 10 + (c - '0');
         }
-        return name.size() > 3 ? law : -1;
+        return law;
     }
     static const std::map<std::string_view, int> names = {
         {"VOID", 0},      {"ELAST", 1},      {"PLAS_JOHNS", 2}, {"PLAS_ZERIL", 2}, {"HYDPLA", 3},     {"HYD_JCOOK", 4},

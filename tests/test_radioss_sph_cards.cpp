@@ -5,6 +5,7 @@
 #include <string>
 
 #include "engine/check.hpp"
+#include "model/radioss_builder.hpp"
 #include "model/radioss_facts.hpp"
 #include "test_support.hpp"
 
@@ -154,4 +155,23 @@ TEST_CASE("radioss sph cards: /SPH/INOUT surf_ID is checked against the /SURF he
     // A /SURF header whose id cannot be read: surface ids are not checked.
     CHECK(count_code(check(deck(part + "/SURF/PART\nno id\n" + inout)).diagnostics, "REF008") == 0);
 }
+}  // namespace test_radioss_sph_cards_cpp
+
+namespace test_radioss_sph_cards_cpp {
+
+// A fuzzer's /MAT/LAW6444444444444444 overflowed the int the law is read into (UBSan at CI).
+TEST_CASE("radioss sph cards: a /MAT/LAW number is read only as long as a law can be") {
+    CHECK(model::radioss_law("LAW6") == 6);
+    CHECK(model::radioss_law("LAW006") == 6);
+    CHECK(model::radioss_law("LAW151") == 151);
+    CHECK(model::radioss_law("HYD_VISC") == 6);
+    CHECK(model::radioss_law("LAW") == -1);
+    CHECK(model::radioss_law("LAW6x") == -1);
+    CHECK(model::radioss_law("LAW6444444444444444") == -1);
+    CHECK(model::radioss_law("LAW2147483648") == -1);
+    // The whole deck: read without a crash, the material's law unknown.
+    const auto r = check(deck("/MAT/LAW6444444444444444/3\nwater\n      1000       0.0\n"));
+    CHECK(r.model.radioss.has_value());
+}
+
 }  // namespace test_radioss_sph_cards_cpp
