@@ -87,8 +87,15 @@ for t in "${targets[@]}"; do
   if [ "$status" -ne 0 ]; then
     failed+=("$t")
     grep -E "^(==[0-9]+==ERROR|SUMMARY|.*runtime error|.*Test unit written to|ALARM|MS: )" "$log" | head -20 >&2 || true
+    # The stack of the first report, from its first frame: a clean CI machine keeps nothing else of it.
+    awk '/^==[0-9]+==ERROR|runtime error/ { on = 1 } on && /^ +#[0-9]+ / { print; if (++n == 24) exit }' "$log" >&2 || true
     echo "fuzz_$t FAILED: reproducing input(s) in $artifacts/ (replay: $bin FILE)" >&2
-    ls -1 "$artifacts" >&2 || true
+    # Each input as base64 too (inputs are at most 8 KiB): 'base64 -d > crash' rebuilds it where the folder is gone.
+    for a in "$artifacts"/*; do
+      [ -f "$a" ] || continue
+      echo "$(basename "$a") ($(wc -c < "$a") bytes), base64:" >&2
+      base64 -w 120 "$a" >&2
+    done
   elif [ "$update" -eq 1 ]; then
     "$bin" -merge=1 "$kept" "$found" > "$out/$t.merge.log" 2>&1
     echo "   merged into fuzz/corpus/$t: $(ls -1 "$kept" | wc -l) inputs"
