@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <fmt/format.h>
+#include <limits>
 #include <map>
 
 #include "grammar/radioss/cards.hpp"
@@ -336,7 +337,10 @@ int radioss_version(const grammar::RawDeck& deck) {
         std::string_view text = trim_line(deck.text(deck.lines[b.first_line + 1]));
         text = text.substr(0, text.find_first_of(" \t,"));
         grammar::IntegerValue v = grammar::parse_integer(text);
-        return v.status == grammar::NumberStatus::Ok && v.value > 0 ? static_cast<int>(v.value) : rad::latest_version;
+        // An Invers past an int (the starter reads it with I10 into a 32-bit integer) is no version either.
+        return v.status == grammar::NumberStatus::Ok && v.value > 0 && v.value <= std::numeric_limits<int>::max()
+                   ? static_cast<int>(v.value)
+                   : rad::latest_version;
     }
     return rad::latest_version;
 }

@@ -6,6 +6,7 @@
 
 #include "engine/check.hpp"
 #include "model/radioss_builder.hpp"
+#include "model/radioss_decoder.hpp"
 #include "model/radioss_facts.hpp"
 #include "test_support.hpp"
 
@@ -172,6 +173,15 @@ TEST_CASE("radioss sph cards: a /MAT/LAW number is read only as long as a law ca
     // The whole deck: read without a crash, the material's law unknown.
     const auto r = check(deck("/MAT/LAW6444444444444444/3\nwater\n      1000       0.0\n"));
     CHECK(r.model.radioss.has_value());
+}
+
+// An Invers the starter's 32-bit integer cannot hold is no version: not one its low bits make.
+TEST_CASE("radioss sph cards: an Invers past an int is read as no version") {
+    CHECK(model::radioss_version(check(deck("", 2017)).deck) == 2017);
+    CHECK(model::radioss_version(check(deck("", 44)).deck) == 44);
+    const int latest = model::radioss_version(check("#RADIOSS STARTER\n/END\n").deck);
+    CHECK(model::radioss_version(check(deck("", 0)).deck) == latest);
+    CHECK(model::radioss_version(check("#RADIOSS STARTER\n/BEGIN\nrun\n4294967298\n/END\n").deck) == latest);
 }
 
 }  // namespace test_radioss_sph_cards_cpp
