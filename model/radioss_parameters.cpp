@@ -103,21 +103,28 @@ void RadiossParameters::collect(const grammar::RawDeck& deck, int version, Radio
             continue;
         }
         const rad::KeywordSpec* spec = rad::find_keyword(b.keyword);
-        const bool evaluated = scope == "GLOBAL" && (type == "INTEGER" || type == "REAL") && spec;
-        if (!evaluated) {
+        // The name and value card of the table found: a header the tables read otherwise (a family's text-only
+        // table, for /PARAMETER//GLOBAL/REAL with its empty segment) gives no value to evaluate.
+        const rad::CardSpec* card = spec && !spec->format_for(version).cards.empty()
+                                        ? &spec->format_for(version).cards.front()
+                                        : nullptr;
+        const bool evaluated_kind = scope == "GLOBAL" && (type == "INTEGER" || type == "REAL");
+        if (!evaluated_kind || !card || card->fields.size() < 2) {
             RadiossParameter p = unevaluated(deck, *line);
             p.block = i;
-            report_parameter(
-                out, "DK001", diag::Severity::Info,
-                fmt::format("/PARAMETER/{}/{} '{}' is not evaluated (sphdeck reads /PARAMETER/GLOBAL/INTEGER and "
-                            "REAL only): cells that use it are not checked",
-                            scope, type, p.name),
-                p.name.empty() ? b.span : p.span);
+            const std::string why =
+                evaluated_kind ? fmt::format("sphdeck reads no name and value card for the header {}", b.keyword)
+                               : std::string("sphdeck reads /PARAMETER/GLOBAL/INTEGER and REAL only");
+            report_parameter(out, "DK001", diag::Severity::Info,
+                             fmt::format("/PARAMETER/{}/{} '{}' is not evaluated ({}): cells that use it are not "
+                                         "checked",
+                                         scope, type, p.name, why),
+                             p.name.empty() ? b.span : p.span);
             if (!p.name.empty()) define(std::move(p), out);
             continue;
         }
         decoder.set_block(i);  // a value may use the parameters defined before it
-        decoder.decode(*line, spec->format_for(version).cards.front(), version, false, values);
+        decoder.decode(*line, *card, version, false, values);
         RadiossParameter p;
         p.name = std::string(values.at(0).text);
         p.span = values[0].span;

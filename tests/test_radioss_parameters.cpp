@@ -162,4 +162,16 @@ TEST_CASE("radioss parameters: malformed definitions are reported, not a crash")
     r = check("/PARAMETER/GLOBAL/REAL/1\n");  // not even a title
     CHECK(count_code(r.diagnostics, "DK008") == 1);
 }
+
+// A fuzzer's header with an empty segment: its segments read GLOBAL and REAL, but the table found for it has no
+// name and value card (the value was then taken from a card of one field: an uncaught out_of_range).
+TEST_CASE("radioss parameters: a header read by a table without the name and value card is not evaluated") {
+    const auto r = check("/PARAMETER//GLOBAL/REAL/1\ntitle\n" + fmt::format("{:<10}{:>20}\n", "width", "2.5") +
+                         "/NODE\n" + node("1", "[width]"));
+    CHECK(count_code(r.diagnostics, "DK008") == 0);
+    REQUIRE(count_code(r.diagnostics, "DK001") == 1);
+    CHECK(find_code(r.diagnostics, "DK001")->message.find("no name and value card for the header "
+                                                          "/PARAMETER//GLOBAL/REAL/1") != std::string::npos);
+    CHECK(x_of(r, 1) == 0.0);  // not evaluated: its use keeps no value
+}
 }  // namespace test_radioss_parameters_cpp
