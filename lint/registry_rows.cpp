@@ -247,7 +247,9 @@ constexpr RuleInfo kRows[] = {
      "*PART SECID with no *SECTION_ keyword of that id"},
     {"REF004", "undefined-material", Error, "0.1.0", "references",
      {"lint/rules_references.cpp lint/rules_radioss_id_links.cpp", "ref"},
-     "*PART MID with no *MAT_ keyword of that id"},
+     "*PART MID with no *MAT_ keyword of that id, or TMID with no *MAT_THERMAL_ (a warning in a structural "
+     "analysis)",
+     Fixable::Unsafe},
     {"REF005", "undefined-eos", Error, "0.1.0", "references",
      {"lint/rules_references.cpp", "ref"},
      "*PART EOSID with no *EOS_ keyword of that id"},

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <tuple>
 #include <map>
+#include <optional>
 #include <set>
 #include <unordered_map>
 
@@ -240,15 +241,20 @@ std::string missing_reference(const model::Part& part, std::string_view field, s
 struct Naming {
     const model::Part* part;
     grammar::Span place;
-    std::string message;  // as the finding would read at this part
+    std::string message;           // as the finding would read at this part
+    std::optional<diag::Fix> fix;  // at this part
 };
 
 class MissingIds {
 public:
-    void add(std::string_view code, const Id& id, const model::Part& part, grammar::Span place, std::string message) {
-        auto [it, fresh] = index_.try_emplace({std::string(code), id}, missing_.size());
-        if (fresh) missing_.push_back({std::string(code), id, {}});
-        missing_[it->second].namings.push_back({&part, place, std::move(message)});
+    // `field` keeps apart the ids of one code that name different things (MID 5 and TMID 5); `severity`, when
+    // given, is the finding's instead of the rule's.
+    void add(std::string_view code, const Id& id, const model::Part& part, grammar::Span place, std::string message,
+             std::string_view field = {}, std::optional<diag::Severity> severity = std::nullopt, std::string note = {},
+             std::optional<diag::Fix> fix = std::nullopt) {
+        auto [it, fresh] = index_.try_emplace({std::string(code) + "/" + std::string(field), id}, missing_.size());
+        if (fresh) missing_.push_back({std::string(code), id, {}, severity, std::move(note)});
+        missing_[it->second].namings.push_back({&part, place, std::move(message), std::move(fix)});
     }
 
     void report(RuleContext& c) {
@@ -267,7 +273,10 @@ public:
                 message += fmt::format("; {} parts {} ({}{})", n.size(), m.id == "0" ? "have none" : "name it", ids,
                                        n.size() > listed_ids ? ", ..." : "");
             }
-            diag::Diagnostic& d = c.report(m.code, n.front().place, std::move(message));
+            diag::Diagnostic& d = m.severity ? c.report(m.code, *m.severity, n.front().place, std::move(message))
+                                             : c.report(m.code, n.front().place, std::move(message));
+            if (!m.note.empty()) d.notes.push_back({{}, m.note});
+            if (n.front().fix) d.fixes.push_back(*n.front().fix);
             for (std::size_t k = 1; k < n.size() && k <= listed_notes; ++k)
                 d.notes.push_back(
                     {n[k].place, fmt::format("part {} {} too", n[k].part->id, m.id == "0" ? "has none" : "names it")});
@@ -279,14 +288,52 @@ private:
         std::string code;
         Id id;
         std::vector<Naming> namings;
+        std::optional<diag::Severity> severity;
+        std::string note;  // one, after the message
     };
     std::vector<Missing> missing_;
     std::map<std::pair<std::string, Id>, std::size_t> index_;
 };
 
+// TMID names a *MAT_THERMAL_ material. A thermal or coupled analysis (*CONTROL_SOLUTION SOLN 1 or 2) needs it
+// ("thermal properties must be specified for all solid, shell and thick shell parts if a thermal or coupled
+// structural thermal analysis is being performed", *PART): an error there. A structural analysis does not read
+// it, so the manual gives no failure: a warning, since a TMID that names nothing was meant to be 0 (the letter
+// O typed for the digit reads as a label).
+void check_thermal_material(const RuleContext& c, const model::Part& part, const ThermalMaterialIds& thermal,
+                            MissingIds& missing) {
+    const auto& t = part.thermal_material;
+    if (c.model.radioss || !t.explicit_value || t.value.empty() || t.value == "0" || thermal.unreadable ||
+        thermal.ids.count(t.value))
+        return;
+    const long long soln = c.model.controls.soln.value;
+    const bool thermal_run = soln == 1 || soln == 2;
+    // The letter O typed for the digit 0 ("O", "1O"): the digits it was meant to be, as an unsafe fix.
+    std::string digits = t.value;
+    bool letter_o = false;
+    for (char& ch : digits)
+        if (ch == 'O' || ch == 'o') ch = '0', letter_o = true;
+    letter_o = letter_o && std::all_of(digits.begin(), digits.end(), [](char ch) { return ch >= '0' && ch <= '9'; });
+    std::optional<diag::Fix> fix;
+    if (letter_o)
+        fix = diag::Fix{fmt::format("write the digits {} (the letter O read as a label)", digits),
+                        false,
+                        {{t.span, digits}}};
+    missing.add("REF004", t.value, part, t.span,
+                fmt::format("part {} names thermal material {} (TMID), which no *MAT_THERMAL_ defines{}", part.id,
+                            t.value, letter_o ? fmt::format(" (the letter O for the digit 0: {} meant?)", digits) : ""),
+                "TMID", thermal_run ? diag::Severity::Error : diag::Severity::Warning,
+                thermal_run ? fmt::format("a thermal or coupled analysis (*CONTROL_SOLUTION SOLN {}) reads every "
+                                          "part's thermal material",
+                                          soln)
+                            : "a structural analysis (SOLN 0) does not read TMID, but the value names nothing",
+                std::move(fix));
+}
+
 void check_part_references(RuleContext& c, std::set<Id>& used_sections, std::set<Id>& used_materials,
                            std::set<Id>& used_eos) {
     MissingIds missing;
+    const ThermalMaterialIds thermal = thermal_material_ids(c.deck);
     for (const model::Part& part : c.model.parts) {
         const auto& s = part.section;
         if (s.explicit_value && !c.model.section(s.value))
@@ -304,6 +351,7 @@ void check_part_references(RuleContext& c, std::set<Id>& used_sections, std::set
             missing.add("REF005", e.value, part, e.span,
                         fmt::format("part {} names EOS {}, which no {} defines", part.id, e.value, words(c).eos));
         used_eos.insert(e.value);
+        check_thermal_material(c, part, thermal, missing);
     }
     missing.report(c);
 }

@@ -55,4 +55,17 @@ void check_thermal_material_duplicates(RuleContext& c, const model::CaseBlocks& 
     }
 }
 
+ThermalMaterialIds thermal_material_ids(const grammar::RawDeck& deck) {
+    ThermalMaterialIds out;
+    for (const grammar::Block& b : deck.blocks) {
+        if (b.keyword.rfind("*MAT_THERMAL_", 0) != 0) continue;
+        if (deck.begin_lines(b) + keywords::title_lines(b.keyword) >= deck.end_lines(b)) continue;  // no card
+        if (const auto tmid = thermal_id(deck, b))
+            out.ids.insert(std::to_string(tmid->id));
+        else
+            out.unreadable = true;
+    }
+    return out;
+}
+
 }  // namespace sphdeck::lint

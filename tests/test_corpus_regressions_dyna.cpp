@@ -66,7 +66,7 @@ TEST_CASE("corpus: 0 entries padding a set list are empty slots, not undefined i
 TEST_CASE("corpus: MID 0 on a part of a thermal-only analysis is not a missing material") {
     const std::string part =
         "*SECTION_SPH\n         1\n*PART\nwafer\n         1         1         0         0         0"
-        "         0         0         1\n";
+        "         0         0         1\n*MAT_THERMAL_ISOTROPIC\n         1    2330.0\n     700.0     150.0\n";
     auto thermal = engine::check_buffer("*KEYWORD\n*CONTROL_SOLUTION\n         1\n" + part, "d.k");
     CHECK(count_code(thermal.diagnostics, "REF004") == 0);
     CHECK(thermal.model.controls.soln.value == 1);

@@ -170,8 +170,9 @@ TEST_CASE("radioss parameters: a header read by a table without the name and val
                          "/NODE\n" + node("1", "[width]"));
     CHECK(count_code(r.diagnostics, "DK008") == 0);
     REQUIRE(count_code(r.diagnostics, "DK001") == 1);
-    CHECK(find_code(r.diagnostics, "DK001")->message.find("no name and value card for the header "
-                                                          "/PARAMETER//GLOBAL/REAL/1") != std::string::npos);
+    CHECK(find_code(r.diagnostics, "DK001")
+              ->message.find("no name and value card for the header "
+                             "/PARAMETER//GLOBAL/REAL/1") != std::string::npos);
     CHECK(x_of(r, 1) == 0.0);  // not evaluated: its use keeps no value
 }
 }  // namespace test_radioss_parameters_cpp

@@ -162,4 +162,64 @@ TEST_CASE("references: a material named by a generated keyword is used, an undef
     CHECK(count_code(missing.diagnostics, "REF007") == 1);  // material 2
     CHECK(count_code(missing.diagnostics, "REF004") == 1);  // material 3
 }
+
+namespace {
+// kPart's part with TMID `tmid` (columns 71-80), under *CONTROL_SOLUTION SOLN `soln` (none: -1), with `more`.
+engine::CheckResult thermal_deck(const std::string& tmid, int soln, const std::string& more = "") {
+    std::string deck = kPart;
+    deck.replace(deck.rfind("         1\n"), 11, fmt::format("         1         0         0         0{:>10}\n", tmid));
+    if (soln >= 0) deck += fmt::format("*CONTROL_SOLUTION\n{:>10}\n", soln);
+    return engine::check_buffer(deck + more, "d.k");
+}
+}  // namespace
+
+TEST_CASE("references: a TMID no *MAT_THERMAL_ defines is REF004, an error only where a thermal run reads it") {
+    for (int soln : {-1, 0, 1, 2}) {
+        CAPTURE(soln);
+        const auto r = thermal_deck("3", soln);
+        REQUIRE(count_code(r.diagnostics, "REF004") == 1);
+        const diag::Diagnostic* d = test::find_code(r.diagnostics, "REF004");
+        CHECK(d->severity == (soln >= 1 ? diag::Severity::Error : diag::Severity::Warning));
+        CHECK(d->message == "part 1 names thermal material 3 (TMID), which no *MAT_THERMAL_ defines");
+        CHECK(d->span.line == 10);
+        CHECK(d->span.column == 80);
+        CHECK(d->fixes.empty());
+    }
+    // Defined (after the part, or as "03"), 0, blank, or possibly defined by a parameter: nothing.
+    const std::string thermal = "*MAT_THERMAL_ISOTROPIC\n         3    1000.0\n    4180.0       0.6\n";
+    CHECK(count_code(thermal_deck("3", 1, thermal).diagnostics, "REF004") == 0);
+    CHECK(count_code(thermal_deck("03", 2, thermal).diagnostics, "REF004") == 0);
+    CHECK(count_code(thermal_deck("0", 1).diagnostics, "REF004") == 0);
+    CHECK(count_code(thermal_deck("", 1).diagnostics, "REF004") == 0);
+    const std::string by_parameter =
+        "*PARAMETER\nI   tmidp          7\n*MAT_THERMAL_ISOTROPIC\n    &tmidp    1000.0\n    4180.0       0.6\n";
+    CHECK(count_code(thermal_deck("3", 1, by_parameter).diagnostics, "REF004") == 0);
+    // Material 3 exists as a structural material: a thermal material 3 is still missing, and MID 3 missing too
+    // is a finding of its own (the ids of the two kinds are apart).
+    CHECK(count_code(thermal_deck("3", 1, "*MAT_NULL\n         3    1000.0\n").diagnostics, "REF004") == 1);
+    auto both = thermal_deck("1", 1);
+    CHECK(count_code(both.diagnostics, "REF004") == 1);  // TMID 1 (MID 1 is defined)
+}
+
+TEST_CASE("references: the letter O in a TMID is said so, with an unsafe fix that writes the digit") {
+    for (const char* written : {"O", "1O", "o"}) {
+        CAPTURE(written);
+        const auto r = thermal_deck(written, -1);
+        REQUIRE(count_code(r.diagnostics, "REF004") == 1);
+        const diag::Diagnostic* d = test::find_code(r.diagnostics, "REF004");
+        CHECK(d->severity == diag::Severity::Warning);
+        const std::string digits = std::string(written) == "1O" ? "10" : "0";
+        CHECK(d->message.find(fmt::format("(the letter O for the digit 0: {} meant?)", digits)) != std::string::npos);
+        REQUIRE(d->fixes.size() == 1);
+        CHECK_FALSE(d->fixes[0].safe);
+        REQUIRE(d->fixes[0].edits.size() == 1);
+        CHECK(d->fixes[0].edits[0].replacement == digits);
+        CHECK(d->fixes[0].edits[0].span.end_column == 81);
+        CHECK(d->fixes[0].edits[0].span.column == 81 - std::string(written).size());
+    }
+    // A label that is no letter-O slip: reported, without the fix.
+    const auto label = thermal_deck("hot", -1);
+    REQUIRE(count_code(label.diagnostics, "REF004") == 1);
+    CHECK(test::find_code(label.diagnostics, "REF004")->fixes.empty());
+}
 }  // namespace test_references_cpp
