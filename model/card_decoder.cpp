@@ -256,7 +256,7 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
                 break;
         }
     }
-    if (cut.free_format) check_decimal_comma(card, line, values);
+    if (cut.free_format) check_decimal_comma(card, line, values, positions_);
     if (out_.size() > first_finding) offer_realign(card, block.format, line, first_finding);
 }
 
@@ -282,8 +282,9 @@ void CardDecoder::offer_realign(const keywords::CardSpec& card, grammar::CardFor
 // fixed-format field (a free-format line is written from its first column, or with a blank after
 // each comma). Runs on free-format lines only.
 void CardDecoder::check_decimal_comma(const keywords::CardSpec& card, const grammar::CardLine& line,
-                                      const std::vector<FieldValue>& values) {
-    const auto comma = find_decimal_comma(line_text_);
+                                      const std::vector<FieldValue>& values,
+                                      std::span<const grammar::FixedField> positions) {
+    const auto comma = find_decimal_comma(line_text_, positions);
     if (!comma) return;
     std::string reading;
     std::size_t shown_fields = 0;

@@ -4,6 +4,7 @@
 
 #include <limits>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -128,7 +129,7 @@ private:
     void decode_number(const grammar::Block& block, const keywords::FieldSpec& spec, const grammar::ValueToken& token,
                        const grammar::Field& field, std::uint32_t fixed_width, FieldValue& v);
     void check_decimal_comma(const keywords::CardSpec& card, const grammar::CardLine& line,
-                             const std::vector<FieldValue>& values);
+                             const std::vector<FieldValue>& values, std::span<const grammar::FixedField> positions);
     void offer_realign(const keywords::CardSpec& card, grammar::CardFormat format, const grammar::CardLine& line,
                        std::size_t first_finding);
     void check_text(const grammar::Block& block, const keywords::FieldSpec& spec, FieldValue& v);

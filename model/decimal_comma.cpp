@@ -1,8 +1,11 @@
 #include "model/decimal_comma.hpp"
 
+#include <algorithm>
 #include <cctype>
 
 #include <fmt/format.h>
+
+#include "grammar/value.hpp"
 
 namespace sphdeck::model {
 namespace {
@@ -17,9 +20,10 @@ std::string shown_reading(std::string_view text) {
 
 }  // namespace
 
-std::optional<DecimalComma> find_decimal_comma(std::string_view text) {
+std::optional<DecimalComma> find_decimal_comma(std::string_view text, std::span<const grammar::FixedField> fields) {
     const std::size_t first = text.find(',');
-    if (first == std::string_view::npos || first < 2 || text[0] != ' ' || text[1] != ' ') return std::nullopt;
+    if (first == std::string_view::npos) return std::nullopt;
+    const bool padded = first >= 2 && text[0] == ' ' && text[1] == ' ';
     std::size_t comma = first;
     while (comma != std::string_view::npos &&
            !(comma > 0 && comma + 1 < text.size() && digit(text[comma - 1]) && digit(text[comma + 1])))
@@ -28,9 +32,19 @@ std::optional<DecimalComma> find_decimal_comma(std::string_view text) {
     std::size_t from = comma, to = comma + 1;
     while (from > 0 && !separator(text[from - 1])) --from;
     while (to < text.size() && !separator(text[to])) ++to;
-    return DecimalComma{from, to,
-                        std::string(text.substr(from, comma - from)) + "." +
-                            std::string(text.substr(comma + 1, to - comma - 1))};
+    DecimalComma found{from, to,
+                       std::string(text.substr(from, comma - from)) + "." +
+                           std::string(text.substr(comma + 1, to - comma - 1))};
+    if (padded) return found;
+    // Unpadded: the word must end at its field's end before a blank (not a comma: `0.002,1000,5` is free
+    // format) and read as one number with the point (`0.002,1000` would make two points).
+    const bool in_field = std::any_of(fields.begin(), fields.end(), [&](const grammar::FixedField& f) {
+        return f.width > 1 && from >= f.start && to == std::size_t{f.start} + f.width;
+    });
+    if (!in_field || (to < text.size() && text[to] != ' ' && text[to] != '\t') ||
+        grammar::parse_real(found.meant).status != grammar::NumberStatus::Ok)
+        return std::nullopt;
+    return found;
 }
 
 diag::Diagnostic decimal_comma_finding(const DecimalComma& comma, const grammar::CardLine& line,

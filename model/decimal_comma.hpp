@@ -4,10 +4,12 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
 #include "diag/diagnostic.hpp"
+#include "grammar/fields.hpp"
 #include "grammar/raw_deck.hpp"
 
 namespace sphdeck::model {
@@ -17,9 +19,11 @@ struct DecimalComma {
     std::string meant;               // the word with a point for the comma
 };
 
-// A comma between two digits on a line that starts with two blanks (a fixed-format field's padding:
-// a genuine free-format line is written from its first column, or with a blank after each comma).
-std::optional<DecimalComma> find_decimal_comma(std::string_view text);
+// A comma between two digits on a line written in fixed format: the line starts with two blanks (a
+// fixed-format field's padding: a genuine free-format line is written from its first column, or with a
+// blank after each comma), or the word holding the comma lies in one of `fields` and ends at its end (a value
+// right-aligned in its field: ` 0,6000000` in columns 1-10, `1,00000000000000E-03` filling a 20-wide cell).
+std::optional<DecimalComma> find_decimal_comma(std::string_view text, std::span<const grammar::FixedField> fields = {});
 
 // DK031 at the word: "... `solver` reads this line as free format (`reading`); a decimal comma? write X".
 // `reading`: the first fields as read, "ENDTIM 0, ENDCYC 2" (empty: none shown).

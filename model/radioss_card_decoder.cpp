@@ -146,7 +146,7 @@ void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const gramm
         if (v.spec->cell == Cell::Skip || v.spec->cell == Cell::Skip20) continue;
         read_value(v, fields_[i].text, !cut.free_format);
     }
-    if (cut.free_format && !text_card) check_decimal_comma(line, text, values);
+    if (cut.free_format && !text_card) check_decimal_comma(line, text, values, positions);
     if (!text_card && !cut.free_format && !cut.has_tab) {
         const std::string_view header = header_above(deck_, line, "#");
         if (out_.size() > found_before || glued_across_cells(text, positions) || !header.empty())
@@ -162,8 +162,9 @@ void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const gramm
 // `  1,0E-6` for `  1.0E-6`: the starter reads a line with a comma as free format, the number cut in
 // two (the same mistake as in LS-DYNA, model/decimal_comma.hpp).
 void RadiossCardDecoder::check_decimal_comma(const grammar::CardLine& line, std::string_view text,
-                                             const std::vector<RadiossValue>& values) {
-    const auto comma = find_decimal_comma(text);
+                                             const std::vector<RadiossValue>& values,
+                                             std::span<const grammar::FixedField> positions) {
+    const auto comma = find_decimal_comma(text, positions);
     if (!comma) return;
     std::string reading;
     std::size_t shown_fields = 0;

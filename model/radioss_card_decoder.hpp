@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -60,7 +61,7 @@ private:
                        std::vector<RadiossValue>& values);
     void read_value(RadiossValue& v, std::string_view field, bool fixed);
     void check_decimal_comma(const grammar::CardLine& line, std::string_view text,
-                             const std::vector<RadiossValue>& values);
+                             const std::vector<RadiossValue>& values, std::span<const grammar::FixedField> positions);
     void report(const char* code, diag::Severity s, std::string message, grammar::Span span);
 
     // Column positions of a card in a version, computed once: decoding runs per line.
