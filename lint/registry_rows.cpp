@@ -132,7 +132,8 @@ constexpr RuleInfo kRows[] = {
      Fixable::Safe, Layout::Doubtful},
     {"DK031", "decimal-comma", Warning, "0.1.0", "reader",
      {"model/decimal_comma.cpp", "dk rad"},
-     "a comma between two digits in a padded fixed-format line: a decimal comma makes the line free format",
+     "a comma between two digits in a padded fixed-format line: a decimal comma makes the line free format "
+     "(an error when the values after it then read as no number)",
      Fixable::None, Layout::Doubtful},
     {"DK032", "part-heading-missing", Warning, "0.1.0", "schema",
      {"model/missing_heading.cpp", "dk"},

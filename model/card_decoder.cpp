@@ -256,7 +256,7 @@ void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& l
                 break;
         }
     }
-    if (cut.free_format) check_decimal_comma(card, line, values, positions_);
+    if (cut.free_format) check_decimal_comma(card, line, values, positions_, first_finding);
     if (out_.size() > first_finding) offer_realign(card, block.format, line, first_finding);
 }
 
@@ -283,7 +283,7 @@ void CardDecoder::offer_realign(const keywords::CardSpec& card, grammar::CardFor
 // each comma). Runs on free-format lines only.
 void CardDecoder::check_decimal_comma(const keywords::CardSpec& card, const grammar::CardLine& line,
                                       const std::vector<FieldValue>& values,
-                                      std::span<const grammar::FixedField> positions) {
+                                      std::span<const grammar::FixedField> positions, std::size_t first_finding) {
     const auto comma = find_decimal_comma(line_text_, positions);
     if (!comma) return;
     std::string reading;
@@ -296,7 +296,7 @@ void CardDecoder::check_decimal_comma(const keywords::CardSpec& card, const gram
                                r.status == NumberStatus::Ok ? number_text(r.value) : shown_value(v.text));
         ++shown_fields;
     }
-    out_.push_back(decimal_comma_finding(*comma, line, "LS-DYNA", reading));
+    report_decimal_comma(*comma, line, "LS-DYNA", reading, out_, first_finding);
 }
 
 void CardDecoder::decode_number(const grammar::Block& block, const keywords::FieldSpec& spec,

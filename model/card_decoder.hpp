@@ -129,7 +129,8 @@ private:
     void decode_number(const grammar::Block& block, const keywords::FieldSpec& spec, const grammar::ValueToken& token,
                        const grammar::Field& field, std::uint32_t fixed_width, FieldValue& v);
     void check_decimal_comma(const keywords::CardSpec& card, const grammar::CardLine& line,
-                             const std::vector<FieldValue>& values, std::span<const grammar::FixedField> positions);
+                             const std::vector<FieldValue>& values, std::span<const grammar::FixedField> positions,
+                             std::size_t first_finding);
     void offer_realign(const keywords::CardSpec& card, grammar::CardFormat format, const grammar::CardLine& line,
                        std::size_t first_finding);
     void check_text(const grammar::Block& block, const keywords::FieldSpec& spec, FieldValue& v);

@@ -47,6 +47,8 @@ std::optional<DecimalComma> find_decimal_comma(std::string_view text, std::span<
     return found;
 }
 
+namespace {
+
 diag::Diagnostic decimal_comma_finding(const DecimalComma& comma, const grammar::CardLine& line,
                                        std::string_view solver, std::string_view reading) {
     return diag::Diagnostic{
@@ -58,6 +60,31 @@ diag::Diagnostic decimal_comma_finding(const DecimalComma& comma, const grammar:
         grammar::Span{line.file, line.line, static_cast<std::uint32_t>(comma.begin + 1),
                       static_cast<std::uint32_t>(comma.end + 1)},
         {}};
+}
+
+bool symptom_of_comma(const diag::Diagnostic& d, const grammar::CardLine& line) {
+    static constexpr std::string_view codes[] = {"DK002", "DK003", "DK004", "DK005", "DK007"};
+    return d.span.file == line.file && d.span.line == line.line &&
+           std::find(std::begin(codes), std::end(codes), d.code) != std::end(codes);
+}
+
+}  // namespace
+
+void report_decimal_comma(const DecimalComma& comma, const grammar::CardLine& line, std::string_view solver,
+                          std::string_view reading, std::vector<diag::Diagnostic>& found, std::size_t first) {
+    diag::Diagnostic d = decimal_comma_finding(comma, line, solver, reading);
+    std::vector<diag::Diagnostic> kept;
+    for (std::size_t i = first; i < found.size(); ++i) {
+        if (!symptom_of_comma(found[i], line)) {
+            kept.push_back(std::move(found[i]));
+            continue;
+        }
+        if (found[i].severity == diag::Severity::Error) d.severity = diag::Severity::Error;
+        d.notes.push_back({found[i].span, fmt::format("so {} ({})", found[i].message, found[i].code)});
+    }
+    found.erase(found.begin() + static_cast<std::ptrdiff_t>(first), found.end());
+    for (diag::Diagnostic& k : kept) found.push_back(std::move(k));
+    found.push_back(std::move(d));
 }
 
 }  // namespace sphdeck::model

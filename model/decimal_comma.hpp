@@ -7,6 +7,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "diag/diagnostic.hpp"
 #include "grammar/fields.hpp"
@@ -27,7 +28,10 @@ std::optional<DecimalComma> find_decimal_comma(std::string_view text, std::span<
 
 // DK031 at the word: "... `solver` reads this line as free format (`reading`); a decimal comma? write X".
 // `reading`: the first fields as read, "ENDTIM 0, ENDCYC 2" (empty: none shown).
-diag::Diagnostic decimal_comma_finding(const DecimalComma& comma, const grammar::CardLine& line,
-                                       std::string_view solver, std::string_view reading);
+// One cause, one finding: the findings of `found` from `first` on that the free-format reading made on the
+// line (a value cut in two or moved into another field: DK002-DK005, DK007) become its notes, and it is an
+// error when one of them was (the solver stops at such a value); it is appended to `found`.
+void report_decimal_comma(const DecimalComma& comma, const grammar::CardLine& line, std::string_view solver,
+                          std::string_view reading, std::vector<diag::Diagnostic>& found, std::size_t first);
 
 }  // namespace sphdeck::model

@@ -146,7 +146,7 @@ void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const gramm
         if (v.spec->cell == Cell::Skip || v.spec->cell == Cell::Skip20) continue;
         read_value(v, fields_[i].text, !cut.free_format);
     }
-    if (cut.free_format && !text_card) check_decimal_comma(line, text, values, positions);
+    if (cut.free_format && !text_card) check_decimal_comma(line, text, values, positions, found_before);
     if (!text_card && !cut.free_format && !cut.has_tab) {
         const std::string_view header = header_above(deck_, line, "#");
         if (out_.size() > found_before || glued_across_cells(text, positions) || !header.empty())
@@ -163,7 +163,8 @@ void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const gramm
 // two (the same mistake as in LS-DYNA, model/decimal_comma.hpp).
 void RadiossCardDecoder::check_decimal_comma(const grammar::CardLine& line, std::string_view text,
                                              const std::vector<RadiossValue>& values,
-                                             std::span<const grammar::FixedField> positions) {
+                                             std::span<const grammar::FixedField> positions,
+                                             std::size_t first_finding) {
     const auto comma = find_decimal_comma(text, positions);
     if (!comma) return;
     std::string reading;
@@ -174,7 +175,7 @@ void RadiossCardDecoder::check_decimal_comma(const grammar::CardLine& line, std:
         reading += fmt::format("{}{} {}", reading.empty() ? "" : ", ", v.spec->name, shown_cell(v.text));
         ++shown_fields;
     }
-    out_.push_back(decimal_comma_finding(*comma, line, "the starter", reading));
+    report_decimal_comma(*comma, line, "the starter", reading, out_, first_finding);
 }
 
 // Engine data lines are read by Fortran list-directed input: tokens separated by blanks or commas.

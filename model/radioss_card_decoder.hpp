@@ -61,7 +61,8 @@ private:
                        std::vector<RadiossValue>& values);
     void read_value(RadiossValue& v, std::string_view field, bool fixed);
     void check_decimal_comma(const grammar::CardLine& line, std::string_view text,
-                             const std::vector<RadiossValue>& values, std::span<const grammar::FixedField> positions);
+                             const std::vector<RadiossValue>& values, std::span<const grammar::FixedField> positions,
+                             std::size_t first_finding);
     void report(const char* code, diag::Severity s, std::string message, grammar::Span span);
 
     // Column positions of a card in a version, computed once: decoding runs per line.
