@@ -32,18 +32,17 @@ std::optional<DecimalComma> find_decimal_comma(std::string_view text, std::span<
     std::size_t from = comma, to = comma + 1;
     while (from > 0 && !separator(text[from - 1])) --from;
     while (to < text.size() && !separator(text[to])) ++to;
-    DecimalComma found{from, to,
-                       std::string(text.substr(from, comma - from)) + "." +
-                           std::string(text.substr(comma + 1, to - comma - 1))};
-    if (padded) return found;
-    // Unpadded: the word must end at its field's end before a blank (not a comma: `0.002,1000,5` is free
-    // format) and read as one number with the point (`0.002,1000` would make two points).
+    // Unpadded (every line of a free-format deck comes here): the word must end at its field's end before a
+    // blank (not a comma: `0.002,1000,5` is free format), tested before any text is built.
     const bool in_field = std::any_of(fields.begin(), fields.end(), [&](const grammar::FixedField& f) {
         return f.width > 1 && from >= f.start && to == std::size_t{f.start} + f.width;
     });
-    if (!in_field || (to < text.size() && text[to] != ' ' && text[to] != '\t') ||
-        grammar::parse_real(found.meant).status != grammar::NumberStatus::Ok)
-        return std::nullopt;
+    if (!padded && (!in_field || (to < text.size() && text[to] != ' ' && text[to] != '\t'))) return std::nullopt;
+    DecimalComma found{from, to,
+                       std::string(text.substr(from, comma - from)) + "." +
+                           std::string(text.substr(comma + 1, to - comma - 1))};
+    // And read as one number with the point (`0.002,1000` would make two points).
+    if (!padded && grammar::parse_real(found.meant).status != grammar::NumberStatus::Ok) return std::nullopt;
     return found;
 }
 
@@ -73,17 +72,14 @@ bool symptom_of_comma(const diag::Diagnostic& d, const grammar::CardLine& line) 
 void report_decimal_comma(const DecimalComma& comma, const grammar::CardLine& line, std::string_view solver,
                           std::string_view reading, std::vector<diag::Diagnostic>& found, std::size_t first) {
     diag::Diagnostic d = decimal_comma_finding(comma, line, solver, reading);
-    std::vector<diag::Diagnostic> kept;
-    for (std::size_t i = first; i < found.size(); ++i) {
-        if (!symptom_of_comma(found[i], line)) {
-            kept.push_back(std::move(found[i]));
-            continue;
-        }
-        if (found[i].severity == diag::Severity::Error) d.severity = diag::Severity::Error;
-        d.notes.push_back({found[i].span, fmt::format("so {} ({})", found[i].message, found[i].code)});
+    const auto from = found.begin() + static_cast<std::ptrdiff_t>(first);
+    for (auto it = from; it != found.end(); ++it) {
+        if (!symptom_of_comma(*it, line)) continue;
+        if (it->severity == diag::Severity::Error) d.severity = diag::Severity::Error;
+        d.notes.push_back({it->span, fmt::format("so {} ({})", it->message, it->code)});
     }
-    found.erase(found.begin() + static_cast<std::ptrdiff_t>(first), found.end());
-    for (diag::Diagnostic& k : kept) found.push_back(std::move(k));
+    found.erase(std::remove_if(from, found.end(), [&](const diag::Diagnostic& f) { return symptom_of_comma(f, line); }),
+                found.end());
     found.push_back(std::move(d));
 }
 

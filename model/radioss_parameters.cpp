@@ -105,8 +105,8 @@ void RadiossParameters::collect(const grammar::RawDeck& deck, int version, Radio
         const rad::KeywordSpec* spec = rad::find_keyword(b.keyword);
         // The name and value card of the table found: a header the tables read otherwise (a family's text-only
         // table, for /PARAMETER//GLOBAL/REAL with its empty segment) gives no value to evaluate.
-        const rad::CardSpec* card =
-            spec && !spec->format_for(version).cards.empty() ? &spec->format_for(version).cards.front() : nullptr;
+        const rad::FormatSpec* format = spec ? &spec->format_for(version) : nullptr;
+        const rad::CardSpec* card = format && !format->cards.empty() ? &format->cards.front() : nullptr;
         const bool evaluated_kind = scope == "GLOBAL" && (type == "INTEGER" || type == "REAL");
         if (!evaluated_kind || !card || card->fields.size() < 2) {
             RadiossParameter p = unevaluated(deck, *line);
