@@ -41,6 +41,11 @@ const std::vector<std::uint32_t>& RuleContext::particle_nodes() const {
     return *particle_nodes_;
 }
 
+const model::PartDefinitions& RuleContext::definitions() const {
+    if (!definitions_) definitions_ = std::make_unique<model::PartDefinitions>(model, deck);
+    return *definitions_;
+}
+
 BulkFacts& RuleContext::bulk_facts() const {
     if (!bulk_facts_) bulk_facts_ = std::make_shared<BulkFacts>();
     return *bulk_facts_;

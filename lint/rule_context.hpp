@@ -16,6 +16,7 @@
 #include "grammar/raw_deck.hpp"
 #include "model/id_index.hpp"
 #include "model/model.hpp"
+#include "model/part_definitions.hpp"
 
 namespace sphdeck::preproc {
 struct Preview;
@@ -69,6 +70,8 @@ public:
     // hold one set per particle, so rules look sets up by id, never by scanning the list.
     const model::IdSet* node_set(const model::Id& id) const;
     const model::IdSet* part_set(const model::Id& id) const;
+    // The section, material and EOS each part reads, in its own *CASE run (model/part_definitions.hpp).
+    const model::PartDefinitions& definitions() const;
 
     // The geometry rules' preview, when RuleOptions::keep_preview asked for it (else null).
     std::shared_ptr<const preproc::Preview> preview;
@@ -97,6 +100,7 @@ private:
     mutable std::shared_ptr<const std::vector<std::uint32_t>> particle_nodes_;
     using SetIndex = std::unordered_map<model::Id, const model::IdSet*>;
     mutable std::unique_ptr<SetIndex> node_sets_, part_sets_;
+    mutable std::unique_ptr<model::PartDefinitions> definitions_;
 };
 
 // Every lint rule family, run in order.

@@ -41,7 +41,7 @@ std::vector<const model::Part*> sph_parts(const RuleContext& c) {
     });
     std::vector<const model::Part*> out;
     for (const model::Part& p : m.parts) {
-        const model::Section* s = m.section(p.section.value);
+        const model::Section* s = c.definitions().section_of(p);
         if (used->ids.count(p.id) || (s && s->sph)) out.push_back(&p);
     }
     return out;
@@ -73,17 +73,18 @@ std::optional<Criterion> material_failure(const model::Model& m, const model::Ma
     return std::nullopt;
 }
 
-std::optional<Criterion> erosion_criterion(const model::Model& m, const std::vector<const model::Part*>* parts) {
+std::optional<Criterion> erosion_criterion(const RuleContext& c, const std::vector<const model::Part*>* parts) {
+    const model::Model& m = c.model;
     if (parts) {
         std::set<model::Id> seen;
         for (const model::Part* p : *parts) {
-            const model::Material* mat = m.material(p->material.value);
+            const model::Material* mat = c.definitions().material_of(*p);
             if (!mat || !seen.insert(mat->id).second) continue;
-            if (auto c = material_failure(m, *mat)) return c;
+            if (auto failure = material_failure(m, *mat)) return failure;
         }
     } else {
         for (const model::Material& mat : m.materials)
-            if (auto c = material_failure(m, mat)) return c;
+            if (auto failure = material_failure(m, mat)) return failure;
         for (const model::KeywordRecord& r : m.records)  // even for a material nobody defines
             if (r.schema->name == "*MAT_ADD_EROSION") return Criterion{r.span, "*MAT_ADD_EROSION"};
     }

@@ -27,7 +27,7 @@ std::optional<Criterion> material_failure(const model::Model& m, const model::Ma
 
 // The first criterion among the materials of `parts`, or, when `parts` is null, anywhere in the
 // deck (any material, any *MAT_ADD_EROSION); then ERODE of *CONTROL_TIMESTEP.
-std::optional<Criterion> erosion_criterion(const model::Model& m, const std::vector<const model::Part*>* parts);
+std::optional<Criterion> erosion_criterion(const RuleContext& c, const std::vector<const model::Part*>* parts);
 
 // MPP evidence: `--solver mpp` or the configuration; else a *CONTROL_MPP_* keyword or memory2=.
 struct RunKind {

@@ -16,7 +16,7 @@ void check_fluid_form(RuleContext& c, const std::vector<const model::Part*>& par
     if (!model::is_enhanced_fluid(form.value)) return;
     std::set<model::Id> seen;
     for (const model::Part* p : parts) {
-        const model::Material* mat = c.model.material(p->material.value);
+        const model::Material* mat = c.definitions().material_of(*p);
         if (!mat || !seen.insert(mat->id).second) continue;
         if (auto criterion = material_failure(c.model, *mat))
             c.report("SPH033", form.span,
@@ -31,12 +31,12 @@ void check_ierod(RuleContext& c, const std::vector<const model::Part*>& parts) {
     const auto& ierod = c.model.controls.sph.ierod;
     const int value = static_cast<int>(ierod.value);
     if (ierod.value == model::ErosionMode::StayActive) {
-        if (auto criterion = erosion_criterion(c.model, &parts))
+        if (auto criterion = erosion_criterion(c, &parts))
             c.report("SPH040", ierod.span,
                      fmt::format("IEROD 0 keeps particles active despite {}; expected IEROD 1, 2 or 3",
                                  criterion->what))
                 .notes.push_back({criterion->span, "erosion criterion given here"});
-    } else if (!erosion_criterion(c.model, nullptr)) {
+    } else if (!erosion_criterion(c, nullptr)) {
         c.report("SPH041", ierod.span,
                  fmt::format("IEROD {} but no erosion criterion exists (material failure, *MAT_ADD_EROSION, ERODE); "
                              "expected IEROD 0",
@@ -46,9 +46,10 @@ void check_ierod(RuleContext& c, const std::vector<const model::Part*>& parts) {
 
 // Whether any particle can be deactivated: erosion with IEROD, a BOXID box, a MAXV limit, or
 // SPH death (DT, section DEATH) before the end of the run.
-bool can_deactivate(const model::Model& m) {
+bool can_deactivate(const RuleContext& c) {
+    const model::Model& m = c.model;
     const model::ControlSph& sph = m.controls.sph;
-    if (sph.ierod.value != model::ErosionMode::StayActive && erosion_criterion(m, nullptr)) return true;
+    if (sph.ierod.value != model::ErosionMode::StayActive && erosion_criterion(c, nullptr)) return true;
     if (sph.boxid.value != 0) return true;
     // A MAXV limit: written and positive (MAXV <= 0, see SPH073), and below the default 1e15, which
     // decks often write out and which no particle reaches.
@@ -65,7 +66,7 @@ bool can_deactivate(const model::Model& m) {
 void check_deactivation_flags(RuleContext& c) {
     const model::ControlSph& sph = c.model.controls.sph;
     if (sph.icont.value != 1 && sph.ishow.value != 1) return;
-    if (can_deactivate(c.model)) return;
+    if (can_deactivate(c)) return;
     constexpr std::string_view nothing =
         "nothing can deactivate particles (no erosion with IEROD, no BOXID, no MAXV limit, no DT or DEATH before "
         "ENDTIM)";

@@ -72,7 +72,7 @@ void check_asph(RuleContext& c, const std::vector<const model::Part*>& parts, co
     const std::string label = form_label(sph.form.value);
     std::set<model::Id> reported;
     for (const model::Part* p : parts) {
-        const model::Section* s = c.model.section(p->section.value);
+        const model::Section* s = c.definitions().section_of(*p);
         if (!s || !s->sph || s->ellipse || !reported.insert(s->id).second) continue;
         c.report("SPH020", sph.form.span,
                  fmt::format("{} needs *SECTION_SPH_ELLIPSE; part {} uses {} {}", label, p->id, s->keyword, s->id))
@@ -107,15 +107,16 @@ void check_dimension(RuleContext& c) {
 
 // A part is a fluid when its material is *MAT_NULL with an EOS or a fluid material
 // (*MAT_ELASTIC_FLUID, *MAT_SPH_INCOMPRESSIBLE_FLUID); nullopt when it cannot be told.
-std::optional<bool> is_fluid(const model::Model& m, const model::Part& p) {
-    const model::Material* mat = m.material(p.material.value);
+std::optional<bool> is_fluid(const RuleContext& c, const model::Part& p) {
+    const model::Material* mat = c.definitions().material_of(p);
     if (!mat) return std::nullopt;
     if (mat->keyword == "*MAT_NULL") {
         if (p.eos.value.empty()) return std::nullopt;  // SPH116's business
         return true;
     }
     if (mat->keyword.find("FLUID") != std::string::npos) return true;
-    if (mat->record && *mat->record < m.records.size() && m.records[*mat->record].has_option("FLUID")) return true;
+    const auto& records = c.model.records;
+    if (mat->record && *mat->record < records.size() && records[*mat->record].has_option("FLUID")) return true;
     return false;
 }
 
@@ -140,7 +141,7 @@ void check_advice(RuleContext& c, const std::vector<const model::Part*>& parts) 
     }
     std::vector<const model::Part*> fluids, solids;
     for (const model::Part* p : parts)
-        if (auto fluid = is_fluid(c.model, *p)) (*fluid ? fluids : solids).push_back(p);
+        if (auto fluid = is_fluid(c, *p)) (*fluid ? fluids : solids).push_back(p);
     auto advise = [&](const std::vector<const model::Part*>& group, std::string_view kind, std::string_view expected) {
         if (group.empty()) return;
         std::string ids;

@@ -9,7 +9,6 @@
 
 #include "lint/rules.hpp"
 #include "lint/rules_control_sph.hpp"
-#include "model/case_blocks.hpp"
 
 namespace sphdeck::lint {
 namespace {
@@ -35,28 +34,16 @@ std::string_view element_kind(const model::Section& section) {
 
 bool rigid(const model::Material& m) { return m.keyword == "*MAT_RIGID" || m.keyword == "*MAT_020"; }
 
-// The definition of `id` that a part in case `in_case` reads: the first one read in the same run (*CASE
-// blocks may give one id a definition per case; model/case_blocks.hpp).
-template <typename T>
-const T* in_run(const std::vector<T>& items, const model::Id& id, const model::CaseBlocks& cases,
-                std::string_view in_case) {
-    for (const T& item : items)
-        if (item.id == id && model::same_run(cases.case_of(item.span), in_case)) return &item;
-    return nullptr;
-}
-
 void check_lsdyna_densities(RuleContext& c) {
     const model::Model& m = c.model;
     std::set<const model::Part*> sph;
     for (const model::Part* p : control_sph::sph_parts(c)) sph.insert(p);
     std::set<const model::Material*> reported;
-    const model::CaseBlocks cases(c.deck);
     for (const model::Part& part : m.parts) {
-        const std::string_view in_case = cases.case_of(part.span);
-        const model::Section* section = in_run(m.sections, part.section.value, cases, in_case);
+        const model::Section* section = c.definitions().section_of(part);
         const std::string_view kind = sph.count(&part) ? "SPH" : section ? element_kind(*section) : "";
         if (kind.empty()) continue;
-        const model::Material* mat = in_run(m.materials, part.material.value, cases, in_case);
+        const model::Material* mat = c.definitions().material_of(part);
         if (!mat || !mat->has_density || mat->density.value > 0 || reported.count(mat)) continue;
         if (rigid(*mat) && part.inertia) continue;  // *PART_INERTIA gives the mass itself
         reported.insert(mat);

@@ -167,9 +167,9 @@ double round_up(double x) {
 // SPH116: *MAT_NULL has no pressure of its own; an SPH part with it needs an EOS (§17.1).
 void check_null_without_eos(RuleContext& c, const std::map<Id, PartStats>& particle_parts) {
     for (const model::Part& part : c.model.parts) {
-        const model::Section* section = c.model.section(part.section.value);
+        const model::Section* section = c.definitions().section_of(part);
         if (!particle_parts.count(part.id) && !(section && section->sph)) continue;
-        const model::Material* mat = c.model.material(part.material.value);
+        const model::Material* mat = c.definitions().material_of(part);
         if (!mat || mat->keyword != "*MAT_NULL" || !part.eos.value.empty()) continue;
         c.report("SPH116", part.eos.span,
                  fmt::format("SPH part {} uses *MAT_NULL {} but EOSID is {}: the fluid has no pressure; "
@@ -207,7 +207,7 @@ void check_murnaghan(RuleContext& c, const std::map<Id, PartStats>& parts) {
         } worst;
         for (const model::Part& part : c.model.parts) {
             auto stats = parts.find(part.id);
-            const model::Material* mat = c.model.material(part.material.value);
+            const model::Material* mat = c.definitions().material_of(part);
             if (part.eos.value != eos.id || stats == parts.end() || !mat || mat->density.value <= 0) continue;
             const PartStats& s = stats->second;
             const double c0 = std::sqrt(gamma * k0 / mat->density.value);

@@ -180,7 +180,7 @@ void check_few_neighbours(RuleContext& c, const Preview& p) {
         if (interior >= needed) continue;
         grammar::Span where;
         const model::Part* def = c.model.part(std::to_string(part.part));
-        const model::Section* section = def ? c.model.section(def->section.value) : nullptr;
+        const model::Section* section = def ? c.definitions().section_of(*def) : nullptr;
         if (section && section->sph)
             where = smoothing_span(c, *section, part.sphini_given);
         else if (def)

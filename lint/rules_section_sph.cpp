@@ -111,7 +111,7 @@ void check_particle_sections(RuleContext& c) {
     for (const auto& [id, n] : counted->counts) {
         const model::Part* part = c.model.part(std::to_string(id));
         if (!part) continue;  // REF002
-        const Section* section = c.model.section(part->section.value);
+        const Section* section = c.definitions().section_of(*part);
         if (!section || section->sph) continue;  // REF003, or fine
         c.report("SPH104", part->section.span,
                  fmt::format("part {} holds {} SPH particle{} but its section {} is {}; expected a {}", part->id, n,

@@ -23,6 +23,8 @@ public:
     explicit CaseBlocks(const grammar::RawDeck& deck);
     // "n" inside a *CASE_BEGIN_n block, else "" (also for decks without cases: no search then).
     std::string_view case_of(const grammar::Span& where) const;
+    // Whether the deck has any *CASE_BEGIN_n block.
+    bool any() const { return !case_of_block_.empty(); }
 
 private:
     const grammar::RawDeck& deck_;
