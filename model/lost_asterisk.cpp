@@ -35,6 +35,28 @@ bool numbers_only(std::string_view text) {
     return any;
 }
 
+// A line that reads as the first card of `keyword` in fixed columns: each number field blank or a
+// number, at least one written, text fields anything (*SET_SEGMENT's SOLVER "MECH"). Options' cards
+// before the base ones (a title, an id card) are not tried: the plain numbers test covers most of them.
+bool fits_first_card(std::string_view text, const std::string& keyword) {
+    const auto match = keywords::find_keyword(keyword);
+    if (!match || match->schema->cards.empty() || match->schema->free_text) return false;
+    if (text.find_first_of(",\t") != std::string_view::npos) return false;
+    bool any = false;
+    for (const keywords::FieldSpec& f : match->schema->cards.front().fields) {
+        if (f.column - 1u >= text.size()) break;
+        std::string_view field = text.substr(f.column - 1u, f.width);
+        const std::size_t first = field.find_first_not_of(" \r");
+        if (first == std::string_view::npos) continue;
+        field = field.substr(first, field.find_last_not_of(" \r") - first + 1);
+        if (f.type != keywords::FieldType::Integer && f.type != keywords::FieldType::Real) continue;
+        if (!numbers_only(field) || field.find(' ') != std::string_view::npos) return false;
+        any = true;
+    }
+    const std::size_t width = match->schema->cards.front().line_width;
+    return any && (text.size() <= width || text.substr(width).find_first_not_of(" \r") == std::string_view::npos);
+}
+
 // The reading findings a block's misread lines make.
 bool asterisk_finding(std::string_view code) { return follows_from_shift(code) || code == "DK009"; }
 
@@ -92,7 +114,8 @@ void note_lost_in_comment(const grammar::RawDeck& deck, const grammar::Block& bl
         if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
         if (n <= block.span.line || (!line.empty() && line.front() == '$')) continue;
         if (!line.empty() && line.front() == '*') break;  // the comment ends at the next keyword line
-        if (pending && numbers_only(line)) out.push_back(std::move(*pending));
+        if (pending && (numbers_only(line) || fits_first_card(line, pending->keyword)))
+            out.push_back(std::move(*pending));
         pending = lost_asterisk_line(file, n, line, false);
     }
 }
