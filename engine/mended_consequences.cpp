@@ -14,9 +14,10 @@ namespace {
 
 // A cause whose mend is a judgement (unsafe fix) yet whose consequences the deck shows the same way: a
 // stray *END (DK017 warning: the blocks after it are read once it is gone), a *PART heading line
-// missing (DK032), a keyword line that lost its '*' (DK033).
+// missing (DK032), a keyword line that lost its '*' (DK033), a blank line read as a card (DK034).
 bool judged_cause(const diag::Diagnostic& d) {
-    return (d.code == "DK017" && d.severity == diag::Severity::Warning) || d.code == "DK032" || d.code == "DK033";
+    return (d.code == "DK017" && d.severity == diag::Severity::Warning) || d.code == "DK032" || d.code == "DK033" ||
+           d.code == "DK034";
 }
 
 bool is_cause(const diag::Diagnostic& d) {
@@ -26,7 +27,7 @@ bool is_cause(const diag::Diagnostic& d) {
 }
 
 bool is_cause_code(const std::string& code) {
-    return code == "DK029" || code == "DK030" || code == "DK032" || code == "DK033";
+    return code == "DK029" || code == "DK030" || code == "DK032" || code == "DK033" || code == "DK034";
 }
 
 using Place = std::tuple<std::string, grammar::FileId, std::uint32_t, std::uint32_t>;

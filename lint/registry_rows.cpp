@@ -145,6 +145,11 @@ constexpr RuleInfo kRows[] = {
      "a data line that is a keyword name without its '*' (PART for *PART): read as more cards of the block above, "
      "so the block it meant to open is lost (an error when that misreads)",
      Fixable::Unsafe},
+    {"DK034", "blank-line-card", Warning, "0.1.0", "schema",
+     {"model/blank_card.cpp", "dk"},
+     "a blank line inside a keyword's cards, read as a card of defaults: the lines after it are read one card late "
+     "(an error when that misreads)",
+     Fixable::Unsafe},
 
     // RAD: OpenRadioss SPH options (/SPHBCS, SOL2SPH, /PROP/SPH, /SPHCEL, /SPHGLO, /DT).
     {"RAD001", "missing-starter-header", Error, "0.1.0", "reader",

@@ -13,6 +13,7 @@
 #include "grammar/shifted_line.hpp"
 #include "grammar/value.hpp"
 #include "model/card_sequence.hpp"
+#include "model/blank_card.hpp"
 #include "model/case_blocks.hpp"
 #include "model/lost_asterisk.hpp"
 #include "model/missing_heading.hpp"
@@ -84,6 +85,7 @@ public:
         suspects_.clear();
         lost_.clear();
         heading_ = {};
+        blank_ = {};
         CardSequence sequence(match);
         const std::vector<const CardSpec*>& cards = sequence.cards();
         if (bulk_ && bulk_->wants(match) && cards.size() == 1 && cards[0]->repeat == CardRepeat::Repeated &&
@@ -105,6 +107,7 @@ public:
             const CardSpec& card = *next;
             note_lost_asterisk(*l, card.fields.empty() || card.fields[0].type == FieldType::Text);
             if (!heading_.line && sequence.card_after()) note_missing_heading(block, l, card, *sequence.card_after());
+            if (!blank_.line) note_blank_card(block, l, card);
             const std::size_t found_before = out_.size();
             decoder_.decode(block, *l, card, values_);
             note_alignment(block, l, card,
@@ -131,6 +134,12 @@ public:
         const CardSpec* next = nullptr;
     };
     const HeadingSuspect& heading_suspect() const { return heading_; }
+    // The first blank line the walk read as a card read once, with a data line after it (model/blank_card.hpp).
+    struct BlankCard {
+        grammar::CardLinePtr line = nullptr;
+        const CardSpec* card = nullptr;
+    };
+    const BlankCard& blank_card() const { return blank_; }
 
     // DK029 for the lines of one value pushed into the next field, when (all but 1% of) the other numbers
     // the walk saw end at their field's end (grammar/lone_value_shift.hpp). Called once, after the last block.
@@ -180,6 +189,16 @@ private:
                               const CardSpec& next) {
         if (card.fields.empty() || card.fields[0].name != "HEADING" || block.keyword.rfind("*PART", 0) != 0) return;
         if (reads_as_integer_card(deck_.text(*line), layout_of(next, block.format), next)) heading_ = {line, &next};
+    }
+
+    // A blank line read as a card read once, with a data line after it in the block: spacing, perhaps.
+    void note_blank_card(const grammar::Block& block, grammar::CardLinePtr line, const CardSpec& card) {
+        if (card.repeat == CardRepeat::Repeated || !blank_card_line(deck_.text(*line))) return;
+        for (grammar::CardLinePtr l = line + 1; l != deck_.end_lines(block); ++l)
+            if (!blank_card_line(deck_.text(*l))) {
+                blank_ = {line, &card};
+                return;
+            }
     }
 
     // Tallies how the line's numbers sit in their fields, or keeps it as a lone shifted value. `refused`: the
@@ -406,6 +425,7 @@ private:
     std::vector<SuspectLine> suspects_;
     std::vector<LostAsteriskLine> lost_;
     HeadingSuspect heading_;
+    BlankCard blank_;
     grammar::AlignmentTally alignment_;
     std::vector<LoneCandidate> lone_;
     const CardSpec* layout_card_ = nullptr;
@@ -499,7 +519,12 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
         walker.walk(block, *match, summary, bound);
         diagnose_shifts(deck, block, walker.suspects(), out, before);
         diagnose_lost_asterisks(deck, block, walker.lost_asterisks(), out, before);
-        if (const auto& h = walker.heading_suspect(); h.line)
+        const auto& blank = walker.blank_card();
+        const bool blank_misread =
+            blank.line && diagnose_blank_card(deck, block, *blank.line, *blank.card, out, before);
+        // A heading after a blank line that misread is the blank line's symptom (the next card read as a heading).
+        if (const auto& h = walker.heading_suspect();
+            h.line && !(blank_misread && h.line->file == blank.line->file && h.line->line > blank.line->line))
             diagnose_missing_heading(deck, block, *h.line, *h.next, out, before);
         bound.annotate(out, before, block.keyword);
     }
