@@ -1,6 +1,7 @@
 #include "lint/rules_thermal_duplicates.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <map>
 #include <vector>
 
@@ -16,8 +17,18 @@ struct ThermalId {
     grammar::Span span;  // the id as written
 };
 
-// TMID: the first field of the first card (after the title line of _TITLE); nullopt when it is not a
-// plain integer (a parameter, free format: left alone).
+// An integer parameter's value (or a real one's, when whole) for `&name`, as the block sees it.
+std::optional<long long> parameter_id(const grammar::RawDeck& deck, const grammar::Block& b, grammar::FileId file,
+                                      std::string_view name) {
+    const grammar::Parameter* p = deck.parameters.find(name, file, b.parameter_epoch).parameter;
+    if (!p || p->type == grammar::ParameterType::Character || p->number != std::floor(p->number) ||
+        std::abs(p->number) > 1e15)
+        return std::nullopt;
+    return static_cast<long long>(p->number);
+}
+
+// TMID: the first field of the first card (after the title line of _TITLE), a plain integer or `&name` of a
+// parameter defined before it; nullopt otherwise (free format, an expression: left alone).
 std::optional<ThermalId> thermal_id(const grammar::RawDeck& deck, const grammar::Block& b) {
     grammar::CardLinePtr line = deck.begin_lines(b) + keywords::title_lines(b.keyword);
     if (line >= deck.end_lines(b)) return std::nullopt;
@@ -29,8 +40,14 @@ std::optional<ThermalId> thermal_id(const grammar::RawDeck& deck, const grammar:
     if (begin == std::string_view::npos) return std::nullopt;
     const std::size_t end = field.find_last_not_of(" \r") + 1;
     long long id = 0;
-    auto [stop, ec] = std::from_chars(field.data() + begin, field.data() + end, id);
-    if (ec != std::errc() || stop != field.data() + end) return std::nullopt;
+    if (field[begin] == '&') {
+        const auto value = parameter_id(deck, b, line->file, field.substr(begin + 1, end - begin - 1));
+        if (!value) return std::nullopt;
+        id = *value;
+    } else {
+        auto [stop, ec] = std::from_chars(field.data() + begin, field.data() + end, id);
+        if (ec != std::errc() || stop != field.data() + end) return std::nullopt;
+    }
     return ThermalId{id, grammar::Span{line->file, line->line, static_cast<std::uint32_t>(begin + 1),
                                        static_cast<std::uint32_t>(end + 1)}};
 }

@@ -185,7 +185,7 @@ TEST_CASE("references: a TMID no *MAT_THERMAL_ defines is REF004, an error only 
         CHECK(d->span.column == 80);
         CHECK(d->fixes.empty());
     }
-    // Defined (after the part, or as "03"), 0, blank, or possibly defined by a parameter: nothing.
+    // Defined (after the part, or as "03"), 0, blank: nothing.
     const std::string thermal = "*MAT_THERMAL_ISOTROPIC\n         3    1000.0\n    4180.0       0.6\n";
     CHECK(count_code(thermal_deck("3", 1, thermal).diagnostics, "REF004") == 0);
     CHECK(count_code(thermal_deck("03", 2, thermal).diagnostics, "REF004") == 0);
@@ -193,7 +193,15 @@ TEST_CASE("references: a TMID no *MAT_THERMAL_ defines is REF004, an error only 
     CHECK(count_code(thermal_deck("", 1).diagnostics, "REF004") == 0);
     const std::string by_parameter =
         "*PARAMETER\nI   tmidp          7\n*MAT_THERMAL_ISOTROPIC\n    &tmidp    1000.0\n    4180.0       0.6\n";
-    CHECK(count_code(thermal_deck("3", 1, by_parameter).diagnostics, "REF004") == 0);
+    // A thermal material whose id is a parameter defines the parameter's value; one whose parameter sphdeck
+    // cannot read (not defined before it, a character one) may define any id: TMID not judged.
+    CHECK(count_code(thermal_deck("7", 1, by_parameter).diagnostics, "REF004") == 0);
+    CHECK(count_code(thermal_deck("3", 1, by_parameter).diagnostics, "REF004") == 1);
+    const std::string by_unknown = "*MAT_THERMAL_ISOTROPIC\n    &tmidq    1000.0\n    4180.0       0.6\n";
+    CHECK(count_code(thermal_deck("3", 1, by_unknown).diagnostics, "REF004") == 0);
+    const std::string by_text =
+        "*PARAMETER\nC   tmidc    steel\n*MAT_THERMAL_ISOTROPIC\n    &tmidc    1000.0\n    4180.0       0.6\n";
+    CHECK(count_code(thermal_deck("3", 1, by_text).diagnostics, "REF004") == 0);
     // Material 3 exists as a structural material: a thermal material 3 is still missing, and MID 3 missing too
     // is a finding of its own (the ids of the two kinds are apart).
     CHECK(count_code(thermal_deck("3", 1, "*MAT_NULL\n         3    1000.0\n").diagnostics, "REF004") == 1);
