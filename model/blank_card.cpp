@@ -7,22 +7,57 @@
 #include "model/shift_diagnosis.hpp"
 
 namespace sphdeck::model {
+namespace {
+
+bool on_line(const diag::Diagnostic& d, const grammar::CardLine& l) {
+    return d.span.file == l.file && d.span.line == l.line;
+}
+
+// What only a card too many explains: a required field blank on the blank line, lines past the keyword's last
+// card, the keyword missing a card.
+bool card_too_many(const diag::Diagnostic& d, const grammar::Block& block, const grammar::CardLine& blank) {
+    return (d.code == "DK008" && on_line(d, blank)) ||
+           (d.code == "DK009" && d.span.file == blank.file && d.span.line > blank.line) ||
+           (d.code == "DK008" && d.span.file == block.span.file && d.span.line == block.span.line);
+}
+
+// A reading finding of the block from `blank` on, or the keyword's missing card on its keyword line.
+bool read_late(const diag::Diagnostic& d, const grammar::Block& block, const grammar::CardLine& blank) {
+    const bool reading = follows_from_shift(d.code) || d.code == "DK009";
+    const bool after = d.span.file == blank.file && d.span.line >= blank.line;
+    const bool keyword_line = d.code == "DK008" && d.span.file == block.span.file && d.span.line == block.span.line;
+    return reading && (after || keyword_line);
+}
+
+}  // namespace
 
 bool blank_card_line(std::string_view text) { return text.find_first_not_of(" \t\r") == std::string_view::npos; }
 
-bool diagnose_blank_card(const grammar::RawDeck& deck, const grammar::Block& block, const grammar::CardLine& blank,
-                         const keywords::CardSpec& card, std::vector<diag::Diagnostic>& out, std::size_t from) {
-    // What only a card too many explains: a required field left blank on the blank line itself, lines past the
-    // keyword's last card, the keyword missing a card. Findings on the lines after it may have causes of their
-    // own (a value typed wrong): the engine folds those the fix makes go away (engine/mended_consequences.cpp).
-    const auto misread = [&](const diag::Diagnostic& d) {
-        const bool on_blank = d.code == "DK008" && d.span.file == blank.file && d.span.line == blank.line;
-        const bool extra = d.code == "DK009" && d.span.file == blank.file && d.span.line > blank.line;
-        const bool keyword_line = d.code == "DK008" && d.span.file == block.span.file && d.span.line == block.span.line;
-        return on_blank || extra || keyword_line;
-    };
-    if (std::none_of(out.begin() + static_cast<std::ptrdiff_t>(from), out.end(), misread)) return false;
-    const std::string card_name = card.name.empty() ? std::string("a card") : std::string(card.name);
+bool diagnose_blank_card(const grammar::RawDeck& deck, const grammar::Block& block,
+                         std::span<const BlankCardLine> blanks, const ReadsWithout& reads_without,
+                         std::vector<diag::Diagnostic>& out, std::size_t from) {
+    if (blanks.empty()) return false;
+    const auto found = std::span<const diag::Diagnostic>(out).subspan(from);
+    // A required field left blank on it: no card of defaults was meant.
+    const BlankCardLine* cause = nullptr;
+    bool proven = false;  // the block reads cleanly without it: every reading finding from it on is its doing
+    for (const BlankCardLine& b : blanks)
+        if (std::any_of(found.begin(), found.end(),
+                        [&](const diag::Diagnostic& d) { return d.code == "DK008" && on_line(d, *b.line); })) {
+            cause = &b;
+            break;
+        }
+    // Else the first blank line whose leaving out reads the block cleanly, a card line before a title line.
+    if (!cause && std::any_of(found.begin(), found.end(),
+                              [&](const diag::Diagnostic& d) { return read_late(d, block, *blanks.front().line); }))
+        for (bool text : {false, true})
+            for (const BlankCardLine& b : blanks)
+                if (!cause && b.text_card == text && reads_without(b.line)) cause = &b, proven = true;
+    if (!cause) return false;
+    if (!proven) proven = reads_without(cause->line);
+
+    const grammar::CardLine& blank = *cause->line;
+    const std::string card_name = cause->card->name.empty() ? std::string("a card") : std::string(cause->card->name);
     diag::Diagnostic d{"DK034",
                        diag::Severity::Warning,
                        fmt::format("blank line read as {} of {}: LS-DYNA reads a blank line inside a keyword as a "
@@ -38,7 +73,7 @@ bool diagnose_blank_card(const grammar::RawDeck& deck, const grammar::Block& blo
          {{grammar::Span{blank.file, blank.line, 1, 1}, "$"}}});
     std::size_t kept = from;
     for (std::size_t i = from; i < out.size(); ++i) {
-        if (misread(out[i])) {
+        if (proven ? read_late(out[i], block, blank) : card_too_many(out[i], block, blank)) {
             d.severity = std::max(d.severity, out[i].severity);
             fold_into(d, std::move(out[i]));
             continue;

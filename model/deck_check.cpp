@@ -74,6 +74,11 @@ std::size_t count_particles(const grammar::RawDeck& deck, const grammar::CardLin
 
 // Walks the lines of one block against its card sequence (model/card_sequence.hpp), decoding and
 // reporting each line.
+// The reader's findings on *PARAMETER use (DK012-DK015, DK024).
+bool parameter_finding(const diag::Diagnostic& d) {
+    return d.code == "DK012" || d.code == "DK013" || d.code == "DK014" || d.code == "DK015" || d.code == "DK024";
+}
+
 class BlockWalker {
 public:
     BlockWalker(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, const CardVisitor& visit,
@@ -85,7 +90,7 @@ public:
         suspects_.clear();
         lost_.clear();
         heading_ = {};
-        blank_ = {};
+        blanks_.clear();
         CardSequence sequence(match);
         const std::vector<const CardSpec*>& cards = sequence.cards();
         if (bulk_ && bulk_->wants(match) && cards.size() == 1 && cards[0]->repeat == CardRepeat::Repeated &&
@@ -107,7 +112,7 @@ public:
             const CardSpec& card = *next;
             note_lost_asterisk(*l, card.fields.empty() || card.fields[0].type == FieldType::Text);
             if (!heading_.line && sequence.card_after()) note_missing_heading(block, l, card, *sequence.card_after());
-            if (!blank_.line) note_blank_card(block, l, card);
+            note_blank_card(block, l, card);
             const std::size_t found_before = out_.size();
             decoder_.decode(block, *l, card, values_);
             note_alignment(block, l, card,
@@ -134,12 +139,34 @@ public:
         const CardSpec* next = nullptr;
     };
     const HeadingSuspect& heading_suspect() const { return heading_; }
-    // The first blank line the walk read as a card read once, with a data line after it (model/blank_card.hpp).
-    struct BlankCard {
-        grammar::CardLinePtr line = nullptr;
-        const CardSpec* card = nullptr;
-    };
-    const BlankCard& blank_card() const { return blank_; }
+    // The first blank lines the walk read as cards read once, with a data line after them (model/blank_card.hpp).
+    const std::vector<BlankCardLine>& blank_cards() const { return blanks_; }
+
+    // Whether the block's lines, `blank` left out, read without a finding: each decoded as the card the walk
+    // would give it then (blocks of up to max_replayed_lines; longer ones: no). Parameters' findings (a name
+    // defined in a deck that includes this file) say nothing of where the cards fall and are left out.
+    bool reads_without(const grammar::Block& block, const keywords::KeywordMatch& match, grammar::CardLinePtr blank) {
+        constexpr std::size_t max_replayed_lines = 1000;
+        if (block.line_count > max_replayed_lines) return false;
+        std::vector<diag::Diagnostic> found;
+        CardDecoder decoder(deck_, found);
+        CardSequence sequence(match);
+        std::vector<FieldValue> values;
+        for (grammar::CardLinePtr l = deck_.begin_lines(block); l != deck_.end_lines(block); ++l) {
+            if (l == blank) continue;
+            const CardSpec* card = sequence.next();
+            if (!card) {  // lines past the last card: clean only when blank
+                if (sequence.layout_unknown()) return true;
+                for (; l != deck_.end_lines(block); ++l)
+                    if (l != blank && !blank_card_line(deck_.text(*l))) return false;
+                break;
+            }
+            decoder.decode(block, *l, *card, values);
+            if (!std::all_of(found.begin(), found.end(), parameter_finding)) return false;
+            sequence.advance(*card, values);
+        }
+        return !sequence.missing_card();
+    }
 
     // DK029 for the lines of one value pushed into the next field, when (all but 1% of) the other numbers
     // the walk saw end at their field's end (grammar/lone_value_shift.hpp). Called once, after the last block.
@@ -193,10 +220,15 @@ private:
 
     // A blank line read as a card read once, with a data line after it in the block: spacing, perhaps.
     void note_blank_card(const grammar::Block& block, grammar::CardLinePtr line, const CardSpec& card) {
-        if (card.repeat == CardRepeat::Repeated || !blank_card_line(deck_.text(*line))) return;
+        constexpr std::size_t max_blanks = 4;
+        if (blanks_.size() >= max_blanks || card.repeat == CardRepeat::Repeated || !blank_card_line(deck_.text(*line)))
+            return;
+        const bool text_card = std::all_of(card.fields.begin(), card.fields.end(), [](const keywords::FieldSpec& f) {
+            return f.type == FieldType::Text || f.type == FieldType::Unused;
+        });
         for (grammar::CardLinePtr l = line + 1; l != deck_.end_lines(block); ++l)
             if (!blank_card_line(deck_.text(*l))) {
-                blank_ = {line, &card};
+                blanks_.push_back({line, &card, text_card});
                 return;
             }
     }
@@ -425,7 +457,7 @@ private:
     std::vector<SuspectLine> suspects_;
     std::vector<LostAsteriskLine> lost_;
     HeadingSuspect heading_;
-    BlankCard blank_;
+    std::vector<BlankCardLine> blanks_;
     grammar::AlignmentTally alignment_;
     std::vector<LoneCandidate> lone_;
     const CardSpec* layout_card_ = nullptr;
@@ -519,12 +551,16 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
         walker.walk(block, *match, summary, bound);
         diagnose_shifts(deck, block, walker.suspects(), out, before);
         diagnose_lost_asterisks(deck, block, walker.lost_asterisks(), out, before);
-        const auto& blank = walker.blank_card();
+        const auto& blanks = walker.blank_cards();
         const bool blank_misread =
-            blank.line && diagnose_blank_card(deck, block, *blank.line, *blank.card, out, before);
+            !blanks.empty() &&
+            diagnose_blank_card(
+                deck, block, blanks,
+                [&](grammar::CardLinePtr blank) { return walker.reads_without(block, *match, blank); }, out, before);
         // A heading after a blank line that misread is the blank line's symptom (the next card read as a heading).
         if (const auto& h = walker.heading_suspect();
-            h.line && !(blank_misread && h.line->file == blank.line->file && h.line->line > blank.line->line))
+            h.line &&
+            !(blank_misread && h.line->file == blanks.front().line->file && h.line->line > blanks.front().line->line))
             diagnose_missing_heading(deck, block, *h.line, *h.next, out, before);
         bound.annotate(out, before, block.keyword);
     }

@@ -11,8 +11,8 @@ the author's values; bulk node and particle values are counted, not compared).
     tests/mistakes/fix_check.py --sphdeck build/sphdeck --verbose    # and every plant left unfixed
 
 The safe-fix kinds' plants that carry a fix must be mended at --min-rate (default 100%); the unsafe-fix
-kinds (keyword and parameter typos, a stray *END, a missing *PART heading, a lost keyword asterisk; fixed
-with --unsafe-fixes) are reported only.
+kinds (keyword and parameter typos, a stray *END, a missing *PART heading, a lost keyword asterisk, a blank
+line typed between cards; fixed with --unsafe-fixes) are reported only.
 """
 import argparse
 import collections
@@ -34,7 +34,7 @@ import run_mistakes as rm  # noqa: E402
 
 SAFE_FIX_KINDS = ["shift-right-1", "shift-right-3", "shift-left-2", "width-8", "radioss-straddle", "radioss-shift",
                   "digit-shift"]
-UNSAFE_FIX_KINDS = ["keyword-typo", "parameter-typo", "stray-end", "missing-heading", "lost-asterisk"]
+UNSAFE_FIX_KINDS = ["keyword-typo", "parameter-typo", "stray-end", "missing-heading", "lost-asterisk", "blank-line"]
 
 
 def fix_mutant(sphdeck, path, include, unsafe):

@@ -549,6 +549,27 @@ def lost_asterisk(host, rng):
         yield Plant("lost-asterisk", replaced(host.deck.lines, b.line, text[1:]), [b.line], f"{b.name} -> {text[1:].strip()}")
 
 
+def blank_line(host, rng):
+    """A blank line typed between a keyword's cards for spacing (after its keyword line or between two of its
+    data lines): LS-DYNA reads it as a card of defaults, and the cards after it one card late. Blocks of repeated
+    lines (nodes, particles, sets), text and reader keywords are left alone; a blank line that changes nothing
+    read (before an optional card of defaults) is a no-op."""
+    if host.deck.fmt != "dyna":
+        return
+    repeated = ("*NODE", "*ELEMENT", "*SET_", "*DEFINE_CURVE", "*DEFINE_TABLE", "*PARAMETER", "*KEYWORD",
+                "*END", "*COMMENT", "*TITLE", "*INCLUDE", "*DATABASE_HISTORY", "*INITIAL_")
+    blocks = [b for b in host.deck.blocks if b.data and not b.name.startswith(repeated)]
+    rng.shuffle(blocks)
+    for b in blocks:
+        k = rng.randrange(len(b.data))
+        n = b.data[k]  # the blank line goes above data line n
+        lines = host.deck.lines[:n - 1] + [""] + host.deck.lines[n - 1:]
+        # Above a blank line (an empty *PART heading), either of the two is the one too many.
+        targets = [n, n + 1] if not host.deck.lines[n - 1].strip() else [n]
+        yield Plant("blank-line", lines, targets, f"{b.name} at line {b.line}: blank line above data line {n}", "dump",
+                    line_map=lambda m, n=n: m if m < n else m + 1)
+
+
 def off_plane(host, rng):
     """A particle's node of a 2D deck (IDIM 2 or -2, every node at z = 0) given a z off the plane."""
     if host.deck.fmt != "dyna" or host.deck.long_format:
@@ -608,8 +629,8 @@ def digit_shift(host, rng):
 
 KINDS = [keyword_typo, shift_right_1, shift_right_3, shift_left_2, width_8, letter_o, decimal_comma,
          missing_id, zero_density, no_control_sph, parameter_typo, radioss_straddle, radioss_shift,
-         duplicated_block, tab_in_line, stray_end, missing_heading, lost_asterisk, off_plane, digit_shift]
+         duplicated_block, tab_in_line, stray_end, missing_heading, lost_asterisk, off_plane, digit_shift, blank_line]
 KIND_NAMES = ["keyword-typo", "shift-right-1", "shift-right-3", "shift-left-2", "width-8", "letter-O",
               "decimal-comma", "missing-id", "zero-density", "no-control-sph", "parameter-typo",
               "radioss-straddle", "radioss-shift", "duplicated-block", "tab-in-line", "stray-end",
-              "missing-heading", "lost-asterisk", "off-plane", "digit-shift"]
+              "missing-heading", "lost-asterisk", "off-plane", "digit-shift", "blank-line"]
