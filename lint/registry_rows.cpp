@@ -146,7 +146,7 @@ constexpr RuleInfo kRows[] = {
      "so the block it meant to open is lost (an error when that misreads)",
      Fixable::Unsafe},
     {"DK034", "blank-line-card", Warning, "0.1.0", "schema",
-     {"model/blank_card.cpp", "dk"},
+     {"model/blank_card.cpp lint/rules_control_sph_misc.cpp", "dk"},
      "a blank line inside a keyword's cards, read as a card of defaults: the lines after it are read one card late "
      "(an error when that misreads)",
      Fixable::Unsafe},
@@ -426,6 +426,9 @@ constexpr RuleInfo kRows[] = {
      {"lint/rules_dimension.cpp", "sph"},
      "every particle in one plane of a run 3D by default (no *CONTROL_SPH, IDIM blank): a 2D model without IDIM 2; "
      "warning with IDIM 3 written"},
+    {"SPH122", "symmetry-plane-no-normal", Warning, "0.1.0", "VTX",
+     {"lint/rules_control_sph_misc.cpp", "sph"},
+     "a *BOUNDARY_SPH_SYMMETRY_PLANE line whose normal's tail and head are one point: the plane has no normal"},
 };
 
 }  // namespace

@@ -139,6 +139,7 @@ std::string form_label(model::Form f) {
 }  // namespace control_sph
 
 void check_control_sph(RuleContext& c) {
+    control_sph::check_symmetry_planes(c);
     if (!c.model.controls.sph.present) {
         // Without *CONTROL_SPH only the section-side rule can apply; the rest talk about its fields.
         control_sph::check_forms(c, {});

@@ -51,5 +51,7 @@ void check_erosion(RuleContext& c, const std::vector<const model::Part*>& parts)
 void check_limits(RuleContext& c);
 // SPH050, SPH060, SPH091-SPH094, in rules_control_sph_misc.cpp.
 void check_misc(RuleContext& c, const std::vector<const model::Part*>& parts);
+// SPH122 (and DK034 for a blank line): a *BOUNDARY_SPH_SYMMETRY_PLANE line whose normal has no length.
+void check_symmetry_planes(RuleContext& c);
 
 }  // namespace sphdeck::lint::control_sph

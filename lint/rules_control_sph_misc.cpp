@@ -1,5 +1,5 @@
 // SPH050, SPH060, SPH091-SPH094: viscosity coefficients, inter-part interaction, symmetry-plane
-// memory, contact thickness and the sort interval of *CONTROL_SPH.
+// memory, contact thickness and the sort interval of *CONTROL_SPH; SPH122: symmetry planes without a normal.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -194,6 +194,26 @@ void check_ithk(RuleContext& c, const std::vector<const model::Part*>& parts) {
 }
 
 }  // namespace
+
+void check_symmetry_planes(RuleContext& c) {
+    for (const model::SymmetryPlane& q : c.model.symmetry_planes) {
+        if (q.head != q.tail || !q.span.valid()) continue;
+        const std::string_view line = c.deck.sources.line_text(q.span.file, q.span.line);
+        if (line.find_first_not_of(" \t\r") == std::string_view::npos) {  // a blank line typed among the planes
+            c.report("DK034", q.span,
+                     "blank line read as a plane of *BOUNDARY_SPH_SYMMETRY_PLANE: LS-DYNA reads a blank line inside "
+                     "a keyword as a card of defaults, here a plane whose normal's tail and head are both at the "
+                     "origin (no normal)")
+                .fixes.push_back(
+                    {"make the blank line a comment ('$')", false, {{{q.span.file, q.span.line, 1, 1}, "$"}}});
+            continue;
+        }
+        c.report("SPH122", q.span,
+                 fmt::format("symmetry plane with its normal's tail and head at one point ({}, {}, {}): it defines no "
+                             "normal; expected the head a distance along the normal, into the particles",
+                             q.tail[0], q.tail[1], q.tail[2]));
+    }
+}
 
 void check_misc(RuleContext& c, const std::vector<const model::Part*>& parts) {
     check_viscosity(c, parts);

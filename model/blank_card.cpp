@@ -21,9 +21,10 @@ bool card_too_many(const diag::Diagnostic& d, const grammar::Block& block, const
            (d.code == "DK008" && d.span.file == block.span.file && d.span.line == block.span.line);
 }
 
-// A reading finding of the block from `blank` on, or the keyword's missing card on its keyword line.
+// A reading finding of the block from `blank` on (a real parameter in an integer field among them), or the
+// keyword's missing card on its keyword line.
 bool read_late(const diag::Diagnostic& d, const grammar::Block& block, const grammar::CardLine& blank) {
-    const bool reading = follows_from_shift(d.code) || d.code == "DK009";
+    const bool reading = follows_from_shift(d.code) || d.code == "DK009" || d.code == "DK013";
     const bool after = d.span.file == blank.file && d.span.line >= blank.line;
     const bool keyword_line = d.code == "DK008" && d.span.file == block.span.file && d.span.line == block.span.line;
     return reading && (after || keyword_line);
@@ -53,6 +54,15 @@ bool diagnose_blank_card(const grammar::RawDeck& deck, const grammar::Block& blo
         for (bool text : {false, true})
             for (const BlankCardLine& b : blanks)
                 if (!cause && b.text_card == text && reads_without(b.line)) cause = &b, proven = true;
+    // Else, when the block shows a card too many (lines past its last card, a card missing), the first blank
+    // line read as a card of values (or a title): the lines after it may hold a mistake of their own as well.
+    if (!cause)
+        for (bool text : {false, true})
+            for (const BlankCardLine& b : blanks)
+                if (!cause && b.text_card == text &&
+                    std::any_of(found.begin(), found.end(),
+                                [&](const diag::Diagnostic& d) { return card_too_many(d, block, *b.line); }))
+                    cause = &b;
     if (!cause) return false;
     if (!proven) proven = reads_without(cause->line);
 

@@ -31,9 +31,11 @@ struct BlankCardLine {
 using ReadsWithout = std::function<bool(grammar::CardLinePtr blank)>;
 
 // DK034 at one of `blanks` (in block order), when out[from, end) shows that it was read as a card too many:
-// a required field blank on it (DK008); or a reading finding of the block from it on (a value that does not
+// a required field blank on it (DK008); a reading finding of the block from it on (a value that does not
 // fit its field, lines past the last card, the keyword missing a card) that the block read without it does
-// not make. The findings it explains become its notes. Returns whether it fired.
+// not make; or, failing that, lines past the last card or a card missing. The findings it explains become
+// its notes (all the block's reading findings after it only when the block reads cleanly without it).
+// Returns whether it fired.
 bool diagnose_blank_card(const grammar::RawDeck& deck, const grammar::Block& block,
                          std::span<const BlankCardLine> blanks, const ReadsWithout& reads_without,
                          std::vector<diag::Diagnostic>& out, std::size_t from);

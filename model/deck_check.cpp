@@ -74,10 +74,8 @@ std::size_t count_particles(const grammar::RawDeck& deck, const grammar::CardLin
 
 // Walks the lines of one block against its card sequence (model/card_sequence.hpp), decoding and
 // reporting each line.
-// The reader's findings on *PARAMETER use (DK012-DK015, DK024).
-bool parameter_finding(const diag::Diagnostic& d) {
-    return d.code == "DK012" || d.code == "DK013" || d.code == "DK014" || d.code == "DK015" || d.code == "DK024";
-}
+// The reader's findings on a parameter's name (undefined, its case): where the cards fall changes neither.
+bool parameter_finding(const diag::Diagnostic& d) { return d.code == "DK012" || d.code == "DK024"; }
 
 class BlockWalker {
 public:
@@ -143,7 +141,7 @@ public:
     const std::vector<BlankCardLine>& blank_cards() const { return blanks_; }
 
     // Whether the block's lines, `blank` left out, read without a finding: each decoded as the card the walk
-    // would give it then (blocks of up to max_replayed_lines; longer ones: no). Parameters' findings (a name
+    // would give it then (blocks of up to max_replayed_lines; longer ones: no). A parameter's name findings (one
     // defined in a deck that includes this file) say nothing of where the cards fall and are left out.
     bool reads_without(const grammar::Block& block, const keywords::KeywordMatch& match, grammar::CardLinePtr blank) {
         constexpr std::size_t max_replayed_lines = 1000;
