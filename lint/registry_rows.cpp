@@ -269,8 +269,10 @@ constexpr RuleInfo kRows[] = {
      {"lint/rules_references.cpp lint/rules_radioss.cpp lint/rules_radioss_sph_refs.cpp", "ref rad"},
      "a node, part, segment, solid, beam or discrete set id that is not defined"},
     {"REF009", "undefined-id", Error, "0.1.0", "references",
-     {"lint/rules_references_links.cpp lint/rules_radioss_id_links.cpp", "ref"},
-     "a curve, box, vector, coordinate system, transformation or hourglass id that no keyword defines"},
+     {"lint/rules_references_links.cpp lint/rules_radioss_id_links.cpp lint/rules_references.cpp", "ref"},
+     "a curve, box, vector, coordinate system, transformation or hourglass id (a part's HGID too) that no keyword "
+     "defines",
+     Fixable::Unsafe},
     {"REF010", "ids-defined-elsewhere", Info, "0.1.0", "references",
      {"lint/fragment_ids.cpp", "ref"},
      "an include fragment checked on its own names ids its including deck defines: one note, not an error each"},

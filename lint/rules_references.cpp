@@ -1,6 +1,7 @@
 // REF001-REF009: references between definitions (particle → node, part → section, material,
 // EOS; sets; boxes), duplicate ids and unused definitions.
 #include <algorithm>
+#include <charconv>
 #include <vector>
 #include <fmt/format.h>
 #include <tuple>
@@ -300,6 +301,29 @@ private:
 // structural thermal analysis is being performed", *PART): an error there. A structural analysis does not read
 // it, so the manual gives no failure: a warning, since a TMID that names nothing was meant to be 0 (the letter
 // O typed for the digit reads as a label).
+// The digits an id with the letter O typed for the digit 0 was meant to be ("O" -> "0", "1O" -> "10"); nullopt
+// when it has no O or other letters too.
+std::optional<std::string> letter_o_digits(const std::string& value) {
+    std::string digits = value;
+    bool letter_o = false;
+    for (char& ch : digits)
+        if (ch == 'O' || ch == 'o') ch = '0', letter_o = true;
+    if (!letter_o || !std::all_of(digits.begin(), digits.end(), [](char ch) { return ch >= '0' && ch <= '9'; }))
+        return std::nullopt;
+    return digits;
+}
+
+std::optional<diag::Fix> letter_o_fix(const std::optional<std::string>& digits, grammar::Span place) {
+    if (!digits) return std::nullopt;
+    return diag::Fix{fmt::format("write the digits {} (the letter O read as a label)", *digits),
+                     false,
+                     {{place, *digits}}};
+}
+
+std::string letter_o_words(const std::optional<std::string>& digits) {
+    return digits ? fmt::format(" (the letter O for the digit 0: {} meant?)", *digits) : "";
+}
+
 void check_thermal_material(const RuleContext& c, const model::Part& part, const ThermalMaterialIds& thermal,
                             MissingIds& missing) {
     const auto& t = part.thermal_material;
@@ -309,25 +333,33 @@ void check_thermal_material(const RuleContext& c, const model::Part& part, const
     const long long soln = c.model.controls.soln.value;
     const bool thermal_run = soln == 1 || soln == 2;
     // The letter O typed for the digit 0 ("O", "1O"): the digits it was meant to be, as an unsafe fix.
-    std::string digits = t.value;
-    bool letter_o = false;
-    for (char& ch : digits)
-        if (ch == 'O' || ch == 'o') ch = '0', letter_o = true;
-    letter_o = letter_o && std::all_of(digits.begin(), digits.end(), [](char ch) { return ch >= '0' && ch <= '9'; });
-    std::optional<diag::Fix> fix;
-    if (letter_o)
-        fix = diag::Fix{fmt::format("write the digits {} (the letter O read as a label)", digits),
-                        false,
-                        {{t.span, digits}}};
+    const std::optional<std::string> digits = letter_o_digits(t.value);
+    std::optional<diag::Fix> fix = letter_o_fix(digits, t.span);
     missing.add("REF004", t.value, part, t.span,
                 fmt::format("part {} names thermal material {} (TMID), which no *MAT_THERMAL_ defines{}", part.id,
-                            t.value, letter_o ? fmt::format(" (the letter O for the digit 0: {} meant?)", digits) : ""),
+                            t.value, letter_o_words(digits)),
                 "TMID", thermal_run ? diag::Severity::Error : diag::Severity::Warning,
                 thermal_run ? fmt::format("a thermal or coupled analysis (*CONTROL_SOLUTION SOLN {}) reads every "
                                           "part's thermal material",
                                           soln)
                             : "a structural analysis (SOLN 0) does not read TMID, but the value names nothing",
                 std::move(fix));
+}
+
+// HGID names a *HOURGLASS (0 or blank: the defaults). A number no *HOURGLASS line gives, or a label when every
+// hourglass id is a number (the letter O typed for 0 among them), names nothing (REF009).
+void check_hourglass(const RuleContext& c, const model::Part& part, MissingIds& missing) {
+    const auto& h = part.hourglass;
+    if (c.model.radioss || !h.explicit_value || h.value.empty() || h.value == "0") return;
+    long long number = 0;
+    const auto [end, ec] = std::from_chars(h.value.data(), h.value.data() + h.value.size(), number);
+    const bool numeric = ec == std::errc() && end == h.value.data() + h.value.size();
+    if (numeric ? deck_may_define(c.deck, "HOURGLASS", number) : deck_defines_unread_ids(c.deck, "HOURGLASS")) return;
+    const std::optional<std::string> digits = numeric ? std::nullopt : letter_o_digits(h.value);
+    missing.add("REF009", h.value, part, h.span,
+                fmt::format("part {} names hourglass {} (HGID), which no *HOURGLASS defines{}", part.id, h.value,
+                            letter_o_words(digits)),
+                "HGID", std::nullopt, {}, letter_o_fix(digits, h.span));
 }
 
 void check_part_references(RuleContext& c, std::set<Id>& used_sections, std::set<Id>& used_materials,
@@ -352,6 +384,7 @@ void check_part_references(RuleContext& c, std::set<Id>& used_sections, std::set
                         fmt::format("part {} names EOS {}, which no {} defines", part.id, e.value, words(c).eos));
         used_eos.insert(e.value);
         check_thermal_material(c, part, thermal, missing);
+        check_hourglass(c, part, missing);
     }
     missing.report(c);
 }

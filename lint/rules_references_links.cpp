@@ -126,6 +126,10 @@ bool deck_may_define(const grammar::RawDeck& deck, std::string_view kind, long l
     return d.unreadable || d.ids.count(id) > 0;
 }
 
+bool deck_defines_unread_ids(const grammar::RawDeck& deck, std::string_view kind) {
+    return definitions_of(deck, kind).unreadable;
+}
+
 void check_followed_references(RuleContext& c, std::set<model::Id>& boxes) {
     const auto& references = c.model.id_references;
     if (references.empty() || ids_offset(c.deck)) return;

@@ -16,5 +16,8 @@ void check_followed_references(RuleContext& c, std::set<model::Id>& boxes);
 // the first field of its first card whatever the keyword's form (*SET_NODE_GENERAL, _ADD, _LIST...),
 // or the kind has a definition whose id is not a number (a label, &name): it may be that one.
 bool deck_may_define(const grammar::RawDeck& deck, std::string_view kind, long long id);
+// Whether a definition of `kind` in the deck has an id that is not a number (a label, &name): then an id
+// that is no number may be defined too.
+bool deck_defines_unread_ids(const grammar::RawDeck& deck, std::string_view kind);
 
 }  // namespace sphdeck::lint
