@@ -81,18 +81,9 @@ bool diagnose_blank_card(const grammar::RawDeck& deck, const grammar::Block& blo
          "were typed for",
          false,
          {{grammar::Span{blank.file, blank.line, 1, 1}, "$"}}});
-    std::size_t kept = from;
-    for (std::size_t i = from; i < out.size(); ++i) {
-        if (proven ? read_late(out[i], block, blank) : card_too_many(out[i], block, blank)) {
-            d.severity = std::max(d.severity, out[i].severity);
-            fold_into(d, std::move(out[i]));
-            continue;
-        }
-        if (kept != i) out[kept] = std::move(out[i]);
-        ++kept;
-    }
-    out.resize(kept);
-    out.push_back(std::move(d));
+    fold_explained(out, from, std::move(d), [&](const diag::Diagnostic& f) {
+        return proven ? read_late(f, block, blank) : card_too_many(f, block, blank);
+    });
     return true;
 }
 

@@ -74,18 +74,7 @@ void diagnose_missing_heading(const grammar::RawDeck& deck, const grammar::Block
     // Unsafe: which title the part had is not known; a blank heading is read as none.
     d.fixes.push_back(
         {"insert a blank heading line above it", false, {{grammar::Span{heading.file, heading.line, 1, 1}, "\n"}}});
-    std::size_t kept = from;
-    for (std::size_t i = from; i < out.size(); ++i) {
-        if (misread(out[i])) {
-            d.severity = std::max(d.severity, out[i].severity);
-            fold_into(d, std::move(out[i]));
-            continue;
-        }
-        if (kept != i) out[kept] = std::move(out[i]);
-        ++kept;
-    }
-    out.resize(kept);
-    out.push_back(std::move(d));
+    fold_explained(out, from, std::move(d), misread);
 }
 
 }  // namespace sphdeck::model

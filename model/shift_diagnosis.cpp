@@ -232,6 +232,22 @@ bool follows_from_shift(std::string_view code) {
     return std::find(std::begin(codes), std::end(codes), code) != std::end(codes);
 }
 
+void fold_explained(std::vector<diag::Diagnostic>& out, std::size_t from, diag::Diagnostic cause,
+                    const std::function<bool(const diag::Diagnostic&)>& explained) {
+    std::size_t kept = from;
+    for (std::size_t i = from; i < out.size(); ++i) {
+        if (explained(out[i])) {
+            cause.severity = std::max(cause.severity, out[i].severity);
+            fold_into(cause, std::move(out[i]));
+            continue;
+        }
+        if (kept != i) out[kept] = std::move(out[i]);
+        ++kept;
+    }
+    out.resize(kept);
+    out.push_back(std::move(cause));
+}
+
 void fold_into(diag::Diagnostic& cause, diag::Diagnostic&& d) {
     // On the cause's own line a code frame would show the same line again: the column says where.
     if (d.span.valid() && d.span.file == cause.span.file && d.span.line == cause.span.line)

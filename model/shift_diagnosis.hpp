@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -49,5 +50,10 @@ bool follows_from_shift(std::string_view code);
 // Moves `d` into `cause` as a note "message [CODE]" at its span ("column N: message [CODE]" without a
 // span when it is on the cause's line).
 void fold_into(diag::Diagnostic& cause, diag::Diagnostic&& d);
+
+// Folds the findings of out[from, end) that `explained` accepts into `cause` (which becomes as grave as the
+// gravest of them), keeps the others in order, and appends `cause`.
+void fold_explained(std::vector<diag::Diagnostic>& out, std::size_t from, diag::Diagnostic cause,
+                    const std::function<bool(const diag::Diagnostic&)>& explained);
 
 }  // namespace sphdeck::model
