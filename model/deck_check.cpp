@@ -135,6 +135,7 @@ public:
     struct HeadingSuspect {
         grammar::CardLinePtr line = nullptr;
         const CardSpec* next = nullptr;
+        bool reals_read_as_ids = false;  // the line after it, read as `next`, holds reals in its id fields
     };
     const HeadingSuspect& heading_suspect() const { return heading_; }
     // The first blank lines the walk read as cards read once, with a data line after them (model/blank_card.hpp).
@@ -212,8 +213,14 @@ private:
     // A *PART heading line that reads as the card after it: the heading was left out.
     void note_missing_heading(const grammar::Block& block, grammar::CardLinePtr line, const CardSpec& card,
                               const CardSpec& next) {
-        if (card.fields.empty() || card.fields[0].name != "HEADING" || block.keyword.rfind("*PART", 0) != 0) return;
-        if (reads_as_integer_card(deck_.text(*line), layout_of(next, block.format), next)) heading_ = {line, &next};
+        // HEADING in the hand-written *PART, TITLE in generated layouts (*PART_INERTIA, *PART_CONTACT).
+        if (card.fields.empty() || (card.fields[0].name != "HEADING" && card.fields[0].name != "TITLE") ||
+            block.keyword.rfind("*PART", 0) != 0)
+            return;
+        if (!reads_as_integer_card(deck_.text(*line), layout_of(next, block.format), next)) return;
+        const bool reals = line + 1 != deck_.end_lines(block) &&
+                           reals_in_id_fields(deck_.text(line[1]), layout_of(next, block.format), next);
+        heading_ = {line, &next, reals};
     }
 
     // A blank line read as a card read once, with a data line after it in the block: spacing, perhaps.
@@ -559,7 +566,7 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
         if (const auto& h = walker.heading_suspect();
             h.line &&
             !(blank_misread && h.line->file == blanks.front().line->file && h.line->line > blanks.front().line->line))
-            diagnose_missing_heading(deck, block, *h.line, *h.next, out, before);
+            diagnose_missing_heading(deck, block, *h.line, *h.next, h.reals_read_as_ids, out, before);
         bound.annotate(out, before, block.keyword);
     }
     walker.report_lone_shifts();

@@ -18,6 +18,11 @@ bool integer_word(std::string_view word) {
 
 bool heading_finding(std::string_view code) { return follows_from_shift(code) || code == "DK009"; }
 
+// An integer or id field, or one pydyna lays out as an integer (generated layouts: *PART_INERTIA's PID).
+bool integer_typed(const keywords::FieldSpec& spec) {
+    return spec.type == keywords::FieldType::Integer || spec.type == keywords::FieldType::Label || spec.pydyna_integer;
+}
+
 }  // namespace
 
 bool reads_as_integer_card(std::string_view text, std::span<const grammar::FixedField> slots,
@@ -45,30 +50,46 @@ bool reads_as_integer_card(std::string_view text, std::span<const grammar::Fixed
                                      });
         if (in == slots.begin() + static_cast<std::ptrdiff_t>(fields)) return false;
         const auto& spec = card.fields[static_cast<std::size_t>(in - slots.begin())];
-        const bool integer_field = spec.type == keywords::FieldType::Integer || spec.type == keywords::FieldType::Label;
+        const bool integer_field = integer_typed(spec);
         if (!integer_field || !integer_word(text.substr(t.begin, t.end - t.begin))) return false;
         ++values;
     }
     return values >= min_values;
 }
 
+bool reals_in_id_fields(std::string_view text, std::span<const grammar::FixedField> slots,
+                        const keywords::CardSpec& card) {
+    if (grammar::is_free_format(text)) return false;
+    const std::size_t fields = std::min(slots.size(), card.fields.size());
+    for (std::size_t k = 0; k < fields; ++k) {
+        if (!integer_typed(card.fields[k]) || slots[k].start >= text.size()) continue;
+        const std::string_view word = grammar::trim_blanks(text.substr(slots[k].start, slots[k].width));
+        const grammar::RealValue v = grammar::parse_real(word);
+        if (v.status == grammar::NumberStatus::Ok && word.find_first_of(".eEdD") != std::string_view::npos) return true;
+    }
+    return false;
+}
+
 void diagnose_missing_heading(const grammar::RawDeck& deck, const grammar::Block& block,
                               const grammar::CardLine& heading, const keywords::CardSpec& next_card,
-                              std::vector<diag::Diagnostic>& out, std::size_t from) {
+                              bool reals_read_as_ids, std::vector<diag::Diagnostic>& out, std::size_t from) {
     // The block's misreadings from the heading on (and "missing its Card 2" on its keyword line).
     const auto misread = [&](const diag::Diagnostic& d) {
         const bool after = d.span.file == heading.file && d.span.line >= heading.line;
         const bool keyword_line = d.span.file == block.span.file && d.span.line == block.span.line;
         return heading_finding(d.code) && (after || keyword_line);
     };
-    if (std::none_of(out.begin() + static_cast<std::ptrdiff_t>(from), out.end(), misread)) return;
+    if (!reals_read_as_ids && std::none_of(out.begin() + static_cast<std::ptrdiff_t>(from), out.end(), misread)) return;
     const std::string_view text = deck.text(heading);
     const auto first = static_cast<std::uint32_t>(std::min(text.find_first_not_of(' '), text.size()) + 1);
+    // Generated layouts name their cards "Card": the one after the heading is card 2.
+    const std::string card =
+        next_card.name.empty() || next_card.name == "Card" ? "card 2" : std::string(next_card.name);
     diag::Diagnostic d{"DK032",
                        diag::Severity::Warning,
                        fmt::format("{} heading line missing: this line of integers reads as {}'s {}, but LS-DYNA "
                                    "reads it as the part's heading and the line after it as its {}",
-                                   block.keyword, block.keyword, next_card.name, next_card.name),
+                                   block.keyword, block.keyword, card, card),
                        grammar::Span{heading.file, heading.line, first, static_cast<std::uint32_t>(text.size() + 1)},
                        {}};
     // Unsafe: which title the part had is not known; a blank heading is read as none.

@@ -21,10 +21,17 @@ namespace sphdeck::model {
 bool reads_as_integer_card(std::string_view text, std::span<const grammar::FixedField> slots,
                            const keywords::CardSpec& card);
 
+// Whether `text`, read as `card`, holds a real (a decimal point or an exponent) in an integer or id field:
+// the line after a lost heading read as card 2 (*PART_INERTIA's XC, YC, ZC as PID, SECID, MID, which take
+// labels, so nothing else says so).
+bool reals_in_id_fields(std::string_view text, std::span<const grammar::FixedField> slots,
+                        const keywords::CardSpec& card);
+
 // DK032 at `heading` (a heading line that reads as the next card), when the block misread after it (a
-// reading finding in out[from, end)); the block's reading findings become its notes.
+// reading finding in out[from, end), or `reals_read_as_ids`: the line after it holds reals where its ids are
+// read); the block's reading findings become its notes.
 void diagnose_missing_heading(const grammar::RawDeck& deck, const grammar::Block& block,
                               const grammar::CardLine& heading, const keywords::CardSpec& next_card,
-                              std::vector<diag::Diagnostic>& out, std::size_t from);
+                              bool reals_read_as_ids, std::vector<diag::Diagnostic>& out, std::size_t from);
 
 }  // namespace sphdeck::model
