@@ -72,11 +72,11 @@ std::size_t count_particles(const grammar::RawDeck& deck, const grammar::CardLin
     return n;
 }
 
-// Walks the lines of one block against its card sequence (model/card_sequence.hpp), decoding and
-// reporting each line.
 // The reader's findings on a parameter's name (undefined, its case): where the cards fall changes neither.
 bool parameter_finding(const diag::Diagnostic& d) { return d.code == "DK012" || d.code == "DK024"; }
 
+// Walks the lines of one block against its card sequence (model/card_sequence.hpp), decoding and
+// reporting each line.
 class BlockWalker {
 public:
     BlockWalker(const grammar::RawDeck& deck, std::vector<diag::Diagnostic>& out, const CardVisitor& visit,
