@@ -51,6 +51,9 @@ public:
                 earlier_[std::string(v.spec->name)] = model::condition_value(v);
         ++next_;
     }
+    // True when a group of cards repeated together (*PART's heading and card 2) was just read whole: the
+    // next line would start another group.
+    bool group_done() const { return group_ > 0 && next_ >= cards_.size(); }
     // True when every further line is read as `card`: one repeated card, no group after it.
     bool only_repeats(const CardSpec& card) const { return card.repeat == CardRepeat::Repeated && group_ == 0; }
 

@@ -95,8 +95,14 @@ public:
             !cards[0]->present_if && block.line_count >= bulk_min_lines)
             return walk_in_parallel(block, *cards[0], summary, bound);
         const bool particles = block.keyword.rfind("*ELEMENT_SPH", 0) == 0;
+        // Blank lines after a whole group of repeated cards (*PART's heading and card 2) are spacing before the
+        // next keyword, as blank lines past a keyword's last card are (report_extra), not a heading.
+        grammar::CardLinePtr spacing_from = deck_.end_lines(block);
+        while (spacing_from != deck_.begin_lines(block) && blank_card_line(deck_.text(spacing_from[-1])))
+            --spacing_from;
         std::size_t walked = 0;
         for (grammar::CardLinePtr l = deck_.begin_lines(block); l != deck_.end_lines(block); ++l) {
+            if (l == spacing_from && sequence.group_done()) break;
             if (++walked % trim_lines == 0) bound.trim(out_);
             const CardSpec* next = sequence.next();
             if (!next && sequence.layout_unknown()) {  // generated layout ends here
