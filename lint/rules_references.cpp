@@ -237,6 +237,12 @@ std::string missing_reference(const model::Part& part, std::string_view field, s
     return fmt::format("part {} names {} {}, which no {} defines", part.id, what, id, keyword);
 }
 
+// An id defined only in other *CASE blocks than the part's: the part's run reads no definition of it.
+std::string missing_in_case(const RuleContext& c, const model::Part& part, std::string_view what, const Id& id) {
+    return fmt::format("part {} (in *CASE_BEGIN_{}) names {} {}, which is defined only in other cases", part.id,
+                       c.definitions().case_of(part), what, id);
+}
+
 // One cause, one finding (issue 26, item 3): the parts that name one missing id are reported once,
 // at the first of them in the files' order, with their count and the next places as notes.
 struct Naming {
@@ -371,12 +377,16 @@ void check_part_references(RuleContext& c, std::set<Id>& used_sections, std::set
         if (s.explicit_value && !c.model.section(s.value))
             missing.add("REF003", s.value, part, s.span,
                         missing_reference(part, words(c).section_field, "section", s.value, words(c).section));
+        else if (s.explicit_value && !c.definitions().section_of(part))
+            missing.add("REF003", s.value, part, s.span, missing_in_case(c, part, "section", s.value), "case");
         used_sections.insert(s.value);
         const auto& m = part.material;
         if (m.explicit_value && !c.model.material(m.value) &&
             !(m.value == "0" && needs_no_structural_material(c, part)))
             missing.add("REF004", m.value, part, m.span,
                         missing_reference(part, words(c).material_field, "material", m.value, words(c).material));
+        else if (m.explicit_value && c.model.material(m.value) && !c.definitions().material_of(part))
+            missing.add("REF004", m.value, part, m.span, missing_in_case(c, part, "material", m.value), "case");
         used_materials.insert(m.value);
         const auto& e = part.eos;
         if (!e.value.empty() && !c.model.eos(e.value))

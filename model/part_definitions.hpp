@@ -17,6 +17,8 @@ public:
     const Section* section_of(const Part& part) const;
     const Material* material_of(const Part& part) const;
     const Eos* eos_of(const Part& part) const;
+    // "n" for a part inside *CASE_BEGIN_n ... *CASE_END_n, else "" (read in every case).
+    std::string_view case_of(const Part& part) const { return cases_.case_of(part.span); }
 
 private:
     template <typename T>
