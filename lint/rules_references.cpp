@@ -354,13 +354,17 @@ void check_thermal_material(const RuleContext& c, const model::Part& part, const
 
 // HGID names a *HOURGLASS (0 or blank: the defaults). A number no *HOURGLASS line gives, or a label when every
 // hourglass id is a number (the letter O typed for 0 among them), names nothing (REF009).
-void check_hourglass(const RuleContext& c, const model::Part& part, MissingIds& missing) {
+// `hourglasses`: the deck's *HOURGLASS ids, read once for every part.
+void check_hourglass(const RuleContext& c, const model::Part& part, std::optional<DefinedIds>& hourglasses,
+                     MissingIds& missing) {
     const auto& h = part.hourglass;
     if (c.model.radioss || !h.explicit_value || h.value.empty() || h.value == "0") return;
+    if (!hourglasses) hourglasses = defined_ids(c.deck, "HOURGLASS");
+    if (hourglasses->unreadable) return;
     long long number = 0;
     const auto [end, ec] = std::from_chars(h.value.data(), h.value.data() + h.value.size(), number);
     const bool numeric = ec == std::errc() && end == h.value.data() + h.value.size();
-    if (numeric ? deck_may_define(c.deck, "HOURGLASS", number) : deck_defines_unread_ids(c.deck, "HOURGLASS")) return;
+    if (numeric && hourglasses->ids.count(number)) return;
     const std::optional<std::string> digits = numeric ? std::nullopt : letter_o_digits(h.value);
     missing.add("REF009", h.value, part, h.span,
                 fmt::format("part {} names hourglass {} (HGID), which no *HOURGLASS defines{}", part.id, h.value,
@@ -372,6 +376,7 @@ void check_part_references(RuleContext& c, std::set<Id>& used_sections, std::set
                            std::set<Id>& used_eos) {
     MissingIds missing;
     const ThermalMaterialIds thermal = thermal_material_ids(c.deck);
+    std::optional<DefinedIds> hourglasses;
     for (const model::Part& part : c.model.parts) {
         const auto& s = part.section;
         if (s.explicit_value && !c.model.section(s.value))
@@ -394,7 +399,7 @@ void check_part_references(RuleContext& c, std::set<Id>& used_sections, std::set
                         fmt::format("part {} names EOS {}, which no {} defines", part.id, e.value, words(c).eos));
         used_eos.insert(e.value);
         check_thermal_material(c, part, thermal, missing);
-        check_hourglass(c, part, missing);
+        check_hourglass(c, part, hourglasses, missing);
     }
     missing.report(c);
 }

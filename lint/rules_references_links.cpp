@@ -17,10 +17,7 @@ bool references_links_starts_with(std::string_view s, std::string_view p) { retu
 // The ids a kind's defining keywords give, read from the first field of their first card (after
 // the title line of _TITLE), as raw_first_id reads unknown sections and materials: the keywords
 // may be hand-written, generated or unknown alike.
-struct Definitions {
-    std::unordered_set<long long> ids;
-    bool unreadable = false;  // a definition whose id is not a number (&name, a label): the kind is not judged
-};
+using Definitions = DefinedIds;
 
 // The first field of a card line as an integer; nullopt when it is not one.
 std::optional<long long> first_integer(std::string_view text, grammar::CardFormat format) {
@@ -126,9 +123,7 @@ bool deck_may_define(const grammar::RawDeck& deck, std::string_view kind, long l
     return d.unreadable || d.ids.count(id) > 0;
 }
 
-bool deck_defines_unread_ids(const grammar::RawDeck& deck, std::string_view kind) {
-    return definitions_of(deck, kind).unreadable;
-}
+DefinedIds defined_ids(const grammar::RawDeck& deck, std::string_view kind) { return definitions_of(deck, kind); }
 
 void check_followed_references(RuleContext& c, std::set<model::Id>& boxes) {
     const auto& references = c.model.id_references;

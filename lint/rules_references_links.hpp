@@ -3,6 +3,7 @@
 #pragma once
 
 #include <set>
+#include <unordered_set>
 
 #include "lint/rule_context.hpp"
 
@@ -16,8 +17,12 @@ void check_followed_references(RuleContext& c, std::set<model::Id>& boxes);
 // the first field of its first card whatever the keyword's form (*SET_NODE_GENERAL, _ADD, _LIST...),
 // or the kind has a definition whose id is not a number (a label, &name): it may be that one.
 bool deck_may_define(const grammar::RawDeck& deck, std::string_view kind, long long id);
-// Whether a definition of `kind` in the deck has an id that is not a number (a label, &name): then an id
-// that is no number may be defined too.
-bool deck_defines_unread_ids(const grammar::RawDeck& deck, std::string_view kind);
+// The ids the deck's keywords define of `kind`, read as deck_may_define reads them (one pass over the blocks:
+// for a rule that looks many ids up).
+struct DefinedIds {
+    std::unordered_set<long long> ids;
+    bool unreadable = false;  // a definition whose id is not a number (&name, a label): the kind is not judged
+};
+DefinedIds defined_ids(const grammar::RawDeck& deck, std::string_view kind);
 
 }  // namespace sphdeck::lint

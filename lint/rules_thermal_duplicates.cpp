@@ -1,6 +1,5 @@
 #include "lint/rules_thermal_duplicates.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <map>
 #include <vector>
@@ -8,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "grammar/fields.hpp"
+#include "grammar/value.hpp"
 
 namespace sphdeck::lint {
 namespace {
@@ -17,39 +17,29 @@ struct ThermalId {
     grammar::Span span;  // the id as written
 };
 
-// An integer parameter's value (or a real one's, when whole) for `&name`, as the block sees it.
-std::optional<long long> parameter_id(const grammar::RawDeck& deck, const grammar::Block& b, grammar::FileId file,
-                                      std::string_view name) {
-    const grammar::Parameter* p = deck.parameters.find(name, file, b.parameter_epoch).parameter;
-    if (!p || p->type == grammar::ParameterType::Character || p->number != std::floor(p->number) ||
-        std::abs(p->number) > 1e15)
-        return std::nullopt;
-    return static_cast<long long>(p->number);
-}
-
-// TMID: the first field of the first card (after the title line of _TITLE), a plain integer or `&name` of a
-// parameter defined before it; nullopt otherwise (free format, an expression: left alone).
+// TMID: the first field of the first card (after the title line of _TITLE), an integer or `&name` of a
+// numeric parameter with a whole value defined before it; nullopt otherwise (free format, a label: left alone).
 std::optional<ThermalId> thermal_id(const grammar::RawDeck& deck, const grammar::Block& b) {
     grammar::CardLinePtr line = deck.begin_lines(b) + keywords::title_lines(b.keyword);
     if (line >= deck.end_lines(b)) return std::nullopt;
     const std::string_view text = deck.text(*line);
     if (grammar::is_free_format(text)) return std::nullopt;
     const std::size_t width = b.format == grammar::CardFormat::Long ? 20 : 10;
-    const std::string_view field = text.substr(0, std::min(text.size(), width));
-    const std::size_t begin = field.find_first_not_of(' ');
-    if (begin == std::string_view::npos) return std::nullopt;
-    const std::size_t end = field.find_last_not_of(" \r") + 1;
+    const grammar::ValueToken token = grammar::classify_value(text.substr(0, std::min(text.size(), width)));
     long long id = 0;
-    if (field[begin] == '&') {
-        const auto value = parameter_id(deck, b, line->file, field.substr(begin + 1, end - begin - 1));
-        if (!value) return std::nullopt;
-        id = *value;
+    if (token.shape == grammar::ValueShape::Parameter) {
+        const grammar::Parameter* p = deck.parameters.find(token.name, line->file, b.parameter_epoch).parameter;
+        if (!p || p->type == grammar::ParameterType::Character || p->number != std::floor(p->number) ||
+            std::abs(p->number) > 1e15)
+            return std::nullopt;
+        id = static_cast<long long>(token.negated ? -p->number : p->number);
     } else {
-        auto [stop, ec] = std::from_chars(field.data() + begin, field.data() + end, id);
-        if (ec != std::errc() || stop != field.data() + end) return std::nullopt;
+        const grammar::IntegerValue v = grammar::to_integer(token);
+        if (token.shape != grammar::ValueShape::Integer || v.status != grammar::NumberStatus::Ok) return std::nullopt;
+        id = v.value;
     }
-    return ThermalId{id, grammar::Span{line->file, line->line, static_cast<std::uint32_t>(begin + 1),
-                                       static_cast<std::uint32_t>(end + 1)}};
+    return ThermalId{id, grammar::Span{line->file, line->line, static_cast<std::uint32_t>(token.offset + 1),
+                                       static_cast<std::uint32_t>(token.offset + token.text.size() + 1)}};
 }
 
 }  // namespace
