@@ -1,5 +1,7 @@
 #include "model/case_blocks.hpp"
 
+#include <algorithm>
+
 namespace sphdeck::model {
 
 void track_case(std::string_view keyword, std::string& current) {
@@ -10,27 +12,30 @@ void track_case(std::string_view keyword, std::string& current) {
         current.clear();
 }
 
-CaseBlocks::CaseBlocks(const grammar::RawDeck& deck) : deck_(deck) {
+CaseBlocks::CaseBlocks(const grammar::RawDeck& deck) {
     bool any = false;
     for (const grammar::Block& b : deck.blocks) any = any || b.keyword.rfind("*CASE_BEGIN_", 0) == 0;
     if (!any) return;
     std::string current;
     case_of_block_.reserve(deck.blocks.size());
-    for (const grammar::Block& b : deck.blocks) {
+    starts_.reserve(deck.blocks.size());
+    for (std::size_t i = 0; i < deck.blocks.size(); ++i) {
+        const grammar::Block& b = deck.blocks[i];
         track_case(b.keyword, current);
         case_of_block_.push_back(current);  // blocks of an included file follow its *INCLUDE
+        starts_.emplace_back(b.span.file, b.span.line, i);
     }
+    std::sort(starts_.begin(), starts_.end());
 }
 
 std::string_view CaseBlocks::case_of(const grammar::Span& where) const {
     if (case_of_block_.empty()) return {};
-    // The block holding `where`: the last one of its file starting at or before its line.
-    std::string_view found;
-    for (std::size_t i = 0; i < deck_.blocks.size(); ++i) {
-        const grammar::Span& s = deck_.blocks[i].span;
-        if (s.file == where.file && s.line <= where.line) found = case_of_block_[i];
-    }
-    return found;
+    // The block holding `where`: the last one of its file starting at or before its line (a file's blocks
+    // come in the order of their lines).
+    const auto after = std::upper_bound(starts_.begin(), starts_.end(),
+                                        std::tuple{where.file, where.line, static_cast<std::size_t>(-1)});
+    if (after == starts_.begin() || std::get<0>(after[-1]) != where.file) return {};
+    return case_of_block_[std::get<2>(after[-1])];
 }
 
 }  // namespace sphdeck::model

@@ -5,6 +5,7 @@
 
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <vector>
 
 #include "grammar/raw_deck.hpp"
@@ -27,8 +28,9 @@ public:
     bool any() const { return !case_of_block_.empty(); }
 
 private:
-    const grammar::RawDeck& deck_;
     std::vector<std::string> case_of_block_;  // empty when the deck has no case block
+    // Each block's (file, first line) and index, sorted: case_of is a binary search (rules ask it per part).
+    std::vector<std::tuple<grammar::FileId, std::uint32_t, std::size_t>> starts_;
 };
 
 }  // namespace sphdeck::model
