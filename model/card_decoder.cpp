@@ -156,9 +156,7 @@ const CardLayout& card_layout(const keywords::CardSpec& card, grammar::CardForma
     return it->second.layout;
 }
 
-const CardLayout& CardDecoder::layout_of(const keywords::CardSpec& card, grammar::CardFormat format) {
-    if (!layouts_.empty() && layouts_[last_layout_].card == &card && layouts_[last_layout_].format == format)
-        return *layouts_[last_layout_].layout;  // repeated cards: the same layout line after line
+const CardLayout& CardDecoder::find_layout(const keywords::CardSpec& card, grammar::CardFormat format) {
     for (const Layout& l : layouts_)
         if (l.card == &card && l.format == format) {
             last_layout_ = static_cast<std::size_t>(&l - layouts_.data());

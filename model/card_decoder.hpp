@@ -147,7 +147,12 @@ private:
         grammar::CardFormat format = grammar::CardFormat::Standard;
         const CardLayout* layout = nullptr;
     };
-    const CardLayout& layout_of(const keywords::CardSpec& card, grammar::CardFormat format);
+    const CardLayout& layout_of(const keywords::CardSpec& card, grammar::CardFormat format) {
+        if (!layouts_.empty() && layouts_[last_layout_].card == &card && layouts_[last_layout_].format == format)
+            return *layouts_[last_layout_].layout;  // repeated cards: the same layout line after line
+        return find_layout(card, format);
+    }
+    const CardLayout& find_layout(const keywords::CardSpec& card, grammar::CardFormat format);
 
     // The text of a file of the deck, looked up once for the lines of one file (a look-up a line showed).
     std::string_view file_text(text::FileId file) {

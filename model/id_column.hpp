@@ -118,6 +118,9 @@ public:
     // (true then): its entries are given back. Any later change writes them out again.
     bool compact();
     bool sequence() const { return sequence_; }
+    // A sequence's entry 0 and step (entry i is first + step * i); meaningful only while sequence().
+    long long sequence_first() const { return first_; }
+    long long sequence_step() const { return step_; }
 
     // Bytes held (capacity aside): 4 an entry while narrow, none as a sequence.
     std::size_t bytes() const {

@@ -5,7 +5,13 @@
 namespace sphdeck::model {
 
 IdIndex::IdIndex(const std::vector<long long>& ids) { build(ids); }
-IdIndex::IdIndex(const IdColumn& ids) { build(ids); }
+IdIndex::IdIndex(const IdColumn& ids) {
+    if (ids.sequence() && ids.sequence_step() != 0) {
+        arithmetic_ = true, min_ = ids.sequence_first(), step_ = ids.sequence_step(), count_ = ids.size();
+        return;
+    }
+    build(ids);
+}
 
 template <typename Ids>
 void IdIndex::build(const Ids& ids) {
@@ -36,13 +42,7 @@ void IdIndex::build(const Ids& ids) {
     std::sort(duplicates_.begin(), duplicates_.end(), [](auto& a, auto& b) { return a.second < b.second; });
 }
 
-std::optional<std::size_t> IdIndex::find(long long id) const {
-    if (!dense_.empty()) {
-        if (id < min_ || static_cast<unsigned long long>(id - min_) >= dense_.size()) return std::nullopt;
-        std::uint32_t slot = dense_[static_cast<std::size_t>(id - min_)];
-        if (slot == absent) return std::nullopt;
-        return slot;
-    }
+std::optional<std::size_t> IdIndex::find_sorted(long long id) const {
     auto it = std::lower_bound(sorted_.begin(), sorted_.end(), std::make_pair(id, std::size_t{0}));
     if (it == sorted_.end() || it->first != id) return std::nullopt;
     return it->second;
@@ -75,6 +75,7 @@ std::vector<std::pair<std::size_t, std::size_t>> find_duplicate_ids(const std::v
     return duplicate_ids_of(ids);
 }
 std::vector<std::pair<std::size_t, std::size_t>> find_duplicate_ids(const IdColumn& ids) {
+    if (ids.sequence() && ids.sequence_step() != 0) return {};  // first + step * i: every id distinct
     return duplicate_ids_of(ids);
 }
 
