@@ -30,7 +30,54 @@ bool blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 struct Straddle {
     std::size_t cell = 0;
     std::size_t begin = 0, boundary = 0, end = 0;  // 0-based columns of the run
+    std::size_t split = 0;                         // a glued pair's second value starts here (0: the run is one number)
 };
+
+// Machine-written decks glue a value to the next when that one fills its cell ("0.01.00000000000000E+31":
+// '0.0' ends cell i, the 20-character real fills cell i + 1). Such a run moved a few columns reads as no
+// number across the boundary, and the starter cuts both values. The run is a glued pair when its last
+// cell-width characters and the rest before them are numbers; it is reported unless the cells it touches
+// read the same values as with the pair moved back.
+std::optional<Straddle> glued_pair(std::string_view text, const grammar::radioss::CardSpec& card,
+                                   std::span<const grammar::FixedField> positions, std::size_t i, std::size_t s,
+                                   std::size_t b, std::size_t e) {
+    constexpr std::size_t most_columns_off = 4;  // a slip of the hand, not another layout
+    if (i + 1 >= positions.size() || i + 1 >= card.fields.size() || !numeric_straddle(card.fields[i + 1].cell))
+        return std::nullopt;
+    const std::size_t width = positions[i + 1].width;
+    if (e - s <= width) return std::nullopt;
+    const std::size_t split = e - width;
+    if (split == b || (split > b ? split - b : b - split) > most_columns_off) return std::nullopt;
+    const grammar::RealValue first = grammar::parse_real(text.substr(s, split - s));
+    const grammar::RealValue second = grammar::parse_real(text.substr(split, e - split));
+    if (first.status != grammar::NumberStatus::Ok || second.status != grammar::NumberStatus::Ok) return std::nullopt;
+    // What the starter reads in the cells the pair touches, as written and with the pair moved back.
+    const std::size_t off = split > b ? split - b : b - split;
+    if (split > b && s < off) return std::nullopt;
+    const std::string pair(text.substr(s, e - s));
+    const std::string meant =
+        split > b ? std::string(text.substr(0, s - off)) + pair + std::string(off, ' ') + std::string(text.substr(e))
+                  : std::string(text.substr(0, s)) + std::string(off, ' ') + pair +
+                        std::string(text.substr(std::min(e + off, text.size())));
+    const auto cell_text = [&](std::string_view line_text, std::size_t k) {
+        const std::size_t from = positions[k].start;
+        return grammar::trim_blanks(from < line_text.size() ? line_text.substr(from, positions[k].width)
+                                                            : std::string_view{});
+    };
+    const auto number_of = [](std::string_view cell) -> std::optional<double> {  // a blank cell reads 0
+        if (cell.empty()) return 0.0;
+        const grammar::RealValue v = grammar::parse_real(cell);
+        return v.status == grammar::NumberStatus::Ok ? std::optional<double>(v.value) : std::nullopt;
+    };
+    bool same = true;
+    for (std::size_t k = i; k < std::min(i + 3, positions.size()) && same; ++k) {
+        const std::string_view now = cell_text(text, k), then = cell_text(meant, k);
+        const std::optional<double> a = number_of(now), z = number_of(then);
+        same = now == then || (a && z && *a == *z);
+    }
+    if (same) return std::nullopt;  // read the same: nothing to say
+    return Straddle{i, s, b, e, split};
+}
 
 std::vector<Straddle> straddles(std::string_view text, const grammar::radioss::CardSpec& card,
                                 std::span<const grammar::FixedField> positions) {
@@ -49,7 +96,12 @@ std::vector<Straddle> straddles(std::string_view text, const grammar::radioss::C
         const bool packed =
             (s == positions[i].start && !flag_into_wider) ||
             (i + 1 < positions.size() && e == std::size_t{positions[i + 1].start} + positions[i + 1].width);
-        if (packed || grammar::parse_real(text.substr(s, e - s)).status != grammar::NumberStatus::Ok) continue;
+        if (packed) continue;
+        if (grammar::parse_real(text.substr(s, e - s)).status != grammar::NumberStatus::Ok) {
+            if (const std::optional<Straddle> pair = glued_pair(text, card, positions, i, s, b, e))
+                out.push_back(*pair);
+            continue;
+        }
         // A zero across the boundary ('.000000000' read as '.00000' and '0000') changes no value, unless
         // the next cell holds a value of its own that the lost zeros are then read with (BS '0.0' one
         // column past 80 makes IFORM '0        1': the starter reads IFORM 0).
@@ -110,7 +162,66 @@ diag::Diagnostic straddle_finding(const grammar::CardLine& line, std::string_vie
                            true,
                            {{grammar::Span{line.file, line.line, static_cast<std::uint32_t>(s.begin - overrun + 1),
                                            static_cast<std::uint32_t>(s.end + 1)},
-                             std::string(whole) + std::string(overrun, ' ')}}});
+                             std::string(whole) + std::string(s.end < text.size() ? overrun : 0, ' ')}}});
+    return d;
+}
+
+// A glued pair moved off its cells: both values named, what the starter reads in the two cells, where the
+// rest goes; a safe fix moves the pair back (blanks of its own cells make room for it).
+diag::Diagnostic glued_pair_finding(const grammar::CardLine& line, std::string_view text,
+                                    const grammar::radioss::CardSpec& card,
+                                    std::span<const grammar::FixedField> positions, const Straddle& s) {
+    const auto& here = card.fields[s.cell];
+    const auto& next = card.fields[s.cell + 1];
+    const std::string_view first = text.substr(s.begin, s.split - s.begin);
+    const std::string_view second = text.substr(s.split, s.end - s.split);
+    const bool right = s.split > s.boundary;
+    const std::size_t off = right ? s.split - s.boundary : s.boundary - s.split;
+    const std::size_t next_end = std::size_t{positions[s.cell + 1].start} + positions[s.cell + 1].width;
+    const auto cell_text = [&](std::size_t from, std::size_t to) {
+        return grammar::trim_blanks(from < text.size() ? text.substr(from, std::min(to, text.size()) - from)
+                                                       : std::string_view{});
+    };
+    std::string message = fmt::format(
+        "'{}' and '{}' are written glued {} column{} {} of the end of cell {} ({}): the starter reads {} as '{}' and "
+        "{} as '{}'",
+        first, second, off, off == 1 ? "" : "s", right ? "right" : "left", here.name,
+        straddle_cell_columns(positions[s.cell]), here.name, cell_text(positions[s.cell].start, s.boundary), next.name,
+        cell_text(s.boundary, next_end));
+    if (right) {
+        const std::string_view lost = text.substr(next_end, s.end - next_end);
+        if (s.cell + 2 >= card.fields.size() || s.cell + 2 >= positions.size())
+            message += fmt::format(", and '{}' past the last cell is not read", lost);
+        else
+            message += fmt::format(", and '{}' is read as the start of {}", lost, card.fields[s.cell + 2].name);
+    }
+    diag::Diagnostic d{"RAD030",
+                       diag::Severity::Error,
+                       std::move(message),
+                       grammar::Span{line.file, line.line, static_cast<std::uint32_t>(s.begin + 1),
+                                     static_cast<std::uint32_t>(s.end + 1)},
+                       {}};
+    // Safe fix: the pair moved back by the columns it is off, into blanks (of its first cell when it moves
+    // left, of the next cell's end or the line's end when it moves right): each value then fills its cell.
+    const std::string_view pair = text.substr(s.begin, s.end - s.begin);
+    const std::size_t from = right ? s.begin - std::min(s.begin, off) : s.end;
+    const bool room =
+        right ? s.begin >= positions[s.cell].start + off &&
+                    text.substr(from, off).find_first_not_of(' ') == std::string_view::npos
+              : text.substr(std::min(from, text.size()), off).find_first_not_of(' ') == std::string_view::npos;
+    if (room) {
+        const std::size_t edit_begin = right ? from : s.begin;
+        const std::size_t edit_end = right ? s.end : std::min(s.end + off, text.size());
+        const std::string replacement = right ? std::string(pair) + std::string(s.end < text.size() ? off : 0,
+                                                                                ' ')  // no blanks left at a line's end
+                                              : std::string(off, ' ') + std::string(pair);
+        d.fixes.push_back({fmt::format("move '{}' and '{}' {} column{} {}, to fill {} and {}", first, second, off,
+                                       off == 1 ? "" : "s", right ? "left" : "right", here.name, next.name),
+                           true,
+                           {{grammar::Span{line.file, line.line, static_cast<std::uint32_t>(edit_begin + 1),
+                                           static_cast<std::uint32_t>(edit_end + 1)},
+                             replacement}}});
+    }
     return d;
 }
 
@@ -230,8 +341,11 @@ void diagnose_radioss_line(const grammar::CardLine& line, std::string_view text,
         const std::size_t end = s.cell + 1 < positions.size()
                                     ? std::size_t{positions[s.cell + 1].start} + positions[s.cell + 1].width
                                     : text.size() + 1;
-        fold_and_add(out, from, straddle_finding(line, text, card, positions, s),
-                     [&](const diag::Diagnostic& d) { return d.code != "RAD030" && within(d, line, begin, end); });
+        const std::size_t fold_end = std::max(end, s.end);  // a glued pair's tail past the next cell too
+        fold_and_add(out, from,
+                     s.split != 0 ? glued_pair_finding(line, text, card, positions, s)
+                                  : straddle_finding(line, text, card, positions, s),
+                     [&](const diag::Diagnostic& d) { return d.code != "RAD030" && within(d, line, begin, fold_end); });
     }
 }
 

@@ -163,4 +163,39 @@ TEST_CASE("radioss round 3: a zero one column past its cell into a cell with its
                               r20("0.0") + r20("0.0") + r20("0.0") + r20("0.0") + "\n";
     CHECK(count_code(check(deck(alone, 2019)).diagnostics, "RAD030") == 0);
 }
+TEST_CASE("radioss round 3: a glued pair typed off its cells names both values and moves back whole") {
+    // AS '0.1' glued to BS '1.00000000000000E-02' (which fills its cell), as machine-written decks write them.
+    const std::string pair = "0.11.00000000000000E-02";
+    const auto heat = [&](std::size_t blanks) {
+        return "/HEAT/MAT/1\n" + r20("293.0") + r20("4.0") + std::string(blanks, ' ') + pair + "\n" + r20("0.0") +
+               r20("0.0") + r20("0.0") + r20("0.0") + "\n";
+    };
+    CHECK(count_code(check(deck(heat(17))).diagnostics, "RAD030") == 0);  // in place: each value fills its cell
+    // One column right: AS reads '0.', BS '11.00000000000000E-0' (11, not 0.01), '2' is past the last cell.
+    auto r = check(deck(heat(18)));
+    const diag::Diagnostic* d = find_code(r.diagnostics, "RAD030");
+    REQUIRE(d);
+    CHECK(d->message ==
+          "'0.1' and '1.00000000000000E-02' are written glued 1 column right of the end of cell HEAT_AS (columns "
+          "41-60): the starter reads HEAT_AS as '0.' and HEAT_BS as '11.00000000000000E-0', and '2' past the last "
+          "cell is not read");
+    CHECK(d->span.column == 59);
+    CHECK(d->span.end_column == 82);
+    REQUIRE(d->fixes.size() == 1);
+    CHECK(d->fixes[0].safe);
+    REQUIRE(d->fixes[0].edits.size() == 1);
+    CHECK(d->fixes[0].edits[0].span.column == 58);
+    CHECK(d->fixes[0].edits[0].replacement == pair);  // at the line's end: no blanks left behind
+    // Two columns left: AS reads '0.11.' (no number), BS '00000000000000E-02'; the fix moves the pair right.
+    r = check(deck(heat(15)));
+    d = find_code(r.diagnostics, "RAD030");
+    REQUIRE(d);
+    CHECK(d->message.find("glued 2 columns left of the end of cell HEAT_AS") != std::string::npos);
+    CHECK(d->message.find("reads HEAT_AS as '0.11.' and HEAT_BS as '00000000000000E-02'") != std::string::npos);
+    REQUIRE(d->fixes.size() == 1);
+    CHECK(d->fixes[0].edits[0].replacement == "  " + pair);
+    // Off by more than four columns: another layout, not a slip; left to the other rules.
+    CHECK(count_code(check(deck(heat(12))).diagnostics, "RAD030") == 0);
+}
+
 }  // namespace test_radioss_round3_cpp
