@@ -1,6 +1,8 @@
 #include "model/blank_card.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -28,6 +30,39 @@ bool read_late(const diag::Diagnostic& d, const grammar::Block& block, const gra
     const bool after = d.span.file == blank.file && d.span.line >= blank.line;
     const bool keyword_line = d.code == "DK008" && d.span.file == block.span.file && d.span.line == block.span.line;
     return reading && (after || keyword_line);
+}
+
+// A word of a `$#` ruler or a field's name, compared as LS-PrePost and pydyna write them: lower case,
+// letters, digits and '_' ("QB (VDC)" is "qb").
+std::string ruler_word(std::string_view w) {
+    std::string out;
+    for (char c : w) {
+        if (c == ' ' || c == '(') break;
+        if (std::isalnum(static_cast<unsigned char>(c)) || c == '_')
+            out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+    return out;
+}
+
+// Whether `header` (a `$#` comment line) names the fields of `card`: two words or more, and at least two
+// thirds of them the card's field names (or their aliases).
+bool header_names(std::string_view header, const keywords::CardSpec& card) {
+    if (header.size() < 2) return false;
+    std::size_t words = 0, named = 0;
+    for (std::size_t i = 2; i < header.size();) {
+        while (i < header.size() && (header[i] == ' ' || header[i] == '\t' || header[i] == ',')) ++i;
+        const std::size_t begin = i;
+        while (i < header.size() && header[i] != ' ' && header[i] != '\t' && header[i] != ',') ++i;
+        if (i == begin) break;
+        const std::string word = ruler_word(header.substr(begin, i - begin));
+        if (word.empty()) continue;
+        ++words;
+        named += std::any_of(card.fields.begin(), card.fields.end(), [&](const keywords::FieldSpec& f) {
+            return ruler_word(f.name) == word || std::any_of(f.aliases.begin(), f.aliases.end(),
+                                                             [&](std::string_view a) { return ruler_word(a) == word; });
+        });
+    }
+    return words >= 2 && 3 * named >= 2 * words;
 }
 
 }  // namespace
@@ -63,6 +98,21 @@ bool diagnose_blank_card(const grammar::RawDeck& deck, const grammar::Block& blo
                     std::any_of(found.begin(), found.end(),
                                 [&](const diag::Diagnostic& d) { return card_too_many(d, block, *b.line); }))
                     cause = &b;
+    // Else a blank line between a `$#` ruler that names the card it was read as and the data line right after
+    // it: the ruler was typed for that line, which is read one card late, silently when the next card's fields
+    // take its values. (A ruler, a blank line and another ruler is a card of defaults written on purpose, as
+    // pydyna writes one.)
+    bool under_ruler = false;
+    const auto data_right_after = [&](const BlankCardLine& b) {
+        const grammar::CardLinePtr next = b.line + 1;
+        return next.index() < block.first_line + block.line_count && next->file == b.line->file &&
+               next->line == b.line->line + 1;
+    };
+    if (!cause)
+        for (const BlankCardLine& b : blanks)
+            if (!cause && !b.text_card && data_right_after(b) && header_names(header_above(deck, *b.line), *b.card) &&
+                reads_without(b.line))
+                cause = &b, proven = true, under_ruler = true;
     if (!cause) return false;
     if (!proven) proven = reads_without(cause->line);
 
@@ -75,6 +125,11 @@ bool diagnose_blank_card(const grammar::RawDeck& deck, const grammar::Block& blo
                                    card_name, block.keyword),
                        grammar::Span{blank.file, blank.line, 1, std::max<std::uint32_t>(deck.length(blank) + 1, 2)},
                        {}};
+    if (under_ruler)
+        d.notes.push_back(
+            {grammar::Span{}, fmt::format("the `$#` comment above it names the fields of {}: it was typed for the line "
+                                          "after the blank line, which is read as the next card",
+                                          card_name)});
     // Unsafe: the blank line may have been meant as a card of defaults, and a line after it too many.
     d.fixes.push_back(
         {"make the blank line a comment ('$'), so that the lines after it are read as the cards they "
