@@ -104,6 +104,25 @@ TEST_CASE("radioss generated: engine keywords by the engine's REDKEY0; each deck
     REQUIRE(d);
     CHECK(d->severity == diag::Severity::Info);
     CHECK(d->message.find("engine keyword") != std::string::npos);
+    // A starter keyword mistyped whose five characters are an engine key (/FUNCTT: FUNCT, /INTERR: INTER) is no
+    // engine keyword out of place: no engine keyword has that first segment, a starter one begins with it.
+    CHECK(rad::is_engine_only_key("/TFILE/4"));
+    CHECK(rad::is_engine_only_key("/RUN/run/1"));
+    CHECK_FALSE(rad::is_engine_only_key("/FUNCTT/17"));
+    CHECK_FALSE(rad::is_engine_only_key("/INTERR/TYPE7/2"));
+    auto typo = check(deck("/FUNCTT/17\nh7\n                 0.0                 1.0\n"));
+    CHECK(unknown_errors(typo) == 1);
+    const diag::Diagnostic* t = find_code(typo.diagnostics, "DK001");
+    REQUIRE(t);
+    CHECK(t->message.find("did you mean /FUNCT?") != std::string::npos);
+    // What a mistyped header leaves undefined says so where it is missed: the part's REF003 names /PORP/SPH.
+    auto part = check(deck("/PART/2\nwater\n" + i10("2") + i10("3") + "\n/PORP/SPH/2\nwater particles\n" +
+                           "              8.0E-6\n/MAT/LAW6/3\nwater\n              1.0E-6\n"));
+    const diag::Diagnostic* missing = find_code(part.diagnostics, "REF003");
+    REQUIRE(missing);
+    bool noted = false;
+    for (const auto& n : missing->notes) noted |= n.message.find("unknown keyword /PORP/SPH") != std::string::npos;
+    CHECK(noted);
 }
 
 TEST_CASE("radioss generated: cards of a keyword without a hand-written table are typed and cut by their format") {

@@ -196,9 +196,27 @@ bool is_engine_only_key(std::string_view header) {
         out.erase(std::unique(out.begin(), out.end()), out.end());
         return out;
     }();
+    // The engine keywords' first segments in full (the engine itself compares five characters).
+    static const std::vector<std::string> engine_firsts = [] {
+        std::vector<std::string> out;
+        for (const generated::LayoutEntry& k : generated::layouts())
+            if (generated::is_engine_entry(k)) out.push_back(std::string(path_segments(k.name).front()));
+        for (const KeywordSpec& k : all_keywords())
+            if (k.engine) out.push_back(std::string(path_segments(k.name).front()));
+        std::sort(out.begin(), out.end());
+        out.erase(std::unique(out.begin(), out.end()), out.end());
+        return out;
+    }();
     const auto segments = path_segments(header);
-    return !segments.empty() &&
-           !std::binary_search(starter_firsts.begin(), starter_firsts.end(), std::string(segments.front()));
+    if (segments.empty()) return false;
+    const std::string first(segments.front());
+    if (std::binary_search(starter_firsts.begin(), starter_firsts.end(), first)) return false;
+    if (std::binary_search(engine_firsts.begin(), engine_firsts.end(), first)) return true;
+    // No engine keyword has this first segment in full, and its five characters begin a starter keyword's
+    // (/FUNCTT, /INTERR): a starter keyword mistyped, not an engine one out of place.
+    const std::string_view key = std::string_view(first).substr(0, 5);
+    return std::none_of(starter_firsts.begin(), starter_firsts.end(),
+                        [&](const std::string& s) { return std::string_view(s).substr(0, 5) == key; });
 }
 
 bool is_engine_key(std::string_view header) {

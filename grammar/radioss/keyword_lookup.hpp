@@ -38,7 +38,9 @@ const KeywordSpec* find_generated(std::string_view header, std::size_t* prefix_s
 // keywords (/RUN, /ANIM, /TFILE, /DT, /PARITH ...); it stops on any other.
 bool is_engine_key(std::string_view header);
 // An engine key whose first segment no starter keyword has (/ANIM, /RUN, /TFILE; not /INTER or
-// /TH, which both decks have): a header the starter does not know is then an engine one.
+// /TH, which both decks have): a header the starter does not know is then an engine one. Not a first
+// segment no engine keyword has in full whose five characters begin a starter keyword's (/FUNCTT: a typo
+// of /FUNCT, which the engine's five-character key would also take).
 bool is_engine_only_key(std::string_view header);
 
 // The segments the generated names put after `family` ("/GRSH3N" -> BOX, PART, SHELL...), sorted;

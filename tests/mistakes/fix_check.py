@@ -11,7 +11,7 @@ the author's values; bulk node and particle values are counted, not compared).
     tests/mistakes/fix_check.py --sphdeck build/sphdeck --verbose    # and every plant left unfixed
 
 The safe-fix kinds' plants that carry a fix must be mended at --min-rate (default 100%); the unsafe-fix
-kinds (keyword and parameter typos, a stray *END, a missing *PART heading, a lost keyword asterisk, a blank
+kinds (keyword, OpenRadioss header and parameter typos, a stray *END, a missing *PART heading, a lost keyword asterisk, a blank
 line typed between cards; fixed with --unsafe-fixes) are reported only.
 """
 import argparse
@@ -34,7 +34,7 @@ import run_mistakes as rm  # noqa: E402
 
 SAFE_FIX_KINDS = ["shift-right-1", "shift-right-3", "shift-left-2", "width-8", "radioss-straddle", "radioss-shift",
                   "digit-shift"]
-UNSAFE_FIX_KINDS = ["keyword-typo", "parameter-typo", "stray-end", "missing-heading", "lost-asterisk", "blank-line"]
+UNSAFE_FIX_KINDS = ["keyword-typo", "radioss-header-typo", "parameter-typo", "stray-end", "missing-heading", "lost-asterisk", "blank-line"]
 
 
 def fix_mutant(sphdeck, path, include, unsafe):
@@ -137,11 +137,7 @@ def main():
     have_corpus = not args.no_corpus and os.path.isdir(corpus)
     if have_corpus:
         hosts += rm.corpus_hosts(corpus)
-    known = set()
-    listing, _ = dk.run_sphdeck_text(sphdeck, ["keyword", "--list", "--solver", "lsdyna"])
-    for line in listing.splitlines():
-        if line.startswith("*"):
-            known.add(line.split()[0].upper())
+    known = rm.known_keywords(sphdeck)
     scratch = tempfile.mkdtemp(prefix="sphdeck-fix-check-")
     try:
         with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:

@@ -114,6 +114,41 @@ def keyword_typo(host, rng):
             break
 
 
+def radioss_header_typo(host, rng):
+    """OpenRadioss: a transposed, dropped or doubled letter in the first word of a header (`/SPHCEL` ->
+    `/SPHCLE`, `/PROP/SPH/2` -> `/PORP/SPH/2`); never a first word of a header the starter knows."""
+    if host.deck.fmt != "radioss":
+        return
+    heads = {k.split("/")[1] for k in host.known_keywords if k.startswith("/") and k.count("/") >= 1}
+    blocks = [b for b in host.deck.blocks if b.name not in ("/BEGIN", "/END")]
+    rng.shuffle(blocks)
+    for b in blocks:
+        text = host.deck.lines[b.line - 1]
+        if not text.startswith("/"):
+            continue
+        parts = text[1:].split("/")[0].split()
+        word = parts[0] if parts else ""  # none for //SUBMODEL
+        letters = [i for i in range(len(word)) if word[i].isalpha()]
+        if len(letters) < 3 or not heads:
+            continue
+        for _ in range(6):
+            op = rng.choice(("swap", "drop", "double"))
+            i = rng.choice(letters)
+            if op == "swap":
+                if i + 1 >= len(word) or not word[i + 1].isalpha() or word[i] == word[i + 1]:
+                    continue
+                new = word[:i] + word[i + 1] + word[i] + word[i + 2:]
+            elif op == "drop":
+                new = word[:i] + word[i + 1:]
+            else:
+                new = word[:i] + word[i] + word[i:]
+            if new.upper() in heads:
+                continue
+            yield Plant("radioss-header-typo", replaced(host.deck.lines, b.line, "/" + new + text[1 + len(word):]),
+                        [b.line], f"/{word} -> /{new}")
+            break
+
+
 def _shift(host, rng, kind, by):
     """A data line shifted `by` columns (right > 0, left < 0: leading blanks removed)."""
     if host.deck.fmt != "dyna":
@@ -627,10 +662,10 @@ def digit_shift(host, rng):
         yield Plant("digit-shift", replaced(host.deck.lines, n, " " + text), [n], f"{b.name} line {n}", "dump")
 
 
-KINDS = [keyword_typo, shift_right_1, shift_right_3, shift_left_2, width_8, letter_o, decimal_comma,
+KINDS = [keyword_typo, radioss_header_typo, shift_right_1, shift_right_3, shift_left_2, width_8, letter_o, decimal_comma,
          missing_id, zero_density, no_control_sph, parameter_typo, radioss_straddle, radioss_shift,
          duplicated_block, tab_in_line, stray_end, missing_heading, lost_asterisk, off_plane, digit_shift, blank_line]
-KIND_NAMES = ["keyword-typo", "shift-right-1", "shift-right-3", "shift-left-2", "width-8", "letter-O",
+KIND_NAMES = ["keyword-typo", "radioss-header-typo", "shift-right-1", "shift-right-3", "shift-left-2", "width-8", "letter-O",
               "decimal-comma", "missing-id", "zero-density", "no-control-sph", "parameter-typo",
               "radioss-straddle", "radioss-shift", "duplicated-block", "tab-in-line", "stray-end",
               "missing-heading", "lost-asterisk", "off-plane", "digit-shift", "blank-line"]

@@ -84,6 +84,17 @@ def corpus_hosts(corpus):
     return [Host("corpus", rel, os.path.join(corpus, rel)) for rel in decks]
 
 
+def known_keywords(sphdeck):
+    """The keyword names sphdeck knows: LS-DYNA's (`*...`) and OpenRadioss headers (`/...`) in one set."""
+    known = set()
+    for solver, mark in (("lsdyna", "*"), ("radioss", "/")):
+        listing, _ = dk.run_sphdeck_text(sphdeck, ["keyword", "--list", "--solver", solver])
+        for line in listing.splitlines():
+            if line.startswith(mark):
+                known.add(line.split()[0].upper())
+    return known
+
+
 def prepare(sphdeck, host, scratch, index, known):
     host.work = os.path.join(scratch, f"h{index}")
     os.makedirs(host.work)
@@ -219,11 +230,7 @@ def main():
         print(f"seeded mistakes: no corpus at {corpus}: shipped decks only", file=sys.stderr)
     if have_corpus:
         hosts += corpus_hosts(corpus)
-    known = set()
-    listing, _ = dk.run_sphdeck_text(sphdeck, ["keyword", "--list", "--solver", "lsdyna"])
-    for line in listing.splitlines():
-        if line.startswith("*"):
-            known.add(line.split()[0].upper())
+    known = known_keywords(sphdeck)
 
     scratch = tempfile.mkdtemp(prefix="sphdeck-mistakes-")
     try:
