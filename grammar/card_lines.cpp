@@ -111,6 +111,28 @@ void CardLines::push_back(const CardLine& line) {
     }
 }
 
+void CardLines::push_back_lines(FileId file, std::uint32_t first_line, const std::uint32_t* starts, std::size_t count) {
+    std::size_t i = 0;
+    while (i < count) {
+        CardLinesBody& b = own();
+        if (!b.runs.empty() && b.runs.back().first + b.runs.back().count == b.size) {  // the last line is a run's
+            CardLinesBody::Run& r = b.runs.back();
+            // The line numbers run on by construction: the offsets decide how far the run goes on.
+            if (file == r.origin.file && first_line + i == r.origin.line + r.count) {
+                std::uint32_t next = r.origin.offset + r.count * r.stride;
+                std::size_t k = i;
+                for (; k < count && starts[k] == next; ++k) next += r.stride;
+                r.count += static_cast<std::uint32_t>(k - i);
+                b.size += k - i;
+                i = k;
+                if (i == count) return;
+            }
+        }
+        push_back(CardLine{file, first_line + static_cast<std::uint32_t>(i), starts[i]});
+        ++i;
+    }
+}
+
 void CardLines::pop_back() {
     CardLinesBody& b = own();
     if (!b.runs.empty() && b.runs.back().first + b.runs.back().count == b.size) {

@@ -154,6 +154,9 @@ public:
     CardLinePtr at(std::size_t i) const { return CardLinePtr(*this, static_cast<std::uint32_t>(i)); }
 
     void push_back(const CardLine& line);
+    // `count` lines of `file` on consecutive line numbers from `first_line`, starting at `starts`: the lines
+    // push_back would keep, a run extended in one step (a reader's run of data lines, a bulk block's).
+    void push_back_lines(FileId file, std::uint32_t first_line, const std::uint32_t* starts, std::size_t count);
     void pop_back();
     // Room for `n` lines in all (stored ones: a run needs none).
     void reserve(std::size_t n);

@@ -107,6 +107,30 @@ TEST_CASE("card lines: random mixes read back alike by index, walks, jumps and l
     }
 }
 
+TEST_CASE("card lines: lines pushed in runs of consecutive lines keep what one by one keeps") {
+    std::mt19937 rng(41);
+    for (int round = 0; round < 40; ++round) {
+        const std::vector<CardLine> want = mixed_lines(rng, 100 + rng() % 4000);
+        CardLines one_by_one, in_runs;
+        for (const CardLine& l : want) one_by_one.push_back(l);
+        // As a reader hands them: stretches of one file on consecutive line numbers, cut at random too.
+        for (std::size_t i = 0; i < want.size();) {
+            std::size_t end = i + 1;
+            const std::size_t most = i + 1 + rng() % 300;
+            while (end < want.size() && end < most && want[end].file == want[i].file &&
+                   want[end].line == want[end - 1].line + 1)
+                ++end;
+            std::vector<std::uint32_t> starts;
+            for (std::size_t k = i; k < end; ++k) starts.push_back(want[k].offset);
+            in_runs.push_back_lines(want[i].file, want[i].line, starts.data(), starts.size());
+            i = end;
+        }
+        check_all(in_runs, want);
+        CHECK(in_runs.runs() == one_by_one.runs());
+        CHECK(in_runs.stored_lines() == one_by_one.stored_lines());
+    }
+}
+
 TEST_CASE("card lines: append moves lines (runs stay runs), pop_back, moves and copies") {
     std::mt19937 rng(7);
     const std::vector<CardLine> want = mixed_lines(rng, 5000);

@@ -21,7 +21,8 @@ void DeckReader::data_lines(const std::uint32_t* starts, std::size_t count, cons
         for (std::size_t i = 0; i < count; ++i) grammar_line(f.base + starts[i], text_end);
         return;
     }
-    for (std::size_t i = 0; i < count; ++i) deck_.lines.push_back(CardLine{f.id, ++f.line, starts[i]});
+    deck_.lines.push_back_lines(f.id, f.line + 1, starts, count);
+    f.line += static_cast<std::uint32_t>(count);
     deck_.blocks[*f.block].line_count += static_cast<std::uint32_t>(count);
     deck_.stats.cards += count;
 }
