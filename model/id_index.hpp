@@ -18,7 +18,7 @@ public:
 
     // Position of `id` in the indexed array (the first one when duplicated). Inline: the rules ask it once
     // a particle (a call each showed in profiles).
-    std::optional<std::size_t> find(long long id) const {
+    [[gnu::always_inline]] std::optional<std::size_t> find(long long id) const {
         if (arithmetic_) return find_in_sequence(id);
         if (!dense_.empty()) {
             if (id < min_) return std::nullopt;
@@ -35,7 +35,7 @@ public:
 private:
     template <typename Ids>
     void build(const Ids& ids);
-    std::optional<std::size_t> find_in_sequence(long long id) const {
+    [[gnu::always_inline]] std::optional<std::size_t> find_in_sequence(long long id) const {
         // In unsigned magnitudes: offset and step have the same sign for an id of the column.
         long long offset = 0;
         if (__builtin_sub_overflow(id, min_, &offset) || (offset != 0 && (offset < 0) != (step_ < 0)))
