@@ -212,9 +212,9 @@ diag::Diagnostic glued_pair_finding(const grammar::CardLine& line, std::string_v
     if (room) {
         const std::size_t edit_begin = right ? from : s.begin;
         const std::size_t edit_end = right ? s.end : std::min(s.end + off, text.size());
-        const std::string replacement = right ? std::string(pair) + std::string(s.end < text.size() ? off : 0,
-                                                                                ' ')  // no blanks left at a line's end
-                                              : std::string(off, ' ') + std::string(pair);
+        const std::size_t pad = s.end < text.size() ? off : 0;  // no blanks left at a line's end
+        const std::string replacement =
+            right ? std::string(pair) + std::string(pad, ' ') : std::string(off, ' ') + std::string(pair);
         d.fixes.push_back({fmt::format("move '{}' and '{}' {} column{} {}, to fill {} and {}", first, second, off,
                                        off == 1 ? "" : "s", right ? "left" : "right", here.name, next.name),
                            true,
