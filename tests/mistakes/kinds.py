@@ -83,6 +83,25 @@ def put_right_aligned(text, s, e, new):
 
 # ----------------------------------------------------------------------------------------------- kinds
 
+def _misspelt(word, limit, letters, rng, known):
+    """`word` with a letter at one of `letters` transposed (within the first `limit` characters), dropped or
+    doubled; None when six tries give only names `known` accepts."""
+    for _ in range(6):
+        op = rng.choice(("swap", "drop", "double"))
+        i = rng.choice(letters)
+        if op == "swap":
+            if i + 1 >= limit or not word[i + 1].isalpha() or word[i] == word[i + 1]:
+                continue
+            new = word[:i] + word[i + 1] + word[i] + word[i + 2:]
+        elif op == "drop":
+            new = word[:i] + word[i + 1:]
+        else:
+            new = word[:i] + word[i] + word[i:]
+        if not known(new):
+            return new
+    return None
+
+
 def keyword_typo(host, rng):
     """*CONTROL_SPH -> *CONTROL_SHP: a transposed, dropped or doubled letter in a keyword's name."""
     if host.deck.fmt != "dyna":
@@ -96,22 +115,10 @@ def keyword_typo(host, rng):
         letters = [i for i in range(1, len(core)) if core[i].isalpha()]
         if len(letters) < 3:
             continue
-        for _ in range(6):
-            op = rng.choice(("swap", "drop", "double"))
-            i = rng.choice(letters)
-            if op == "swap":
-                if i + 1 >= len(core) or not core[i + 1].isalpha() or core[i] == core[i + 1]:
-                    continue
-                new = word[:i] + word[i + 1] + word[i] + word[i + 2:]
-            elif op == "drop":
-                new = word[:i] + word[i + 1:]
-            else:
-                new = word[:i] + word[i] + word[i:]
-            if new.upper().rstrip("+-%") in host.known_keywords:
-                continue
+        new = _misspelt(word, len(core), letters, rng, lambda w: w.upper().rstrip("+-%") in host.known_keywords)
+        if new:
             yield Plant("keyword-typo", replaced(host.deck.lines, b.line, new + text[len(word):]),
                         [b.line], f"{word} -> {new}")
-            break
 
 
 def radioss_header_typo(host, rng):
@@ -131,22 +138,10 @@ def radioss_header_typo(host, rng):
         letters = [i for i in range(len(word)) if word[i].isalpha()]
         if len(letters) < 3 or not heads:
             continue
-        for _ in range(6):
-            op = rng.choice(("swap", "drop", "double"))
-            i = rng.choice(letters)
-            if op == "swap":
-                if i + 1 >= len(word) or not word[i + 1].isalpha() or word[i] == word[i + 1]:
-                    continue
-                new = word[:i] + word[i + 1] + word[i] + word[i + 2:]
-            elif op == "drop":
-                new = word[:i] + word[i + 1:]
-            else:
-                new = word[:i] + word[i] + word[i:]
-            if new.upper() in heads:
-                continue
+        new = _misspelt(word, len(word), letters, rng, lambda w: w.upper() in heads)
+        if new:
             yield Plant("radioss-header-typo", replaced(host.deck.lines, b.line, "/" + new + text[1 + len(word):]),
                         [b.line], f"/{word} -> /{new}")
-            break
 
 
 def _shift(host, rng, kind, by):
