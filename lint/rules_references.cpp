@@ -10,6 +10,7 @@
 #include <set>
 #include <unordered_map>
 
+#include "lint/letter_o_ids.hpp"
 #include "lint/particle_groups.hpp"
 #include "lint/rules.hpp"
 #include "lint/rules_references_links.hpp"
@@ -66,6 +67,17 @@ void report_undefined_parts(RuleContext& c, const PartGroups& missing, bool part
     if (!missing.flood()) {
         for (const auto& [id, g] : missing.by_part) {
             std::string count = g.count > 1 ? fmt::format(" ({} particles)", g.count) : "";
+            // A *PART whose PID holds the letter O for a 0 ("1O" for 10): the mistake is there.
+            if (const model::Part* typed = letter_o_definition(c.model.parts, std::to_string(id))) {
+                auto& d = c.report("REF002", typed->span,
+                                   fmt::format("part id {} holds the letter O for the digit 0: LS-DYNA reads the label "
+                                               "{}, so particle part {} is not defined{}",
+                                               typed->id, typed->id, id, count));
+                d.notes.push_back({c.particle_span(g.first.front()),
+                                   fmt::format("particle {} names part {} here", p.node[g.first.front()], id)});
+                if (auto fix = letter_o_fix(letter_o_digits(typed->id), typed->span)) d.fixes.push_back(*fix);
+                continue;
+            }
             auto& d = c.report("REF002", c.particle_span(g.first.front()),
                                fmt::format("particle part {} is not defined{}", id, count));
             if (!hint.empty() && id == missing.by_part.begin()->first) d.notes.push_back({{}, hint});
@@ -248,8 +260,9 @@ std::string missing_in_case(const RuleContext& c, const model::Part& part, std::
 struct Naming {
     const model::Part* part;
     grammar::Span place;
-    std::string message;           // as the finding would read at this part
-    std::optional<diag::Fix> fix;  // at this part
+    std::string message;                                   // as the finding would read at this part
+    std::optional<diag::Fix> fix;                          // at this part
+    std::optional<grammar::Span> named_at = std::nullopt;  // the part's field, when `place` is a definition's
 };
 
 class MissingIds {
@@ -262,6 +275,13 @@ public:
         auto [it, fresh] = index_.try_emplace({std::string(code) + "/" + std::string(field), id}, missing_.size());
         if (fresh) missing_.push_back({std::string(code), id, {}, severity, std::move(note)});
         missing_[it->second].namings.push_back({&part, place, std::move(message), std::move(fix)});
+    }
+
+    // The finding placed at a definition whose id holds the letter O (`definition`), the part's field a note.
+    void add_at_definition(std::string_view code, const Id& id, const model::Part& part, grammar::Span named_at,
+                           grammar::Span definition, std::string message, std::optional<diag::Fix> fix) {
+        add(code, id, part, definition, std::move(message), {}, std::nullopt, {}, std::move(fix));
+        missing_[index_.at({std::string(code) + "/", id})].namings.back().named_at = named_at;
     }
 
     void report(RuleContext& c) {
@@ -284,9 +304,12 @@ public:
                                              : c.report(m.code, n.front().place, std::move(message));
             if (!m.note.empty()) d.notes.push_back({{}, m.note});
             if (n.front().fix) d.fixes.push_back(*n.front().fix);
+            if (n.front().named_at)
+                d.notes.push_back({*n.front().named_at, fmt::format("part {} names it here", n.front().part->id)});
             for (std::size_t k = 1; k < n.size() && k <= listed_notes; ++k)
                 d.notes.push_back(
-                    {n[k].place, fmt::format("part {} {} too", n[k].part->id, m.id == "0" ? "has none" : "names it")});
+                    {n[k].named_at.value_or(n[k].place),
+                     fmt::format("part {} {} too", n[k].part->id, m.id == "0" ? "has none" : "names it")});
         }
     }
 
@@ -307,29 +330,6 @@ private:
 // structural thermal analysis is being performed", *PART): an error there. A structural analysis does not read
 // it, so the manual gives no failure: a warning, since a TMID that names nothing was meant to be 0 (the letter
 // O typed for the digit reads as a label).
-// The digits an id with the letter O typed for the digit 0 was meant to be ("O" -> "0", "1O" -> "10"); nullopt
-// when it has no O or other letters too.
-std::optional<std::string> letter_o_digits(const std::string& value) {
-    std::string digits = value;
-    bool letter_o = false;
-    for (char& ch : digits)
-        if (ch == 'O' || ch == 'o') ch = '0', letter_o = true;
-    if (!letter_o || !std::all_of(digits.begin(), digits.end(), [](char ch) { return ch >= '0' && ch <= '9'; }))
-        return std::nullopt;
-    return digits;
-}
-
-std::optional<diag::Fix> letter_o_fix(const std::optional<std::string>& digits, grammar::Span place) {
-    if (!digits) return std::nullopt;
-    return diag::Fix{fmt::format("write the digits {} (the letter O read as a label)", *digits),
-                     false,
-                     {{place, *digits}}};
-}
-
-std::string letter_o_words(const std::optional<std::string>& digits) {
-    return digits ? fmt::format(" (the letter O for the digit 0: {} meant?)", *digits) : "";
-}
-
 void check_thermal_material(const RuleContext& c, const model::Part& part, const ThermalMaterialIds& thermal,
                             MissingIds& missing) {
     const auto& t = part.thermal_material;
@@ -372,6 +372,24 @@ void check_hourglass(const RuleContext& c, const model::Part& part, std::optiona
                 "HGID", std::nullopt, {}, letter_o_fix(digits, h.span));
 }
 
+// A part names `named`, which no definition holds, but `definitions` hold it with the letter O typed for a 0
+// ("1O" for 10): the mistake is the definition's. Its finding is placed there (the part's field a note), the
+// digits an unsafe fix, and the definition counts as used (no REF007). False when there is none.
+template <typename Definition>
+bool blame_letter_o_definition(const std::vector<Definition>& definitions, std::string_view code,
+                               const model::Part& part, const model::Setting<Id>& named, std::string_view what,
+                               std::string_view keyword, MissingIds& missing, std::set<Id>& used) {
+    const Definition* d = letter_o_definition(definitions, named.value);
+    if (!d) return false;
+    missing.add_at_definition(code, named.value, part, named.span, d->span,
+                              fmt::format("{} id {} holds the letter O for the digit 0: LS-DYNA reads the label {}, "
+                                          "so part {} names {} {}, which no {} defines",
+                                          what, d->id, d->id, part.id, what, named.value, keyword),
+                              letter_o_fix(letter_o_digits(d->id), d->span));
+    used.insert(d->id);
+    return true;
+}
+
 void check_part_references(RuleContext& c, std::set<Id>& used_sections, std::set<Id>& used_materials,
                            std::set<Id>& used_eos) {
     MissingIds missing;
@@ -379,22 +397,28 @@ void check_part_references(RuleContext& c, std::set<Id>& used_sections, std::set
     std::optional<DefinedIds> hourglasses;
     for (const model::Part& part : c.model.parts) {
         const auto& s = part.section;
-        if (s.explicit_value && !c.model.section(s.value))
-            missing.add("REF003", s.value, part, s.span,
-                        missing_reference(part, words(c).section_field, "section", s.value, words(c).section));
-        else if (s.explicit_value && !c.definitions().section_of(part))
+        if (s.explicit_value && !c.model.section(s.value)) {
+            if (!blame_letter_o_definition(c.model.sections, "REF003", part, s, "section", words(c).section, missing,
+                                           used_sections))
+                missing.add("REF003", s.value, part, s.span,
+                            missing_reference(part, words(c).section_field, "section", s.value, words(c).section));
+        } else if (s.explicit_value && !c.definitions().section_of(part))
             missing.add("REF003", s.value, part, s.span, missing_in_case(c, part, "section", s.value), "case");
         used_sections.insert(s.value);
         const auto& m = part.material;
         if (m.explicit_value && !c.model.material(m.value) &&
-            !(m.value == "0" && needs_no_structural_material(c, part)))
-            missing.add("REF004", m.value, part, m.span,
-                        missing_reference(part, words(c).material_field, "material", m.value, words(c).material));
-        else if (m.explicit_value && c.model.material(m.value) && !c.definitions().material_of(part))
+            !(m.value == "0" && needs_no_structural_material(c, part))) {
+            if (!blame_letter_o_definition(c.model.materials, "REF004", part, m, "material", words(c).material, missing,
+                                           used_materials))
+                missing.add("REF004", m.value, part, m.span,
+                            missing_reference(part, words(c).material_field, "material", m.value, words(c).material));
+        } else if (m.explicit_value && c.model.material(m.value) && !c.definitions().material_of(part))
             missing.add("REF004", m.value, part, m.span, missing_in_case(c, part, "material", m.value), "case");
         used_materials.insert(m.value);
         const auto& e = part.eos;
-        if (!e.value.empty() && !c.model.eos(e.value))
+        if (!e.value.empty() && !c.model.eos(e.value) &&
+            !blame_letter_o_definition(c.model.equations_of_state, "REF005", part, e, "EOS", words(c).eos, missing,
+                                       used_eos))
             missing.add("REF005", e.value, part, e.span,
                         fmt::format("part {} names EOS {}, which no {} defines", part.id, e.value, words(c).eos));
         used_eos.insert(e.value);
