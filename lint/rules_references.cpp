@@ -269,19 +269,18 @@ class MissingIds {
 public:
     // `field` keeps apart the ids of one code that name different things (MID 5 and TMID 5); `severity`, when
     // given, is the finding's instead of the rule's.
-    void add(std::string_view code, const Id& id, const model::Part& part, grammar::Span place, std::string message,
-             std::string_view field = {}, std::optional<diag::Severity> severity = std::nullopt, std::string note = {},
-             std::optional<diag::Fix> fix = std::nullopt) {
+    Naming& add(std::string_view code, const Id& id, const model::Part& part, grammar::Span place, std::string message,
+                std::string_view field = {}, std::optional<diag::Severity> severity = std::nullopt,
+                std::string note = {}, std::optional<diag::Fix> fix = std::nullopt) {
         auto [it, fresh] = index_.try_emplace({std::string(code) + "/" + std::string(field), id}, missing_.size());
         if (fresh) missing_.push_back({std::string(code), id, {}, severity, std::move(note)});
-        missing_[it->second].namings.push_back({&part, place, std::move(message), std::move(fix)});
+        return missing_[it->second].namings.emplace_back(Naming{&part, place, std::move(message), std::move(fix)});
     }
 
     // The finding placed at a definition whose id holds the letter O (`definition`), the part's field a note.
     void add_at_definition(std::string_view code, const Id& id, const model::Part& part, grammar::Span named_at,
                            grammar::Span definition, std::string message, std::optional<diag::Fix> fix) {
-        add(code, id, part, definition, std::move(message), {}, std::nullopt, {}, std::move(fix));
-        missing_[index_.at({std::string(code) + "/", id})].namings.back().named_at = named_at;
+        add(code, id, part, definition, std::move(message), {}, std::nullopt, {}, std::move(fix)).named_at = named_at;
     }
 
     void report(RuleContext& c) {

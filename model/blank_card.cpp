@@ -1,11 +1,10 @@
 #include "model/blank_card.hpp"
 
 #include <algorithm>
-#include <cctype>
-#include <string>
 
 #include <fmt/format.h>
 
+#include "grammar/line_tokens.hpp"
 #include "model/shift_diagnosis.hpp"
 
 namespace sphdeck::model {
@@ -32,37 +31,18 @@ bool read_late(const diag::Diagnostic& d, const grammar::Block& block, const gra
     return reading && (after || keyword_line);
 }
 
-// A word of a `$#` ruler or a field's name, compared as LS-PrePost and pydyna write them: lower case,
-// letters, digits and '_' ("QB (VDC)" is "qb").
-std::string ruler_word(std::string_view w) {
-    std::string out;
-    for (char c : w) {
-        if (c == ' ' || c == '(') break;
-        if (std::isalnum(static_cast<unsigned char>(c)) || c == '_')
-            out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    }
-    return out;
-}
-
 // Whether `header` (a `$#` comment line) names the fields of `card`: two words or more, and at least two
-// thirds of them the card's field names (or their aliases).
+// thirds of them the card's field names or aliases (CardSpec::field: case-insensitive, as rulers write them).
 bool header_names(std::string_view header, const keywords::CardSpec& card) {
     if (header.size() < 2) return false;
-    std::size_t words = 0, named = 0;
-    for (std::size_t i = 2; i < header.size();) {
-        while (i < header.size() && (header[i] == ' ' || header[i] == '\t' || header[i] == ',')) ++i;
-        const std::size_t begin = i;
-        while (i < header.size() && header[i] != ' ' && header[i] != '\t' && header[i] != ',') ++i;
-        if (i == begin) break;
-        const std::string word = ruler_word(header.substr(begin, i - begin));
-        if (word.empty()) continue;
-        ++words;
-        named += std::any_of(card.fields.begin(), card.fields.end(), [&](const keywords::FieldSpec& f) {
-            return ruler_word(f.name) == word || std::any_of(f.aliases.begin(), f.aliases.end(),
-                                                             [&](std::string_view a) { return ruler_word(a) == word; });
-        });
-    }
-    return words >= 2 && 3 * named >= 2 * words;
+    const std::string_view words = header.substr(2);
+    std::size_t count = 0, named = 0;
+    grammar::for_each_token(words, [&](const grammar::LineToken& t) {
+        ++count;
+        named += card.field(words.substr(t.begin, t.end - t.begin)) != nullptr;
+        return true;
+    });
+    return count >= 2 && 3 * named >= 2 * count;
 }
 
 }  // namespace

@@ -33,6 +33,12 @@ struct Straddle {
     std::size_t split = 0;                         // a glued pair's second value starts here (0: the run is one number)
 };
 
+// The text of columns [from, to) of `text`, blanks trimmed (empty past its end): what the starter reads there.
+std::string_view cell_text(std::string_view text, std::size_t from, std::size_t to) {
+    return grammar::trim_blanks(from < text.size() ? text.substr(from, std::min(to, text.size()) - from)
+                                                   : std::string_view{});
+}
+
 // Machine-written decks glue a value to the next when that one fills its cell ("0.01.00000000000000E+31":
 // '0.0' ends cell i, the 20-character real fills cell i + 1). Such a run moved a few columns reads as no
 // number across the boundary, and the starter cuts both values. The run is a glued pair when its last
@@ -59,11 +65,6 @@ std::optional<Straddle> glued_pair(std::string_view text, const grammar::radioss
         split > b ? std::string(text.substr(0, s - off)) + pair + std::string(off, ' ') + std::string(text.substr(e))
                   : std::string(text.substr(0, s)) + std::string(off, ' ') + pair +
                         std::string(text.substr(std::min(e + off, text.size())));
-    const auto cell_text = [&](std::string_view line_text, std::size_t k) {
-        const std::size_t from = positions[k].start;
-        return grammar::trim_blanks(from < line_text.size() ? line_text.substr(from, positions[k].width)
-                                                            : std::string_view{});
-    };
     const auto number_of = [](std::string_view cell) -> std::optional<double> {  // a blank cell reads 0
         if (cell.empty()) return 0.0;
         const grammar::RealValue v = grammar::parse_real(cell);
@@ -71,7 +72,8 @@ std::optional<Straddle> glued_pair(std::string_view text, const grammar::radioss
     };
     bool same = true;
     for (std::size_t k = i; k < std::min(i + 3, positions.size()) && same; ++k) {
-        const std::string_view now = cell_text(text, k), then = cell_text(meant, k);
+        const std::size_t from = positions[k].start, to = from + positions[k].width;
+        const std::string_view now = cell_text(text, from, to), then = cell_text(meant, from, to);
         const std::optional<double> a = number_of(now), z = number_of(then);
         same = now == then || (a && z && *a == *z);
     }
@@ -178,16 +180,12 @@ diag::Diagnostic glued_pair_finding(const grammar::CardLine& line, std::string_v
     const bool right = s.split > s.boundary;
     const std::size_t off = right ? s.split - s.boundary : s.boundary - s.split;
     const std::size_t next_end = std::size_t{positions[s.cell + 1].start} + positions[s.cell + 1].width;
-    const auto cell_text = [&](std::size_t from, std::size_t to) {
-        return grammar::trim_blanks(from < text.size() ? text.substr(from, std::min(to, text.size()) - from)
-                                                       : std::string_view{});
-    };
     std::string message = fmt::format(
         "'{}' and '{}' are written glued {} column{} {} of the end of cell {} ({}): the starter reads {} as '{}' and "
         "{} as '{}'",
         first, second, off, off == 1 ? "" : "s", right ? "right" : "left", here.name,
-        straddle_cell_columns(positions[s.cell]), here.name, cell_text(positions[s.cell].start, s.boundary), next.name,
-        cell_text(s.boundary, next_end));
+        straddle_cell_columns(positions[s.cell]), here.name, cell_text(text, positions[s.cell].start, s.boundary),
+        next.name, cell_text(text, s.boundary, next_end));
     if (right) {
         const std::string_view lost = text.substr(next_end, s.end - next_end);
         if (s.cell + 2 >= card.fields.size() || s.cell + 2 >= positions.size())
