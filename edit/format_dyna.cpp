@@ -9,6 +9,7 @@
 #include "grammar/keywords/schema.hpp"
 #include "grammar/line_scan.hpp"
 #include "model/card_decoder.hpp"
+#include "model/missing_card.hpp"
 
 namespace sphdeck::edit::detail {
 namespace {
@@ -224,9 +225,15 @@ void format_dyna_block(const FormatScope& scope, const grammar::Block& block, Dy
             return;
         }
         const std::string_view text = deck.text(*l);
+        if (scope.findings_needed && card->repeat != keywords::CardRepeat::Repeated && !match->schema->generated)
+            if (model::early_card_line(deck, block, l, *card, sequence.cards()))
+                scope.give_up();  // a card cut (DK035)?
         if (scope.formats(l->file)) {
             const CardLineState state = format_card_line(scope, *l, text, c.cells(), c.free_allowed, buffer, out);
-            if (scope.options.headers && card != previous && (state == CardLineState::Fixed))
+            // A line with a finding keeps its ruler: it may be the finding's evidence (DK035: the ruler names the
+            // card the line was typed as, not the one it is read as).
+            if (scope.options.headers && card != previous && state == CardLineState::Fixed &&
+                !(!scope.findings_needed && scope.doubt(l->file, l->line)))
                 header_above(scope, *l, text, c.header, out);
         }
         previous = card;

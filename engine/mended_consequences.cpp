@@ -14,10 +14,11 @@ namespace {
 
 // A cause whose mend is a judgement (unsafe fix) yet whose consequences the deck shows the same way: a
 // stray *END (DK017 warning: the blocks after it are read once it is gone), a *PART heading line
-// missing (DK032), a keyword line that lost its '*' (DK033), a blank line read as a card (DK034).
+// missing (DK032), a keyword line that lost its '*' (DK033), a blank line read as a card (DK034), a card cut
+// above a line (DK035).
 bool judged_cause(const diag::Diagnostic& d) {
     return (d.code == "DK017" && d.severity == diag::Severity::Warning) || d.code == "DK032" || d.code == "DK033" ||
-           d.code == "DK034";
+           d.code == "DK034" || d.code == "DK035";
 }
 
 bool is_cause(const diag::Diagnostic& d) {
@@ -27,11 +28,43 @@ bool is_cause(const diag::Diagnostic& d) {
 }
 
 bool is_cause_code(const std::string& code) {
-    return code == "DK029" || code == "DK030" || code == "DK032" || code == "DK033" || code == "DK034";
+    return code == "DK029" || code == "DK030" || code == "DK032" || code == "DK033" || code == "DK034" ||
+           code == "DK035";
 }
 
 using Place = std::tuple<std::string, grammar::FileId, std::uint32_t, std::uint32_t>;
 Place place_of(const diag::Diagnostic& d) { return {d.code, d.span.file, d.span.line, d.span.column}; }
+
+// Where the mended files' lines were in the deck as read: a fix that inserts lines (DK032's blank heading,
+// DK035's cards of defaults) moves every line after them down, and a finding there has not gone, it moved.
+class MendedLines {
+public:
+    explicit MendedLines(const diag::Fix& fix) {
+        for (const diag::TextEdit& e : fix.edits)
+            if (const auto added =
+                    static_cast<std::uint32_t>(std::count(e.replacement.begin(), e.replacement.end(), '\n')))
+                inserted_[e.span.file].push_back({e.span.line, added});
+        for (auto& [file, lines] : inserted_) std::sort(lines.begin(), lines.end());
+    }
+    // The deck's line of line `mended` of `file` after the fix (an inserted line: the line it was inserted on).
+    std::uint32_t original(grammar::FileId file, std::uint32_t mended) const {
+        const auto found = inserted_.find(file);
+        if (found == inserted_.end()) return mended;
+        std::uint32_t moved = 0;
+        for (const auto& [line, added] : found->second) {
+            if (mended < line + moved) break;
+            if (mended <= line + moved + added) return line;
+            moved += added;
+        }
+        return mended - moved;
+    }
+    Place place_of(const diag::Diagnostic& d) const {
+        return {d.code, d.span.file, original(d.span.file, d.span.line), d.span.column};
+    }
+
+private:
+    std::map<grammar::FileId, std::vector<std::pair<std::uint32_t, std::uint32_t>>> inserted_;  // line, lines added
+};
 
 // The deck's files with the cause's fix applied, over the caller's documents.
 grammar::FileOverlay mended_files(const grammar::RawDeck& deck, const diag::Fix& fix,
@@ -47,9 +80,11 @@ grammar::FileOverlay mended_files(const grammar::RawDeck& deck, const diag::Fix&
     return mended;
 }
 
-// The lines a cause stands for: its own line, or (DK030) the lines its fix rewrites.
+// The lines a cause stands for: its own line, or (DK030) the lines its fix rewrites. Not DK035's line: the
+// line is read as the wrong card, so the findings on it are as much its consequences as those after it.
 bool on_cause_lines(const diag::Diagnostic& d, const std::vector<const diag::Diagnostic*>& causes) {
     return std::any_of(causes.begin(), causes.end(), [&](const diag::Diagnostic* c) {
+        if (c->code == "DK035") return false;
         if (c->span.file == d.span.file && c->span.line == d.span.line) return true;
         const auto& edits = c->fixes.front().edits;
         return std::any_of(edits.begin(), edits.end(), [&](const diag::TextEdit& e) {
@@ -82,10 +117,12 @@ void fold_mended_consequences(const grammar::RawDeck& deck, std::vector<diag::Di
         // A finding the re-check folds into a cause of its own line (a shift the mended deck's habit now shows)
         // is not gone: it stays, on that line.
         std::set<std::pair<grammar::FileId, std::uint32_t>> cause_lines;
-        for (const diag::Diagnostic& d :
-             recheck(mended_files(deck, diagnostics[cause_at[k]].fixes.front(), documents))) {
-            after.insert(place_of(d));
-            if (is_cause_code(d.code) || is_cause(d)) cause_lines.insert({d.span.file, d.span.line});
+        const diag::Fix& fix = diagnostics[cause_at[k]].fixes.front();
+        const MendedLines lines(fix);
+        for (const diag::Diagnostic& d : recheck(mended_files(deck, fix, documents))) {
+            after.insert(lines.place_of(d));
+            if (is_cause_code(d.code) || is_cause(d))
+                cause_lines.insert({d.span.file, lines.original(d.span.file, d.span.line)});
         }
         for (std::size_t i : candidates)
             if (folded_into[i] < 0 && after.count(place_of(diagnostics[i])) == 0 &&

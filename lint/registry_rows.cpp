@@ -150,6 +150,11 @@ constexpr RuleInfo kRows[] = {
      "a blank line inside a keyword's cards, read as a card of defaults: the lines after it are read one card late "
      "(an error when that misreads)",
      Fixable::Unsafe},
+    {"DK035", "card-missing-above", Warning, "0.1.0", "schema",
+     {"model/missing_card.cpp", "dk"},
+     "a line whose `$#` ruler names a later card of its keyword than the one it is read as: a card above it was "
+     "cut, so it and the lines after it are read early (an error when that misreads)",
+     Fixable::Unsafe, Layout::Doubtful},
 
     // RAD: OpenRadioss SPH options (/SPHBCS, SOL2SPH, /PROP/SPH, /SPHCEL, /SPHGLO, /DT).
     {"RAD001", "missing-starter-header", Error, "0.1.0", "reader",

@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "grammar/line_tokens.hpp"
+#include "model/card_ruler.hpp"
 #include "model/shift_diagnosis.hpp"
 
 namespace sphdeck::model {
@@ -29,20 +29,6 @@ bool read_late(const diag::Diagnostic& d, const grammar::Block& block, const gra
     const bool after = d.span.file == blank.file && d.span.line >= blank.line;
     const bool keyword_line = d.code == "DK008" && d.span.file == block.span.file && d.span.line == block.span.line;
     return reading && (after || keyword_line);
-}
-
-// Whether `header` (a `$#` comment line) names the fields of `card`: two words or more, and at least two
-// thirds of them the card's field names or aliases (CardSpec::field: case-insensitive, as rulers write them).
-bool header_names(std::string_view header, const keywords::CardSpec& card) {
-    if (header.size() < 2) return false;
-    const std::string_view words = header.substr(2);
-    std::size_t count = 0, named = 0;
-    grammar::for_each_token(words, [&](const grammar::LineToken& t) {
-        ++count;
-        named += card.field(words.substr(t.begin, t.end - t.begin)) != nullptr;
-        return true;
-    });
-    return count >= 2 && 3 * named >= 2 * count;
 }
 
 }  // namespace
@@ -90,7 +76,7 @@ bool diagnose_blank_card(const grammar::RawDeck& deck, const grammar::Block& blo
     };
     if (!cause)
         for (const BlankCardLine& b : blanks)
-            if (!cause && !b.text_card && data_right_after(b) && header_names(header_above(deck, *b.line), *b.card) &&
+            if (!cause && !b.text_card && data_right_after(b) && ruler_names(header_above(deck, *b.line), *b.card) &&
                 reads_without(b.line))
                 cause = &b, proven = true, under_ruler = true;
     if (!cause) return false;

@@ -16,6 +16,7 @@
 #include "model/blank_card.hpp"
 #include "model/case_blocks.hpp"
 #include "model/lost_asterisk.hpp"
+#include "model/missing_card.hpp"
 #include "model/missing_heading.hpp"
 #include "model/particle_ranges.hpp"
 #include "model/shift_diagnosis.hpp"
@@ -89,6 +90,8 @@ public:
         lost_.clear();
         heading_ = {};
         blanks_.clear();
+        early_.reset();
+        const std::size_t walk_from = out_.size();
         CardSequence sequence(match);
         const std::vector<const CardSpec*>& cards = sequence.cards();
         if (bulk_ && bulk_->wants(match) && cards.size() == 1 && cards[0]->repeat == CardRepeat::Repeated &&
@@ -117,6 +120,7 @@ public:
             note_lost_asterisk(*l, card.fields.empty() || card.fields[0].type == FieldType::Text);
             if (!heading_.line && sequence.card_after()) note_missing_heading(block, l, card, *sequence.card_after());
             note_blank_card(block, l, card);
+            if (!early_ && out_.size() == walk_from) note_early_card(block, l, card, match, cards);
             const std::size_t found_before = out_.size();
             decoder_.decode(block, *l, card, values_);
             note_alignment(block, l, card,
@@ -146,6 +150,9 @@ public:
     const HeadingSuspect& heading_suspect() const { return heading_; }
     // The first blank lines the walk read as cards read once, with a data line after them (model/blank_card.hpp).
     const std::vector<BlankCardLine>& blank_cards() const { return blanks_; }
+    // The first line read as a card before the one its `$#` ruler names, when no line above it made a finding
+    // (model/missing_card.hpp).
+    const std::optional<EarlyCardLine>& early_card() const { return early_; }
 
     // Whether the block's lines, `blank` left out, read without a finding: each decoded as the card the walk
     // would give it then (blocks of up to max_replayed_lines; longer ones: no). A parameter's name findings (one
@@ -242,6 +249,15 @@ private:
                 blanks_.push_back({line, &card, text_card});
                 return;
             }
+    }
+
+    // A line read once as `card` whose `$#` ruler names a later card of the keyword (a card cut above it).
+    // Hand-written layouts only: a generated one may hold a card the deck leaves out by a condition pydyna
+    // does not state (*FREQUENCY_DOMAIN_FRF's N11 card), and the ruler would then be right and the layout not.
+    void note_early_card(const grammar::Block& block, grammar::CardLinePtr line, const CardSpec& card,
+                         const keywords::KeywordMatch& match, const std::vector<const CardSpec*>& cards) {
+        if (card.repeat == CardRepeat::Repeated || match.schema->generated) return;
+        early_ = early_card_line(deck_, block, line, card, cards);
     }
 
     // Tallies how the line's numbers sit in their fields, or keeps it as a lone shifted value. `refused`: the
@@ -469,6 +485,7 @@ private:
     std::vector<LostAsteriskLine> lost_;
     HeadingSuspect heading_;
     std::vector<BlankCardLine> blanks_;
+    std::optional<EarlyCardLine> early_;
     grammar::AlignmentTally alignment_;
     std::vector<LoneCandidate> lone_;
     const CardSpec* layout_card_ = nullptr;
@@ -568,6 +585,8 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
             diagnose_blank_card(
                 deck, block, blanks,
                 [&](grammar::CardLinePtr blank) { return walker.reads_without(block, *match, blank); }, out, before);
+        if (const auto& early = walker.early_card(); early && !blank_misread)
+            diagnose_missing_card(deck, block, *early, out, before);
         // A heading after a blank line that misread is the blank line's symptom (the next card read as a heading).
         if (const auto& h = walker.heading_suspect();
             h.line &&

@@ -579,6 +579,11 @@ def lost_asterisk(host, rng):
         yield Plant("lost-asterisk", replaced(host.deck.lines, b.line, text[1:]), [b.line], f"{b.name} -> {text[1:].strip()}")
 
 
+# Keywords whose data lines are repeated lines (nodes, particles, sets, curves), text or the reader's own.
+READ_AS_LINES = ("*NODE", "*ELEMENT", "*SET_", "*DEFINE_CURVE", "*DEFINE_TABLE", "*PARAMETER", "*KEYWORD", "*END",
+                 "*COMMENT", "*TITLE", "*INCLUDE", "*DATABASE_HISTORY", "*INITIAL_")
+
+
 def blank_line(host, rng):
     """A blank line typed between a keyword's cards for spacing (after its keyword line or between two of its
     data lines): LS-DYNA reads it as a card of defaults, and the cards after it one card late. Blocks of repeated
@@ -586,9 +591,7 @@ def blank_line(host, rng):
     read (before an optional card of defaults) is a no-op."""
     if host.deck.fmt != "dyna":
         return
-    repeated = ("*NODE", "*ELEMENT", "*SET_", "*DEFINE_CURVE", "*DEFINE_TABLE", "*PARAMETER", "*KEYWORD",
-                "*END", "*COMMENT", "*TITLE", "*INCLUDE", "*DATABASE_HISTORY", "*INITIAL_")
-    blocks = [b for b in host.deck.blocks if b.data and not b.name.startswith(repeated)]
+    blocks = [b for b in host.deck.blocks if b.data and not b.name.startswith(READ_AS_LINES)]
     rng.shuffle(blocks)
     for b in blocks:
         k = rng.randrange(len(b.data))
@@ -598,6 +601,27 @@ def blank_line(host, rng):
         targets = [n, n + 1] if not host.deck.lines[n - 1].strip() else [n]
         yield Plant("blank-line", lines, targets, f"{b.name} at line {b.line}: blank line above data line {n}", "dump",
                     line_map=lambda m, n=n: m if m < n else m + 1)
+
+
+def deleted_card(host, rng):
+    """A data line deleted from a keyword whose cards are read once (a card selected and cut, its `$#` ruler
+    left standing): the lines after it are read one card early. Not the block's last data line (that leaves
+    a card of defaults, which nothing tells from intent); the blocks of blank_line. The finding belongs on the
+    data line that now stands where the deleted one stood."""
+    if host.deck.fmt != "dyna":
+        return
+    blocks = [b for b in host.deck.blocks if len(b.data) >= 2 and not b.name.startswith(READ_AS_LINES)]
+    rng.shuffle(blocks)
+    for b in blocks:
+        k = rng.randrange(len(b.data) - 1)
+        n, after = b.data[k], b.data[k + 1]
+        if not host.deck.lines[n - 1].strip() or not host.deck.lines[after - 1].strip():
+            continue  # a blank card (an empty heading) deleted, or one left to stand in
+        if b.name.startswith("*PART") and k % 2 == 0:
+            continue  # a *PART heading: the kind missing-heading
+        lines = host.deck.lines[:n - 1] + host.deck.lines[n:]
+        yield Plant("deleted-card", lines, [after - 1], f"{b.name} at line {b.line}: data line {n} deleted", "dump",
+                    line_map=lambda m, n=n: m if m < n else (None if m == n else m - 1))
 
 
 def off_plane(host, rng):
@@ -659,8 +683,10 @@ def digit_shift(host, rng):
 
 KINDS = [keyword_typo, radioss_header_typo, shift_right_1, shift_right_3, shift_left_2, width_8, letter_o, decimal_comma,
          missing_id, zero_density, no_control_sph, parameter_typo, radioss_straddle, radioss_shift,
-         duplicated_block, tab_in_line, stray_end, missing_heading, lost_asterisk, off_plane, digit_shift, blank_line]
+         duplicated_block, tab_in_line, stray_end, missing_heading, lost_asterisk, off_plane, digit_shift, blank_line,
+         deleted_card]
 KIND_NAMES = ["keyword-typo", "radioss-header-typo", "shift-right-1", "shift-right-3", "shift-left-2", "width-8", "letter-O",
               "decimal-comma", "missing-id", "zero-density", "no-control-sph", "parameter-typo",
               "radioss-straddle", "radioss-shift", "duplicated-block", "tab-in-line", "stray-end",
-              "missing-heading", "lost-asterisk", "off-plane", "digit-shift", "blank-line"]
+              "missing-heading", "lost-asterisk", "off-plane", "digit-shift", "blank-line",
+              "deleted-card"]

@@ -206,6 +206,8 @@ def main():
     parser.add_argument("--corpus-hosts", type=int, default=50, help="corpus decks per kind (default 50)")
     parser.add_argument("--jobs", type=int, default=min(4, (os.cpu_count() or 2) * 2))
     parser.add_argument("--verbose", action="store_true", help="list every miss: deck:line and what came instead")
+    parser.add_argument("--show-caught", action="store_true",
+                        help="list every caught plant too, with its new findings (is the cause named?)")
     parser.add_argument("--markdown", action="store_true", help="print the rate table as markdown")
     args = parser.parse_args()
     sphdeck = os.path.abspath(args.sphdeck)
@@ -259,7 +261,7 @@ def main():
 
     names = dict(zip(kn.KINDS, kn.KIND_NAMES))
     table = collections.OrderedDict()
-    misses = []
+    misses, catches = [], []
     for kind in kinds:
         for source in ("shipped", "corpus"):
             table[(names[kind], source)] = [0, 0, 0, 0, 0]  # plants, caught, no-ops, decks, new findings
@@ -271,11 +273,13 @@ def main():
             row[0] += 1
             row[1] += caught
             row[4] += len(described)
+            lines = ",".join(str(t) for t in sorted(plant.targets))
+            shown = ("; ".join(described[:4]) + (f"; ... {len(described) - 4} more" if len(described) > 4 else "")
+                     if described else "nothing new")
             if not caught:
-                lines = ",".join(str(t) for t in sorted(plant.targets))
-                misses.append(f"{names[kind]}: {host.rel}:{lines}: {plant.what}; instead: "
-                              + ("; ".join(described[:4]) + (f"; ... {len(described) - 4} more" if len(described) > 4 else "")
-                                 if described else "nothing new"))
+                misses.append(f"{names[kind]}: {host.rel}:{lines}: {plant.what}; instead: {shown}")
+            else:
+                catches.append(f"{names[kind]}: {host.rel}:{lines}: {plant.what}; found: {shown}")
 
     thresholds = read_thresholds(args.thresholds)
     failures = []
@@ -311,6 +315,9 @@ def main():
     if args.verbose:
         for miss in misses:
             print("MISS " + miss)
+    if args.show_caught:
+        for catch in catches:
+            print("CAUGHT " + catch)
     for failure in failures:
         print("FAIL " + failure)
     print(f"seeded mistakes: {'passed' if not failures else 'failed'}")

@@ -1,0 +1,24 @@
+#include "model/card_ruler.hpp"
+
+#include "grammar/line_tokens.hpp"
+
+namespace sphdeck::model {
+
+RulerWords ruler_words(std::string_view ruler, const keywords::CardSpec& card) {
+    RulerWords words;
+    if (ruler.size() < 2) return words;
+    const std::string_view text = ruler.substr(2);
+    grammar::for_each_token(text, [&](const grammar::LineToken& t) {
+        ++words.count;
+        words.named += card.field(text.substr(t.begin, t.end - t.begin)) != nullptr;
+        return true;
+    });
+    return words;
+}
+
+bool ruler_names(std::string_view ruler, const keywords::CardSpec& card) {
+    const RulerWords words = ruler_words(ruler, card);
+    return words.count >= 2 && 3 * words.named >= 2 * words.count;
+}
+
+}  // namespace sphdeck::model
