@@ -93,13 +93,19 @@ inline bool e8_form(const char* p, const char* end, std::uint64_t& m, int& expon
 // m * 10^exponent when both are exact doubles (Clinger), the sign applied; false otherwise.
 inline bool scale_exact(std::uint64_t m, int exponent, bool negative, double& out) {
     if (m > (std::uint64_t{1} << 53)) return false;
-    double v = static_cast<double>(m);
-    if (m != 0) {
-        if (exponent < -22 || exponent > 22) return false;
-        v = exponent < 0 ? v / exact_powers_of_ten[-exponent] : v * exact_powers_of_ten[exponent];
+    // The sign by its bit, not a branch: the signs of coordinates follow no pattern a predictor learns. It goes
+    // on the power of ten, before the division (m / -p is -(m / p) exactly, 0 / -p is -0): the quotient is then
+    // stored as it comes, where flipping its bit afterwards waited for the division.
+    const std::uint64_t sign = static_cast<std::uint64_t>(negative) << 63;
+    if (m == 0) {
+        out = std::bit_cast<double>(sign);
+        return true;
     }
-    // The sign by its bit, not a branch: the signs of coordinates follow no pattern a predictor learns.
-    out = std::bit_cast<double>(std::bit_cast<std::uint64_t>(v) ^ (static_cast<std::uint64_t>(negative) << 63));
+    if (exponent < -22 || exponent > 22) return false;
+    const double power =
+        std::bit_cast<double>(std::bit_cast<std::uint64_t>(exact_powers_of_ten[exponent < 0 ? -exponent : exponent]) ^ sign);
+    const double v = static_cast<double>(m);
+    out = exponent < 0 ? v / power : v * power;
     return true;
 }
 
