@@ -102,8 +102,8 @@ inline bool scale_exact(std::uint64_t m, int exponent, bool negative, double& ou
         return true;
     }
     if (exponent < -22 || exponent > 22) return false;
-    const double power =
-        std::bit_cast<double>(std::bit_cast<std::uint64_t>(exact_powers_of_ten[exponent < 0 ? -exponent : exponent]) ^ sign);
+    const double power = std::bit_cast<double>(
+        std::bit_cast<std::uint64_t>(exact_powers_of_ten[exponent < 0 ? -exponent : exponent]) ^ sign);
     const double v = static_cast<double>(m);
     out = exponent < 0 ? v / power : v * power;
     return true;

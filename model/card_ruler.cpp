@@ -6,8 +6,8 @@ namespace sphdeck::model {
 
 RulerWords ruler_words(std::string_view ruler, const keywords::CardSpec& card) {
     RulerWords words;
-    if (ruler.size() < 2) return words;
-    const std::string_view text = ruler.substr(2);
+    if (ruler.empty() || ruler[0] != '$') return words;
+    const std::string_view text = ruler.substr(ruler.size() > 1 && ruler[1] == '#' ? 2 : 1);
     grammar::for_each_token(text, [&](const grammar::LineToken& t) {
         ++words.count;
         words.named += card.field(text.substr(t.begin, t.end - t.begin)) != nullptr;

@@ -9,8 +9,9 @@
 
 namespace sphdeck::model {
 
-// How many of the ruler's words (after its `$#`) are there, and how many name a field of `card` (by name or
-// alias, case-insensitive: CardSpec::field).
+// How many of the ruler's words (after its `$#`, or its `$`: older decks and pydyna's tests write rulers as
+// plain comments) are there, and how many name a field of `card` (by name or alias, case-insensitive:
+// CardSpec::field).
 struct RulerWords {
     std::size_t count = 0, named = 0;
 };

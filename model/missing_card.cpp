@@ -40,7 +40,13 @@ bool blank_reads(const keywords::CardSpec& card) {
 std::optional<EarlyCardLine> early_card_line(const grammar::RawDeck& deck, const grammar::Block& block,
                                              grammar::CardLinePtr line, const keywords::CardSpec& read_as,
                                              std::span<const keywords::CardSpec* const> cards) {
-    const std::string_view ruler = header_above(deck, *line);
+    // A heading or title read from the line: decks write the next card's ruler above the title too
+    // (`$      pid       sid       mid` over a *PART's heading), and a title line lost is DK032's.
+    const bool text_card = std::all_of(read_as.fields.begin(), read_as.fields.end(), [](const keywords::FieldSpec& f) {
+        return f.type == keywords::FieldType::Text || f.type == keywords::FieldType::Unused;
+    });
+    if (text_card) return std::nullopt;
+    const std::string_view ruler = header_above(deck, *line, "$");
     const auto found = std::find(cards.begin(), cards.end(), &read_as);
     if (ruler.empty() || found == cards.end() || ruler_names(ruler, read_as)) return std::nullopt;
     const auto index = static_cast<std::size_t>(found - cards.begin());
@@ -57,7 +63,7 @@ std::optional<EarlyCardLine> early_card_line(const grammar::RawDeck& deck, const
     bool own_above = false;
     for (std::uint32_t n = at.line - 1; n >= 1; --n) {
         const std::string_view text = deck.sources.line_text(at.file, n);
-        if (text.substr(0, 2) != "$#") break;
+        if (text.substr(0, 1) != "$") break;
         ++stacked;
         own_above = own_above || ruler_names(text, *cards[index]);
     }
@@ -88,7 +94,7 @@ void diagnose_missing_card(const grammar::RawDeck& deck, const grammar::Block& b
     diag::Diagnostic d{
         "DK035",
         diag::Severity::Warning,
-        fmt::format("{}'s {} seems missing above this line: the `$#` comment above it names the fields of {}, "
+        fmt::format("{}'s {} seems missing above this line: the ruler above it names the fields of {}, "
                     "but LS-DYNA reads a keyword's cards in order, so this line is read as {} ({}) and the lines "
                     "after it {} card{} early",
                     block.keyword, missing, named, read_as, field_names(*early.missing.front()), count,
@@ -100,7 +106,7 @@ void diagnose_missing_card(const grammar::RawDeck& deck, const grammar::Block& b
     const std::uint32_t ruler_line = line.line - 1;
     if (std::all_of(early.missing.begin(), early.missing.end(),
                     [](const keywords::CardSpec* c) { return blank_reads(*c); }))
-        d.fixes.push_back({fmt::format("insert {} blank line{} (a card of defaults each) above the `$#` comment, "
+        d.fixes.push_back({fmt::format("insert {} blank line{} (a card of defaults each) above the ruler, "
                                        "for {}; then give {} the values it had",
                                        count, count == 1 ? "" : "s", missing, count == 1 ? "it" : "them"),
                            false,

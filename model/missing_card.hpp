@@ -24,7 +24,7 @@ struct EarlyCardLine {
     std::size_t read_as_index = 0;                   // the card it is read as, in the keyword's cards
 };
 
-// The line's ruler (the `$#` comment right above it) names a card of the keyword's `cards` after `read_as`,
+// The line's ruler (the `$#` or `$` comment right above it) names a card of the keyword's `cards` after `read_as`,
 // the card the line is read as, and not that one: what it was typed as. Nothing otherwise, and nothing when
 // the rulers stacked above the line are a header of several lines, one of them naming `read_as` and as many
 // data lines under them as rulers (`$# n1 n2`, `$# lcid mlc1` above both cards).
