@@ -137,8 +137,8 @@ constexpr RuleInfo kRows[] = {
      Fixable::None, Layout::Doubtful},
     {"DK032", "part-heading-missing", Warning, "0.1.0", "schema",
      {"model/missing_heading.cpp", "dk"},
-     "a *PART heading that reads as a card of integers: the heading line was left out, so the PID line is read "
-     "as the heading and the next line as card 2 (an error when that misreads)",
+     "a *PART heading that reads as a card of integers, or a _TITLE option's title that reads as card 1: the "
+     "heading or title line was left out, so the next card's line is read as it (an error when that misreads)",
      Fixable::Unsafe},
     {"DK033", "keyword-without-asterisk", Warning, "0.1.0", "schema",
      {"model/lost_asterisk.cpp", "dk"},

@@ -223,14 +223,20 @@ private:
         if (auto lost = lost_asterisk_line(line.file, line.line, text, read_as_text)) lost_.push_back(std::move(*lost));
     }
 
-    // A *PART heading line that reads as the card after it: the heading was left out.
+    // A *PART heading line, or a `_TITLE` option's title line, that reads as the card after it: the heading or
+    // title was left out.
     void note_missing_heading(const grammar::Block& block, grammar::CardLinePtr line, const CardSpec& card,
                               const CardSpec& next) {
-        // HEADING in the hand-written *PART, TITLE in generated layouts (*PART_INERTIA, *PART_CONTACT).
-        if (card.fields.empty() || (card.fields[0].name != "HEADING" && card.fields[0].name != "TITLE") ||
-            block.keyword.rfind("*PART", 0) != 0)
+        // HEADING in the hand-written *PART, TITLE in generated layouts (*PART_INERTIA, *PART_CONTACT) and in
+        // the title card a `_TITLE` option reads first.
+        if (card.fields.empty() || (card.fields[0].name != "HEADING" && card.fields[0].name != "TITLE")) return;
+        const std::string_view text = deck_.text(*line);
+        if (block.keyword.rfind("*PART", 0) != 0) {
+            if (card.fields[0].name == "TITLE" && reads_as_card(text, layout_of(next, block.format), next))
+                heading_ = {line, &next, false};
             return;
-        if (!reads_as_integer_card(deck_.text(*line), layout_of(next, block.format), next)) return;
+        }
+        if (!reads_as_integer_card(text, layout_of(next, block.format), next)) return;
         const bool reals = line + 1 != deck_.end_lines(block) &&
                            reals_in_id_fields(deck_.text(line[1]), layout_of(next, block.format), next);
         heading_ = {line, &next, reals};

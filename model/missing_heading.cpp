@@ -57,6 +57,28 @@ bool reads_as_integer_card(std::string_view text, std::span<const grammar::Fixed
     return values >= min_values;
 }
 
+bool reads_as_card(std::string_view text, std::span<const grammar::FixedField> slots, const keywords::CardSpec& card) {
+    if (grammar::is_free_format(text)) return false;
+    const std::size_t fields = std::min(slots.size(), card.fields.size());
+    std::size_t values = 0;
+    for (const grammar::LineToken& t : grammar::line_tokens(text)) {
+        const auto in = std::find_if(slots.begin(), slots.begin() + static_cast<std::ptrdiff_t>(fields),
+                                     [&](const grammar::FixedField& f) {
+                                         return f.start <= t.begin && t.end <= std::size_t{f.start} + f.width;
+                                     });
+        if (in == slots.begin() + static_cast<std::ptrdiff_t>(fields)) return false;
+        const keywords::FieldSpec& spec = card.fields[static_cast<std::size_t>(in - slots.begin())];
+        const std::string_view word = text.substr(t.begin, t.end - t.begin);
+        const bool fits =
+            spec.type == keywords::FieldType::Label ||
+            (spec.type == keywords::FieldType::Integer && integer_word(word)) ||
+            (spec.type == keywords::FieldType::Real && grammar::parse_real(word).status == grammar::NumberStatus::Ok);
+        if (!fits) return false;
+        ++values;
+    }
+    return values >= 2;
+}
+
 bool reals_in_id_fields(std::string_view text, std::span<const grammar::FixedField> slots,
                         const keywords::CardSpec& card) {
     if (grammar::is_free_format(text)) return false;
@@ -82,19 +104,28 @@ void diagnose_missing_heading(const grammar::RawDeck& deck, const grammar::Block
     if (!reals_read_as_ids && std::none_of(out.begin() + static_cast<std::ptrdiff_t>(from), out.end(), misread)) return;
     const std::string_view text = deck.text(heading);
     const auto first = static_cast<std::uint32_t>(std::min(text.find_first_not_of(' '), text.size()) + 1);
-    // Generated layouts name their cards "Card": the one after the heading is card 2.
+    // Generated layouts name their cards "Card": the one after the heading is card 2 (a title's: card 1).
+    const bool part = block.keyword.rfind("*PART", 0) == 0;
     const std::string card =
-        next_card.name.empty() || next_card.name == "Card" ? "card 2" : std::string(next_card.name);
+        next_card.name.empty() || next_card.name == "Card" ? (part ? "card 2" : "card 1") : std::string(next_card.name);
+    const std::string message =
+        part ? fmt::format(
+                   "{} heading line missing: this line of integers reads as {}'s {}, but LS-DYNA reads it as "
+                   "the part's heading and the line after it as its {}",
+                   block.keyword, block.keyword, card, card)
+             : fmt::format(
+                   "{} title line missing: this line reads as {}'s {}, but LS-DYNA reads it as the title "
+                   "(the keyword's _TITLE option) and the line after it as its {}",
+                   block.keyword, block.keyword, card, card);
     diag::Diagnostic d{"DK032",
                        diag::Severity::Warning,
-                       fmt::format("{} heading line missing: this line of integers reads as {}'s {}, but LS-DYNA "
-                                   "reads it as the part's heading and the line after it as its {}",
-                                   block.keyword, block.keyword, card, card),
+                       message,
                        grammar::Span{heading.file, heading.line, first, static_cast<std::uint32_t>(text.size() + 1)},
                        {}};
     // Unsafe: which title the part had is not known; a blank heading is read as none.
-    d.fixes.push_back(
-        {"insert a blank heading line above it", false, {{grammar::Span{heading.file, heading.line, 1, 1}, "\n"}}});
+    d.fixes.push_back({part ? "insert a blank heading line above it" : "insert a blank title line above it",
+                       false,
+                       {{grammar::Span{heading.file, heading.line, 1, 1}, "\n"}}});
     fold_explained(out, from, std::move(d), misread);
 }
 
