@@ -10,6 +10,7 @@
 #include "grammar/line_scan.hpp"
 #include "model/card_decoder.hpp"
 #include "model/missing_card.hpp"
+#include "model/repeated_line.hpp"
 
 namespace sphdeck::edit::detail {
 namespace {
@@ -225,9 +226,11 @@ void format_dyna_block(const FormatScope& scope, const grammar::Block& block, Dy
             return;
         }
         const std::string_view text = deck.text(*l);
-        if (scope.findings_needed && card->repeat != keywords::CardRepeat::Repeated && !match->schema->generated)
-            if (model::early_card_line(deck, block, l, *card, sequence.cards()))
-                scope.give_up();  // a card cut (DK035)?
+        // A card cut above the line (DK035) or the line pasted twice (DK036): a misreading's cause, perhaps.
+        if (scope.findings_needed && card->repeat != keywords::CardRepeat::Repeated &&
+            ((!match->schema->generated && model::early_card_line(deck, block, l, *card, sequence.cards())) ||
+             model::repeats_line_above(deck, block, l)))
+            scope.give_up();
         if (scope.formats(l->file)) {
             const CardLineState state = format_card_line(scope, *l, text, c.cells(), c.free_allowed, buffer, out);
             // A line with a finding keeps its ruler: it may be the finding's evidence (DK035: the ruler names the

@@ -155,6 +155,12 @@ constexpr RuleInfo kRows[] = {
      "a line whose `$#` ruler names a later card of its keyword than the one it is read as: a card above it was "
      "cut, so it and the lines after it are read early (an error when that misreads)",
      Fixable::Unsafe, Layout::Doubtful},
+    {"DK036", "line-pasted-twice", Warning, "0.1.0", "schema",
+     {"model/repeated_line.cpp", "dk"},
+     "a data line that repeats the line above it inside a keyword whose cards are read once, when the block "
+     "misreads after it and reads cleanly without it: the copy is read as the next card (an error when that "
+     "misreads)",
+     Fixable::Unsafe, Layout::Doubtful},
 
     // RAD: OpenRadioss SPH options (/SPHBCS, SOL2SPH, /PROP/SPH, /SPHCEL, /SPHGLO, /DT).
     {"RAD001", "missing-starter-header", Error, "0.1.0", "reader",

@@ -19,6 +19,7 @@
 #include "model/missing_card.hpp"
 #include "model/missing_heading.hpp"
 #include "model/particle_ranges.hpp"
+#include "model/repeated_line.hpp"
 #include "model/shift_diagnosis.hpp"
 #include "model/unknown_keywords.hpp"
 
@@ -90,6 +91,7 @@ public:
         lost_.clear();
         heading_ = {};
         blanks_.clear();
+        copies_.clear();
         early_.reset();
         const std::size_t walk_from = out_.size();
         CardSequence sequence(match);
@@ -120,6 +122,7 @@ public:
             note_lost_asterisk(*l, card.fields.empty() || card.fields[0].type == FieldType::Text);
             if (!heading_.line && sequence.card_after()) note_missing_heading(block, l, card, *sequence.card_after());
             note_blank_card(block, l, card);
+            note_repeated_line(block, l, card);
             if (!early_ && out_.size() == walk_from) note_early_card(block, l, card, match, cards);
             const std::size_t found_before = out_.size();
             decoder_.decode(block, *l, card, values_);
@@ -150,6 +153,8 @@ public:
     const HeadingSuspect& heading_suspect() const { return heading_; }
     // The first blank lines the walk read as cards read once, with a data line after them (model/blank_card.hpp).
     const std::vector<BlankCardLine>& blank_cards() const { return blanks_; }
+    // The first data lines that repeat the line above them, read as cards read once (model/repeated_line.hpp).
+    const std::vector<RepeatedLine>& repeated_lines() const { return copies_; }
     // The first line read as a card before the one its `$#` ruler names, when no line above it made a finding
     // (model/missing_card.hpp).
     const std::optional<EarlyCardLine>& early_card() const { return early_; }
@@ -255,6 +260,14 @@ private:
                 blanks_.push_back({line, &card, text_card});
                 return;
             }
+    }
+
+    // A line read as a card read once that repeats the line above it: a copy, perhaps.
+    void note_repeated_line(const grammar::Block& block, grammar::CardLinePtr line, const CardSpec& card) {
+        constexpr std::size_t max_copies = 4;
+        if (copies_.size() < max_copies && card.repeat != CardRepeat::Repeated &&
+            repeats_line_above(deck_, block, line))
+            copies_.push_back({line, &card});
     }
 
     // A line read once as `card` whose `$#` ruler names a later card of the keyword (a card cut above it).
@@ -491,6 +504,7 @@ private:
     std::vector<LostAsteriskLine> lost_;
     HeadingSuspect heading_;
     std::vector<BlankCardLine> blanks_;
+    std::vector<RepeatedLine> copies_;
     std::optional<EarlyCardLine> early_;
     grammar::AlignmentTally alignment_;
     std::vector<LoneCandidate> lone_;
@@ -591,12 +605,21 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
             diagnose_blank_card(
                 deck, block, blanks,
                 [&](grammar::CardLinePtr blank) { return walker.reads_without(block, *match, blank); }, out, before);
-        if (const auto& early = walker.early_card(); early && !blank_misread)
+        const auto& copies = walker.repeated_lines();
+        const bool copy_misread =
+            !blank_misread && !copies.empty() &&
+            diagnose_repeated_line(
+                deck, block, copies,
+                [&](grammar::CardLinePtr copy) { return walker.reads_without(block, *match, copy); }, out, before);
+        if (const auto& early = walker.early_card(); early && !blank_misread && !copy_misread)
             diagnose_missing_card(deck, block, *early, out, before);
-        // A heading after a blank line that misread is the blank line's symptom (the next card read as a heading).
-        if (const auto& h = walker.heading_suspect();
-            h.line &&
-            !(blank_misread && h.line->file == blanks.front().line->file && h.line->line > blanks.front().line->line))
+        // A heading after a blank line or a copy that misread is its symptom (the next card read as a heading).
+        const auto after = [](const grammar::CardLine& line, const grammar::CardLine& cause) {
+            return line.file == cause.file && line.line >= cause.line;
+        };
+        if (const auto& h = walker.heading_suspect(); h.line &&
+                                                      !(blank_misread && after(*h.line, *blanks.front().line)) &&
+                                                      !(copy_misread && after(*h.line, *copies.front().line)))
             diagnose_missing_heading(deck, block, *h.line, *h.next, h.reals_read_as_ids, out, before);
         bound.annotate(out, before, block.keyword);
     }

@@ -624,6 +624,24 @@ def deleted_card(host, rng):
                     line_map=lambda m, n=n: m if m < n else (None if m == n else m - 1))
 
 
+def duplicated_line(host, rng):
+    """A data line of a keyword whose cards are read once pasted twice (a copy slip): the copy is read as the
+    next card and every line after it one card late. The blocks of blank_line; not a *PART's lines (a part
+    pasted whole is duplicated-block's). The finding belongs on the copy."""
+    if host.deck.fmt != "dyna":
+        return
+    blocks = [b for b in host.deck.blocks if b.data and not b.name.startswith(READ_AS_LINES)
+              and not b.name.startswith("*PART")]
+    rng.shuffle(blocks)
+    for b in blocks:
+        n = b.data[rng.randrange(len(b.data))]
+        if not host.deck.lines[n - 1].strip():
+            continue  # a blank card pasted twice: blank-line's
+        lines = host.deck.lines[:n] + [host.deck.lines[n - 1]] + host.deck.lines[n:]
+        yield Plant("duplicated-line", lines, [n + 1], f"{b.name} at line {b.line}: data line {n} pasted twice",
+                    "dump", line_map=lambda m, n=n: m if m <= n else m + 1)
+
+
 def off_plane(host, rng):
     """A particle's node of a 2D deck (IDIM 2 or -2, every node at z = 0) given a z off the plane."""
     if host.deck.fmt != "dyna" or host.deck.long_format:
@@ -684,9 +702,9 @@ def digit_shift(host, rng):
 KINDS = [keyword_typo, radioss_header_typo, shift_right_1, shift_right_3, shift_left_2, width_8, letter_o, decimal_comma,
          missing_id, zero_density, no_control_sph, parameter_typo, radioss_straddle, radioss_shift,
          duplicated_block, tab_in_line, stray_end, missing_heading, lost_asterisk, off_plane, digit_shift, blank_line,
-         deleted_card]
+         deleted_card, duplicated_line]
 KIND_NAMES = ["keyword-typo", "radioss-header-typo", "shift-right-1", "shift-right-3", "shift-left-2", "width-8", "letter-O",
               "decimal-comma", "missing-id", "zero-density", "no-control-sph", "parameter-typo",
               "radioss-straddle", "radioss-shift", "duplicated-block", "tab-in-line", "stray-end",
               "missing-heading", "lost-asterisk", "off-plane", "digit-shift", "blank-line",
-              "deleted-card"]
+              "deleted-card", "duplicated-line"]
