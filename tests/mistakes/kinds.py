@@ -584,6 +584,11 @@ READ_AS_LINES = ("*NODE", "*ELEMENT", "*SET_", "*DEFINE_CURVE", "*DEFINE_TABLE",
                  "*COMMENT", "*TITLE", "*INCLUDE", "*DATABASE_HISTORY", "*INITIAL_")
 
 
+# Keywords whose data lines are entries of a list (a symmetry plane, an hourglass set, a constraint a line):
+# one deleted is an entry less, which nothing tells from intent.
+ENTRY_LINES = ("*BOUNDARY_SPH_SYMMETRY_PLANE", "*HOURGLASS", "*BOUNDARY_SPC", "*BOUNDARY_PRESCRIBED", "*LOAD_")
+
+
 def blank_line(host, rng):
     """A blank line typed between a keyword's cards for spacing (after its keyword line or between two of its
     data lines): LS-DYNA reads it as a card of defaults, and the cards after it one card late. Blocks of repeated
@@ -610,7 +615,7 @@ def deleted_card(host, rng):
     data line that now stands where the deleted one stood."""
     if host.deck.fmt != "dyna":
         return
-    blocks = [b for b in host.deck.blocks if len(b.data) >= 2 and not b.name.startswith(READ_AS_LINES)]
+    blocks = [b for b in host.deck.blocks if len(b.data) >= 2 and not b.name.startswith(READ_AS_LINES + ENTRY_LINES)]
     rng.shuffle(blocks)
     for b in blocks:
         k = rng.randrange(len(b.data) - 1)
