@@ -22,15 +22,6 @@ bool card_too_many(const diag::Diagnostic& d, const grammar::Block& block, const
            (d.code == "DK008" && d.span.file == block.span.file && d.span.line == block.span.line);
 }
 
-// A reading finding of the block from `blank` on (a real parameter in an integer field among them), or the
-// keyword's missing card on its keyword line.
-bool read_late(const diag::Diagnostic& d, const grammar::Block& block, const grammar::CardLine& blank) {
-    const bool reading = follows_from_shift(d.code) || d.code == "DK009" || d.code == "DK013";
-    const bool after = d.span.file == blank.file && d.span.line >= blank.line;
-    const bool keyword_line = d.code == "DK008" && d.span.file == block.span.file && d.span.line == block.span.line;
-    return reading && (after || keyword_line);
-}
-
 }  // namespace
 
 bool blank_card_line(std::string_view text) { return text.find_first_not_of(" \t\r") == std::string_view::npos; }
@@ -51,7 +42,7 @@ bool diagnose_blank_card(const grammar::RawDeck& deck, const grammar::Block& blo
         }
     // Else the first blank line whose leaving out reads the block cleanly, a card line before a title line.
     if (!cause && std::any_of(found.begin(), found.end(),
-                              [&](const diag::Diagnostic& d) { return read_late(d, block, *blanks.front().line); }))
+                              [&](const diag::Diagnostic& d) { return misread_from(d, block, *blanks.front().line); }))
         for (bool text : {false, true})
             for (const BlankCardLine& b : blanks)
                 if (!cause && b.text_card == text && reads_without(b.line)) cause = &b, proven = true;
@@ -103,7 +94,7 @@ bool diagnose_blank_card(const grammar::RawDeck& deck, const grammar::Block& blo
          false,
          {{grammar::Span{blank.file, blank.line, 1, 1}, "$"}}});
     fold_explained(out, from, std::move(d), [&](const diag::Diagnostic& f) {
-        return proven ? read_late(f, block, blank) : card_too_many(f, block, blank);
+        return proven ? misread_from(f, block, blank) : card_too_many(f, block, blank);
     });
     return true;
 }

@@ -112,12 +112,7 @@ void diagnose_missing_card(const grammar::RawDeck& deck, const grammar::Block& b
                            false,
                            {{grammar::Span{line.file, ruler_line, 1, 1}, std::string(count, '\n')}}});
     // The block's reading from this line on, and the keyword's last card found missing on its keyword line.
-    fold_explained(out, from, std::move(d), [&](const diag::Diagnostic& f) {
-        const bool reading = follows_from_shift(f.code) || f.code == "DK009" || f.code == "DK013";
-        const bool after = f.span.file == line.file && f.span.line >= line.line;
-        const bool keyword_line = f.code == "DK008" && f.span.file == block.span.file && f.span.line == block.span.line;
-        return reading && (after || keyword_line);
-    });
+    fold_explained(out, from, std::move(d), [&](const diag::Diagnostic& f) { return misread_from(f, block, line); });
 }
 
 }  // namespace sphdeck::model

@@ -14,14 +14,6 @@ std::string_view without_trailing_blanks(std::string_view text) {
     return end == std::string_view::npos ? std::string_view{} : text.substr(0, end + 1);
 }
 
-// A reading finding of the block from `copy` on, or the keyword's missing card on its keyword line.
-bool read_late(const diag::Diagnostic& d, const grammar::Block& block, const grammar::CardLine& copy) {
-    const bool reading = follows_from_shift(d.code) || d.code == "DK009" || d.code == "DK013";
-    const bool after = d.span.file == copy.file && d.span.line >= copy.line;
-    const bool keyword_line = d.code == "DK008" && d.span.file == block.span.file && d.span.line == block.span.line;
-    return reading && (after || keyword_line);
-}
-
 }  // namespace
 
 bool repeats_line_above(const grammar::RawDeck& deck, const grammar::Block& block, grammar::CardLinePtr line) {
@@ -39,7 +31,7 @@ bool diagnose_repeated_line(const grammar::RawDeck& deck, const grammar::Block& 
     const RepeatedLine* cause = nullptr;
     for (const RepeatedLine& c : copies)
         if (std::any_of(found.begin(), found.end(),
-                        [&](const diag::Diagnostic& d) { return read_late(d, block, *c.line); }) &&
+                        [&](const diag::Diagnostic& d) { return misread_from(d, block, *c.line); }) &&
             reads_without(c.line)) {
             cause = &c;
             break;
@@ -64,7 +56,7 @@ bool diagnose_repeated_line(const grammar::RawDeck& deck, const grammar::Block& 
          "typed for",
          false,
          {{grammar::Span{copy.file, copy.line, 1, 1}, "$"}}});
-    fold_explained(out, from, std::move(d), [&](const diag::Diagnostic& f) { return read_late(f, block, copy); });
+    fold_explained(out, from, std::move(d), [&](const diag::Diagnostic& f) { return misread_from(f, block, copy); });
     return true;
 }
 

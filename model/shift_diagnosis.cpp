@@ -232,6 +232,13 @@ bool follows_from_shift(std::string_view code) {
     return std::find(std::begin(codes), std::end(codes), code) != std::end(codes);
 }
 
+bool misread_from(const diag::Diagnostic& d, const grammar::Block& block, const grammar::CardLine& line) {
+    const bool reading = follows_from_shift(d.code) || d.code == "DK009" || d.code == "DK013";
+    const bool after = d.span.file == line.file && d.span.line >= line.line;
+    const bool keyword_line = d.code == "DK008" && d.span.file == block.span.file && d.span.line == block.span.line;
+    return reading && (after || keyword_line);
+}
+
 void fold_explained(std::vector<diag::Diagnostic>& out, std::size_t from, diag::Diagnostic cause,
                     const std::function<bool(const diag::Diagnostic&)>& explained) {
     std::size_t kept = from;

@@ -47,6 +47,10 @@ diag::Diagnostic lone_value_finding(const grammar::RawDeck& deck, const grammar:
 // The reading findings a shift or a wrong width explains (DK002-DK008): folded into the cause.
 bool follows_from_shift(std::string_view code);
 
+// A reading finding of `block` (DK002-DK009, DK013) on `line` or after it, or the keyword's missing card on its
+// keyword line: what a line read as a card too many or too few (a blank line, a copy, a card cut) makes.
+bool misread_from(const diag::Diagnostic& d, const grammar::Block& block, const grammar::CardLine& line);
+
 // Moves `d` into `cause` as a note "message [CODE]" at its span ("column N: message [CODE]" without a
 // span when it is on the cause's line).
 void fold_into(diag::Diagnostic& cause, diag::Diagnostic&& d);
