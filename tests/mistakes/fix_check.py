@@ -34,7 +34,8 @@ import run_mistakes as rm  # noqa: E402
 
 SAFE_FIX_KINDS = ["shift-right-1", "shift-right-3", "shift-left-2", "width-8", "radioss-straddle", "radioss-shift",
                   "digit-shift"]
-UNSAFE_FIX_KINDS = ["keyword-typo", "radioss-header-typo", "parameter-typo", "stray-end", "missing-heading", "lost-asterisk", "blank-line"]
+UNSAFE_FIX_KINDS = ["keyword-typo", "radioss-header-typo", "parameter-typo", "stray-end", "missing-heading", "lost-asterisk", "blank-line",
+                    "duplicated-line"]
 
 
 def fix_mutant(sphdeck, path, include, unsafe):
