@@ -55,9 +55,10 @@ TEST_CASE("radioss layouts: /BEGIN reads the input and work unit lines from form
 }
 
 TEST_CASE("radioss layouts: /MAT reads the density and E, nu where it knows the law; the rest is not checked") {
-    // LAW2 (matl2_plas_johns.cfg 2025): E nu Iflag VP Pmin on card 2; LAW36 card 3 starts with integers.
+    // LAW2 (matl2_plas_johns.cfg 2025): E nu Iflag VP Pmin on card 2 (a 2019 deck reads format 140's E nu
+    // Iflag: VP is text past the card, read by nobody), then a, b, n when Iflag is not 1.
     const std::string plas = "/MAT/PLAS_JOHNS/1\nsteel\n" + r20("7.8E-9") + r20("0") + "\n" + r20("210000") +
-                             r20("0.3") + i10("2") + i10("0") + "\n" + i10("2") + i10("0") + r20("1") + "\n";
+                             r20("0.3") + i10("2") + i10("0") + "\n" + r20("250") + r20("300") + r20("0.3") + "\n";
     // LAW44 in a 2017 deck (QA LOI44): card 4 `%20lg%20lg%10d%10d%20lg` is no row of five reals.
     const std::string cowper =
         "/MAT/COWPER/2\nc\n     0.780000000E-02      0.00000000\n      2.05000000E+05"
@@ -160,5 +161,30 @@ TEST_CASE("radioss layouts: /FRAME/MOV puts its Dir axis along N1N2 (hm_read_frm
     CHECK(f.frames[1].axes[1][2] == doctest::Approx(1.0));
     CHECK(f.frames[1].axes[0][1] == doctest::Approx(1.0));
     CHECK(f.frames[1].axes[2][0] == doctest::Approx(1.0));
+}
+
+TEST_CASE("radioss layouts: LAW2's cards after E and nu as matl2_plas_johns.cfg lays them out, by format and Iflag") {
+    const auto law2 = [](const std::string& card2, const std::string& card3, const std::string& card4) {
+        return "/MAT/PLAS_JOHNS/1\nsteel\n" + r20("7.8E-9") + "\n" + card2 + "\n" + card3 + "\n" + card4 + "\n";
+    };
+    const std::string abn = r20("250") + r20("300") + r20("0.3");
+    const std::string rate = r20("0.01") + r20("1") + i10("1") + i10("0") + r20("0") + r20("0");
+    // Clean in every format from 51 on (Chard from 100, Iflag from 140).
+    for (int version : {51, 100, 140, 2019, 2023, 2025, 2026}) {
+        CAPTURE(version);
+        const std::string card2 = r20("210000") + r20("0.3") + (version >= 140 ? i10("0") : "");
+        const std::string card4 = version >= 100 ? rate : rate.substr(0, 80);
+        CHECK(warnings_and_errors(check(deck(law2(card2, abn, card4), version))) == 0);
+    }
+    // A letter O typed in a (card 3) is a number no more, where the starter's formatted read fails.
+    const std::string card2 = r20("210000") + r20("0.3") + i10("0");
+    auto typo = check(deck(law2(card2, r20("25O") + r20("300") + r20("0.3"), rate), 2019));
+    CHECK(count_code(typo.diagnostics, "DK003") == 1);
+    // Iflag 1 reads SIG_Y, UTS, EUTS on card 3 (format 140 on): the same numbers, other names, still clean.
+    auto uts = check(deck(law2(r20("210000") + r20("0.3") + i10("1"), abn, rate), 2019));
+    CHECK(warnings_and_errors(uts) == 0);
+    // Integers typed in 10-column cells where card 3 reads 20-column reals: RAD025, as for any such card.
+    auto glued = check(deck(law2(card2, i10("2") + i10("0") + r20("1"), rate), 2019));
+    CHECK(count_code(glued.diagnostics, "RAD025") == 1);
 }
 }  // namespace test_radioss_layouts_cpp

@@ -39,6 +39,13 @@ inline CardSpec list(std::string_view name, int per_line, std::string_view count
     return c;
 }
 
+// A card read once when `condition` holds, `words` saying it for `sphdeck keyword`.
+inline CardSpec when(CardSpec card, CardCondition condition, std::string_view words) {
+    card.present_if = condition;
+    card.condition = words;
+    return card;
+}
+
 // Lines kept as text, not decoded.
 inline CardSpec opaque() { return repeated({L("text")}); }
 

@@ -1,8 +1,9 @@
 // Materials: /MAT/<law>/mat_ID. sphdeck reads what the density, the mass and the sound speed
 // need, each card where the starter's CFG files put it (hm_cfg_files/config/CFG/radiossNNNN/MAT/):
 // the density card of every law, E and nu of the elastic-plastic laws, C0-C3 of the older LAW3
-// and LAW6 forms. The other cards of a law are kept as text, not checked: sphdeck does not know
-// their layout and says nothing about their fields.
+// and LAW6 forms, every card of LAW2 (Johnson-Cook, the QA decks' most common law). The other cards
+// of a law are kept as text, not checked: sphdeck does not know their layout and says nothing about
+// their fields.
 #include "grammar/radioss/cards_build.hpp"
 
 namespace sphdeck::grammar::radioss::detail {
@@ -45,8 +46,7 @@ void add_material_keywords(std::vector<KeywordSpec>& out) {
     // matl32_hill.cfg, matl36_plas_tab.cfg, matl44_cowper.cfg, matl49_steinb.cfg (E0).
     const FormatSpec elastic{0, {density(), young_poisson(), opaque()}};
     const std::vector<std::vector<std::string_view>> elastic_laws = {{"/MAT/LAW1", "/MAT/LAW01", "/MAT/ELAST"},
-                                                                     {"/MAT/LAW2", "/MAT/LAW02", "/MAT/PLAS_JOHNS",
-                                                                      "/MAT/PLAS_ZERIL"},
+                                                                     {"/MAT/PLAS_ZERIL"},
                                                                      {"/MAT/LAW4", "/MAT/LAW04", "/MAT/HYD_JCOOK"},
                                                                      {"/MAT/LAW21", "/MAT/DPRAG"},
                                                                      {"/MAT/LAW22", "/MAT/DAMA"},
@@ -60,6 +60,35 @@ void add_material_keywords(std::vector<KeywordSpec>& out) {
     for (const auto& names : elastic_laws)
         out.push_back(
             law(names[0], {names.begin() + 1, names.end()}, "elastic-plastic material: density, E, nu", {elastic}));
+
+    // LAW2, Johnson-Cook (matl2_plas_johns.cfg, FORMAT radioss51 to radioss2025): after E and nu, the yield
+    // card (a, b, n, or from format 140 SIG_Y, UTS, EUTS when Iflag is 1), the strain-rate card (Chard from
+    // format 100) and the thermal card (T_max from 2025). V4 decks (16-column cells): E and nu, then text.
+    const CardCondition by_uts = +[](const EarlierValues& e) { return e("Iflag") == 1; };
+    const CardCondition by_abn = +[](const EarlierValues& e) { return e("Iflag") != 1; };
+    const auto johnson_cook = [&](CardSpec elastic_card, bool iflag, bool chard, bool tmax) {
+        std::vector<CardSpec> cards = {density(), std::move(elastic_card)};
+        const CardSpec abn = once({R("a"), R("b"), R("n"), R("EPS_p_max"), R("SIG_max0")});
+        if (iflag) {
+            cards.push_back(
+                when(once({R("SIG_Y"), R("UTS"), R("EUTS"), R("EPS_p_max"), R("SIG_max0")}), by_uts, "Iflag 1"));
+            cards.push_back(when(abn, by_abn, "Iflag not 1"));
+        } else {
+            cards.push_back(abn);
+        }
+        cards.push_back(chard ? once({R("c"), R("EPS_DOT_0"), I("ICC"), I("Fsmooth"), R("F_cut"), R("Chard")})
+                              : once({R("c"), R("EPS_DOT_0"), I("ICC"), I("Fsmooth"), R("F_cut")}));
+        cards.push_back(tmax ? once({R("m"), R("T_melt"), R("rhoC_p"), R("T_r"), R("T_max")})
+                             : once({R("m"), R("T_melt"), R("rhoC_p"), R("T_r")}));
+        return cards;
+    };
+    out.push_back(law("/MAT/LAW2", {"/MAT/LAW02", "/MAT/PLAS_JOHNS"}, "Johnson-Cook elastic-plastic material",
+                      {{2025, johnson_cook(once({R("E"), R("nu"), I("Iflag"), I("VP"), R("Pmin")}), true, true, true)},
+                       {2023, johnson_cook(once({R("E"), R("nu"), I("Iflag"), I("VP")}), true, true, false)},
+                       {140, johnson_cook(once({R("E"), R("nu"), I("Iflag")}), true, true, false)},
+                       {100, johnson_cook(once({R("E"), R("nu")}), false, true, false)},
+                       {51, johnson_cook(once({R("E"), R("nu")}), false, false, false)},
+                       {0, {density(), young_poisson(), opaque()}}}));
 
     // LAW3 (matl3_hydpla.cfg): E nu, the yield card, then C0-C3 up to format 2017; from 2018 the
     // fourth card is Pmin and the coefficients moved to /EOS.

@@ -7,13 +7,6 @@ using namespace build;
 
 namespace {
 
-// A card read once when `when` holds, `condition` in words for `sphdeck keyword`.
-CardSpec when(CardSpec card, CardCondition condition, std::string_view words) {
-    card.present_if = condition;
-    card.condition = words;
-    return card;
-}
-
 // /SPH/INOUT, CFG radioss140/LOADS/sph_inout.cfg. Card 1 is `%10d%10d%10d%20lg` in
 // FORMAT(radioss51/90/110); FORMAT(radioss140) adds node_ID1-3 and Fcut (a frontier through three
 // nodes, a Butterworth cut-off). Then, by Itype: 1 (inlet) `%10d%20lg%30s%10d%20lg` and `%10d`,
