@@ -27,11 +27,6 @@ bool is_cause(const diag::Diagnostic& d) {
            (d.fixes.front().safe || judged_cause(d)) && !d.fixes.front().edits.empty();
 }
 
-bool is_cause_code(const std::string& code) {
-    return code == "DK029" || code == "DK030" || code == "DK032" || code == "DK033" || code == "DK034" ||
-           code == "DK035" || code == "DK036";
-}
-
 using Place = std::tuple<std::string, grammar::FileId, std::uint32_t, std::uint32_t>;
 Place place_of(const diag::Diagnostic& d) { return {d.code, d.span.file, d.span.line, d.span.column}; }
 
@@ -106,7 +101,7 @@ void fold_mended_consequences(const grammar::RawDeck& deck, std::vector<diag::Di
     std::vector<std::size_t> candidates;
     for (std::size_t i = 0; i < diagnostics.size(); ++i) {
         const diag::Diagnostic& d = diagnostics[i];
-        if (is_cause_code(d.code) || is_cause(d) || on_cause_lines(d, causes)) continue;
+        if (model::misreading_cause(d.code) || is_cause(d) || on_cause_lines(d, causes)) continue;
         candidates.push_back(i);
     }
     if (candidates.empty()) return;
@@ -121,7 +116,7 @@ void fold_mended_consequences(const grammar::RawDeck& deck, std::vector<diag::Di
         const MendedLines lines(fix);
         for (const diag::Diagnostic& d : recheck(mended_files(deck, fix, documents))) {
             after.insert(lines.place_of(d));
-            if (is_cause_code(d.code) || is_cause(d))
+            if (model::misreading_cause(d.code) || is_cause(d))
                 cause_lines.insert({d.span.file, lines.original(d.span.file, d.span.line)});
         }
         for (std::size_t i : candidates)

@@ -57,11 +57,9 @@ void fold_into_causes(const grammar::RawDeck& deck, std::vector<diag::Diagnostic
     std::vector<bool> folded(diagnostics.size(), false);
     for (std::size_t i = 0; i < diagnostics.size(); ++i) {
         diag::Diagnostic& d = diagnostics[i];
-        // Causes of their own (a keyword line without its '*', a missing heading, a blank line read as a card, a
-        // card cut above a line, a line pasted twice) are not a shift's symptoms.
-        if (d.code == "DK029" || d.code == "DK030" || d.code == "DK032" || d.code == "DK033" || d.code == "DK034" ||
-            d.code == "DK035" || d.code == "DK036" || !d.span.valid())
-            continue;
+        // Causes (model::misreading_cause: a keyword line without its '*', a missing heading, a blank line read as
+        // a card, a card cut, a line pasted twice, a shift itself) are not a shift's symptoms.
+        if (model::misreading_cause(d.code) || !d.span.valid()) continue;
         auto cause = std::find_if(causes.begin(), causes.end(), [&](const Cause& c) {
             return c.file == d.span.file && d.span.line >= c.first && d.span.line <= c.last;
         });

@@ -17,8 +17,7 @@ RulerWords ruler_words(std::string_view ruler, const keywords::CardSpec& card) {
 }
 
 bool ruler_names(std::string_view ruler, const keywords::CardSpec& card) {
-    const RulerWords words = ruler_words(ruler, card);
-    return words.count >= 2 && 3 * words.named >= 2 * words.count;
+    return ruler_words(ruler, card).names_card();
 }
 
 }  // namespace sphdeck::model

@@ -14,6 +14,8 @@ namespace sphdeck::model {
 // CardSpec::field).
 struct RulerWords {
     std::size_t count = 0, named = 0;
+    // Two words or more, and at least two thirds of them the card's fields.
+    bool names_card() const { return count >= 2 && 3 * named >= 2 * count; }
 };
 RulerWords ruler_words(std::string_view ruler, const keywords::CardSpec& card);
 

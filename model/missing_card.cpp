@@ -48,14 +48,15 @@ std::optional<EarlyCardLine> early_card_line(const grammar::RawDeck& deck, const
     if (text_card) return std::nullopt;
     const std::string_view ruler = header_above(deck, *line, "$");
     const auto found = std::find(cards.begin(), cards.end(), &read_as);
-    if (ruler.empty() || found == cards.end() || ruler_names(ruler, read_as)) return std::nullopt;
+    if (ruler.empty() || found == cards.end()) return std::nullopt;
+    const RulerWords own = ruler_words(ruler, read_as);
+    if (own.names_card()) return std::nullopt;
     const auto index = static_cast<std::size_t>(found - cards.begin());
-    const RulerWords own = ruler_words(ruler, *cards[index]);
     std::size_t named = index + 1;
     // The ruler names card k, and more of its words than of the card the line is read as.
-    while (named < cards.size() &&
-           (!ruler_names(ruler, *cards[named]) || ruler_words(ruler, *cards[named]).named <= own.named))
-        ++named;
+    for (; named < cards.size(); ++named)
+        if (const RulerWords words = ruler_words(ruler, *cards[named]); words.names_card() && words.named > own.named)
+            break;
     if (named == cards.size()) return std::nullopt;
     // The rulers stacked right above the line, and whether one names the card it is read as.
     const grammar::CardLine& at = *line;

@@ -1,6 +1,7 @@
 #include "model/missing_heading.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -23,6 +24,26 @@ bool integer_typed(const keywords::FieldSpec& spec) {
     return spec.type == keywords::FieldType::Integer || spec.type == keywords::FieldType::Label || spec.pydyna_integer;
 }
 
+// How many words of the fixed-format `text` there are when each lies whole in one of `card`'s fields (its
+// columns `slots`) and `fits(word, field)`; nothing at the first that does not.
+template <typename Fits>
+std::optional<std::size_t> words_in_fields(std::string_view text, std::span<const grammar::FixedField> slots,
+                                           const keywords::CardSpec& card, Fits&& fits) {
+    const auto fields = slots.first(std::min(slots.size(), card.fields.size()));
+    std::size_t words = 0;
+    bool all = true;
+    grammar::for_each_token(text, [&](const grammar::LineToken& t) {
+        const auto in = std::find_if(fields.begin(), fields.end(), [&](const grammar::FixedField& f) {
+            return f.start <= t.begin && t.end <= std::size_t{f.start} + f.width;
+        });
+        all = in != fields.end() &&
+              fits(text.substr(t.begin, t.end - t.begin), card.fields[static_cast<std::size_t>(in - fields.begin())]);
+        words += all;
+        return all;
+    });
+    return all ? std::optional<std::size_t>(words) : std::nullopt;
+}
+
 }  // namespace
 
 bool reads_as_integer_card(std::string_view text, std::span<const grammar::FixedField> slots,
@@ -42,41 +63,23 @@ bool reads_as_integer_card(std::string_view text, std::span<const grammar::Fixed
         }
         return values >= min_values;
     }
-    const std::size_t fields = std::min(slots.size(), card.fields.size());
-    for (const grammar::LineToken& t : grammar::line_tokens(text)) {
-        const auto in = std::find_if(slots.begin(), slots.begin() + static_cast<std::ptrdiff_t>(fields),
-                                     [&](const grammar::FixedField& f) {
-                                         return f.start <= t.begin && t.end <= std::size_t{f.start} + f.width;
-                                     });
-        if (in == slots.begin() + static_cast<std::ptrdiff_t>(fields)) return false;
-        const auto& spec = card.fields[static_cast<std::size_t>(in - slots.begin())];
-        const bool integer_field = integer_typed(spec);
-        if (!integer_field || !integer_word(text.substr(t.begin, t.end - t.begin))) return false;
-        ++values;
-    }
-    return values >= min_values;
+    const std::optional<std::size_t> words =
+        words_in_fields(text, slots, card, [](std::string_view word, const keywords::FieldSpec& spec) {
+            return integer_typed(spec) && integer_word(word);
+        });
+    return words && *words >= min_values;
 }
 
 bool reads_as_card(std::string_view text, std::span<const grammar::FixedField> slots, const keywords::CardSpec& card) {
     if (grammar::is_free_format(text)) return false;
-    const std::size_t fields = std::min(slots.size(), card.fields.size());
-    std::size_t values = 0;
-    for (const grammar::LineToken& t : grammar::line_tokens(text)) {
-        const auto in = std::find_if(slots.begin(), slots.begin() + static_cast<std::ptrdiff_t>(fields),
-                                     [&](const grammar::FixedField& f) {
-                                         return f.start <= t.begin && t.end <= std::size_t{f.start} + f.width;
-                                     });
-        if (in == slots.begin() + static_cast<std::ptrdiff_t>(fields)) return false;
-        const keywords::FieldSpec& spec = card.fields[static_cast<std::size_t>(in - slots.begin())];
-        const std::string_view word = text.substr(t.begin, t.end - t.begin);
-        const bool fits =
-            spec.type == keywords::FieldType::Label ||
-            (spec.type == keywords::FieldType::Integer && integer_word(word)) ||
-            (spec.type == keywords::FieldType::Real && grammar::parse_real(word).status == grammar::NumberStatus::Ok);
-        if (!fits) return false;
-        ++values;
-    }
-    return values >= 2;
+    const std::optional<std::size_t> words =
+        words_in_fields(text, slots, card, [](std::string_view word, const keywords::FieldSpec& spec) {
+            return spec.type == keywords::FieldType::Label ||
+                   (spec.type == keywords::FieldType::Integer && integer_word(word)) ||
+                   (spec.type == keywords::FieldType::Real &&
+                    grammar::parse_real(word).status == grammar::NumberStatus::Ok);
+        });
+    return words && *words >= 2;
 }
 
 bool reals_in_id_fields(std::string_view text, std::span<const grammar::FixedField> slots,

@@ -232,6 +232,11 @@ bool follows_from_shift(std::string_view code) {
     return std::find(std::begin(codes), std::end(codes), code) != std::end(codes);
 }
 
+bool misreading_cause(std::string_view code) {
+    static constexpr std::string_view codes[] = {"DK029", "DK030", "DK032", "DK033", "DK034", "DK035", "DK036"};
+    return std::find(std::begin(codes), std::end(codes), code) != std::end(codes);
+}
+
 bool misread_from(const diag::Diagnostic& d, const grammar::Block& block, const grammar::CardLine& line) {
     const bool reading = follows_from_shift(d.code) || d.code == "DK009" || d.code == "DK013";
     const bool after = d.span.file == line.file && d.span.line >= line.line;

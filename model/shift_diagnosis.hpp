@@ -47,6 +47,11 @@ diag::Diagnostic lone_value_finding(const grammar::RawDeck& deck, const grammar:
 // The reading findings a shift or a wrong width explains (DK002-DK008): folded into the cause.
 bool follows_from_shift(std::string_view code);
 
+// The findings that name a misreading's cause, whose consequences become their notes: a line shifted off its
+// fields (DK029), a block in other widths (DK030), a heading or title left out (DK032), a keyword without its
+// '*' (DK033), a blank line read as a card (DK034), a card cut above a line (DK035), a line pasted twice (DK036).
+bool misreading_cause(std::string_view code);
+
 // A reading finding of `block` (DK002-DK009, DK013) on `line` or after it, or the keyword's missing card on its
 // keyword line: what a line read as a card too many or too few (a blank line, a copy, a card cut) makes.
 bool misread_from(const diag::Diagnostic& d, const grammar::Block& block, const grammar::CardLine& line);
