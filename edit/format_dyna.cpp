@@ -240,12 +240,16 @@ void format_dyna_block(const FormatScope& scope, const grammar::Block& block, Dy
                 header_above(scope, *l, text, c.header, out);
         }
         previous = card;
-        if (sequence.needs_values(*card)) {
+        // A card read once that makes a finding, or a card missing at the end: the block may misread, and the
+        // finding that names the cause (two lines made one, DK037; a line broken in two, DK038) keeps its line.
+        if (sequence.needs_values(*card) || (scope.findings_needed && card->repeat != keywords::CardRepeat::Repeated)) {
             decoder.decode(block, *l, *card, values);
+            if (scope.findings_needed && !dropped.empty()) scope.give_up();
             dropped.clear();
         }
         sequence.advance(*card, values);
     }
+    if (scope.findings_needed && sequence.missing_card()) scope.give_up();
 }
 
 }  // namespace

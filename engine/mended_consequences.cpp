@@ -15,10 +15,10 @@ namespace {
 // A cause whose mend is a judgement (unsafe fix) yet whose consequences the deck shows the same way: a
 // stray *END (DK017 warning: the blocks after it are read once it is gone), a *PART heading line
 // missing (DK032), a keyword line that lost its '*' (DK033), a blank line read as a card (DK034), a card cut
-// above a line (DK035), a line pasted twice (DK036).
+// above a line (DK035), a line pasted twice (DK036), two lines joined (DK037), a line broken in two (DK038).
 bool judged_cause(const diag::Diagnostic& d) {
     return (d.code == "DK017" && d.severity == diag::Severity::Warning) || d.code == "DK032" || d.code == "DK033" ||
-           d.code == "DK034" || d.code == "DK035" || d.code == "DK036";
+           d.code == "DK034" || d.code == "DK035" || d.code == "DK036" || d.code == "DK037" || d.code == "DK038";
 }
 
 bool is_cause(const diag::Diagnostic& d) {
@@ -75,11 +75,12 @@ grammar::FileOverlay mended_files(const grammar::RawDeck& deck, const diag::Fix&
     return mended;
 }
 
-// The lines a cause stands for: its own line, or (DK030) the lines its fix rewrites. Not DK035's or DK036's
-// line: it is read as the wrong card, so the findings on it are as much its consequences as those after it.
+// The lines a cause stands for: its own line, or (DK030) the lines its fix rewrites. Not the line of DK035,
+// DK036, DK037 or DK038: it is read as the wrong card (or as two), so the findings on it are as much its
+// consequences as those after it.
 bool on_cause_lines(const diag::Diagnostic& d, const std::vector<const diag::Diagnostic*>& causes) {
     return std::any_of(causes.begin(), causes.end(), [&](const diag::Diagnostic* c) {
-        if (c->code == "DK035" || c->code == "DK036") return false;
+        if (c->code == "DK035" || c->code == "DK036" || c->code == "DK037" || c->code == "DK038") return false;
         if (c->span.file == d.span.file && c->span.line == d.span.line) return true;
         const auto& edits = c->fixes.front().edits;
         return std::any_of(edits.begin(), edits.end(), [&](const diag::TextEdit& e) {

@@ -161,6 +161,16 @@ constexpr RuleInfo kRows[] = {
      "misreads after it and reads cleanly without it: the copy is read as the next card (an error when that "
      "misreads)",
      Fixable::Unsafe, Layout::Doubtful},
+    {"DK037", "lines-joined", Warning, "0.1.0", "schema",
+     {"model/joined_lines.cpp", "dk"},
+     "a data line that holds two card lines (the line end between them deleted), when the block misreads a card "
+     "short and, broken after one of its words, reads cleanly (an error when that misreads)",
+     Fixable::Unsafe, Layout::Doubtful},
+    {"DK038", "line-split", Warning, "0.1.0", "schema",
+     {"model/joined_lines.cpp", "dk"},
+     "a data line broken off the line above it (a line end typed inside a card), when the block misreads a card "
+     "late and, the two joined with its words in their fields, reads cleanly (an error when that misreads)",
+     Fixable::Unsafe, Layout::Doubtful},
 
     // RAD: OpenRadioss SPH options (/SPHBCS, SOL2SPH, /PROP/SPH, /SPHCEL, /SPHGLO, /DT).
     {"RAD001", "missing-starter-header", Error, "0.1.0", "reader",

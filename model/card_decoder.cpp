@@ -169,10 +169,14 @@ const CardLayout& CardDecoder::find_layout(const keywords::CardSpec& card, gramm
 
 void CardDecoder::decode(const grammar::Block& block, const grammar::CardLine& line, const keywords::CardSpec& card,
                          std::vector<FieldValue>& values) {
+    decode_text(block, line, deck_.text(line), card, values);
+}
+
+void CardDecoder::decode_text(const grammar::Block& block, const grammar::CardLine& line, std::string_view text,
+                              const keywords::CardSpec& card, std::vector<FieldValue>& values) {
     const std::size_t first_finding = out_.size();
     const CardLayout& layout = layout_of(card, block.format);
     const auto& positions_ = layout.positions;
-    std::string_view text = deck_.text(line);
     line_text_ = text;
     grammar::CutReport cut =
         grammar::cut_fields(text, line, positions_, layout.significant, fields_, !layout.text_card);

@@ -91,6 +91,10 @@ public:
     // Fills `values` with one entry per field of `card` (Unused fields included, never checked).
     void decode(const grammar::Block& block, const grammar::CardLine& line, const keywords::CardSpec& card,
                 std::vector<FieldValue>& values);
+    // The same for `text` read as if it stood on `line` (the spans name that line): a line the deck may have
+    // meant, for the diagnoses that try a mend before they name a cause (model/joined_lines.hpp).
+    void decode_text(const grammar::Block& block, const grammar::CardLine& line, std::string_view text,
+                     const keywords::CardSpec& card, std::vector<FieldValue>& values);
 
     // The bulk path of *NODE and *ELEMENT_SPH lines: a plain fixed-format line (standard widths,
     // numbers in their columns, nothing to report) is decoded straight from its columns; any

@@ -55,10 +55,12 @@ std::optional<std::size_t> known_length(std::string_view file, const grammar::Ca
     return length;
 }
 
-bool comma_or_tab(const char* begin, const char* end) {
-    for (; begin < end; ++begin)
-        if (*begin == ',' || *begin == '\t') return true;
-    return false;
+// Nothing but blanks after the fields: text there (a second line joined to this one, DK037) is read by no field,
+// and decode() notes it (CardDecoder::text_past_fields).
+bool blank_past_fields(std::string_view text, const CardLayout& layout) {
+    for (std::size_t i = layout.fields_end; i < text.size(); ++i)
+        if (text[i] != ' ') return false;
+    return true;
 }
 
 // One field as read: its text (trimmed, as written), the spaces before it, and its number.
@@ -139,20 +141,20 @@ inline bool read_plain(const CardLayout& layout, const keywords::CardSpec& card,
 [[gnu::always_inline]] inline std::optional<std::string_view> CardDecoder::plain_text(const CardLayout& layout,
                                                                                       const grammar::CardLine& line,
                                                                                       const grammar::CardLine* next) {
-    // Free format (a comma), a tab, or text past the significant width: decode() says what. A line whose
-    // end is known needs its columns past the fields looked at only: a ',' or '\t' inside a field makes
-    // that field read as no number, and the line goes to decode() all the same.
+    // Free format (a comma), a tab, or text past the fields: decode() says what. A line whose end is known
+    // needs its columns past the fields looked at only: a ',' or '\t' inside a field makes that field read
+    // as no number, and the line goes to decode() all the same.
     if (!layout.plain) return std::nullopt;
     const std::string_view file = file_text(line.file);
     if (const std::optional<std::size_t> length = layout.contiguous ? known_length(file, line, next) : std::nullopt) {
         const std::string_view text(file.data() + line.offset, *length);
         if (text.size() > layout.significant) return std::nullopt;
-        if (text.size() > layout.fields_end && comma_or_tab(text.data() + layout.fields_end, text.data() + text.size()))
-            return std::nullopt;
+        if (text.size() > layout.fields_end && !blank_past_fields(text, layout)) return std::nullopt;
         return text;
     }
     const grammar::ScannedLine scanned = grammar::scan_line(deck_, line);
-    if (scanned.text.size() > layout.significant || scanned.comma_or_tab) return std::nullopt;
+    if (scanned.text.size() > layout.significant || scanned.comma_or_tab || !blank_past_fields(scanned.text, layout))
+        return std::nullopt;
     return scanned.text;
 }
 

@@ -19,6 +19,7 @@
 #include "model/missing_card.hpp"
 #include "model/missing_heading.hpp"
 #include "model/particle_ranges.hpp"
+#include "model/joined_lines.hpp"
 #include "model/repeated_line.hpp"
 #include "model/shift_diagnosis.hpp"
 #include "model/unknown_keywords.hpp"
@@ -92,6 +93,8 @@ public:
         heading_ = {};
         blanks_.clear();
         copies_.clear();
+        read_once_.clear();
+        past_fields_.clear();
         early_.reset();
         const std::size_t walk_from = out_.size();
         CardSequence sequence(match);
@@ -115,6 +118,8 @@ public:
                 return;
             }
             if (!next) {
+                // The first line past the last card: a piece of the card above broken off, perhaps (DK038).
+                if (!match.schema->generated && !blank_card_line(deck_.text(*l))) read_once_.push_back({l, nullptr});
                 report_extra(block, l, cards.size());
                 return;
             }
@@ -123,6 +128,7 @@ public:
             if (!heading_.line && sequence.card_after()) note_missing_heading(block, l, card, *sequence.card_after());
             note_blank_card(block, l, card);
             note_repeated_line(block, l, card);
+            note_read_once(l, card, match);
             if (!early_ && out_.size() == walk_from) note_early_card(block, l, card, match, cards);
             const std::size_t found_before = out_.size();
             decoder_.decode(block, *l, card, values_);
@@ -130,6 +136,7 @@ public:
                            std::any_of(out_.begin() + static_cast<std::ptrdiff_t>(found_before), out_.end(),
                                        [](const diag::Diagnostic& d) { return d.severity == diag::Severity::Error; }));
             note_suspect(block, l, card, out_.size() > found_before || decoder_.glued() || decoder_.text_past_fields());
+            if (card.repeat == CardRepeat::Repeated && decoder_.text_past_fields()) note_past_fields(l);
             std::optional<diag::Diagnostic> refused;
             if (particles) refused = take_range(values_);
             sequence.advance(card, values_);  // conditions look at header cards
@@ -155,6 +162,12 @@ public:
     const std::vector<BlankCardLine>& blank_cards() const { return blanks_; }
     // The first data lines that repeat the line above them, read as cards read once (model/repeated_line.hpp).
     const std::vector<RepeatedLine>& repeated_lines() const { return copies_; }
+    // The first lines of repeated cards with text between their fields' end and the last significant column
+    // (model/joined_lines.hpp).
+    const std::vector<grammar::CardLinePtr>& past_fields_lines() const { return past_fields_; }
+    // The first data lines read as cards read once, hand-written layouts only (model/joined_lines.hpp), and the
+    // first line past the keyword's last card (its card: none).
+    const std::vector<ReadOnceLine>& read_once_lines() const { return read_once_; }
     // The first line read as a card before the one its `$#` ruler names, when no line above it made a finding
     // (model/missing_card.hpp).
     const std::optional<EarlyCardLine>& early_card() const { return early_; }
@@ -163,26 +176,45 @@ public:
     // would give it then (blocks of up to max_replayed_lines; longer ones: no). A parameter's name findings (one
     // defined in a deck that includes this file) say nothing of where the cards fall and are left out.
     bool reads_without(const grammar::Block& block, const keywords::KeywordMatch& match, grammar::CardLinePtr blank) {
+        if (!replayable(block)) return false;
+        std::vector<ReplayLine> lines;
+        for (grammar::CardLinePtr l = deck_.begin_lines(block); l != deck_.end_lines(block); ++l)
+            if (l != blank) lines.push_back({l, deck_.text(*l)});
+        return replay(block, match, lines).has_value();
+    }
+
+    static bool replayable(const grammar::Block& block) {
         constexpr std::size_t max_replayed_lines = 1000;
-        if (block.line_count > max_replayed_lines) return false;
+        return block.line_count <= max_replayed_lines;
+    }
+
+    // The block read from `lines` (texts that may differ from the deck's: a line split in two, two lines joined):
+    // the card each line is read as when every one reads without a finding (a parameter's name findings
+    // aside, as above) and no card is missing; nothing otherwise. Lines past the last card are clean only
+    // when blank (their card: none).
+    std::optional<std::vector<const CardSpec*>> replay(const grammar::Block& block, const keywords::KeywordMatch& match,
+                                                       std::span<const ReplayLine> lines) {
         std::vector<diag::Diagnostic> found;
         CardDecoder decoder(deck_, found);
         CardSequence sequence(match);
         std::vector<FieldValue> values;
-        for (grammar::CardLinePtr l = deck_.begin_lines(block); l != deck_.end_lines(block); ++l) {
-            if (l == blank) continue;
+        std::vector<const CardSpec*> cards;
+        for (std::size_t i = 0; i < lines.size(); ++i) {
             const CardSpec* card = sequence.next();
-            if (!card) {  // lines past the last card: clean only when blank
-                if (sequence.layout_unknown()) return true;
-                for (; l != deck_.end_lines(block); ++l)
-                    if (l != blank && !blank_card_line(deck_.text(*l))) return false;
+            if (!card) {
+                if (sequence.layout_unknown()) break;
+                for (; i < lines.size(); ++i)
+                    if (!blank_card_line(lines[i].text)) return std::nullopt;
                 break;
             }
-            decoder.decode(block, *l, *card, values);
-            if (!std::all_of(found.begin(), found.end(), parameter_finding)) return false;
+            decoder.decode_text(block, *lines[i].line, lines[i].text, *card, values);
+            if (!std::all_of(found.begin(), found.end(), parameter_finding)) return std::nullopt;
             sequence.advance(*card, values);
+            cards.push_back(card);
         }
-        return !sequence.missing_card();
+        if (sequence.missing_card()) return std::nullopt;
+        cards.resize(lines.size(), nullptr);
+        return cards;
     }
 
     // DK029 for the lines of one value pushed into the next field, when (all but 1% of) the other numbers
@@ -270,6 +302,20 @@ private:
             copies_.push_back({line, &card});
     }
 
+    void note_past_fields(grammar::CardLinePtr line) {
+        constexpr std::size_t max_past_fields = 4;
+        if (past_fields_.size() < max_past_fields) past_fields_.push_back(line);
+    }
+
+    // The lines a joined or split line's diagnosis tries to mend (model/joined_lines.hpp). Hand-written layouts
+    // only, as note_early_card: a generated one may misread a deck the solver reads, and a mend may then read
+    // cleanly by chance.
+    void note_read_once(grammar::CardLinePtr line, const CardSpec& card, const keywords::KeywordMatch& match) {
+        constexpr std::size_t max_read_once = 16;
+        if (read_once_.size() < max_read_once && card.repeat != CardRepeat::Repeated && !match.schema->generated)
+            read_once_.push_back({line, &card});
+    }
+
     // A line read once as `card` whose `$#` ruler names a later card of the keyword (a card cut above it).
     // Hand-written layouts only: a generated one may hold a card the deck leaves out by a condition pydyna
     // does not state (*FREQUENCY_DOMAIN_FRF's N11 card), and the ruler would then be right and the layout not.
@@ -341,6 +387,7 @@ private:
         std::vector<FloodBound> bounds(static_cast<std::size_t>(threads), FloodBound(0));
         std::vector<std::size_t> counted(static_cast<std::size_t>(threads), 0);
         std::vector<char> all_plain(static_cast<std::size_t>(threads), 1);  // char: threads write their own
+        std::vector<std::vector<std::size_t>> past_fields(static_cast<std::size_t>(threads));  // first few a thread
         const grammar::CardLinePtr lines = deck_.begin_lines(block);
         // Ranges longer than the deck's nodes are refused on the threads; the deck's running
         // budget is spent afterwards, range by range in line order.
@@ -389,6 +436,9 @@ private:
                 } else if (!decoder.decode_bulk(block, line, card, values, followed ? &next : nullptr)) {
                     all_plain[static_cast<std::size_t>(t)] = 0;
                 }
+                if (auto& past = past_fields[static_cast<std::size_t>(t)];
+                    decoder.text_past_fields() && past.size() < 4)
+                    past.push_back(i);
                 std::optional<std::string> refused;
                 if (particles) {
                     refused = ranges_.check_alone(range_extra(values));
@@ -431,6 +481,8 @@ private:
         for (auto& part : found)
             out_.insert(out_.end(), std::make_move_iterator(part.begin()), std::make_move_iterator(part.end()));
         note_bulk_suspects(block, card, merged_from);
+        for (const auto& part : past_fields)
+            for (std::size_t i : part) note_past_fields(lines + static_cast<std::ptrdiff_t>(i));
         for (const SuspectLine& s : suspects_) note_lost_asterisk(*s.line, false);  // a keyword name misread as a line
     }
 
@@ -505,6 +557,8 @@ private:
     HeadingSuspect heading_;
     std::vector<BlankCardLine> blanks_;
     std::vector<RepeatedLine> copies_;
+    std::vector<ReadOnceLine> read_once_;
+    std::vector<grammar::CardLinePtr> past_fields_;
     std::optional<EarlyCardLine> early_;
     grammar::AlignmentTally alignment_;
     std::vector<LoneCandidate> lone_;
@@ -597,27 +651,47 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
         const std::size_t before = out.size();
         FloodBound bound(before);
         walker.walk(block, *match, summary, bound);
+        const CardSequence sequence(*match);
+        if (const auto& cards = sequence.cards();
+            !match->schema->generated && !cards.empty() && cards.front()->repeat == keywords::CardRepeat::Repeated)
+            diagnose_joined_repeated_lines(deck, block, *cards.front(), walker.past_fields_lines(), out, before);
         diagnose_shifts(deck, block, walker.suspects(), out, before);
         diagnose_lost_asterisks(deck, block, walker.lost_asterisks(), out, before);
         const auto& blanks = walker.blank_cards();
-        const bool blank_misread =
-            !blanks.empty() &&
-            diagnose_blank_card(
-                deck, block, blanks,
-                [&](grammar::CardLinePtr blank) { return walker.reads_without(block, *match, blank); }, out, before);
         const auto& copies = walker.repeated_lines();
+        const auto& read_once = walker.read_once_lines();
+        const bool replayable = BlockWalker::replayable(block);
+        const Replay replay = [&](std::span<const ReplayLine> lines) { return walker.replay(block, *match, lines); };
+        // A blank line first, when it is not a heading or title (a blank one is often meant): the line a person
+        // typed. Then two lines made one, which a card cut above (DK035) or a copy can look like; a line broken in
+        // two, which a blank heading read as a card too many can.
+        const bool blank_titles =
+            std::all_of(blanks.begin(), blanks.end(), [](const BlankCardLine& b) { return b.text_card; });
+        const auto blank_cause = [&] {
+            return !blanks.empty() &&
+                   diagnose_blank_card(
+                       deck, block, blanks,
+                       [&](grammar::CardLinePtr blank) { return walker.reads_without(block, *match, blank); }, out,
+                       before);
+        };
+        bool blank_misread = !blank_titles && blank_cause();
+        const bool joined = !blank_misread && replayable &&
+                            diagnose_joined_line(deck, block, sequence.cards(), read_once, replay, out, before);
         const bool copy_misread =
-            !blank_misread && !copies.empty() &&
+            !joined && !blank_misread && !copies.empty() &&
             diagnose_repeated_line(
                 deck, block, copies,
                 [&](grammar::CardLinePtr copy) { return walker.reads_without(block, *match, copy); }, out, before);
-        if (const auto& early = walker.early_card(); early && !blank_misread && !copy_misread)
+        const bool split = !joined && !blank_misread && !copy_misread && replayable &&
+                           diagnose_split_line(deck, block, read_once, replay, out, before);
+        if (!joined && !copy_misread && !split && blank_titles) blank_misread = blank_cause();
+        if (const auto& early = walker.early_card(); early && !joined && !blank_misread && !copy_misread && !split)
             diagnose_missing_card(deck, block, *early, out, before);
         // A heading after a blank line or a copy that misread is its symptom (the next card read as a heading).
         const auto after = [](const grammar::CardLine& line, const grammar::CardLine& cause) {
             return line.file == cause.file && line.line >= cause.line;
         };
-        if (const auto& h = walker.heading_suspect(); h.line &&
+        if (const auto& h = walker.heading_suspect(); h.line && !joined && !split &&
                                                       !(blank_misread && after(*h.line, *blanks.front().line)) &&
                                                       !(copy_misread && after(*h.line, *copies.front().line)))
             diagnose_missing_heading(deck, block, *h.line, *h.next, h.reals_read_as_ids, out, before);

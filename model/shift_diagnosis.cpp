@@ -233,7 +233,8 @@ bool follows_from_shift(std::string_view code) {
 }
 
 bool misreading_cause(std::string_view code) {
-    static constexpr std::string_view codes[] = {"DK029", "DK030", "DK032", "DK033", "DK034", "DK035", "DK036"};
+    static constexpr std::string_view codes[] = {"DK029", "DK030", "DK032", "DK033", "DK034",
+                                                 "DK035", "DK036", "DK037", "DK038"};
     return std::find(std::begin(codes), std::end(codes), code) != std::end(codes);
 }
 
