@@ -35,7 +35,7 @@ import run_mistakes as rm  # noqa: E402
 SAFE_FIX_KINDS = ["shift-right-1", "shift-right-3", "shift-left-2", "width-8", "radioss-straddle", "radioss-shift",
                   "digit-shift"]
 UNSAFE_FIX_KINDS = ["keyword-typo", "radioss-header-typo", "parameter-typo", "stray-end", "missing-heading", "lost-asterisk", "blank-line",
-                    "duplicated-line"]
+                    "duplicated-line", "joined-lines", "split-line"]
 
 
 def fix_mutant(sphdeck, path, include, unsafe):

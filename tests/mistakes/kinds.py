@@ -704,12 +704,54 @@ def digit_shift(host, rng):
         yield Plant("digit-shift", replaced(host.deck.lines, n, " " + text), [n], f"{b.name} line {n}", "dump")
 
 
+def joined_lines(host, rng):
+    """Two data lines of a block made one (the line end between them deleted): the second line's text goes on
+    from the first's last character, past its fields or into its blank ones, and the block loses a line. Blocks
+    whose cards are read once, and *NODE and *ELEMENT_SPH lines (their first 400)."""
+    if host.deck.fmt != "dyna":
+        return
+    cands = []
+    for b in host.deck.blocks:
+        if b.name.startswith(READ_AS_LINES) and b.name not in ("*NODE", "*ELEMENT_SPH"):
+            continue
+        for n, after in zip(b.data[:400], b.data[1:401]):
+            if after == n + 1 and host.deck.lines[n - 1].strip() and host.deck.lines[after - 1].strip():
+                cands.append((b, n))
+    rng.shuffle(cands)
+    for b, n in cands:
+        joined = host.deck.lines[n - 1] + host.deck.lines[n]
+        if "," in joined or "\t" in joined:
+            continue
+        lines = host.deck.lines[:n - 1] + [joined] + host.deck.lines[n + 1:]
+        yield Plant("joined-lines", lines, [n], f"{b.name} at line {b.line}: data lines {n} and {n + 1} joined", "dump",
+                    line_map=lambda m, n=n: m if m <= n else (None if m == n + 1 else m - 1))
+
+
+def split_line(host, rng):
+    """A data line broken in two before one of its values (Enter typed in the blanks before it): the rest of the
+    line starts a line of its own at column 1, read as the next card."""
+    if host.deck.fmt != "dyna":
+        return
+    cands = [(b, n) for b, n in data_lines_with_fields(host) if not b.name.startswith(READ_AS_LINES)]
+    rng.shuffle(cands)
+    for b, n in cands:
+        text = host.deck.lines[n - 1]
+        words = tokens(text)
+        if len(words) < 2 or "," in text or "\t" in text:
+            continue
+        i = rng.randrange(1, len(words))
+        at = rng.randrange(words[i - 1][1], words[i][0] + 1)  # anywhere in the blanks before word i
+        lines = host.deck.lines[:n - 1] + [text[:at].rstrip(), text[at:]] + host.deck.lines[n:]
+        yield Plant("split-line", lines, [n, n + 1], f"{b.name} at line {b.line}: data line {n} split at column "
+                    f"{at + 1}", "dump", line_map=lambda m, n=n: m if m <= n else m + 1)
+
+
 KINDS = [keyword_typo, radioss_header_typo, shift_right_1, shift_right_3, shift_left_2, width_8, letter_o, decimal_comma,
          missing_id, zero_density, no_control_sph, parameter_typo, radioss_straddle, radioss_shift,
          duplicated_block, tab_in_line, stray_end, missing_heading, lost_asterisk, off_plane, digit_shift, blank_line,
-         deleted_card, duplicated_line]
+         deleted_card, duplicated_line, joined_lines, split_line]
 KIND_NAMES = ["keyword-typo", "radioss-header-typo", "shift-right-1", "shift-right-3", "shift-left-2", "width-8", "letter-O",
               "decimal-comma", "missing-id", "zero-density", "no-control-sph", "parameter-typo",
               "radioss-straddle", "radioss-shift", "duplicated-block", "tab-in-line", "stray-end",
               "missing-heading", "lost-asterisk", "off-plane", "digit-shift", "blank-line",
-              "deleted-card", "duplicated-line"]
+              "deleted-card", "duplicated-line", "joined-lines", "split-line"]
