@@ -26,6 +26,17 @@ std::string shown_cell(std::string_view text) {
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
+// The part of a zero before its exponent's digits ('.000000000E', '0.E+'): the head of a zero written across a
+// cell's end, whose digits past the end change nothing (model/radioss_straddles.cpp judges what lies there).
+bool zero_before_exponent(std::string_view s) {
+    if (!s.empty() && (s.front() == '+' || s.front() == '-')) s.remove_prefix(1);
+    if (!s.empty() && (s.back() == '+' || s.back() == '-')) s.remove_suffix(1);
+    if (s.size() < 2 || std::string_view("eEdD").find(s.back()) == std::string_view::npos) return false;
+    s.remove_suffix(1);
+    return s.find_first_not_of("0.") == std::string_view::npos && s.find('0') != std::string_view::npos &&
+           s.find('.') == s.rfind('.');
+}
+
 std::string_view trim_cell(std::string_view s, std::size_t* offset = nullptr) {
     std::size_t b = 0, e = s.size();
     while (b < e && is_space(s[b])) ++b;
@@ -228,8 +239,14 @@ void RadiossCardDecoder::read_value(RadiossValue& v, std::string_view field, boo
         grammar::RealValue a = grammar::parse_real(head), b = grammar::parse_real(second);
         // The tail of a zero written across the cell's start ("0000      .000000000" after
         // ".00000"; model/radioss_straddles.cpp) and an equal number: the value read is the one meant.
-        const bool same = offset == 0 && a.status == NumberStatus::Ok && b.status == NumberStatus::Ok &&
-                          a.value == 0.0 && b.value == 0.0 && trim_cell(rest.substr(second.size())).empty();
+        // So is a zero's head left in the cell by a zero across its end ("0       .000000000E" before "00").
+        const bool last_in_cell = trim_cell(rest.substr(second.size())).empty();
+        const bool zero_across_end = a.status == NumberStatus::Ok && a.value == 0.0 && last_in_cell &&
+                                     zero_before_exponent(second) && offset + token.size() == field.size() &&
+                                     field.size() == cell_columns;
+        const bool same =
+            zero_across_end || (offset == 0 && a.status == NumberStatus::Ok && b.status == NumberStatus::Ok &&
+                                a.value == 0.0 && b.value == 0.0 && last_in_cell);
         if (same) {
             token = head;
             v.text = head;

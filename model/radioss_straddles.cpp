@@ -120,7 +120,12 @@ std::vector<Straddle> straddles(std::string_view text, const grammar::radioss::C
         const grammar::RealValue own_value = grammar::parse_real(own);
         const bool next_clear =
             own.empty() || (own_value.status == grammar::NumberStatus::Ok && own_value.value == 0.0);
-        if (whole.value == 0.0 && kept.status == grammar::NumberStatus::Ok && kept.value == 0.0 &&
+        // What the starter reads in the cell: its first word (sscanf stops at a blank), the run's part in it when
+        // the run starts the cell's text ("0       .000000000E" before "00" reads 0).
+        const std::string_view cell = cell_text(text, positions[i].start, b);
+        const grammar::RealValue read =
+            cell.data() < text.data() + s ? grammar::parse_real(cell.substr(0, cell.find(' '))) : kept;
+        if (whole.value == 0.0 && read.status == grammar::NumberStatus::Ok && read.value == 0.0 &&
             lost.status == grammar::NumberStatus::Ok && lost.value == 0.0 && next_clear)
             continue;
         out.push_back({i, s, b, e});
@@ -139,6 +144,15 @@ diag::Diagnostic straddle_finding(const grammar::CardLine& line, std::string_vie
     const std::string_view whole = text.substr(s.begin, s.end - s.begin);
     const std::string_view kept = text.substr(s.begin, s.boundary - s.begin);
     const std::string_view lost = text.substr(s.boundary, s.end - s.boundary);
+    // The starter reads a cell's first word (sscanf stops at a blank, meci_data_reader.cpp): a word before the
+    // run in its cell is what the cell reads, and the run's part in the cell is dropped.
+    const std::string_view first_word = [&] {
+        const std::string_view cell = cell_text(text, positions[s.cell].start, s.boundary);
+        return cell.substr(0, std::min(cell.find(' '), cell.size()));
+    }();
+    const std::string read = first_word.data() < kept.data()
+                                 ? fmt::format("'{}' (the cell's first word; '{}' dropped)", first_word, kept)
+                                 : fmt::format("'{}'", kept);
     std::string where;
     if (s.cell + 1 >= card.fields.size() || s.cell + 1 >= positions.size())
         where = fmt::format("'{}' past the last cell is not read", lost);
@@ -149,15 +163,16 @@ diag::Diagnostic straddle_finding(const grammar::CardLine& line, std::string_vie
                             straddle_cell_columns(positions[s.cell + 1]));
     diag::Diagnostic d{"RAD030",
                        diag::Severity::Error,
-                       fmt::format("'{}' straddles the end of cell {} ({}): the starter reads {} as '{}' and {}", whole,
-                                   here.name, straddle_cell_columns(positions[s.cell]), here.name, kept, where),
+                       fmt::format("'{}' straddles the end of cell {} ({}): the starter reads {} as {} and {}", whole,
+                                   here.name, straddle_cell_columns(positions[s.cell]), here.name, read, where),
                        grammar::Span{line.file, line.line, static_cast<std::uint32_t>(s.begin + 1),
                                      static_cast<std::uint32_t>(s.end + 1)},
                        {}};
     // Safe fix: the number moved left by the columns it overruns, to end at its cell's end, when blanks
-    // of its own cell stand before it: it is then read whole in its cell and nothing else moves.
+    // of its own cell stand before it: it is then read whole in its cell and nothing else moves. Not when
+    // another word stands before it in the cell: the cell would still read that word.
     const std::size_t overrun = s.end - s.boundary;
-    if (s.begin >= positions[s.cell].start + overrun &&
+    if (first_word.data() >= kept.data() && s.begin >= positions[s.cell].start + overrun &&
         text.substr(s.begin - overrun, overrun).find_first_not_of(' ') == std::string_view::npos)
         d.fixes.push_back({fmt::format("move '{}' {} column{} left, to end at column {}, the end of {}", whole, overrun,
                                        overrun == 1 ? "" : "s", s.boundary, here.name),

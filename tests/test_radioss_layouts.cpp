@@ -188,3 +188,43 @@ TEST_CASE("radioss layouts: LAW2's cards after E and nu as matl2_plas_johns.cfg 
     CHECK(count_code(glued.diagnostics, "RAD025") == 1);
 }
 }  // namespace test_radioss_layouts_cpp
+
+namespace test_radioss_layouts_cpp {
+TEST_CASE("radioss layouts: the elastic-plastic laws read whole by their CFG cards (LAW4 HYD_JCOOK, LAW1 ELAST)") {
+    // matl4_hyd_jcook.cfg 2018 on: density, E nu, A B n epsmax sigmax, Pmin, C EPS_DOT_0 M Tmelt Tmax, RHOCP.
+    const auto jcook = [](const std::string& b) {
+        return "/MAT/HYD_JCOOK/5\ncopper\n" + r20("8.93") + r20("8.93") + "\n" + r20("1.16") + r20(".35") + "\n" +
+               r20(".004") + r20(b) + r20("1") + r20("0") + r20("0") + "\n" + r20("0") + "\n" + r20("0") + r20("0") +
+               r20("0") + r20("1E30") + r20("1E30") + "\n" + r20("3.409E-5") + "\n";
+    };
+    const std::string elast = "/MAT/ELAST/6\nsteel\n" + r20("7.8E-9") + "\n" + r20("210000") + r20("0.3") + "\n";
+    auto clean = check(deck(jcook(".001") + elast, 2019));
+    CHECK(warnings_and_errors(clean) == 0);
+    const auto& f = facts(clean);
+    REQUIRE(f.material(5) != nullptr);
+    CHECK(f.material(5)->density == 8.93);
+    CHECK(f.material(5)->young == 1.16);
+    CHECK(f.material(5)->poisson == 0.35);
+    REQUIRE(f.material(6) != nullptr);
+    CHECK(f.material(6)->young == 210000);
+    // The letter O typed for a zero in B (the yield card, text not checked before): DK003 on its cell.
+    auto typo = check(deck(jcook(".OO1") + elast, 2019));
+    REQUIRE(count_code(typo.diagnostics, "DK003") == 1);
+    for (const auto& d : typo.diagnostics)
+        if (d.code == "DK003") CHECK(d.span.line == 9);  // the yield card
+}
+
+TEST_CASE("radioss layouts: a zero written across a cell's end after the cell's own zero changes no value") {
+    // QA LOI44 44SLD8: Fcut's cell holds '0' and the head of '.000000000E00', whose '00' runs past column 80.
+    // The starter reads the cell's first word (sscanf): 0, the value the zero would give.
+    const auto cowper = [](const std::string& fcut_cell_start) {
+        return "/MAT/COWPER/2\nc\n     0.780000000E-02      0.00000000\n      2.05000000E+05          0.3\n" +
+               r20("180.0") + r20("450.0") + r20("0.5") + r20("1.0") + r20("300.0") +
+               "\n        400.0                 5.0                  1" + fcut_cell_start + ".000000000E00\n";
+    };
+    CHECK(warnings_and_errors(check(deck(cowper("         0       "), 2017))) == 0);
+    // A cell's first word that is no zero: the zero's head is dropped and the cell read as 5 (RAD030 says so).
+    auto five = check(deck(cowper("         5       "), 2017));
+    CHECK(count_code(five.diagnostics, "RAD030") == 1);
+}
+}  // namespace test_radioss_layouts_cpp

@@ -1,9 +1,9 @@
 // Materials: /MAT/<law>/mat_ID. sphdeck reads what the density, the mass and the sound speed
 // need, each card where the starter's CFG files put it (hm_cfg_files/config/CFG/radiossNNNN/MAT/):
-// the density card of every law, E and nu of the elastic-plastic laws, C0-C3 of the older LAW3
-// and LAW6 forms, every card of LAW2 (Johnson-Cook, the QA decks' most common law). The other cards
-// of a law are kept as text, not checked: sphdeck does not know their layout and says nothing about
-// their fields.
+// the density card of every law, E and nu of LAW23, C0-C3 of the older LAW3 and LAW6 forms, every card
+// of LAW2 (Johnson-Cook, the QA decks' most common law, whose CFG cards the generator cannot follow).
+// Any other law is read by its generated cards (grammar/radioss/generated/) where the CFG lays it out;
+// the rest of a law no table lays out is kept as text, not checked.
 #include "grammar/radioss/cards_build.hpp"
 
 namespace sphdeck::grammar::radioss::detail {
@@ -40,26 +40,12 @@ void add_material_keywords(std::vector<KeywordSpec>& out) {
                    .fallback = true,
                    .formats = {{0, {density(), opaque()}}}});
 
-    // Card 2 `%20lg%20lg` E nu (`%16lg%16lg` in V4) in every format of these laws: elast_1.cfg,
-    // matl2_plas_johns.cfg, matl2_plas_zeril.cfg, matl4_hyd_jcook.cfg, matl21_dprag.cfg,
-    // matl22_dama.cfg, matl23_plas_dama.cfg, matl24_conc.cfg, matl27_plas_brit.cfg,
-    // matl32_hill.cfg, matl36_plas_tab.cfg, matl44_cowper.cfg, matl49_steinb.cfg (E0).
+    // LAW23 (matl23_plas_dama.cfg): E and nu, then text. The other elastic-plastic laws (LAW1, 4, 21, 22, 24,
+    // 27, 32, 36, 44, 49, PLAS_ZERIL) are read whole by their generated cards (the generic /MAT above gives way
+    // to them, the model reads MAT_RHO, MAT_E and MAT_NU); /MAT/PLAS_DAM, a name no CFG file gives, keeps this
+    // table with LAW23.
     const FormatSpec elastic{0, {density(), young_poisson(), opaque()}};
-    const std::vector<std::vector<std::string_view>> elastic_laws = {{"/MAT/LAW1", "/MAT/LAW01", "/MAT/ELAST"},
-                                                                     {"/MAT/PLAS_ZERIL"},
-                                                                     {"/MAT/LAW4", "/MAT/LAW04", "/MAT/HYD_JCOOK"},
-                                                                     {"/MAT/LAW21", "/MAT/DPRAG"},
-                                                                     {"/MAT/LAW22", "/MAT/DAMA"},
-                                                                     {"/MAT/LAW23", "/MAT/PLAS_DAM"},
-                                                                     {"/MAT/LAW24", "/MAT/CONC"},
-                                                                     {"/MAT/LAW27", "/MAT/PLAS_BRIT"},
-                                                                     {"/MAT/LAW32", "/MAT/HILL"},
-                                                                     {"/MAT/LAW36", "/MAT/PLAS_TAB"},
-                                                                     {"/MAT/LAW44", "/MAT/COWPER"},
-                                                                     {"/MAT/LAW49", "/MAT/STEINB"}};
-    for (const auto& names : elastic_laws)
-        out.push_back(
-            law(names[0], {names.begin() + 1, names.end()}, "elastic-plastic material: density, E, nu", {elastic}));
+    out.push_back(law("/MAT/LAW23", {"/MAT/PLAS_DAM"}, "elastic-plastic material: density, E, nu", {elastic}));
 
     // LAW2, Johnson-Cook (matl2_plas_johns.cfg, FORMAT radioss51 to radioss2025): after E and nu, the yield
     // card (a, b, n, or from format 140 SIG_Y, UTS, EUTS when Iflag is 1), the strain-rate card (Chard from
