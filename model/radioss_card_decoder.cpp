@@ -1,6 +1,7 @@
 #include "model/radioss_card_decoder.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <fmt/format.h>
 
@@ -35,6 +36,24 @@ bool zero_before_exponent(std::string_view s) {
     s.remove_suffix(1);
     return s.find_first_not_of("0.") == std::string_view::npos && s.find('0') != std::string_view::npos &&
            s.find('.') == s.rfind('.');
+}
+
+// What the starter makes of a cell that is no number. Its reader scans the cell with sscanf (%lg, %d: hc_scan_double,
+// reader/source/cfgkernel/UTILS/str_utils.cpp, a D exponent read as E), which reads the number the text begins with
+// and ignores the rest ('25O' is 25), or reads none (meci_data_reader.cpp: an error message, and 0).
+std::string starter_reading(std::string_view token, bool integer) {
+    std::string text(token);
+    if (const std::size_t d = text.find_first_of("dD"); d != std::string::npos) text[d] = text[d] == 'D' ? 'E' : 'e';
+    char* end = nullptr;
+    if (integer)
+        (void)std::strtol(text.c_str(), &end, 10);
+    else
+        (void)std::strtod(text.c_str(), &end);
+    const auto used = static_cast<std::size_t>(end - text.c_str());
+    if (used == 0) return "the starter reads no number there (it reports the cell and takes 0)";
+    std::string_view rest = token.substr(used);
+    rest.remove_prefix(std::min(rest.find_first_not_of(" \t"), rest.size()));
+    return fmt::format("the starter reads {} and ignores '{}'", token.substr(0, used), rest);
 }
 
 std::string_view trim_cell(std::string_view s, std::size_t* offset = nullptr) {
@@ -275,7 +294,9 @@ void RadiossCardDecoder::read_value(RadiossValue& v, std::string_view field, boo
         grammar::IntegerValue n = grammar::to_integer(t);
         if (n.status != NumberStatus::Ok) {
             report("DK002", diag::Severity::Error,
-                   fmt::format("'{}' in integer field {} is not an integer", shown_cell(token), v.spec->name), v.span);
+                   fmt::format("'{}' in integer field {} is not an integer: {}", shown_cell(token), v.spec->name,
+                               starter_reading(token, true)),
+                   v.span);
             return;
         }
         if (n.written_as_real)
@@ -292,7 +313,9 @@ void RadiossCardDecoder::read_value(RadiossValue& v, std::string_view field, boo
         grammar::RealValue r = grammar::to_real(t);
         if (r.status != NumberStatus::Ok) {
             report("DK003", diag::Severity::Error,
-                   fmt::format("'{}' in real field {} is not a number", shown_cell(token), v.spec->name), v.span);
+                   fmt::format("'{}' in real field {} is not a number: {}", shown_cell(token), v.spec->name,
+                               starter_reading(token, false)),
+                   v.span);
             return;
         }
         v.number = r.value;

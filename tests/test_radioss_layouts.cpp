@@ -176,10 +176,13 @@ TEST_CASE("radioss layouts: LAW2's cards after E and nu as matl2_plas_johns.cfg 
         const std::string card4 = version >= 100 ? rate : rate.substr(0, 80);
         CHECK(warnings_and_errors(check(deck(law2(card2, abn, card4), version))) == 0);
     }
-    // A letter O typed in a (card 3) is a number no more, where the starter's formatted read fails.
+    // A letter O typed in a (card 3): the starter reads 25 of '25O' (its sscanf stops at the O), not the 250 meant.
     const std::string card2 = r20("210000") + r20("0.3") + i10("0");
     auto typo = check(deck(law2(card2, r20("25O") + r20("300") + r20("0.3"), rate), 2019));
     CHECK(count_code(typo.diagnostics, "DK003") == 1);
+    // The starter's sscanf reads the number the cell begins with (hc_scan_double): the finding says so.
+    for (const auto& d : typo.diagnostics)
+        if (d.code == "DK003") CHECK(d.message.find("the starter reads 25 and ignores 'O'") != std::string::npos);
     // Iflag 1 reads SIG_Y, UTS, EUTS on card 3 (format 140 on): the same numbers, other names, still clean.
     auto uts = check(deck(law2(r20("210000") + r20("0.3") + i10("1"), abn, rate), 2019));
     CHECK(warnings_and_errors(uts) == 0);
@@ -211,7 +214,10 @@ TEST_CASE("radioss layouts: the elastic-plastic laws read whole by their CFG car
     auto typo = check(deck(jcook(".OO1") + elast, 2019));
     REQUIRE(count_code(typo.diagnostics, "DK003") == 1);
     for (const auto& d : typo.diagnostics)
-        if (d.code == "DK003") CHECK(d.span.line == 9);  // the yield card
+        if (d.code == "DK003") {
+            CHECK(d.span.line == 9);  // the yield card
+            CHECK(d.message.find("the starter reads no number there") != std::string::npos);
+        }
 }
 
 TEST_CASE("radioss layouts: a zero written across a cell's end after the cell's own zero changes no value") {
