@@ -652,9 +652,12 @@ DeckSummary check_deck(const grammar::RawDeck& deck, std::vector<diag::Diagnosti
         FloodBound bound(before);
         walker.walk(block, *match, summary, bound);
         const CardSequence sequence(*match);
+        // Two lines of a repeated card made one: a block of that card alone (nodes, particles), or its last card
+        // after cards read once (a curve's points).
         if (const auto& cards = sequence.cards();
-            !match->schema->generated && !cards.empty() && cards.front()->repeat == keywords::CardRepeat::Repeated)
-            diagnose_joined_repeated_lines(deck, block, *cards.front(), walker.past_fields_lines(), out, before);
+            !match->schema->generated && !cards.empty() && cards.back()->repeat == keywords::CardRepeat::Repeated)
+            diagnose_joined_repeated_lines(deck, block, *cards.back(), cards.size() == 1, walker.past_fields_lines(),
+                                           out, before);
         diagnose_shifts(deck, block, walker.suspects(), out, before);
         diagnose_lost_asterisks(deck, block, walker.lost_asterisks(), out, before);
         const auto& blanks = walker.blank_cards();

@@ -192,7 +192,8 @@ bool diagnose_joined_line(const grammar::RawDeck& deck, const grammar::Block& bl
 }
 
 void diagnose_joined_repeated_lines(const grammar::RawDeck& deck, const grammar::Block& block,
-                                    const keywords::CardSpec& card, std::span<const grammar::CardLinePtr> past_fields,
+                                    const keywords::CardSpec& card, bool only_card,
+                                    std::span<const grammar::CardLinePtr> past_fields,
                                     std::vector<diag::Diagnostic>& out, std::size_t from) {
     constexpr std::size_t max_lines = 4;
     if (block.line_count == 0) return;
@@ -207,8 +208,12 @@ void diagnose_joined_repeated_lines(const grammar::RawDeck& deck, const grammar:
     const auto reads_cleanly = [&](const grammar::CardLine& line, std::string_view piece) {
         scratch.clear();
         decoder.decode_text(block, line, piece, card, values);
-        return scratch.empty();
+        return scratch.empty() && !decoder.text_past_fields();  // nothing left past a piece's fields either
     };
+    // A line of the card holds two values at least (a node and its x, a point's abscissa and ordinate): one value
+    // past the fields is no line joined (a point line's stray 7.0 in DK029_past_fields_silent.k).
+    const std::size_t fewest_words = std::min<std::size_t>(2, card.fields.size());
+    const auto line_like = [&](std::string_view piece) { return word_ends(piece).size() >= fewest_words; };
     // The two pieces' words in the card's fields, or where each other's are, the shorter one leaving out the
     // longer one's last values (a block's lines written alike: the habit tells the columns where a layout's width
     // is in doubt, *ELEMENT_SPH's NEND).
@@ -219,7 +224,7 @@ void diagnose_joined_repeated_lines(const grammar::RawDeck& deck, const grammar:
         return common > 0 && std::equal(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(common), b.begin());
     };
     std::vector<grammar::CardLinePtr> lines(past_fields.begin(), past_fields.end());  // with text past the fields
-    for (std::size_t i = from; i < out.size() && lines.size() < max_lines; ++i) {
+    for (std::size_t i = from; only_card && i < out.size() && lines.size() < max_lines; ++i) {
         if (out[i].code != "DK006" || out[i].span.file != file) continue;
         const std::uint32_t number = out[i].span.line;
         const grammar::CardLinePtr at =
@@ -234,8 +239,8 @@ void diagnose_joined_repeated_lines(const grammar::RawDeck& deck, const grammar:
         const std::string_view text = deck.text(*at);
         if (!plain_fixed(text)) continue;
         for (const std::size_t p : split_points(text, cards, block.format)) {
-            if (!reads_cleanly(*at, text.substr(0, p)) || !reads_cleanly(*at, text.substr(p)) ||
-                !in_place(text.substr(0, p), text.substr(p)))
+            if (!line_like(text.substr(0, p)) || !line_like(text.substr(p)) || !reads_cleanly(*at, text.substr(0, p)) ||
+                !reads_cleanly(*at, text.substr(p)) || !in_place(text.substr(0, p), text.substr(p)))
                 continue;
             diag::Diagnostic d = joined_finding(
                 *at, text, p,

@@ -49,12 +49,14 @@ bool diagnose_joined_line(const grammar::RawDeck& deck, const grammar::Block& bl
                           std::span<const keywords::CardSpec* const> cards, std::span<const ReadOnceLine> lines,
                           const Replay& replay, std::vector<diag::Diagnostic>& out, std::size_t from);
 
-// DK037 on lines of `card`, a card the block repeats (nodes, particles), whose text past the card's fields
-// (`past_fields`, the walk's first few) or past its last column (DK006 in out[from, end)) comes from a second line
-// of it: broken after one of its words, both pieces read as lines of `card` without a finding, their words in its
-// fields. At most a few lines a block; DK006 becomes the cause's note.
+// DK037 on lines of `card`, the card the block repeats (nodes, particles, a curve's points), whose text past the
+// card's fields (`past_fields`, the walk's first few) or, when every line of the block is one of `card`
+// (`only_card`), past its last column (DK006 in out[from, end)) comes from a second line of it: broken after one
+// of its words, both pieces read as lines of `card` without a finding, their words in its fields. At most a few
+// lines a block; DK006 becomes the cause's note.
 void diagnose_joined_repeated_lines(const grammar::RawDeck& deck, const grammar::Block& block,
-                                    const keywords::CardSpec& card, std::span<const grammar::CardLinePtr> past_fields,
+                                    const keywords::CardSpec& card, bool only_card,
+                                    std::span<const grammar::CardLinePtr> past_fields,
                                     std::vector<diag::Diagnostic>& out, std::size_t from);
 
 // DK038 at the first of `lines` (in block order) that stands right under another data line of the block (no

@@ -707,12 +707,12 @@ def digit_shift(host, rng):
 def joined_lines(host, rng):
     """Two data lines of a block made one (the line end between them deleted): the second line's text goes on
     from the first's last character, past its fields or into its blank ones, and the block loses a line. Blocks
-    whose cards are read once, and *NODE and *ELEMENT_SPH lines (their first 400)."""
+    whose cards are read once, and *NODE, *ELEMENT_SPH and *DEFINE_CURVE lines (their first 400)."""
     if host.deck.fmt != "dyna":
         return
     cands = []
     for b in host.deck.blocks:
-        if b.name.startswith(READ_AS_LINES) and b.name not in ("*NODE", "*ELEMENT_SPH"):
+        if b.name.startswith(READ_AS_LINES) and b.name not in ("*NODE", "*ELEMENT_SPH", "*DEFINE_CURVE"):
             continue
         for n, after in zip(b.data[:400], b.data[1:401]):
             if after == n + 1 and host.deck.lines[n - 1].strip() and host.deck.lines[after - 1].strip():
