@@ -49,8 +49,8 @@ constexpr RuleInfo kRows[] = {
      "a value outside the field's allowed values or range (e.g. FORM 11, IDIM 1, INI 3)"},
     {"DK008", "missing-required", Error, "0.1.0", "schema",
      {"model/card_decoder.cpp model/deck_check.cpp model/extract.cpp model/radioss_build_mesh.cpp "
-      "model/radioss_build_sph.cpp model/radioss_parameters.cpp lint/rules_radioss_sol2sph.cpp", "dk"},
-     "a field without a default left blank (error), or IDIM blank or 0 (warning: it has no default)"},
+      "model/radioss_build_sph.cpp model/radioss_parameters.cpp lint/rules_radioss_sol2sph.cpp", "dk rad"},
+     "a field without a default left blank (error), or IDIM blank or 0, or OpenRadioss's Invers blank (warnings)"},
     {"DK009", "too-many-cards", Warning, "0.1.0", "schema",
      {"model/deck_check.cpp model/radioss_decoder.cpp model/radioss_parameters.cpp", "dk"},
      "more data cards than the keyword takes"},
@@ -162,7 +162,7 @@ constexpr RuleInfo kRows[] = {
      "misreads)",
      Fixable::Unsafe, Layout::Doubtful},
     {"DK037", "lines-joined", Warning, "0.1.0", "schema",
-     {"model/joined_lines.cpp", "dk"},
+     {"model/joined_lines.cpp model/radioss_build_mesh.cpp", "dk rad"},
      "a data line that holds two card lines (the line end between them deleted), when the block misreads a card "
      "short and, broken after one of its words, reads cleanly (an error when that misreads)",
      Fixable::Unsafe, Layout::Doubtful},

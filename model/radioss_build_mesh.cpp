@@ -2,6 +2,7 @@
 // /PART, solid elements, node groups, skews and frames, /ANALY, /DEF_SOLID).
 #include <cctype>
 #include <cmath>
+#include <optional>
 #include <fmt/format.h>
 #include <type_traits>
 
@@ -158,16 +159,72 @@ void RadiossBuilder::end(const RadiossBlock& b) {
     }
 }
 
-void RadiossBuilder::end_begin(const RadiossBlock&) {
+namespace {
+
+// A run name line that ends, after blanks, in a number the starter's versions take (41 to 2026 and a little
+// beyond): with Invers blank below it, the version line was joined to the run name (its line end deleted).
+// The column to break the line at, so that the version ends at column 10 (the I10 cell), or nothing.
+std::optional<std::size_t> version_joined_at(std::string_view line) {
+    const std::size_t end = line.find_last_not_of(" \r") + 1;
+    if (end == 0) return std::nullopt;
+    const std::size_t start = line.find_last_of(' ', end - 1) + 1;  // npos + 1 == 0: one word, no name
+    if (start == 0) return std::nullopt;
+    const std::size_t name_end = line.find_last_not_of(' ', start - 1) + 1;
+    const grammar::IntegerValue v = grammar::parse_integer(line.substr(start, end - start));
+    constexpr long long oldest = 41, newest = grammar::radioss::latest_version + 10;
+    if (name_end == 0 || start - name_end < 2 || v.status != grammar::NumberStatus::Ok || v.value < oldest ||
+        v.value > newest || end - name_end > 10)
+        return std::nullopt;
+    return std::max(name_end, end >= 10 ? end - 10 : std::size_t{0});
+}
+
+}  // namespace
+
+void RadiossBuilder::end_begin(const RadiossBlock& b) {
     facts_.begin_present = true;
-    if (const RadiossValue* v = value("Runname")) facts_.run_name = std::string(v->text);
-    if (const RadiossValue* v = value("Invers")) facts_.version_span = v->span;
+    const RadiossValue* name = value("Runname");
+    if (name) facts_.run_name = std::string(name->text);
+    const RadiossValue* invers = value("Invers");
+    if (invers) facts_.version_span = invers->span;
+    if (invers && !invers->explicit_value) report_blank_version(b, *invers);
     const char* input[] = {"Input_mass", "Input_length", "Input_time"};
     const char* work[] = {"Work_mass", "Work_length", "Work_time"};
     for (int k = 0; k < 3; ++k) {
         if (const RadiossValue* v = value(input[k]); v && v->explicit_value) facts_.input_units[k] = v->text;
         if (const RadiossValue* v = value(work[k]); v && v->explicit_value) facts_.work_units[k] = v->text;
     }
+}
+
+// Invers blank on /BEGIN's version line: the deck's version is not known (sphdeck reads the newest formats). A
+// warning: what the starter then reads is not known here. When the run name above ends in a version after its
+// blanks, the two lines were one: DK037 on the run name line, with the line end put back (an unsafe fix).
+void RadiossBuilder::report_blank_version(const RadiossBlock& b, const RadiossValue& invers) {
+    const grammar::CardLinePtr first = deck_.begin_lines(*b.block);
+    const std::string_view line = deck_.text(*first);
+    if (const std::optional<std::size_t> at = version_joined_at(line)) {
+        const auto column = static_cast<std::uint32_t>(*at + 1);
+        const std::string_view version = grammar::trim_blanks(line.substr(*at));
+        diag::Diagnostic d{
+            "DK037",
+            diag::Severity::Warning,
+            fmt::format("two lines made one: the line end before column {} was deleted, so Invers {} is read as part "
+                        "of the run name, and Invers from the line below, blank there: the deck's version is unknown "
+                        "(sphdeck reads the newest formats, {})",
+                        column, version, grammar::radioss::latest_version),
+            grammar::Span{first->file, first->line, column, static_cast<std::uint32_t>(line.size() + 1)},
+            {}};
+        d.fixes.push_back(
+            {fmt::format("break the line before column {}, so that {} is read as Invers", column, version),
+             false,
+             {{grammar::Span{first->file, first->line, column, column}, "\n"}}});
+        out_.push_back(std::move(d));
+        return;
+    }
+    report("DK008", diag::Severity::Warning,
+           fmt::format("Invers, the deck's input version, is blank on /BEGIN's second line: the deck's formats are "
+                       "unknown (sphdeck reads the newest, {})",
+                       grammar::radioss::latest_version),
+           invers.span);
 }
 
 void RadiossBuilder::add_node(const std::vector<RadiossValue>& v) {

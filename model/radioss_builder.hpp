@@ -65,6 +65,7 @@ private:
 
     // Per-block handlers.
     void end_begin(const RadiossBlock& b);
+    void report_blank_version(const RadiossBlock& b, const RadiossValue& invers);
     void end_part(const RadiossBlock& b);
     void end_frame(const RadiossBlock& b);
     void end_group(const RadiossBlock& b);
