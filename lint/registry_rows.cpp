@@ -162,7 +162,7 @@ constexpr RuleInfo kRows[] = {
      "misreads)",
      Fixable::Unsafe, Layout::Doubtful},
     {"DK037", "lines-joined", Warning, "0.1.0", "schema",
-     {"model/joined_lines.cpp model/radioss_build_mesh.cpp", "dk rad"},
+     {"model/joined_lines.cpp model/radioss_build_mesh.cpp model/radioss_joined_title.cpp", "dk rad"},
      "a data line that holds two card lines (the line end between them deleted), when the block misreads a card "
      "short and, broken after one of its words, reads cleanly (an error when that misreads)",
      Fixable::Unsafe, Layout::Doubtful},

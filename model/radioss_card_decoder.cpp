@@ -95,6 +95,14 @@ void RadiossCardDecoder::decode(const grammar::CardLine& line, const grammar::ra
         decode_fixed(line, card, version, values, newer, trailing_checked, quiet_until);
 }
 
+void RadiossCardDecoder::decode_text(const grammar::CardLine& line, std::string_view text,
+                                     const grammar::radioss::CardSpec& card, int version,
+                                     std::vector<RadiossValue>& values) {
+    text_override_ = text;
+    decode_fixed(line, card, version, values, {}, true, 0);
+    text_override_.reset();
+}
+
 const std::vector<grammar::FixedField>& RadiossCardDecoder::layout_of(const grammar::radioss::CardSpec& card,
                                                                       int version) {
     if (!layouts_.empty() && layouts_[last_layout_].card == &card && layouts_[last_layout_].version == version)
@@ -126,7 +134,7 @@ void RadiossCardDecoder::decode_fixed(const grammar::CardLine& line, const gramm
     const std::uint32_t end =
         positions.empty() ? 0 : positions.back().start + std::min(positions.back().width, 1u << 20);
     const bool text_card = !card.fields.empty() && card.fields.front().cell == Cell::Line;
-    const std::string_view text = deck_.text(line);
+    const std::string_view text = text_override_ ? *text_override_ : deck_.text(line);
     const grammar::CutReport cut = grammar::cut_fields(text, line, positions, end, fields_, !text_card);
 
     if (cut.has_tab && !text_card) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -49,6 +50,11 @@ public:
                 std::vector<RadiossValue>& values, std::string_view newer = {}, bool trailing_checked = true,
                 std::uint32_t quiet_until = 0);
 
+    // The same for `text` read as a fixed-format line standing on `line` (the spans name it): a line the deck may
+    // have meant, for a diagnosis that tries a mend (model/radioss_joined_title.hpp).
+    void decode_text(const grammar::CardLine& line, std::string_view text, const grammar::radioss::CardSpec& card,
+                     int version, std::vector<RadiossValue>& values);
+
     // DK029 for lines whose integers were all pushed into the next cells (model/radioss_lone_shifts.hpp):
     // decided once the whole deck is read.
     void report_lone_shifts() { lone_shifts_.report(out_); }
@@ -72,6 +78,7 @@ private:
     std::vector<diag::Diagnostic>& out_;
     const RadiossParameters* parameters_ = nullptr;
     std::size_t block_ = 0;
+    std::optional<std::string_view> text_override_;  // decode_text's line
     RadiossLoneShifts lone_shifts_;
     std::vector<grammar::Field> fields_;
     struct Layout {

@@ -14,6 +14,7 @@
 #include "grammar/value.hpp"
 #include "model/radioss_builder.hpp"
 #include "model/radioss_card_sequence.hpp"
+#include "model/radioss_joined_title.hpp"
 #include "model/radioss_other_formats.hpp"
 #include "model/radioss_parameters.hpp"
 #include "model/radioss_unknown_causes.hpp"
@@ -214,6 +215,11 @@ private:
             } else if (line != end) {
                 b.title = std::string(trim_line(deck_.text(*line)));
                 ++line;
+                // No card line after the title: the first card perhaps joined to it (DK037).
+                if (line == end && !format.cards.empty())
+                    if (auto joined = diagnose_joined_title(deck_, *(line - 1), format.cards.front(), version_,
+                                                            keyword_name(block.keyword)))
+                        out_.push_back(std::move(*joined));
             }
         }
         if (!spec->generated) builder_.begin(b);
