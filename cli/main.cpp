@@ -9,6 +9,7 @@
 #include "cli/stream_order.hpp"
 #include "cli/suggest.hpp"
 #include "cli/unknown_option.hpp"
+#include "text/big_file_heap.hpp"
 
 namespace {
 
@@ -76,6 +77,11 @@ int main(int argc, char** argv) {
         fmt::print(stderr, "{}\n", parse_error_message(app, e, argc, argv));
         return exit_usage;
     }
+    // A batch command reads its decks once and ends: malloc's heap may be shaped for a big deck (issue 40).
+    // The servers live on and keep malloc's defaults.
+    const auto& chosen = app.get_subcommands();
+    if (!chosen.empty() && chosen.front()->get_name() != "lsp" && chosen.front()->get_name() != "mcp")
+        sphdeck::text::allow_big_file_heap();
     try {
         return run ? run() : exit_usage;
     } catch (const std::exception& e) {

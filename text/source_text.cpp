@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "text/big_file_heap.hpp"
 #include "text/page_release.hpp"
 #include "text/text_file.hpp"
 
@@ -26,7 +27,8 @@ struct SourceText::Mapping {
 };
 
 SourceText SourceText::read(const std::string& path, std::size_t min_bytes) {
-    const RegularFile file(path);  // a directory, a device, a pipe or a socket is refused here
+    const RegularFile file(path);        // a directory, a device, a pipe or a socket is refused here
+    prepare_heap_for_file(file.size());  // a big deck's model follows (does nothing unless the program allowed it)
 #ifdef SPHDECK_HAS_MMAP
     // Small files are read whole: a deck with thousands of small includes must not use thousands of
     // mappings.
