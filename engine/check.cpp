@@ -19,6 +19,7 @@
 #include "lint/typo_consequences.hpp"
 #include "model/model_builder.hpp"
 #include "model/radioss_decoder.hpp"
+#include "text/big_file_heap.hpp"
 
 namespace sphdeck::engine {
 namespace {
@@ -59,6 +60,7 @@ CheckResult analyse(grammar::RawDeck deck, const CheckOptions& options, const Ch
             ? model::build_radioss_model(result.deck, result.diagnostics, &result.summary)
             : build_dyna_model(result, previous, changed, options.share, provenance, take_from, taken, documents);
     if (take_from && taken.any()) take_from->taken = taken;
+    text::give_back_free_heap();  // the reading's freed scratch, before the rules' searches (big decks only)
     lint::RuleContext context(result.model, result.deck, options.rules, result.diagnostics);
     if (options.share) context.use_bulk_facts(options.share->lookups.facts(result.model, provenance));
     if (options.share) context.use_lookups(options.share->lookups.find(result.model, provenance));

@@ -74,4 +74,12 @@ bool prepare_heap_for_file(std::size_t bytes) {
 #endif
 }
 
+void give_back_free_heap() {
+#ifdef SPHDECK_BIG_FILE_HEAP
+    const std::lock_guard lock(growing);
+    if (prepared == 0) return;
+    malloc_trim(SIZE_MAX / 2);  // a pad larger than the top: the top is not cut, only the free chunks' pages
+#endif
+}
+
 }  // namespace sphdeck::text
