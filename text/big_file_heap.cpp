@@ -26,6 +26,9 @@ namespace {
 std::atomic<bool> allowed{false};
 std::mutex growing;
 std::size_t prepared = 0;  // the largest file the heap was grown for
+// Whether the heap grew since the free pages were last handed back: once after each growth, not after
+// every deck of a run (32 decks over one mesh faulted three times as many pages when each handed back).
+bool give_back_pending = false;
 }  // namespace
 
 void allow_big_file_heap() {
@@ -55,6 +58,7 @@ bool prepare_heap_for_file(std::size_t bytes) {
         mallopt(M_TRIM_THRESHOLD, INT_MAX);  // the heap's free top kept: the next arrays' pages are there
     }
     prepared = bytes;
+    give_back_pending = true;
     // One block from the top of the heap (sbrk, untouched but for its header), advised for huge pages over
     // its whole 2 MiB pages, and freed back to the top: the arrays that follow fault it in a huge page at a
     // time. The file's size and a quarter: what `check` holds at its peak is about the deck's size, and
@@ -77,7 +81,8 @@ bool prepare_heap_for_file(std::size_t bytes) {
 void give_back_free_heap() {
 #ifdef SPHDECK_BIG_FILE_HEAP
     const std::lock_guard lock(growing);
-    if (prepared == 0) return;
+    if (!give_back_pending) return;
+    give_back_pending = false;
     malloc_trim(SIZE_MAX / 2);  // a pad larger than the top: the top is not cut, only the free chunks' pages
 #endif
 }

@@ -33,8 +33,8 @@ bool prepare_heap_for_file(std::size_t bytes);
 
 // The free pages inside a shaped heap handed back (malloc_trim; its top, grown for huge pages, kept):
 // what the reading used and freed (the line tables of its chunks, the decoders' scratch) lies in holes the
-// model's arrays do not fill, and would stay beside the searches' grids at the peak of memory. Nothing
-// when the heap was not shaped.
+// model's arrays do not fill, and would stay beside the searches' grids at the peak of memory. Once after
+// each growth of the heap (the next decks of a run reuse those pages); nothing when it was not shaped.
 void give_back_free_heap();
 
 }  // namespace sphdeck::text
