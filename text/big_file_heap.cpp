@@ -31,14 +31,7 @@ std::size_t prepared = 0;  // the largest file the heap was grown for
 bool give_back_pending = false;
 }  // namespace
 
-void allow_big_file_heap() {
-    allowed = true;
-#ifdef SPHDECK_BIG_FILE_HEAP
-    // One arena: the threads of a parallel pass allocate from the shaped heap too (and peak 4 MiB lower at
-    // 2 threads on the 1M-particle deck than with an arena a thread).
-    mallopt(M_ARENA_MAX, 1);
-#endif
-}
+void allow_big_file_heap() { allowed = true; }
 
 bool big_file_heap_supported() {
 #ifdef SPHDECK_BIG_FILE_HEAP
@@ -56,6 +49,10 @@ bool prepare_heap_for_file(std::size_t bytes) {
     if (prepared == 0) {
         mallopt(M_MMAP_MAX, 0);              // every block from the heap, none unmapped when freed
         mallopt(M_TRIM_THRESHOLD, INT_MAX);  // the heap's free top kept: the next arrays' pages are there
+        // One arena from now on: the threads of the parallel passes that follow allocate from the shaped heap
+        // too (4 MiB less at the peak at 2 threads, 1M-particle deck). Not set for small decks, where the
+        // threads of `--jobs` would wait on one another's allocations.
+        mallopt(M_ARENA_MAX, 1);
     }
     prepared = bytes;
     give_back_pending = true;

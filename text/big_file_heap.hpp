@@ -6,8 +6,9 @@
 // of `check`'s time on the project's VM. Once a program has called allow_big_file_heap(), reading a file
 // of at least big_file_bytes (SourceText::read) makes malloc keep its arrays in the heap (M_MMAP_MAX 0),
 // never hand freed memory back (M_TRIM_THRESHOLD), so that a freed array's pages serve the next one
-// unfaulted, and grows the heap by the file's size at once, advised for transparent huge pages (a fault
-// a 2 MiB page: Debian's kernels give them on madvise only). Untouched, that space costs no memory.
+// unfaulted, use one arena, and grows the heap by the file's size and a quarter at once, advised for
+// transparent huge pages (a fault a 2 MiB page: Debian's kernels give them on madvise only). Untouched,
+// that space costs no memory. The engine hands the free pages inside it back once the model is built.
 //
 // For a process that runs one job and ends (the command line's batch commands): a long-lived one (the
 // editor server, the Python module) keeps the defaults. Nothing happens under the sanitizers (their own
