@@ -24,11 +24,13 @@ namespace sphdeck::text {
 
 namespace {
 std::atomic<bool> allowed{false};
+#ifdef SPHDECK_BIG_FILE_HEAP
 std::mutex growing;
 std::size_t prepared = 0;  // the largest file the heap was grown for
 // Whether the heap grew since the free pages were last handed back: once after each growth, not after
 // every deck of a run (32 decks over one mesh faulted three times as many pages when each handed back).
 bool give_back_pending = false;
+#endif
 }  // namespace
 
 void allow_big_file_heap() { allowed = true; }
