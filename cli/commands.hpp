@@ -17,6 +17,9 @@ struct Command {
     std::string_view description;
     // Adds the subcommand's options to `app` and returns what runs it after parsing.
     std::function<std::function<int()>(CLI::App& app)> setup;
+    // A server (editor, agents): runs until its client leaves, so it keeps malloc's defaults rather than a
+    // heap shaped for one big deck (text/big_file_heap.hpp).
+    bool serves = false;
 };
 
 std::function<int()> setup_check(CLI::App& app);

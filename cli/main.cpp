@@ -34,9 +34,9 @@ const std::vector<sphdeck::cli::Command>& commands() {
          sphdeck::cli::setup_verify},
         {"lsp",
          "serve editors over the Language Server Protocol on stdio: diagnostics as you type, hover, go to definition",
-         sphdeck::cli::setup_lsp},
+         sphdeck::cli::setup_lsp, true},
         {"mcp", "serve coding agents over the Model Context Protocol on stdio: check, fix, format, explain decks",
-         sphdeck::cli::setup_mcp},
+         sphdeck::cli::setup_mcp, true},
     };
     return table;
 }
@@ -50,10 +50,11 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", std::string("sphdeck ") + SPHDECK_VERSION);
     app.require_subcommand(1);
     std::function<int()> run;
+    bool serves = false;
     for (const Command& c : commands()) {
         CLI::App* sub = app.add_subcommand(std::string(c.name), std::string(c.description));
         auto runner = c.setup(*sub);
-        sub->callback([&run, runner] { run = runner; });
+        sub->callback([&run, &serves, runner, server = c.serves] { run = runner, serves = server; });
     }
     try {
         app.parse(argc, argv);
@@ -78,10 +79,7 @@ int main(int argc, char** argv) {
         return exit_usage;
     }
     // A batch command reads its decks once and ends: malloc's heap may be shaped for a big deck (issue 40).
-    // The servers live on and keep malloc's defaults.
-    const auto& chosen = app.get_subcommands();
-    if (!chosen.empty() && chosen.front()->get_name() != "lsp" && chosen.front()->get_name() != "mcp")
-        sphdeck::text::allow_big_file_heap();
+    if (run && !serves) sphdeck::text::allow_big_file_heap();
     try {
         return run ? run() : exit_usage;
     } catch (const std::exception& e) {

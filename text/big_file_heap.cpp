@@ -6,15 +6,8 @@
 #include <cstdlib>
 #include <mutex>
 
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(memory_sanitizer) || __has_feature(thread_sanitizer)
-#define SPHDECK_OWN_ALLOCATOR 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define SPHDECK_OWN_ALLOCATOR 1
-#endif
-#if defined(__GLIBC__) && defined(__linux__) && !defined(SPHDECK_OWN_ALLOCATOR)
+// SPHDECK_SANITIZED: the sanitizer builds (CMakeLists.txt), whose allocator is their own.
+#if defined(__GLIBC__) && defined(__linux__) && !defined(SPHDECK_SANITIZED)
 #include <malloc.h>
 #include <sys/mman.h>
 #define SPHDECK_BIG_FILE_HEAP 1
