@@ -6,11 +6,13 @@
 
 #include "model/card_sequence.hpp"
 #include "edit/format_sink.hpp"
+#include "edit/laid_out_test.hpp"
 #include "grammar/keywords/schema.hpp"
 #include "grammar/line_scan.hpp"
 #include "model/card_decoder.hpp"
 #include "model/missing_card.hpp"
 #include "model/repeated_line.hpp"
+#include "text/text_window.hpp"
 
 namespace sphdeck::edit::detail {
 namespace {
@@ -158,6 +160,9 @@ void header_above(const FormatScope& scope, const grammar::CardLine& line, std::
     out.change(line.file, line.line, text, header + std::string(eol) + std::string(text), FormatChange::Header);
 }
 
+// Lines between two hand-backs of the deck's pages read (peak memory).
+constexpr std::size_t lines_per_release = 16384;
+
 // Every line from `from` on read as one repeated card (*NODE, *ELEMENT_SPH: millions of lines), laid
 // out on all threads, each on a contiguous range, merged back in order.
 void format_repeated(const FormatScope& scope, grammar::CardLinePtr from, grammar::CardLinePtr to,
@@ -166,6 +171,7 @@ void format_repeated(const FormatScope& scope, grammar::CardLinePtr from, gramma
     const int threads = n < 8192 ? 1 : omp_get_max_threads();
     std::vector<LineChanges> parts(static_cast<std::size_t>(threads));
     const CardCells cells = columns.cells();
+    const LaidOutTest laid_out(cells.slots, cells.kinds);
 #pragma omp parallel num_threads(threads)
     {
         const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
@@ -175,13 +181,13 @@ void format_repeated(const FormatScope& scope, grammar::CardLinePtr from, gramma
         const grammar::SourceText& source = scope.deck.sources.file(from->file).text;
         std::size_t released = begin;
         std::size_t released_offset = begin < end ? from[begin].offset : 0;
-        const std::string_view file = source.view();
+        text::TextWindow window(source);  // the lines read through it (text/text_window.hpp)
         // One walk of the lines, each read once (a CardLinePtr jumped to line i looks its stretch up).
         grammar::CardLinePtr at = from + static_cast<std::ptrdiff_t>(begin);
         for (std::size_t i = begin; i < end; ++i, ++at) {
             const grammar::CardLine card = *at;
             // Most lines are laid out already: one pass over the text says so; the others are read as usual.
-            std::optional<std::size_t> length = laid_out_length(file.substr(card.offset), cells.slots, cells.kinds);
+            std::optional<std::size_t> length = laid_out.length(window.from(card.offset, laid_out.look_ahead()));
             if (!length) {
                 const grammar::ScannedLine line = grammar::scan_line(scope.deck, card);
                 format_card_line(scope, card, line.text, cells, columns.free_allowed, buffer, parts[t],
@@ -189,7 +195,7 @@ void format_repeated(const FormatScope& scope, grammar::CardLinePtr from, gramma
                 length = line.text.size();
             }
             // As the reader does once the model is built: mapped pages read go back (peak memory).
-            if (i + 1 - released == 16384 || i + 1 == end) {
+            if (i + 1 - released == lines_per_release || i + 1 == end) {
                 source.release(released_offset, card.offset + *length);
                 released = i + 1;
                 if (i + 1 < end) released_offset = (at + 1)->offset;

@@ -1,12 +1,7 @@
 #include "edit/format_line.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cstring>
-
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 #include "text/line_rewrite.hpp"
 
@@ -112,112 +107,6 @@ bool already_laid_out(std::string_view text, std::span<const FixedField> slots, 
         if (cell.size() != f.width || has_blank(cell.substr(first))) return false;
     }
     return at >= text.size();
-}
-
-namespace {
-
-// laid_out_length byte by byte: lines near their file's end, lines wider than the masks below.
-std::optional<std::size_t> laid_out_length_bytes(std::string_view rest, std::span<const FixedField> slots,
-                                                 std::span<const CellKind> kinds) {
-    const std::size_t n = std::min(slots.size(), kinds.size());
-    if (n == 0) return std::nullopt;
-    // The line's end, as RawDeck::text finds it ("\r\n", or the file's end), looked for no further than
-    // the last field's end: a longer line has text past it.
-    const std::size_t last = std::size_t{slots[n - 1].start} + slots[n - 1].width;
-    const std::size_t bound = std::min(rest.size(), last + 2);
-    const void* nl = std::memchr(rest.data(), '\n', bound);
-    std::size_t length = nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - rest.data()) : rest.size();
-    if (!nl && bound < rest.size()) return std::nullopt;
-    if (length > 0 && rest[length - 1] == '\r') --length;
-    if (length == 0 || length > last || rest[length - 1] == ' ') return std::nullopt;
-    const char* s = rest.data();
-    std::size_t at = 0;
-    for (std::size_t i = 0; i < n && at < length; ++i) {
-        const std::size_t start = slots[i].start, end = start + slots[i].width;
-        if (start < at) return std::nullopt;  // fields out of order: not the layouts this is for
-        for (; at < start && at < length; ++at)
-            if (s[at] != ' ') return std::nullopt;  // between fields
-        while (at < end && at < length && s[at] == ' ') ++at;
-        if (at == end || at == length) continue;  // a blank field, or the line's end
-        if (end > length) return std::nullopt;    // a value that ends before its field does
-        const std::size_t first = at;
-        for (; at < end; ++at)
-            if (s[at] == ' ' || s[at] == ',' || s[at] == '\t') return std::nullopt;
-        if (kinds[i] == CellKind::Number) continue;
-        if (kinds[i] != CellKind::Label || !integer_text(rest.substr(first, end - first))) return std::nullopt;
-    }
-    if (at < length) return std::nullopt;  // text past the last field
-    return length;
-}
-
-#if defined(__SSE2__)
-// The same with the line's blanks, commas and tabs as bit masks, 16 bytes at a time (a *NODE line is 72
-// bytes): each field then takes a few mask operations. nullopt where it cannot say (the caller tries bytes).
-__extension__ using LineMask = unsigned __int128;
-constexpr std::size_t mask_bytes = 128;
-
-LineMask bits(std::size_t from, std::size_t to) {  // columns [from, to), to <= 127
-    return from >= to ? 0 : ((LineMask{1} << to) - 1) & ~((LineMask{1} << from) - 1);
-}
-
-std::optional<std::optional<std::size_t>> laid_out_length_masks(std::string_view rest,
-                                                                std::span<const FixedField> slots,
-                                                                std::span<const CellKind> kinds) {
-    const std::size_t n = std::min(slots.size(), kinds.size());
-    if (n == 0 || rest.size() < mask_bytes) return std::nullopt;
-    const std::size_t last = std::size_t{slots[n - 1].start} + slots[n - 1].width;
-    if (last + 2 > mask_bytes) return std::nullopt;
-    LineMask blanks = 0, marks = 0;
-    std::size_t length = mask_bytes;
-    const __m128i blank = _mm_set1_epi8(' '), newline = _mm_set1_epi8('\n'), comma = _mm_set1_epi8(','),
-                  tab = _mm_set1_epi8('\t');
-    for (std::size_t c = 0; c < mask_bytes; c += 16) {
-        const __m128i chunk = _mm_loadu_si128(reinterpret_cast<const __m128i*>(rest.data() + c));
-        blanks |= LineMask{static_cast<unsigned>(_mm_movemask_epi8(_mm_cmpeq_epi8(chunk, blank)))} << c;
-        marks |= LineMask{static_cast<unsigned>(
-                     _mm_movemask_epi8(_mm_or_si128(_mm_cmpeq_epi8(chunk, comma), _mm_cmpeq_epi8(chunk, tab))))}
-                 << c;
-        const auto ends = static_cast<unsigned>(_mm_movemask_epi8(_mm_cmpeq_epi8(chunk, newline)));
-        if (ends != 0) {
-            length = c + static_cast<std::size_t>(std::countr_zero(ends));
-            break;
-        }
-    }
-    const std::optional<std::size_t> no;
-    if (length == mask_bytes) return no;  // longer than every field
-    if (length > 0 && rest[length - 1] == '\r') --length;
-    if (length == 0 || length > last || rest[length - 1] == ' ' || (marks & bits(0, length)) != 0) return no;
-    std::size_t at = 0;
-    for (std::size_t i = 0; i < n && at < length; ++i) {
-        const std::size_t start = slots[i].start, end = start + slots[i].width;
-        if (start < at) return std::nullopt;  // fields out of order: the bytes say
-        const LineMask gap = bits(at, std::min(start, length));
-        if ((blanks & gap) != gap) return no;  // between fields
-        if (start >= length) break;
-        const std::size_t stop = std::min(end, length);
-        const LineMask field = bits(start, stop);
-        const LineMask lead = (blanks & field) >> start;  // its blanks, from its first column
-        const auto blank_run = static_cast<std::size_t>(std::countr_one(static_cast<std::uint64_t>(lead)));
-        at = stop;
-        if (start + blank_run == stop) continue;                  // a blank field, or the line's end
-        if (end > length || (lead & (lead + 1)) != 0) return no;  // cut short, or a blank inside the value
-        if (kinds[i] == CellKind::Number) continue;
-        if (kinds[i] != CellKind::Label || !integer_text(rest.substr(start + blank_run, end - start - blank_run)))
-            return no;
-    }
-    if (at < length) return no;  // text past the last field
-    return std::optional<std::size_t>{length};
-}
-#endif
-
-}  // namespace
-
-std::optional<std::size_t> laid_out_length(std::string_view rest, std::span<const FixedField> slots,
-                                           std::span<const CellKind> kinds) {
-#if defined(__SSE2__)
-    if (const auto said = laid_out_length_masks(rest, slots, kinds)) return *said;
-#endif
-    return laid_out_length_bytes(rest, slots, kinds);
 }
 
 namespace {

@@ -42,13 +42,6 @@ LineLayout layout_fixed_line(std::string_view text, std::span<const grammar::Fix
 bool already_laid_out(std::string_view text, std::span<const grammar::FixedField> slots,
                       std::span<const CellKind> kinds);
 
-// The quick test on a deck's text, for the bulk blocks: `rest` runs from a card line's first byte to its
-// file's end. The line's length (without "\r\n") when it holds no comma or tab and already_laid_out
-// passes it; nullopt when not, or not certain (fields out of order): the caller reads the line as usual.
-// One pass over the line, its end found on the way.
-std::optional<std::size_t> laid_out_length(std::string_view rest, std::span<const grammar::FixedField> slots,
-                                           std::span<const CellKind> kinds);
-
 // A line no finding can hold back, for a format without the findings (format_deck_without_findings):
 // laid out already (already_laid_out) and every value a plain number its field reads without remark: an
 // integer of at most nine digits, or in a real field (bit i of `integer_fields` clear: field i reads a

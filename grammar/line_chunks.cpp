@@ -4,9 +4,11 @@
 #include <charconv>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <string_view>
 
 #include "text/source_map.hpp"
+#include "text/text_window.hpp"
 
 namespace sphdeck::grammar {
 namespace {
@@ -33,24 +35,61 @@ struct RadiossGrammarLines {
     }
 };
 
-// The lines of `text` (of `size` bytes) from the line start `begin` on, up to the first line whose '\n'
-// is at `end` or after it: the next line belongs to the next chunk. Returns where the next line starts.
+// A line of a chunk whose end the window did not reach is read again from its start; the window holds
+// this many bytes past a chunk's end for the line that crosses it.
+constexpr std::size_t line_slack = std::size_t{4} << 10;
+
+// The lines of the text (of `size` bytes) from the line start `begin` on, up to the first line whose '\n' is
+// at `end` or after it: the next line belongs to the next chunk. Read through `window` (each line whole in
+// it, read again from its start when it is not). Returns where the next line starts.
 template <typename GrammarLines>
-std::size_t scan_chunk(const char* text, std::size_t size, std::size_t begin, std::size_t end, LineChunk& out) {
-    const char* const text_end = text + size;
-    const char* p = text + begin;
-    while (p < text_end) {
-        if (GrammarLines::match(p, text_end)) out.special.push_back(static_cast<std::uint32_t>(out.starts.size()));
-        out.starts.push_back(static_cast<std::uint32_t>(p - text));
-        const char* newline = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(text_end - p)));
-        // While the line is in the cache: what the suppressions would search the whole text for afterwards.
-        if ((*p == '$' || *p == '#') && !out.comment_holds_marker)
-            out.comment_holds_marker = std::string_view(p, static_cast<std::size_t>((newline ? newline : text_end) - p))
-                                           .find(text::directive_marker) != std::string_view::npos;
-        p = newline ? newline + 1 : text_end;
-        if (newline && newline >= text + end) break;
+std::size_t scan_chunk(text::TextWindow& window, std::size_t size, std::size_t begin, std::size_t end, LineChunk& out) {
+    std::size_t at = begin;  // the first line not yet recorded
+    std::size_t least = line_slack;
+    while (at < size) {
+        const std::string_view bytes = window.from(at, least, std::max(end, at) - at + line_slack);
+        const bool to_end = window.at_end(bytes);
+        const char* const base = bytes.data();
+        const char* const bytes_end = base + bytes.size();
+        const char* p = base;
+        bool done = false;
+        while (p < bytes_end) {
+            const auto* newline =
+                static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(bytes_end - p)));
+            if (!newline && !to_end) break;  // the line runs past the window
+            const char* const line_end = newline ? newline : bytes_end;
+            if (GrammarLines::match(p, line_end)) out.special.push_back(static_cast<std::uint32_t>(out.starts.size()));
+            out.starts.push_back(static_cast<std::uint32_t>(at + static_cast<std::size_t>(p - base)));
+            // While the line is in the cache: what the suppressions would search the whole text for afterwards.
+            if ((*p == '$' || *p == '#') && !out.comment_holds_marker)
+                out.comment_holds_marker =
+                    std::string_view(p, static_cast<std::size_t>(line_end - p)).find(text::directive_marker) !=
+                    std::string_view::npos;
+            p = newline ? newline + 1 : bytes_end;
+            if (newline && at + static_cast<std::size_t>(newline - base) >= end) {
+                done = true;
+                break;
+            }
+        }
+        const std::size_t next = at + static_cast<std::size_t>(p - base);
+        if (done || to_end) return next;
+        least = next == at ? 2 * bytes.size() : line_slack;  // a line longer than the window: a wider one
+        at = next;
     }
-    return static_cast<std::size_t>(p - text);
+    return at;
+}
+
+// The start of the first line that begins in [from, to) (after a '\n' there), or nothing.
+std::optional<std::size_t> first_line_start(text::TextWindow& window, std::size_t from, std::size_t to) {
+    while (from < to) {
+        const std::string_view bytes = window.from(from, std::min(to - from, line_slack), to - from);
+        const std::size_t n = std::min(bytes.size(), to - from);
+        if (n == 0) return std::nullopt;
+        if (const void* newline = std::memchr(bytes.data(), '\n', n))
+            return from + static_cast<std::size_t>(static_cast<const char*>(newline) - bytes.data()) + 1;
+        from += n;
+    }
+    return std::nullopt;
 }
 
 std::atomic<std::size_t>& chosen_chunk_bytes() {
@@ -75,34 +114,34 @@ std::size_t line_chunk_bytes(std::size_t bytes) {
 }
 
 SplitLines split_lines(const SourceText& source, std::size_t first, LineSyntax syntax, std::size_t chunk_bytes) {
-    const std::string_view text = source.view();
-    const std::size_t size = text.size();
+    const std::size_t size = source.size();
     chunk_bytes = std::max<std::size_t>(chunk_bytes, 1);
     SplitLines split;
     if (first >= size) return split;
     // Chunk c holds the lines that follow a '\n' in bytes [c * chunk_bytes, (c + 1) * chunk_bytes) (chunk 0
-    // the first line too). Each thread reads its chunks in order from their first byte on, never a byte
-    // before: a page fault maps a whole folio of the page cache around the byte read, and one behind a
-    // chunk's start would stay mapped after its own chunk had gone back. Contiguous runs of chunks per
-    // thread (a static schedule) for the same reason.
+    // the first line too). Each thread reads its chunks through a window of its own (the mapping's pages
+    // are not touched: text/text_window.hpp), contiguous runs of chunks (a static schedule).
     const std::size_t count = (size + chunk_bytes - 1) / chunk_bytes;
     split.chunks.resize(count);
-#pragma omp parallel for schedule(static) if (count > 1)
-    for (std::size_t c = 0; c < count; ++c) {
-        const std::size_t from = std::max(first, c * chunk_bytes), to = std::min(size, (c + 1) * chunk_bytes);
-        std::size_t begin = first;
-        if (c > 0) {
-            const void* newline = from < to ? std::memchr(text.data() + from, '\n', to - from) : nullptr;
-            if (!newline) continue;  // a line longer than the chunk runs through it: no line starts here
-            begin = static_cast<std::size_t>(static_cast<const char*>(newline) - text.data()) + 1;
+#pragma omp parallel if (count > 1)
+    {
+        text::TextWindow window(source);
+#pragma omp for schedule(static)
+        for (std::size_t c = 0; c < count; ++c) {
+            const std::size_t from = std::max(first, c * chunk_bytes), to = std::min(size, (c + 1) * chunk_bytes);
+            std::size_t begin = first;
+            if (c > 0) {
+                const std::optional<std::size_t> start = first_line_start(window, from, to);
+                if (!start) continue;  // a line longer than the chunk runs through it: no line starts here
+                begin = *start;
+            }
+            LineChunk& chunk = split.chunks[c];
+            if (syntax == LineSyntax::Dyna)
+                scan_chunk<DynaGrammarLines>(window, size, begin, to, chunk);
+            else
+                scan_chunk<RadiossGrammarLines>(window, size, begin, to, chunk);
         }
-        LineChunk& chunk = split.chunks[c];
-        const std::size_t scanned = syntax == LineSyntax::Dyna
-                                        ? scan_chunk<DynaGrammarLines>(text.data(), size, begin, to, chunk)
-                                        : scan_chunk<RadiossGrammarLines>(text.data(), size, begin, to, chunk);
-        source.release(from, scanned);  // a mapped file's pages: read again, line by line, when decoded
     }
-    source.release(0, size);  // the folios the threads' edges mapped
     for (const LineChunk& chunk : split.chunks) {
         split.lines += chunk.starts.size();
         split.comment_holds_marker = split.comment_holds_marker || chunk.comment_holds_marker;

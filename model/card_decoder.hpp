@@ -118,14 +118,16 @@ public:
     // The plain path alone, numbers only: Read when decode_bulk would take the line on its plain path, with
     // the valid, explicit_value and number of each of its FieldValues; NotPlain when it would not (decode()
     // then reads it); TooWide for a card of more fields than a PlainRow holds (decode_bulk decides).
+    // `through_next`: the file's bytes from the line's start to `next`'s, when the caller holds them (read
+    // through a text::TextWindow): the line is read from them rather than from the file's text.
     enum class RowRead : std::uint8_t { Read, NotPlain, TooWide };
     RowRead read_row(const grammar::Block& block, const grammar::CardLine& line, const keywords::CardSpec& card,
-                     PlainRow& row, const grammar::CardLine* next = nullptr);
+                     PlainRow& row, const grammar::CardLine* next = nullptr, std::string_view through_next = {});
 
 private:
     // The text of a line the plain path may take (nothing: decode() reads it).
     std::optional<std::string_view> plain_text(const CardLayout& layout, const grammar::CardLine& line,
-                                               const grammar::CardLine* next);
+                                               const grammar::CardLine* next, std::string_view through_next = {});
     bool decode_plain(const grammar::Block& block, const grammar::CardLine& line, const keywords::CardSpec& card,
                       std::vector<FieldValue>& values, const grammar::CardLine* next);
     // `field`: the text the value was cut from; `fixed_width`: its width in a fixed-format line, 0 in

@@ -45,13 +45,15 @@ bool in_plain_range(const keywords::FieldSpec& spec, double number) {
 
 // Where a line ends when the deck's next card line is the line after it in the same file: just before the
 // '\n' in front of that line (the readers split lines there), less a '\r'. Nothing when it is not.
+// `start`: the line's first byte, in `file` or in a copy of it.
 std::optional<std::size_t> known_length(std::string_view file, const grammar::CardLine& line,
-                                        const grammar::CardLine* next) {
+                                        const grammar::CardLine* next, const char* start) {
     if (!next || next->file != line.file || next->line != line.line + 1 || next->offset <= line.offset ||
-        next->offset > file.size() || file[next->offset - 1] != '\n')
+        next->offset > file.size())
         return std::nullopt;
     std::size_t length = next->offset - 1 - line.offset;
-    if (length > 0 && file[line.offset + length - 1] == '\r') --length;
+    if (start[length] != '\n') return std::nullopt;
+    if (length > 0 && start[length - 1] == '\r') --length;
     return length;
 }
 
@@ -140,14 +142,18 @@ inline bool read_plain(const CardLayout& layout, const keywords::CardSpec& card,
 // Inline always in its two callers (below): a call a line showed in profiles.
 [[gnu::always_inline]] inline std::optional<std::string_view> CardDecoder::plain_text(const CardLayout& layout,
                                                                                       const grammar::CardLine& line,
-                                                                                      const grammar::CardLine* next) {
+                                                                                      const grammar::CardLine* next,
+                                                                                      std::string_view through_next) {
     // Free format (a comma), a tab, or text past the fields: decode() says what. A line whose end is known
     // needs its columns past the fields looked at only: a ',' or '\t' inside a field makes that field read
     // as no number, and the line goes to decode() all the same.
     if (!layout.plain) return std::nullopt;
     const std::string_view file = file_text(line.file);
-    if (const std::optional<std::size_t> length = layout.contiguous ? known_length(file, line, next) : std::nullopt) {
-        const std::string_view text(file.data() + line.offset, *length);
+    const bool held = next && next->offset > line.offset && through_next.size() == next->offset - line.offset;
+    const char* const start = held ? through_next.data() : file.data() + line.offset;
+    if (const std::optional<std::size_t> length =
+            layout.contiguous ? known_length(file, line, next, start) : std::nullopt) {
+        const std::string_view text(start, *length);
         if (text.size() > layout.significant) return std::nullopt;
         if (text.size() > layout.fields_end && !blank_past_fields(text, layout)) return std::nullopt;
         return text;
@@ -182,11 +188,11 @@ bool CardDecoder::decode_plain(const grammar::Block& block, const grammar::CardL
 }
 
 CardDecoder::RowRead CardDecoder::read_row(const grammar::Block& block, const grammar::CardLine& line,
-                                           const keywords::CardSpec& card, PlainRow& row,
-                                           const grammar::CardLine* next) {
+                                           const keywords::CardSpec& card, PlainRow& row, const grammar::CardLine* next,
+                                           std::string_view through_next) {
     if (card.fields.size() > PlainRow::max_fields) return RowRead::TooWide;
     const CardLayout& layout = layout_of(card, block.format);
-    const std::optional<std::string_view> text = plain_text(layout, line, next);
+    const std::optional<std::string_view> text = plain_text(layout, line, next, through_next);
     if (!text) return RowRead::NotPlain;
     row.count = static_cast<std::uint32_t>(card.fields.size());
     row.valid = 0, row.written = 0;

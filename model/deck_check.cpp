@@ -23,6 +23,7 @@
 #include "model/repeated_line.hpp"
 #include "model/shift_diagnosis.hpp"
 #include "model/unknown_keywords.hpp"
+#include "text/text_window.hpp"
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -417,14 +418,22 @@ private:
             FloodBound& trimmed = bounds[static_cast<std::size_t>(t)];
             grammar::CardLinePtr at = lines + static_cast<std::ptrdiff_t>(first);  // this thread's own walk
             grammar::CardLine next = first < last ? *at : grammar::CardLine{};
+            // The block's text read through a window of the thread's own (text/text_window.hpp).
+            const text::FileId file = lines->file;
+            text::TextWindow window(deck_.sources.file(file).text);
             for (std::size_t i = first; i < last; ++i) {
                 const grammar::CardLine line = next;
                 const bool followed = i + 1 < n;  // by a line of the block: where this one ends, known
                 if (followed) next = *++at;
                 if (i - released == release_lines) release_text(lines[released], line), released = i;
                 if ((i - first + 1) % trim_lines == 0) trimmed.trim(out);
+                std::string_view through_next;  // the line and its line break, when the next line follows it
+                if (followed && line.file == file && next.file == file && next.offset > line.offset)
+                    through_next =
+                        window.from(line.offset, next.offset - line.offset).substr(0, next.offset - line.offset);
                 // Most lines: numbers only, one node or particle (a particle's NEND blank: no range, no DK023).
-                const CardDecoder::RowRead read = decoder.read_row(block, line, card, row, followed ? &next : nullptr);
+                const CardDecoder::RowRead read =
+                    decoder.read_row(block, line, card, row, followed ? &next : nullptr, through_next);
                 if (read == CardDecoder::RowRead::Read && !(particles && row.is_written(3))) {
                     bulk_->row(block, i, t, row);
                     count += particles ? 1 : 0;

@@ -16,6 +16,7 @@
 
 #include "edit/format_deck.hpp"
 #include "edit/format_line.hpp"
+#include "edit/laid_out_test.hpp"
 #include "engine/check.hpp"
 
 namespace test_format_without_findings_cpp {  // each test file's names stay its own in a unity batch
@@ -84,28 +85,12 @@ private:
 
 }  // namespace
 
-TEST_CASE("format without findings: the one-pass test of a bulk line agrees with scan_line + already_laid_out") {
-    const std::vector<grammar::FixedField> slots{{0, 8}, {8, 16}, {24, 16}, {40, 16}, {56, 8}, {64, 8}};
-    using K = edit::CellKind;
-    const std::vector<K> kinds{K::Label, K::Number, K::Number, K::Number, K::Number, K::Number};
-    const std::string base = node_line(41);
-    std::vector<std::string> lines{base, base.substr(0, 40), base.substr(0, 8), ""};
-    // Every column of the line, each byte a laid-out line may or may not hold there.
-    for (std::size_t at = 0; at <= base.size(); ++at)
-        for (const char c : std::string(" ,\t\rx5$")) {
-            std::string changed = base;
-            if (at < base.size())
-                changed[at] = c;
-            else
-                changed += c;
-            lines.push_back(changed);
-            std::string inserted = base;
-            inserted.insert(at, 1, c);
-            lines.push_back(inserted);
-        }
-    lines.push_back("      ab" + base.substr(8));  // a name in the label field
-    lines.push_back(base.substr(0, 40) + std::string(16, ' ') + "       0");
-    lines.push_back(base + std::string(100, '1'));  // wider than the bit masks
+namespace {
+
+// laid_out_length on every line of `lines`, each followed by the next line, "\r\n" or the file's end, against
+// what it stands for: scan_line's test for commas and tabs, then already_laid_out.
+void check_laid_out_length(const std::vector<std::string>& lines, std::span<const grammar::FixedField> slots,
+                           std::span<const edit::CellKind> kinds) {
     // What follows the line: the next line (long enough for the 16-byte chunks, or not), or the file's end.
     const std::string tail(200, '7');
     for (const std::string& line : lines)
@@ -123,6 +108,58 @@ TEST_CASE("format without findings: the one-pass test of a bulk line agrees with
             CHECK(length.has_value() == expected);
             if (length) CHECK(*length == text.size());
         }
+}
+
+// `base` and the lines made from it by one byte changed or inserted at each column (each byte a laid-out line
+// may or may not hold there), and cut short.
+std::vector<std::string> lines_around(const std::string& base) {
+    std::vector<std::string> lines{base, base.substr(0, 40), base.substr(0, 8), ""};
+    for (std::size_t at = 0; at <= base.size(); ++at)
+        for (const char c : std::string(" ,\t\rx5$+-")) {
+            std::string changed = base;
+            if (at < base.size())
+                changed[at] = c;
+            else
+                changed += c;
+            lines.push_back(changed);
+            std::string inserted = base;
+            inserted.insert(at, 1, c);
+            lines.push_back(inserted);
+        }
+    lines.push_back(base + std::string(100, '1'));  // wider than the bit masks
+    return lines;
+}
+
+}  // namespace
+
+TEST_CASE("format without findings: the one-pass test of a bulk line agrees with scan_line + already_laid_out") {
+    using K = edit::CellKind;
+    SUBCASE("a *NODE line") {
+        const std::vector<grammar::FixedField> slots{{0, 8}, {8, 16}, {24, 16}, {40, 16}, {56, 8}, {64, 8}};
+        const std::vector<K> kinds{K::Label, K::Number, K::Number, K::Number, K::Number, K::Number};
+        const std::string base = node_line(41);
+        std::vector<std::string> lines = lines_around(base);
+        lines.push_back("      ab" + base.substr(8));  // a name in the label field
+        lines.push_back("     -12" + base.substr(8));  // a signed label
+        lines.push_back("       -" + base.substr(8));  // a sign alone
+        lines.push_back(base.substr(0, 40) + std::string(16, ' ') + "       0");
+        check_laid_out_length(lines, slots, kinds);
+    }
+    SUBCASE("labels, a text field, a gap and an unused field") {
+        const std::vector<grammar::FixedField> slots{{0, 10}, {10, 10}, {25, 10}, {35, 10}, {45, 5}};
+        const std::vector<K> kinds{K::Label, K::Text, K::Number, K::Label, K::Unused};
+        const std::string base = "        -7               1.5e3       +12";
+        std::vector<std::string> lines = lines_around(base);
+        lines.push_back("        -7       abc     1.5e3       +12");  // text in the text field
+        lines.push_back("        -7               1.5e3       +12    9");
+        lines.push_back("        +-               1.5e3      12+3");
+        check_laid_out_length(lines, slots, kinds);
+    }
+    SUBCASE("fields out of order: byte by byte") {
+        const std::vector<grammar::FixedField> slots{{10, 10}, {0, 10}};
+        const std::vector<K> kinds{K::Number, K::Number};
+        check_laid_out_length(lines_around("         1         2"), slots, kinds);
+    }
 }
 
 TEST_CASE("format without findings: a bulk block laid out already needs no finding, and gives format_deck's result") {

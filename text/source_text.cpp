@@ -1,6 +1,8 @@
 #include "text/source_text.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 
 #include "text/big_file_heap.hpp"
 #include "text/page_release.hpp"
@@ -19,9 +21,11 @@ namespace sphdeck::text {
 struct SourceText::Mapping {
     void* address = nullptr;
     std::size_t size = 0;
+    int descriptor = -1;  // the file, open for copy_bytes (pread)
     ~Mapping() {
 #ifdef SPHDECK_HAS_MMAP
         if (address) ::munmap(address, size);
+        if (descriptor >= 0) ::close(descriptor);
 #endif
     }
 };
@@ -38,6 +42,7 @@ SourceText SourceText::read(const std::string& path, std::size_t min_bytes) {
             ::madvise(address, file.size(), MADV_SEQUENTIAL);  // read ahead: the readers walk it front to back
             auto mapping = std::make_shared<Mapping>();
             mapping->address = address, mapping->size = file.size();
+            mapping->descriptor = ::fcntl(file.descriptor(), F_DUPFD_CLOEXEC, 0);  // -1: copy_bytes reads the mapping
             SourceText text;
             text.view_ = static_cast<const char*>(address);
             text.size_ = file.size();
@@ -59,6 +64,27 @@ void SourceText::release(std::size_t begin, std::size_t end) const {
 #else
     (void)begin, (void)end;
 #endif
+}
+
+void SourceText::copy_bytes(std::size_t begin, std::size_t n, char* out) const {
+    const std::string_view text = view();
+    begin = std::min(begin, text.size());
+    n = std::min(n, text.size() - begin);
+#ifdef SPHDECK_HAS_MMAP
+    if (mapping_ && mapping_->descriptor >= 0) {
+        std::size_t done = 0;
+        while (done < n) {
+            const ssize_t got = ::pread(mapping_->descriptor, out + done, n - done, static_cast<off_t>(begin + done));
+            if (got > 0) {
+                done += static_cast<std::size_t>(got);
+            } else if (got == 0 || errno != EINTR) {
+                break;  // the file shrank, or a read error: the rest from the mapping, as the readers see it
+            }
+        }
+        begin += done, out += done, n -= done;
+    }
+#endif
+    if (n > 0) std::memcpy(out, text.data() + begin, n);
 }
 
 bool SourceText::contains(std::string_view needle) const {

@@ -48,6 +48,10 @@ public:
     // process (the next access reads them again from the page cache, unchanged); owned text stays.
     void release(std::size_t begin, std::size_t end) const;
 
+    // Copies bytes [begin, begin + n) (clamped to the text) to `out`; a mapping's from its file (pread), so
+    // that its pages are not touched (text/text_window.hpp says why).
+    void copy_bytes(std::size_t begin, std::size_t n, char* out) const;
+
     // Whether `needle` occurs, read in slices that are released behind the search on a mapping
     // (a scan of the whole text must not make the whole file resident again).
     bool contains(std::string_view needle) const;
