@@ -34,10 +34,10 @@ private:
 
     std::span<const grammar::FixedField> slots_;
     std::span<const CellKind> kinds_;
-    bool masks_ = false;      // the fields fit the masks, in order: else the test goes byte by byte
-    std::size_t last_ = 0;    // the fields' last column + 1: no laid-out line is longer
-    Mask numbers_ = 0;        // the columns of the number and label fields: every other column is blank
-    Mask ends_ = 0;           // their last columns: where a value may end
+    bool masks_ = false;        // the fields fit the masks, in order: else the test goes byte by byte
+    std::size_t last_ = 0;      // the fields' last column + 1: no laid-out line is longer
+    Mask numbers_ = 0;          // the columns of the number and label fields: every other column is blank
+    Mask ends_ = 0;             // their last columns: where a value may end
     std::vector<Mask> labels_;  // each label field's columns (a label must be an integer to line up)
 
     std::optional<std::size_t> by_masks(std::string_view rest) const;

@@ -34,7 +34,7 @@ public:
 
 private:
     const SourceText& text_;
-    std::size_t bytes_;                // the buffer's usual size
+    std::size_t bytes_;               // the buffer's usual size
     std::unique_ptr<char[]> buffer_;  // on a mapping: bytes [begin_, begin_ + held_) of the text
     std::size_t capacity_ = 0;
     std::size_t begin_ = 0, held_ = 0;
