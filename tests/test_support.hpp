@@ -39,6 +39,15 @@ private:
     std::filesystem::path path_;
 };
 
+// Each finding as "CODE line:column message": two checks' findings compare as these lists.
+inline std::vector<std::string> finding_lines(const std::vector<diag::Diagnostic>& ds) {
+    std::vector<std::string> out;
+    for (const auto& d : ds)
+        out.push_back(d.code + " " + std::to_string(d.span.line) + ":" + std::to_string(d.span.column) + " " +
+                      d.message);
+    return out;
+}
+
 inline std::size_t count_code(const std::vector<diag::Diagnostic>& ds, const std::string& code) {
     std::size_t n = 0;
     for (const auto& d : ds) n += d.code == code;

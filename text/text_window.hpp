@@ -1,11 +1,12 @@
 // A window on a text that passes over millions of lines front to back (the line split, the bulk blocks'
-// decoding, the formatter's quick test) reads through: a mapped file's bytes are copied (pread) into one
-// buffer the window reuses, rather than read from the mapping. On the virtual machines the benchmarks run
+// decoding, the formatter's quick test) read through: a mapped file's bytes are copied (pread) into one
+// buffer the window reuses, rather than read from the mapping. On the virtual machine the benchmarks run
 // on, the first touch of each 4 KiB page of a mapping costs about 3 us (shadow paging), which made a pass
-// over a 100 MB mapping 80-90 ms where the same pass over a reused buffer takes 35-40 ms, the copy
-// included (bench/README.md, "the window"); on other machines the copy costs about what the page faults
-// did. A buffer the size of the processor's second-level cache keeps the bytes hot for the pass.
-// Owned text (small files, editors' buffers) is read in place.
+// over a 100 MB mapping 80-90 ms where the same pass through a reused buffer takes 35-40 ms, the copy
+// included (bench/README.md, "the deck read through a reused buffer"); where page faults are cheap the
+// gain is smaller, the copy taking their place. A buffer of the size of a second-level cache keeps the
+// bytes hot for the pass, and the mapping's pages never become resident. Owned text (small files,
+// editors' buffers) is read in place.
 #pragma once
 
 #include <cstddef>
