@@ -1,11 +1,17 @@
 #include "grammar/line_chunks.hpp"
 
+#include <algorithm>
 #include <atomic>
+#include <bit>
 #include <charconv>
 #include <cstdlib>
 #include <cstring>
 #include <optional>
 #include <string_view>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "text/source_map.hpp"
 #include "text/text_window.hpp"
@@ -35,6 +41,49 @@ struct RadiossGrammarLines {
     }
 };
 
+// The '\n's of [begin, end), found 64 bytes at a time from a bit mask: a line costs a few instructions
+// rather than a memchr call (two million calls on the 1M-particle deck, a tenth of `format --check`).
+// Queries go forward: next(from) with `from` after the last '\n' found.
+class NewlineFinder {
+public:
+    NewlineFinder(const char* begin, const char* end) : end_(end), block_(begin) { load(); }
+
+    // The first '\n' at or after `from`, or null.
+    const char* next(const char* from) {
+        if (from >= block_ + 64) block_ = from, load();
+        mask_ &= ~std::uint64_t{0} << (from - block_);  // from - block_ < 64
+        while (mask_ == 0) {
+            block_ += 64;
+            if (block_ >= end_) return nullptr;
+            load();
+        }
+        return block_ + std::countr_zero(mask_);
+    }
+
+private:
+    void load() {
+        mask_ = 0;
+        if (block_ >= end_) return;
+        if (end_ - block_ >= 64) {
+#if defined(__SSE2__)
+            const __m128i newline = _mm_set1_epi8('\n');
+            for (int k = 0; k < 4; ++k) {
+                const __m128i bytes = _mm_loadu_si128(reinterpret_cast<const __m128i*>(block_ + 16 * k));
+                mask_ |= std::uint64_t{static_cast<std::uint32_t>(_mm_movemask_epi8(_mm_cmpeq_epi8(bytes, newline)))}
+                         << (16 * k);
+            }
+            return;
+#endif
+        }
+        const std::ptrdiff_t n = std::min<std::ptrdiff_t>(end_ - block_, 64);
+        for (std::ptrdiff_t k = 0; k < n; ++k) mask_ |= std::uint64_t{block_[k] == '\n'} << k;
+    }
+
+    const char* end_;
+    const char* block_;       // the 64 bytes the mask is of
+    std::uint64_t mask_ = 0;  // their '\n's not yet passed
+};
+
 // A line of a chunk whose end the window did not reach is read again from its start; the window holds
 // this many bytes past a chunk's end for the line that crosses it.
 constexpr std::size_t line_slack = std::size_t{4} << 10;
@@ -53,9 +102,9 @@ std::size_t scan_chunk(text::TextWindow& window, std::size_t size, std::size_t b
         const char* const bytes_end = base + bytes.size();
         const char* p = base;
         bool done = false;
+        NewlineFinder newlines(base, bytes_end);
         while (p < bytes_end) {
-            const auto* newline =
-                static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(bytes_end - p)));
+            const char* const newline = newlines.next(p);
             if (!newline && !to_end) break;  // the line runs past the window
             const char* const line_end = newline ? newline : bytes_end;
             if (GrammarLines::match(p, line_end)) out.special.push_back(static_cast<std::uint32_t>(out.starts.size()));
