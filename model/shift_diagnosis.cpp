@@ -185,8 +185,16 @@ std::string_view header_above(const grammar::RawDeck& deck, const grammar::CardL
     if (line.offset < 3 || line.offset > file.size() || file[line.offset - 1] != '\n') return {};
     std::size_t end = line.offset - 1;  // the '\n' ending the line above
     const std::size_t floor = end > max_header_distance ? end - max_header_distance : 0;
-    std::size_t begin = end;
+    // The line above's start: after the last '\n' in [floor, end) (memrchr: this runs for every card line of
+    // an OpenRadioss deck, a byte loop over the line above was 8 % of reading a 1M-node one).
+    std::size_t begin = floor;
+#ifdef __GLIBC__
+    if (const void* newline = ::memrchr(file.data() + floor, '\n', end - floor))
+        begin = static_cast<std::size_t>(static_cast<const char*>(newline) - file.data()) + 1;
+#else
+    begin = end;
     while (begin > floor && file[begin - 1] != '\n') --begin;
+#endif
     if (begin > 0 && file[begin - 1] != '\n') return {};  // longer than any header
     if (end > begin && file[end - 1] == '\r') --end;
     const std::string_view above = file.substr(begin, end - begin);
