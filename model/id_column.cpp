@@ -109,17 +109,20 @@ IdColumn::const_iterator IdColumn::erase(const_iterator at) {
 }
 
 bool IdColumn::compact() {
-    // 64 KiB of entries at least: below that the pages freed are few, and small decks (an editor's) are
-    // left as they were.
-    constexpr std::size_t least = 16384;
     if (sequence_) return true;
-    if (!plain_narrow() || narrow_.size() < least) return false;
+    if (!plain_narrow() || narrow_.size() < compact_min_entries) return false;
     const long long first = narrow_[0], step = static_cast<long long>(narrow_[1]) - first;
     for (std::size_t i = 2; i < narrow_.size(); ++i)
         if (narrow_[i] != first + step * static_cast<long long>(i)) return false;
     sequence_size_ = narrow_.size(), first_ = first, step_ = step, sequence_ = true;
     std::vector<std::int32_t>().swap(narrow_);  // given back (`narrow_ = {}` would keep its capacity)
     return true;
+}
+
+void IdColumn::assign_sequence(long long first, long long step, std::size_t n) {
+    clear();
+    std::vector<std::int32_t>().swap(narrow_);
+    sequence_size_ = n, first_ = first, step_ = step, sequence_ = true;
 }
 
 void IdColumn::write_out_sequence() {

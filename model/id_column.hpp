@@ -117,7 +117,15 @@ public:
     // Keeps the column as first + step * i when it is one and long enough for that to free whole pages
     // (true then): its entries are given back. Any later change writes them out again.
     bool compact();
+    // 64 KiB of entries at least: below that the pages freed are few, and small decks (an editor's) are
+    // left as they were.
+    static constexpr std::size_t compact_min_entries = 16384;
+    // An empty column made the sequence first + step * i of `n` entries, each of which fits() (as compact()
+    // would leave the column written out; the parallel decoding's runs, model/id_run.hpp).
+    void assign_sequence(long long first, long long step, std::size_t n);
     bool sequence() const { return sequence_; }
+    // Whether `id` is kept in 4 bytes (else aside, or the column widens).
+    static bool fits(long long id) { return id > aside_mark && id <= std::numeric_limits<std::int32_t>::max(); }
     // A sequence's entry 0 and step (entry i is first + step * i); meaningful only while sequence().
     long long sequence_first() const { return first_; }
     long long sequence_step() const { return step_; }
@@ -146,8 +154,7 @@ public:
 
 private:
     static constexpr std::int32_t aside_mark = std::numeric_limits<std::int32_t>::min();
-    using Aside = std::pair<std::size_t, long long>;  // (position, id), sorted by position
-    static bool fits(long long id) { return id > aside_mark && id <= std::numeric_limits<std::int32_t>::max(); }
+    using Aside = std::pair<std::size_t, long long>;                    // (position, id), sorted by position
     [[gnu::cold, gnu::noinline]] long long aside(std::size_t i) const;  // out of line: operator[] stays small
     void widen_if_many();
     // A sequence's entries written out as narrow ones, before any change.

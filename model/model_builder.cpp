@@ -144,21 +144,93 @@ bool ModelBuilder::Bulk::wants(const keywords::KeywordMatch& match) const {
 }
 
 void ModelBuilder::Bulk::begin(const grammar::Block& block, std::size_t lines, int threads) {
+    begin_slots(block, lines, threads, true);
+}
+
+void ModelBuilder::Bulk::begin_slots(const grammar::Block& block, std::size_t lines, int threads, bool runs) {
     particles_ = block.keyword.rfind("*ELEMENT_SPH", 0) == 0;
     volume_ = block.keyword.find("_VOLUME") != std::string::npos;
     irregular_.assign(static_cast<std::size_t>(threads), {});
     wide_.assign(static_cast<std::size_t>(threads), {});
+    // A long block's ids are kept as runs while they are: its id columns are sized only when one ends.
+    deferred_ids_ = runs && lines >= IdColumn::compact_min_entries;
+    lines_ = lines;
+    runs_.assign(deferred_ids_ ? static_cast<std::size_t>(threads) : 0, {});
+    run_ended_.assign(deferred_ids_ ? static_cast<std::size_t>(threads) : 0, {});
+    opened_ = {};
     if (particles_) {
         Particles& p = owner_.model_.particles;
         base_ = p.size();
-        resize_columns(p, base_ + lines);
+        if (deferred_ids_) {
+            p.mass.resize(base_ + lines), p.volume.resize(base_ + lines), p.line.resize(base_ + lines);
+        } else {
+            resize_columns(p, base_ + lines);
+        }
         // One particle a line: the block's lines are one run (an irregular line is undone in end()).
         p.line.resize(base_);
         p.line.append_run(lines, block.first_line, 1);
     } else {
-        base_ = owner_.model_.nodes.id.size();
-        resize_columns(owner_.model_.nodes, base_ + lines);
+        Nodes& n = owner_.model_.nodes;
+        base_ = n.id.size();
+        if (deferred_ids_)
+            n.x.resize(base_ + lines), n.y.resize(base_ + lines), n.z.resize(base_ + lines);
+        else
+            resize_columns(n, base_ + lines);
     }
+}
+
+IdColumn& ModelBuilder::Bulk::id_column(int c) {
+    Model& m = owner_.model_;
+    return !particles_ ? m.nodes.id : c == 0 ? m.particles.node : m.particles.part;
+}
+
+void ModelBuilder::Bulk::open_id_column(int c) {
+    const std::lock_guard lock(opening_);
+    if (opened_[static_cast<std::size_t>(c)]) return;
+    id_column(c).resize(base_ + lines_);
+    opened_[static_cast<std::size_t>(c)] = true;
+}
+
+void ModelBuilder::Bulk::write_run(int c, int thread, const IdRun& run) {
+    IdColumn& column = id_column(c);
+    for (std::size_t k = 0; k < run.count; ++k) {
+        const std::size_t slot = base_ + run.start + k;
+        if (!column.set_narrow(slot, run.at(k)))
+            wide_[static_cast<std::size_t>(thread)].push_back({slot, run.at(k), c == 1});
+    }
+}
+
+void ModelBuilder::Bulk::settle_id_columns() {
+    if (!deferred_ids_) return;
+    deferred_ids_ = false;
+    for (int c = 0; c < (particles_ ? 2 : 1); ++c) {
+        const auto at = static_cast<std::size_t>(c);
+        // The threads' runs, in line order, chained into one (every line gave an id): the column is that.
+        bool chained = base_ == 0 && !opened_[at] && id_column(c).empty();
+        std::size_t next = 0;
+        long long first = 0, step = 0;
+        for (std::size_t t = 0; t < runs_.size() && chained; ++t) {
+            const IdRun& run = runs_[t][at];
+            if (run.count == 0) continue;
+            if (run.start != next) chained = false;
+            if (next == 0) {
+                first = run.first, step = run.count > 1 ? run.step : 0;
+            } else {
+                if (next == 1) step = run.first - first;  // the first run was one id
+                chained = chained && run.first == first + step * static_cast<long long>(run.start) &&
+                          (run.count < 2 || run.step == step);
+            }
+            next = run.end();
+        }
+        if (chained && next == lines_) {
+            id_column(c).assign_sequence(first, step, lines_);
+            continue;
+        }
+        open_id_column(c);
+        for (std::size_t t = 0; t < runs_.size(); ++t)
+            if (!run_ended_[t][at]) write_run(c, static_cast<int>(t), runs_[t][at]);
+    }
+    runs_.clear(), run_ended_.clear();
 }
 
 template <typename Field>
@@ -166,8 +238,20 @@ void ModelBuilder::Bulk::put(std::size_t index, int thread, std::size_t count, c
     const std::size_t slot = base_ + index;
     auto& irregular = irregular_[static_cast<std::size_t>(thread)];
     auto& wide = wide_[static_cast<std::size_t>(thread)];
-    // An id too wide for its column's 4 bytes is set after the threads (IdColumn::set_narrow).
+    // An id too wide for its column's 4 bytes is set after the threads (IdColumn::set_narrow). While the
+    // thread's ids of a column run on (IdRun), nothing is written; the first that does not, writes them out.
     const auto set = [&](IdColumn& column, bool is_part, long long id) {
+        if (deferred_ids_) {
+            const int c = is_part ? 1 : 0;
+            const auto t = static_cast<std::size_t>(thread);
+            IdRun& run = runs_[t][static_cast<std::size_t>(c)];
+            if (!run_ended_[t][static_cast<std::size_t>(c)]) {
+                if (run.extend(index, id)) return;
+                open_id_column(c);
+                write_run(c, thread, run);
+                run_ended_[t][static_cast<std::size_t>(c)] = 1;
+            }
+        }
         if (!column.set_narrow(slot, id)) wide.push_back({slot, id, is_part});
     };
     const auto [id_valid, id] = field(0);
@@ -224,6 +308,7 @@ void ModelBuilder::Bulk::set_wide_ids() {
 }
 
 void ModelBuilder::Bulk::end(const grammar::Block&) {
+    settle_id_columns();
     set_wide_ids();
     bool regular = true;
     for (const auto& list : irregular_) regular = regular && list.empty();
@@ -319,7 +404,7 @@ std::optional<BulkVisitor::Around> ModelBuilder::Bulk::reuse_around(const gramma
             std::size_t{block.line_count} + removed != std::size_t{before.line_count} + added ||
             block.line_count == 0 || owner_.deck_.begin_lines(block)->file != changed.file)
             continue;
-        begin(block, block.line_count, 1);  // the block's slots, as for a block decoded on one thread
+        begin_slots(block, block.line_count, 1, false);  // the block's slots, as for a block decoded on one thread
         const std::size_t head = changed.first_card - before.first_line;  // lines before the edit
         const std::size_t tail = before.line_count - (changed.old_card_end - before.first_line);
         const std::size_t old_tail = before.first_slot + (changed.old_card_end - before.first_line);

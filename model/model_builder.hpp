@@ -2,12 +2,15 @@
 // the keyword records into the typed parts of the model.
 #pragma once
 
+#include <array>
+#include <mutex>
 #include <vector>
 
 #include "diag/diagnostic.hpp"
 #include "grammar/raw_deck.hpp"
 #include "model/bulk_reuse.hpp"
 #include "model/deck_check.hpp"
+#include "model/id_run.hpp"
 #include "model/model.hpp"
 #include "model/shared_bulk.hpp"
 
@@ -70,6 +73,13 @@ private:
         // line() and row(): the line's `count` fields, field i's FieldValue::valid and number given by `field(i)`.
         template <typename Field>
         void put(std::size_t index, int thread, std::size_t count, const Field& field);
+        // begin(); `runs`: the id columns kept as runs while they are (the parallel decoding's blocks).
+        void begin_slots(const grammar::Block& block, std::size_t lines, int threads, bool runs);
+        // Column c of the ids: 0 the node ids or the particles' nodes, 1 the particles' parts.
+        IdColumn& id_column(int c);
+        void open_id_column(int c);  // sized for the block's lines, once (any thread)
+        void write_run(int c, int thread, const IdRun& run);
+        void settle_id_columns();  // after the threads: one sequence each, or written out
         void set_wide_ids();
         void end_nodes();
         void end_particles();
@@ -82,6 +92,14 @@ private:
         std::size_t base_ = 0;                           // first slot of the block in the arrays
         std::vector<std::vector<Irregular>> irregular_;  // per thread
         std::vector<std::vector<WideId>> wide_;          // per thread
+        // The ids as runs (model/id_run.hpp) while deferred_ids_: per thread and id column, and whether the
+        // run ended (the thread writes its ids into the column since). A column is sized only once one ends.
+        bool deferred_ids_ = false;
+        std::size_t lines_ = 0;
+        std::vector<std::array<IdRun, 2>> runs_;
+        std::vector<std::array<char, 2>> run_ended_;  // char: threads write their own
+        std::mutex opening_;
+        std::array<bool, 2> opened_{};  // under opening_
     };
 
     void add_node(const std::vector<FieldValue>& values);
