@@ -61,6 +61,10 @@ void IdColumn::resize(std::size_t n) {
 }
 
 void IdColumn::append(const IdColumn& from, std::size_t first, std::size_t count) {
+    if (size() == 0 && from.sequence_ && count >= compact_min_entries) {  // a long piece of a sequence: one too
+        assign_sequence(from[first], from.step_, count);
+        return;
+    }
     write_out();
     if (!full_ && from.plain_narrow()) {
         const auto begin = from.narrow_.begin() + static_cast<std::ptrdiff_t>(first);
