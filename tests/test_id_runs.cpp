@@ -29,10 +29,12 @@ std::string deck(const std::vector<long long>& node_ids, const std::vector<long 
                  const std::string& odd = "") {
     std::string text = "*KEYWORD\n*NODE\n";
     for (std::size_t i = 0; i < node_ids.size(); ++i)
-        text += fmt::format("{:>8}{:>16.8e}{:>16.8e}{:>16.8e}\n", node_ids[i], 0.001 * static_cast<double>(i), 0.0, 0.0);
+        text +=
+            fmt::format("{:>8}{:>16.8e}{:>16.8e}{:>16.8e}\n", node_ids[i], 0.001 * static_cast<double>(i), 0.0, 0.0);
     text += "*ELEMENT_SPH\n";
     for (std::size_t i = 0; i < node_ids.size(); ++i)
-        text += !odd.empty() && i == odd_at ? odd + "\n" : fmt::format("{:>8}{:>8}{:>16.8e}\n", node_ids[i], parts[i], 1e-3);
+        text += !odd.empty() && i == odd_at ? odd + "\n"
+                                            : fmt::format("{:>8}{:>8}{:>16.8e}\n", node_ids[i], parts[i], 1e-3);
     return text + "*END\n";
 }
 
