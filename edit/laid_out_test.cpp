@@ -95,9 +95,4 @@ std::optional<std::size_t> LaidOutTest::by_masks(std::string_view rest) const {
 #endif
 }
 
-std::optional<std::size_t> laid_out_length(std::string_view rest, std::span<const grammar::FixedField> slots,
-                                           std::span<const CellKind> kinds) {
-    return LaidOutTest(slots, kinds).length(rest);
-}
-
 }  // namespace sphdeck::edit

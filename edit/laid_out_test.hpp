@@ -43,8 +43,4 @@ private:
     std::optional<std::size_t> by_masks(std::string_view rest) const;
 };
 
-// LaidOutTest(slots, kinds).length(rest), for one line.
-std::optional<std::size_t> laid_out_length(std::string_view rest, std::span<const grammar::FixedField> slots,
-                                           std::span<const CellKind> kinds);
-
 }  // namespace sphdeck::edit

@@ -2,7 +2,7 @@
 // laid out already (issue 40): it must give up (nullopt) whenever one line would change or be held back by
 // a finding, wherever that line lies in a bulk block (first, last, at a thread's or a page release's chunk
 // edge), in every block format (standard, long `+`, I10 `%`, OpenRadioss), and otherwise give format_deck's
-// own result. Also the one-pass quick test of the bulk lines (edit::laid_out_length) against the two it
+// own result. Also the one-pass quick test of the bulk lines (edit::LaidOutTest) against the two it
 // stands for (grammar::scan_line and edit::already_laid_out).
 #include <doctest/doctest.h>
 
@@ -87,10 +87,11 @@ private:
 
 namespace {
 
-// laid_out_length on every line of `lines`, each followed by the next line, "\r\n" or the file's end, against
+// LaidOutTest::length on every line of `lines`, each followed by the next line, "\r\n" or the file's end, against
 // what it stands for: scan_line's test for commas and tabs, then already_laid_out.
 void check_laid_out_length(const std::vector<std::string>& lines, std::span<const grammar::FixedField> slots,
                            std::span<const edit::CellKind> kinds) {
+    const edit::LaidOutTest laid_out(slots, kinds);
     // What follows the line: the next line (long enough for the 16-byte chunks, or not), or the file's end.
     const std::string tail(200, '7');
     for (const std::string& line : lines)
@@ -104,7 +105,7 @@ void check_laid_out_length(const std::vector<std::string>& lines, std::span<cons
             std::string text = file.substr(0, file.find('\n'));
             if (!text.empty() && text.back() == '\r') text.pop_back();
             const bool expected = !comma_or_tab && edit::already_laid_out(text, slots, kinds);
-            const std::optional<std::size_t> length = edit::laid_out_length(file, slots, kinds);
+            const std::optional<std::size_t> length = laid_out.length(file);
             CHECK(length.has_value() == expected);
             if (length) CHECK(*length == text.size());
         }
