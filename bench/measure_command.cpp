@@ -1,12 +1,18 @@
-// measure_command: run a command several times and report wall time and peak memory.
+// measure_command: run a command several times and report wall time, CPU time and peak memory.
 //
 //   measure_command RUNS -- CMD [ARGS...]
 //
 // Each run forks and execs CMD (PATH is searched) with stdout and stderr sent to /dev/null, waits with
-// wait4() and prints one line per run: wall seconds, peak resident set size (ru_maxrss, in MB of
-// 2^20 bytes) and how the run ended. The last line gives the medians in a form scripts can parse:
+// wait4() and prints one line per run: wall seconds, user and system CPU seconds, peak resident set
+// size (ru_maxrss, in MB of 2^20 bytes) and how the run ended. The last two lines give the medians in a
+// form scripts can parse:
 //
+//   median_user_seconds=0.340000 median_system_seconds=0.024000
 //   median_seconds=0.412345 median_peak_rss_mb=153.2
+//
+// The CPU split is there because on a virtual machine the system time (the kernel zeroing the pages a
+// process touches first) can move by a factor of ten between runs while the user time holds
+// (bench/README.md, stop 67).
 //
 // Exit codes 0 and 1 count as success (`sphdeck check` exits 1 when it finds errors in the deck).
 // A run that exits with 2 or more, or is killed by a signal, is a failure: it is reported, the
@@ -33,6 +39,7 @@ namespace {
 
 struct Run {
     double seconds = 0;
+    double user_seconds = 0, system_seconds = 0;
     double peak_rss_mb = 0;
     int status = 0;  // raw wait status
 };
@@ -74,6 +81,10 @@ bool run_once(char** argv, Run& run) {
         return false;
     }
     run.seconds = std::chrono::duration<double>(stop - start).count();
+    const auto of = [](const timeval& t) {
+        return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec);
+    };
+    run.user_seconds = of(usage.ru_utime), run.system_seconds = of(usage.ru_stime);
     run.peak_rss_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
     run.status = status;
     return true;
@@ -118,18 +129,21 @@ int main(int argc, char** argv) {
     }
     char** command = argv + 3;
 
-    std::vector<double> seconds, rss;
+    std::vector<double> seconds, user, system, rss;
     int failures = 0;
     for (int i = 1; i <= runs; ++i) {
         Run run;
         if (!run_once(command, run)) return 1;
         char how[128];
         if (!describe(run.status, how, sizeof how)) ++failures;
-        std::printf("run %d/%d: %.6f s, peak RSS %.1f MB, %s\n", i, runs, run.seconds, run.peak_rss_mb, how);
+        std::printf("run %d/%d: %.6f s (user %.3f s, system %.3f s), peak RSS %.1f MB, %s\n", i, runs, run.seconds,
+                    run.user_seconds, run.system_seconds, run.peak_rss_mb, how);
         std::fflush(stdout);
         seconds.push_back(run.seconds);
+        user.push_back(run.user_seconds), system.push_back(run.system_seconds);
         rss.push_back(run.peak_rss_mb);
     }
+    std::printf("median_user_seconds=%.6f median_system_seconds=%.6f\n", median(user), median(system));
     std::printf("median_seconds=%.6f median_peak_rss_mb=%.1f\n", median(seconds), median(rss));
     if (failures > 0) {
         std::fprintf(stderr, "measure_command: %d of %d runs of '%s' failed\n", failures, runs, command[0]);

@@ -80,6 +80,38 @@ NeighbourGrid::NeighbourGrid(std::span<const double> x, std::span<const double> 
         bin_dense(x, y, z);
 }
 
+template <typename CellOfPoint>
+void NeighbourGrid::gather(std::span<const double> x, std::span<const double> y, std::span<const double> z,
+                           const CellOfPoint& cell_id) {
+    const std::size_t n = x.size(), slots = start_.size() - 1;  // cells (dense) or occupied cells (hashed)
+    order_.resize(n);
+    x_.resize(n), y_.resize(n), z_.resize(n);
+    // start_ serves as the cursors (no copy of a 4-byte entry per cell at the preview's peak):
+    // afterwards each entry holds the next cell's start, and one shift puts them back. On several
+    // threads each owns the cells of a run of about n / threads points and scans every point.
+    const int threads = bin_threads(n);
+    std::vector<std::size_t> bound(static_cast<std::size_t>(threads) + 1, slots);  // before any cursor moves
+    for (int t = 0; t < threads; ++t)  // the first cell starting at or after the run's first point
+        bound[static_cast<std::size_t>(t)] =
+            t == 0 ? 0
+                   : static_cast<std::size_t>(
+                         std::lower_bound(start_.begin(), start_.end() - 1, share_of(n, t, threads).first) -
+                         start_.begin());
+#pragma omp parallel for num_threads(threads) schedule(static, 1) if (threads > 1)
+    for (int t = 0; t < threads; ++t) {
+        const std::size_t c0 = bound[static_cast<std::size_t>(t)], c1 = bound[static_cast<std::size_t>(t) + 1];
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::uint32_t c = cell_id(i);
+            if (c < c0 || c >= c1) continue;
+            const std::uint32_t k = start_[c]++;
+            order_[k] = static_cast<std::uint32_t>(i);
+            x_[k] = x[i], y_[k] = y[i], z_[k] = z[i];
+        }
+    }
+    std::copy_backward(start_.begin(), start_.end() - 1, start_.end());
+    start_[0] = 0;
+}
+
 // A counting sort by cell, stable (points of a cell in input order), the same on any number of
 // threads: each thread owns a run of cells and scans every point for those in its run, so no
 // two threads write one counter or one slot, and nothing per thread and cell is allocated.
@@ -87,20 +119,24 @@ void NeighbourGrid::bin_dense(std::span<const double> x, std::span<const double>
     const std::size_t n = x.size(), cells = static_cast<std::size_t>(n_[0]) * n_[1] * n_[2];
     const int threads = bin_threads(n);
     start_.assign(cells + 1, 0);
-    std::vector<std::uint32_t> cell_id(n);
-#pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
-    for (std::size_t i = 0; i < n; ++i) {
+    const auto cell_index = [&](std::size_t i) {
         const Cell c = cell_of(x[i], y[i], z[i]);
-        cell_id[i] = static_cast<std::uint32_t>(index(c[0], c[1], c[2]));
-    }
+        return static_cast<std::uint32_t>(index(c[0], c[1], c[2]));
+    };
     if (threads == 1) {
-        for (std::size_t i = 0; i < n; ++i) ++start_[cell_id[i] + 1];
+        // Each point's cell computed again in the gathering rather than kept: no array of a cell a point
+        // (4 MB a million points) beside the copies at the preview's peak of memory.
+        for (std::size_t i = 0; i < n; ++i) ++start_[cell_index(i) + 1];
         for (std::size_t c = 0; c < cells; ++c) {
             if (start_[c + 1]) occupied_cells_.push_back(static_cast<std::uint32_t>(c));
             start_[c + 1] += start_[c];
         }
-        return gather(x, y, z, cell_id);
+        return gather(x, y, z, cell_index);
     }
+    // On several threads each scans every point for the cells of its run: the cells computed once.
+    std::vector<std::uint32_t> cell_id(n);
+#pragma omp parallel for num_threads(threads) schedule(static)
+    for (std::size_t i = 0; i < n; ++i) cell_id[i] = cell_index(i);
     // Counts and running sums per run of cells, then each run's offset.
     std::vector<std::vector<std::uint32_t>> occupied(static_cast<std::size_t>(threads));
     std::vector<std::uint32_t> run_total(static_cast<std::size_t>(threads) + 1, 0);
@@ -125,7 +161,7 @@ void NeighbourGrid::bin_dense(std::span<const double> x, std::span<const double>
         for (std::size_t c = c0 + 1; c <= c1; ++c) start_[c] += offset;
     }
     for (auto& o : occupied) occupied_cells_.insert(occupied_cells_.end(), o.begin(), o.end());
-    gather(x, y, z, cell_id);
+    gather(x, y, z, [&](std::size_t i) { return cell_id[i]; });
 }
 
 void NeighbourGrid::bin_hashed(std::span<const double> x, std::span<const double> y, std::span<const double> z) {
@@ -156,38 +192,7 @@ void NeighbourGrid::bin_hashed(std::span<const double> x, std::span<const double
         ++start_[cell_id[i] + 1];
     }
     for (std::size_t o = 0; o < occupied_keys_.size(); ++o) start_[o + 1] += start_[o];
-    gather(x, y, z, cell_id);
-}
-
-void NeighbourGrid::gather(std::span<const double> x, std::span<const double> y, std::span<const double> z,
-                           const std::vector<std::uint32_t>& cell_id) {
-    const std::size_t n = x.size(), slots = start_.size() - 1;  // cells (dense) or occupied cells (hashed)
-    order_.resize(n);
-    x_.resize(n), y_.resize(n), z_.resize(n);
-    // start_ serves as the cursors (no copy of a 4-byte entry per cell at the preview's peak):
-    // afterwards each entry holds the next cell's start, and one shift puts them back. On several
-    // threads each owns the cells of a run of about n / threads points and scans every point.
-    const int threads = bin_threads(n);
-    std::vector<std::size_t> bound(static_cast<std::size_t>(threads) + 1, slots);  // before any cursor moves
-    for (int t = 0; t < threads; ++t)  // the first cell starting at or after the run's first point
-        bound[static_cast<std::size_t>(t)] =
-            t == 0 ? 0
-                   : static_cast<std::size_t>(
-                         std::lower_bound(start_.begin(), start_.end() - 1, share_of(n, t, threads).first) -
-                         start_.begin());
-#pragma omp parallel for num_threads(threads) schedule(static, 1) if (threads > 1)
-    for (int t = 0; t < threads; ++t) {
-        const std::size_t c0 = bound[static_cast<std::size_t>(t)], c1 = bound[static_cast<std::size_t>(t) + 1];
-        for (std::size_t i = 0; i < n; ++i) {
-            const std::uint32_t c = cell_id[i];
-            if (c < c0 || c >= c1) continue;
-            const std::uint32_t k = start_[c]++;
-            order_[k] = static_cast<std::uint32_t>(i);
-            x_[k] = x[i], y_[k] = y[i], z_[k] = z[i];
-        }
-    }
-    std::copy_backward(start_.begin(), start_.end() - 1, start_.end());
-    start_[0] = 0;
+    gather(x, y, z, [&](std::size_t i) { return cell_id[i]; });
 }
 
 NeighbourGrid::Cell NeighbourGrid::decode(std::uint64_t k) const {

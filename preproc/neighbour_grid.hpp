@@ -243,8 +243,10 @@ private:
     Range hashed_row_range(std::uint32_t x0, std::uint32_t x1, std::uint32_t iy, std::uint32_t iz) const;
     void bin_dense(std::span<const double> x, std::span<const double> y, std::span<const double> z);
     void bin_hashed(std::span<const double> x, std::span<const double> y, std::span<const double> z);
+    // Copies the points in cell order; cell_id(i) is point i's cell (dense) or occupied cell (hashed).
+    template <typename CellOfPoint>
     void gather(std::span<const double> x, std::span<const double> y, std::span<const double> z,
-                const std::vector<std::uint32_t>& cell_id);
+                const CellOfPoint& cell_id);
 
     double cell_ = 1.0, inv_cell_ = 1.0;
     std::array<double, 3> origin_{};
