@@ -52,7 +52,7 @@ struct FloatCellScratch {
 // points with a pair within sqrt(tol2). `support`: every point's (the counts' radius). `box`: the cell's
 // faces. Returns false, having changed nothing, when the bound does not cover the cell.
 using CountCellFloat = bool (*)(const NeighbourGrid& g, double support, std::uint32_t first, std::uint32_t last,
-                                std::span<const NeighbourGrid::Range> ranges, double tol2, std::uint64_t* count,
+                                std::span<const NeighbourGrid::Range> ranges, double tol2, std::uint32_t* count,
                                 std::vector<std::uint32_t>& close_points, const NeighbourGrid::BlockBounds& box,
                                 FloatCellScratch& scratch);
 

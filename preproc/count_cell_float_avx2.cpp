@@ -95,7 +95,7 @@ inline std::int32_t lane_sum(__m256i v) {
 }
 
 bool count_cell_avx2(const NeighbourGrid& g, double support, std::uint32_t first, std::uint32_t last,
-                     std::span<const NeighbourGrid::Range> ranges, double tol2, std::uint64_t* count,
+                     std::span<const NeighbourGrid::Range> ranges, double tol2, std::uint32_t* count,
                      std::vector<std::uint32_t>& close_points, const NeighbourGrid::BlockBounds& box,
                      FloatCellScratch& s) {
     const double cell = g.cell_size();
@@ -236,9 +236,11 @@ bool count_cell_avx2(const NeighbourGrid& g, double support, std::uint32_t first
         gained[i] += lane_sum(within) + fixed;
         if (close) close_points.push_back(k);
     }
+    // A point's gain in a cell may be negative (the re-tests took back float counts): added modulo 2^32, the
+    // sum is its count all the same.
     for (std::size_t q = 0; q < piece_count; ++q)
         for (std::uint32_t t = 0; t < pieces[q].size; ++t)
-            count[pieces[q].sorted + t] += static_cast<std::uint64_t>(gained[pieces[q].at + t]);
+            count[pieces[q].sorted + t] += static_cast<std::uint32_t>(gained[pieces[q].at + t]);
     return true;
 }
 

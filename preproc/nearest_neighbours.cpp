@@ -464,7 +464,7 @@ static_assert(std::uint64_t{collapsed_least} * (collapsed_least - 1) / 2 > coinc
 template <bool Uniform, bool Weighted>
 [[gnu::always_inline]] inline void count_pairs(const NeighbourGrid& g, const double* support,
                                                const std::uint32_t* weight, std::uint32_t k, std::uint32_t b,
-                                               std::uint32_t e, double tol2, std::uint64_t* count,
+                                               std::uint32_t e, double tol2, std::uint32_t* count,
                                                std::uint64_t& within, std::uint64_t& close) {
     const double px = g.x()[k], py = g.y()[k], pz = g.z()[k], sk = Uniform ? support[0] : support[k];
     const std::uint64_t wk = Weighted ? weight[k] : 1;
@@ -479,10 +479,10 @@ template <bool Uniform, bool Weighted>
             const double r = 0.5 * (sk + support[j]);
             radius2 = r * r;
         }
-        const std::uint64_t m = r2 < radius2;
+        const std::uint32_t m = r2 < radius2;
         if constexpr (Weighted) {
             w += m * weight[j];
-            count[j] += m * wk;
+            count[j] += m * static_cast<std::uint32_t>(wk);
         } else {
             w += m;
             count[j] += m;
@@ -502,7 +502,7 @@ template <bool Uniform, bool Weighted>
 [[gnu::always_inline]] inline void count_cell(const NeighbourGrid& g, const double* support,
                                               const std::uint32_t* weight, std::uint32_t first, std::uint32_t last,
                                               std::span<const NeighbourGrid::Range> ranges, double tol2,
-                                              std::uint64_t* count, std::vector<std::uint32_t>& close_points,
+                                              std::uint32_t* count, std::vector<std::uint32_t>& close_points,
                                               const NeighbourGrid::BlockBounds& box, double largest) {
     for (std::uint32_t k = first; k < last; ++k) {
         std::uint64_t within = 0, close = 0;
@@ -526,7 +526,7 @@ template <bool Uniform, bool Weighted>
             if (b == e || (r == 2 && skip_low) || (r == 4 && skip_high)) continue;
             count_pairs<Uniform, Weighted>(g, support, weight, k, b, e, tol2, count, within, close);
         }
-        count[k] += within;
+        count[k] += static_cast<std::uint32_t>(within);  // at most the points: below 2^32
         if (close) close_points.push_back(k);
     }
 }
@@ -534,12 +534,12 @@ template <bool Uniform, bool Weighted>
 // count_cell compiled for AVX2 and the baseline, for uniform and for mixed supports, plain or weighted (points
 // collapsed: collapsed_points.hpp).
 using CountCell = void (*)(const NeighbourGrid&, const double*, const std::uint32_t*, std::uint32_t, std::uint32_t,
-                           std::span<const NeighbourGrid::Range>, double, std::uint64_t*, std::vector<std::uint32_t>&,
+                           std::span<const NeighbourGrid::Range>, double, std::uint32_t*, std::vector<std::uint32_t>&,
                            const NeighbourGrid::BlockBounds&, double);
 #define SPHDECK_COUNT_CELL(name, uniform, weighted)                                                                 \
     SPHDECK_CLONES void name(const NeighbourGrid& g, const double* support, const std::uint32_t* weight,            \
                              std::uint32_t first, std::uint32_t last, std::span<const NeighbourGrid::Range> ranges, \
-                             double tol2, std::uint64_t* count, std::vector<std::uint32_t>& close_points,           \
+                             double tol2, std::uint32_t* count, std::vector<std::uint32_t>& close_points,           \
                              const NeighbourGrid::BlockBounds& box, double largest) {                               \
         count_cell<uniform, weighted>(g, support, weight, first, last, ranges, tol2, count, close_points, box,      \
                                       largest);                                                                     \
@@ -560,7 +560,7 @@ SPHDECK_COUNT_CELL(count_cell_weighted_mixed, false, true)
 // the order of the additions changes nothing.
 template <bool Uniform>
 void count_symmetric(const NeighbourGrid& g, std::span<const double> support, const std::uint32_t* weight, double tol2,
-                     double largest, std::vector<std::uint64_t>& count, std::vector<std::uint32_t>& close_points) {
+                     double largest, std::vector<std::uint32_t>& count, std::vector<std::uint32_t>& close_points) {
     static_assert(count_reach == 1, "the half-block rows assume cells as large as the support");
     // The plain uniform counts in float lanes where the CPU has them (count_cell_float.hpp): the same counts.
     const CountCellFloat in_floats = Uniform && !weight ? count_cell_float() : nullptr;
@@ -623,7 +623,7 @@ void count_symmetric(const NeighbourGrid& g, std::span<const double> support, co
 template <bool Weighted>
 [[gnu::always_inline]] inline void count_sampled(const NeighbourGrid& g, const std::vector<double>& support,
                                                  const std::uint32_t* weight, std::size_t stride,
-                                                 std::vector<std::uint64_t>& count) {
+                                                 std::vector<std::uint32_t>& count) {
     const std::size_t n = g.size();
     const double *gx = g.x().data(), *gy = g.y().data(), *gz = g.z().data(), *s = support.data();
     for (std::size_t k = 0; k < n; k += stride) {
@@ -640,15 +640,15 @@ template <bool Weighted>
             }
         });
         if (sk > 0) --w;  // itself
-        for (std::size_t i = k; i < std::min(n, k + stride); ++i) count[i] = w;
+        for (std::size_t i = k; i < std::min(n, k + stride); ++i) count[i] = static_cast<std::uint32_t>(w);
     }
 }
 SPHDECK_CLONES void count_sampled_plain(const NeighbourGrid& g, const std::vector<double>& support, std::size_t stride,
-                                        std::vector<std::uint64_t>& count) {
+                                        std::vector<std::uint32_t>& count) {
     count_sampled<false>(g, support, nullptr, stride, count);
 }
 void count_sampled_weighted(const NeighbourGrid& g, const std::vector<double>& support, const std::uint32_t* weight,
-                            std::size_t stride, std::vector<std::uint64_t>& count) {
+                            std::size_t stride, std::vector<std::uint32_t>& count) {
     count_sampled<true>(g, support, weight, stride, count);
 }
 
@@ -727,7 +727,8 @@ NeighbourCounts count_neighbours(std::span<const double> x, std::span<const doub
         for (std::size_t k = 0; k < points; ++k) weight[k] = collapsed.weight[order[k]];
     }
     const std::uint32_t* w = weight.empty() ? nullptr : weight.data();
-    std::vector<std::uint64_t> count(points, 0);
+    // A count is at most the points' number (weights included), below 2^32: 4 bytes a point.
+    std::vector<std::uint32_t> count(points, 0);
     std::vector<std::uint32_t> close_points;
     if (sampled) {
         // A sampled point costs its whole block (twice its half-block): a quarter of the budget.
@@ -785,10 +786,10 @@ NeighbourCounts count_neighbours(std::span<const double> x, std::span<const doub
     out.count.resize(n);
     if (collapsed.empty()) {
 #pragma omp parallel for num_threads(threads) schedule(static) if (threads > 1)
-        for (std::size_t k = 0; k < n; ++k) out.count[input_of[k]] = static_cast<std::uint32_t>(count[k]);
+        for (std::size_t k = 0; k < n; ++k) out.count[input_of[k]] = count[k];
     } else {
         std::vector<std::uint32_t> of_point(points);
-        for (std::size_t k = 0; k < points; ++k) of_point[input_of[k]] = static_cast<std::uint32_t>(count[k]);
+        for (std::size_t k = 0; k < points; ++k) of_point[input_of[k]] = count[k];
         for (std::size_t i = 0; i < n; ++i) out.count[i] = of_point[collapsed.of[i]];
     }
     return out;

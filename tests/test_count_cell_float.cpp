@@ -62,7 +62,7 @@ struct FloatRun {
 };
 FloatRun float_loop(const Cloud& c, double support, double tolerance) {
     const preproc::NeighbourGrid g(c.x, c.y, c.z, std::max(support, tolerance));
-    std::vector<std::uint64_t> sorted(c.size(), 0);
+    std::vector<std::uint32_t> sorted(c.size(), 0);
     std::vector<std::uint32_t> close;
     FloatRun run;
     const preproc::CountCellFloat loop = preproc::count_cell_float();
@@ -206,7 +206,7 @@ TEST_CASE("count_cell_float: declines what its bound does not cover; the counts 
     if (preproc::count_cell_float() == nullptr) return;
     preproc::FloatCellScratch scratch;
     const preproc::NeighbourGrid g(c.x, c.y, c.z, 1.0);
-    std::vector<std::uint64_t> count(c.size(), 0);
+    std::vector<std::uint32_t> count(c.size(), 0);
     std::vector<std::uint32_t> close;
     std::uint64_t accepted = 0;
     g.for_each_cell_rows(preproc::count_half_rows, [&](std::size_t o, preproc::NeighbourGrid::Cell at,
@@ -223,7 +223,7 @@ TEST_CASE("count_cell_float: declines what its bound does not cover; the counts 
     // A cell of one point alone (the stray one) has nothing to fear from the bound; every crowded cell declines.
     CHECK(accepted <= 1);
     CHECK(scratch.declined + accepted == g.occupied());
-    CHECK(std::all_of(count.begin(), count.end(), [](std::uint64_t n) { return n == 0; }));
+    CHECK(std::all_of(count.begin(), count.end(), [](std::uint32_t n) { return n == 0; }));
 }
 
 }  // namespace test_count_cell_float_cpp
