@@ -28,16 +28,8 @@ const model::IdIndex& RuleContext::particle_index() const {
     return *particle_index_;
 }
 
-const std::vector<std::uint32_t>& RuleContext::particle_nodes() const {
-    if (particle_nodes_) return *particle_nodes_;
-    const model::IdIndex& nodes = node_index();
-    auto table = std::make_shared<std::vector<std::uint32_t>>(model.particles.size(), no_node);
-    auto& out = *table;
-    const std::size_t n = out.size();
-#pragma omp parallel for schedule(static) if (n > 65536)
-    for (std::size_t i = 0; i < n; ++i)
-        if (auto k = nodes.find(model.particles.node[i])) out[i] = static_cast<std::uint32_t>(*k);
-    particle_nodes_ = std::move(table);
+const ParticleNodes& RuleContext::particle_nodes() const {
+    if (!particle_nodes_) particle_nodes_ = std::make_shared<const ParticleNodes>(model, node_index());
     return *particle_nodes_;
 }
 

@@ -13,6 +13,7 @@
 
 #include "diag/diagnostic.hpp"
 #include "lint/bulk_facts.hpp"
+#include "lint/particle_nodes.hpp"
 #include "grammar/raw_deck.hpp"
 #include "model/id_index.hpp"
 #include "model/model.hpp"
@@ -64,8 +65,8 @@ public:
     const model::IdIndex& node_index() const;
     const model::IdIndex& particle_index() const;
     // Position in model.nodes of each particle's node; no_node where the node is missing (REF001).
-    static constexpr std::uint32_t no_node = 0xFFFFFFFFu;
-    const std::vector<std::uint32_t>& particle_nodes() const;
+    static constexpr std::uint32_t no_node = ParticleNodes::no_node;
+    const ParticleNodes& particle_nodes() const;
     // The first node set / part set defining `id` (null when none). Decks written by pre-processors
     // hold one set per particle, so rules look sets up by id, never by scanning the list.
     const model::IdSet* node_set(const model::Id& id) const;
@@ -80,7 +81,7 @@ public:
     // nodes may use instead of building them (engine/shared_preview.hpp), given before the rules run.
     struct Lookups {
         std::shared_ptr<const model::IdIndex> node_index, particle_index;
-        std::shared_ptr<const std::vector<std::uint32_t>> particle_nodes;
+        std::shared_ptr<const ParticleNodes> particle_nodes;
     };
     Lookups lookups() const { return {node_index_, particle_index_, particle_nodes_}; }
     void use_lookups(const Lookups& built) {
@@ -97,7 +98,7 @@ private:
     std::vector<diag::Diagnostic>& out_;
     mutable std::shared_ptr<BulkFacts> bulk_facts_;
     mutable std::shared_ptr<const model::IdIndex> node_index_, particle_index_;
-    mutable std::shared_ptr<const std::vector<std::uint32_t>> particle_nodes_;
+    mutable std::shared_ptr<const ParticleNodes> particle_nodes_;
     using SetIndex = std::unordered_map<model::Id, const model::IdSet*>;
     mutable std::unique_ptr<SetIndex> node_sets_, part_sets_;
     mutable std::unique_ptr<model::PartDefinitions> definitions_;

@@ -35,7 +35,7 @@ void check_box(RuleContext& c) {
                              sph.boxid.value));
         return;
     }
-    const std::vector<std::uint32_t>& node_of = c.particle_nodes();
+    const ParticleNodes& node_of = c.particle_nodes();
     const model::Nodes& n = c.model.nodes;
     const auto& b = box->bounds;
     // In 2D (IDIM 2, -2) particles live in the x-y plane: z does not decide.

@@ -41,7 +41,7 @@ struct ParticleCloud {
 
 ParticleCloud particle_cloud(const RuleContext& c) {
     const model::Nodes& n = c.model.nodes;
-    const std::vector<std::uint32_t>& node_of = c.particle_nodes();
+    const ParticleNodes& node_of = c.particle_nodes();
     ParticleCloud out;
     for (std::size_t i = 0; i < node_of.size(); ++i) {
         const std::uint32_t k = node_of[i];

@@ -53,7 +53,7 @@ void for_each_particle(const model::Particles& p, std::map<Id, PartStats>& parts
 
 // The parts' extents, on every thread: each takes a run of particles, and the runs' boxes are
 // merged (minima and maxima: the same in any order).
-std::map<Id, PartStats> particle_parts(const model::Model& m, const std::vector<std::uint32_t>& node_of) {
+std::map<Id, PartStats> particle_parts(const model::Model& m, const ParticleNodes& node_of) {
     const std::size_t n = m.particles.size();
     const int threads = n > 65536 ? std::max(1, omp_get_max_threads()) : 1;
     std::vector<std::map<Id, PartStats>> runs(static_cast<std::size_t>(threads));
@@ -84,8 +84,7 @@ const model::IdSet* material_node_set(const RuleContext& c, const model::FieldRe
 // *INITIAL_VELOCITY: VX, VY, VZ on the nodes of NSID (0 = all) inside BOXID, VXE... on those of
 // NSIDEX. Rotational velocities are left out (they need the rigid-body centre). With a set, only
 // its members are visited: pre-processors write one set and one card per particle.
-void add_initial_velocities(const RuleContext& c, const std::vector<std::uint32_t>& node_of,
-                            std::map<Id, PartStats>& parts) {
+void add_initial_velocities(const RuleContext& c, const ParticleNodes& node_of, std::map<Id, PartStats>& parts) {
     const model::Model& m = c.model;
     for (const model::KeywordRecord& r : m.records) {
         if (r.schema->name != "*INITIAL_VELOCITY") continue;
@@ -245,7 +244,7 @@ void check_murnaghan(RuleContext& c, const std::map<Id, PartStats>& parts) {
 }  // namespace
 
 void check_sph_materials(RuleContext& c) {
-    const std::vector<std::uint32_t>& node_of = c.particle_nodes();
+    const ParticleNodes& node_of = c.particle_nodes();
     struct PartExtents {  // the parts' extents, no speed yet: a fact of the particles alone (lint/bulk_facts.hpp)
         std::map<Id, PartStats> parts;
     };

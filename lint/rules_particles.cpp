@@ -53,9 +53,10 @@ std::optional<std::uint32_t> line_index(const grammar::RawDeck& deck, std::strin
 
 // The scale of the particle cloud: the largest of its bounding-box extent and its distance from
 // the origin, so a lone particle far from z = 0 is still measured against something.
-double model_size(const model::Nodes& n, const std::vector<std::uint32_t>& node_of) {
+double model_size(const model::Nodes& n, const ParticleNodes& node_of) {
     double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}, far = 0;
-    for (std::uint32_t k : node_of) {
+    for (std::size_t i = 0; i < node_of.size(); ++i) {
+        const std::uint32_t k = node_of[i];
         if (k == RuleContext::no_node) continue;
         const double x[3] = {n.x[k], n.y[k], n.z[k]};
         for (int a = 0; a < 3; ++a) {
@@ -75,7 +76,7 @@ void check_planar(RuleContext& c) {
     if (!sph.present || !model::is_two_dimensional(sph.idim.value)) return;
     const model::Particles& p = c.model.particles;
     const model::Nodes& n = c.model.nodes;
-    const std::vector<std::uint32_t>& node_of = c.particle_nodes();
+    const ParticleNodes& node_of = c.particle_nodes();
     const double tol = 1e-9 * model_size(n, node_of);
     const bool axisymmetric = sph.idim.value == model::Dimension::Axisymmetric;
     ParticleGroupRef off_plane, negative_x;
