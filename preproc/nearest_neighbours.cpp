@@ -227,7 +227,9 @@ double quartile_spacing(std::span<const double> x, std::span<const double> y, st
 // refinements by the crowding measured.
 NeighbourGrid nearest_neighbour_grid(std::span<const double> x, std::span<const double> y, std::span<const double> z) {
     const int axes = spanned(x, y, z).first;
-    NeighbourGrid g(x, y, z, estimated_spacing(x, y, z));
+    // The points read in place when in cell order already (a generated lattice in node order): the search's
+    // grid lives no longer than x, y, z.
+    NeighbourGrid g(x, y, z, estimated_spacing(x, y, z), true);
     for (int refine = 0; refine < 4 && axes > 0; ++refine) {
         const double crowding = g.crowding();
         if (crowding <= 3.0) break;
@@ -236,7 +238,7 @@ NeighbourGrid nearest_neighbour_grid(std::span<const double> x, std::span<const 
             const double quartile = quartile_spacing(x, y, z);
             if (quartile > 0) cell = std::min(cell, quartile);
         }
-        g = NeighbourGrid(x, y, z, cell);
+        g = NeighbourGrid(x, y, z, cell, true);
     }
     return g;
 }

@@ -31,8 +31,36 @@ int bin_threads(std::size_t points) {
 
 }  // namespace
 
+NeighbourGrid::NeighbourGrid(const NeighbourGrid& other)
+    : cell_(other.cell_),
+      inv_cell_(other.inv_cell_),
+      origin_(other.origin_),
+      n_(other.n_),
+      hashed_(other.hashed_),
+      start_(other.start_),
+      occupied_cells_(other.occupied_cells_),
+      occupied_keys_(other.occupied_keys_),
+      table_keys_(other.table_keys_),
+      table_shift_(other.table_shift_),
+      table_ids_(other.table_ids_),
+      order_(other.order_),
+      x_(other.x_),
+      y_(other.y_),
+      z_(other.z_),
+      x_view_(other.x_view_),
+      y_view_(other.y_view_),
+      z_view_(other.z_view_),
+      in_place_(other.in_place_) {
+    if (!in_place_) view_own_coordinates();
+}
+
+NeighbourGrid& NeighbourGrid::operator=(const NeighbourGrid& other) {
+    if (this != &other) *this = NeighbourGrid(other);
+    return *this;
+}
+
 NeighbourGrid::NeighbourGrid(std::span<const double> x, std::span<const double> y, std::span<const double> z,
-                             double cell_size) {
+                             double cell_size, bool may_read_in_place) {
     const std::size_t n = x.size();
     const std::span<const double> axes[3] = {x, y, z};
     std::array<double, 3> lo{0, 0, 0}, hi{0, 0, 0};
@@ -77,7 +105,7 @@ NeighbourGrid::NeighbourGrid(std::span<const double> x, std::span<const double> 
     if (hashed_)
         bin_hashed(x, y, z);
     else
-        bin_dense(x, y, z);
+        bin_dense(x, y, z, may_read_in_place);
 }
 
 template <typename CellOfPoint>
@@ -110,12 +138,21 @@ void NeighbourGrid::gather(std::span<const double> x, std::span<const double> y,
     }
     std::copy_backward(start_.begin(), start_.end() - 1, start_.end());
     start_[0] = 0;
+    view_own_coordinates();
+}
+
+void NeighbourGrid::read_in_place(std::span<const double> x, std::span<const double> y, std::span<const double> z) {
+    order_.resize(x.size());
+    for (std::size_t i = 0; i < order_.size(); ++i) order_[i] = static_cast<std::uint32_t>(i);
+    x_view_ = x, y_view_ = y, z_view_ = z;
+    in_place_ = true;
 }
 
 // A counting sort by cell, stable (points of a cell in input order), the same on any number of
 // threads: each thread owns a run of cells and scans every point for those in its run, so no
 // two threads write one counter or one slot, and nothing per thread and cell is allocated.
-void NeighbourGrid::bin_dense(std::span<const double> x, std::span<const double> y, std::span<const double> z) {
+void NeighbourGrid::bin_dense(std::span<const double> x, std::span<const double> y, std::span<const double> z,
+                              bool may_read_in_place) {
     const std::size_t n = x.size(), cells = static_cast<std::size_t>(n_[0]) * n_[1] * n_[2];
     const int threads = bin_threads(n);
     start_.assign(cells + 1, 0);
@@ -126,11 +163,19 @@ void NeighbourGrid::bin_dense(std::span<const double> x, std::span<const double>
     if (threads == 1) {
         // Each point's cell computed again in the gathering rather than kept: no array of a cell a point
         // (4 MB a million points) beside the copies at the preview's peak of memory.
-        for (std::size_t i = 0; i < n; ++i) ++start_[cell_index(i) + 1];
+        bool in_cell_order = true;  // each point in the cell of the one before it or a later one
+        std::uint32_t previous = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::uint32_t c = cell_index(i);
+            in_cell_order = in_cell_order && c >= previous, previous = c;
+            ++start_[c + 1];
+        }
         for (std::size_t c = 0; c < cells; ++c) {
             if (start_[c + 1]) occupied_cells_.push_back(static_cast<std::uint32_t>(c));
             start_[c + 1] += start_[c];
         }
+        // The counting sort is stable: on points in cell order it would copy them as they are.
+        if (in_cell_order && may_read_in_place) return read_in_place(x, y, z);
         return gather(x, y, z, cell_index);
     }
     // On several threads each scans every point for the cells of its run: the cells computed once.
@@ -161,6 +206,12 @@ void NeighbourGrid::bin_dense(std::span<const double> x, std::span<const double>
         for (std::size_t c = c0 + 1; c <= c1; ++c) start_[c] += offset;
     }
     for (auto& o : occupied) occupied_cells_.insert(occupied_cells_.end(), o.begin(), o.end());
+    if (may_read_in_place) {
+        bool in_cell_order = true;
+#pragma omp parallel for num_threads(threads) schedule(static) reduction(&& : in_cell_order)
+        for (std::size_t i = 1; i < n; ++i) in_cell_order = in_cell_order && cell_id[i] >= cell_id[i - 1];
+        if (in_cell_order) return read_in_place(x, y, z);
+    }
     gather(x, y, z, [&](std::size_t i) { return cell_id[i]; });
 }
 

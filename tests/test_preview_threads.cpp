@@ -67,7 +67,7 @@ struct GridPicture {
 
 GridPicture picture(const Points& p, double cell) {
     const preproc::NeighbourGrid g(p.x, p.y, p.z, cell);
-    GridPicture out{g.order(), g.x(), {}};
+    GridPicture out{g.order(), {g.x().begin(), g.x().end()}, {}};
     for (std::size_t o = 0; o < g.occupied(); ++o) out.ranges.push_back(g.occupied_range(o));
     return out;
 }
