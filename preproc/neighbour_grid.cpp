@@ -31,34 +31,6 @@ int bin_threads(std::size_t points) {
 
 }  // namespace
 
-NeighbourGrid::NeighbourGrid(const NeighbourGrid& other)
-    : cell_(other.cell_),
-      inv_cell_(other.inv_cell_),
-      origin_(other.origin_),
-      n_(other.n_),
-      hashed_(other.hashed_),
-      start_(other.start_),
-      occupied_cells_(other.occupied_cells_),
-      occupied_keys_(other.occupied_keys_),
-      table_keys_(other.table_keys_),
-      table_shift_(other.table_shift_),
-      table_ids_(other.table_ids_),
-      order_(other.order_),
-      x_(other.x_),
-      y_(other.y_),
-      z_(other.z_),
-      x_view_(other.x_view_),
-      y_view_(other.y_view_),
-      z_view_(other.z_view_),
-      in_place_(other.in_place_) {
-    if (!in_place_) view_own_coordinates();
-}
-
-NeighbourGrid& NeighbourGrid::operator=(const NeighbourGrid& other) {
-    if (this != &other) *this = NeighbourGrid(other);
-    return *this;
-}
-
 NeighbourGrid::NeighbourGrid(std::span<const double> x, std::span<const double> y, std::span<const double> z,
                              double cell_size, bool may_read_in_place) {
     const std::size_t n = x.size();
@@ -138,13 +110,12 @@ void NeighbourGrid::gather(std::span<const double> x, std::span<const double> y,
     }
     std::copy_backward(start_.begin(), start_.end() - 1, start_.end());
     start_[0] = 0;
-    view_own_coordinates();
 }
 
 void NeighbourGrid::read_in_place(std::span<const double> x, std::span<const double> y, std::span<const double> z) {
     order_.resize(x.size());
     for (std::size_t i = 0; i < order_.size(); ++i) order_[i] = static_cast<std::uint32_t>(i);
-    x_view_ = x, y_view_ = y, z_view_ = z;
+    caller_x_ = x, caller_y_ = y, caller_z_ = z;
     in_place_ = true;
 }
 

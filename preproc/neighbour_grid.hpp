@@ -35,12 +35,7 @@ public:
     // caller then keeps x, y and z alive and unchanged while the grid, or a copy of it, is used.
     NeighbourGrid(std::span<const double> x, std::span<const double> y, std::span<const double> z, double cell_size,
                   bool may_read_in_place = false);
-    // A copy reads its own coordinates (or, where the original reads the caller's in place, the same ones).
-    NeighbourGrid(const NeighbourGrid& other);
-    NeighbourGrid& operator=(const NeighbourGrid& other);
-    // A move keeps the coordinates' storage, so the views stay right.
-    NeighbourGrid(NeighbourGrid&&) noexcept = default;
-    NeighbourGrid& operator=(NeighbourGrid&&) noexcept = default;
+    // A copy reads its own coordinates, or, where the original reads the caller's in place, the same ones.
 
     std::size_t size() const { return order_.size(); }
     double cell_size() const { return cell_; }
@@ -57,9 +52,9 @@ public:
         return order;
     }
     // Coordinates in cell order.
-    std::span<const double> x() const { return x_view_; }
-    std::span<const double> y() const { return y_view_; }
-    std::span<const double> z() const { return z_view_; }
+    std::span<const double> x() const { return in_place_ ? caller_x_ : std::span<const double>(x_); }
+    std::span<const double> y() const { return in_place_ ? caller_y_ : std::span<const double>(y_); }
+    std::span<const double> z() const { return in_place_ ? caller_z_ : std::span<const double>(z_); }
     // Whether the coordinates are the caller's, read in place (the points were in cell order already).
     bool reads_in_place() const { return in_place_; }
 
@@ -186,10 +181,11 @@ public:
     // k. Requires radius <= cell_size().
     template <typename F>
     void for_each_neighbour(std::uint32_t k, double radius, F&& f) const {
-        const double px = x_[k], py = y_[k], pz = z_[k], r2max = radius * radius;
+        const std::span<const double> gx = x(), gy = y(), gz = z();
+        const double px = gx[k], py = gy[k], pz = gz[k], r2max = radius * radius;
         for_each_block_range(cell_of(px, py, pz), 1, [&](std::uint32_t b, std::uint32_t e) {
             for (std::uint32_t j = b; j < e; ++j) {
-                const double dx = px - x_[j], dy = py - y_[j], dz = pz - z_[j];
+                const double dx = px - gx[j], dy = py - gy[j], dz = pz - gz[j];
                 const double r2 = dx * dx + dy * dy + dz * dz;
                 if (r2 < r2max && j != k) f(j, r2);
             }
@@ -257,7 +253,6 @@ private:
                    bool may_read_in_place);
     // The points in cell order already: the order is the identity and the coordinates are read in place.
     void read_in_place(std::span<const double> x, std::span<const double> y, std::span<const double> z);
-    void view_own_coordinates() { x_view_ = x_, y_view_ = y_, z_view_ = z_; }
     void bin_hashed(std::span<const double> x, std::span<const double> y, std::span<const double> z);
     // Copies the points in cell order; cell_id(i) is point i's cell (dense) or occupied cell (hashed).
     template <typename CellOfPoint>
@@ -278,8 +273,8 @@ private:
     int table_shift_ = 60;                       // 64 - log2 of the table's size
     std::vector<std::uint32_t> table_ids_;
     std::vector<std::uint32_t> order_;
-    std::vector<double> x_, y_, z_;                     // the copies in cell order (empty when read in place)
-    std::span<const double> x_view_, y_view_, z_view_;  // what x(), y(), z() give: the copies or the caller's
+    std::vector<double> x_, y_, z_;                           // the copies in cell order (empty when read in place)
+    std::span<const double> caller_x_, caller_y_, caller_z_;  // the caller's, when read in place
     bool in_place_ = false;
 };
 

@@ -129,7 +129,7 @@ TEST_CASE("grid in place: a copy of a grid reads its own coordinates once the or
     original.reset();
     CHECK(std::equal(copy.x().begin(), copy.x().end(), expected_x.begin(), expected_x.end()));
     CHECK(std::equal(assigned.x().begin(), assigned.x().end(), expected_x.begin(), expected_x.end()));
-    // Moved, the views follow the storage.
+    // Moved, it reads the storage it took.
     const preproc::NeighbourGrid moved = std::move(copy);
     CHECK(std::equal(moved.x().begin(), moved.x().end(), expected_x.begin(), expected_x.end()));
 }
