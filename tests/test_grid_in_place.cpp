@@ -1,6 +1,6 @@
 // A neighbour grid over points already in cell order reads them in place (preproc/neighbour_grid.hpp, issue
 // 40): the same grid as the copying one in every respect that queries see (order, ranges, coordinates), the
-// same nearest neighbours, on 1 and 2 threads; points one step out of order are copied as before; a copy of
+// same nearest neighbours, on 1, 2 and 16 threads; points one step out of order are copied as before; a copy of
 // a grid reads its own coordinates once the original is gone.
 #include <doctest/doctest.h>
 
@@ -64,7 +64,7 @@ void check_same_grid(const preproc::NeighbourGrid& a, const preproc::NeighbourGr
 }  // namespace
 
 TEST_CASE("grid in place: points in cell order are read where they are, the grid otherwise the same") {
-    for (const int threads : {1, 2}) {
+    for (const int threads : {1, 2, 16}) {
 #ifdef _OPENMP
         const int saved = omp_get_max_threads();
         omp_set_num_threads(threads);
