@@ -29,7 +29,7 @@ const model::IdIndex& RuleContext::particle_index() const {
 }
 
 const ParticleNodes& RuleContext::particle_nodes() const {
-    if (!particle_nodes_) particle_nodes_ = std::make_shared<const ParticleNodes>(model, node_index());
+    if (!particle_nodes_) particle_nodes_ = std::make_shared<const ParticleNodes>(model, &node_index());
     return *particle_nodes_;
 }
 

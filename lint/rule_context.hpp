@@ -13,10 +13,10 @@
 
 #include "diag/diagnostic.hpp"
 #include "lint/bulk_facts.hpp"
-#include "lint/particle_nodes.hpp"
 #include "grammar/raw_deck.hpp"
 #include "model/id_index.hpp"
 #include "model/model.hpp"
+#include "model/particle_nodes.hpp"
 #include "model/part_definitions.hpp"
 
 namespace sphdeck::preproc {
@@ -24,6 +24,8 @@ struct Preview;
 }
 
 namespace sphdeck::lint {
+
+using model::ParticleNodes;
 
 enum class Solver { Unknown, Smp, Mpp };
 

@@ -1,45 +1,19 @@
 #include "preproc/particle_positions.hpp"
 
-#include "model/id_index.hpp"
-
 namespace sphdeck::preproc {
 
-namespace {
-// Particle i names node i for every i, and no earlier node has its id (ids rising: the index
-// would find no earlier copy), so the node index would map every particle to itself.
-bool particles_in_node_order(const model::Model& m) {
-    const model::IdColumn& ids = m.nodes.id;
-    const model::IdColumn& named = m.particles.node;
-    const std::size_t n = named.size();
-    if (n > ids.size()) return false;
-    bool in_order = true;
-#pragma omp parallel for reduction(&& : in_order) schedule(static) if (n > 65536)
-    for (std::size_t i = 0; i < n; ++i) in_order = in_order && ids[i] == named[i] && (i == 0 || ids[i - 1] < ids[i]);
-    return in_order;
-}
-}  // namespace
-
-ParticlePositions::ParticlePositions(const model::Model& m) : nodes_(m.nodes), size_(m.particles.size()) {
-    in_place_ = particles_in_node_order(m);
-    if (in_place_) return;
-    const model::IdIndex index(m.nodes.id);
-    node_of_.assign(size_, none);
-    const model::IdColumn& named = m.particles.node;
-#pragma omp parallel for schedule(static) if (size_ > 65536)
-    for (std::size_t i = 0; i < size_; ++i)
-        if (auto at = index.find(named[i])) node_of_[i] = static_cast<std::uint32_t>(*at);
-}
+ParticlePositions::ParticlePositions(const model::Model& m) : nodes_(m.nodes), node_of_(m) {}
 
 std::vector<std::uint8_t> ParticlePositions::located() const {
-    std::vector<std::uint8_t> out(size_, 1);
-    if (!in_place_)
-        for (std::size_t i = 0; i < size_; ++i) out[i] = node_of_[i] != none;
+    std::vector<std::uint8_t> out(size(), 1);
+    if (!node_of_.all_found())
+        for (std::size_t i = 0; i < out.size(); ++i) out[i] = node_of_[i] != none;
     return out;
 }
 
 PointSpans ParticlePositions::all() const {
-    return {std::span<const double>(nodes_.x).first(size_), std::span<const double>(nodes_.y).first(size_),
-            std::span<const double>(nodes_.z).first(size_)};
+    return {std::span<const double>(nodes_.x).first(size()), std::span<const double>(nodes_.y).first(size()),
+            std::span<const double>(nodes_.z).first(size())};
 }
 
 PointCopy ParticlePositions::gather(std::span<const std::uint32_t> particles) const {
@@ -54,8 +28,8 @@ PointCopy ParticlePositions::gather(std::span<const std::uint32_t> particles) co
 
 PointCopy ParticlePositions::gather_all() const {
     PointCopy c;
-    c.x.resize(size_), c.y.resize(size_), c.z.resize(size_);
-    for (std::size_t i = 0; i < size_; ++i) {
+    c.x.resize(size()), c.y.resize(size()), c.z.resize(size());
+    for (std::size_t i = 0; i < size(); ++i) {
         const std::uint32_t at = node(i);
         c.x[i] = nodes_.x[at], c.y[i] = nodes_.y[at], c.z[i] = nodes_.z[at];
     }

@@ -1,6 +1,7 @@
-// Each particle's node as the rules read it (lint/particle_nodes.hpp, issue 40): kept as first + step * i when
-// both id columns are sequences that line up, else as a table; either way each particle's entry is the node
-// index's own answer (model::IdIndex::find), or no_node. Checked against that answer, particle by particle, on
+// Each particle's node as the rules and the geometry read it (model/particle_nodes.hpp, issue 40): kept as
+// first + step * i when both id columns are sequences that line up, as i when the particles name the nodes in
+// their order, else as a table; either way each particle's entry is the node index's own answer
+// (model::IdIndex::find), or no_node. Checked against that answer, particle by particle, on
 // sequences of several steps and directions, on particles past the nodes' end, between them, on a column
 // that is no sequence, and on a deck read whole.
 #include <doctest/doctest.h>
@@ -10,7 +11,7 @@
 #include <vector>
 
 #include "engine/check.hpp"
-#include "lint/particle_nodes.hpp"
+#include "model/particle_nodes.hpp"
 
 namespace test_particle_nodes_cpp {  // each test file's names stay its own in a unity batch
 
@@ -26,7 +27,7 @@ model::IdColumn sequence(long long first, long long step, std::size_t n) {
 
 // The table the rules had before: the index's answer for every particle.
 std::vector<std::uint32_t> expected(const model::Model& m, const model::IdIndex& nodes) {
-    std::vector<std::uint32_t> out(m.particles.node.size(), lint::ParticleNodes::no_node);
+    std::vector<std::uint32_t> out(m.particles.node.size(), model::ParticleNodes::no_node);
     for (std::size_t i = 0; i < out.size(); ++i)
         if (const auto k = nodes.find(m.particles.node[i])) out[i] = static_cast<std::uint32_t>(*k);
     return out;
@@ -41,10 +42,11 @@ Outcome compare(const model::IdColumn& node_ids, const model::IdColumn& particle
     m.nodes.id = node_ids;
     m.particles.node = particle_nodes;
     const model::IdIndex index(m.nodes.id);
-    const lint::ParticleNodes got(m, index);
+    const model::ParticleNodes got(m, &index);
+    const model::ParticleNodes own(m);  // its own index, where it needs one
     const std::vector<std::uint32_t> want = expected(m, index);
-    bool same = got.size() == want.size();
-    for (std::size_t i = 0; same && i < want.size(); ++i) same = got[i] == want[i];
+    bool same = got.size() == want.size() && own.size() == want.size();
+    for (std::size_t i = 0; same && i < want.size(); ++i) same = got[i] == want[i] && own[i] == want[i];
     return {got.arithmetic(), same};
 }
 
@@ -99,6 +101,28 @@ TEST_CASE("particle nodes: columns that are no sequence are a table, with the in
     CHECK(o.same);
 }
 
+TEST_CASE("particle nodes: particles naming the nodes in their order, in columns too short for sequences") {
+    model::IdColumn ids, named;
+    for (long long id = 1; id <= 100; ++id) ids.push_back(3 * id * id), named.push_back(3 * id * id);  // rising
+    ids.push_back(7);  // one node more, named by no particle
+    model::Model m;
+    m.nodes.id = ids, m.particles.node = named;
+    REQUIRE_FALSE(m.nodes.id.sequence());
+    const model::ParticleNodes nodes(m);
+    CHECK(nodes.identity());
+    bool same = nodes.size() == 100;
+    for (std::size_t i = 0; same && i < 100; ++i) same = nodes[i] == i;
+    CHECK(same);
+    // A repeated id: the index finds the first copy, so particle 1 is not on node 1.
+    model::IdColumn repeated = named;
+    repeated.set(1, 3);
+    m.nodes.id = repeated, m.particles.node = repeated;
+    const model::ParticleNodes again(m);
+    CHECK_FALSE(again.identity());
+    CHECK(again[1] == 0);
+    CHECK(compare(repeated, repeated).same);
+}
+
 TEST_CASE("particle nodes: a generated deck read whole is arithmetic, and its findings are the table's") {
     // 20,000 nodes and particles (above IdColumn::compact_min_entries: the decoding keeps both as sequences).
     std::string text =
@@ -112,7 +136,7 @@ TEST_CASE("particle nodes: a generated deck read whole is arithmetic, and its fi
     REQUIRE(r.model.nodes.id.sequence());
     REQUIRE(r.model.particles.node.sequence());
     const model::IdIndex index(r.model.nodes.id);
-    const lint::ParticleNodes nodes(r.model, index);
+    const model::ParticleNodes nodes(r.model, &index);
     CHECK(nodes.arithmetic());
     const std::vector<std::uint32_t> want = expected(r.model, index);
     REQUIRE(nodes.size() == want.size());
