@@ -98,6 +98,16 @@ public:
     // The line's index in its CardLines (what `p - deck.lines.data()` was).
     std::uint32_t index() const { return index_; }
 
+    // Where the line lies when it is in a run (lines of one stride on consecutive line numbers of one file):
+    // that stride and how many lines of the run follow it. Stride 0 for a stored line (or none).
+    struct RunPlace {
+        std::uint32_t stride = 0, after = 0;
+    };
+    RunPlace run_place() const {
+        if (stored_ || index_ - lo_ >= hi_ - lo_) return {};
+        return {stride_, hi_ - 1 - index_};
+    }
+
 private:
     friend class CardLines;
     friend struct CardLinesBody;

@@ -78,7 +78,7 @@ inline bool read_digits(const char*& p, const char* end, std::uint64_t& m, int& 
 // C's "%.8e" (d.dddddddde+dd, 14 characters after the sign): the coordinates and masses of the big
 // decks. Read in one go into the same m and decimal exponent as read_digits and the exponent loop
 // of short_real would give, so the same double follows.
-inline bool e8_form(const char* p, const char* end, std::uint64_t& m, int& exponent) {
+[[gnu::always_inline]] inline bool e8_form(const char* p, const char* end, std::uint64_t& m, int& exponent) {
     if constexpr (std::endian::native != std::endian::little) return false;
     std::uint64_t eight = 0;
     if (end - p != 14 || !is_digit(p[0]) || p[1] != '.' || (p[10] != 'e' && p[10] != 'E') ||
@@ -180,7 +180,7 @@ enum class FieldShape : std::uint8_t { Blank, Number, Other };
 
 // An E16 field of 16 bytes at p holding C's "%16.8e" ("  d.dddddddde+dd", " -d.dddddddde-dd"): true with
 // short_real's double of the trimmed text (and `lead`, 2 or 1) when the field is that and scales exactly.
-inline bool e8_field16(const char* p, double& out, std::uint32_t& lead) {
+[[gnu::always_inline]] inline bool e8_field16(const char* p, double& out, std::uint32_t& lead) {
     if (p[0] != ' ' || (p[1] != ' ' && p[1] != '-')) return false;
     const bool negative = p[1] == '-';
     std::uint64_t m = 0;

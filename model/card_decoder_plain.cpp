@@ -2,8 +2,9 @@
 // fixed-format number lines. Anything it does not take whole (a comma, a tab, '&', text past the
 // significant width, a blank required field, a value outside the fast number forms or outside
 // its field's range) is left to decode(), which reports it: findings stay those of decode().
-// decode_plain fills FieldValues, read_row only the numbers; both walk the line with read_plain,
-// so they take the same lines and read the same numbers.
+// decode_plain fills FieldValues, read_row only the numbers; both read a field with read_field (read_row
+// the fast shapes in its own loop, through the same read_columns), so they take the same lines and read the
+// same numbers.
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -73,69 +74,70 @@ struct ReadField {
     double number = 0.0;
 };
 
-// Reads the fields of a plain line's text, handing each to `put(i, field)`; false at the first field that
-// leaves the line to decode(). Inline in both callers: a call a line, none a field.
-template <typename Put>
-inline bool read_plain(const CardLayout& layout, const keywords::CardSpec& card, std::string_view text, Put&& put) {
-    namespace fast = grammar::fast_number;
-    const std::size_t count = card.fields.size();
-    for (std::size_t i = 0; i < count; ++i) {
-        const PlainField& f = layout.plain_fields[i];
-        // The field's columns on this line (fewer at the line's end), then its value: the shapes a
-        // preprocessor writes straight from the columns, any other through trim_spaces and the short readers.
-        const std::string_view columns = plain_field_text(text, f.start, f.width);
-        ReadField r;
-        bool read = false;
-        if (columns.size() == 8 && !f.real && !f.unused) {
-            long long n = 0;
-            const fast::FieldShape shape = fast::integer8(columns.data(), n, r.offset);
-            if (shape == fast::FieldShape::Blank) {
-                r.text = std::string_view(columns.data() + 8, 0), r.offset = 0;
-                read = true;
-            } else if (shape == fast::FieldShape::Number) {
-                r.text = std::string_view(columns.data() + r.offset, 8 - r.offset), r.number = static_cast<double>(n);
-                read = true;
-            }
-        } else if (columns.size() == 16 && f.real) {
-            if (fast::e8_field16(columns.data(), r.number, r.offset)) {
-                r.text = std::string_view(columns.data() + r.offset, 16 - r.offset);
-                read = true;
-            }
-        }
-        if (!read) {
-            std::size_t offset = 0;
-            r.text = trim_spaces(columns, offset);
-            r.offset = static_cast<std::uint32_t>(offset);
-        }
-        if (r.text.empty()) {
-            r.number = 0.0;
-            if (!f.unused && f.has_default) r.valid = true, r.number = f.default_value;
-            if (!f.unused && !f.has_default && f.required) return false;  // DK008
-            put(i, r);
-            continue;
-        }
-        if (f.unused) return false;  // text in an unused field: rare, decode() keeps it
-        if (!read) {
-            if (f.real) {
-                if (!grammar::plain_real(r.text, r.number)) return false;
-            } else {
-                long long n = 0;
-                if (!grammar::plain_integer(r.text, n)) return false;
-                r.number = static_cast<double>(n);
-                if (exceeds_integer_range(r.number)) return false;  // DK007
-            }
-        }
-        r.valid = true;
-        // The flags first: the tests of the number wait for its division only where a field asks for them.
-        if (f.zero_is_default && f.has_default && r.number == 0.0) {
-            r.number = f.default_value;
-            put(i, r);
-            continue;
-        }
-        if (f.checks_range && !in_plain_range(card.fields[i], r.number)) return false;  // DK007
-        put(i, r);
+// A blank field: its default where it has one (valid), else 0 (not valid). False for a required field
+// without default, which decode() reports (DK008).
+[[gnu::always_inline]] inline bool read_blank(const PlainField& f, bool& valid, double& number) {
+    valid = !f.unused && f.has_default;
+    number = valid ? f.default_value : 0.0;
+    return f.unused || f.has_default || !f.required;
+}
+
+// What follows a number read in a field: zero means the default where the field says so, else the
+// field's choices and range. False for a number out of range, which decode() reports (DK007).
+// The flags first: the tests of the number wait for its division only where a field asks for them.
+[[gnu::always_inline]] inline bool settle_number(const PlainField& f, const keywords::FieldSpec& spec, double& number) {
+    if (f.zero_is_default && f.has_default && number == 0.0) {
+        number = f.default_value;
+        return true;
     }
-    return true;
+    return !f.checks_range || in_plain_range(spec, number);
+}
+
+// The shapes a preprocessor writes, read straight from a whole field's columns: an I8 integer or a
+// "%16.8e" real (grammar/value_fast.hpp). Blank or Number with `number` and `lead` (the spaces before the
+// number); Other for anything else, which read_field reads.
+[[gnu::always_inline]] inline grammar::fast_number::FieldShape read_columns(const PlainField& f, const char* columns,
+                                                                            double& number, std::uint32_t& lead) {
+    namespace fast = grammar::fast_number;
+    if (f.width == 8 && !f.real && !f.unused) {
+        long long n = 0;
+        const fast::FieldShape shape = fast::integer8(columns, n, lead);
+        number = static_cast<double>(n);
+        return shape;
+    }
+    if (f.width == 16 && f.real && fast::e8_field16(columns, number, lead)) return fast::FieldShape::Number;
+    return fast::FieldShape::Other;
+}
+
+// Field i of a plain line's text, any shape: the fast shapes from its columns, any other through
+// trim_spaces and the short readers. False when the field leaves the line to decode().
+bool read_field(const PlainField& f, const keywords::FieldSpec& spec, std::string_view text, ReadField& r) {
+    namespace fast = grammar::fast_number;
+    // The field's columns on this line (fewer at the line's end).
+    const std::string_view columns = plain_field_text(text, f.start, f.width);
+    fast::FieldShape shape = fast::FieldShape::Other;
+    if (columns.size() == f.width) shape = read_columns(f, columns.data(), r.number, r.offset);
+    if (shape == fast::FieldShape::Blank) r.text = std::string_view(columns.data() + columns.size(), 0), r.offset = 0;
+    if (shape == fast::FieldShape::Number) r.text = std::string_view(columns.data() + r.offset, f.width - r.offset);
+    if (shape == fast::FieldShape::Other) {
+        std::size_t offset = 0;
+        r.text = trim_spaces(columns, offset);
+        r.offset = static_cast<std::uint32_t>(offset);
+    }
+    if (r.text.empty()) return read_blank(f, r.valid, r.number);
+    if (f.unused) return false;  // text in an unused field: rare, decode() keeps it
+    if (shape == fast::FieldShape::Other) {
+        if (f.real) {
+            if (!grammar::plain_real(r.text, r.number)) return false;
+        } else {
+            long long n = 0;
+            if (!grammar::plain_integer(r.text, n)) return false;
+            r.number = static_cast<double>(n);
+            if (exceeds_integer_range(r.number)) return false;  // DK007
+        }
+    }
+    r.valid = true;
+    return settle_number(f, spec, r.number);
 }
 }  // namespace
 
@@ -171,8 +173,10 @@ bool CardDecoder::decode_plain(const grammar::Block& block, const grammar::CardL
     const std::optional<std::string_view> text = plain_text(layout, line, next);
     if (!text) return false;
     values.resize(card.fields.size());
-    return read_plain(layout, card, *text, [&](std::size_t i, const ReadField& r) {
+    for (std::size_t i = 0; i < card.fields.size(); ++i) {
         const PlainField& f = layout.plain_fields[i];
+        ReadField r;
+        if (!read_field(f, card.fields[i], *text, r)) return false;
         FieldValue& v = values[i];
         v.spec = &card.fields[i];
         v.span = grammar::Span{line.file, line.line, f.start + 1, f.start + f.width + 1};
@@ -184,7 +188,8 @@ bool CardDecoder::decode_plain(const grammar::Block& block, const grammar::CardL
         v.explicit_value = !r.text.empty();
         v.valid = r.valid;
         v.number = r.number;
-    });
+    }
+    return true;
 }
 
 CardDecoder::RowRead CardDecoder::read_row(const grammar::Block& block, const grammar::CardLine& line,
@@ -195,13 +200,43 @@ CardDecoder::RowRead CardDecoder::read_row(const grammar::Block& block, const gr
     const std::optional<std::string_view> text = plain_text(layout, line, next, through_next);
     if (!text) return RowRead::NotPlain;
     row.count = static_cast<std::uint32_t>(card.fields.size());
-    row.valid = 0, row.written = 0;
-    const bool plain = read_plain(layout, card, *text, [&](std::size_t i, const ReadField& r) {
-        row.number[i] = r.number;
-        row.valid |= static_cast<std::uint32_t>(r.valid) << i;
-        row.written |= static_cast<std::uint32_t>(!r.text.empty()) << i;
-    });
-    return plain ? RowRead::Read : RowRead::NotPlain;
+    // The fields whole on the line in the shapes a preprocessor writes are read here, in the loop; the fields
+    // past the line's end are blank; any other goes through read_field (what decode_plain reads).
+    namespace fast = grammar::fast_number;
+    const std::size_t size = text->size();
+    std::uint32_t valid = 0, written = 0;
+    for (std::size_t i = 0; i < row.count; ++i) {
+        const PlainField& f = layout.plain_fields[i];
+        const std::uint32_t bit = std::uint32_t{1} << i;
+        double& number = row.number[i];
+        bool is_valid = false;
+        if (f.start >= size) {  // past the line's end: blank
+            if (!read_blank(f, is_valid, number)) return RowRead::NotPlain;
+            valid |= is_valid ? bit : 0;
+            continue;
+        }
+        if (f.start + f.width <= size) {
+            std::uint32_t lead = 0;
+            const fast::FieldShape shape = read_columns(f, text->data() + f.start, number, lead);
+            if (shape == fast::FieldShape::Number) {
+                if (!settle_number(f, card.fields[i], number)) return RowRead::NotPlain;
+                valid |= bit, written |= bit;
+                continue;
+            }
+            if (shape == fast::FieldShape::Blank) {
+                if (!read_blank(f, is_valid, number)) return RowRead::NotPlain;
+                valid |= is_valid ? bit : 0;
+                continue;
+            }
+        }
+        ReadField r;
+        if (!read_field(f, card.fields[i], *text, r)) return RowRead::NotPlain;
+        number = r.number;
+        valid |= r.valid ? bit : 0;
+        written |= r.text.empty() ? 0 : bit;
+    }
+    row.valid = valid, row.written = written;
+    return RowRead::Read;
 }
 
 }  // namespace sphdeck::model

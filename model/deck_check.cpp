@@ -416,33 +416,17 @@ private:
             std::size_t count = 0;
             std::size_t released = first;  // lines whose text went back (a mapped file's pages)
             FloodBound& trimmed = bounds[static_cast<std::size_t>(t)];
-            grammar::CardLinePtr at = lines + static_cast<std::ptrdiff_t>(first);  // this thread's own walk
-            grammar::CardLine next = first < last ? *at : grammar::CardLine{};
+            grammar::CardLinePtr at = lines + static_cast<std::ptrdiff_t>(first);  // line i: this thread's own walk
             // The block's text read through a window of the thread's own (text/text_window.hpp).
             const text::FileId file = lines->file;
             text::TextWindow window(deck_.sources.file(file).text);
-            for (std::size_t i = first; i < last; ++i) {
-                const grammar::CardLine line = next;
-                const bool followed = i + 1 < n;  // by a line of the block: where this one ends, known
-                if (followed) next = *++at;
-                if (i - released == release_lines) release_text(lines[released], line), released = i;
-                if ((i - first + 1) % trim_lines == 0) trimmed.trim(out);
-                std::string_view through_next;  // the line and its line break, when the next line follows it
-                if (followed && line.file == file && next.file == file && next.offset > line.offset)
-                    through_next =
-                        window.from(line.offset, next.offset - line.offset).substr(0, next.offset - line.offset);
-                // Most lines: numbers only, one node or particle (a particle's NEND blank: no range, no DK023).
-                const CardDecoder::RowRead read =
-                    decoder.read_row(block, line, card, row, followed ? &next : nullptr, through_next);
-                if (read == CardDecoder::RowRead::Read && !(particles && row.is_written(3))) {
-                    bulk_->row(block, i, t, row);
-                    count += particles ? 1 : 0;
-                    continue;
-                }
-                if (read == CardDecoder::RowRead::NotPlain) {  // what decode_bulk would do, without trying again
+            // What decode_bulk would do with a line read_row did not take whole, without trying again.
+            const auto decode_line = [&](std::size_t i, const grammar::CardLine& line, const grammar::CardLine* next,
+                                         CardDecoder::RowRead read) {
+                if (read == CardDecoder::RowRead::NotPlain) {
                     decoder.decode(block, line, card, values);
                     all_plain[static_cast<std::size_t>(t)] = 0;
-                } else if (!decoder.decode_bulk(block, line, card, values, followed ? &next : nullptr)) {
+                } else if (!decoder.decode_bulk(block, line, card, values, next)) {
                     all_plain[static_cast<std::size_t>(t)] = 0;
                 }
                 if (auto& past = past_fields[static_cast<std::size_t>(t)];
@@ -459,6 +443,51 @@ private:
                 bulk_->line(block, i, t, line, values);
                 if (particles) count += count_particles(deck_, line, block.format, values, out);
                 if (refused) out.push_back(range_error(values[3].span, *refused));
+            };
+            // Line i, `next` the block's line after it (where it ends, known) and `through_next` the bytes from
+            // its start to next's, when held. Most lines: numbers only, one node or particle (a particle's NEND
+            // blank: no range, no DK023).
+            const auto take = [&](std::size_t i, const grammar::CardLine& line, const grammar::CardLine* next,
+                                  std::string_view through_next) {
+                if (i - released == release_lines) release_text(lines[released], line), released = i;
+                if ((i - first + 1) % trim_lines == 0) trimmed.trim(out);
+                const CardDecoder::RowRead read = decoder.read_row(block, line, card, row, next, through_next);
+                if (read == CardDecoder::RowRead::Read && !(particles && row.is_written(3))) {
+                    bulk_->row(block, i, t, row);
+                    count += particles ? 1 : 0;
+                    return;
+                }
+                decode_line(i, line, next, read);
+            };
+            for (std::size_t i = first; i < last;) {
+                // The lines of a run (one stride on consecutive lines: what a preprocessor writes), each followed
+                // by the next of the run: their bytes come from one view of the window, not a view a line.
+                const grammar::CardLinePtr::RunPlace run = at.run_place();
+                std::size_t batch = std::min({std::size_t{run.after}, last - i, n - 1 - i});
+                if (run.stride > 0) batch = std::min(batch, std::max<std::size_t>(1, window_bytes / run.stride));
+                const grammar::CardLine head = *at;
+                if (batch > 1 && head.file == file) {
+                    const std::string_view view = window.from(head.offset, batch * run.stride);
+                    if (view.size() >= batch * run.stride) {
+                        for (std::size_t k = 0; k < batch; ++k) {
+                            const auto offset = static_cast<std::uint32_t>(k * run.stride);
+                            const grammar::CardLine line{file, head.line + static_cast<std::uint32_t>(k),
+                                                         head.offset + offset};
+                            const grammar::CardLine next{file, line.line + 1, line.offset + run.stride};
+                            take(i + k, line, &next, view.substr(offset, run.stride));
+                        }
+                        i += batch, at += static_cast<std::ptrdiff_t>(batch);
+                        continue;
+                    }
+                }
+                const bool followed = i + 1 < n;  // by a line of the block: where this one ends, known
+                const grammar::CardLine next = followed ? *++at : (++at, grammar::CardLine{});
+                std::string_view through_next;  // the line and its line break, when the next line follows it
+                if (followed && head.file == file && next.file == file && next.offset > head.offset)
+                    through_next =
+                        window.from(head.offset, next.offset - head.offset).substr(0, next.offset - head.offset);
+                take(i, head, followed ? &next : nullptr, through_next);
+                ++i;
             }
             counted[static_cast<std::size_t>(t)] = count;
             trimmed.trim(out);
@@ -522,6 +551,8 @@ private:
     // Lines between two trims of the findings past the flood bound (model/flood_guard.hpp): the
     // findings of a block of broken lines never grow far past the bound while it is walked.
     static constexpr std::size_t trim_lines = 4096;
+    // The most bytes of a run of lines taken from a window in one view: the window's buffer.
+    static constexpr std::size_t window_bytes = text::TextWindow::default_bytes;
     void release_text(const grammar::CardLine& from, const grammar::CardLine& to) const {
         if (from.file == to.file) deck_.sources.file(from.file).text.release(from.offset, to.offset);
     }

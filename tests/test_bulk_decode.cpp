@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 #include <fmt/format.h>
 
+#include <map>
 #include <set>
 #include <string>
 
@@ -206,5 +207,48 @@ TEST_CASE("bulk decode: lines the lean path must leave to the full decoder") {
     CHECK(codes.count("DK007"));
     CHECK(codes.count("DK008"));
     CHECK(codes.count("DK016"));
+}
+
+// Broken lines of the same width as the lines around them stay inside their run of lines (grammar/card_lines.hpp),
+// which the parallel walk reads from one view of its window: each must still go to the full decoder and be
+// reported on its own line, as the serial walk reports it.
+TEST_CASE("bulk decode: broken lines inside a run of lines of one width") {
+    const int n = 10000;
+    const auto node = [](int i) { return fmt::format("{:8d}{:16.8e}{:16.8e}{:16.8e}\n", i, 0.001 * i, -0.5, 0.25); };
+    std::map<int, std::string> planted = {
+        {1000, "    1000  1.0000000Oe+00 -5.00000000e-01  2.50000000e-01\n"},   // O for 0: DK003
+        {2000, "    2000  1,00000000e+00 -5.00000000e-01  2.50000000e-01\n"},   // decimal comma
+        {3000, "    30O0  1.00000000e+00 -5.00000000e-01  2.50000000e-01\n"},   // O in the id
+        {4000, "    4000  1.000000e+00-5.00000000e-01     2.50000000e-01\n"},   // y glued to x
+        {5001, "    5001  1.00000000e+00 -5.00000000e-01  2.50000000e-0\r\n"},  // CRLF, one digit less
+    };
+    std::string text = "*KEYWORD\n*NODE\n";
+    for (int i = 1; i <= n; ++i) {
+        const auto p = planted.find(i);
+        if (p != planted.end()) REQUIRE(p->second.size() == node(i).size());
+        text += p != planted.end() ? p->second : node(i);
+    }
+    text += "*ELEMENT_SPH\n";
+    for (int i = 1; i <= n; ++i)
+        text += i == 7000 ? fmt::format("{:8d}{:8d}{:>16}\n", i, 1, "1.0e-6x")  // DK003 on the mass
+                          : fmt::format("{:8d}{:8d}{:16.8e}\n", i, 1, 1e-6);
+    text += "*END\n";
+    grammar::RawDeck deck = grammar::read_deck_buffer(text, "runs.k");
+    REQUIRE(deck.lines.runs() > 0);  // the lines are runs, broken ones included
+    Built serial = build(deck, false);
+    Built parallel = build(deck, true);
+
+    test::check_same_bulk_columns(serial.model, parallel.model);
+    CHECK(serial.summary.particles == parallel.summary.particles);
+    test::check_same_findings(serial.diagnostics, parallel.diagnostics);
+    // Each planted line has its finding on it: the deck's line is the node's + 2 (*KEYWORD, *NODE).
+    std::set<std::uint32_t> lines;
+    for (const auto& d : parallel.diagnostics) lines.insert(d.span.line);
+    for (int i : {1000, 2000, 3000, 4000}) CHECK(lines.count(static_cast<std::uint32_t>(i + 2)));
+    CHECK(lines.count(static_cast<std::uint32_t>(n + 3 + 7000)));
+    bool crlf_read = false;  // node 5001: its CRLF line reads
+    for (std::size_t k = 0; k < parallel.model.nodes.id.size(); ++k)
+        if (parallel.model.nodes.id[k] == 5001) crlf_read = parallel.model.nodes.z[k] == 2.5;  // "2.50000000e-0"
+    CHECK(crlf_read);
 }
 }  // namespace test_bulk_decode_cpp
