@@ -9,6 +9,10 @@
 #include <cstring>
 #include <string_view>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace sphdeck::grammar {
 namespace fast_number {
 
@@ -180,12 +184,37 @@ enum class FieldShape : std::uint8_t { Blank, Number, Other };
 
 // An E16 field of 16 bytes at p holding C's "%16.8e" ("  d.dddddddde+dd", " -d.dddddddde-dd"): true with
 // short_real's double of the trimmed text (and `lead`, 2 or 1) when the field is that and scales exactly.
+// With SSE2 (every x86-64) the field's shape is tested in one pass of 16 lanes: the character tests of
+// e8_form below, on all bytes at once.
 [[gnu::always_inline]] inline bool e8_field16(const char* p, double& out, std::uint32_t& lead) {
+#if defined(__SSE2__)
+    const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p));
+    // Digits: bytes 2, 4-11, 14 and 15 (d.dddddddde+dd after the two leading bytes).
+    const __m128i from_zero = _mm_sub_epi8(v, _mm_set1_epi8('0'));
+    const __m128i is_digit = _mm_cmpeq_epi8(_mm_subs_epu8(from_zero, _mm_set1_epi8(9)), _mm_setzero_si128());
+    // The other bytes, each one of two characters: ' ', ' ' or '-', '.', 'e' or 'E', '+' or '-'.
+    const __m128i one = _mm_setr_epi8(' ', ' ', 0, '.', 0, 0, 0, 0, 0, 0, 0, 0, 'e', '+', 0, 0);
+    const __m128i other = _mm_setr_epi8(' ', '-', 0, '.', 0, 0, 0, 0, 0, 0, 0, 0, 'E', '-', 0, 0);
+    const __m128i is_mark = _mm_or_si128(_mm_cmpeq_epi8(v, one), _mm_cmpeq_epi8(v, other));
+    constexpr int digits = 0xCFF4, marks = 0x300B;
+    const int shape = (_mm_movemask_epi8(is_digit) & digits) | (_mm_movemask_epi8(is_mark) & marks);
+    if (shape != (digits | marks)) return false;
+    std::uint64_t eight = 0;
+    std::uint64_t word;
+    std::memcpy(&word, p + 4, 8);
+    eight_digits_word(word, eight);  // digits, tested above
+    const std::uint64_t m = static_cast<std::uint64_t>(p[2] - '0') * 100000000u + eight;
+    const int e = (p[14] - '0') * 10 + (p[15] - '0');
+    const int exponent = -8 + e * (1 - 2 * static_cast<int>(p[13] == '-'));
+    const bool negative = p[1] == '-';
+#else
     if (p[0] != ' ' || (p[1] != ' ' && p[1] != '-')) return false;
     const bool negative = p[1] == '-';
     std::uint64_t m = 0;
     int exponent = 0;
-    if (!e8_form(p + 2, p + 16, m, exponent) || !scale_exact(m, exponent, negative, out)) return false;
+    if (!e8_form(p + 2, p + 16, m, exponent)) return false;
+#endif
+    if (!scale_exact(m, exponent, negative, out)) return false;
     lead = 2 - static_cast<std::uint32_t>(negative);
     return true;
 }
