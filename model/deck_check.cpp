@@ -481,7 +481,8 @@ private:
                     }
                 }
                 const bool followed = i + 1 < n;  // by a line of the block: where this one ends, known
-                const grammar::CardLine next = followed ? *++at : (++at, grammar::CardLine{});
+                ++at;
+                const grammar::CardLine next = followed ? *at : grammar::CardLine{};
                 std::string_view through_next;  // the line and its line break, when the next line follows it
                 if (followed && head.file == file && next.file == file && next.offset > head.offset)
                     through_next =

@@ -63,6 +63,13 @@ Built build(const grammar::RawDeck& deck, bool parallel) {
     return b;
 }
 
+// The parallel walk's model, particle count and findings are the serial walk's.
+void check_same_walks(const Built& serial, const Built& parallel) {
+    test::check_same_bulk_columns(serial.model, parallel.model);
+    CHECK(serial.summary.particles == parallel.summary.particles);
+    test::check_same_findings(serial.diagnostics, parallel.diagnostics);
+}
+
 }  // namespace
 
 TEST_CASE("bulk decode: the parallel walk gives the model and findings of the serial one") {
@@ -77,9 +84,7 @@ TEST_CASE("bulk decode: the parallel walk gives the model and findings of the se
     CHECK(serial.summary.particles == static_cast<std::size_t>(n - 1 + 1));   // the skipped line still counts
 
     const auto& b = parallel.model;
-    test::check_same_bulk_columns(serial.model, b);
-    CHECK(serial.summary.particles == parallel.summary.particles);
-    test::check_same_findings(serial.diagnostics, parallel.diagnostics);
+    check_same_walks(serial, parallel);
     CHECK(serial.diagnostics.size() >= 3);  // the two DK003 on nodes and the one on particles at least
 
     // The NEND range expands in place, with the mass and line of its card.
@@ -195,9 +200,7 @@ TEST_CASE("bulk decode: lines the lean path must leave to the full decoder") {
     Built serial = build(deck, false);
     Built parallel = build(deck, true);
 
-    test::check_same_bulk_columns(serial.model, parallel.model);
-    CHECK(serial.summary.particles == parallel.summary.particles);
-    test::check_same_findings(serial.diagnostics, parallel.diagnostics);
+    check_same_walks(serial, parallel);
     // The odd lines do report: the comparison is not between two empty lists.
     std::set<std::string> codes;
     for (const auto& d : serial.diagnostics) codes.insert(d.code);
@@ -238,9 +241,7 @@ TEST_CASE("bulk decode: broken lines inside a run of lines of one width") {
     Built serial = build(deck, false);
     Built parallel = build(deck, true);
 
-    test::check_same_bulk_columns(serial.model, parallel.model);
-    CHECK(serial.summary.particles == parallel.summary.particles);
-    test::check_same_findings(serial.diagnostics, parallel.diagnostics);
+    check_same_walks(serial, parallel);
     // Each planted line has its finding on it: the deck's line is the node's + 2 (*KEYWORD, *NODE).
     std::set<std::uint32_t> lines;
     for (const auto& d : parallel.diagnostics) lines.insert(d.span.line);
