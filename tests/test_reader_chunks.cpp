@@ -252,6 +252,33 @@ TEST_CASE("reader chunks: only lines that can be nothing but data skip the gramm
     CHECK(special(grammar::LineSyntax::Radioss) == std::vector<std::uint32_t>{0, 6});
 }
 
+TEST_CASE("reader chunks: a keyword or header after any run of blanks is seen, and only then") {
+    // Runs of 0 to 20 blanks (spaces and tabs mixed), then a keyword's '*' or a header's '/', a number, or
+    // nothing: only the first two are lines for the grammar.
+    std::string text;
+    std::vector<std::uint32_t> dyna, radioss;
+    std::uint32_t line = 0;
+    for (int blanks = 0; blanks <= 20; ++blanks) {
+        std::string run;
+        for (int k = 0; k < blanks; ++k) run += (k * 7 + blanks) % 5 == 0 ? '\t' : ' ';
+        for (const char* rest : {"*K", "/H", "1 2", "", "x*", "\t*"}) {
+            text += run + rest + "\n";
+            const std::string after = rest;
+            if (after == "*K" || after == "\t*") dyna.push_back(line);
+            if (after == "/H") radioss.push_back(line);
+            ++line;
+        }
+    }
+    const grammar::SourceText source(text);
+    const auto special = [&](grammar::LineSyntax syntax) {
+        const grammar::SplitLines split = grammar::split_lines(source, 0, syntax, text.size());
+        REQUIRE(split.chunks.size() == 1);
+        return split.chunks[0].special;
+    };
+    CHECK(special(grammar::LineSyntax::Dyna) == dyna);
+    CHECK(special(grammar::LineSyntax::Radioss) == radioss);
+}
+
 TEST_CASE("reader chunks: a comment line holding the suppressions' marker is seen at every chunk size") {
     // The suppressions read a directive from a line that starts with '$' or '#' and holds the marker
     // (lint/suppressions.cpp), the lines cut at '\n' from byte 0 on: the split must say yes whenever such a
