@@ -4,7 +4,7 @@
 
 namespace sphdeck::text {
 
-std::string_view TextWindow::from(std::size_t begin, std::size_t least, std::size_t most) {
+std::string_view TextWindow::read(std::size_t begin, std::size_t least, std::size_t most) {
     const std::size_t size = text_.size();
     begin = std::min(begin, size);
     least = std::min(least, size - begin);

@@ -28,12 +28,20 @@ public:
     // The text from byte `begin` (at most its size) on, at least `least` bytes of it, fewer only where the
     // text ends first; perhaps more. Valid until the next call. When the window reads, it reads the
     // buffer's size, but not more than `most` (nor less than `least`): a pass that ends there.
-    std::string_view from(std::size_t begin, std::size_t least, std::size_t most = ~std::size_t{0});
+    // Inline: the passes ask once a line, and most asks lie in what the buffer holds already.
+    std::string_view from(std::size_t begin, std::size_t least, std::size_t most = ~std::size_t{0}) {
+        // Held (only a mapping's bytes are, and within the text: the clamps of read() change nothing).
+        if (held_ > 0 && begin >= begin_ && begin - begin_ <= held_ && least <= held_ - (begin - begin_))
+            return {buffer_.get() + (begin - begin_), held_ - (begin - begin_)};
+        return read(begin, least, most);
+    }
 
     // Whether `view` (from this window) runs to the text's end.
     bool at_end(std::string_view view) const { return view.data() + view.size() == end_; }
 
 private:
+    std::string_view read(std::size_t begin, std::size_t least, std::size_t most);  // the rest of from()
+
     const SourceText& text_;
     std::size_t bytes_;               // the buffer's usual size
     std::unique_ptr<char[]> buffer_;  // on a mapping: bytes [begin_, begin_ + held_) of the text
